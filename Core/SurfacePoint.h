@@ -1,0 +1,66 @@
+// Points on a triangle-mesh surface.
+//
+// A SurfacePoint is a triangle id plus barycentric (u, v): the weights of the triangle's
+// corners 1 and 2 (corner 0 has 1 - u - v). That is the form users give and get
+// (`TriangleId` + `Barycentric` arrays).
+//
+// A point on a mesh edge or vertex lies in several triangles, and their barycentric forms do
+// not agree bit for bit. The arrangement must decide exactly which points lie on an edge
+// and in which order, so every stage works with the CanonicalPoint form: a vertex id, or an
+// edge id plus a parameter along the edge's canonical direction
+// (TriangleMesh::GetEdgeVertices), or a triangle with (u, v) strictly inside it.
+#ifndef boolsurf_SurfacePoint_h
+#define boolsurf_SurfacePoint_h
+
+#include "TriangleMesh.h"
+
+namespace boolsurf
+{
+
+struct SurfacePoint
+{
+  int Triangle = -1;
+  double U = 0, V = 0;
+};
+
+enum class PointLocation : unsigned char
+{
+  Face,   ///< strictly inside Triangle: Id = triangle, (U, V)
+  Edge,   ///< strictly inside an edge: Id = edge id, T in (0,1) from vertex 0 to vertex 1
+  Vertex, ///< on a mesh vertex: Id = vertex id
+};
+
+struct CanonicalPoint
+{
+  PointLocation Location = PointLocation::Face;
+  int Id = -1;
+  double U = 0, V = 0; ///< Face only
+  double T = 0;        ///< Edge only
+
+  bool operator==(const CanonicalPoint& o) const
+  {
+    return this->Location == o.Location && this->Id == o.Id && this->U == o.U &&
+      this->V == o.V && this->T == o.T;
+  }
+};
+
+/// Canonical form of p. A barycentric weight whose absolute value is at most `snap` counts
+/// as zero, so a point given as (t, 1e-17, 0.3) lands on the edge; pass 0 for an exact test.
+/// Weights are clamped into the triangle first.
+CanonicalPoint Canonicalize(const TriangleMesh& mesh, SurfacePoint p, double snap = 0.0);
+
+/// Barycentric weights (w0, w1, w2) of c in triangle t, which must contain c (t itself for a
+/// face point, a triangle of the edge or vertex otherwise). Edge points put the two canonical
+/// numbers (1 - T, T) at the corners of the edge's vertices, so both triangles of an edge see
+/// the same two numbers.
+std::array<double, 3> WeightsInTriangle(const TriangleMesh& mesh, const CanonicalPoint& c, int t);
+
+/// Some triangle that contains c (the lowest id).
+int AnyTriangleOf(const TriangleMesh& mesh, const CanonicalPoint& c);
+
+/// 3D position of c.
+Vec3 PositionOf(const TriangleMesh& mesh, const CanonicalPoint& c);
+
+} // namespace boolsurf
+
+#endif
