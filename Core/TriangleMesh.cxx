@@ -91,6 +91,8 @@ void TriangleMesh::BuildTwins()
   this->HalfEdgeEdge.assign(3 * static_cast<size_t>(nt), -1);
   this->EdgeHalfEdge.clear();
   this->EdgeHalfEdge.reserve(3 * static_cast<size_t>(nt) / 2 + 1);
+  this->EdgeValence.clear();
+  this->EdgeValence.reserve(3 * static_cast<size_t>(nt) / 2 + 1);
 
   struct Partner
   {
@@ -135,6 +137,7 @@ void TriangleMesh::BuildTwins()
       }
       const int e = static_cast<int>(this->EdgeHalfEdge.size());
       this->EdgeHalfEdge.push_back(h);
+      this->EdgeValence.push_back(static_cast<int>(partners.size()) + 1);
       this->HalfEdgeEdge[h] = e;
       for (const Partner& p : partners)
       {

@@ -97,7 +97,9 @@ public:
   int GetEdgeId(int t, int k) const { return this->HalfEdgeEdge[3 * t + k]; }
   int GetEdgeHalfEdge(int e) const { return this->EdgeHalfEdge[e]; }
   std::array<int, 2> GetEdgeVertices(int e) const;
-  bool IsBoundaryEdge(int e) const { return this->Twin[this->EdgeHalfEdge[e]] < 0; }
+  /// Number of triangles on edge e (1 on the boundary, 2 inside, more if non-manifold).
+  int GetEdgeValence(int e) const { return this->EdgeValence[e]; }
+  bool IsBoundaryEdge(int e) const { return this->EdgeValence[e] == 1; }
   ///@}
 
   /// Corner ids (3*t + k) at vertex v, in increasing order. Empty for unreferenced vertices.
@@ -127,6 +129,7 @@ private:
   std::vector<int> Twin;         // size 3T, -1 when none
   std::vector<int> HalfEdgeEdge; // size 3T, -1 for unusable triangles
   std::vector<int> EdgeHalfEdge; // size E
+  std::vector<int> EdgeValence;  // size E
   std::vector<NonManifoldEdge> NonManifold;
   std::vector<MisorientedEdge> Misoriented;
 };

@@ -1,0 +1,248 @@
+#include "MeshTopology.h"
+
+#include <algorithm>
+
+namespace boolsurf
+{
+namespace
+{
+
+// Breadth-first over edge neighbours; also decides orientability by propagating a flip flag
+// (a misoriented neighbour pair flips it) and watching for a contradiction.
+void ComputeComponents(const TriangleMesh& mesh, MeshTopology& topo)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  topo.TriangleComponent.assign(nt, -1);
+  std::vector<char> flip(nt, 0);
+  std::vector<int> queue;
+  queue.reserve(nt);
+  for (int seed = 0; seed < nt; ++seed)
+  {
+    if (!mesh.IsUsable(seed) || topo.TriangleComponent[seed] >= 0)
+    {
+      continue;
+    }
+    const int c = static_cast<int>(topo.Components.size());
+    topo.Components.emplace_back();
+    ComponentTopology& comp = topo.Components.back();
+    queue.clear();
+    queue.push_back(seed);
+    topo.TriangleComponent[seed] = c;
+    for (size_t head = 0; head < queue.size(); ++head)
+    {
+      const int t = queue[head];
+      ++comp.Triangles;
+      for (int k = 0; k < 3; ++k)
+      {
+        const int n = mesh.GetNeighbor(t, k);
+        if (n < 0)
+        {
+          continue;
+        }
+        // Proper neighbours run the shared edge in opposite directions.
+        const Triangle& tri = mesh.GetTriangle(t);
+        const Triangle& ntri = mesh.GetTriangle(n);
+        const bool same = ntri[mesh.GetNeighborEdge(t, k)] == tri[k];
+        const char nflip = static_cast<char>(flip[t] ^ (same ? 1 : 0));
+        if (topo.TriangleComponent[n] < 0)
+        {
+          topo.TriangleComponent[n] = c;
+          flip[n] = nflip;
+          queue.push_back(n);
+        }
+        else if (flip[n] != nflip)
+        {
+          comp.Orientable = false;
+        }
+      }
+    }
+  }
+}
+
+// Groups the corners at each vertex into fans (connected through edges at that vertex) and
+// counts one vertex per fan in the fan's component.
+void ComputeFans(const TriangleMesh& mesh, MeshTopology& topo)
+{
+  const int nv = mesh.GetNumberOfVertices();
+  topo.VertexFans.assign(nv, 0);
+  std::vector<int> localIndex(mesh.GetNumberOfTriangles(), -1);
+  std::vector<int> parent;
+  auto find = [&](int i) {
+    while (parent[i] != i)
+    {
+      parent[i] = parent[parent[i]];
+      i = parent[i];
+    }
+    return i;
+  };
+  for (int v = 0; v < nv; ++v)
+  {
+    IntRange corners = mesh.GetVertexCorners(v);
+    const int d = corners.size();
+    if (d == 0)
+    {
+      continue;
+    }
+    parent.resize(d);
+    for (int i = 0; i < d; ++i)
+    {
+      parent[i] = i;
+      localIndex[corners[i] / 3] = i;
+    }
+    int fans = d;
+    for (int i = 0; i < d; ++i)
+    {
+      const int t = corners[i] / 3, j = corners[i] % 3;
+      for (int k : { j, (j + 2) % 3 }) // the two edges of t at v
+      {
+        const int n = mesh.GetNeighbor(t, k);
+        if (n < 0 || localIndex[n] < 0)
+        {
+          continue;
+        }
+        const int a = find(i), b = find(localIndex[n]);
+        if (a != b)
+        {
+          parent[a] = b;
+          --fans;
+        }
+      }
+    }
+    for (int i = 0; i < d; ++i)
+    {
+      localIndex[corners[i] / 3] = -1;
+      if (find(i) == i) // one root per fan: credit the fan's component with a vertex
+      {
+        ++topo.Components[topo.TriangleComponent[corners[i] / 3]].Vertices;
+      }
+    }
+    topo.VertexFans[v] = fans;
+    if (fans > 1)
+    {
+      topo.NonManifoldVertices.push_back(v);
+    }
+  }
+}
+
+// Next boundary half-edge after boundary half-edge h (a->b): rotate around b inside the fan
+// of h's triangle until the outgoing edge has no neighbour. Stays in the right fan at a
+// non-manifold vertex.
+int NextBoundaryHalfEdge(const TriangleMesh& mesh, int h)
+{
+  int t = h / 3;
+  int out = (h % 3 + 1) % 3; // local edge leaving b in t
+  const int b = mesh.GetTriangle(t)[out];
+  const int limit = mesh.GetVertexCorners(b).size() + 1;
+  for (int step = 0; step < limit; ++step)
+  {
+    const int n = mesh.GetNeighbor(t, out);
+    if (n < 0)
+    {
+      return mesh.GetEdgeValence(mesh.GetEdgeId(t, out)) == 1 ? 3 * t + out : -1;
+    }
+    const int m = mesh.GetNeighborEdge(t, out);
+    const Triangle& ntri = mesh.GetTriangle(n);
+    if (ntri[(m + 1) % 3] != b)
+    {
+      return -1; // misoriented neighbour: the rotation is undefined
+    }
+    t = n;
+    out = (m + 1) % 3;
+  }
+  return -1;
+}
+
+void ComputeBoundaryLoops(const TriangleMesh& mesh, MeshTopology& topo)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  topo.VertexBoundaryLoop.assign(mesh.GetNumberOfVertices(), -1);
+  std::vector<char> visited(3 * static_cast<size_t>(nt), 0);
+  auto isBoundary = [&](int h) {
+    const int e = mesh.GetEdgeId(h / 3, h % 3);
+    return e >= 0 && mesh.GetEdgeValence(e) == 1;
+  };
+  // Fallback for broken rotations: any unvisited boundary half-edge leaving vertex b.
+  auto anyOutgoing = [&](int b) {
+    for (int c : mesh.GetVertexCorners(b))
+    {
+      if (isBoundary(c) && !visited[c])
+      {
+        return c;
+      }
+    }
+    return -1;
+  };
+  for (int h0 = 0; h0 < 3 * nt; ++h0)
+  {
+    if (visited[h0] || !mesh.IsUsable(h0 / 3) || !isBoundary(h0))
+    {
+      continue;
+    }
+    BoundaryLoop loop;
+    loop.Component = topo.TriangleComponent[h0 / 3];
+    const int id = static_cast<int>(topo.BoundaryLoops.size());
+    for (int h = h0; h >= 0 && !visited[h];)
+    {
+      visited[h] = 1;
+      const Triangle& tri = mesh.GetTriangle(h / 3);
+      const int a = tri[h % 3], b = tri[(h % 3 + 1) % 3];
+      loop.Vertices.push_back(a);
+      loop.HalfEdges.push_back(h);
+      loop.Length += Distance(mesh.GetPosition(a), mesh.GetPosition(b));
+      if (topo.VertexBoundaryLoop[a] < 0)
+      {
+        topo.VertexBoundaryLoop[a] = id;
+      }
+      int next = NextBoundaryHalfEdge(mesh, h);
+      if (next < 0 || visited[next])
+      {
+        next = next == h0 ? next : anyOutgoing(b);
+      }
+      if (next == h0 || next < 0)
+      {
+        break;
+      }
+      h = next;
+    }
+    topo.BoundaryLoops.push_back(std::move(loop));
+  }
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+int MeshTopology::GetEulerCharacteristic() const
+{
+  int chi = 0;
+  for (const ComponentTopology& c : this->Components)
+  {
+    chi += c.EulerCharacteristic;
+  }
+  return chi;
+}
+
+//------------------------------------------------------------------------------
+MeshTopology MeshTopology::Compute(const TriangleMesh& mesh)
+{
+  MeshTopology topo;
+  ComputeComponents(mesh, topo);
+  ComputeFans(mesh, topo);
+  ComputeBoundaryLoops(mesh, topo);
+
+  for (int e = 0; e < mesh.GetNumberOfEdges(); ++e)
+  {
+    ++topo.Components[topo.TriangleComponent[mesh.GetEdgeHalfEdge(e) / 3]].Edges;
+  }
+  for (const BoundaryLoop& loop : topo.BoundaryLoops)
+  {
+    ++topo.Components[loop.Component].BoundaryLoops;
+  }
+  for (ComponentTopology& c : topo.Components)
+  {
+    c.EulerCharacteristic = c.Vertices - c.Edges + c.Triangles;
+    c.Genus = c.Orientable ? (2 - c.BoundaryLoops - c.EulerCharacteristic) / 2 : -1;
+  }
+  return topo;
+}
+
+} // namespace boolsurf

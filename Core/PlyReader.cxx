@@ -1,0 +1,237 @@
+#include "PlyReader.h"
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace boolsurf
+{
+namespace
+{
+
+enum class Format
+{
+  Ascii,
+  BinaryLittle,
+  BinaryBig
+};
+
+struct Property
+{
+  std::string Name;
+  std::string Type;      // scalar type, or the index type of a list
+  std::string CountType; // non-empty for lists
+};
+
+struct Element
+{
+  std::string Name;
+  long long Count = 0;
+  std::vector<Property> Properties;
+};
+
+int TypeSize(const std::string& t)
+{
+  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
+    return 1;
+  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
+    return 2;
+  if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" ||
+    t == "float32")
+    return 4;
+  if (t == "double" || t == "float64")
+    return 8;
+  return 0;
+}
+
+bool HostIsLittleEndian()
+{
+  const std::uint16_t one = 1;
+  unsigned char b;
+  std::memcpy(&b, &one, 1);
+  return b == 1;
+}
+
+// Reads one binary scalar of type t and converts it to double.
+bool ReadBinary(std::istream& in, const std::string& t, bool swap, double& value)
+{
+  unsigned char buf[8];
+  const int n = TypeSize(t);
+  if (n == 0 || !in.read(reinterpret_cast<char*>(buf), n))
+    return false;
+  if (swap)
+  {
+    for (int i = 0; i < n / 2; ++i)
+      std::swap(buf[i], buf[n - 1 - i]);
+  }
+  if (t == "char" || t == "int8")
+    value = static_cast<std::int8_t>(buf[0]);
+  else if (t == "uchar" || t == "uint8")
+    value = buf[0];
+  else if (t == "short" || t == "int16")
+  {
+    std::int16_t x;
+    std::memcpy(&x, buf, 2);
+    value = x;
+  }
+  else if (t == "ushort" || t == "uint16")
+  {
+    std::uint16_t x;
+    std::memcpy(&x, buf, 2);
+    value = x;
+  }
+  else if (t == "int" || t == "int32")
+  {
+    std::int32_t x;
+    std::memcpy(&x, buf, 4);
+    value = x;
+  }
+  else if (t == "uint" || t == "uint32")
+  {
+    std::uint32_t x;
+    std::memcpy(&x, buf, 4);
+    value = x;
+  }
+  else if (t == "float" || t == "float32")
+  {
+    float x;
+    std::memcpy(&x, buf, 4);
+    value = x;
+  }
+  else
+  {
+    double x;
+    std::memcpy(&x, buf, 8);
+    value = x;
+  }
+  return true;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool ReadPly(const std::string& path, MeshData& out, std::string& error)
+{
+  out = MeshData();
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    error = "cannot open PLY file '" + path + "'";
+    return false;
+  }
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("ply", 0) != 0)
+  {
+    error = "'" + path + "' is not a PLY file (no 'ply' magic line)";
+    return false;
+  }
+  Format format = Format::Ascii;
+  std::vector<Element> elements;
+  while (std::getline(in, line))
+  {
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "format")
+    {
+      std::string f;
+      words >> f;
+      format = f == "ascii" ? Format::Ascii
+                            : (f == "binary_big_endian" ? Format::BinaryBig : Format::BinaryLittle);
+    }
+    else if (keyword == "element")
+    {
+      Element e;
+      words >> e.Name >> e.Count;
+      elements.push_back(e);
+    }
+    else if (keyword == "property" && !elements.empty())
+    {
+      Property p;
+      std::string type;
+      words >> type;
+      if (type == "list")
+      {
+        words >> p.CountType >> p.Type >> p.Name;
+      }
+      else
+      {
+        p.Type = type;
+        words >> p.Name;
+      }
+      elements.back().Properties.push_back(p);
+    }
+    else if (keyword == "end_header")
+    {
+      break;
+    }
+  }
+  const bool swap = (format == Format::BinaryBig) == HostIsLittleEndian();
+  auto readValue = [&](const std::string& type, double& v) -> bool {
+    if (format == Format::Ascii)
+      return static_cast<bool>(in >> v);
+    return ReadBinary(in, type, swap, v);
+  };
+  for (const Element& e : elements)
+  {
+    for (long long i = 0; i < e.Count; ++i)
+    {
+      Vec3 p;
+      for (const Property& prop : e.Properties)
+      {
+        if (!prop.CountType.empty())
+        {
+          double count = 0;
+          if (!readValue(prop.CountType, count))
+          {
+            error = "'" + path + "': truncated list in element '" + e.Name + "' " +
+              std::to_string(i);
+            return false;
+          }
+          std::vector<int> ids(static_cast<size_t>(count));
+          for (int& id : ids)
+          {
+            double v = 0;
+            if (!readValue(prop.Type, v))
+            {
+              error = "'" + path + "': truncated face " + std::to_string(i);
+              return false;
+            }
+            id = static_cast<int>(v);
+          }
+          if (e.Name == "face" && (prop.Name == "vertex_indices" || prop.Name == "vertex_index"))
+          {
+            for (size_t k = 2; k < ids.size(); ++k)
+              out.Triangles.push_back({ ids[0], ids[k - 1], ids[k] });
+          }
+          continue;
+        }
+        double v = 0;
+        if (!readValue(prop.Type, v))
+        {
+          error = "'" + path + "': truncated element '" + e.Name + "' " + std::to_string(i);
+          return false;
+        }
+        if (e.Name == "vertex")
+        {
+          if (prop.Name == "x")
+            p.x = v;
+          else if (prop.Name == "y")
+            p.y = v;
+          else if (prop.Name == "z")
+            p.z = v;
+        }
+      }
+      if (e.Name == "vertex")
+        out.Positions.push_back(p);
+    }
+  }
+  return true;
+}
+
+} // namespace boolsurf
