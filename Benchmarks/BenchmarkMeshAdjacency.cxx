@@ -1,0 +1,73 @@
+// Adjacency (the dual graph of adjacencies) and topology build times on the large meshes of
+// the shared collection. Run: BoolSurfBenchmarks --benchmark_filter=Adjacency
+#include "MeshTopology.h"
+#include "PlyReader.h"
+#include "TriangleMesh.h"
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <string>
+
+namespace
+{
+// Meshes are read once per process: the benchmark measures the build, not the file.
+const boolsurf::MeshData* LoadSharedMesh(const std::string& name, std::string& error)
+{
+  static std::map<std::string, boolsurf::MeshData> cache;
+  auto it = cache.find(name);
+  if (it == cache.end())
+  {
+    boolsurf::MeshData data;
+    if (!boolsurf::ReadPly(std::string(BOOLSURF_SHARED_DATA_DIR) + "/meshes/" + name, data, error))
+    {
+      return nullptr;
+    }
+    it = cache.emplace(name, std::move(data)).first;
+  }
+  return &it->second;
+}
+
+void BM_Adjacency(benchmark::State& state, const std::string& name)
+{
+  std::string error;
+  const boolsurf::MeshData* data = LoadSharedMesh(name, error);
+  if (!data)
+  {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  for (auto _ : state)
+  {
+    boolsurf::TriangleMesh mesh(data->Positions, data->Triangles);
+    benchmark::DoNotOptimize(mesh.GetNumberOfEdges());
+  }
+  state.counters["triangles"] = static_cast<double>(data->Triangles.size());
+}
+
+void BM_AdjacencyAndTopology(benchmark::State& state, const std::string& name)
+{
+  std::string error;
+  const boolsurf::MeshData* data = LoadSharedMesh(name, error);
+  if (!data)
+  {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  for (auto _ : state)
+  {
+    boolsurf::TriangleMesh mesh(data->Positions, data->Triangles);
+    boolsurf::MeshTopology topo = boolsurf::MeshTopology::Compute(mesh);
+    benchmark::DoNotOptimize(topo.Components.size());
+  }
+  state.counters["triangles"] = static_cast<double>(data->Triangles.size());
+}
+} // namespace
+
+BENCHMARK_CAPTURE(BM_Adjacency, igea_1m, std::string("igea_1m.ply"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Adjacency, 3torus_800k, std::string("3torus_800k.ply"))
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_AdjacencyAndTopology, igea_1m, std::string("igea_1m.ply"))
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_AdjacencyAndTopology, 3torus_800k, std::string("3torus_800k.ply"))
+  ->Unit(benchmark::kMillisecond);

@@ -1,0 +1,75 @@
+/**
+ * @class   vtkBoolSurfCheckSurface
+ * @brief   validate a triangle surface for BoolSurf and report its topology
+ *
+ * vtkBoolSurfCheckSurface runs the checks every BoolSurf stage relies on and passes the
+ * surface through, annotated:
+ *
+ * - cell data `ComponentId` (int): connected component of each triangle (components are
+ *   connected through edges), -1 for triangles that take no part in the topology;
+ * - point data `BoundaryLoopId` (int): the boundary loop a point lies on, -1 inside;
+ * - field data `Components` (1 value), and per component `Genus`, `BoundaryLoops`,
+ *   `EulerCharacteristic`; `IsManifold` (1 value, 0 or 1); `BoundaryLoopLength` (one value
+ *   per loop); `Problems` (string array, one entry per problem found, "Error <Kind>: ..."
+ *   or "Warning <Kind>: ...").
+ *
+ * Problems found: empty input, NaN/inf coordinates (point ids), triangles with out-of-range
+ * or repeated point ids, degenerate (zero-area) triangles, non-manifold edges (named by their
+ * point ids), non-manifold vertices, inconsistently oriented neighbours (triangle pairs),
+ * non-orientable components, unreferenced points. Non-triangle polygons and strips are
+ * triangulated and vertex/line cells ignored, each with a warning naming how many.
+ *
+ * The filter never fails on a bad surface: it reports. The genus of a component is
+ * (2 - boundary loops - Euler characteristic) / 2, or -1 when it is not orientable; a
+ * non-manifold vertex is counted once per fan of triangles around it.
+ *
+ * @sa vtkFeatureEdges vtkPolyDataConnectivityFilter
+ */
+#ifndef vtkBoolSurfCheckSurface_h
+#define vtkBoolSurfCheckSurface_h
+
+#include "BoolSurfFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfCheckSurface : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkBoolSurfCheckSurface* New();
+  vtkTypeMacro(vtkBoolSurfCheckSurface, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * A triangle is degenerate when twice its area is at most this times its longest squared
+   * edge. Scale-free; default 1e-12.
+   */
+  vtkSetClampMacro(DegenerateTolerance, double, 0.0, 1.0);
+  vtkGetMacro(DegenerateTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * When on (default), each problem found is also issued as a VTK warning, so that ParaView
+   * shows it in its Output Messages window.
+   */
+  vtkSetMacro(WarnOnProblems, bool);
+  vtkGetMacro(WarnOnProblems, bool);
+  vtkBooleanMacro(WarnOnProblems, bool);
+  ///@}
+
+protected:
+  vtkBoolSurfCheckSurface();
+  ~vtkBoolSurfCheckSurface() override = default;
+
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  double DegenerateTolerance = 1e-12;
+  bool WarnOnProblems = true;
+
+private:
+  vtkBoolSurfCheckSurface(const vtkBoolSurfCheckSurface&) = delete;
+  void operator=(const vtkBoolSurfCheckSurface&) = delete;
+};
+
+#endif
