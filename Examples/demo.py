@@ -40,6 +40,8 @@ def values(name):
 
 
 name = os.path.splitext(os.path.basename(args.mesh))[0]
+if data.GetNumberOfCells() == 0:
+    sys.exit("error: no triangles read from %s" % args.mesh)
 print("mesh: %s (%d points, %d triangles)" % (args.mesh, data.GetNumberOfPoints(),
                                               data.GetNumberOfCells()))
 print("components: %d, genus per component: %s, boundary loops per component: %s, "
@@ -50,7 +52,9 @@ problems = values("Problems")
 print("problems: %s" % ("none" if not problems else "\n  " + "\n  ".join(problems)))
 
 vtp = os.path.join(args.output, name + "_check.vtp")
-SaveData(vtp, proxy=check)
+# Inline binary, not appended: with Debian 12's current expat, VTK 9.2 cannot read back
+# appended-mode XML files ("not well-formed (invalid token)").
+SaveData(vtp, proxy=check, DataMode="Binary")
 print("wrote %s" % vtp)
 
 view = CreateView("RenderView")
@@ -68,7 +72,7 @@ if sum(values("BoundaryLoops")) > 0:  # show the boundary loops; else a plain su
     ColorBy(display, ("POINTS", "BoundaryLoopId"))
     display.RescaleTransferFunctionToDataRange(True, False)
 else:
-    ColorBy(display, None)
+    display.ColorArrayName = ["POINTS", ""]
     display.DiffuseColor = [0.85, 0.75, 0.55]
 view.ResetCamera()
 view.CameraPosition = [1, -1, 1.5]

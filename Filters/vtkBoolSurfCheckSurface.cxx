@@ -97,7 +97,12 @@ int vtkBoolSurfCheckSurface::RequestData(vtkInformation* vtkNotUsed(request),
   for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ components, genus, loops,
          euler, manifold, loopLength, problems })
   {
-    fd->AddArray(a);
+    // VTK 9.2's XML writer produces an unreadable file for an empty numeric array, so arrays
+    // with nothing to say (no components, no loops) are left out.
+    if (a->GetNumberOfTuples() > 0 || a == problems.GetPointer())
+    {
+      fd->AddArray(a);
+    }
   }
 
   if (this->WarnOnProblems)

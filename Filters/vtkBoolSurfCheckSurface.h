@@ -11,7 +11,8 @@
  * - field data `Components` (1 value), and per component `Genus`, `BoundaryLoops`,
  *   `EulerCharacteristic`; `IsManifold` (1 value, 0 or 1); `BoundaryLoopLength` (one value
  *   per loop); `Problems` (string array, one entry per problem found, "Error <Kind>: ..."
- *   or "Warning <Kind>: ...").
+ *   or "Warning <Kind>: ..."). Per-component and per-loop arrays are absent when there is
+ *   no component or no loop (VTK's XML writer cannot store empty numeric arrays).
  *
  * Problems found: empty input, NaN/inf coordinates (point ids), triangles with out-of-range
  * or repeated point ids, degenerate (zero-area) triangles, non-manifold edges (named by their

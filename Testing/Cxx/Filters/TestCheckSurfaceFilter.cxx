@@ -137,6 +137,7 @@ TEST(CheckSurfaceFilter, EmptyInputIsNamed)
   auto out = RunCheck(empty);
   EXPECT_NE(Problem(out, "Error EmptyInput"), "");
   EXPECT_EQ(FieldInt(out, "Components"), 0);
+  EXPECT_EQ(out->GetFieldData()->GetAbstractArray("Genus"), nullptr);
 }
 
 TEST(CheckSurfaceFilter, NaNCoordinatesAreNamed)
