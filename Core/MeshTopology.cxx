@@ -67,7 +67,8 @@ void ComputeFans(const TriangleMesh& mesh, MeshTopology& topo)
   topo.VertexFans.assign(nv, 0);
   std::vector<int> localIndex(mesh.GetNumberOfTriangles(), -1);
   std::vector<int> parent;
-  auto find = [&](int i) {
+  auto find = [&](int i)
+  {
     while (parent[i] != i)
     {
       parent[i] = parent[parent[i]];
@@ -157,12 +158,14 @@ void ComputeBoundaryLoops(const TriangleMesh& mesh, MeshTopology& topo)
   const int nt = mesh.GetNumberOfTriangles();
   topo.VertexBoundaryLoop.assign(mesh.GetNumberOfVertices(), -1);
   std::vector<char> visited(3 * static_cast<size_t>(nt), 0);
-  auto isBoundary = [&](int h) {
+  auto isBoundary = [&](int h)
+  {
     const int e = mesh.GetEdgeId(h / 3, h % 3);
     return e >= 0 && mesh.GetEdgeValence(e) == 1;
   };
   // Fallback for broken rotations: any unvisited boundary half-edge leaving vertex b.
-  auto anyOutgoing = [&](int b) {
+  auto anyOutgoing = [&](int b)
+  {
     for (int c : mesh.GetVertexCorners(b))
     {
       if (isBoundary(c) && !visited[c])

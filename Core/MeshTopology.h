@@ -40,8 +40,8 @@ struct MeshTopology
   std::vector<int> TriangleComponent; ///< -1 for unusable triangles
   std::vector<ComponentTopology> Components;
   std::vector<BoundaryLoop> BoundaryLoops;
-  std::vector<int> VertexBoundaryLoop; ///< loop of each vertex, -1 inside or unreferenced
-  std::vector<int> VertexFans;         ///< number of triangle fans at each vertex
+  std::vector<int> VertexBoundaryLoop;  ///< loop of each vertex, -1 inside or unreferenced
+  std::vector<int> VertexFans;          ///< number of triangle fans at each vertex
   std::vector<int> NonManifoldVertices; ///< vertices with more than one fan
 
   int GetNumberOfComponents() const { return static_cast<int>(this->Components.size()); }

@@ -38,8 +38,7 @@ int TypeSize(const std::string& t)
     return 1;
   if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
     return 2;
-  if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" ||
-    t == "float32")
+  if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32")
     return 4;
   if (t == "double" || t == "float64")
     return 8;
@@ -172,7 +171,8 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
     }
   }
   const bool swap = (format == Format::BinaryBig) == HostIsLittleEndian();
-  auto readValue = [&](const std::string& type, double& v) -> bool {
+  auto readValue = [&](const std::string& type, double& v) -> bool
+  {
     if (format == Format::Ascii)
       return static_cast<bool>(in >> v);
     return ReadBinary(in, type, swap, v);
@@ -189,8 +189,8 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
           double count = 0;
           if (!readValue(prop.CountType, count))
           {
-            error = "'" + path + "': truncated list in element '" + e.Name + "' " +
-              std::to_string(i);
+            error =
+              "'" + path + "': truncated list in element '" + e.Name + "' " + std::to_string(i);
             return false;
           }
           std::vector<int> ids(static_cast<size_t>(count));

@@ -66,22 +66,48 @@ MeshData MakeIcosphere(int levels, double radius)
 {
   MeshData m;
   const double p = (1.0 + std::sqrt(5.0)) / 2.0;
-  const double base[12][3] = { { -1, p, 0 }, { 1, p, 0 }, { -1, -p, 0 }, { 1, -p, 0 },
-    { 0, -1, p }, { 0, 1, p }, { 0, -1, -p }, { 0, 1, -p }, { p, 0, -1 }, { p, 0, 1 },
-    { -p, 0, -1 }, { -p, 0, 1 } };
+  const double base[12][3] = { { -1, p, 0 },
+    { 1, p, 0 },
+    { -1, -p, 0 },
+    { 1, -p, 0 },
+    { 0, -1, p },
+    { 0, 1, p },
+    { 0, -1, -p },
+    { 0, 1, -p },
+    { p, 0, -1 },
+    { p, 0, 1 },
+    { -p, 0, -1 },
+    { -p, 0, 1 } };
   for (const auto& b : base)
   {
     Vec3 v{ b[0], b[1], b[2] };
     m.Positions.push_back((radius / Length(v)) * v);
   }
-  m.Triangles = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 }, { 0, 10, 11 },
-    { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 },
-    { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 },
-    { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
+  m.Triangles = { { 0, 11, 5 },
+    { 0, 5, 1 },
+    { 0, 1, 7 },
+    { 0, 7, 10 },
+    { 0, 10, 11 },
+    { 1, 5, 9 },
+    { 5, 11, 4 },
+    { 11, 10, 2 },
+    { 10, 7, 6 },
+    { 7, 1, 8 },
+    { 3, 9, 4 },
+    { 3, 4, 2 },
+    { 3, 2, 6 },
+    { 3, 6, 8 },
+    { 3, 8, 9 },
+    { 4, 9, 5 },
+    { 2, 4, 11 },
+    { 6, 2, 10 },
+    { 8, 6, 7 },
+    { 9, 8, 1 } };
   for (int l = 0; l < levels; ++l)
   {
     std::map<std::pair<int, int>, int> midpoint;
-    auto mid = [&](int a, int b) {
+    auto mid = [&](int a, int b)
+    {
       auto key = std::make_pair(std::min(a, b), std::max(a, b));
       auto it = midpoint.find(key);
       if (it != midpoint.end())
@@ -120,7 +146,8 @@ MeshData MakeTorus(double R, double r, int nu, int nv)
     {
       const double v = 2 * Pi * j / nv;
       m.Positions.push_back({ (R + r * std::cos(v)) * std::cos(u),
-        (R + r * std::cos(v)) * std::sin(u), r * std::sin(v) });
+        (R + r * std::cos(v)) * std::sin(u),
+        r * std::sin(v) });
     }
   }
   auto id = [&](int i, int j) { return (i % nu) * nv + (j % nv); };

@@ -9,7 +9,8 @@ namespace boolsurf
 //------------------------------------------------------------------------------
 bool SurfaceCheckResult::HasErrors() const
 {
-  return std::any_of(this->Problems.begin(), this->Problems.end(),
+  return std::any_of(this->Problems.begin(),
+    this->Problems.end(),
     [](const SurfaceProblem& p) { return p.Level == Severity::Error; });
 }
 
@@ -63,13 +64,15 @@ std::string FormatIds(const std::vector<long long>& ids, int maxIds)
 }
 
 //------------------------------------------------------------------------------
-SurfaceCheckResult CheckSurface(
-  const TriangleMesh& mesh, const MeshTopology& topology, const SurfaceCheckOptions& options)
+SurfaceCheckResult CheckSurface(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const SurfaceCheckOptions& options)
 {
   SurfaceCheckResult result;
   const int maxIds = options.MaxIdsInMessage;
-  auto add = [&](const char* kind, Severity level, const std::string& what,
-               std::vector<long long> ids) {
+  auto add =
+    [&](const char* kind, Severity level, const std::string& what, std::vector<long long> ids)
+  {
     SurfaceProblem p;
     p.Kind = kind;
     p.Level = level;
@@ -82,7 +85,8 @@ SurfaceCheckResult CheckSurface(
   const int nt = mesh.GetNumberOfTriangles();
   if (nv == 0 || nt == 0)
   {
-    add("EmptyInput", Severity::Error,
+    add("EmptyInput",
+      Severity::Error,
       "the surface is empty (" + std::to_string(nv) + " points, " + std::to_string(nt) +
         " triangles)",
       {});
@@ -99,7 +103,8 @@ SurfaceCheckResult CheckSurface(
   }
   if (!ids.empty())
   {
-    add("NonFiniteCoordinates", Severity::Error,
+    add("NonFiniteCoordinates",
+      Severity::Error,
       std::to_string(ids.size()) + " point(s) have NaN or infinite coordinates, point ids",
       std::move(ids));
   }
@@ -125,8 +130,7 @@ SurfaceCheckResult CheckSurface(
       continue; // already reported through its points
     }
     const double twiceArea = Length(Cross(b - a, c - a));
-    const double longest =
-      std::max({ Dot(b - a, b - a), Dot(c - b, c - b), Dot(a - c, a - c) });
+    const double longest = std::max({ Dot(b - a, b - a), Dot(c - b, c - b), Dot(a - c, a - c) });
     if (twiceArea <= options.DegenerateTolerance * longest)
     {
       degenerate.push_back(t);
@@ -134,21 +138,24 @@ SurfaceCheckResult CheckSurface(
   }
   if (!outOfRange.empty())
   {
-    add("InvalidVertexIndex", Severity::Error,
+    add("InvalidVertexIndex",
+      Severity::Error,
       std::to_string(outOfRange.size()) + " triangle(s) use point ids outside [0, " +
         std::to_string(nv) + "), triangle ids",
       std::move(outOfRange));
   }
   if (!repeated.empty())
   {
-    add("RepeatedVertexIndex", Severity::Error,
+    add("RepeatedVertexIndex",
+      Severity::Error,
       std::to_string(repeated.size()) +
         " triangle(s) use the same point twice (topologically degenerate), triangle ids",
       std::move(repeated));
   }
   if (!degenerate.empty())
   {
-    add("DegenerateTriangle", Severity::Error,
+    add("DegenerateTriangle",
+      Severity::Error,
       std::to_string(degenerate.size()) + " triangle(s) have zero area, triangle ids",
       std::move(degenerate));
   }
@@ -164,8 +171,8 @@ SurfaceCheckResult CheckSurface(
         os << " ... and " << (mesh.GetNonManifoldEdges().size() - maxIds) << " more";
         break;
       }
-      os << (shown > 1 ? ", " : "") << "(" << e.V0 << ", " << e.V1 << ") in "
-         << e.Triangles.size() << " triangles";
+      os << (shown > 1 ? ", " : "") << "(" << e.V0 << ", " << e.V1 << ") in " << e.Triangles.size()
+         << " triangles";
     }
     SurfaceProblem p;
     p.Kind = "NonManifoldEdge";
@@ -181,7 +188,8 @@ SurfaceCheckResult CheckSurface(
   }
   if (!topology.NonManifoldVertices.empty())
   {
-    add("NonManifoldVertex", Severity::Error,
+    add("NonManifoldVertex",
+      Severity::Error,
       std::to_string(topology.NonManifoldVertices.size()) +
         " non-manifold vertex(es) where separate fans of triangles meet, point ids",
       std::vector<long long>(
@@ -219,8 +227,10 @@ SurfaceCheckResult CheckSurface(
   {
     if (!topology.Components[c].Orientable)
     {
-      add("NonOrientable", Severity::Error,
-        "connected component " + std::to_string(c) + " is not orientable", { (long long)c });
+      add("NonOrientable",
+        Severity::Error,
+        "connected component " + std::to_string(c) + " is not orientable",
+        { (long long)c });
     }
   }
 
@@ -234,7 +244,8 @@ SurfaceCheckResult CheckSurface(
   }
   if (!ids.empty())
   {
-    add("UnreferencedPoints", Severity::Warning,
+    add("UnreferencedPoints",
+      Severity::Warning,
       std::to_string(ids.size()) + " point(s) are used by no triangle (ignored), point ids",
       std::move(ids));
   }

@@ -56,7 +56,8 @@ std::string FormatIds(const std::vector<long long>& ids, int maxIds);
 
 /// Checks geometry (finite coordinates, degenerate triangles), indices and topology
 /// (non-manifold edges and vertices, orientation, unreferenced vertices).
-SurfaceCheckResult CheckSurface(const TriangleMesh& mesh, const MeshTopology& topology,
+SurfaceCheckResult CheckSurface(const TriangleMesh& mesh,
+  const MeshTopology& topology,
   const SurfaceCheckOptions& options = SurfaceCheckOptions());
 
 } // namespace boolsurf

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace boolsurf
 {
@@ -119,6 +120,182 @@ Vec3 PositionOf(const TriangleMesh& mesh, const CanonicalPoint& c)
     default:
       return mesh.Evaluate(c.Id, c.U, c.V);
   }
+}
+
+//------------------------------------------------------------------------------
+bool TriangleContains(const TriangleMesh& mesh, const CanonicalPoint& c, int t)
+{
+  if (t < 0 || t >= mesh.GetNumberOfTriangles() || !mesh.IsUsable(t))
+  {
+    return false;
+  }
+  const Triangle& tri = mesh.GetTriangle(t);
+  switch (c.Location)
+  {
+    case PointLocation::Face:
+      return c.Id == t;
+    case PointLocation::Vertex:
+      return tri[0] == c.Id || tri[1] == c.Id || tri[2] == c.Id;
+    case PointLocation::Edge:
+      return mesh.GetEdgeId(t, 0) == c.Id || mesh.GetEdgeId(t, 1) == c.Id ||
+        mesh.GetEdgeId(t, 2) == c.Id;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+void TrianglesOf(const TriangleMesh& mesh, const CanonicalPoint& c, std::vector<int>& out)
+{
+  out.clear();
+  switch (c.Location)
+  {
+    case PointLocation::Face:
+      if (c.Id >= 0 && c.Id < mesh.GetNumberOfTriangles() && mesh.IsUsable(c.Id))
+      {
+        out.push_back(c.Id);
+      }
+      break;
+    case PointLocation::Edge:
+    {
+      if (c.Id < 0 || c.Id >= mesh.GetNumberOfEdges())
+      {
+        break;
+      }
+      const int h = mesh.GetEdgeHalfEdge(c.Id);
+      out.push_back(h / 3);
+      const int twin = mesh.GetTwin(h);
+      if (twin >= 0)
+      {
+        out.push_back(twin / 3);
+      }
+      break;
+    }
+    case PointLocation::Vertex:
+      if (c.Id < 0 || c.Id >= mesh.GetNumberOfVertices())
+      {
+        break;
+      }
+      for (int corner : mesh.GetVertexCorners(c.Id))
+      {
+        out.push_back(corner / 3);
+      }
+      break;
+  }
+}
+
+//------------------------------------------------------------------------------
+int SharedTriangle(const TriangleMesh& mesh, const CanonicalPoint& a, const CanonicalPoint& b)
+{
+  // Small fixed buffers would do for faces and edges; vertices need the fan, so reuse one
+  // vector per thread rather than allocating per call.
+  thread_local std::vector<int> trianglesOfA;
+  TrianglesOf(mesh, a, trianglesOfA);
+  int best = -1;
+  for (int t : trianglesOfA)
+  {
+    if (TriangleContains(mesh, b, t) && (best < 0 || t < best))
+    {
+      best = t;
+    }
+  }
+  return best;
+}
+
+//------------------------------------------------------------------------------
+SurfacePoint ToSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c)
+{
+  SurfacePoint p;
+  p.Triangle = AnyTriangleOf(mesh, c);
+  if (p.Triangle >= 0)
+  {
+    const std::array<double, 3> w = WeightsInTriangle(mesh, c, p.Triangle);
+    p.U = w[1];
+    p.V = w[2];
+  }
+  return p;
+}
+
+//------------------------------------------------------------------------------
+bool CheckSurfacePoint(const TriangleMesh& mesh, const SurfacePoint& p, std::string& problem)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  if (p.Triangle < 0 || p.Triangle >= nt)
+  {
+    problem = "triangle id " + std::to_string(p.Triangle) + " is out of range [0, " +
+      std::to_string(nt) + ")";
+    return false;
+  }
+  if (!mesh.IsUsable(p.Triangle))
+  {
+    problem = "triangle " + std::to_string(p.Triangle) +
+      " has out-of-range or repeated vertex indices";
+    return false;
+  }
+  if (!std::isfinite(p.U) || !std::isfinite(p.V))
+  {
+    problem = "barycentric coordinates (" + std::to_string(p.U) + ", " + std::to_string(p.V) +
+      ") in triangle " + std::to_string(p.Triangle) + " are not finite";
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool CheckCanonicalPoint(const TriangleMesh& mesh, const CanonicalPoint& c, std::string& problem)
+{
+  switch (c.Location)
+  {
+    case PointLocation::Face:
+      return CheckSurfacePoint(mesh, SurfacePoint{ c.Id, c.U, c.V }, problem);
+    case PointLocation::Edge:
+      if (c.Id < 0 || c.Id >= mesh.GetNumberOfEdges())
+      {
+        problem = "edge id " + std::to_string(c.Id) + " is out of range [0, " +
+          std::to_string(mesh.GetNumberOfEdges()) + ")";
+        return false;
+      }
+      if (!std::isfinite(c.T))
+      {
+        problem = "edge parameter of edge " + std::to_string(c.Id) + " is not finite";
+        return false;
+      }
+      return true;
+    case PointLocation::Vertex:
+      if (c.Id < 0 || c.Id >= mesh.GetNumberOfVertices())
+      {
+        problem = "vertex id " + std::to_string(c.Id) + " is out of range [0, " +
+          std::to_string(mesh.GetNumberOfVertices()) + ")";
+        return false;
+      }
+      if (mesh.GetVertexCorners(c.Id).size() == 0)
+      {
+        problem = "vertex " + std::to_string(c.Id) + " belongs to no usable triangle";
+        return false;
+      }
+      return true;
+  }
+  problem = "unknown point location";
+  return false;
+}
+
+//------------------------------------------------------------------------------
+std::string Describe(const CanonicalPoint& c)
+{
+  char buffer[96];
+  switch (c.Location)
+  {
+    case PointLocation::Vertex:
+      std::snprintf(buffer, sizeof(buffer), "vertex %d", c.Id);
+      break;
+    case PointLocation::Edge:
+      std::snprintf(buffer, sizeof(buffer), "edge %d (t=%.6g)", c.Id, c.T);
+      break;
+    case PointLocation::Face:
+    default:
+      std::snprintf(buffer, sizeof(buffer), "triangle %d (u=%.6g, v=%.6g)", c.Id, c.U, c.V);
+      break;
+  }
+  return buffer;
 }
 
 } // namespace boolsurf

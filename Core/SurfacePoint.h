@@ -14,6 +14,9 @@
 
 #include "TriangleMesh.h"
 
+#include <string>
+#include <vector>
+
 namespace boolsurf
 {
 
@@ -60,6 +63,30 @@ int AnyTriangleOf(const TriangleMesh& mesh, const CanonicalPoint& c);
 
 /// 3D position of c.
 Vec3 PositionOf(const TriangleMesh& mesh, const CanonicalPoint& c);
+
+/// True when triangle t contains c (t itself for a face point, a triangle having the edge or
+/// the vertex otherwise). Purely combinatorial: no tolerance.
+bool TriangleContains(const TriangleMesh& mesh, const CanonicalPoint& c, int t);
+
+/// Every usable triangle that contains c, appended to `out` after clearing it.
+void TrianglesOf(const TriangleMesh& mesh, const CanonicalPoint& c, std::vector<int>& out);
+
+/// A triangle containing both a and b (the lowest id), or -1.
+int SharedTriangle(const TriangleMesh& mesh, const CanonicalPoint& a, const CanonicalPoint& b);
+
+/// Triangle + barycentric form of c (in AnyTriangleOf(c)), for output arrays.
+SurfacePoint ToSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c);
+
+/// False, with a sentence naming the problem, when p cannot be used: triangle id out of
+/// range, a triangle with invalid or repeated vertex indices, non-finite barycentrics.
+bool CheckSurfacePoint(const TriangleMesh& mesh, const SurfacePoint& p, std::string& problem);
+
+/// Same for a canonical point (id out of range, non-finite parameters, an isolated vertex).
+bool CheckCanonicalPoint(const TriangleMesh& mesh, const CanonicalPoint& c, std::string& problem);
+
+/// Short human-readable form for messages: "vertex 12", "edge 5 (t=0.25)", "triangle 3
+/// (u=0.2, v=0.3)".
+std::string Describe(const CanonicalPoint& c);
 
 } // namespace boolsurf
 

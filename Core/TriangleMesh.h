@@ -38,7 +38,7 @@ struct IntRange
 /// An edge shared by more than two triangles.
 struct NonManifoldEdge
 {
-  int V0 = -1, V1 = -1;         ///< vertex ids of the edge
+  int V0 = -1, V1 = -1;       ///< vertex ids of the edge
   std::vector<int> Triangles; ///< every triangle that has this edge
 };
 
@@ -67,7 +67,10 @@ public:
   const Vec3& GetPosition(int v) const { return this->Positions[v]; }
   const Triangle& GetTriangle(int t) const { return this->Triangles[t]; }
   /// Position of corner k of triangle t.
-  const Vec3& GetCornerPosition(int t, int k) const { return this->Positions[this->Triangles[t][k]]; }
+  const Vec3& GetCornerPosition(int t, int k) const
+  {
+    return this->Positions[this->Triangles[t][k]];
+  }
   /// Point of triangle t at barycentric (u, v) (weights of corners 1 and 2).
   Vec3 Evaluate(int t, double u, double v) const;
 

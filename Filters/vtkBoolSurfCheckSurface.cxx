@@ -33,7 +33,8 @@ vtkBoolSurfCheckSurface::vtkBoolSurfCheckSurface() = default;
 
 //------------------------------------------------------------------------------
 int vtkBoolSurfCheckSurface::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
@@ -94,8 +95,8 @@ int vtkBoolSurfCheckSurface::RequestData(vtkInformation* vtkNotUsed(request),
   }
 
   vtkFieldData* fd = output->GetFieldData();
-  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ components, genus, loops,
-         euler, manifold, loopLength, problems })
+  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{
+         components, genus, loops, euler, manifold, loopLength, problems })
   {
     // VTK 9.2's XML writer produces an unreadable file for an empty numeric array, so arrays
     // with nothing to say (no components, no loops) are left out.

@@ -62,7 +62,8 @@ protected:
   vtkBoolSurfCheckSurface();
   ~vtkBoolSurfCheckSurface() override = default;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
   double DegenerateTolerance = 1e-12;

@@ -89,8 +89,8 @@ void ConvertSurface(vtkPolyData* input, vtkSurfaceInput& out, const SurfaceCheck
     const vtkIdType* ids;
     it->GetCurrentCell(n, ids);
     // vtkTriangleFilter drops polygons it cannot triangulate, so every cell here has 3 ids.
-    triangles.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]),
-      static_cast<int>(ids[2]) });
+    triangles.push_back(
+      { static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
   }
   auto mesh = std::make_shared<TriangleMesh>(std::move(positions), std::move(triangles));
   auto topology = std::make_shared<MeshTopology>(MeshTopology::Compute(*mesh));

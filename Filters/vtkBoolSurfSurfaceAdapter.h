@@ -35,7 +35,8 @@ struct vtkSurfaceInput
 };
 
 /// Fills `out` from `input` (which may be null: reported as EmptyInput). Never throws.
-void ConvertSurface(vtkPolyData* input, vtkSurfaceInput& out,
+void ConvertSurface(vtkPolyData* input,
+  vtkSurfaceInput& out,
   const SurfaceCheckOptions& options = SurfaceCheckOptions());
 
 } // namespace boolsurf

@@ -60,8 +60,8 @@ TEST(MeshTopology, FlatSquareIsADisc)
     const Vec3 q = mesh.GetPosition(loop.Vertices[(i + 1) % loop.Vertices.size()]);
     signedArea += 0.5 * (p.x * q.y - q.x * p.y);
     const int h = loop.HalfEdges[i];
-    EXPECT_EQ(mesh.GetTriangle(h / 3)[(h % 3 + 1) % 3],
-      loop.Vertices[(i + 1) % loop.Vertices.size()]);
+    EXPECT_EQ(
+      mesh.GetTriangle(h / 3)[(h % 3 + 1) % 3], loop.Vertices[(i + 1) % loop.Vertices.size()]);
   }
   EXPECT_NEAR(signedArea, 1.0, 1e-12);
   for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)

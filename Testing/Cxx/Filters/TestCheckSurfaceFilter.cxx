@@ -127,8 +127,7 @@ TEST(CheckSurfaceFilter, LinesAndVertsAreIgnoredWithAWarning)
   auto out = RunCheck(pd);
   EXPECT_EQ(out->GetNumberOfCells(), 2);
   EXPECT_EQ(out->GetNumberOfLines(), 0);
-  EXPECT_NE(
-    Problem(out, "Warning Conversion: ignored 1 vertex cell(s) and 1 line cell(s)"), "");
+  EXPECT_NE(Problem(out, "Warning Conversion: ignored 1 vertex cell(s) and 1 line cell(s)"), "");
 }
 
 TEST(CheckSurfaceFilter, EmptyInputIsNamed)
