@@ -227,8 +227,8 @@ bool CheckSurfacePoint(const TriangleMesh& mesh, const SurfacePoint& p, std::str
   }
   if (!mesh.IsUsable(p.Triangle))
   {
-    problem = "triangle " + std::to_string(p.Triangle) +
-      " has out-of-range or repeated vertex indices";
+    problem =
+      "triangle " + std::to_string(p.Triangle) + " has out-of-range or repeated vertex indices";
     return false;
   }
   if (!std::isfinite(p.U) || !std::isfinite(p.V))

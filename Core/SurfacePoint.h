@@ -42,8 +42,8 @@ struct CanonicalPoint
 
   bool operator==(const CanonicalPoint& o) const
   {
-    return this->Location == o.Location && this->Id == o.Id && this->U == o.U &&
-      this->V == o.V && this->T == o.T;
+    return this->Location == o.Location && this->Id == o.Id && this->U == o.U && this->V == o.V &&
+      this->T == o.T;
   }
 };
 

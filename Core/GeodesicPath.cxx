@@ -1,0 +1,750 @@
+#include "GeodesicPath.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace boolsurf
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+// A crossing this close (in edge parameter) to an edge end is the vertex itself: the funnel
+// decides collinear cases by the sign of rounded cross products, so a path running through a
+// vertex may come out as a crossing at t = 1e-17. Reporting the vertex keeps paths along
+// edges and through vertices exact for the arrangement.
+constexpr double VertexSnap = 1e-12;
+
+// Vertices whose outside angle is this much below pi get the strip rerouted around them;
+// smaller deficits are rounding noise of a straight pass.
+constexpr double AngleTolerance = 1e-11;
+
+constexpr int StartId = -2;
+constexpr int EndId = -3;
+
+double AngleBetween(const Vec3& a, const Vec3& b)
+{
+  return std::atan2(Length(Cross(a, b)), Dot(a, b));
+}
+
+int CornerOf(const Triangle& tri, int v)
+{
+  return tri[0] == v ? 0 : (tri[1] == v ? 1 : (tri[2] == v ? 2 : -1));
+}
+
+// Face points with a zero weight and edge points at an edge end are re-expressed in the
+// lowest-dimensional form, so "which triangles hold this point" is answered combinatorially.
+CanonicalPoint Normalize(const TriangleMesh& mesh, const CanonicalPoint& c)
+{
+  if (c.Location == PointLocation::Face)
+  {
+    if (c.U > 0.0 && c.V > 0.0 && 1.0 - c.U - c.V > 0.0)
+    {
+      return c; // strictly inside: keep the caller's numbers bit for bit
+    }
+    return Canonicalize(mesh, SurfacePoint{ c.Id, c.U, c.V }, 0.0);
+  }
+  if (c.Location == PointLocation::Edge && (c.T <= 0.0 || c.T >= 1.0))
+  {
+    CanonicalPoint v;
+    v.Location = PointLocation::Vertex;
+    v.Id = mesh.GetEdgeVertices(c.Id)[c.T <= 0.0 ? 0 : 1];
+    return v;
+  }
+  return c;
+}
+// Canonical point of triangle t with weights w (exact zeros mark edges and vertices).
+CanonicalPoint FromWeights(const TriangleMesh& mesh, int t, const std::array<double, 3>& w)
+{
+  const Triangle& tri = mesh.GetTriangle(t);
+  CanonicalPoint c;
+  const int zeros = (w[0] <= 0.0) + (w[1] <= 0.0) + (w[2] <= 0.0);
+  if (zeros >= 2)
+  {
+    c.Location = PointLocation::Vertex;
+    c.Id = tri[static_cast<int>(std::max_element(w.begin(), w.end()) - w.begin())];
+    return c;
+  }
+  if (zeros == 1)
+  {
+    const int opposite = w[0] <= 0.0 ? 0 : (w[1] <= 0.0 ? 1 : 2);
+    const int localEdge = (opposite + 1) % 3;
+    const double wa = w[localEdge], wb = w[(localEdge + 1) % 3];
+    const double s = wb / (wa + wb);
+    c.Location = PointLocation::Edge;
+    c.Id = mesh.GetEdgeId(t, localEdge);
+    c.T = mesh.GetEdgeVertices(c.Id)[0] == tri[localEdge] ? s : 1.0 - s;
+    return c;
+  }
+  const double sum = w[0] + w[1] + w[2];
+  c.Location = PointLocation::Face;
+  c.Id = t;
+  c.U = w[1] / sum;
+  c.V = w[2] / sum;
+  return c;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+GeodesicPathSolver::GeodesicPathSolver(const TriangleMesh& mesh)
+  : Search(mesh)
+  , StripPosition(mesh.GetNumberOfTriangles(), 0)
+  , StripPositionStamp(mesh.GetNumberOfTriangles(), 0u)
+{
+}
+
+//------------------------------------------------------------------------------
+TraceStatus GeodesicPathSolver::Compute(const SurfacePoint& start,
+  const SurfacePoint& end,
+  GeodesicPath& path)
+{
+  const TriangleMesh& mesh = this->GetMesh();
+  std::string problem;
+  if (!CheckSurfacePoint(mesh, start, problem))
+  {
+    path = {};
+    return TraceStatus::Failure("start point: " + problem);
+  }
+  if (!CheckSurfacePoint(mesh, end, problem))
+  {
+    path = {};
+    return TraceStatus::Failure("end point: " + problem);
+  }
+  return this->Compute(Canonicalize(mesh, start, 0.0), Canonicalize(mesh, end, 0.0), path);
+}
+
+//------------------------------------------------------------------------------
+TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
+  const CanonicalPoint& endIn,
+  GeodesicPath& path)
+{
+  const TriangleMesh& mesh = this->GetMesh();
+  this->Statistics = {};
+  path.Points.clear();
+  path.Length = 0.0;
+  std::string problem;
+  if (!CheckCanonicalPoint(mesh, startIn, problem))
+  {
+    return TraceStatus::Failure("start point: " + problem);
+  }
+  if (!CheckCanonicalPoint(mesh, endIn, problem))
+  {
+    return TraceStatus::Failure("end point: " + problem);
+  }
+  const CanonicalPoint start = Normalize(mesh, startIn);
+  const CanonicalPoint end = Normalize(mesh, endIn);
+  if (start == end)
+  {
+    path.Points.push_back(start);
+    return TraceStatus::Success();
+  }
+
+  TrianglesOf(mesh, start, this->StartTriangles);
+  TrianglesOf(mesh, end, this->EndTriangles);
+  bool connected = false;
+  for (int a : this->StartTriangles)
+  {
+    for (int b : this->EndTriangles)
+    {
+      connected = connected || this->GetComponent(a) == this->GetComponent(b);
+    }
+  }
+  if (!connected)
+  {
+    const int ta = this->StartTriangles.front(), tb = this->EndTriangles.front();
+    return TraceStatus::Failure("start point " + Describe(start) + " (triangle " +
+      std::to_string(ta) + ", component " + std::to_string(this->GetComponent(ta)) +
+      ") and end point " + Describe(end) + " (triangle " + std::to_string(tb) + ", component " +
+      std::to_string(this->GetComponent(tb)) +
+      ") lie on different connected components of the surface: no path joins them");
+  }
+
+  const int common = SharedTriangle(mesh, start, end);
+  if (common >= 0)
+  {
+    this->Strip.assign(1, common);
+  }
+  else if (!this->Search.FindStrip(this->StartTriangles,
+             PositionOf(mesh, start),
+             this->EndTriangles,
+             PositionOf(mesh, end),
+             this->Strip))
+  {
+    return TraceStatus::Failure("no triangle strip joins " + Describe(start) + " and " +
+      Describe(end) + " although they share a component (corrupt adjacency?)");
+  }
+  this->Statistics.ExpandedTriangles = this->Search.GetLastExpandedCount();
+
+  for (;;)
+  {
+    this->TrimStrip(start, end);
+    if (!this->UnfoldStrip(start, end))
+    {
+      return TraceStatus::Failure("the triangle strip between " + Describe(start) + " and " +
+        Describe(end) + " is broken (consecutive triangles are not neighbours)");
+    }
+    this->RunFunnel();
+    this->CollectPathPoints(start, end);
+    ++this->Statistics.StraighteningRounds;
+    if (this->Statistics.StraighteningRounds >= this->MaximumRounds ||
+      !this->RerouteAroundVertices())
+    {
+      break;
+    }
+  }
+  this->Statistics.StripTriangles = static_cast<int>(this->Strip.size());
+
+  path.Points.reserve(this->Points.size());
+  for (const PathPoint& p : this->Points)
+  {
+    path.Points.push_back(p.Point);
+  }
+  path.Length = PolylineLength(mesh, path.Points);
+  return TraceStatus::Success();
+}
+
+//------------------------------------------------------------------------------
+// The strip must begin at the last triangle holding the start and end at the first one after
+// it holding the end: triangles beyond would make the start or end lie on a portal, which the
+// funnel cannot handle, and a strip that comes back to an end point's fan is simply cut short.
+void GeodesicPathSolver::TrimStrip(const CanonicalPoint& start, const CanonicalPoint& end)
+{
+  const TriangleMesh& mesh = this->GetMesh();
+  const int n = static_cast<int>(this->Strip.size());
+  int first = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    if (TriangleContains(mesh, start, this->Strip[i]))
+    {
+      first = i;
+    }
+  }
+  int last = n - 1;
+  for (int i = first; i < n; ++i)
+  {
+    if (TriangleContains(mesh, end, this->Strip[i]))
+    {
+      last = i;
+      break;
+    }
+  }
+  this->Strip.erase(this->Strip.begin() + last + 1, this->Strip.end());
+  this->Strip.erase(this->Strip.begin(), this->Strip.begin() + first);
+
+  // A strip that comes back to a triangle it already crossed holds a loop (rerouting a
+  // vertex next to earlier reroutes can sweep all the way round it). The path can always take
+  // the short cut, so cut the loop out. StripPosition is mesh-sized but stamped, not cleared.
+  if (++this->PositionStamp == 0)
+  {
+    std::fill(this->StripPositionStamp.begin(), this->StripPositionStamp.end(), 0u);
+    this->PositionStamp = 1;
+  }
+  size_t kept = 0;
+  for (size_t i = 0; i < this->Strip.size(); ++i)
+  {
+    const int t = this->Strip[i];
+    const int seen = this->StripPosition[t];
+    if (this->StripPositionStamp[t] == this->PositionStamp && seen < static_cast<int>(kept) &&
+      this->Strip[seen] == t)
+    {
+      kept = seen + 1;
+      continue;
+    }
+    this->StripPositionStamp[t] = this->PositionStamp;
+    this->StripPosition[t] = static_cast<int>(kept);
+    this->Strip[kept++] = t;
+  }
+  this->Strip.resize(kept);
+}
+
+//------------------------------------------------------------------------------
+// Each triangle is laid flat next to the previous one across their common edge. Positions of
+// the shared vertices are copied, never recomputed, so a vertex has exactly one position per
+// strip triangle and portal endpoints agree bit for bit with their triangles' corners.
+bool GeodesicPathSolver::UnfoldStrip(const CanonicalPoint& start, const CanonicalPoint& end)
+{
+  const TriangleMesh& mesh = this->GetMesh();
+  const int n = static_cast<int>(this->Strip.size());
+  this->Unfolded.resize(n);
+  this->Portals.resize(n - 1);
+  {
+    const int t = this->Strip[0];
+    const Vec3 p0 = mesh.GetCornerPosition(t, 0);
+    const Vec3 e1 = mesh.GetCornerPosition(t, 1) - p0;
+    const Vec3 e2 = mesh.GetCornerPosition(t, 2) - p0;
+    const double l1 = Length(e1);
+    this->Unfolded[0] = {
+      Vec2{ 0.0, 0.0 }, Vec2{ l1, 0.0 }, Vec2{ Dot(e2, e1) / l1, Length(Cross(e1, e2)) / l1 }
+    };
+  }
+  for (int i = 0; i + 1 < n; ++i)
+  {
+    const int t = this->Strip[i];
+    const int next = this->Strip[i + 1];
+    int k = 0;
+    while (k < 3 && mesh.GetNeighbor(t, k) != next)
+    {
+      ++k;
+    }
+    if (k == 3)
+    {
+      return false;
+    }
+    const Triangle& tri = mesh.GetTriangle(t);
+    const int a = tri[k], b = tri[(k + 1) % 3];
+    const Vec2 a2 = this->Unfolded[i][k], b2 = this->Unfolded[i][(k + 1) % 3];
+    const Vec2 o2 = this->Unfolded[i][(k + 2) % 3];
+    const bool oppositeOnLeft = Cross(b2 - a2, o2 - a2) > 0.0;
+
+    // Third vertex from the 3D triangle: foot along a->b and height, on the side of the
+    // shared edge away from the previous triangle.
+    const Triangle& nextTri = mesh.GetTriangle(next);
+    int c = 0;
+    while (nextTri[c] == a || nextTri[c] == b)
+    {
+      ++c;
+    }
+    const Vec3 a3 = mesh.GetPosition(a);
+    const Vec3 ab3 = mesh.GetPosition(b) - a3;
+    const Vec3 ac3 = mesh.GetPosition(nextTri[c]) - a3;
+    const double lab = Length(ab3);
+    const double along = Dot(ac3, ab3) / lab;
+    const double height = Length(Cross(ab3, ac3)) / lab;
+    const Vec2 ab2 = b2 - a2;
+    const double l2 = Length(ab2);
+    const Vec2 dir = (1.0 / l2) * ab2;
+    Vec2 normal{ -dir.y, dir.x };
+    if (oppositeOnLeft)
+    {
+      normal = -1.0 * normal;
+    }
+    const Vec2 c2 = a2 + along * dir + height * normal;
+    for (int j = 0; j < 3; ++j)
+    {
+      this->Unfolded[i + 1][j] = nextTri[j] == a ? a2 : (nextTri[j] == b ? b2 : c2);
+    }
+
+    // Walking away from the previous triangle's third vertex, the vertex on the left is b
+    // when that vertex lies left of a->b.
+    Portal& portal = this->Portals[i];
+    portal.Edge = mesh.GetEdgeId(t, k);
+    if (oppositeOnLeft)
+    {
+      portal.Left = b;
+      portal.LeftPosition = b2;
+      portal.Right = a;
+      portal.RightPosition = a2;
+    }
+    else
+    {
+      portal.Left = a;
+      portal.LeftPosition = a2;
+      portal.Right = b;
+      portal.RightPosition = b2;
+    }
+  }
+  auto place = [&](const CanonicalPoint& p, int i)
+  {
+    const std::array<double, 3> w = WeightsInTriangle(mesh, p, this->Strip[i]);
+    const std::array<Vec2, 3>& u = this->Unfolded[i];
+    return w[0] * u[0] + w[1] * u[1] + w[2] * u[2];
+  };
+  this->StartPosition = place(start, 0);
+  this->EndPosition = place(end, n - 1);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Funnel algorithm (the "simple stupid" formulation by M. Mononen of Lee-Preparata): the apex
+// and the two funnel sides advance portal by portal; when one side crosses the other, the
+// crossed side's point becomes a path corner and the scan restarts from it. Funnel portal 0
+// is the start, portals 1..n-1 are the strip portals, portal n is the end.
+void GeodesicPathSolver::RunFunnel()
+{
+  const int count = static_cast<int>(this->Portals.size()) + 2;
+  auto portalAt = [&](int i, Vec2& left, int& leftId, Vec2& right, int& rightId)
+  {
+    if (i == 0)
+    {
+      left = right = this->StartPosition;
+      leftId = rightId = StartId;
+    }
+    else if (i == count - 1)
+    {
+      left = right = this->EndPosition;
+      leftId = rightId = EndId;
+    }
+    else
+    {
+      const Portal& p = this->Portals[i - 1];
+      left = p.LeftPosition;
+      leftId = p.Left;
+      right = p.RightPosition;
+      rightId = p.Right;
+    }
+  };
+
+  this->Corners.clear();
+  Vec2 apex = this->StartPosition, left = apex, right = apex;
+  int apexId = StartId, leftId = StartId, rightId = StartId;
+  int apexIndex = 0, leftIndex = 0, rightIndex = 0;
+  this->Corners.push_back({ apex, StartId, 0 });
+  for (int i = 1; i < count; ++i)
+  {
+    Vec2 l, r;
+    int lId, rId;
+    portalAt(i, l, lId, r, rId);
+
+    // A portal holding the apex vertex is crossed at the apex itself and constrains nothing;
+    // skipping it walks the fan of triangles around a corner. After a restart both sides sit
+    // on the apex and the first portal beyond the fan opens the funnel again. A side moving
+    // onto the other side's point (the end, or a shared vertex) closes the funnel on that
+    // point without crossing it.
+    if (lId == apexId || rId == apexId)
+    {
+      continue;
+    }
+    if (Cross(right - apex, r - apex) >= 0.0)
+    {
+      if (rightId == apexId || rId == leftId || Cross(r - apex, left - apex) > 0.0)
+      {
+        right = r;
+        rightId = rId;
+        rightIndex = i;
+      }
+      else
+      {
+        apex = left;
+        apexId = leftId;
+        apexIndex = leftIndex;
+        this->Corners.push_back({ apex, apexId, apexIndex });
+        right = left = apex;
+        rightId = leftId = apexId;
+        rightIndex = leftIndex = apexIndex;
+        i = apexIndex;
+        continue;
+      }
+    }
+    if (Cross(l - apex, left - apex) >= 0.0)
+    {
+      if (leftId == apexId || lId == rightId || Cross(right - apex, l - apex) > 0.0)
+      {
+        left = l;
+        leftId = lId;
+        leftIndex = i;
+      }
+      else
+      {
+        apex = right;
+        apexId = rightId;
+        apexIndex = rightIndex;
+        this->Corners.push_back({ apex, apexId, apexIndex });
+        right = left = apex;
+        rightId = leftId = apexId;
+        rightIndex = leftIndex = apexIndex;
+        i = apexIndex;
+        continue;
+      }
+    }
+  }
+  this->Corners.push_back({ this->EndPosition, EndId, count - 1 });
+}
+
+//------------------------------------------------------------------------------
+void GeodesicPathSolver::EmitVertex(int vertex, int portal)
+{
+  PathPoint& back = this->Points.back();
+  if (back.Point.Location == PointLocation::Vertex && back.Point.Id == vertex)
+  {
+    if (back.FirstPortal >= 0)
+    {
+      back.FirstPortal = std::min(back.FirstPortal, portal);
+      back.LastPortal = std::max(back.LastPortal, portal);
+    }
+    return;
+  }
+  auto holds = [&](int i)
+  { return this->Portals[i].Left == vertex || this->Portals[i].Right == vertex; };
+  const int n = static_cast<int>(this->Portals.size());
+  int first = portal, last = portal;
+  while (first > 0 && holds(first - 1))
+  {
+    --first;
+  }
+  while (last + 1 < n && holds(last + 1))
+  {
+    ++last;
+  }
+  PathPoint p;
+  p.Point.Location = PointLocation::Vertex;
+  p.Point.Id = vertex;
+  p.FirstPortal = first;
+  p.LastPortal = last;
+  this->Points.push_back(p);
+}
+
+//------------------------------------------------------------------------------
+// Walks the strip portals in order: portals around a corner vertex are crossed at that vertex;
+// any other portal is crossed where the straight segment between the surrounding corners
+// meets it.
+void GeodesicPathSolver::CollectPathPoints(const CanonicalPoint& start, const CanonicalPoint& end)
+{
+  const TriangleMesh& mesh = this->GetMesh();
+  const int m = static_cast<int>(this->Portals.size());
+  const int nc = static_cast<int>(this->Corners.size());
+  this->Points.clear();
+  this->Points.push_back({ start, -1, -1 });
+
+  // Portal ranges of the interior corners (the run of portals holding the corner vertex).
+  thread_local std::vector<std::array<int, 2>> ranges;
+  thread_local std::vector<char> emitted;
+  ranges.assign(nc, { 0, -1 });
+  emitted.assign(nc, 0);
+  for (int c = 1; c + 1 < nc; ++c)
+  {
+    const int v = this->Corners[c].Vertex;
+    int first = this->Corners[c].Portal - 1, last = first;
+    auto holds = [&](int i) { return this->Portals[i].Left == v || this->Portals[i].Right == v; };
+    while (first > 0 && holds(first - 1))
+    {
+      --first;
+    }
+    while (last + 1 < m && holds(last + 1))
+    {
+      ++last;
+    }
+    ranges[c] = { first, last };
+  }
+
+  int j = 0; // current segment: corner j -> corner j + 1
+  for (int i = 0; i < m; ++i)
+  {
+    while (j + 1 < nc - 1 && i > ranges[j + 1][1])
+    {
+      if (!emitted[j + 1])
+      {
+        this->EmitVertex(this->Corners[j + 1].Vertex, ranges[j + 1][1]);
+      }
+      ++j;
+    }
+    if (j + 1 < nc - 1 && i >= ranges[j + 1][0])
+    {
+      this->EmitVertex(this->Corners[j + 1].Vertex, i);
+      emitted[j + 1] = 1;
+      continue;
+    }
+    const Portal& portal = this->Portals[i];
+    const Vec2 a = this->Corners[j].Position;
+    const Vec2 d = this->Corners[j + 1].Position - a;
+    const Vec2 span = portal.RightPosition - portal.LeftPosition;
+    const double denominator = Cross(span, d);
+    double t = denominator != 0.0 ? Cross(a - portal.LeftPosition, d) / denominator : 0.0;
+    if (!(t > VertexSnap)) // also catches NaN from a degenerate segment
+    {
+      this->EmitVertex(portal.Left, i);
+    }
+    else if (t >= 1.0 - VertexSnap)
+    {
+      this->EmitVertex(portal.Right, i);
+    }
+    else
+    {
+      PathPoint p;
+      p.Point.Location = PointLocation::Edge;
+      p.Point.Id = portal.Edge;
+      p.Point.T = mesh.GetEdgeVertices(portal.Edge)[0] == portal.Left ? t : 1.0 - t;
+      this->Points.push_back(p);
+    }
+  }
+  for (int c = j + 1; c + 1 < nc; ++c)
+  {
+    if (!emitted[c])
+    {
+      this->EmitVertex(this->Corners[c].Vertex, ranges[c][1]);
+    }
+  }
+  if (!(this->Points.back().Point == end))
+  {
+    this->Points.push_back({ end, -1, -1 });
+  }
+}
+
+//------------------------------------------------------------------------------
+double GeodesicPathSolver::OutsideAngle(int v,
+  const Vec3& before,
+  const Vec3& after,
+  int first,
+  int second,
+  int last,
+  std::vector<int>& swept) const
+{
+  const TriangleMesh& mesh = this->GetMesh();
+  swept.clear();
+  const Vec3 center = mesh.GetPosition(v);
+  const Vec3 in = before - center;
+  const Vec3 out = after - center;
+  const Triangle& firstTri = mesh.GetTriangle(first);
+  const int kv = CornerOf(firstTri, v);
+  if (kv < 0)
+  {
+    return -1.0;
+  }
+  // The two edges of `first` at v are local edges kv (v -> next) and kv + 2 (previous -> v);
+  // leave through the one that does not lead back into the strip.
+  int edge = mesh.GetNeighbor(first, kv) == second ? (kv + 2) % 3 : kv;
+  int other = edge == kv ? firstTri[(kv + 1) % 3] : firstTri[(kv + 2) % 3];
+  double angle = AngleBetween(in, mesh.GetPosition(other) - center);
+  int current = first;
+  const int limit = mesh.GetVertexCorners(v).size();
+  for (int steps = 0; steps <= limit; ++steps)
+  {
+    const int next = mesh.GetNeighbor(current, edge);
+    if (next < 0)
+    {
+      return -1.0; // boundary (or non-manifold edge): the outside is not surface
+    }
+    if (next == last)
+    {
+      return angle + AngleBetween(mesh.GetPosition(other) - center, out);
+    }
+    const int entry = mesh.GetNeighborEdge(current, edge);
+    const Triangle& tri = mesh.GetTriangle(next);
+    const int kn = CornerOf(tri, v);
+    if (kn < 0)
+    {
+      return -1.0;
+    }
+    const int exit = entry == kn ? (kn + 2) % 3 : kn;
+    const int nextOther = exit == kn ? tri[(kn + 1) % 3] : tri[(kn + 2) % 3];
+    angle += AngleBetween(mesh.GetPosition(other) - center, mesh.GetPosition(nextOther) - center);
+    swept.push_back(next);
+    other = nextOther;
+    current = next;
+    edge = exit;
+  }
+  return -1.0;
+}
+
+//------------------------------------------------------------------------------
+bool GeodesicPathSolver::RerouteAroundVertices()
+{
+  const TriangleMesh& mesh = this->GetMesh();
+  this->NewStrip.clear();
+  int copied = 0; // Strip[0, copied) is already in NewStrip
+  bool changed = false;
+  const int np = static_cast<int>(this->Points.size());
+  for (int k = 1; k + 1 < np; ++k)
+  {
+    const PathPoint& p = this->Points[k];
+    if (p.Point.Location != PointLocation::Vertex || p.FirstPortal < copied)
+    {
+      continue;
+    }
+    const int a = p.FirstPortal, b = p.LastPortal;
+    const double angle = this->OutsideAngle(p.Point.Id,
+      PositionOf(mesh, this->Points[k - 1].Point),
+      PositionOf(mesh, this->Points[k + 1].Point),
+      this->Strip[a],
+      this->Strip[a + 1],
+      this->Strip[b + 1],
+      this->Swept);
+    if (angle < 0.0 || angle >= Pi - AngleTolerance)
+    {
+      continue;
+    }
+    this->NewStrip.insert(
+      this->NewStrip.end(), this->Strip.begin() + copied, this->Strip.begin() + a + 1);
+    this->NewStrip.insert(this->NewStrip.end(), this->Swept.begin(), this->Swept.end());
+    copied = b + 1;
+    changed = true;
+  }
+  if (!changed)
+  {
+    return false;
+  }
+  this->NewStrip.insert(this->NewStrip.end(), this->Strip.begin() + copied, this->Strip.end());
+  // Two rerouted vertices joined by an edge both sweep across that edge, leaving a spur
+  // x, y, x in the strip (a step into y and straight back). Spurs hold no path: drop them.
+  this->Strip.clear();
+  for (int t : this->NewStrip)
+  {
+    const size_t n = this->Strip.size();
+    if (n >= 2 && this->Strip[n - 2] == t)
+    {
+      this->Strip.pop_back();
+    }
+    else if (n == 0 || this->Strip[n - 1] != t)
+    {
+      this->Strip.push_back(t);
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double PolylineLength(const TriangleMesh& mesh, const std::vector<CanonicalPoint>& points)
+{
+  double length = 0.0;
+  for (size_t i = 1; i < points.size(); ++i)
+  {
+    length += Distance(PositionOf(mesh, points[i - 1]), PositionOf(mesh, points[i]));
+  }
+  return length;
+}
+
+//------------------------------------------------------------------------------
+CanonicalPoint PointAlongPath(const TriangleMesh& mesh, const GeodesicPath& path, double t)
+{
+  const std::vector<CanonicalPoint>& pts = path.Points;
+  if (pts.empty())
+  {
+    return {};
+  }
+  if (pts.size() == 1 || !(t > 0.0))
+  {
+    return pts.front();
+  }
+  if (t >= 1.0)
+  {
+    return pts.back();
+  }
+  const double total = PolylineLength(mesh, pts);
+  const double target = t * total;
+  double walked = 0.0;
+  for (size_t i = 1; i < pts.size(); ++i)
+  {
+    const double segment = Distance(PositionOf(mesh, pts[i - 1]), PositionOf(mesh, pts[i]));
+    if (walked + segment < target || segment == 0.0)
+    {
+      walked += segment;
+      continue;
+    }
+    const double s = (target - walked) / segment;
+    if (s <= 0.0)
+    {
+      return pts[i - 1];
+    }
+    if (s >= 1.0)
+    {
+      return pts[i];
+    }
+    const int tri = SharedTriangle(mesh, pts[i - 1], pts[i]);
+    if (tri < 0)
+    {
+      return pts[i - 1]; // not a traced path; nothing better to offer
+    }
+    const std::array<double, 3> wa = WeightsInTriangle(mesh, pts[i - 1], tri);
+    const std::array<double, 3> wb = WeightsInTriangle(mesh, pts[i], tri);
+    std::array<double, 3> w;
+    for (int k = 0; k < 3; ++k)
+    {
+      // A weight zero at both ends stays exactly zero: a point between two points of one
+      // edge is on that edge, not 1e-17 inside the triangle.
+      w[k] = (wa[k] == 0.0 && wb[k] == 0.0) ? 0.0 : (1.0 - s) * wa[k] + s * wb[k];
+    }
+    return FromWeights(mesh, tri, w);
+  }
+  return pts.back();
+}
+
+} // namespace boolsurf

@@ -1,0 +1,148 @@
+// Shortest (locally shortest) geodesic path between two surface points.
+//
+// Three stages, after Lee-Preparata and the strip straightening used by BoolSurf/b-Surf:
+//  1. DualGraphSearch gives an initial strip: a chain of edge-adjacent triangles from a
+//     triangle holding the start to one holding the end.
+//  2. The strip is unfolded into the plane and the funnel algorithm finds the shortest
+//     polyline inside it; it bends only at strip vertices.
+//  3. Where that polyline passes through a mesh vertex and the angle on the side outside the
+//     strip is below pi, going around the vertex on that side is shorter: the strip is
+//     rerouted there and the funnel runs again, until no such vertex is left. The result is
+//     locally shortest: at every interior mesh vertex it passes through, both angles are at
+//     least pi. A boundary vertex cannot be walked around on the outside, so paths hug
+//     boundaries instead of leaving the surface.
+//
+// The output is exact in the sense the arrangement needs: every point is canonical (a vertex
+// id, an edge id with a parameter, or a triangle with barycentrics) and every two consecutive
+// points lie in one common triangle, so each segment is a straight segment of one triangle.
+#ifndef boolsurf_GeodesicPath_h
+#define boolsurf_GeodesicPath_h
+
+#include "DualGraphSearch.h"
+#include "SurfacePoint.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace boolsurf
+{
+
+/// Outcome of a tracing call: Ok, or a message naming the offending points/curves.
+struct TraceStatus
+{
+  bool Ok = true;
+  std::string Message;
+
+  explicit operator bool() const { return this->Ok; }
+  static TraceStatus Success() { return {}; }
+  static TraceStatus Failure(std::string message) { return { false, std::move(message) }; }
+};
+
+struct GeodesicPath
+{
+  /// Start, one point per mesh edge crossed (Edge location), the mesh vertices passed through
+  /// (Vertex location), end. Consecutive points share a triangle. A zero-length path (start
+  /// == end) holds the single point.
+  std::vector<CanonicalPoint> Points;
+  double Length = 0.0;
+};
+
+/// What the last GeodesicPathSolver::Compute did (for benchmarks and tests).
+struct GeodesicPathStatistics
+{
+  int ExpandedTriangles = 0;   ///< A* work
+  int StripTriangles = 0;      ///< final strip length
+  int StraighteningRounds = 0; ///< funnel runs
+};
+
+/// Computes geodesic paths on one mesh. Holds the reusable search state (mesh-sized arrays
+/// allocated once in the constructor), so keep one solver per mesh and per thread.
+class GeodesicPathSolver
+{
+public:
+  /// `mesh` must outlive the solver.
+  explicit GeodesicPathSolver(const TriangleMesh& mesh);
+
+  /// Locally shortest path from `start` to `end`. Fails with a message on invalid points and
+  /// on points lying on different connected components.
+  TraceStatus Compute(const CanonicalPoint& start, const CanonicalPoint& end, GeodesicPath& path);
+
+  /// Same for raw triangle + barycentric points (validated, then canonicalized exactly).
+  TraceStatus Compute(const SurfacePoint& start, const SurfacePoint& end, GeodesicPath& path);
+
+  const TriangleMesh& GetMesh() const { return this->Search.GetMesh(); }
+  /// Connected component of usable triangle t (edge adjacency), -1 for unusable triangles.
+  int GetComponent(int t) const { return this->Search.GetComponent(t); }
+  int GetNumberOfComponents() const { return this->Search.GetNumberOfComponents(); }
+  const GeodesicPathStatistics& GetLastStatistics() const { return this->Statistics; }
+
+  /// Upper bound on funnel runs per path (each run after the first shortens the path, so the
+  /// loop ends anyway; the bound only guards against numerical ping-pong).
+  void SetMaximumStraighteningRounds(int n) { this->MaximumRounds = n; }
+
+private:
+  struct Portal
+  {
+    int Left = -1, Right = -1; // mesh vertex ids, seen walking from the start to the end
+    Vec2 LeftPosition, RightPosition;
+    int Edge = -1;
+  };
+  struct Corner
+  {
+    Vec2 Position;
+    int Vertex = -1; // -2: start, -3: end
+    int Portal = 0;  // funnel portal index it was found at (0 = start)
+  };
+  struct PathPoint
+  {
+    CanonicalPoint Point;
+    int FirstPortal = -1, LastPortal = -1; // Vertex points: strip portals that contain it
+  };
+
+  void TrimStrip(const CanonicalPoint& start, const CanonicalPoint& end);
+  bool UnfoldStrip(const CanonicalPoint& start, const CanonicalPoint& end);
+  void RunFunnel();
+  void CollectPathPoints(const CanonicalPoint& start, const CanonicalPoint& end);
+  void EmitVertex(int vertex, int portal);
+  bool RerouteAroundVertices();
+  /// Angle at vertex v between the directions to `before` and `after`, swept from strip
+  /// triangle `first` away from strip triangle `second` until strip triangle `last`;
+  /// negative when a boundary (or a non-manifold fan) blocks the way.
+  double OutsideAngle(int v,
+    const Vec3& before,
+    const Vec3& after,
+    int first,
+    int second,
+    int last,
+    std::vector<int>& swept) const;
+
+  DualGraphSearch Search;
+  GeodesicPathStatistics Statistics;
+  int MaximumRounds = 10000;
+
+  // Per-call scratch, kept to reuse capacity.
+  std::vector<int> StartTriangles, EndTriangles;
+  std::vector<int> Strip, NewStrip, Swept;
+  std::vector<std::array<Vec2, 3>> Unfolded;
+  std::vector<Portal> Portals; // Portals[i] joins Strip[i] and Strip[i + 1]
+  Vec2 StartPosition, EndPosition;
+  std::vector<Corner> Corners;
+  std::vector<PathPoint> Points;
+  std::vector<int> StripPosition;                // index in Strip, valid where stamped
+  std::vector<std::uint32_t> StripPositionStamp; // == PositionStamp: StripPosition is valid
+  std::uint32_t PositionStamp = 0;
+};
+
+/// The point at fraction t in [0, 1] of the path's length (t is clamped), found in the
+/// triangle shared by the two path points around it. Used for geodesic midpoints.
+CanonicalPoint PointAlongPath(const TriangleMesh& mesh, const GeodesicPath& path, double t);
+
+/// Sum of the straight distances between consecutive points (exact for traced paths, whose
+/// consecutive points share a triangle).
+double PolylineLength(const TriangleMesh& mesh, const std::vector<CanonicalPoint>& points);
+
+} // namespace boolsurf
+
+#endif
