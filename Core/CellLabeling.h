@@ -1,0 +1,73 @@
+// Winding-number labels of arrangement cells, one per shape (BoolSurf step 4).
+//
+// The cell graph has one arc per (pair of adjacent cells, shape, patch), oriented from the
+// cell on the right of the curve to the cell on the left: crossing it right -> left adds 1
+// to that shape's label. Where curves of several shapes overlap, one step from a cell to its
+// neighbour crosses all of them at once, so arcs are grouped into crossings: arcs between
+// the same two cells at the same place (same `Location`) are crossed together.
+//
+// One breadth-first search labels all shapes together. When a cell is reached a second time
+// with a different label for shape s, s is inconsistent (its curves are not
+// null-homologous, or it is open): the comparison is exact, not modulo 2. The labels of the
+// other shapes do not depend on the search order, so they stay valid.
+#ifndef boolsurf_CellLabeling_h
+#define boolsurf_CellLabeling_h
+
+#include <vector>
+
+namespace boolsurf
+{
+
+struct CellArc
+{
+  int RightCell = -1;
+  int LeftCell = -1;
+  int Shape = -1;
+  /// Arcs between the same two cells with the same Location are one crossing (overlapping
+  /// curves). Distinct places must have distinct values (e.g. a patch or refined edge id).
+  long long Location = 0;
+};
+
+struct LabelingInput
+{
+  int NumberOfCells = 0;
+  int NumberOfShapes = 0;
+  std::vector<CellArc> Arcs;
+  /// Connected component of each cell (surface component); empty = all in component 0.
+  std::vector<int> CellComponent;
+  /// Zero cell of each component, or -1: then every shape's labels in that component are
+  /// shifted so their minimum is 0 (the closed-surface heuristic of the paper).
+  std::vector<int> ZeroCells;
+};
+
+struct LabelConflict
+{
+  int Shape = -1;
+  int Cell = -1;       ///< the cell reached with two different labels
+  int FirstLabel = 0;  ///< label it had
+  int SecondLabel = 0; ///< label the other path gives
+};
+
+struct LabelingResult
+{
+  int NumberOfShapes = 0;
+  /// Labels[cell * NumberOfShapes + shape].
+  std::vector<int> Labels;
+  /// 1 when the shape's labels are path independent.
+  std::vector<char> ShapeConsistent;
+  /// The first conflict found for each inconsistent shape.
+  std::vector<LabelConflict> Conflicts;
+
+  int GetLabel(int cell, int shape) const
+  {
+    return this->Labels[cell * this->NumberOfShapes + shape];
+  }
+};
+
+/// Labels every cell. Arcs naming cells or shapes out of range are ignored (the caller
+/// validates).
+LabelingResult LabelCells(const LabelingInput& input);
+
+} // namespace boolsurf
+
+#endif
