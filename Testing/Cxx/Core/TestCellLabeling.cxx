@@ -3,6 +3,7 @@
 #include "BooleanExpression.h"
 #include "BooleanSelection.h"
 #include "CellLabeling.h"
+#include "RegionBoundary.h"
 
 #include <gtest/gtest.h>
 
@@ -229,4 +230,32 @@ TEST(BooleanSelection, FillRulesAndRefusalOfInconsistentShapes)
   EXPECT_FALSE(SelectCells(labels, e, FillRule::NonZero, sel, error));
   EXPECT_NE(error.find("inconsistent shape(s)"), std::string::npos) << error;
   EXPECT_NE(error.find("S1 (cell 3"), std::string::npos) << error;
+}
+
+// Two squares' boundaries on a grid of point ids: the union's boundary is one loop that
+// skips the patches inside the union; the intersection's is the inner square.
+TEST(RegionBoundary, LoopsKeepTheRegionOnTheLeft)
+{
+  // Cells: 0 outside, 1 inside A only, 2 inside A and B, 3 inside B only.
+  // Patches (point ids arbitrary but shared at the two crossings 10 and 20):
+  std::vector<BoundaryPatch> patches = {
+    { { 10, 1, 2, 20 }, 1, 0 }, // A's outer arc: A-only cell on its left
+    { { 20, 3, 10 }, 2, 3 },    // A's arc inside B
+    { { 20, 4, 5, 10 }, 3, 0 }, // B's outer arc
+    { { 10, 6, 20 }, 2, 1 },    // B's arc inside A
+  };
+  std::vector<BoundaryPolyline> lines = ExtractRegionBoundary(patches, { 0, 1, 1, 1 });
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_TRUE(lines[0].Closed);
+  EXPECT_EQ(lines[0].Points, (std::vector<int>{ 10, 1, 2, 20, 4, 5 }));
+  lines = ExtractRegionBoundary(patches, { 0, 0, 1, 0 });
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_TRUE(lines[0].Closed);
+  EXPECT_EQ(lines[0].Points, (std::vector<int>{ 20, 3, 10, 6 }));
+  // Difference A - B: A's outer arc then B's inner arc walked backwards (region on the left).
+  lines = ExtractRegionBoundary(patches, { 0, 1, 0, 0 });
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0].Points, (std::vector<int>{ 10, 1, 2, 20, 6 }));
+  EXPECT_EQ(lines[0].Reversed, (std::vector<char>{ 0, 1 }));
+  EXPECT_TRUE(ExtractRegionBoundary(patches, { 0, 0, 0, 0 }).empty());
 }

@@ -1,0 +1,99 @@
+#include "RegionBoundary.h"
+
+#include <unordered_map>
+
+namespace boolsurf
+{
+
+//------------------------------------------------------------------------------
+std::vector<BoundaryPolyline> ExtractRegionBoundary(const std::vector<BoundaryPatch>& patches,
+  const std::vector<char>& selected)
+{
+  struct Piece
+  {
+    int Patch;
+    bool Reversed;
+    int First, Last;
+  };
+  std::vector<Piece> pieces;
+  auto isSelected = [&](int cell)
+  { return cell >= 0 && cell < static_cast<int>(selected.size()) && selected[cell] != 0; };
+  for (int p = 0; p < static_cast<int>(patches.size()); ++p)
+  {
+    const BoundaryPatch& patch = patches[p];
+    const bool left = isSelected(patch.LeftCell), right = isSelected(patch.RightCell);
+    if (left == right || patch.Points.size() < 2)
+    {
+      continue;
+    }
+    const bool reversed = right; // the region must be on the left of the walk
+    const int first = reversed ? patch.Points.back() : patch.Points.front();
+    const int last = reversed ? patch.Points.front() : patch.Points.back();
+    pieces.push_back({ p, reversed, first, last });
+  }
+  // Pieces starting at each point. At a point where several boundary pieces meet (curves
+  // crossing at a corner of the region) the pieces are taken in input order, which still
+  // gives closed loops since every point has as many pieces in as out.
+  std::unordered_multimap<int, int> startingAt;
+  for (int i = 0; i < static_cast<int>(pieces.size()); ++i)
+  {
+    startingAt.emplace(pieces[i].First, i);
+  }
+  std::vector<char> used(pieces.size(), 0);
+  std::vector<BoundaryPolyline> result;
+  auto append = [&](BoundaryPolyline& line, const Piece& piece)
+  {
+    const std::vector<int>& pts = patches[piece.Patch].Points;
+    const int n = static_cast<int>(pts.size());
+    // Skip the first point of every piece after the first: it is the previous one's last.
+    for (int k = line.Points.empty() ? 0 : 1; k < n; ++k)
+    {
+      line.Points.push_back(piece.Reversed ? pts[n - 1 - k] : pts[k]);
+    }
+    line.Patches.push_back(piece.Patch);
+    line.Reversed.push_back(piece.Reversed);
+  };
+  auto takeNext = [&](int point)
+  {
+    auto range = startingAt.equal_range(point);
+    for (auto it = range.first; it != range.second; ++it)
+    {
+      if (!used[it->second])
+      {
+        used[it->second] = 1;
+        return it->second;
+      }
+    }
+    return -1;
+  };
+  for (int i = 0; i < static_cast<int>(pieces.size()); ++i)
+  {
+    if (used[i])
+    {
+      continue;
+    }
+    used[i] = 1;
+    BoundaryPolyline line;
+    append(line, pieces[i]);
+    int end = pieces[i].Last;
+    while (end != pieces[i].First)
+    {
+      const int next = takeNext(end);
+      if (next < 0)
+      {
+        break;
+      }
+      append(line, pieces[next]);
+      end = pieces[next].Last;
+    }
+    line.Closed = end == pieces[i].First;
+    if (line.Closed)
+    {
+      line.Points.pop_back(); // the loop came back to its first point
+    }
+    result.push_back(std::move(line));
+  }
+  return result;
+}
+
+} // namespace boolsurf
