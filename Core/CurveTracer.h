@@ -1,0 +1,105 @@
+// Traces user curves on the mesh: geodesic polygons and cubic geodesic Bezier splines, open
+// or closed, become polylines of canonical surface points (TracedCurve, the input of the
+// arrangement) with a vertex at every mesh-edge crossing.
+//
+// Each traced vertex remembers where it comes from: the input segment, the input control point
+// it is (if any), and its curve parameter (segment index + fraction in [0, 1]: of the
+// segment's length for polygons, the spline parameter t for Beziers). The Boolean output uses
+// these to give results back as control points.
+#ifndef boolsurf_CurveTracer_h
+#define boolsurf_CurveTracer_h
+
+#include "GeodesicBezier.h"
+#include "GeodesicPath.h"
+#include "TracedCurve.h"
+
+#include <vector>
+
+namespace boolsurf
+{
+
+/// Values of the `CurveType` cell array.
+enum class CurveType : int
+{
+  GeodesicPolygon = 0, ///< consecutive control points joined by shortest paths
+  CubicBezier = 1,     ///< anchor, handle, handle, anchor, ... (3n+1 open, 3n closed)
+};
+
+/// One traced curve plus, per point of Curve.Points, where the point comes from.
+struct CurveTrace
+{
+  TracedCurve Curve;             ///< closed curves do not repeat their first point
+  std::vector<int> Segment;      ///< input segment index (segment i joins anchors i and i+1)
+  std::vector<int> ControlPoint; ///< input control point index, -1 for other points
+  std::vector<double> Parameter; ///< segment index + fraction in [0, 1]
+  /// True where the point lies on the exact curve at Parameter: every point of a polygon; the
+  /// subdivision anchors of a Bezier (edge crossings and handles of the refined control
+  /// polygon are within its convergence distance of the curve, not on it).
+  std::vector<char> OnCurve;
+  double Length = 0.0;
+
+  void Clear();
+};
+
+class CurveTracer
+{
+public:
+  /// `mesh` must outlive the tracer. One tracer per thread.
+  explicit CurveTracer(const TriangleMesh& mesh);
+
+  /// De Casteljau subdivision levels for Beziers (default 4: 16 pieces per segment); clamped
+  /// to [0, 16].
+  void SetResolution(int levels);
+  int GetResolution() const { return this->Resolution; }
+
+  /// Geodesic polygon through `points` (at least 2); closed adds the segment back to point 0.
+  TraceStatus TraceGeodesicPolygon(const std::vector<CanonicalPoint>& points,
+    bool closed,
+    CurveTrace& out,
+    int curveId = 0);
+
+  /// Cubic geodesic Bezier spline: 3n+1 points when open, 3n when closed (segment n-1 then
+  /// uses points 3n-3, 3n-2, 3n-1 and point 0).
+  TraceStatus TraceBezierSpline(const std::vector<CanonicalPoint>& points,
+    bool closed,
+    CurveTrace& out,
+    int curveId = 0);
+
+  /// Validates raw triangle + barycentric control points (out-of-range triangles, NaN) and
+  /// dispatches on `type`. Messages name the curve and the control point.
+  TraceStatus Trace(const std::vector<SurfacePoint>& points,
+    CurveType type,
+    bool closed,
+    CurveTrace& out,
+    int curveId = 0);
+
+  GeodesicPathSolver& GetPathSolver() { return this->Solver; }
+
+private:
+  /// Appends a traced path, mapping arc length onto parameters [t0, t1] of `segment`.
+  void AppendPath(const GeodesicPath& path,
+    int segment,
+    double t0,
+    double t1,
+    int firstControl,
+    int lastControl,
+    bool firstOnCurve,
+    bool lastOnCurve,
+    bool interiorOnCurve,
+    CurveTrace& out) const;
+  void AppendPoint(const CanonicalPoint& p,
+    int segment,
+    int control,
+    double parameter,
+    bool onCurve,
+    CurveTrace& out) const;
+
+  GeodesicPathSolver Solver;
+  int Resolution = 4;
+  GeodesicPath Path;
+  std::vector<CanonicalPoint> Refined;
+};
+
+} // namespace boolsurf
+
+#endif

@@ -1,0 +1,149 @@
+// Curve tracing: geodesic polygons with provenance, and the named errors users see.
+#include "CurveTracer.h"
+#include "ProceduralMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace boolsurf;
+
+namespace
+{
+TriangleMesh FlatMesh()
+{
+  MeshData d = MakeFlatSquare(12, 1.0, 0.3, 4);
+  return TriangleMesh(d.Positions, d.Triangles);
+}
+} // namespace
+
+TEST(CurveTracer, OpenPolygonOnFlatMesh)
+{
+  const TriangleMesh mesh = FlatMesh();
+  CurveTracer tracer(mesh);
+  const std::vector<SurfacePoint> controls{
+    { 3, 0.2, 0.3 }, { 100, 0.1, 0.1 }, { 250, 0.5, 0.25 }, { 40, 0.3, 0.3 }
+  };
+  CurveTrace trace;
+  ASSERT_TRUE(tracer.Trace(controls, CurveType::GeodesicPolygon, false, trace, 5).Ok);
+  const std::vector<CanonicalPoint>& pts = trace.Curve.Points;
+  EXPECT_EQ(trace.Curve.CurveId, 5);
+  EXPECT_FALSE(trace.Curve.Closed);
+  double expectedLength = 0;
+  for (size_t i = 0; i + 1 < controls.size(); ++i)
+  {
+    expectedLength += Distance(mesh.Evaluate(controls[i].Triangle, controls[i].U, controls[i].V),
+      mesh.Evaluate(controls[i + 1].Triangle, controls[i + 1].U, controls[i + 1].V));
+  }
+  EXPECT_NEAR(trace.Length, expectedLength, 1e-12);
+  int seen = 0;
+  for (size_t k = 0; k < pts.size(); ++k)
+  {
+    if (k > 0)
+    {
+      EXPECT_GE(SharedTriangle(mesh, pts[k - 1], pts[k]), 0);
+      EXPECT_GT(trace.Parameter[k], trace.Parameter[k - 1]);
+    }
+    EXPECT_TRUE(trace.OnCurve[k]);
+    const int segment = trace.Segment[k];
+    ASSERT_GE(segment, 0);
+    ASSERT_LE(segment, 2);
+    // The point sits at its parameter's fraction of the straight segment.
+    const Vec3 a =
+      mesh.Evaluate(controls[segment].Triangle, controls[segment].U, controls[segment].V);
+    const Vec3 b = mesh.Evaluate(
+      controls[segment + 1].Triangle, controls[segment + 1].U, controls[segment + 1].V);
+    const double f = trace.Parameter[k] - segment;
+    EXPECT_LT(Distance(PositionOf(mesh, pts[k]), (1 - f) * a + f * b), 1e-12);
+    if (trace.ControlPoint[k] >= 0)
+    {
+      EXPECT_EQ(trace.ControlPoint[k], seen);
+      EXPECT_DOUBLE_EQ(trace.Parameter[k], seen);
+      ++seen;
+    }
+  }
+  EXPECT_EQ(seen, 4);
+}
+
+TEST(CurveTracer, ClosedPolygonOnTorus)
+{
+  MeshData d = MakeTorus(2.0, 0.6, 40, 20);
+  const TriangleMesh mesh(d.Positions, d.Triangles);
+  CurveTracer tracer(mesh);
+  const std::vector<SurfacePoint> controls{
+    { 10, 0.3, 0.3 }, { 300, 0.3, 0.3 }, { 900, 0.3, 0.3 }
+  };
+  CurveTrace trace;
+  ASSERT_TRUE(tracer.Trace(controls, CurveType::GeodesicPolygon, true, trace).Ok);
+  const std::vector<CanonicalPoint>& pts = trace.Curve.Points;
+  EXPECT_TRUE(trace.Curve.Closed);
+  EXPECT_FALSE(pts.back() == pts.front());
+  for (size_t k = 0; k < pts.size(); ++k)
+  {
+    EXPECT_GE(SharedTriangle(mesh, pts[k], pts[(k + 1) % pts.size()]), 0);
+  }
+  EXPECT_GT(trace.Parameter.back(), 2.0);
+  EXPECT_LT(trace.Parameter.back(), 3.0);
+  EXPECT_NEAR(PolylineLength(mesh, pts) +
+      Distance(PositionOf(mesh, pts.back()), PositionOf(mesh, pts.front())),
+    trace.Length,
+    1e-9);
+}
+
+TEST(CurveTracer, NamedErrors)
+{
+  const TriangleMesh mesh = FlatMesh();
+  CurveTracer tracer(mesh);
+  CurveTrace trace;
+  TraceStatus s = tracer.Trace({ { 1, 0.2, 0.2 } }, CurveType::GeodesicPolygon, false, trace, 4);
+  EXPECT_FALSE(s.Ok);
+  EXPECT_EQ(s.Message, "curve 4: a geodesic polygon needs at least 2 control points, got 1");
+
+  std::vector<SurfacePoint> five(5, SurfacePoint{ 1, 0.2, 0.2 });
+  s = tracer.Trace(five, CurveType::CubicBezier, false, trace, 2);
+  EXPECT_EQ(s.Message,
+    "curve 2: an open cubic Bezier spline needs 3n+1 control points (anchor, handle, handle, "
+    "anchor, ...), got 5");
+  std::vector<SurfacePoint> four(4, SurfacePoint{ 1, 0.2, 0.2 });
+  s = tracer.Trace(four, CurveType::CubicBezier, true, trace, 2);
+  EXPECT_EQ(s.Message,
+    "curve 2: a closed cubic Bezier spline needs 3n control points (anchor, handle, handle, "
+    "anchor, ...), got 4");
+
+  s = tracer.Trace(
+    { { 1, 0.2, 0.2 }, { 2, std::nan(""), 0.1 } }, CurveType::GeodesicPolygon, false, trace, 7);
+  EXPECT_FALSE(s.Ok);
+  EXPECT_EQ(s.Message.rfind("curve 7, control point 1: barycentric coordinates", 0), 0u)
+    << s.Message;
+  s = tracer.Trace(
+    { { 1, 0.2, 0.2 }, { 100000, 0.1, 0.1 } }, CurveType::CubicBezier, false, trace, 0);
+  EXPECT_EQ(s.Message, "curve 0, control point 1: triangle id 100000 is out of range [0, 288)");
+  EXPECT_TRUE(trace.Curve.Points.empty());
+}
+
+TEST(CurveTracer, DifferentComponentsNamesCurveAndSegment)
+{
+  MeshData a = MakeFlatSquare(3);
+  const int offset = static_cast<int>(a.Positions.size());
+  const MeshData b = MakeFlatSquare(3);
+  for (Vec3 p : b.Positions)
+  {
+    a.Positions.push_back(p + Vec3{ 3, 0, 0 });
+  }
+  for (auto tri : b.Triangles)
+  {
+    a.Triangles.push_back({ tri[0] + offset, tri[1] + offset, tri[2] + offset });
+  }
+  const TriangleMesh mesh(a.Positions, a.Triangles);
+  CurveTracer tracer(mesh);
+  CurveTrace trace;
+  const TraceStatus s = tracer.Trace({ { 0, 0.2, 0.2 }, { 1, 0.2, 0.2 }, { 20, 0.2, 0.2 } },
+    CurveType::GeodesicPolygon,
+    false,
+    trace,
+    9);
+  EXPECT_FALSE(s.Ok);
+  EXPECT_EQ(s.Message.rfind("curve 9, segment 1 (control points 1 and 2): start point", 0), 0u)
+    << s.Message;
+  EXPECT_NE(s.Message.find("different connected components"), std::string::npos);
+}
