@@ -1,0 +1,319 @@
+#include "Arrangement.h"
+
+#include "SegmentIntersection.h"
+#include "TriangleRefinement.h"
+#include "TriangleSegments.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+
+namespace boolsurf
+{
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+double Milliseconds(Clock::time_point from, Clock::time_point to)
+{
+  return std::chrono::duration<double, std::milli>(to - from).count();
+}
+
+// Runs body(i) for i in [0, n) on the arena's threads. Every body writes only its own slot,
+// so results never depend on scheduling.
+template <class Body>
+void ParallelFor(tbb::task_arena& arena, int n, const Body& body)
+{
+  arena.execute(
+    [&]
+    {
+      tbb::parallel_for(tbb::blocked_range<int>(0, n),
+        [&](const tbb::blocked_range<int>& range)
+        {
+          for (int i = range.begin(); i != range.end(); ++i)
+          {
+            body(i);
+          }
+        });
+    });
+}
+
+SurfacePoint SurfacePointOf(const TriangleMesh& mesh, const CanonicalPoint& c)
+{
+  SurfacePoint s;
+  s.Triangle = AnyTriangleOf(mesh, c);
+  if (s.Triangle >= 0)
+  {
+    const std::array<double, 3> w = WeightsInTriangle(mesh, c, s.Triangle);
+    s.U = w[1];
+    s.V = w[2];
+  }
+  return s;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool ComputeArrangement(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  const ArrangementOptions& options,
+  Arrangement& out,
+  std::string& error)
+{
+  out = Arrangement();
+  error.clear();
+  tbb::task_arena arena(options.Threads > 0 ? options.Threads : tbb::task_arena::automatic);
+  const Clock::time_point start = Clock::now();
+
+  // --- 1. hash map triangle -> segments
+  TriangleSegmentMap map;
+  if (!BuildTriangleSegmentMap(mesh, curves, map, error))
+  {
+    return false;
+  }
+  const Clock::time_point hashed = Clock::now();
+
+  // --- 2. intersections
+  const int slots = static_cast<int>(map.Triangles.size());
+  std::vector<LocalArrangement> local(slots);
+  ParallelFor(
+    arena, slots, [&](int s) { IntersectTriangleSegments(mesh, map, curves, s, local[s]); });
+  std::vector<std::vector<int>> edgeSegmentPoints(map.EdgeSegments.size());
+  ParallelFor(arena,
+    static_cast<int>(map.EdgeSegments.size()),
+    [&](int i) { SplitEdgeSegment(mesh, map, i, edgeSegmentPoints[i]); });
+  const Clock::time_point intersected = Clock::now();
+
+  // --- 3. refinement, then assembly of the refined surface
+  ParallelFor(arena, slots, [&](int s) { RefineTriangle(local[s]); });
+  for (const LocalArrangement& a : local)
+  {
+    if (!a.Error.empty())
+    {
+      error = "arrangement failed in " + a.Error;
+      return false;
+    }
+  }
+  const int nv = mesh.GetNumberOfVertices();
+  const int nt = mesh.GetNumberOfTriangles();
+  const int edgePoints = static_cast<int>(map.EdgePoints.size());
+  std::vector<int> newPointBase(slots + 1, nv + edgePoints);
+  for (int s = 0; s < slots; ++s)
+  {
+    newPointBase[s + 1] = newPointBase[s] + local[s].NumberOfNewPoints;
+  }
+  const int totalPoints = newPointBase[slots];
+  out.Positions.resize(totalPoints);
+  out.PointOnMesh.resize(totalPoints);
+  out.PointSurface.resize(totalPoints);
+  ParallelFor(arena,
+    nv,
+    [&](int v)
+    {
+      CanonicalPoint c;
+      c.Location = PointLocation::Vertex;
+      c.Id = v;
+      out.Positions[v] = mesh.GetPosition(v);
+      out.PointOnMesh[v] = c;
+      out.PointSurface[v] =
+        mesh.GetVertexCorners(v).size() > 0 ? SurfacePointOf(mesh, c) : SurfacePoint();
+    });
+  std::vector<int> edgeOfEdgePoint(edgePoints);
+  ParallelFor(arena,
+    edgePoints,
+    [&](int i)
+    {
+      CanonicalPoint c;
+      c.Location = PointLocation::Edge;
+      c.Id = map.EdgePoints[i].Edge;
+      c.T = map.EdgePoints[i].T;
+      edgeOfEdgePoint[i] = c.Id;
+      out.Positions[nv + i] = PositionOf(mesh, c);
+      out.PointOnMesh[nv + i] = c;
+      out.PointSurface[nv + i] = SurfacePointOf(mesh, c);
+    });
+  ParallelFor(arena,
+    slots,
+    [&](int s)
+    {
+      LocalArrangement& a = local[s];
+      int next = newPointBase[s];
+      for (size_t i = 0; i < a.Points.size(); ++i)
+      {
+        LocalPoint& p = a.Points[i];
+        if (p.Where >= 0 || a.Alias[i] != static_cast<int>(i))
+        {
+          continue;
+        }
+        p.Global = next++;
+        CanonicalPoint c;
+        c.Location = PointLocation::Face;
+        c.Id = a.Triangle;
+        c.U = p.P.x;
+        c.V = p.P.y;
+        out.Positions[p.Global] = mesh.Evaluate(a.Triangle, c.U, c.V);
+        out.PointOnMesh[p.Global] = c;
+        out.PointSurface[p.Global] = { a.Triangle, c.U, c.V };
+      }
+      for (size_t i = 0; i < a.Points.size(); ++i)
+      {
+        a.Points[i].Global = a.Points[a.Alias[i]].Global;
+      }
+    });
+
+  std::vector<int> slotOfTriangle(nt, -1);
+  std::vector<char> refined(nt, 0);
+  for (int s = 0; s < slots; ++s)
+  {
+    slotOfTriangle[map.Triangles[s]] = s;
+    refined[map.Triangles[s]] = 1;
+  }
+  std::vector<int> offset(nt + 1, 0);
+  for (int t = 0; t < nt; ++t)
+  {
+    const int s = slotOfTriangle[t];
+    const int count =
+      !mesh.IsUsable(t) ? 0 : (s >= 0 ? static_cast<int>(local[s].Triangles.size()) : 1);
+    offset[t + 1] = offset[t] + count;
+  }
+  const int refinedCount = offset[nt];
+  out.Triangles.resize(refinedCount);
+  out.SourceTriangle.resize(refinedCount);
+  std::vector<unsigned char> blocked(refinedCount, 0);
+  ParallelFor(arena,
+    nt,
+    [&](int t)
+    {
+      const int s = slotOfTriangle[t];
+      int r = offset[t];
+      if (s < 0)
+      {
+        if (offset[t + 1] > r)
+        {
+          out.Triangles[r] = mesh.GetTriangle(t);
+          out.SourceTriangle[r] = t;
+        }
+        return;
+      }
+      const LocalArrangement& a = local[s];
+      for (size_t i = 0; i < a.Triangles.size(); ++i, ++r)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          out.Triangles[r][j] = a.Points[a.Triangles[i][j]].Global;
+        }
+        out.SourceTriangle[r] = t;
+        blocked[r] = a.Blocked[i];
+      }
+    });
+  out.NumberOfRefinedSourceTriangles = slots;
+  const Clock::time_point refinedTime = Clock::now();
+
+  // --- 4. flood fill
+  std::unordered_set<std::uint64_t> blockedMeshSubEdges;
+  std::vector<char> meshEdgeHasBlocked(mesh.GetNumberOfEdges(), 0);
+  for (size_t i = 0; i < map.EdgeSegments.size(); ++i)
+  {
+    const EdgeSegment& es = map.EdgeSegments[i];
+    if (!curves[es.Curve].Closed)
+    {
+      continue;
+    }
+    meshEdgeHasBlocked[es.Edge] = 1;
+    const std::vector<int>& ids = edgeSegmentPoints[i];
+    for (size_t k = 0; k + 1 < ids.size(); ++k)
+    {
+      blockedMeshSubEdges.insert(UndirectedPointPair(ids[k], ids[k + 1]));
+    }
+  }
+  RefinedSurfaceView view;
+  view.Mesh = &mesh;
+  view.Offset = &offset;
+  view.Triangles = &out.Triangles;
+  view.SourceTriangle = &out.SourceTriangle;
+  view.Refined = &refined;
+  view.Blocked = &blocked;
+  view.FirstInteriorPoint = nv + edgePoints;
+  view.EdgeOfEdgePoint = &edgeOfEdgePoint;
+  view.BlockedMeshSubEdges = &blockedMeshSubEdges;
+  view.MeshEdgeHasBlocked = &meshEdgeHasBlocked;
+  out.NumberOfCells = FloodFillCells(view, out.TriangleCell);
+  const Clock::time_point filled = Clock::now();
+
+  // --- 5. curves on the refined surface, patches, cell graph
+  std::vector<int> slotOfSegment(map.Segments.size());
+  for (int s = 0; s < slots; ++s)
+  {
+    for (int g = map.SegmentOffset[s]; g < map.SegmentOffset[s + 1]; ++g)
+    {
+      slotOfSegment[g] = s;
+    }
+  }
+  std::vector<RefinedCurve> refinedCurves(curves.size());
+  std::vector<int> ids;
+  for (size_t ci = 0; ci < curves.size(); ++ci)
+  {
+    RefinedCurve& rc = refinedCurves[ci];
+    for (const SegmentLocation& loc : map.CurveSegments[ci])
+    {
+      int source;
+      ids.clear();
+      if (loc.AlongEdge)
+      {
+        ids = edgeSegmentPoints[loc.Index];
+        source = -map.EdgeSegments[loc.Index].Edge - 1;
+      }
+      else
+      {
+        const int s = slotOfSegment[loc.Index];
+        const LocalArrangement& a = local[s];
+        for (int p : a.Chains[loc.Index - map.SegmentOffset[s]])
+        {
+          ids.push_back(a.Points[p].Global);
+        }
+        source = a.Triangle;
+      }
+      size_t from = 0;
+      if (!rc.Points.empty())
+      {
+        if (rc.Points.back() != ids.front())
+        {
+          error = "internal error: curve " + std::to_string(ci) + " is not continuous";
+          return false;
+        }
+        from = 1;
+      }
+      for (size_t k = from; k < ids.size(); ++k)
+      {
+        rc.Points.push_back(ids[k]);
+      }
+      rc.SubEdgeSource.insert(rc.SubEdgeSource.end(), ids.size() - 1, source);
+    }
+    if (curves[ci].Closed && rc.Points.size() > 1 && rc.Points.front() == rc.Points.back())
+    {
+      rc.Points.pop_back();
+    }
+    out.CurvePoints.push_back(rc.Points);
+  }
+  out.NumberOfPatchGraphVertices = BuildPatchesAndCellGraph(view,
+    curves,
+    refinedCurves,
+    out.Positions,
+    out.PointSurface,
+    out.TriangleCell,
+    out.Patches,
+    out.CellGraph);
+  const Clock::time_point done = Clock::now();
+
+  out.Times.Hash = Milliseconds(start, hashed);
+  out.Times.Intersections = Milliseconds(hashed, intersected);
+  out.Times.Refinement = Milliseconds(intersected, refinedTime);
+  out.Times.FloodFill = Milliseconds(refinedTime, filled);
+  out.Times.CellGraph = Milliseconds(filled, done);
+  out.Times.Total = Milliseconds(start, done);
+  return true;
+}
+
+} // namespace boolsurf

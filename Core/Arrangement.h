@@ -1,0 +1,75 @@
+// The surface arrangement of a set of traced curves (BoolSurf, Riso et al. 2022, §4):
+// the mesh refined so that every curve runs along its edges, the partition of the refined
+// surface into cells bounded by closed curves, the curves cut into patches at their
+// intersections, and the cell graph that the labeling stage walks.
+//
+// Stages (each in its own file, timed separately):
+//  1. TriangleSegments     per-triangle hash map of curve segments, in unit-triangle coordinates
+//  2. SegmentIntersection  crossings inside each triangle (exact predicates); edge segments
+//                          split by canonical edge parameters
+//  3. TriangleRefinement   a triangulation of each crossed triangle embedding its segments
+//  4. CellPartition        flood fill over the dual graph of adjacencies
+//  5. CellPartition        patches and the oriented cell graph
+// Stages 2 and 3 run in parallel over triangles; results are assembled in triangle order, so
+// the output does not depend on the number of threads.
+#ifndef boolsurf_Arrangement_h
+#define boolsurf_Arrangement_h
+
+#include "CellPartition.h"
+#include "TracedCurve.h"
+
+#include <string>
+#include <vector>
+
+namespace boolsurf
+{
+
+struct ArrangementOptions
+{
+  int Threads = 0; ///< 0: all hardware threads
+};
+
+/// Wall-clock milliseconds per stage.
+struct ArrangementStageTimes
+{
+  double Hash = 0, Intersections = 0, Refinement = 0, FloodFill = 0, CellGraph = 0, Total = 0;
+};
+
+struct Arrangement
+{
+  // --- refined surface. Points: the mesh vertices (same ids), then the curve points on mesh
+  // edges, then the new points inside triangles.
+  std::vector<Vec3> Positions;
+  std::vector<CanonicalPoint> PointOnMesh;   ///< canonical surface point of each refined point
+  std::vector<SurfacePoint> PointSurface;    ///< the same as triangle + barycentric (u, v)
+  std::vector<std::array<int, 3>> Triangles; ///< oriented like their source triangles
+  std::vector<int> SourceTriangle;           ///< mesh triangle each refined triangle comes from
+  std::vector<int> TriangleCell;             ///< arrangement cell of each refined triangle
+  int NumberOfCells = 0;
+  int NumberOfRefinedSourceTriangles = 0; ///< mesh triangles replaced by a triangulation
+
+  // --- curves
+  std::vector<ArrangementPatch> Patches;
+  std::vector<CellGraphArc> CellGraph;
+  /// Vertices of the patch graph: distinct patch end points (intersection points, the start
+  /// of each closed curve that meets no other curve, the ends of open curves).
+  int NumberOfPatchGraphVertices = 0;
+  /// Each input curve on the refined surface (refined point ids in order).
+  std::vector<std::vector<int>> CurvePoints;
+
+  ArrangementStageTimes Times;
+};
+
+/// Computes the arrangement. Unusable mesh triangles (see TriangleMesh::IsUsable) are left out
+/// of the refined surface. Fails, with a message naming the curve and point, on invalid curve
+/// points or consecutive points that share no triangle; the mesh must not be modified while
+/// `mesh` is in use (its adjacency is the base of the dual graph).
+bool ComputeArrangement(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  const ArrangementOptions& options,
+  Arrangement& out,
+  std::string& error);
+
+} // namespace boolsurf
+
+#endif

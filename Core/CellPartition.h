@@ -1,0 +1,116 @@
+// Arrangement stages 4 and 5: cells by flood fill over the dual graph of adjacencies, then
+// patches and the cell graph.
+//
+// The dual graph of adjacencies (DGA) has one node per refined triangle. It is never stored:
+// an unrefined triangle's arcs are the base mesh's adjacency (TriangleMesh, built once by the
+// caller and reused while only the curves change); a refined triangle finds its neighbours
+// among its siblings, or across a mesh edge among the sub-triangles of the neighbouring source
+// triangle, by the shared refined point ids (the refinement is conforming). An arc is cut
+// where a closed curve runs: sub-edges inside a source triangle carry a flag from the
+// refinement, sub-edges on mesh edges are looked up in the set of edge-segment pieces.
+//
+// Patches are the pieces of each curve between consecutive intersection points (points that
+// curves visit more than once, in total). Each patch knows the cells on its left and right;
+// the cell graph has one arc per patch of a closed curve, from its right cell to its left
+// cell (left = counter-clockwise side seen from where the normals point, because refined
+// triangles keep their source triangle's orientation: the triangle holding the directed
+// sub-edge P -> Q is on the left of a curve going from P to Q).
+#ifndef boolsurf_CellPartition_h
+#define boolsurf_CellPartition_h
+
+#include "SurfacePoint.h"
+#include "TracedCurve.h"
+
+#include <array>
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+namespace boolsurf
+{
+
+/// The refined surface as the flood fill sees it.
+struct RefinedSurfaceView
+{
+  const TriangleMesh* Mesh = nullptr;
+  /// Refined triangles of source triangle t: [Offset[t], Offset[t+1]).
+  const std::vector<int>* Offset = nullptr;
+  const std::vector<std::array<int, 3>>* Triangles = nullptr;
+  const std::vector<int>* SourceTriangle = nullptr;
+  /// Per source triangle: 1 when it was refined.
+  const std::vector<char>* Refined = nullptr;
+  /// Per refined triangle: bit j when its edge j (vertex j -> j+1) lies on a closed curve
+  /// inside its source triangle.
+  const std::vector<unsigned char>* Blocked = nullptr;
+  /// Refined point ids at or above this value are interior points (not on mesh edges).
+  int FirstInteriorPoint = 0;
+  /// Mesh edge of each edge point id (id - NumberOfMeshVertices).
+  const std::vector<int>* EdgeOfEdgePoint = nullptr;
+  /// Sub-edges on mesh edges covered by closed curves (undirected refined point pairs), and a
+  /// per-mesh-edge flag telling whether to look there at all.
+  const std::unordered_set<std::uint64_t>* BlockedMeshSubEdges = nullptr;
+  const std::vector<char>* MeshEdgeHasBlocked = nullptr;
+
+  /// Refined triangle among those of source triangle t holding the directed edge a -> b.
+  int FindDirected(int t, int a, int b) const;
+  /// Neighbour across edge j of refined triangle r (-1 on the boundary); `blocked` tells
+  /// whether a closed curve runs along that edge.
+  int Neighbor(int r, int j, bool& blocked) const;
+};
+
+inline std::uint64_t UndirectedPointPair(int a, int b)
+{
+  const std::uint32_t lo = static_cast<std::uint32_t>(a < b ? a : b);
+  const std::uint32_t hi = static_cast<std::uint32_t>(a < b ? b : a);
+  return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
+/// Breadth-first flood fill; cells are numbered in order of their lowest triangle, so the
+/// result does not depend on threads. Returns the number of cells.
+int FloodFillCells(const RefinedSurfaceView& surface, std::vector<int>& cellOfTriangle);
+
+/// A curve on the refined surface: its refined point ids and, per sub-edge i (from point i to
+/// i+1, and for closed curves the last back to the first), the source triangle holding it or,
+/// for sub-edges on a mesh edge, -(edge id) - 1.
+struct RefinedCurve
+{
+  std::vector<int> Points;
+  std::vector<int> SubEdgeSource;
+};
+
+struct ArrangementPatch
+{
+  int Curve = -1; ///< index in the input curve vector
+  int ShapeId = -1;
+  int CurveId = -1;
+  bool Closed = true;                ///< of a closed curve (bounds cells)
+  int LeftCell = -1, RightCell = -1; ///< -1 beyond an open mesh boundary
+  double Length = 0;
+  /// Refined point ids; a closed curve met by no other curve is one patch whose last point
+  /// repeats the first.
+  std::vector<int> Points;
+  std::vector<SurfacePoint> SurfacePoints; ///< the same points as triangle + barycentric
+};
+
+struct CellGraphArc
+{
+  int RightCell = -1, LeftCell = -1; ///< equal for a curve that does not separate cells
+  int Shape = -1;
+  int Patch = -1;
+};
+
+/// Cuts the curves into patches and builds the cell graph (one arc per patch of a closed
+/// curve whose two sides are cells). Returns the number of patch-graph vertices (distinct
+/// patch end points).
+int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
+  const std::vector<TracedCurve>& curves,
+  const std::vector<RefinedCurve>& refinedCurves,
+  const std::vector<Vec3>& positions,
+  const std::vector<SurfacePoint>& pointSurface,
+  const std::vector<int>& cellOfTriangle,
+  std::vector<ArrangementPatch>& patches,
+  std::vector<CellGraphArc>& arcs);
+
+} // namespace boolsurf
+
+#endif

@@ -1,0 +1,34 @@
+// Robust geometric predicates in the plane (after Shewchuk, "Adaptive Precision
+// Floating-Point Arithmetic and Fast Robust Geometric Predicates", 1997).
+//
+// The arrangement decides topology (which segments cross, on which side a point lies) with
+// these predicates, so their sign must be exact for the double inputs given: a rounded sign
+// can make two decisions about the same configuration disagree and the local planar
+// subdivision inconsistent. Orient2d evaluates in doubles first and, only when the result is
+// within the forward error bound of zero, recomputes exactly with floating-point expansions.
+#ifndef boolsurf_Predicates_h
+#define boolsurf_Predicates_h
+
+#include "Vec3.h"
+
+namespace boolsurf
+{
+
+/// Twice the signed area of triangle (a, b, c): positive when a, b, c turn counter-clockwise,
+/// negative when clockwise, zero when collinear. The SIGN is exact; the magnitude is an
+/// approximation (exact when the filter succeeds up to rounding).
+double Orient2d(Vec2 a, Vec2 b, Vec2 c);
+
+/// Exact sign of Orient2d: +1, -1 or 0.
+int Orient2dSign(Vec2 a, Vec2 b, Vec2 c);
+
+/// Orient2d always computed with expansions (no filter); for tests of the filter.
+double Orient2dExact(Vec2 a, Vec2 b, Vec2 c);
+
+/// Exact sign of (a + b - 1) for doubles a, b: tells whether the barycentric point (a, b) lies
+/// below, on or above the hypotenuse u + v = 1 of the unit triangle.
+int SumMinusOneSign(double a, double b);
+
+} // namespace boolsurf
+
+#endif

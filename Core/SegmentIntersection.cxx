@@ -1,0 +1,315 @@
+#include "SegmentIntersection.h"
+
+#include "Predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace boolsurf
+{
+namespace
+{
+
+// Position of q along segment (a, b), measured on the segment's dominant axis. For points
+// exactly on the segment this orders them exactly; 0 at a, 1 at b.
+double ParameterAlong(Vec2 a, Vec2 b, Vec2 q)
+{
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return std::fabs(dx) >= std::fabs(dy) ? (q.x - a.x) / dx : (q.y - a.y) / dy;
+}
+
+// Is q, known to be on the line of (a, b), strictly between a and b?
+bool StrictlyBetween(Vec2 a, Vec2 b, Vec2 q)
+{
+  if (a.x != b.x)
+  {
+    return (a.x < q.x && q.x < b.x) || (b.x < q.x && q.x < a.x);
+  }
+  return (a.y < q.y && q.y < b.y) || (b.y < q.y && q.y < a.y);
+}
+
+bool StrictlyInsideUnitTriangle(Vec2 p)
+{
+  return p.x > 0.0 && p.y > 0.0 && SumMinusOneSign(p.x, p.y) < 0;
+}
+
+// A computed crossing may round onto or just outside the triangle's boundary when it is within
+// an ulp of it; pull it toward the centroid until it is strictly inside.
+Vec2 ClampInside(Vec2 p)
+{
+  const Vec2 c{ 1.0 / 3.0, 1.0 / 3.0 };
+  double eps = 1e-15;
+  while (!StrictlyInsideUnitTriangle(p) && eps < 1.0)
+  {
+    p = c + (1.0 - eps) * (p - c);
+    eps *= 4.0;
+  }
+  return p;
+}
+
+struct Hit
+{
+  double Parameter;
+  int Point;
+};
+
+} // namespace
+
+//------------------------------------------------------------------------------
+int BoundaryPointId(const TriangleMesh& mesh,
+  const TriangleSegmentMap& map,
+  const CanonicalPoint& p)
+{
+  if (p.Location == PointLocation::Vertex)
+  {
+    return p.Id;
+  }
+  if (p.Location != PointLocation::Edge)
+  {
+    return -1;
+  }
+  auto it = map.EdgePointRange.find(p.Id);
+  if (it == map.EdgePointRange.end())
+  {
+    return -1;
+  }
+  auto first = map.EdgePoints.begin() + it->second.first;
+  auto last = map.EdgePoints.begin() + it->second.second;
+  auto at =
+    std::lower_bound(first, last, p.T, [](const EdgePoint& e, double t) { return e.T < t; });
+  if (at == last || at->T != p.T)
+  {
+    return -1;
+  }
+  return mesh.GetNumberOfVertices() + static_cast<int>(at - map.EdgePoints.begin());
+}
+
+//------------------------------------------------------------------------------
+void SplitEdgeSegment(const TriangleMesh& mesh,
+  const TriangleSegmentMap& map,
+  int index,
+  std::vector<int>& globalIds)
+{
+  const EdgeSegment& s = map.EdgeSegments[index];
+  globalIds.clear();
+  globalIds.push_back(BoundaryPointId(mesh, map, s.A));
+  auto it = map.EdgePointRange.find(s.Edge);
+  if (it != map.EdgePointRange.end())
+  {
+    const int nv = mesh.GetNumberOfVertices();
+    const double lo = std::min(s.T0, s.T1), hi = std::max(s.T0, s.T1);
+    const size_t before = globalIds.size();
+    for (int i = it->second.first; i < it->second.second; ++i)
+    {
+      const double t = map.EdgePoints[i].T;
+      if (lo < t && t < hi)
+      {
+        globalIds.push_back(nv + i);
+      }
+    }
+    if (s.T1 < s.T0)
+    {
+      std::reverse(globalIds.begin() + before, globalIds.end());
+    }
+  }
+  globalIds.push_back(BoundaryPointId(mesh, map, s.B));
+}
+
+//------------------------------------------------------------------------------
+void IntersectTriangleSegments(const TriangleMesh& mesh,
+  const TriangleSegmentMap& map,
+  const std::vector<TracedCurve>& curves,
+  int slot,
+  LocalArrangement& out)
+{
+  const int t = map.Triangles[slot];
+  const Triangle& tri = mesh.GetTriangle(t);
+  const int nv = mesh.GetNumberOfVertices();
+  out = LocalArrangement();
+  out.Triangle = t;
+
+  // Boundary points: corners, then each edge's points in the edge's order.
+  const Vec2 corners[3] = { { 0.0, 0.0 }, { 1.0, 0.0 }, { 0.0, 1.0 } };
+  for (int k = 0; k < 3; ++k)
+  {
+    out.Points.push_back({ corners[k], tri[k], 3 + k });
+  }
+  std::vector<int> edgePoints;
+  for (int k = 0; k < 3; ++k)
+  {
+    out.Boundary.push_back(k);
+    map.GetEdgePointsOnLocalEdge(mesh, t, k, edgePoints);
+    const bool forward = mesh.GetEdgeVertices(mesh.GetEdgeId(t, k))[0] == tri[k];
+    Vec2 previous = corners[k];
+    for (int i : edgePoints)
+    {
+      const Vec2 p = EdgePointCoordinates(k, map.EdgePoints[i].T, forward);
+      if (p.x == previous.x && p.y == previous.y)
+      {
+        out.Error = "triangle " + std::to_string(t) + ": two points of edge " +
+          std::to_string(mesh.GetEdgeId(t, k)) + " are closer than the coordinate precision";
+        return;
+      }
+      previous = p;
+      out.Boundary.push_back(static_cast<int>(out.Points.size()));
+      out.Points.push_back({ p, nv + i, k });
+    }
+  }
+
+  // Local ids of the segments' endpoints: boundary points by refined id, face points by their
+  // exact coordinates (two curves through the same face point share it).
+  auto localOfBoundary = [&](int global) -> int
+  {
+    for (int b : out.Boundary)
+    {
+      if (out.Points[b].Global == global)
+      {
+        return b;
+      }
+    }
+    return -1;
+  };
+  std::map<std::pair<double, double>, int> facePoints;
+  auto localOf = [&](const CanonicalPoint& p, Vec2 p2) -> int
+  {
+    if (p.Location != PointLocation::Face)
+    {
+      return localOfBoundary(BoundaryPointId(mesh, map, p));
+    }
+    auto inserted = facePoints.emplace(std::make_pair(p2.x, p2.y), -1);
+    if (inserted.second)
+    {
+      inserted.first->second = static_cast<int>(out.Points.size());
+      out.Points.push_back({ p2, -1, -1 });
+    }
+    return inserted.first->second;
+  };
+
+  const int first = map.SegmentOffset[slot];
+  const int count = map.SegmentOffset[slot + 1] - first;
+  std::vector<int> endA(count), endB(count);
+  std::vector<std::vector<Hit>> hits(count);
+  out.ChainClosed.resize(count);
+  for (int i = 0; i < count; ++i)
+  {
+    const TriangleSegment& s = map.Segments[first + i];
+    endA[i] = localOf(s.A, s.A2);
+    endB[i] = localOf(s.B, s.B2);
+    if (endA[i] < 0 || endB[i] < 0)
+    {
+      out.Error = "triangle " + std::to_string(t) + ": a segment endpoint of curve " +
+        std::to_string(s.Curve) + " is missing from the edge point set";
+      return;
+    }
+    out.ChainClosed[i] = curves[s.Curve].Closed ? 1 : 0;
+  }
+
+  // Sweep over x: only segments whose x-ranges overlap are tested.
+  std::vector<int> order(count);
+  for (int i = 0; i < count; ++i)
+  {
+    order[i] = i;
+  }
+  auto xmin = [&](int i) { return std::min(out.Points[endA[i]].P.x, out.Points[endB[i]].P.x); };
+  auto xmax = [&](int i) { return std::max(out.Points[endA[i]].P.x, out.Points[endB[i]].P.x); };
+  std::sort(order.begin(),
+    order.end(),
+    [&](int i, int j) { return xmin(i) != xmin(j) ? xmin(i) < xmin(j) : i < j; });
+
+  auto addHit = [&](int segment, int point)
+  {
+    const Vec2 a = out.Points[endA[segment]].P, b = out.Points[endB[segment]].P;
+    hits[segment].push_back({ ParameterAlong(a, b, out.Points[point].P), point });
+  };
+
+  for (int oi = 0; oi < count; ++oi)
+  {
+    const int i = order[oi];
+    const double reach = xmax(i);
+    for (int oj = oi + 1; oj < count && xmin(order[oj]) <= reach; ++oj)
+    {
+      const int j = order[oj];
+      const int a0 = endA[i], a1 = endB[i], b0 = endA[j], b1 = endB[j];
+      const Vec2 p0 = out.Points[a0].P, p1 = out.Points[a1].P;
+      const Vec2 q0 = out.Points[b0].P, q1 = out.Points[b1].P;
+      const double o1 = Orient2d(p0, p1, q0), o2 = Orient2d(p0, p1, q1);
+      if (o1 == 0.0 && o2 == 0.0)
+      {
+        // Collinear: each segment is cut at the other's endpoints that fall inside it.
+        if (b0 != a0 && b0 != a1 && StrictlyBetween(p0, p1, q0))
+          addHit(i, b0);
+        if (b1 != a0 && b1 != a1 && StrictlyBetween(p0, p1, q1))
+          addHit(i, b1);
+        if (a0 != b0 && a0 != b1 && StrictlyBetween(q0, q1, p0))
+          addHit(j, a0);
+        if (a1 != b0 && a1 != b1 && StrictlyBetween(q0, q1, p1))
+          addHit(j, a1);
+        continue;
+      }
+      if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1)
+      {
+        continue; // two non-collinear segments with a common endpoint meet only there
+      }
+      const double o3 = Orient2d(q0, q1, p0), o4 = Orient2d(q0, q1, p1);
+      if ((o1 > 0.0 && o2 > 0.0) || (o1 < 0.0 && o2 < 0.0) || (o3 > 0.0 && o4 > 0.0) ||
+        (o3 < 0.0 && o4 < 0.0))
+      {
+        continue; // disjoint
+      }
+      // T-junctions: an endpoint exactly on the other segment (its interior, since endpoints
+      // are distinct and the segments are not collinear).
+      if (o1 == 0.0)
+      {
+        addHit(i, b0);
+      }
+      else if (o2 == 0.0)
+      {
+        addHit(i, b1);
+      }
+      else if (o3 == 0.0)
+      {
+        addHit(j, a0);
+      }
+      else if (o4 == 0.0)
+      {
+        addHit(j, a1);
+      }
+      else
+      {
+        // Proper crossing: a new point, shared by both segments.
+        const double beta = o1 / (o1 - o2);
+        const Vec2 x = ClampInside(q0 + beta * (q1 - q0));
+        const int id = static_cast<int>(out.Points.size());
+        out.Points.push_back({ x, -1, -1 });
+        addHit(i, id);
+        addHit(j, id);
+      }
+    }
+  }
+
+  out.Chains.resize(count);
+  for (int i = 0; i < count; ++i)
+  {
+    std::vector<Hit>& h = hits[i];
+    std::sort(h.begin(),
+      h.end(),
+      [](const Hit& x, const Hit& y)
+      { return x.Parameter != y.Parameter ? x.Parameter < y.Parameter : x.Point < y.Point; });
+    std::vector<int>& chain = out.Chains[i];
+    chain.push_back(endA[i]);
+    for (const Hit& x : h)
+    {
+      if (x.Point != chain.back())
+      {
+        chain.push_back(x.Point);
+      }
+    }
+    if (chain.back() != endB[i])
+    {
+      chain.push_back(endB[i]);
+    }
+  }
+}
+
+} // namespace boolsurf

@@ -1,0 +1,87 @@
+// Arrangement stage 2: intersections between the curve segments of each triangle.
+//
+// For one triangle, every segment is cut at every point where it meets another segment of the
+// same triangle: proper crossings (a new point strictly inside the triangle), T-junctions (an
+// endpoint of one lying on the other), and collinear overlaps (each segment cut at the other's
+// endpoints). All decisions use the exact Orient2d, on coordinates that place points of mesh
+// edges exactly on their edge's line, so the topology inside a triangle is consistent.
+//
+// Intersections ON mesh edges are never computed here: a segment meets the triangle's boundary
+// only at its own endpoints, which are canonical points already shared with the neighbour
+// (TriangleSegmentMap::EdgePoints). Segments along a mesh edge are split at the edge's points
+// by SplitEdgeSegment, from the canonical parameter T alone, identically for both triangles.
+#ifndef boolsurf_SegmentIntersection_h
+#define boolsurf_SegmentIntersection_h
+
+#include "TriangleSegments.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace boolsurf
+{
+
+/// A point of a triangle's local planar subdivision.
+struct LocalPoint
+{
+  Vec2 P; ///< (u, v) in the unit triangle
+  /// Refined-surface point id: the mesh vertex for corners, NumberOfMeshVertices + edge point
+  /// index for edge points, assigned during assembly for interior points (-1 before).
+  int Global = -1;
+  /// -1: strictly inside the triangle; 0..2: on local edge k; 3..5: corner k - 3.
+  int Where = -1;
+};
+
+/// Everything known about one refined triangle. Stage 2 fills the points and the chains;
+/// stage 3 (TriangleRefinement) adds the sub-triangles and the final paths.
+struct LocalArrangement
+{
+  int Triangle = -1;
+  /// Corners 0..2, then the edge points of local edges 0, 1, 2 (each in edge order), then the
+  /// interior points: curve points inside the triangle and crossings.
+  std::vector<LocalPoint> Points;
+  /// The triangle's boundary, counter-clockwise: corner 0, points of edge 0, corner 1, ...
+  std::vector<int> Boundary;
+  /// Per segment of the slot (same order as in TriangleSegmentMap): local point ids from its
+  /// first to its last point, through every intersection in order.
+  std::vector<std::vector<int>> Chains;
+  /// Per segment: does it belong to a closed curve (does it separate cells)?
+  std::vector<char> ChainClosed;
+
+  // --- stage 3
+  std::vector<std::array<int, 3>> Triangles; ///< local point ids, counter-clockwise
+  /// Per sub-triangle: bit j set when its edge from vertex j to vertex j+1 lies on a closed
+  /// curve inside the triangle (sub-edges on mesh edges are handled by edge segments).
+  std::vector<unsigned char> Blocked;
+  /// Points merged into another (equal coordinates after rounding): Alias[i] != i.
+  std::vector<int> Alias;
+  /// Number of interior points that survive (Alias[i] == i), i.e. new refined-surface points.
+  int NumberOfNewPoints = 0;
+
+  std::string Error; ///< non-empty when the triangle could not be processed
+};
+
+/// Intersects the segments of slot `slot`, filling `out` (points, boundary, chains).
+void IntersectTriangleSegments(const TriangleMesh& mesh,
+  const TriangleSegmentMap& map,
+  const std::vector<TracedCurve>& curves,
+  int slot,
+  LocalArrangement& out);
+
+/// Refined-surface point ids along edge segment `index`, from its first to its last point,
+/// through every edge point strictly between them (sorted by T along the segment).
+void SplitEdgeSegment(const TriangleMesh& mesh,
+  const TriangleSegmentMap& map,
+  int index,
+  std::vector<int>& globalIds);
+
+/// Refined-surface id of a canonical vertex or edge point (-1 for face points or points not in
+/// the edge point set).
+int BoundaryPointId(const TriangleMesh& mesh,
+  const TriangleSegmentMap& map,
+  const CanonicalPoint& p);
+
+} // namespace boolsurf
+
+#endif

@@ -1,0 +1,494 @@
+#include "TriangleSegments.h"
+
+#include "Predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace boolsurf
+{
+namespace
+{
+
+std::string PointName(const TracedCurve& curve, int curveIndex, int point)
+{
+  std::ostringstream s;
+  s << "curve " << curveIndex << " (CurveId " << curve.CurveId << ", ShapeId " << curve.ShapeId
+    << ") point " << point;
+  return s.str();
+}
+
+// Canonical form of the point at weights (w0, w1, w2) of triangle t, given the EXACT signs of
+// the weights (a weight <= 0 counts as zero; the point is clamped into the triangle).
+CanonicalPoint FromClampedWeights(const TriangleMesh& mesh, int t, double w[3], const bool zero[3])
+{
+  const Triangle& tri = mesh.GetTriangle(t);
+  const int zeros = zero[0] + zero[1] + zero[2];
+  CanonicalPoint c;
+  if (zeros >= 2)
+  {
+    int k = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+      if (!zero[i] && (zero[k] || w[i] > w[k]))
+      {
+        k = i;
+      }
+    }
+    c.Location = PointLocation::Vertex;
+    c.Id = tri[k];
+    return c;
+  }
+  // Weight k zero: the point is on local edge k+1, from corner k+1 to corner k+2.
+  int k = zero[0] ? 0 : (zero[1] ? 1 : 2);
+  const int local = (k + 1) % 3;
+  const double wa = w[local], wb = w[(local + 1) % 3];
+  const double s = wb / (wa + wb);
+  if (!(s > 0.0) || !(s < 1.0))
+  {
+    c.Location = PointLocation::Vertex;
+    c.Id = tri[s >= 1.0 ? (local + 1) % 3 : local];
+    return c;
+  }
+  const int e = mesh.GetEdgeId(t, local);
+  c.Location = PointLocation::Edge;
+  c.Id = e;
+  c.T = mesh.GetEdgeVertices(e)[0] == tri[local] ? s : 1.0 - s;
+  return c;
+}
+
+// Checks a point and brings it to the strict canonical form every later stage assumes: face
+// points strictly inside (exactly), edge points with T strictly inside (0, 1).
+bool NormalizePoint(const TriangleMesh& mesh, CanonicalPoint& p, std::string& why)
+{
+  switch (p.Location)
+  {
+    case PointLocation::Face:
+    {
+      if (p.Id < 0 || p.Id >= mesh.GetNumberOfTriangles() || !mesh.IsUsable(p.Id))
+      {
+        why = "triangle id " + std::to_string(p.Id) + " out of range or unusable";
+        return false;
+      }
+      if (!std::isfinite(p.U) || !std::isfinite(p.V))
+      {
+        why = "non-finite barycentric coordinates";
+        return false;
+      }
+      const int above = SumMinusOneSign(p.U, p.V);
+      if (p.U > 0.0 && p.V > 0.0 && above < 0)
+      {
+        return true;
+      }
+      double w[3] = { above < 0 ? 1.0 - p.U - p.V : 0.0, std::max(p.U, 0.0), std::max(p.V, 0.0) };
+      const bool zero[3] = { above >= 0, p.U <= 0.0, p.V <= 0.0 };
+      p = FromClampedWeights(mesh, p.Id, w, zero);
+      return true;
+    }
+    case PointLocation::Edge:
+    {
+      if (p.Id < 0 || p.Id >= mesh.GetNumberOfEdges())
+      {
+        why = "edge id " + std::to_string(p.Id) + " out of range";
+        return false;
+      }
+      if (!std::isfinite(p.T))
+      {
+        why = "non-finite edge parameter";
+        return false;
+      }
+      if (p.T <= 0.0 || p.T >= 1.0)
+      {
+        const int v = mesh.GetEdgeVertices(p.Id)[p.T <= 0.0 ? 0 : 1];
+        p = CanonicalPoint();
+        p.Location = PointLocation::Vertex;
+        p.Id = v;
+      }
+      return true;
+    }
+    case PointLocation::Vertex:
+      if (p.Id < 0 || p.Id >= mesh.GetNumberOfVertices() || mesh.GetVertexCorners(p.Id).size() == 0)
+      {
+        why = "vertex id " + std::to_string(p.Id) + " out of range or in no triangle";
+        return false;
+      }
+      return true;
+  }
+  why = "unknown location";
+  return false;
+}
+
+// Edge id joining vertices a and b, or -1.
+int EdgeBetween(const TriangleMesh& mesh, int a, int b)
+{
+  for (int c : mesh.GetVertexCorners(a))
+  {
+    const int t = c / 3, k = c % 3;
+    const Triangle& tri = mesh.GetTriangle(t);
+    if (tri[(k + 1) % 3] == b)
+    {
+      return mesh.GetEdgeId(t, k);
+    }
+    if (tri[(k + 2) % 3] == b)
+    {
+      return mesh.GetEdgeId(t, (k + 2) % 3);
+    }
+  }
+  return -1;
+}
+
+// Parameter along edge e (canonical direction) of a point known to lie on it.
+double ParameterOnEdge(const TriangleMesh& mesh, const CanonicalPoint& p, int e)
+{
+  if (p.Location == PointLocation::Edge)
+  {
+    return p.T;
+  }
+  return mesh.GetEdgeVertices(e)[0] == p.Id ? 0.0 : 1.0;
+}
+
+// The mesh edge containing both points, or -1.
+int CommonEdge(const TriangleMesh& mesh, const CanonicalPoint& a, const CanonicalPoint& b)
+{
+  using L = PointLocation;
+  if (a.Location == L::Edge && b.Location == L::Edge)
+  {
+    return a.Id == b.Id ? a.Id : -1;
+  }
+  if (a.Location == L::Edge && b.Location == L::Vertex)
+  {
+    const std::array<int, 2> ev = mesh.GetEdgeVertices(a.Id);
+    return ev[0] == b.Id || ev[1] == b.Id ? a.Id : -1;
+  }
+  if (a.Location == L::Vertex && b.Location == L::Edge)
+  {
+    return CommonEdge(mesh, b, a);
+  }
+  if (a.Location == L::Vertex && b.Location == L::Vertex)
+  {
+    return EdgeBetween(mesh, a.Id, b.Id);
+  }
+  return -1;
+}
+
+bool TriangleContains(const TriangleMesh& mesh, int t, const CanonicalPoint& p)
+{
+  const Triangle& tri = mesh.GetTriangle(t);
+  switch (p.Location)
+  {
+    case PointLocation::Face:
+      return p.Id == t;
+    case PointLocation::Vertex:
+      return tri[0] == p.Id || tri[1] == p.Id || tri[2] == p.Id;
+    case PointLocation::Edge:
+      return mesh.GetEdgeId(t, 0) == p.Id || mesh.GetEdgeId(t, 1) == p.Id ||
+        mesh.GetEdgeId(t, 2) == p.Id;
+  }
+  return false;
+}
+
+// Every triangle having edge e (two on a manifold interior edge).
+void TrianglesOfEdge(const TriangleMesh& mesh, int e, std::vector<int>& out)
+{
+  const std::array<int, 2> ev = mesh.GetEdgeVertices(e);
+  for (int c : mesh.GetVertexCorners(ev[0]))
+  {
+    const Triangle& tri = mesh.GetTriangle(c / 3);
+    if (tri[(c % 3 + 1) % 3] == ev[1] || tri[(c % 3 + 2) % 3] == ev[1])
+    {
+      out.push_back(c / 3);
+    }
+  }
+}
+
+// Lowest-id triangle containing both points, or -1.
+int CommonTriangle(const TriangleMesh& mesh, const CanonicalPoint& a, const CanonicalPoint& b)
+{
+  int best = -1;
+  auto consider = [&](int t)
+  {
+    if (t >= 0 && (best < 0 || t < best) && TriangleContains(mesh, t, b))
+    {
+      best = t;
+    }
+  };
+  switch (a.Location)
+  {
+    case PointLocation::Face:
+      consider(a.Id);
+      break;
+    case PointLocation::Edge:
+    {
+      std::vector<int> ts;
+      TrianglesOfEdge(mesh, a.Id, ts);
+      for (int t : ts)
+      {
+        consider(t);
+      }
+      break;
+    }
+    case PointLocation::Vertex:
+      for (int c : mesh.GetVertexCorners(a.Id))
+      {
+        consider(c / 3);
+      }
+      break;
+  }
+  return best;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+Vec2 EdgePointCoordinates(int k, double T, bool forward)
+{
+  // Weights of corners k and k+1.
+  const double wk = forward ? 1.0 - T : T;
+  const double wk1 = forward ? T : 1.0 - T;
+  switch (k)
+  {
+    case 0:
+      return { wk1, 0.0 };
+    case 2:
+      return { 0.0, wk };
+    default:
+    {
+      // (w1, w2) with w1 + w2 == 1 exactly: keep the weight >= 1/2 and derive the other from
+      // it (Sterbenz: 1 - x is exact for x in [1/2, 1]).
+      if (wk >= 0.5)
+      {
+        return { wk, 1.0 - wk };
+      }
+      return { 1.0 - wk1, wk1 };
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+Vec2 LocalCoordinates(const TriangleMesh& mesh, const CanonicalPoint& p, int t)
+{
+  const Triangle& tri = mesh.GetTriangle(t);
+  switch (p.Location)
+  {
+    case PointLocation::Face:
+      return { p.U, p.V };
+    case PointLocation::Vertex:
+      if (tri[1] == p.Id)
+      {
+        return { 1.0, 0.0 };
+      }
+      if (tri[2] == p.Id)
+      {
+        return { 0.0, 1.0 };
+      }
+      return { 0.0, 0.0 };
+    case PointLocation::Edge:
+      for (int k = 0; k < 3; ++k)
+      {
+        if (mesh.GetEdgeId(t, k) == p.Id)
+        {
+          const bool forward = mesh.GetEdgeVertices(p.Id)[0] == tri[k];
+          return EdgePointCoordinates(k, p.T, forward);
+        }
+      }
+      break;
+  }
+  return { 0.0, 0.0 };
+}
+
+//------------------------------------------------------------------------------
+void TriangleSegmentMap::GetEdgePointsOnLocalEdge(const TriangleMesh& mesh,
+  int t,
+  int k,
+  std::vector<int>& out) const
+{
+  out.clear();
+  const int e = mesh.GetEdgeId(t, k);
+  auto it = this->EdgePointRange.find(e);
+  if (it == this->EdgePointRange.end())
+  {
+    return;
+  }
+  const bool forward = mesh.GetEdgeVertices(e)[0] == mesh.GetTriangle(t)[k];
+  for (int i = it->second.first; i < it->second.second; ++i)
+  {
+    out.push_back(i);
+  }
+  if (!forward)
+  {
+    std::reverse(out.begin(), out.end());
+  }
+}
+
+//------------------------------------------------------------------------------
+bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  TriangleSegmentMap& map,
+  std::string& error)
+{
+  map = TriangleSegmentMap();
+  map.CurveSegments.resize(curves.size());
+
+  struct Pending
+  {
+    int Triangle;
+    TriangleSegment Segment;
+  };
+  std::vector<Pending> pending;
+  std::vector<CanonicalPoint> points;
+  std::vector<SegmentLocation> edgeLocations; // filled below for edge segments
+  // Per curve: segment order as (along edge?, index into pending or EdgeSegments).
+  std::vector<std::vector<SegmentLocation>> order(curves.size());
+
+  for (size_t ci = 0; ci < curves.size(); ++ci)
+  {
+    const TracedCurve& curve = curves[ci];
+    const int curveIndex = static_cast<int>(ci);
+    if (curve.ShapeId < 0)
+    {
+      error = "curve " + std::to_string(ci) + " has a negative ShapeId";
+      return false;
+    }
+    const int n = static_cast<int>(curve.Points.size());
+    if (n < 2)
+    {
+      error = PointName(curve, curveIndex, 0) + ": a curve needs at least two points";
+      return false;
+    }
+    points = curve.Points;
+    for (int i = 0; i < n; ++i)
+    {
+      std::string why;
+      if (!NormalizePoint(mesh, points[i], why))
+      {
+        error = PointName(curve, curveIndex, i) + ": " + why;
+        return false;
+      }
+      if (points[i].Location == PointLocation::Edge)
+      {
+        map.EdgePoints.push_back({ points[i].Id, points[i].T });
+      }
+    }
+    const int segments = curve.Closed ? n : n - 1;
+    for (int i = 0; i < segments; ++i)
+    {
+      const CanonicalPoint& a = points[i];
+      const CanonicalPoint& b = points[(i + 1) % n];
+      if (a == b)
+      {
+        continue; // zero-length segment: nothing to arrange
+      }
+      const int e = CommonEdge(mesh, a, b);
+      if (e >= 0)
+      {
+        EdgeSegment s;
+        s.Curve = curveIndex;
+        s.Segment = i;
+        s.Edge = e;
+        s.T0 = ParameterOnEdge(mesh, a, e);
+        s.T1 = ParameterOnEdge(mesh, b, e);
+        s.A = a;
+        s.B = b;
+        order[ci].push_back({ true, static_cast<int>(map.EdgeSegments.size()) });
+        map.EdgeSegments.push_back(s);
+        continue;
+      }
+      const int t = CommonTriangle(mesh, a, b);
+      if (t < 0)
+      {
+        error = PointName(curve, curveIndex, i) + " and point " + std::to_string((i + 1) % n) +
+          " share no triangle";
+        return false;
+      }
+      Pending p;
+      p.Triangle = t;
+      p.Segment.Curve = curveIndex;
+      p.Segment.Segment = i;
+      p.Segment.A = a;
+      p.Segment.B = b;
+      p.Segment.A2 = LocalCoordinates(mesh, a, t);
+      p.Segment.B2 = LocalCoordinates(mesh, b, t);
+      order[ci].push_back({ false, static_cast<int>(pending.size()) });
+      pending.push_back(p);
+    }
+  }
+
+  // Edge points: sorted and unique, so that each has one id for both triangles of its edge.
+  std::sort(map.EdgePoints.begin(),
+    map.EdgePoints.end(),
+    [](const EdgePoint& x, const EdgePoint& y)
+    { return x.Edge != y.Edge ? x.Edge < y.Edge : x.T < y.T; });
+  map.EdgePoints.erase(
+    std::unique(map.EdgePoints.begin(),
+      map.EdgePoints.end(),
+      [](const EdgePoint& x, const EdgePoint& y) { return x.Edge == y.Edge && x.T == y.T; }),
+    map.EdgePoints.end());
+  for (int i = 0; i < static_cast<int>(map.EdgePoints.size());)
+  {
+    int j = i;
+    while (j < static_cast<int>(map.EdgePoints.size()) &&
+      map.EdgePoints[j].Edge == map.EdgePoints[i].Edge)
+    {
+      ++j;
+    }
+    map.EdgePointRange[map.EdgePoints[i].Edge] = { i, j };
+    i = j;
+  }
+
+  // Triangles to refine: crossed ones, and both sides of every edge holding a point.
+  std::vector<int> touched;
+  touched.reserve(pending.size() + 2 * map.EdgePoints.size());
+  for (const Pending& p : pending)
+  {
+    touched.push_back(p.Triangle);
+  }
+  for (const auto& range : map.EdgePointRange)
+  {
+    TrianglesOfEdge(mesh, range.first, touched);
+  }
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  map.Triangles = touched;
+  map.SlotOfTriangle.reserve(2 * touched.size());
+  for (size_t s = 0; s < touched.size(); ++s)
+  {
+    map.SlotOfTriangle[touched[s]] = static_cast<int>(s);
+  }
+
+  // Group segments by slot (stable: curve order inside a triangle).
+  std::vector<int> sortedIndex(pending.size());
+  map.SegmentOffset.assign(touched.size() + 1, 0);
+  std::vector<int> slotOfPending(pending.size());
+  for (size_t i = 0; i < pending.size(); ++i)
+  {
+    slotOfPending[i] = map.SlotOfTriangle[pending[i].Triangle];
+    ++map.SegmentOffset[slotOfPending[i] + 1];
+  }
+  for (size_t s = 0; s < touched.size(); ++s)
+  {
+    map.SegmentOffset[s + 1] += map.SegmentOffset[s];
+  }
+  std::vector<int> fill(map.SegmentOffset.begin(), map.SegmentOffset.end() - 1);
+  map.Segments.resize(pending.size());
+  for (size_t i = 0; i < pending.size(); ++i)
+  {
+    const int at = fill[slotOfPending[i]]++;
+    sortedIndex[i] = at;
+    map.Segments[at] = pending[i].Segment;
+  }
+  for (size_t ci = 0; ci < curves.size(); ++ci)
+  {
+    for (SegmentLocation loc : order[ci])
+    {
+      if (!loc.AlongEdge)
+      {
+        loc.Index = sortedIndex[loc.Index];
+      }
+      map.CurveSegments[ci].push_back(loc);
+    }
+  }
+  return true;
+}
+
+} // namespace boolsurf

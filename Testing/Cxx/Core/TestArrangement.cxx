@@ -1,0 +1,299 @@
+// Arrangement on flat, spherical and toroidal meshes: cell counts against independent
+// computations, area conservation, conformity, orientation of the cell graph, determinism.
+#include "ArrangementTestUtils.h"
+
+#include <algorithm>
+
+using namespace boolsurf;
+using namespace boolsurf::testing;
+
+namespace
+{
+
+// Cell on the left of the first patch of curve `curve`.
+int LeftCellOfCurve(const Arrangement& arr, int curve)
+{
+  for (const ArrangementPatch& p : arr.Patches)
+    if (p.Curve == curve)
+      return p.LeftCell;
+  return -1;
+}
+
+} // namespace
+
+TEST(Arrangement, SingleSquareOnJitteredMesh)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(12, 1.0, 0.3, 7));
+  FlatPolygonTracer tracer(mesh);
+  const std::vector<Vec2> square{ { 0.2, 0.2 }, { 0.7, 0.25 }, { 0.75, 0.8 }, { 0.25, 0.7 } };
+  const Arrangement arr = ArrangeOrDie(mesh, { TraceOrDie(tracer, square) });
+  ASSERT_EQ(arr.NumberOfCells, 2);
+  ExpectAreasConserved(mesh, arr);
+  ExpectConforming(mesh, arr);
+  // A counter-clockwise curve on a +z mesh has its interior on the left.
+  ASSERT_EQ(arr.Patches.size(), 1u);
+  ASSERT_EQ(arr.CellGraph.size(), 1u);
+  const int inside = arr.CellGraph[0].LeftCell;
+  EXPECT_EQ(arr.CellGraph[0].RightCell, 1 - inside);
+  double expected = 0.0;
+  for (int i = 0; i < 4; ++i)
+    expected += 0.5 * Cross(square[i], square[(i + 1) % 4]);
+  EXPECT_NEAR(CellAreas(arr)[inside], expected, 1e-12);
+  EXPECT_EQ(arr.Patches[0].Points.front(), arr.Patches[0].Points.back()); // a loop
+  EXPECT_NEAR(arr.Patches[0].Length,
+    Length(square[1] - square[0]) + Length(square[2] - square[1]) + Length(square[3] - square[2]) +
+      Length(square[0] - square[3]),
+    1e-12);
+  for (size_t r = 0; r < arr.Triangles.size(); ++r)
+  {
+    const auto& t = arr.Triangles[r];
+    EXPECT_GT(SignedPlanarArea(arr.Positions[t[0]], arr.Positions[t[1]], arr.Positions[t[2]]), 0)
+      << "refined triangle " << r << " is flipped";
+  }
+  // Every refined point's surface form evaluates to its position.
+  for (size_t p = 0; p < arr.Positions.size(); ++p)
+  {
+    const SurfacePoint& s = arr.PointSurface[p];
+    const Vec3 q = mesh.Evaluate(s.Triangle, s.U, s.V);
+    EXPECT_LT(Distance(q, arr.Positions[p]), 1e-12);
+  }
+}
+
+TEST(Arrangement, TwoOverlappingSquaresAreas)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(16, 1.0, 0.25, 3));
+  FlatPolygonTracer tracer(mesh);
+  std::vector<TracedCurve> curves{
+    TraceOrDie(tracer, { { 0.1, 0.1 }, { 0.6, 0.1 }, { 0.6, 0.6 }, { 0.1, 0.6 } }, true, 0, 0),
+    TraceOrDie(tracer, { { 0.3, 0.3 }, { 0.9, 0.3 }, { 0.9, 0.9 }, { 0.3, 0.9 } }, true, 1, 1)
+  };
+  const Arrangement arr = ArrangeOrDie(mesh, curves);
+  ASSERT_EQ(arr.NumberOfCells, 4);
+  ExpectAreasConserved(mesh, arr);
+  ExpectConforming(mesh, arr);
+  std::vector<double> areas = CellAreas(arr);
+  std::sort(areas.begin(), areas.end());
+  EXPECT_NEAR(areas[0], 0.09, 1e-12); // A and B
+  EXPECT_NEAR(areas[1], 0.16, 1e-12); // A only
+  EXPECT_NEAR(areas[2], 0.27, 1e-12); // B only
+  EXPECT_NEAR(areas[3], 0.48, 1e-12); // outside
+  EXPECT_EQ(arr.Patches.size(), 4u);  // two crossings cut each square in two
+  EXPECT_EQ(arr.NumberOfPatchGraphVertices, 2);
+  for (const CellGraphArc& a : arr.CellGraph)
+    EXPECT_NE(a.LeftCell, a.RightCell);
+}
+
+TEST(Arrangement, RandomSelfIntersectingPolygonsMatchPlanarCount)
+{
+  for (std::uint32_t seed = 1; seed <= 12; ++seed)
+  {
+    const TriangleMesh mesh = MeshOf(MakeFlatSquare(20, 1.0, 0.3, seed));
+    FlatPolygonTracer tracer(mesh);
+    std::mt19937 rng(seed * 7919u);
+    std::vector<std::vector<Vec2>> polygons;
+    std::vector<TracedCurve> curves;
+    const int count = 1 + seed % 4;
+    for (int c = 0; c < count; ++c)
+    {
+      polygons.push_back(RandomPolygon(rng, 4 + (seed + c) % 5, 0.05, 0.95));
+      curves.push_back(TraceOrDie(tracer, polygons.back(), true, c, c));
+    }
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const Arrangement arr = ArrangeOrDie(mesh, curves);
+    const PlanarCount expected = CountPlanarArrangement(polygons);
+    EXPECT_EQ(arr.NumberOfCells, expected.Faces());
+    // Patch-graph vertices: the crossings, plus one per curve that meets nothing (a loop).
+    std::vector<int> patchesPerCurve(curves.size(), 0);
+    for (const ArrangementPatch& p : arr.Patches)
+      ++patchesPerCurve[p.Curve];
+    const int loops = static_cast<int>(
+      std::count_if(patchesPerCurve.begin(), patchesPerCurve.end(), [](int n) { return n == 1; }));
+    EXPECT_EQ(arr.NumberOfPatchGraphVertices, expected.Crossings + loops);
+    ExpectAreasConserved(mesh, arr);
+    ExpectConforming(mesh, arr);
+    // In a disc, V - E + F = 1 + (connected components of the union of the curves).
+    EXPECT_EQ(PatchGraphEuler(arr), 1 + expected.Components);
+  }
+}
+
+TEST(Arrangement, SameResultWithOneAndTwoThreads)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(40, 1.0, 0.3, 11));
+  FlatPolygonTracer tracer(mesh);
+  std::mt19937 rng(5);
+  std::vector<TracedCurve> curves;
+  for (int c = 0; c < 6; ++c)
+    curves.push_back(TraceOrDie(tracer, RandomPolygon(rng, 7, 0.02, 0.98), true, c % 3, c));
+  const Arrangement one = ArrangeOrDie(mesh, curves, 1);
+  const Arrangement two = ArrangeOrDie(mesh, curves, 2);
+  EXPECT_EQ(one.NumberOfCells, two.NumberOfCells);
+  EXPECT_EQ(one.TriangleCell, two.TriangleCell);
+  EXPECT_EQ(one.Triangles, two.Triangles);
+  EXPECT_EQ(one.SourceTriangle, two.SourceTriangle);
+  ASSERT_EQ(one.Positions.size(), two.Positions.size());
+  for (size_t i = 0; i < one.Positions.size(); ++i)
+    EXPECT_EQ(Distance(one.Positions[i], two.Positions[i]), 0.0);
+  ASSERT_EQ(one.Patches.size(), two.Patches.size());
+  for (size_t i = 0; i < one.Patches.size(); ++i)
+    EXPECT_EQ(one.Patches[i].Points, two.Patches[i].Points);
+}
+
+TEST(Arrangement, SphereGreatCirclesEuler)
+{
+  const TriangleMesh mesh = MeshOf(MakeIcosphere(4));
+  std::mt19937 rng(3);
+  std::normal_distribution<double> g;
+  std::vector<TracedCurve> curves;
+  for (int c = 0; c < 4; ++c)
+  {
+    const Vec3 n{ g(rng), g(rng), g(rng) };
+    for (TracedCurve& curve : PlaneSectionCurves(mesh, n, 0.0, c, c))
+      curves.push_back(curve);
+  }
+  ASSERT_EQ(curves.size(), 4u);
+  const Arrangement arr = ArrangeOrDie(mesh, curves);
+  // Four great circles in general position: each pair meets twice, V = 12, E = 24, F = 14.
+  EXPECT_EQ(arr.NumberOfPatchGraphVertices, 12);
+  EXPECT_EQ(arr.Patches.size(), 24u);
+  EXPECT_EQ(arr.NumberOfCells, 14);
+  EXPECT_EQ(PatchGraphEuler(arr), 2);
+  ExpectAreasConserved(mesh, arr);
+  ExpectConforming(mesh, arr);
+}
+
+TEST(Arrangement, SphereSmallCirclesEuler)
+{
+  const TriangleMesh mesh = MeshOf(MakeIcosphere(3));
+  std::mt19937 rng(9);
+  std::normal_distribution<double> g;
+  std::vector<TracedCurve> curves;
+  // Small circles (offset planes) chained so that their union is connected.
+  const Vec3 normals[3] = { { 1, 0.1, 0.2 }, { 0.8, 0.6, -0.1 }, { 0.3, 0.9, 0.25 } };
+  for (int c = 0; c < 3; ++c)
+  {
+    const Vec3 n = (1.0 / Length(normals[c])) * normals[c];
+    for (TracedCurve& curve : PlaneSectionCurves(mesh, n, 0.5, c, c))
+      curves.push_back(curve);
+  }
+  ASSERT_EQ(curves.size(), 3u);
+  const Arrangement arr = ArrangeOrDie(mesh, curves);
+  EXPECT_EQ(PatchGraphEuler(arr), 2);
+  ExpectAreasConserved(mesh, arr);
+  ExpectConforming(mesh, arr);
+}
+
+TEST(Arrangement, TorusCutIntoDiscsEuler)
+{
+  const double R = 2.0, r = 0.7;
+  const TriangleMesh mesh = MeshOf(MakeTorus(R, r, 48, 24));
+  std::vector<TracedCurve> curves;
+  // Plane y = 0.01 through (almost) the axis: two meridians. Plane z = 0.3 r: two parallels.
+  for (TracedCurve& c : PlaneSectionCurves(mesh, { 0.0, 1.0, 0.0 }, 0.01, 0, 0))
+    curves.push_back(c);
+  for (TracedCurve& c : PlaneSectionCurves(mesh, { 0.0, 0.0, 1.0 }, 0.3 * r, 1, 2))
+    curves.push_back(c);
+  ASSERT_EQ(curves.size(), 4u);
+  const Arrangement arr = ArrangeOrDie(mesh, curves);
+  EXPECT_EQ(arr.NumberOfPatchGraphVertices, 4);
+  EXPECT_EQ(arr.Patches.size(), 8u);
+  EXPECT_EQ(arr.NumberOfCells, 4);
+  EXPECT_EQ(PatchGraphEuler(arr), 0); // torus
+  ExpectAreasConserved(mesh, arr);
+  ExpectConforming(mesh, arr);
+}
+
+TEST(Arrangement, TorusNonSeparatingLoopGivesSelfArc)
+{
+  const TriangleMesh mesh = MeshOf(MakeTorus(2.0, 0.7, 32, 16));
+  // One meridian alone does not separate the torus: one cell, an arc from it to itself.
+  std::vector<TracedCurve> meridians = PlaneSectionCurves(mesh, { 0.0, 1.0, 0.0 }, 0.01, 0, 0);
+  ASSERT_EQ(meridians.size(), 2u);
+  const Arrangement arr = ArrangeOrDie(mesh, { meridians[0] });
+  EXPECT_EQ(arr.NumberOfCells, 1);
+  ASSERT_EQ(arr.CellGraph.size(), 1u);
+  EXPECT_EQ(arr.CellGraph[0].LeftCell, arr.CellGraph[0].RightCell);
+  const Arrangement both = ArrangeOrDie(mesh, meridians);
+  EXPECT_EQ(both.NumberOfCells, 2);
+}
+
+TEST(Arrangement, OpenCurvesAreRefinedButDoNotSeparate)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(10, 1.0, 0.2, 4));
+  FlatPolygonTracer tracer(mesh);
+  std::vector<TracedCurve> curves{
+    TraceOrDie(tracer, { { 0.3, 0.3 }, { 0.7, 0.3 }, { 0.7, 0.7 }, { 0.3, 0.7 } }, true, 0, 0),
+    // Open: from inside the square to outside it, crossing its side once... and back in.
+    TraceOrDie(tracer, { { 0.05, 0.5 }, { 0.5, 0.52 }, { 0.95, 0.45 } }, false, 1, 1)
+  };
+  const Arrangement arr = ArrangeOrDie(mesh, curves);
+  EXPECT_EQ(arr.NumberOfCells, 2);
+  ExpectAreasConserved(mesh, arr);
+  ExpectConforming(mesh, arr);
+  int openPatches = 0;
+  for (const ArrangementPatch& p : arr.Patches)
+  {
+    if (p.Curve == 1)
+    {
+      ++openPatches;
+      EXPECT_FALSE(p.Closed);
+      EXPECT_EQ(p.LeftCell, p.RightCell); // nothing separates its sides
+    }
+  }
+  EXPECT_EQ(openPatches, 3); // cut twice by the square
+  for (const CellGraphArc& a : arr.CellGraph)
+    EXPECT_EQ(a.Shape, 0);
+  // The open curve runs along refined edges.
+  std::set<std::pair<int, int>> edges;
+  for (const auto& t : arr.Triangles)
+    for (int j = 0; j < 3; ++j)
+      edges.insert({ std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]) });
+  const std::vector<int>& path = arr.CurvePoints[1];
+  ASSERT_GT(path.size(), 2u);
+  for (size_t i = 0; i + 1 < path.size(); ++i)
+    EXPECT_TRUE(edges.count({ std::min(path[i], path[i + 1]), std::max(path[i], path[i + 1]) }));
+
+  // The open curve alone, from boundary to boundary, still leaves one cell.
+  const Arrangement alone =
+    ArrangeOrDie(mesh, { TraceOrDie(tracer, { { 0.0, 0.37 }, { 1.0, 0.61 } }, false, 0, 0) });
+  EXPECT_EQ(alone.NumberOfCells, 1);
+  EXPECT_GT(alone.NumberOfRefinedSourceTriangles, 0);
+}
+
+TEST(Arrangement, ErrorsNameCurveAndPoint)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(4, 4.0));
+  Arrangement arr;
+  std::string error;
+  TracedCurve c;
+  c.Closed = false;
+  c.CurveId = 12;
+  CanonicalPoint a, b;
+  a.Location = PointLocation::Vertex;
+  a.Id = 0;
+  b.Location = PointLocation::Vertex;
+  b.Id = 24; // the far corner: no common triangle
+  c.Points = { a, b };
+  EXPECT_FALSE(ComputeArrangement(mesh, { c }, {}, arr, error));
+  EXPECT_NE(error.find("curve 0"), std::string::npos) << error;
+  EXPECT_NE(error.find("share no triangle"), std::string::npos) << error;
+
+  b.Id = 999;
+  c.Points = { a, b };
+  EXPECT_FALSE(ComputeArrangement(mesh, { c }, {}, arr, error));
+  EXPECT_NE(error.find("point 1"), std::string::npos) << error;
+  EXPECT_NE(error.find("out of range"), std::string::npos) << error;
+
+  b.Location = PointLocation::Face;
+  b.Id = -3;
+  c.Points = { a, b };
+  EXPECT_FALSE(ComputeArrangement(mesh, { c }, {}, arr, error));
+  EXPECT_NE(error.find("triangle id -3"), std::string::npos) << error;
+
+  c.Points = { a };
+  EXPECT_FALSE(ComputeArrangement(mesh, { c }, {}, arr, error));
+
+  // No curves at all: one cell per connected component, nothing refined.
+  EXPECT_TRUE(ComputeArrangement(mesh, {}, {}, arr, error)) << error;
+  EXPECT_EQ(arr.NumberOfCells, 1);
+  EXPECT_EQ(arr.Triangles.size(), static_cast<size_t>(mesh.GetNumberOfTriangles()));
+}
