@@ -80,6 +80,7 @@ bool DualGraphSearch::FindStrip(const std::vector<int>& sources,
   this->NextGeneration();
   const std::uint32_t gen = this->Generation;
   const std::greater<std::pair<double, int>> later;
+  const double w = this->HeuristicWeight;
   this->Heap.clear();
 
   for (int t : targets)
@@ -97,7 +98,7 @@ bool DualGraphSearch::FindStrip(const std::vector<int>& sources,
     n.Visited = gen;
     n.Cost = cost;
     n.Parent = -1;
-    this->Heap.emplace_back(cost + Distance(this->Centroids[t], to), t);
+    this->Heap.emplace_back(cost + w * Distance(this->Centroids[t], to), t);
     std::push_heap(this->Heap.begin(), this->Heap.end(), later);
   }
 
@@ -142,7 +143,7 @@ bool DualGraphSearch::FindStrip(const std::vector<int>& sources,
       next.Visited = gen;
       next.Cost = cost;
       next.Parent = t;
-      this->Heap.emplace_back(cost + Distance(this->Centroids[m], to), m);
+      this->Heap.emplace_back(cost + w * Distance(this->Centroids[m], to), m);
       std::push_heap(this->Heap.begin(), this->Heap.end(), later);
     }
   }

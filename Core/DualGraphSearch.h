@@ -45,6 +45,12 @@ public:
 
   const TriangleMesh& GetMesh() const { return this->Mesh; }
 
+  /// Factor on the straight-line bound. 1 keeps A* exact (the cheapest dual chain); above 1
+  /// the search goes greedily toward the end point and settles far fewer triangles, at the
+  /// price of a strip that may need more straightening rounds.
+  void SetHeuristicWeight(double w) { this->HeuristicWeight = w; }
+  double GetHeuristicWeight() const { return this->HeuristicWeight; }
+
 private:
   struct Node
   {
@@ -65,6 +71,7 @@ private:
   std::uint32_t Generation = 0;
   std::vector<std::pair<double, int>> Heap; // (estimated total cost, triangle); min-heap
   int LastExpanded = 0;
+  double HeuristicWeight = 1.0;
 };
 
 } // namespace boolsurf

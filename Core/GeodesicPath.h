@@ -82,6 +82,10 @@ public:
   /// loop ends anyway; the bound only guards against numerical ping-pong).
   void SetMaximumStraighteningRounds(int n) { this->MaximumRounds = n; }
 
+  /// See DualGraphSearch::SetHeuristicWeight. Default 2 (greedy A*); 1 gives the exact
+  /// cheapest dual chain as the initial strip.
+  void SetHeuristicWeight(double w) { this->Search.SetHeuristicWeight(w); }
+
 private:
   struct Portal
   {

@@ -1,0 +1,174 @@
+// Time per geodesic path on large shared meshes: short paths (2-4 % of the bounding-box
+// diagonal, the typical leg of a control polygon) and long ones (the farthest of many random
+// pairs, near-antipodal). Target: a long path on a ~1M-triangle mesh in under 50 ms on one
+// core. Setup (PLY reading, adjacency, solver construction) is outside the timed loop.
+#include "GeodesicPath.h"
+#include "PlyReader.h"
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+
+using namespace boolsurf;
+
+namespace
+{
+struct LoadedMesh
+{
+  std::unique_ptr<TriangleMesh> Mesh;
+  std::unique_ptr<GeodesicPathSolver> Solver;
+  std::vector<std::pair<CanonicalPoint, CanonicalPoint>> ShortPairs, LongPairs;
+  std::string Error;
+};
+
+CanonicalPoint RandomFacePoint(int t, std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> unit(0.05, 0.45);
+  CanonicalPoint c;
+  c.Location = PointLocation::Face;
+  c.Id = t;
+  c.U = unit(rng);
+  c.V = unit(rng);
+  return c;
+}
+
+LoadedMesh& Load(const std::string& name)
+{
+  static std::map<std::string, LoadedMesh> cache;
+  auto it = cache.find(name);
+  if (it != cache.end())
+  {
+    return it->second;
+  }
+  LoadedMesh& m = cache[name];
+  MeshData data;
+  const std::string path = std::string(BOOLSURF_SHARED_DATA_DIR) + "/meshes/" + name;
+  if (!ReadPly(path, data, m.Error))
+  {
+    return m;
+  }
+  m.Mesh = std::make_unique<TriangleMesh>(std::move(data.Positions), std::move(data.Triangles));
+  m.Solver = std::make_unique<GeodesicPathSolver>(*m.Mesh);
+  const TriangleMesh& mesh = *m.Mesh;
+  const int nt = mesh.GetNumberOfTriangles();
+  Vec3 lo = mesh.GetPosition(0), hi = lo;
+  for (const Vec3& p : mesh.GetPositions())
+  {
+    lo = { std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z) };
+    hi = { std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z) };
+  }
+  const double diagonal = Distance(lo, hi);
+  auto centroid = [&](int t)
+  {
+    return (1.0 / 3) *
+      (mesh.GetCornerPosition(t, 0) + mesh.GetCornerPosition(t, 1) + mesh.GetCornerPosition(t, 2));
+  };
+  std::mt19937 rng(2024);
+  auto usable = [&]()
+  {
+    for (;;)
+    {
+      const int t = static_cast<int>(rng() % nt);
+      if (mesh.IsUsable(t))
+      {
+        return t;
+      }
+    }
+  };
+  while (m.ShortPairs.size() < 32)
+  {
+    const int a = usable();
+    for (int tries = 0; tries < 2000000; ++tries)
+    {
+      const int b = usable();
+      const double d = Distance(centroid(a), centroid(b));
+      if (d > 0.02 * diagonal && d < 0.04 * diagonal &&
+        m.Solver->GetComponent(a) == m.Solver->GetComponent(b))
+      {
+        m.ShortPairs.push_back({ RandomFacePoint(a, rng), RandomFacePoint(b, rng) });
+        break;
+      }
+    }
+  }
+  while (m.LongPairs.size() < 8)
+  {
+    const int a = usable();
+    int best = -1;
+    double bestDistance = -1;
+    for (int tries = 0; tries < 20000; ++tries)
+    {
+      const int b = usable();
+      const double d = Distance(centroid(a), centroid(b));
+      if (d > bestDistance && m.Solver->GetComponent(a) == m.Solver->GetComponent(b))
+      {
+        best = b;
+        bestDistance = d;
+      }
+    }
+    m.LongPairs.push_back({ RandomFacePoint(a, rng), RandomFacePoint(best, rng) });
+  }
+  return m;
+}
+
+void BenchmarkPaths(benchmark::State& state,
+  const std::string& name,
+  bool longPaths,
+  double weight = 2.0)
+{
+  LoadedMesh& m = Load(name);
+  if (!m.Mesh)
+  {
+    state.SkipWithError(("cannot read " + name + ": " + m.Error).c_str());
+    return;
+  }
+  const auto& pairs = longPaths ? m.LongPairs : m.ShortPairs;
+  m.Solver->SetHeuristicWeight(weight);
+  GeodesicPath path;
+  size_t i = 0;
+  double expanded = 0, strip = 0, rounds = 0, length = 0;
+  for (auto _ : state)
+  {
+    const auto& pair = pairs[i++ % pairs.size()];
+    const TraceStatus status = m.Solver->Compute(pair.first, pair.second, path);
+    if (!status)
+    {
+      state.SkipWithError(status.Message.c_str());
+      return;
+    }
+    benchmark::DoNotOptimize(path.Points.data());
+    const GeodesicPathStatistics& s = m.Solver->GetLastStatistics();
+    expanded += s.ExpandedTriangles;
+    strip += s.StripTriangles;
+    rounds += s.StraighteningRounds;
+    length += path.Points.size();
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["triangles"] = m.Mesh->GetNumberOfTriangles();
+  state.counters["expanded"] = expanded / n;
+  state.counters["strip"] = strip / n;
+  state.counters["rounds"] = rounds / n;
+  state.counters["points"] = length / n;
+  m.Solver->SetHeuristicWeight(2.0);
+}
+} // namespace
+
+BENCHMARK_CAPTURE(BenchmarkPaths, igea_1m_short, std::string("igea_1m.ply"), false)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BenchmarkPaths, igea_1m_long, std::string("igea_1m.ply"), true)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BenchmarkPaths, torus3_800k_short, std::string("3torus_800k.ply"), false)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BenchmarkPaths, torus3_800k_long, std::string("3torus_800k.ply"), true)
+  ->Unit(benchmark::kMillisecond);
+// Exact A* (weight 1: the cheapest dual chain) for comparison with the default greedy search.
+BENCHMARK_CAPTURE(BenchmarkPaths, igea_1m_long_exact_astar, std::string("igea_1m.ply"), true, 1.0)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BenchmarkPaths,
+  torus3_800k_long_exact_astar,
+  std::string("3torus_800k.ply"),
+  true,
+  1.0)
+  ->Unit(benchmark::kMillisecond);
