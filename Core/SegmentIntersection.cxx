@@ -48,6 +48,10 @@ Vec2 ClampInside(Vec2 p)
   return p;
 }
 
+// In unit-triangle coordinates: far above rounding noise (~1e-16), far below any curve
+// feature a user can draw.
+const double CrossingMergeDistance = 1e-13;
+
 struct Hit
 {
   double Parameter;
@@ -280,8 +284,27 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
         // Proper crossing: a new point, shared by both segments.
         const double beta = o1 / (o1 - o2);
         const Vec2 x = ClampInside(q0 + beta * (q1 - q0));
-        const int id = static_cast<int>(out.Points.size());
-        out.Points.push_back({ x, -1, -1 });
+        // Three or more curves through one point: each pair's rounded crossing lands a few
+        // ulps from the others, which would leave slivers of cells. Reuse an interior point
+        // already on either segment when it is that close.
+        int id = -1;
+        for (const std::vector<Hit>* h : { &hits[i], &hits[j] })
+        {
+          for (const Hit& e : *h)
+          {
+            const Vec2 d = out.Points[e.Point].P - x;
+            if (id < 0 && out.Points[e.Point].Where < 0 &&
+              std::fabs(d.x) + std::fabs(d.y) < CrossingMergeDistance)
+            {
+              id = e.Point;
+            }
+          }
+        }
+        if (id < 0)
+        {
+          id = static_cast<int>(out.Points.size());
+          out.Points.push_back({ x, -1, -1 });
+        }
         addHit(i, id);
         addHit(j, id);
       }
