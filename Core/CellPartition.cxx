@@ -63,7 +63,21 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
   const int x = v[j], y = v[(j + 1) % 3];
   int k = j; // an unrefined triangle's edge j is the mesh edge j
   blocked = false;
-  if ((*this->Refined)[t])
+  if (!(*this->Refined)[t])
+  {
+    // The common case, kept short: an unrefined triangle next to an unrefined triangle.
+    const int n = mesh.GetNeighbor(t, j);
+    if (n < 0)
+    {
+      return -1;
+    }
+    if ((*this->MeshEdgeHasBlocked)[mesh.GetEdgeId(t, j)])
+    {
+      blocked = this->BlockedMeshSubEdges->count(UndirectedPointPair(x, y)) > 0;
+    }
+    return (*this->Refined)[n] ? this->FindDirected(n, y, x) : (*this->Offset)[n];
+  }
+  else
   {
     const int common = LocalEdgesOfPoint(*this, t, x) & LocalEdgesOfPoint(*this, t, y);
     if (common == 0)
@@ -137,16 +151,12 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
 
   // Visits per point over all curves: a point visited twice is where curves meet (crossing,
   // touching, overlap end, or a curve meeting itself).
-  std::vector<int> touched;
   std::vector<int> visits(positions.size(), 0);
   for (const RefinedCurve& c : refinedCurves)
   {
     for (int p : c.Points)
     {
-      if (visits[p]++ == 0)
-      {
-        touched.push_back(p);
-      }
+      ++visits[p];
     }
   }
   std::vector<char> isEnd(positions.size(), 0);
@@ -262,7 +272,6 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
     }
     finish();
   }
-  (void)touched;
   return graphVertices;
 }
 

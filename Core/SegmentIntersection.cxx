@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 namespace boolsurf
 {
@@ -174,20 +173,22 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
     }
     return -1;
   };
-  std::map<std::pair<double, double>, int> facePoints;
+  const int firstInterior = static_cast<int>(out.Points.size());
   auto localOf = [&](const CanonicalPoint& p, Vec2 p2) -> int
   {
     if (p.Location != PointLocation::Face)
     {
       return localOfBoundary(BoundaryPointId(mesh, map, p));
     }
-    auto inserted = facePoints.emplace(std::make_pair(p2.x, p2.y), -1);
-    if (inserted.second)
+    for (int i = firstInterior; i < static_cast<int>(out.Points.size()); ++i)
     {
-      inserted.first->second = static_cast<int>(out.Points.size());
-      out.Points.push_back({ p2, -1, -1 });
+      if (out.Points[i].P.x == p2.x && out.Points[i].P.y == p2.y)
+      {
+        return i;
+      }
     }
-    return inserted.first->second;
+    out.Points.push_back({ p2, -1, -1 });
+    return static_cast<int>(out.Points.size()) - 1;
   };
 
   const int first = map.SegmentOffset[slot];

@@ -15,6 +15,39 @@ inline Vec2 Planar(const Vec3& p)
   return { p.x, p.y };
 }
 
+void PointTriangles(const TriangleMesh& mesh, const CanonicalPoint& c, std::vector<int>& out)
+{
+  out.clear();
+  if (c.Location == PointLocation::Face)
+  {
+    out.push_back(c.Id);
+  }
+  else if (c.Location == PointLocation::Vertex)
+  {
+    for (int corner : mesh.GetVertexCorners(c.Id))
+      out.push_back(corner / 3);
+  }
+  else
+  {
+    const int h = mesh.GetEdgeHalfEdge(c.Id);
+    out.push_back(h / 3);
+    if (mesh.GetTwin(h) >= 0)
+      out.push_back(mesh.GetTwin(h) / 3);
+  }
+}
+
+bool ShareTriangle(const TriangleMesh& mesh, const CanonicalPoint& a, const CanonicalPoint& b)
+{
+  thread_local std::vector<int> ta, tb;
+  PointTriangles(mesh, a, ta);
+  PointTriangles(mesh, b, tb);
+  for (int x : ta)
+    for (int y : tb)
+      if (x == y)
+        return true;
+  return false;
+}
+
 } // namespace
 
 // Edges and triangles bucketed by their bounding boxes on a uniform grid.
@@ -221,10 +254,20 @@ bool FlatPolygonTracer::Trace(const std::vector<Vec2>& polygon,
     std::sort(hits.begin(), hits.end(), [](const Hit& x, const Hit& y) { return x.S < y.S; });
     if (out.Points.empty() || !(out.Points.back() == pa))
       out.Points.push_back(pa);
-    for (const Hit& h : hits)
+    // Hits a few ulps apart (a side passing next to a vertex) may come out of the sort in
+    // the wrong order; the right one is the next that shares a triangle with the last point.
+    for (size_t k = 0; k < hits.size(); ++k)
     {
-      if (!(out.Points.back() == h.P))
-        out.Points.push_back(h.P);
+      for (size_t m = k; m < hits.size() && m < k + 16; ++m)
+      {
+        if (ShareTriangle(this->Mesh, out.Points.back(), hits[m].P))
+        {
+          std::swap(hits[k], hits[m]);
+          break;
+        }
+      }
+      if (!(out.Points.back() == hits[k].P))
+        out.Points.push_back(hits[k].P);
     }
     if (!closed && i == sides - 1)
     {

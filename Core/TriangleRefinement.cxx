@@ -53,6 +53,7 @@ class LocalTriangulation
 public:
   explicit LocalTriangulation(LocalArrangement& arrangement)
     : Arr(arrangement)
+    , UseMap(arrangement.Points.size() > 24)
   {
   }
 
@@ -64,23 +65,42 @@ public:
     const int t = static_cast<int>(this->Tris.size());
     this->Tris.push_back({ a, b, c });
     this->Alive.push_back(1);
-    this->HalfEdges[Directed(a, b)] = t;
-    this->HalfEdges[Directed(b, c)] = t;
-    this->HalfEdges[Directed(c, a)] = t;
+    if (this->UseMap)
+    {
+      this->HalfEdges[Directed(a, b)] = t;
+      this->HalfEdges[Directed(b, c)] = t;
+      this->HalfEdges[Directed(c, a)] = t;
+    }
   }
 
   void Remove(int t)
   {
     const std::array<int, 3>& v = this->Tris[t];
-    for (int j = 0; j < 3; ++j)
+    if (this->UseMap)
     {
-      this->HalfEdges.erase(Directed(v[j], v[(j + 1) % 3]));
+      for (int j = 0; j < 3; ++j)
+      {
+        this->HalfEdges.erase(Directed(v[j], v[(j + 1) % 3]));
+      }
     }
     this->Alive[t] = 0;
   }
 
   int Find(int a, int b) const
   {
+    if (!this->UseMap)
+    {
+      for (int t = 0; t < static_cast<int>(this->Tris.size()); ++t)
+      {
+        const std::array<int, 3>& v = this->Tris[t];
+        if (this->Alive[t] &&
+          ((v[0] == a && v[1] == b) || (v[1] == a && v[2] == b) || (v[2] == a && v[0] == b)))
+        {
+          return t;
+        }
+      }
+      return -1;
+    }
     auto it = this->HalfEdges.find(Directed(a, b));
     return it == this->HalfEdges.end() ? -1 : it->second;
   }
@@ -429,6 +449,9 @@ public:
   }
 
   LocalArrangement& Arr;
+  /// Small triangulations (the vast majority) find half-edges by scanning, which beats
+  /// maintaining a hash map; large ones keep the map.
+  bool UseMap = false;
   std::vector<std::array<int, 3>> Tris;
   std::vector<char> Alive;
   std::unordered_map<EdgeKey, int> HalfEdges;
@@ -503,6 +526,8 @@ bool RefineTriangle(LocalArrangement& arr)
     arr.Alias[i] = i;
   }
   LocalTriangulation tri(arr);
+  tri.Tris.reserve(4 * n);
+  tri.Alive.reserve(4 * n);
   tri.IsInserted.assign(n, 0);
   bool hasInterior = false;
   for (int i = 0; i < n; ++i)
@@ -557,7 +582,7 @@ bool RefineTriangle(LocalArrangement& arr)
   }
 
   // Sub-edges on closed curves block the flood fill.
-  std::unordered_set<EdgeKey> closedEdges;
+  std::vector<EdgeKey> closedEdges;
   for (size_t c = 0; c < tri.Paths.size(); ++c)
   {
     if (arr.ChainClosed[c])
@@ -565,10 +590,11 @@ bool RefineTriangle(LocalArrangement& arr)
       const std::vector<int>& path = tri.Paths[c];
       for (size_t i = 0; i + 1 < path.size(); ++i)
       {
-        closedEdges.insert(Undirected(path[i], path[i + 1]));
+        closedEdges.push_back(Undirected(path[i], path[i + 1]));
       }
     }
   }
+  std::sort(closedEdges.begin(), closedEdges.end());
   arr.Triangles.clear();
   arr.Blocked.clear();
   for (size_t t = 0; t < tri.Tris.size(); ++t)
@@ -581,7 +607,8 @@ bool RefineTriangle(LocalArrangement& arr)
     unsigned char mask = 0;
     for (int j = 0; j < 3; ++j)
     {
-      if (closedEdges.count(Undirected(v[j], v[(j + 1) % 3])) > 0)
+      if (std::binary_search(
+            closedEdges.begin(), closedEdges.end(), Undirected(v[j], v[(j + 1) % 3])))
       {
         mask |= static_cast<unsigned char>(1u << j);
       }

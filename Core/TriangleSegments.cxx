@@ -191,6 +191,15 @@ bool TriangleContains(const TriangleMesh& mesh, int t, const CanonicalPoint& p)
 // Every triangle having edge e (two on a manifold interior edge).
 void TrianglesOfEdge(const TriangleMesh& mesh, int e, std::vector<int>& out)
 {
+  const int h = mesh.GetEdgeHalfEdge(e);
+  const int twin = mesh.GetTwin(h);
+  if (twin >= 0)
+  {
+    out.push_back(h / 3);
+    out.push_back(twin / 3);
+    return;
+  }
+  // Boundary or non-manifold edge: every triangle at its first vertex that also has the second.
   const std::array<int, 2> ev = mesh.GetEdgeVertices(e);
   for (int c : mesh.GetVertexCorners(ev[0]))
   {
@@ -220,11 +229,22 @@ int CommonTriangle(const TriangleMesh& mesh, const CanonicalPoint& a, const Cano
       break;
     case PointLocation::Edge:
     {
-      std::vector<int> ts;
-      TrianglesOfEdge(mesh, a.Id, ts);
-      for (int t : ts)
+      const int h = mesh.GetEdgeHalfEdge(a.Id);
+      const int twin = mesh.GetTwin(h);
+      consider(h / 3);
+      if (twin >= 0)
       {
-        consider(t);
+        consider(twin / 3);
+      }
+      else
+      {
+        thread_local std::vector<int> ts;
+        ts.clear();
+        TrianglesOfEdge(mesh, a.Id, ts);
+        for (int t : ts)
+        {
+          consider(t);
+        }
       }
       break;
     }
@@ -337,7 +357,6 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
   };
   std::vector<Pending> pending;
   std::vector<CanonicalPoint> points;
-  std::vector<SegmentLocation> edgeLocations; // filled below for edge segments
   // Per curve: segment order as (along edge?, index into pending or EdgeSegments).
   std::vector<std::vector<SegmentLocation>> order(curves.size());
 

@@ -1,0 +1,221 @@
+// Arrangement time per stage (hash, intersections, refinement, flood fill, cell graph) on
+// ~1M-triangle meshes:
+//  * FlatSquare: 1M-triangle jittered square, random self-intersecting polygons of straight
+//    chords (the tracing stage's exact output on a flat mesh);
+//  * Icosphere8: level-8 icosphere (1.3M triangles), great and small circles (plane sections);
+//  * igea_1m / 3torus_800k from the shared data, closed geodesic polygons traced by
+//    CurveTracer through random nearby points (skipped when the files are missing).
+// Curve construction is outside the timed loop. The argument is the thread count; per-stage
+// milliseconds are reported as counters (averages over iterations).
+#include "Arrangement.h"
+#include "CurveTracer.h"
+#include "PlyReader.h"
+#include "ProceduralMeshes.h"
+#include "SyntheticCurves.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+
+using namespace boolsurf;
+
+namespace
+{
+
+struct Scene
+{
+  std::unique_ptr<TriangleMesh> Mesh;
+  std::vector<TracedCurve> Curves;
+  std::string Error;
+  size_t CurvePoints = 0;
+};
+
+void CountPoints(Scene& s)
+{
+  for (const TracedCurve& c : s.Curves)
+    s.CurvePoints += c.Points.size();
+}
+
+Scene MakeFlatScene(int polygons, int sides)
+{
+  Scene s;
+  const MeshData d = MakeFlatSquare(708, 1.0, 0.3, 17); // 1,002,528 triangles
+  s.Mesh.reset(new TriangleMesh(d.Positions, d.Triangles));
+  FlatPolygonTracer tracer(*s.Mesh);
+  std::mt19937 rng(123);
+  std::uniform_real_distribution<double> center(0.15, 0.85), radius(0.03, 0.15);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int p = 0; p < polygons; ++p)
+  {
+    // Random points around a random center: self-intersecting star-like polygons.
+    const double cx = center(rng), cy = center(rng), r = radius(rng);
+    std::vector<Vec2> poly;
+    for (int k = 0; k < sides; ++k)
+    {
+      const double a = 2.0 * 3.14159265358979 * unit(rng), q = r * (0.3 + 0.7 * unit(rng));
+      poly.push_back({ cx + q * std::cos(a), cy + q * std::sin(a) });
+    }
+    TracedCurve c;
+    if (tracer.Trace(poly, true, p % 8, p, c))
+      s.Curves.push_back(std::move(c));
+  }
+  CountPoints(s);
+  return s;
+}
+
+Scene MakeSphereScene(int circles)
+{
+  Scene s;
+  const MeshData d = MakeIcosphere(8);
+  s.Mesh.reset(new TriangleMesh(d.Positions, d.Triangles));
+  std::mt19937 rng(7);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> offset(-0.6, 0.6);
+  for (int c = 0; c < circles; ++c)
+  {
+    Vec3 n{ g(rng), g(rng), g(rng) };
+    n = (1.0 / Length(n)) * n;
+    // Half great circles, half small circles.
+    for (TracedCurve& curve : PlaneSectionCurves(*s.Mesh, n, c % 2 ? offset(rng) : 0.0, c % 8, c))
+      s.Curves.push_back(std::move(curve));
+  }
+  CountPoints(s);
+  return s;
+}
+
+Scene MakeTracedScene(const std::string& name, int polygons)
+{
+  Scene s;
+  MeshData d;
+  if (!ReadPly(std::string(BOOLSURF_SHARED_DATA_DIR) + "/meshes/" + name, d, s.Error))
+    return s;
+  s.Mesh.reset(new TriangleMesh(d.Positions, d.Triangles));
+  const TriangleMesh& mesh = *s.Mesh;
+  const int nt = mesh.GetNumberOfTriangles();
+  // Polygon size: a few percent of the bounding box diagonal.
+  Vec3 lo{ 1e300, 1e300, 1e300 }, hi{ -1e300, -1e300, -1e300 };
+  for (const Vec3& p : mesh.GetPositions())
+  {
+    lo = { std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z) };
+    hi = { std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z) };
+  }
+  const double reach = 0.06 * Distance(lo, hi);
+  std::vector<Vec3> centroid(nt);
+  for (int t = 0; t < nt; ++t)
+    centroid[t] = (1.0 / 3.0) *
+      (mesh.GetCornerPosition(t, 0) + mesh.GetCornerPosition(t, 1) + mesh.GetCornerPosition(t, 2));
+  CurveTracer tracer(mesh);
+  std::mt19937 rng(99);
+  std::uniform_int_distribution<int> anyTriangle(0, nt - 1);
+  for (int p = 0; p < polygons; ++p)
+  {
+    const int seed = anyTriangle(rng);
+    if (!mesh.IsUsable(seed))
+      continue;
+    std::vector<CanonicalPoint> points;
+    for (int attempt = 0; attempt < 20000 && points.size() < 5; ++attempt)
+    {
+      const int t = anyTriangle(rng);
+      if (mesh.IsUsable(t) && Distance(centroid[t], centroid[seed]) < reach)
+      {
+        CanonicalPoint c;
+        c.Location = PointLocation::Face;
+        c.Id = t;
+        c.U = c.V = 1.0 / 3.0;
+        points.push_back(c);
+      }
+    }
+    if (points.size() < 3)
+      continue;
+    CurveTrace trace;
+    if (tracer.TraceGeodesicPolygon(points, true, trace, p))
+    {
+      trace.Curve.ShapeId = p % 8;
+      trace.Curve.CurveId = p;
+      s.Curves.push_back(trace.Curve);
+    }
+  }
+  CountPoints(s);
+  return s;
+}
+
+Scene& GetScene(const std::string& key)
+{
+  static std::map<std::string, Scene> cache;
+  auto it = cache.find(key);
+  if (it != cache.end())
+    return it->second;
+  Scene& s = cache[key];
+  if (key == "flat")
+    s = MakeFlatScene(40, 12);
+  else if (key == "sphere")
+    s = MakeSphereScene(30);
+  else
+    s = MakeTracedScene(key, 40);
+  return s;
+}
+
+void RunArrangement(benchmark::State& state, const std::string& key)
+{
+  Scene& scene = GetScene(key);
+  if (!scene.Mesh || scene.Curves.empty())
+  {
+    state.SkipWithError(("scene unavailable: " + scene.Error).c_str());
+    return;
+  }
+  ArrangementOptions options;
+  options.Threads = static_cast<int>(state.range(0));
+  ArrangementStageTimes sum;
+  Arrangement arr;
+  std::string error;
+  for (auto _ : state)
+  {
+    if (!ComputeArrangement(*scene.Mesh, scene.Curves, options, arr, error))
+    {
+      state.SkipWithError(error.c_str());
+      return;
+    }
+    sum.Hash += arr.Times.Hash;
+    sum.Intersections += arr.Times.Intersections;
+    sum.Refinement += arr.Times.Refinement;
+    sum.FloodFill += arr.Times.FloodFill;
+    sum.CellGraph += arr.Times.CellGraph;
+    sum.Total += arr.Times.Total;
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["hash_ms"] = sum.Hash / n;
+  state.counters["intersect_ms"] = sum.Intersections / n;
+  state.counters["refine_ms"] = sum.Refinement / n;
+  state.counters["flood_ms"] = sum.FloodFill / n;
+  state.counters["cellgraph_ms"] = sum.CellGraph / n;
+  state.counters["total_ms"] = sum.Total / n;
+  state.counters["triangles"] = scene.Mesh->GetNumberOfTriangles();
+  state.counters["curves"] = static_cast<double>(scene.Curves.size());
+  state.counters["curve_points"] = static_cast<double>(scene.CurvePoints);
+  state.counters["refined_tris"] = arr.NumberOfRefinedSourceTriangles;
+  state.counters["cells"] = arr.NumberOfCells;
+  state.counters["patches"] = static_cast<double>(arr.Patches.size());
+}
+
+} // namespace
+
+BENCHMARK_CAPTURE(RunArrangement, FlatSquare1M, std::string("flat"))
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(RunArrangement, Icosphere8, std::string("sphere"))
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(RunArrangement, Igea1M, std::string("igea_1m.ply"))
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(RunArrangement, ThreeTorus800k, std::string("3torus_800k.ply"))
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond);
