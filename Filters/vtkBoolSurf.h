@@ -1,0 +1,113 @@
+/**
+ * @class   vtkBoolSurf
+ * @brief   Boolean operations between shapes drawn on a surface, in one filter
+ *
+ * vtkBoolSurf chains the BoolSurf stages for users who want the answer: trace the control
+ * polygons on the surface (vtkBoolSurfTraceCurves), arrange the curves
+ * (vtkBoolSurfArrangement), label the cells with winding numbers (vtkBoolSurfLabeling) and
+ * select the result of a Boolean operation (vtkBoolSurfBoolean). Its properties are those of
+ * the stages; see their documentation for the details.
+ *
+ * Inputs: port 0 the surface, port 1 the control polygons (cell data `ShapeId`,
+ * `CurveType`; optional point data `TriangleId`/`Barycentric`). Outputs: port 0 the selected
+ * region as surface triangles carrying `ArrangementCell`, `SourceTriangle`, `Labels` and the
+ * input surface's own arrays; port 1 its boundary as oriented polylines (region on the left)
+ * with point data `TriangleId`/`Barycentric`.
+ *
+ * The surface's adjacency, topology, locator and geodesic search state are built once and
+ * reused while only the curves or the operation change.
+ *
+ * @sa vtkBoolSurfTraceCurves vtkBoolSurfArrangement vtkBoolSurfLabeling vtkBoolSurfBoolean
+ */
+#ifndef vtkBoolSurf_h
+#define vtkBoolSurf_h
+
+#include "BoolSurfFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class BOOLSURFFILTERS_EXPORT vtkBoolSurf : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkBoolSurf* New();
+  vtkTypeMacro(vtkBoolSurf, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The surface (port 0) and the control polygons (port 1).
+  void SetSurfaceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+  void SetCurvesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  ///@}
+
+  ///@{
+  /// Tracing (see vtkBoolSurfTraceCurves).
+  vtkSetClampMacro(Resolution, int, 0, 16);
+  vtkGetMacro(Resolution, int);
+  vtkSetClampMacro(ProjectionTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ProjectionTolerance, double);
+  ///@}
+
+  ///@{
+  /// Labeling (see vtkBoolSurfLabeling): 0 automatic, 1 the cell at ZeroCellPoint.
+  vtkSetClampMacro(ZeroCellMode, int, 0, 1);
+  vtkGetMacro(ZeroCellMode, int);
+  vtkSetVector3Macro(ZeroCellPoint, double);
+  vtkGetVector3Macro(ZeroCellPoint, double);
+  ///@}
+
+  ///@{
+  /// Boolean (see vtkBoolSurfBoolean): Operation 0 Union, 1 Intersection, 2 Difference,
+  /// 3 SymmetricDifference, 4 Expression; FillRule 0 NonZero, 1 EvenOdd, 2 Positive,
+  /// 3 Negative.
+  vtkSetClampMacro(Operation, int, 0, 4);
+  vtkGetMacro(Operation, int);
+  vtkSetClampMacro(ShapeA, int, -1, VTK_INT_MAX);
+  vtkGetMacro(ShapeA, int);
+  vtkSetClampMacro(ShapeB, int, -1, VTK_INT_MAX);
+  vtkGetMacro(ShapeB, int);
+  vtkSetStdStringFromCharMacro(Expression);
+  vtkGetCharFromStdStringMacro(Expression);
+  vtkSetClampMacro(FillRule, int, 0, 3);
+  vtkGetMacro(FillRule, int);
+  ///@}
+
+  ///@{
+  /// Threads for the arrangement's refinement; 0 (default) uses every hardware thread.
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  /// The boundary output (port 1).
+  vtkPolyData* GetBoundaryOutput() { return this->GetOutput(1); }
+
+protected:
+  vtkBoolSurf();
+  ~vtkBoolSurf() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  int Resolution = 4;
+  double ProjectionTolerance = 0.01;
+  int ZeroCellMode = 0;
+  double ZeroCellPoint[3] = { 0, 0, 0 };
+  int Operation = 0;
+  int ShapeA = 0;
+  int ShapeB = 1;
+  std::string Expression = "S0 | S1";
+  int FillRule = 0;
+  int NumberOfThreads = 0;
+
+private:
+  vtkBoolSurf(const vtkBoolSurf&) = delete;
+  void operator=(const vtkBoolSurf&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

@@ -1,0 +1,92 @@
+/**
+ * @class   vtkBoolSurfArrangement
+ * @brief   arrangement of traced curves on a triangle surface: refined surface, cells, patches
+ *
+ * vtkBoolSurfArrangement computes the surface arrangement of BoolSurf (Riso et al. 2022):
+ *
+ * 1. a hash map from each triangle to the curve segments inside it, in unit-triangle
+ *    coordinates (points on mesh edges and vertices in one canonical form, so both
+ *    triangles of an edge agree exactly);
+ * 2. every crossing between segments of a triangle (self-intersections, crossings of curves
+ *    and shapes) with exact orientation predicates;
+ * 3. each crossed triangle replaced by a triangulation of itself that embeds its segments
+ *    (in parallel over triangles, result independent of the thread count);
+ * 4. a flood fill of the dual graph of adjacencies across arcs that do not cross a closed
+ *    curve: each flood is one cell;
+ * 5. the curves cut into patches at intersections, and the cell graph: one arc per patch,
+ *    from the cell on the right of the curve to the cell on its left.
+ *
+ * Inputs: port 0 the surface (triangles; other polygons are triangulated), port 1 the traced
+ * curves (output of vtkBoolSurfTraceCurves: polylines with point data `TriangleId` and
+ * `Barycentric`, cell data `ShapeId`, `CurveId`, `Closed`). Open curves take part in the
+ * intersections and are refined into the mesh but do not separate cells.
+ *
+ * Output port 0, the refined surface: cell data `ArrangementCell` and `SourceTriangle`, point
+ * data `TriangleId`/`Barycentric` (each refined point as a point of the input surface), the
+ * input surface's own arrays (cell data copied from the source triangle, point data
+ * interpolated), and field data: `NumberOfCells`, `NumberOfShapes` (largest ShapeId + 1),
+ * the cell graph `CellGraphArcs` (2 components: right cell, left cell), `CellGraphShape`,
+ * `CellGraphPatch`, `CellGraphLocation` (arcs of overlapping patches share a location),
+ * `CellComponent` (surface component of each cell), `ZeroCellCandidates` (per component, the
+ * cell at its longest boundary loop, -1 for closed components), the patches (`PatchOffsets`,
+ * `PatchPoints`, `PatchLeftCell`, `PatchRightCell`, `PatchShape`, `PatchCurve`) and
+ * `StageTimes` (milliseconds: hash, intersections, refinement, flood fill, cell graph,
+ * total). Downstream filters (labeling, Booleans) need only this port.
+ *
+ * Output port 1, the patches as polylines on the refined surface's points, cell data
+ * `PatchId`, `ShapeId`, `CurveId`, `LeftCell`, `RightCell`, `Length`.
+ *
+ * The surface's adjacency is built once and reused while only the curves change.
+ *
+ * @sa vtkBoolSurfTraceCurves vtkBoolSurfLabeling vtkImprintFilter
+ */
+#ifndef vtkBoolSurfArrangement_h
+#define vtkBoolSurfArrangement_h
+
+#include "BoolSurfFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfArrangement : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkBoolSurfArrangement* New();
+  vtkTypeMacro(vtkBoolSurfArrangement, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The surface (port 0) and the traced curves (port 1).
+  void SetSurfaceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+  void SetCurvesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  ///@}
+
+  ///@{
+  /// Threads for the refinement; 0 (default) uses every hardware thread.
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  /// The patches output (port 1).
+  vtkPolyData* GetPatchesOutput();
+
+protected:
+  vtkBoolSurfArrangement();
+  ~vtkBoolSurfArrangement() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  int NumberOfThreads = 0;
+
+private:
+  vtkBoolSurfArrangement(const vtkBoolSurfArrangement&) = delete;
+  void operator=(const vtkBoolSurfArrangement&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

@@ -1,0 +1,50 @@
+// The arrangement's data contract in VTK form (a private header of the module): writing the
+// refined surface and patches, and reading back what downstream filters need from port 0's
+// field data. Array names are part of the public API (see vtkBoolSurfArrangement.h).
+#ifndef vtkBoolSurfArrangementOutput_h
+#define vtkBoolSurfArrangementOutput_h
+
+#include "Arrangement.h"
+#include "CellLabeling.h"
+#include "RegionBoundary.h"
+#include "vtkBoolSurfSurfaceAdapter.h"
+
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+
+namespace boolsurf
+{
+
+/// Port 0: refined triangles, ArrangementCell/SourceTriangle, TriangleId/Barycentric, the
+/// input's arrays, and the cell graph, patches and zero-cell candidates as field data.
+void WriteArrangementSurface(const vtkSurfaceInput& surface,
+  const std::vector<TracedCurve>& curves,
+  const Arrangement& arrangement,
+  vtkPolyData* output);
+
+/// Port 1: patches as polylines over the refined surface's points.
+void WriteArrangementPatches(const Arrangement& arrangement,
+  vtkPolyData* refinedSurface,
+  vtkPolyData* patches);
+
+/// What labeling and Booleans read back from a refined surface.
+struct ArrangementFields
+{
+  int NumberOfCells = 0;
+  int NumberOfShapes = 0;
+  std::vector<CellArc> Arcs;
+  std::vector<int> CellComponent;
+  std::vector<int> ZeroCellCandidates;
+  std::vector<BoundaryPatch> Patches;
+  std::vector<int> PatchShape, PatchCurve;
+};
+
+/// Reads the field data and cell data `ArrangementCell`; false with a message naming the
+/// missing array when `input` is not an arrangement output.
+bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::string& error);
+
+} // namespace boolsurf
+
+#endif

@@ -1,0 +1,96 @@
+#include "vtkBoolSurfBoolean.h"
+
+#include "vtkBoolSurfBooleanStage.h"
+#include "vtkBoolSurfLabelingStage.h"
+
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+
+vtkStandardNewMacro(vtkBoolSurfBoolean);
+
+//------------------------------------------------------------------------------
+vtkBoolSurfBoolean::vtkBoolSurfBoolean()
+{
+  this->SetNumberOfOutputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
+  this->UpdateProgress(0.0);
+
+  boolsurf::ArrangementFields fields;
+  boolsurf::LabelingResult labels;
+  std::string error, warning;
+  vtkFieldData* fd = input ? input->GetFieldData() : nullptr;
+  vtkDataArray* cellLabels = fd ? fd->GetArray("CellLabels") : nullptr;
+  vtkDataArray* consistent = fd ? fd->GetArray("ShapeConsistent") : nullptr;
+  vtkSmartPointer<vtkPolyData> labeled = input;
+  if (cellLabels && consistent)
+  {
+    if (!boolsurf::ReadArrangementFields(input, fields, error))
+    {
+      vtkErrorMacro(<< error);
+      return 0;
+    }
+    const int ns = fields.NumberOfShapes;
+    labels.NumberOfShapes = ns;
+    labels.Labels.resize(static_cast<size_t>(fields.NumberOfCells) * ns);
+    for (vtkIdType c = 0; c < cellLabels->GetNumberOfTuples(); ++c)
+    {
+      for (int s = 0; s < ns; ++s)
+      {
+        labels.Labels[c * ns + s] = static_cast<int>(cellLabels->GetComponent(c, s));
+      }
+    }
+    for (int s = 0; s < ns; ++s)
+    {
+      labels.ShapeConsistent.push_back(consistent->GetComponent(s, 0) != 0);
+    }
+  }
+  else
+  {
+    // An arrangement without labels: label it here with the automatic zero cell.
+    labeled = vtkSmartPointer<vtkPolyData>::New();
+    if (!boolsurf::LabelArrangement(input, nullptr, labeled, fields, labels, error, warning))
+    {
+      vtkErrorMacro(<< error);
+      return 0;
+    }
+  }
+  this->UpdateProgress(0.5);
+  boolsurf::BooleanRequest request;
+  request.Operation = static_cast<boolsurf::BooleanOperation>(this->Operation);
+  request.ShapeA = this->ShapeA;
+  request.ShapeB = this->ShapeB;
+  request.Expression = this->Expression;
+  request.Rule = static_cast<boolsurf::FillRule>(this->FillRule);
+  if (!boolsurf::ComputeBoolean(labeled, fields, labels, request, region, boundary, error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfBoolean::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Operation: " << this->Operation << "\n";
+  os << indent << "ShapeA: " << this->ShapeA << "\n";
+  os << indent << "ShapeB: " << this->ShapeB << "\n";
+  os << indent << "Expression: " << this->Expression << "\n";
+  os << indent << "FillRule: " << this->FillRule << "\n";
+}

@@ -1,0 +1,116 @@
+/**
+ * @class   vtkBoolSurfBoolean
+ * @brief   Boolean operations between shapes on a labeled surface arrangement
+ *
+ * vtkBoolSurfBoolean selects the arrangement cells that satisfy a Boolean operation between
+ * shapes and outputs them as surface triangles (port 0) and their boundary as oriented
+ * polylines (port 1, the region on their left).
+ *
+ * Operation: Union, Intersection, Difference (ShapeA minus ShapeB), SymmetricDifference, or
+ * Expression. ShapeA/ShapeB = -1 means all shapes: the variadic union, intersection and
+ * symmetric difference of every shape; Difference with -1 is ShapeA (S0 when ShapeA is -1)
+ * minus the union of the others. Expression grammar: shapes `S<id>`, `~` not, `&` and,
+ * `-` minus, `^` xor, `|` or (in decreasing precedence), parentheses; e.g.
+ * `(S0 & S1) ^ S2 | ~S3`. Any expression is evaluated in one pass over the cells.
+ *
+ * FillRule turns a winding label into inside/outside: NonZero (label != 0), EvenOdd (odd),
+ * Positive (> 0), Negative (< 0).
+ *
+ * The input is the output of vtkBoolSurfLabeling (field data `CellLabels`,
+ * `ShapeConsistent`); the output of vtkBoolSurfArrangement is accepted too and labeled with
+ * the automatic zero cell. An operation that reads an inconsistent shape is refused with an
+ * error naming it (empty output): it is never answered wrongly. A malformed expression or an
+ * unknown shape id is an error too.
+ *
+ * Port 0 keeps every array of the refined surface (`ArrangementCell`, `SourceTriangle`,
+ * `Labels`, `TriangleId`, `Barycentric` and the input surface's own arrays); port 1 has point
+ * data `TriangleId`/`Barycentric` and cell data `Closed`. Both carry field data `Expression`,
+ * the expression evaluated.
+ *
+ * @sa vtkBoolSurfLabeling vtkBoolSurfArrangement
+ */
+#ifndef vtkBoolSurfBoolean_h
+#define vtkBoolSurfBoolean_h
+
+#include "BoolSurfFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string> // for std::string
+
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfBoolean : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkBoolSurfBoolean* New();
+  vtkTypeMacro(vtkBoolSurfBoolean, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Operations
+  {
+    UNION = 0,
+    INTERSECTION = 1,
+    DIFFERENCE = 2,
+    SYMMETRIC_DIFFERENCE = 3,
+    EXPRESSION = 4,
+  };
+  enum FillRules
+  {
+    NON_ZERO = 0,
+    EVEN_ODD = 1,
+    POSITIVE = 2,
+    NEGATIVE = 3,
+  };
+
+  ///@{
+  /// The operation (default Union).
+  vtkSetClampMacro(Operation, int, UNION, EXPRESSION);
+  vtkGetMacro(Operation, int);
+  void SetOperationToUnion() { this->SetOperation(UNION); }
+  void SetOperationToIntersection() { this->SetOperation(INTERSECTION); }
+  void SetOperationToDifference() { this->SetOperation(DIFFERENCE); }
+  void SetOperationToSymmetricDifference() { this->SetOperation(SYMMETRIC_DIFFERENCE); }
+  void SetOperationToExpression() { this->SetOperation(EXPRESSION); }
+  ///@}
+
+  ///@{
+  /// Operand shapes (defaults 0 and 1); -1 means all shapes.
+  vtkSetClampMacro(ShapeA, int, -1, VTK_INT_MAX);
+  vtkGetMacro(ShapeA, int);
+  vtkSetClampMacro(ShapeB, int, -1, VTK_INT_MAX);
+  vtkGetMacro(ShapeB, int);
+  ///@}
+
+  ///@{
+  /// The expression used when Operation is Expression, e.g. "S0 & ~S1 | S2".
+  vtkSetStdStringFromCharMacro(Expression);
+  vtkGetCharFromStdStringMacro(Expression);
+  ///@}
+
+  ///@{
+  /// Fill rule (default NonZero).
+  vtkSetClampMacro(FillRule, int, NON_ZERO, NEGATIVE);
+  vtkGetMacro(FillRule, int);
+  ///@}
+
+  /// The boundary output (port 1).
+  vtkPolyData* GetBoundaryOutput() { return this->GetOutput(1); }
+
+protected:
+  vtkBoolSurfBoolean();
+  ~vtkBoolSurfBoolean() override = default;
+
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  int Operation = UNION;
+  int ShapeA = 0;
+  int ShapeB = 1;
+  std::string Expression = "S0 | S1";
+  int FillRule = NON_ZERO;
+
+private:
+  vtkBoolSurfBoolean(const vtkBoolSurfBoolean&) = delete;
+  void operator=(const vtkBoolSurfBoolean&) = delete;
+};
+
+#endif

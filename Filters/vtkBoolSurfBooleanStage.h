@@ -1,0 +1,54 @@
+// The Boolean selection stage on VTK data, shared by vtkBoolSurfBoolean and the one-step
+// vtkBoolSurf filter (a private header of the module).
+#ifndef vtkBoolSurfBooleanStage_h
+#define vtkBoolSurfBooleanStage_h
+
+#include "BooleanSelection.h"
+#include "vtkBoolSurfArrangementOutput.h"
+
+#include <string>
+
+class vtkPolyData;
+
+namespace boolsurf
+{
+
+enum class BooleanOperation : int
+{
+  Union = 0,
+  Intersection = 1,
+  Difference = 2,
+  SymmetricDifference = 3,
+  Expression = 4,
+};
+
+struct BooleanRequest
+{
+  BooleanOperation Operation = BooleanOperation::Union;
+  int ShapeA = 0, ShapeB = 1; ///< -1: all shapes (variadic)
+  std::string Expression;     ///< for BooleanOperation::Expression
+  FillRule Rule = FillRule::NonZero;
+};
+
+/// The expression text of a request over `numberOfShapes` shapes, or false and a message
+/// (unknown shape ids, no shapes).
+bool ExpressionText(const BooleanRequest& request,
+  int numberOfShapes,
+  std::string& text,
+  std::string& error);
+
+/// Selects the cells of a labeled refined surface and writes the region (its triangles with
+/// all their arrays) and its boundary (oriented loops, region on the left, with point data
+/// TriangleId/Barycentric). False with a named error: malformed expression, unknown shape,
+/// inconsistent operand.
+bool ComputeBoolean(vtkPolyData* labeled,
+  const ArrangementFields& fields,
+  const LabelingResult& labels,
+  const BooleanRequest& request,
+  vtkPolyData* region,
+  vtkPolyData* boundary,
+  std::string& error);
+
+} // namespace boolsurf
+
+#endif

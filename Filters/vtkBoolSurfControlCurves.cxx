@@ -1,0 +1,213 @@
+#include "vtkBoolSurfControlCurves.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkGenericCell.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkStaticCellLocator.h>
+
+#include <cmath>
+
+namespace boolsurf
+{
+namespace
+{
+
+std::string CurveLabel(int curveId, long long pointId = -1)
+{
+  std::string s = "curve " + std::to_string(curveId);
+  if (pointId >= 0)
+  {
+    s += ", control point " + std::to_string(pointId);
+  }
+  return s;
+}
+
+// Barycentric (u, v) of x, a point of the plane of triangle t, clamped into the triangle.
+SurfacePoint ToBarycentric(const TriangleMesh& mesh, int t, const Vec3& x)
+{
+  const Vec3 a = mesh.GetCornerPosition(t, 0);
+  const Vec3 e1 = mesh.GetCornerPosition(t, 1) - a;
+  const Vec3 e2 = mesh.GetCornerPosition(t, 2) - a;
+  const Vec3 d = x - a;
+  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
+  const double d1 = Dot(d, e1), d2 = Dot(d, e2);
+  const double det = d11 * d22 - d12 * d12;
+  double u = det != 0 ? (d22 * d1 - d12 * d2) / det : 0.0;
+  double v = det != 0 ? (d11 * d2 - d12 * d1) / det : 0.0;
+  u = std::max(0.0, u);
+  v = std::max(0.0, v);
+  if (u + v > 1.0)
+  {
+    const double s = u + v;
+    u /= s;
+    v /= s;
+  }
+  return { t, u, v };
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+void ReadControlCurves(vtkPolyData* curves,
+  vtkPolyData* surface,
+  vtkStaticCellLocator* locator,
+  const TriangleMesh& mesh,
+  const ControlCurveOptions& options,
+  std::vector<ControlCurve>& out,
+  std::vector<std::string>& problems,
+  std::vector<std::string>& notes)
+{
+  out.clear();
+  if (!curves || curves->GetNumberOfCells() == 0)
+  {
+    problems.push_back("the curves input holds no line or polygon cell");
+    return;
+  }
+  (void)surface;
+  if (curves->GetNumberOfVerts() + curves->GetNumberOfStrips() > 0)
+  {
+    notes.push_back("ignored " +
+      std::to_string(curves->GetNumberOfVerts() + curves->GetNumberOfStrips()) +
+      " vertex/strip cell(s) of the curves input: curves are line and polygon cells");
+  }
+  vtkDataArray* shapeIds = curves->GetCellData()->GetArray("ShapeId");
+  vtkDataArray* types = curves->GetCellData()->GetArray("CurveType");
+  vtkDataArray* triangleIds = curves->GetPointData()->GetArray("TriangleId");
+  vtkDataArray* barycentric = curves->GetPointData()->GetArray("Barycentric");
+  const bool exact = triangleIds && barycentric && barycentric->GetNumberOfComponents() == 2;
+  if ((triangleIds || barycentric) && !exact)
+  {
+    notes.push_back("point data TriangleId/Barycentric is incomplete (both arrays needed, "
+                    "Barycentric with 2 components): control points are projected instead");
+  }
+  const vtkIdType firstLine = curves->GetNumberOfVerts();
+  const vtkIdType firstPoly = firstLine + curves->GetNumberOfLines();
+  vtkNew<vtkGenericCell> cell;
+
+  auto readCells = [&](vtkCellArray* cells, vtkIdType firstCellId, bool polygon)
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    vtkIdType cellId = firstCellId;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      ControlCurve curve;
+      curve.CurveId = static_cast<int>(cellId);
+      curve.ShapeId =
+        shapeIds ? static_cast<int>(shapeIds->GetComponent(cellId, 0)) : curve.CurveId;
+      const int type = types ? static_cast<int>(types->GetComponent(cellId, 0)) : 0;
+      if (curve.ShapeId < 0)
+      {
+        problems.push_back(CurveLabel(curve.CurveId) + ": ShapeId " +
+          std::to_string(curve.ShapeId) + " is negative");
+        continue;
+      }
+      if (type != 0 && type != 1)
+      {
+        problems.push_back(CurveLabel(curve.CurveId) + ": CurveType " + std::to_string(type) +
+          " is neither 0 (geodesic polygon) nor 1 (cubic Bezier)");
+        continue;
+      }
+      curve.Type = static_cast<CurveType>(type);
+      curve.Closed = polygon;
+      // A polyline whose last point repeats its first (same id or same position) is closed.
+      if (!polygon && n >= 3)
+      {
+        double p[3], q[3];
+        curves->GetPoint(ids[0], p);
+        curves->GetPoint(ids[n - 1], q);
+        if (ids[0] == ids[n - 1] || (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]))
+        {
+          curve.Closed = true;
+          --n;
+        }
+      }
+      bool ok = true;
+      for (vtkIdType i = 0; i < n && ok; ++i)
+      {
+        const vtkIdType pid = ids[i];
+        SurfacePoint sp;
+        if (exact)
+        {
+          sp.Triangle = static_cast<int>(triangleIds->GetComponent(pid, 0));
+          sp.U = barycentric->GetComponent(pid, 0);
+          sp.V = barycentric->GetComponent(pid, 1);
+          std::string why;
+          if (!CheckSurfacePoint(mesh, sp, why))
+          {
+            problems.push_back(CurveLabel(curve.CurveId, pid) + ": " + why);
+            ok = false;
+          }
+        }
+        else
+        {
+          double x[3], closest[3], dist2 = 0;
+          curves->GetPoint(pid, x);
+          if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+          {
+            problems.push_back(CurveLabel(curve.CurveId, pid) + ": NaN or infinite coordinates");
+            ok = false;
+            break;
+          }
+          vtkIdType triangle = -1;
+          int subId = 0;
+          locator->FindClosestPoint(x, closest, cell, triangle, subId, dist2);
+          if (triangle < 0)
+          {
+            problems.push_back(
+              CurveLabel(curve.CurveId, pid) + ": no surface triangle found to project onto");
+            ok = false;
+            break;
+          }
+          if (std::sqrt(dist2) > options.MaximumDistance)
+          {
+            problems.push_back(CurveLabel(curve.CurveId, pid) + " is " +
+              std::to_string(std::sqrt(dist2)) + " away from the surface (tolerance " +
+              std::to_string(options.MaximumDistance) + ")");
+            ok = false;
+            break;
+          }
+          sp =
+            ToBarycentric(mesh, static_cast<int>(triangle), { closest[0], closest[1], closest[2] });
+        }
+        curve.Points.push_back(sp);
+        curve.PointIds.push_back(pid);
+      }
+      if (!ok)
+      {
+        continue;
+      }
+      const int count = static_cast<int>(curve.Points.size());
+      if (count < 2)
+      {
+        problems.push_back(CurveLabel(curve.CurveId) + " has " + std::to_string(count) +
+          " control point(s); a curve needs at least 2");
+        continue;
+      }
+      if (curve.Type == CurveType::CubicBezier)
+      {
+        const bool valid = curve.Closed ? (count % 3 == 0) : (count % 3 == 1);
+        if (!valid)
+        {
+          problems.push_back(CurveLabel(curve.CurveId) + ": a " +
+            std::string(curve.Closed ? "closed" : "open") + " cubic Bezier spline needs " +
+            (curve.Closed ? "3n" : "3n+1") + " control points (anchor, handle, handle, " +
+            "anchor, ...), it has " + std::to_string(count));
+          continue;
+        }
+      }
+      out.push_back(std::move(curve));
+    }
+  };
+  readCells(curves->GetLines(), firstLine, false);
+  readCells(curves->GetPolys(), firstPoly, true);
+}
+
+} // namespace boolsurf

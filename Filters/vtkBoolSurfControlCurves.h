@@ -1,0 +1,51 @@
+// Reading of the "control polygons" input of vtkBoolSurfTraceCurves (a private header of the
+// module): one polyline or polygon cell per curve, cell data `ShapeId` and `CurveType`,
+// points either projected onto the surface or given exactly as `TriangleId`/`Barycentric`
+// point data.
+#ifndef vtkBoolSurfControlCurves_h
+#define vtkBoolSurfControlCurves_h
+
+#include "CurveTracer.h" // for CurveType
+#include "SurfacePoint.h"
+
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+class vtkStaticCellLocator;
+
+namespace boolsurf
+{
+
+struct ControlCurve
+{
+  int CurveId = -1; ///< cell id in the curves input
+  int ShapeId = 0;
+  CurveType Type = CurveType::GeodesicPolygon;
+  bool Closed = false;
+  std::vector<SurfacePoint> Points; ///< the closing point of a closed curve is not repeated
+  std::vector<long long> PointIds;  ///< input point id of each control point
+};
+
+struct ControlCurveOptions
+{
+  /// Largest allowed distance from a control point to the surface, absolute.
+  double MaximumDistance = 0;
+};
+
+/// Reads every line and polygon cell of `curves` (vertex cells and strips are ignored with a
+/// note in `problems`). Each problem met (named by curve id and point id) is appended to
+/// `problems`; the curve it concerns is left out of `out`. `surface` must hold triangles
+/// only, with the same ids as `mesh`; `locator` is built on it.
+void ReadControlCurves(vtkPolyData* curves,
+  vtkPolyData* surface,
+  vtkStaticCellLocator* locator,
+  const TriangleMesh& mesh,
+  const ControlCurveOptions& options,
+  std::vector<ControlCurve>& out,
+  std::vector<std::string>& problems,
+  std::vector<std::string>& notes);
+
+} // namespace boolsurf
+
+#endif

@@ -1,0 +1,52 @@
+#include "vtkBoolSurfLabeling.h"
+
+#include "vtkBoolSurfLabelingStage.h"
+
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+
+vtkStandardNewMacro(vtkBoolSurfLabeling);
+
+//------------------------------------------------------------------------------
+vtkBoolSurfLabeling::vtkBoolSurfLabeling() = default;
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->UpdateProgress(0.0);
+  boolsurf::ArrangementFields fields;
+  boolsurf::LabelingResult labels;
+  std::string error, warning;
+  if (!boolsurf::LabelArrangement(input,
+        this->ZeroCellMode == POINT ? this->ZeroCellPoint : nullptr,
+        output,
+        fields,
+        labels,
+        error,
+        warning))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< warning);
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfLabeling::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ZeroCellMode: " << this->ZeroCellMode << "\n";
+  os << indent << "ZeroCellPoint: " << this->ZeroCellPoint[0] << " " << this->ZeroCellPoint[1]
+     << " " << this->ZeroCellPoint[2] << "\n";
+}

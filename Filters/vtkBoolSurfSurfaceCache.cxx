@@ -1,0 +1,56 @@
+#include "vtkBoolSurfSurfaceCache.h"
+
+#include "CurveTracer.h"
+
+#include <vtkPolyData.h>
+#include <vtkStaticCellLocator.h>
+
+namespace boolsurf
+{
+
+vtkSurfaceCache::vtkSurfaceCache() = default;
+vtkSurfaceCache::~vtkSurfaceCache() = default;
+
+//------------------------------------------------------------------------------
+const vtkSurfaceInput& vtkSurfaceCache::Get(vtkPolyData* input,
+  const SurfaceCheckOptions& options,
+  bool& rebuilt)
+{
+  const vtkMTimeType time = input ? input->GetMTime() : 0;
+  rebuilt = !this->Surface.Mesh || input != this->Input || time != this->InputTime ||
+    options.DegenerateTolerance != this->Tolerance;
+  if (rebuilt)
+  {
+    ConvertSurface(input, this->Surface, options);
+    this->Input = input;
+    this->InputTime = time;
+    this->Tolerance = options.DegenerateTolerance;
+    this->Locator = nullptr;
+    this->Tracer.reset();
+  }
+  return this->Surface;
+}
+
+//------------------------------------------------------------------------------
+vtkStaticCellLocator* vtkSurfaceCache::GetLocator()
+{
+  if (!this->Locator)
+  {
+    this->Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+    this->Locator->SetDataSet(this->Surface.Triangles);
+    this->Locator->BuildLocator();
+  }
+  return this->Locator;
+}
+
+//------------------------------------------------------------------------------
+CurveTracer& vtkSurfaceCache::GetTracer()
+{
+  if (!this->Tracer)
+  {
+    this->Tracer = std::make_unique<CurveTracer>(*this->Surface.Mesh);
+  }
+  return *this->Tracer;
+}
+
+} // namespace boolsurf

@@ -1,0 +1,55 @@
+// Per-filter cache of the converted input surface (a private header of the module).
+//
+// Building the triangle mesh, its adjacency (the dual graph of adjacencies) and topology is
+// the one cost that grows with the mesh; while only the curves or the filter's properties
+// change, the surface input keeps its identity and modification time, and every stage
+// reuses what it built before, so edits cost time proportional to the curves.
+#ifndef vtkBoolSurfSurfaceCache_h
+#define vtkBoolSurfSurfaceCache_h
+
+#include "vtkBoolSurfSurfaceAdapter.h"
+
+#include <vtkSmartPointer.h>
+#include <vtkType.h>
+
+#include <memory>
+
+class vtkStaticCellLocator;
+
+namespace boolsurf
+{
+
+class CurveTracer;
+
+class vtkSurfaceCache
+{
+public:
+  vtkSurfaceCache();
+  ~vtkSurfaceCache();
+
+  /// The converted surface for `input`, rebuilt only when the input object, its modification
+  /// time or the options changed. `rebuilt` tells which happened.
+  const vtkSurfaceInput& Get(vtkPolyData* input, const SurfaceCheckOptions& options, bool& rebuilt);
+
+  /// The result of the last Get().
+  const vtkSurfaceInput& GetCurrent() const { return this->Surface; }
+
+  /// Closest-cell locator on the triangles of the last Get() (built on first use).
+  vtkStaticCellLocator* GetLocator();
+
+  /// Curve tracer on the mesh of the last Get() (built on first use; its geodesic search
+  /// state is reused by every path).
+  CurveTracer& GetTracer();
+
+private:
+  vtkPolyData* Input = nullptr; // identity only, never dereferenced
+  vtkMTimeType InputTime = 0;
+  double Tolerance = -1;
+  vtkSurfaceInput Surface;
+  vtkSmartPointer<vtkStaticCellLocator> Locator;
+  std::unique_ptr<CurveTracer> Tracer;
+};
+
+} // namespace boolsurf
+
+#endif

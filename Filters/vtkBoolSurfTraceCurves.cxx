@@ -1,0 +1,96 @@
+#include "vtkBoolSurfTraceCurves.h"
+
+#include "vtkBoolSurfTraceStage.h"
+
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+
+vtkStandardNewMacro(vtkBoolSurfTraceCurves);
+
+struct vtkBoolSurfTraceCurves::Internals
+{
+  boolsurf::vtkSurfaceCache Surface;
+};
+
+//------------------------------------------------------------------------------
+vtkBoolSurfTraceCurves::vtkBoolSurfTraceCurves()
+  : Internal(new Internals)
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+vtkBoolSurfTraceCurves::~vtkBoolSurfTraceCurves() = default;
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfTraceCurves::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfTraceCurves::RequestData(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPolyData* surfaceInput = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* curvesInput = vtkPolyData::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+
+  bool rebuilt = false;
+  const boolsurf::vtkSurfaceInput& surface =
+    this->Internal->Surface.Get(surfaceInput, boolsurf::SurfaceCheckOptions(), rebuilt);
+  for (const std::string& w : surface.Warnings)
+  {
+    vtkWarningMacro(<< "Surface: " << w);
+  }
+  std::vector<std::string> problems, notes;
+  if (surface.Check.HasErrors())
+  {
+    problems.push_back("the surface is unfit for BoolSurf: " + surface.Check.ErrorSummary());
+  }
+  std::vector<boolsurf::TracedCurve> traced;
+  boolsurf::TraceOptions options;
+  options.Resolution = this->Resolution;
+  options.ProjectionTolerance = this->ProjectionTolerance;
+  if (problems.empty())
+  {
+    boolsurf::TraceControlCurves(
+      this->Internal->Surface, curvesInput, options, this, traced, output, problems, notes);
+  }
+  for (const std::string& n : notes)
+  {
+    vtkWarningMacro(<< n);
+  }
+  if (!problems.empty())
+  {
+    output->Initialize();
+    vtkNew<vtkStringArray> errors;
+    errors->SetName("TraceErrors");
+    std::string all;
+    for (const std::string& p : problems)
+    {
+      errors->InsertNextValue(p);
+      all += "\n  " + p;
+    }
+    output->GetFieldData()->AddArray(errors);
+    vtkErrorMacro(<< "Cannot trace the curves:" << all);
+    return 1; // the empty output with TraceErrors is the answer
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfTraceCurves::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "ProjectionTolerance: " << this->ProjectionTolerance << "\n";
+}

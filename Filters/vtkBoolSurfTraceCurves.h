@@ -1,0 +1,96 @@
+/**
+ * @class   vtkBoolSurfTraceCurves
+ * @brief   trace geodesic polygons and geodesic Bezier splines on a triangle surface
+ *
+ * vtkBoolSurfTraceCurves turns control polygons into curves lying on a surface, at a
+ * resolution independent of the mesh's:
+ *
+ * - a geodesic polygon (CurveType 0) joins consecutive control points by shortest paths
+ *   (locally shortest geodesics: a triangle strip from a dual-graph search, the funnel
+ *   algorithm on the unfolded strip, then the strip rerouted around every vertex where the
+ *   path bends by less than pi, until no such vertex is left);
+ * - a cubic geodesic Bezier spline (CurveType 1; anchor, handle, handle, anchor, ...) is
+ *   evaluated by geodesic de Casteljau subdivision (b/Surf, Mancinelli et al. 2022) with
+ *   Resolution levels, and the refined control polygon is traced as a geodesic polygon.
+ *
+ * Inputs: port 0 the surface (triangles; other polygons are triangulated), port 1 the control
+ * polygons: one polyline or polygon cell per curve. A polygon cell, or a polyline whose last
+ * point repeats its first, is closed. Cell data `ShapeId` (int; default the cell id) groups
+ * curves into shapes; cell data `CurveType` (0 or 1; default 0). Control points are projected
+ * to the closest surface point, unless point data `TriangleId` + `Barycentric` (weights of the
+ * triangle's 2nd and 3rd points) is present: then they are used exactly.
+ *
+ * Output: one polyline per curve on the surface (closed ones repeat their first point id),
+ * with a point at every mesh-edge crossing. Point data `TriangleId`, `Barycentric` (each point
+ * as a surface point; points on mesh edges and vertices have an exact zero weight),
+ * `CurveParameter` (input segment index + fraction: of the segment's length for polygons, the
+ * spline parameter for Beziers), `ControlSegment` (input segment index), `ControlPointId`
+ * (input point id of the control point it is, -1 otherwise); cell data `ShapeId`, `CurveId`
+ * (input cell id), `Closed`, `CurveType`, `Length`.
+ *
+ * Errors name the curve (input cell id) and control point (input point id): fewer than 2
+ * points, a Bezier with a point count that is not 3n+1 (open) or 3n (closed), a control point
+ * farther from the surface than ProjectionTolerance, points on different connected
+ * components, invalid TriangleId/Barycentric. On any error the output is empty and field
+ * data `TraceErrors` lists every problem.
+ *
+ * The surface's adjacency and the geodesic search state are built once and reused while
+ * only the curves change.
+ *
+ * @sa vtkBoolSurfArrangement vtkDijkstraGraphGeodesicPath vtkGeodesicPath
+ */
+#ifndef vtkBoolSurfTraceCurves_h
+#define vtkBoolSurfTraceCurves_h
+
+#include "BoolSurfFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfTraceCurves : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkBoolSurfTraceCurves* New();
+  vtkTypeMacro(vtkBoolSurfTraceCurves, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The surface (port 0) and the control polygons (port 1).
+  void SetSurfaceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+  void SetCurvesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  ///@}
+
+  ///@{
+  /// De Casteljau subdivision levels of Bezier splines (default 4: 16 pieces per segment).
+  vtkSetClampMacro(Resolution, int, 0, 16);
+  vtkGetMacro(Resolution, int);
+  ///@}
+
+  ///@{
+  /// Largest allowed distance from a control point to the surface, as a fraction of the
+  /// surface's bounding-box diagonal (default 0.01). Farther points are errors.
+  vtkSetClampMacro(ProjectionTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ProjectionTolerance, double);
+  ///@}
+
+protected:
+  vtkBoolSurfTraceCurves();
+  ~vtkBoolSurfTraceCurves() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  int Resolution = 4;
+  double ProjectionTolerance = 0.01;
+
+private:
+  vtkBoolSurfTraceCurves(const vtkBoolSurfTraceCurves&) = delete;
+  void operator=(const vtkBoolSurfTraceCurves&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

@@ -1,0 +1,180 @@
+#include "vtkBoolSurfTraceStage.h"
+
+#include "vtkBoolSurfControlCurves.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <cmath>
+
+namespace boolsurf
+{
+namespace
+{
+
+double BoundsDiagonal(vtkPolyData* pd)
+{
+  double b[6];
+  pd->GetBounds(b);
+  return std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+}
+
+vtkSmartPointer<vtkIntArray> NewIntArray(const char* name)
+{
+  auto a = vtkSmartPointer<vtkIntArray>::New();
+  a->SetName(name);
+  return a;
+}
+
+void WriteTraces(const TriangleMesh& mesh,
+  const std::vector<ControlCurve>& controls,
+  const std::vector<CurveTrace>& traces,
+  vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIdTypeArray> triangleId;
+  triangleId->SetName("TriangleId");
+  vtkNew<vtkDoubleArray> barycentric;
+  barycentric->SetName("Barycentric");
+  barycentric->SetNumberOfComponents(2);
+  vtkNew<vtkDoubleArray> parameter;
+  parameter->SetName("CurveParameter");
+  auto segment = NewIntArray("ControlSegment");
+  auto controlPoint = NewIntArray("ControlPointId");
+  auto shape = NewIntArray("ShapeId");
+  auto curveId = NewIntArray("CurveId");
+  auto closed = NewIntArray("Closed");
+  auto type = NewIntArray("CurveType");
+  vtkNew<vtkDoubleArray> length;
+  length->SetName("Length");
+  for (size_t c = 0; c < traces.size(); ++c)
+  {
+    const CurveTrace& trace = traces[c];
+    const ControlCurve& control = controls[c];
+    const vtkIdType first = points->GetNumberOfPoints();
+    const size_t n = trace.Curve.Points.size();
+    for (size_t i = 0; i < n; ++i)
+    {
+      const CanonicalPoint& p = trace.Curve.Points[i];
+      const Vec3 x = PositionOf(mesh, p);
+      points->InsertNextPoint(x.x, x.y, x.z);
+      const SurfacePoint sp = ToSurfacePoint(mesh, p);
+      triangleId->InsertNextValue(sp.Triangle);
+      const double uv[2] = { sp.U, sp.V };
+      barycentric->InsertNextTuple(uv);
+      parameter->InsertNextValue(trace.Parameter[i]);
+      segment->InsertNextValue(trace.Segment[i]);
+      const int k = trace.ControlPoint[i];
+      controlPoint->InsertNextValue(k >= 0 && k < static_cast<int>(control.PointIds.size())
+          ? static_cast<int>(control.PointIds[k])
+          : -1);
+    }
+    const bool isClosed = trace.Curve.Closed && n > 1;
+    lines->InsertNextCell(static_cast<vtkIdType>(n + (isClosed ? 1 : 0)));
+    for (size_t i = 0; i < n; ++i)
+    {
+      lines->InsertCellPoint(first + static_cast<vtkIdType>(i));
+    }
+    if (isClosed)
+    {
+      lines->InsertCellPoint(first);
+    }
+    shape->InsertNextValue(control.ShapeId);
+    curveId->InsertNextValue(control.CurveId);
+    closed->InsertNextValue(trace.Curve.Closed ? 1 : 0);
+    type->InsertNextValue(static_cast<int>(control.Type));
+    length->InsertNextValue(trace.Length);
+  }
+  output->SetPoints(points);
+  output->SetLines(lines);
+  vtkPointData* pd = output->GetPointData();
+  pd->AddArray(triangleId);
+  pd->AddArray(barycentric);
+  pd->AddArray(parameter);
+  pd->AddArray(segment);
+  pd->AddArray(controlPoint);
+  vtkCellData* cd = output->GetCellData();
+  cd->AddArray(shape);
+  cd->AddArray(curveId);
+  cd->AddArray(closed);
+  cd->AddArray(type);
+  cd->AddArray(length);
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool TraceControlCurves(vtkSurfaceCache& cache,
+  vtkPolyData* controlCurves,
+  const TraceOptions& options,
+  vtkAlgorithm* progress,
+  std::vector<TracedCurve>& traced,
+  vtkPolyData* output,
+  std::vector<std::string>& problems,
+  std::vector<std::string>& notes)
+{
+  traced.clear();
+  const vtkSurfaceInput& surface = cache.GetCurrent();
+  const TriangleMesh& mesh = *surface.Mesh;
+  ControlCurveOptions controlOptions;
+  controlOptions.MaximumDistance = options.ProjectionTolerance * BoundsDiagonal(surface.Triangles);
+  std::vector<ControlCurve> controls;
+  ReadControlCurves(controlCurves,
+    surface.Triangles,
+    cache.GetLocator(),
+    mesh,
+    controlOptions,
+    controls,
+    problems,
+    notes);
+  CurveTracer& tracer = cache.GetTracer();
+  tracer.SetResolution(options.Resolution);
+  std::vector<CurveTrace> traces(controls.size());
+  for (size_t c = 0; c < controls.size(); ++c)
+  {
+    if (progress)
+    {
+      progress->UpdateProgress(static_cast<double>(c) / controls.size());
+      if (progress->CheckAbort())
+      {
+        return false;
+      }
+    }
+    const ControlCurve& control = controls[c];
+    TraceStatus status =
+      tracer.Trace(control.Points, control.Type, control.Closed, traces[c], control.CurveId);
+    if (!status)
+    {
+      problems.push_back(status.Message);
+      continue;
+    }
+    traces[c].Curve.ShapeId = control.ShapeId;
+    traces[c].Curve.CurveId = control.CurveId;
+  }
+  if (!problems.empty())
+  {
+    return false;
+  }
+  for (const CurveTrace& t : traces)
+  {
+    traced.push_back(t.Curve);
+  }
+  if (output)
+  {
+    WriteTraces(mesh, controls, traces, output);
+  }
+  return true;
+}
+
+} // namespace boolsurf

@@ -1,0 +1,39 @@
+// The tracing stage on VTK data, shared by vtkBoolSurfTraceCurves and the one-step vtkBoolSurf
+// filter (a private header of the module).
+#ifndef vtkBoolSurfTraceStage_h
+#define vtkBoolSurfTraceStage_h
+
+#include "CurveTracer.h"
+#include "vtkBoolSurfSurfaceCache.h"
+
+#include <string>
+#include <vector>
+
+class vtkAlgorithm;
+class vtkPolyData;
+
+namespace boolsurf
+{
+
+struct TraceOptions
+{
+  int Resolution = 4;
+  double ProjectionTolerance = 0.01; ///< fraction of the surface's bounding-box diagonal
+};
+
+/// Traces every curve of `controlCurves` on the cached surface. On success fills `traced`
+/// (for the arrangement) and, when `output` is not null, writes the traced polylines. On
+/// failure returns false with every problem in `problems` (curve and point ids named).
+/// `progress` (may be null) receives progress updates in [0, 1] and is checked for aborts.
+bool TraceControlCurves(vtkSurfaceCache& cache,
+  vtkPolyData* controlCurves,
+  const TraceOptions& options,
+  vtkAlgorithm* progress,
+  std::vector<TracedCurve>& traced,
+  vtkPolyData* output,
+  std::vector<std::string>& problems,
+  std::vector<std::string>& notes);
+
+} // namespace boolsurf
+
+#endif
