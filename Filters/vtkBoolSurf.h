@@ -63,6 +63,11 @@ public:
   /// 3 Negative.
   vtkSetClampMacro(Operation, int, 0, 4);
   vtkGetMacro(Operation, int);
+  void SetOperationToUnion() { this->SetOperation(0); }
+  void SetOperationToIntersection() { this->SetOperation(1); }
+  void SetOperationToDifference() { this->SetOperation(2); }
+  void SetOperationToSymmetricDifference() { this->SetOperation(3); }
+  void SetOperationToExpression() { this->SetOperation(4); }
   vtkSetClampMacro(ShapeA, int, -1, VTK_INT_MAX);
   vtkGetMacro(ShapeA, int);
   vtkSetClampMacro(ShapeB, int, -1, VTK_INT_MAX);

@@ -58,10 +58,12 @@ TEST(BooleanClipperOracle, EveryOperationAndFillRuleMatchesClipper)
   vtkSmartPointer<vtkPolyData> mesh =
     testutils::ToPolyData(boolsurf::MakeFlatSquare(48, 1.0, 0.3, 11));
   std::mt19937 rng(2024);
-  const ClipperLib::ClipType clipperOps[] = { ClipperLib::ctUnion, ClipperLib::ctIntersection,
-    ClipperLib::ctDifference, ClipperLib::ctXor };
-  const ClipperLib::PolyFillType clipperRules[] = { ClipperLib::pftNonZero,
-    ClipperLib::pftEvenOdd, ClipperLib::pftPositive, ClipperLib::pftNegative };
+  const ClipperLib::ClipType clipperOps[] = {
+    ClipperLib::ctUnion, ClipperLib::ctIntersection, ClipperLib::ctDifference, ClipperLib::ctXor
+  };
+  const ClipperLib::PolyFillType clipperRules[] = {
+    ClipperLib::pftNonZero, ClipperLib::pftEvenOdd, ClipperLib::pftPositive, ClipperLib::pftNegative
+  };
   int compared = 0, nonEmpty = 0;
   for (int trial = 0; trial < 12; ++trial)
   {
@@ -82,7 +84,8 @@ TEST(BooleanClipperOracle, EveryOperationAndFillRuleMatchesClipper)
         clipper.AddPath(ToClipper(a), ClipperLib::ptSubject, true);
         clipper.AddPath(ToClipper(b), ClipperLib::ptClip, true);
         ClipperLib::Paths solution;
-        ASSERT_TRUE(clipper.Execute(clipperOps[op], solution, clipperRules[rule], clipperRules[rule]));
+        ASSERT_TRUE(
+          clipper.Execute(clipperOps[op], solution, clipperRules[rule], clipperRules[rule]));
         const double expected = ClipperArea(solution);
         EXPECT_NEAR(ours, expected, 1e-9 * std::max(1.0, expected))
           << "trial " << trial << " operation " << op << " fill rule " << rule;

@@ -1,0 +1,266 @@
+// Booleans on curved surfaces (sphere, torus), consistency, variadic operations, named errors.
+#include "FilterTestUtils.h"
+#include "vtkBoolSurf.h"
+#include "vtkBoolSurfArrangement.h"
+#include "vtkBoolSurfBoolean.h"
+#include "vtkBoolSurfLabeling.h"
+#include "vtkBoolSurfTraceCurves.h"
+
+#include <vtkCommand.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+using testutils::ControlPolygon;
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+// Collects the error and warning messages a filter emits.
+class MessageCatcher : public vtkCommand
+{
+public:
+  static MessageCatcher* New() { return new MessageCatcher; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings) +=
+      static_cast<const char*>(data) + std::string("\n");
+  }
+  std::string Errors, Warnings;
+};
+
+struct Caught
+{
+  vtkNew<MessageCatcher> Catcher;
+  explicit Caught(vtkAlgorithm* a)
+  {
+    a->AddObserver(vtkCommand::ErrorEvent, this->Catcher);
+    a->AddObserver(vtkCommand::WarningEvent, this->Catcher);
+  }
+};
+
+std::array<double, 3> OnSphere(double lon, double lat)
+{
+  return { std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat) };
+}
+
+// A torus meridian (circle around the tube at angle u), as 8 control points on the mesh
+// torus's vertex ring; v increasing, or decreasing when reversed.
+ControlPolygon Meridian(double R, double r, int nu, int nv, int column, bool reversed, int shape)
+{
+  ControlPolygon c;
+  c.ShapeId = shape;
+  const double u = 2 * Pi * column / nu;
+  for (int k = 0; k < 8; ++k)
+  {
+    const int j = (reversed ? 8 - k : k) % 8 * nv / 8;
+    const double v = 2 * Pi * j / nv;
+    c.Points.push_back({ (R + r * std::cos(v)) * std::cos(u),
+      (R + r * std::cos(v)) * std::sin(u),
+      r * std::sin(v) });
+  }
+  return c;
+}
+
+double RunArea(vtkBoolSurf* f)
+{
+  f->Update();
+  return testutils::Area(f->GetOutput());
+}
+} // namespace
+
+TEST(SurfaceBooleans, SphereInclusionExclusionIsExact)
+{
+  auto sphere = testutils::ToPolyData(boolsurf::MakeIcosphere(4));
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> lon(-0.6, 0.6), lat(-0.6, 0.6);
+  for (int trial = 0; trial < 4; ++trial)
+  {
+    ControlPolygon a, b;
+    a.ShapeId = 0;
+    b.ShapeId = 1;
+    // Convex-ish quads around two nearby centres (counter-clockwise seen from outside).
+    const double ca = lon(rng), la = lat(rng) * 0.5, cb = ca + 0.3, lb = la + 0.1;
+    for (int k = 0; k < 4; ++k)
+    {
+      const double t = Pi / 2 * k + 0.3 * trial;
+      a.Points.push_back(OnSphere(ca + 0.4 * std::cos(t), la + 0.4 * std::sin(t)));
+      b.Points.push_back(OnSphere(cb + 0.35 * std::cos(t), lb + 0.35 * std::sin(t)));
+    }
+    vtkNew<vtkBoolSurf> f;
+    f->SetInputData(0, sphere);
+    f->SetInputData(1, testutils::ToCurves({ a, b }));
+    f->SetOperationToExpression();
+    f->SetExpression("S0");
+    const double areaA = RunArea(f);
+    f->SetExpression("S1");
+    const double areaB = RunArea(f);
+    f->SetOperation(0);
+    const double areaUnion = RunArea(f);
+    f->SetOperation(1);
+    const double areaIntersection = RunArea(f);
+    EXPECT_GT(areaIntersection, 0.0) << "trial " << trial << ": the quads should overlap";
+    EXPECT_NEAR(areaUnion + areaIntersection, areaA + areaB, 1e-12 * (areaA + areaB));
+    EXPECT_LT(areaUnion, areaA + areaB);
+  }
+}
+
+TEST(SurfaceBooleans, GeodesicTriangleAreaApproachesAngleExcess)
+{
+  // The octant triangle: three right angles, excess pi/2 on the unit sphere.
+  ControlPolygon octant;
+  octant.Points = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  double previous = 1e9;
+  for (int level = 2; level <= 5; ++level)
+  {
+    vtkNew<vtkBoolSurf> f;
+    f->SetInputData(0, testutils::ToPolyData(boolsurf::MakeIcosphere(level)));
+    f->SetInputData(1, testutils::ToCurves({ octant }));
+    f->SetOperationToExpression();
+    f->SetExpression("S0");
+    const double error = std::abs(RunArea(f) - Pi / 2);
+    EXPECT_LT(error, previous) << "level " << level;
+    previous = error;
+  }
+  EXPECT_LT(previous, 0.01);
+}
+
+TEST(SurfaceBooleans, TorusMeridianIsInconsistentAndRefused)
+{
+  const double R = 2, r = 0.7;
+  const int nu = 48, nv = 24;
+  auto torus = testutils::ToPolyData(boolsurf::MakeTorus(R, r, nu, nv));
+  ControlPolygon blob;
+  blob.ShapeId = 1;
+  for (int k = 0; k < 4; ++k) // a small loop on the outer equator, around u = pi
+  {
+    const double u = Pi + 0.2 * std::cos(Pi / 2 * k), v = 0.4 * std::sin(Pi / 2 * k);
+    blob.Points.push_back({ (R + r * std::cos(v)) * std::cos(u),
+      (R + r * std::cos(v)) * std::sin(u),
+      r * std::sin(v) });
+  }
+  vtkNew<vtkBoolSurfTraceCurves> trace;
+  trace->SetInputData(0, torus);
+  trace->SetInputData(1, testutils::ToCurves({ Meridian(R, r, nu, nv, 0, false, 0), blob }));
+  vtkNew<vtkBoolSurfArrangement> arrangement;
+  arrangement->SetInputData(0, torus);
+  arrangement->SetInputConnection(1, trace->GetOutputPort());
+  vtkNew<vtkBoolSurfLabeling> labeling;
+  labeling->SetInputConnection(arrangement->GetOutputPort(0));
+  Caught labelMessages(labeling);
+  labeling->Update();
+  auto* consistent =
+    vtkIntArray::SafeDownCast(labeling->GetOutput()->GetFieldData()->GetArray("ShapeConsistent"));
+  ASSERT_NE(consistent, nullptr);
+  EXPECT_EQ(consistent->GetValue(0), 0);
+  EXPECT_EQ(consistent->GetValue(1), 1); // consistent shapes are labeled all the same
+  EXPECT_NE(labelMessages.Catcher->Warnings.find("shape S0 is inconsistent"), std::string::npos)
+    << labelMessages.Catcher->Warnings;
+
+  vtkNew<vtkBoolSurfBoolean> boolean;
+  boolean->SetInputConnection(labeling->GetOutputPort());
+  Caught booleanMessages(boolean);
+  boolean->SetOperationToUnion();
+  boolean->Update();
+  EXPECT_EQ(boolean->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_NE(booleanMessages.Catcher->Errors.find("inconsistent shape(s)"), std::string::npos);
+  EXPECT_NE(booleanMessages.Catcher->Errors.find("S0"), std::string::npos);
+  // The consistent shape alone is answered.
+  boolean->SetOperationToExpression();
+  boolean->SetExpression("S1");
+  boolean->Update();
+  EXPECT_GT(boolean->GetOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(SurfaceBooleans, TwoOppositeMeridiansBoundABand)
+{
+  const double R = 2, r = 0.7;
+  const int nu = 48, nv = 24;
+  auto torus = testutils::ToPolyData(boolsurf::MakeTorus(R, r, nu, nv));
+  vtkNew<vtkBoolSurf> f;
+  f->SetInputData(0, torus);
+  f->SetInputData(1,
+    testutils::ToCurves(
+      { Meridian(R, r, nu, nv, 0, false, 0), Meridian(R, r, nu, nv, nu / 4, true, 0) }));
+  f->SetOperationToExpression();
+  f->SetExpression("S0");
+  Caught messages(f);
+  const double band = RunArea(f);
+  EXPECT_EQ(messages.Catcher->Errors, "");
+  // The meridian at u = 0 (v increasing) has u < 0 on its left, the reversed one at u = pi/2
+  // has u > pi/2: the band labeled 1 is u in (pi/2, 2pi), three quarters of the torus.
+  const double total = testutils::Area(torus);
+  EXPECT_NEAR(band / total, 0.75, 0.01);
+  auto* labels = f->GetOutput()->GetCellData()->GetArray("Labels");
+  ASSERT_NE(labels, nullptr);
+  EXPECT_EQ(labels->GetRange(0)[0], 1);
+  EXPECT_EQ(labels->GetRange(0)[1], 1);
+}
+
+TEST(SurfaceBooleans, VariadicOperationsEqualTheirExpressions)
+{
+  auto mesh = testutils::ToPolyData(boolsurf::MakeFlatSquare(40, 1.0, 0.25, 3));
+  std::vector<ControlPolygon> shapes;
+  for (int s = 0; s < 4; ++s)
+  {
+    ControlPolygon c;
+    c.ShapeId = s;
+    const double cx = 0.35 + 0.1 * (s % 2) + 0.05 * s, cy = 0.35 + 0.12 * (s / 2);
+    for (int k = 0; k < 5; ++k)
+    {
+      c.Points.push_back(
+        { cx + 0.2 * std::cos(2 * Pi * k / 5), cy + 0.2 * std::sin(2 * Pi * k / 5), 0 });
+    }
+    shapes.push_back(c);
+  }
+  vtkNew<vtkBoolSurf> f;
+  f->SetInputData(0, mesh);
+  f->SetInputData(1, testutils::ToCurves(shapes));
+  f->SetShapeA(-1);
+  f->SetShapeB(-1);
+  const char* expressions[] = {
+    "S0 | S1 | S2 | S3", "S0 & S1 & S2 & S3", "S0 - (S1 | S2 | S3)", "S0 ^ S1 ^ S2 ^ S3"
+  };
+  for (int op = 0; op < 4; ++op)
+  {
+    f->SetOperation(op);
+    const double variadic = RunArea(f);
+    f->SetOperationToExpression();
+    f->SetExpression(expressions[op]);
+    EXPECT_NEAR(variadic, RunArea(f), 1e-12) << expressions[op];
+    EXPECT_GT(variadic, 0.0) << expressions[op];
+  }
+}
+
+TEST(SurfaceBooleans, BadOperationsAreNamedErrors)
+{
+  auto mesh = testutils::ToPolyData(boolsurf::MakeFlatSquare(10));
+  ControlPolygon a;
+  a.Points = { { 0.2, 0.2, 0 }, { 0.6, 0.2, 0 }, { 0.4, 0.6, 0 } };
+  vtkNew<vtkBoolSurf> f;
+  f->SetInputData(0, mesh);
+  f->SetInputData(1, testutils::ToCurves({ a }));
+  Caught messages(f);
+  f->SetOperationToExpression();
+  f->SetExpression("S0 & (S1");
+  f->Update();
+  EXPECT_NE(messages.Catcher->Errors.find("unknown shape S1"), std::string::npos)
+    << messages.Catcher->Errors;
+  messages.Catcher->Errors.clear();
+  f->SetExpression("S0 &");
+  f->Update();
+  EXPECT_NE(messages.Catcher->Errors.find("unexpected end"), std::string::npos);
+  messages.Catcher->Errors.clear();
+  f->SetOperationToUnion();
+  f->SetShapeB(3);
+  f->Update();
+  EXPECT_NE(messages.Catcher->Errors.find("ShapeB = 3 is not a shape"), std::string::npos)
+    << messages.Catcher->Errors;
+  EXPECT_EQ(f->GetOutput()->GetNumberOfCells(), 0);
+}
