@@ -88,13 +88,12 @@ CanonicalPoint FromWeights(const TriangleMesh& mesh, int t, const std::array<dou
 //------------------------------------------------------------------------------
 GeodesicPathSolver::GeodesicPathSolver(const TriangleMesh& mesh)
   : Search(mesh)
+  , EdgeSearch(mesh)
   , StripPosition(mesh.GetNumberOfTriangles(), 0)
   , StripPositionStamp(mesh.GetNumberOfTriangles(), 0u)
 {
-  // The strip only seeds the straightening, which makes any strip locally shortest, so the
-  // exact cheapest dual chain is not worth settling half the mesh for on long paths: with a
-  // weight of 2 a near-antipodal path on a 1M-triangle mesh settles ~15k triangles instead of
-  // ~500k (see Benchmarks/BenchmarkGeodesicPath.cxx).
+  // The dual search is only the fallback when no strip can be built along the edge path;
+  // greedy there, since any strip is straightened to a locally shortest path.
   this->Search.SetHeuristicWeight(2.0);
 }
 
@@ -169,16 +168,19 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   {
     this->Strip.assign(1, common);
   }
-  else if (!this->Search.FindStrip(this->StartTriangles,
-             PositionOf(mesh, start),
-             this->EndTriangles,
-             PositionOf(mesh, end),
-             this->Strip))
+  else if (!(this->UseEdgePathStrip && this->StripFromEdgePath(start, end)))
   {
-    return TraceStatus::Failure("no triangle strip joins " + Describe(start) + " and " +
-      Describe(end) + " although they share a component (corrupt adjacency?)");
+    if (!this->Search.FindStrip(this->StartTriangles,
+          PositionOf(mesh, start),
+          this->EndTriangles,
+          PositionOf(mesh, end),
+          this->Strip))
+    {
+      return TraceStatus::Failure("no triangle strip joins " + Describe(start) + " and " +
+        Describe(end) + " although they share a component (corrupt adjacency?)");
+    }
+    this->Statistics.ExpandedTriangles = this->Search.GetLastExpandedCount();
   }
-  this->Statistics.ExpandedTriangles = this->Search.GetLastExpandedCount();
 
   for (;;)
   {
@@ -206,6 +208,124 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   }
   path.Length = PolylineLength(mesh, path.Points);
   return TraceStatus::Success();
+}
+
+//------------------------------------------------------------------------------
+// Strip along the shortest edge path start -> v0 -> ... -> vk -> end: from a start triangle
+// holding v0, turn around each vi (inside its fan of triangles) until a triangle holding the
+// next vertex (or, after vk, the end point) is reached. The turn goes on the side the strip
+// already is, away from the incoming edge, so every vi sits in one contiguous run of strip
+// triangles and each path edge is an edge of a strip triangle: the edge path is a curve
+// inside the strip. Only if a boundary blocks that side does the turn go the other way
+// (across the incoming edge, which keeps the property). Fails on non-manifold fans.
+bool GeodesicPathSolver::StripFromEdgePath(const CanonicalPoint& start, const CanonicalPoint& end)
+{
+  const TriangleMesh& mesh = this->GetMesh();
+  const Vec3 from = PositionOf(mesh, start), to = PositionOf(mesh, end);
+  auto terminals = [&](const std::vector<int>& triangles,
+                     const Vec3& p,
+                     std::vector<EdgeGraphSearch::Terminal>& out)
+  {
+    out.clear();
+    for (int t : triangles)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const int v = mesh.GetTriangle(t)[k];
+        out.push_back({ v, Distance(p, mesh.GetPosition(v)) });
+      }
+    }
+  };
+  terminals(this->StartTriangles, from, this->Sources);
+  terminals(this->EndTriangles, to, this->Targets);
+  const double length =
+    this->EdgeSearch.FindPath(this->Sources, from, this->Targets, to, this->VertexPath);
+  this->Statistics.SettledVertices = this->EdgeSearch.GetLastSettledCount();
+  if (length < 0.0)
+  {
+    return false;
+  }
+  this->Statistics.EdgePathLength = length;
+
+  const std::vector<int>& path = this->VertexPath;
+  const int k = static_cast<int>(path.size()) - 1;
+  int current = -1;
+  for (int t : this->StartTriangles)
+  {
+    if (CornerOf(mesh.GetTriangle(t), path[0]) >= 0)
+    {
+      current = t;
+      break;
+    }
+  }
+  if (current < 0)
+  {
+    return false;
+  }
+  this->Strip.assign(1, current);
+  for (int i = 0; i <= k; ++i)
+  {
+    const int v = path[i];
+    const int previous = i > 0 ? path[i - 1] : -1;
+    auto reached = [&](int t)
+    {
+      return i < k ? CornerOf(mesh.GetTriangle(t), path[i + 1]) >= 0
+                   : TriangleContains(mesh, end, t);
+    };
+    if (reached(current))
+    {
+      continue;
+    }
+    const Triangle& tri = mesh.GetTriangle(current);
+    const int kv = CornerOf(tri, v);
+    if (kv < 0)
+    {
+      return false;
+    }
+    // Local edge kv runs v -> tri[kv + 1], edge kv + 2 runs tri[kv + 2] -> v.
+    const int away = tri[(kv + 1) % 3] == previous ? (kv + 2) % 3 : kv;
+    const int across = away == kv ? (kv + 2) % 3 : kv;
+    const size_t mark = this->Strip.size();
+    const int limit = mesh.GetVertexCorners(v).size();
+    bool done = false;
+    for (int exitEdge : { away, across })
+    {
+      this->Strip.resize(mark);
+      int t = current, edge = exitEdge;
+      for (int steps = 0; steps <= limit; ++steps)
+      {
+        const int next = mesh.GetNeighbor(t, edge);
+        if (next < 0)
+        {
+          break;
+        }
+        const int entry = mesh.GetNeighborEdge(t, edge);
+        const int kn = CornerOf(mesh.GetTriangle(next), v);
+        if (kn < 0)
+        {
+          break;
+        }
+        this->Strip.push_back(next);
+        if (reached(next))
+        {
+          done = true;
+          break;
+        }
+        edge = entry == kn ? (kn + 2) % 3 : kn;
+        t = next;
+      }
+      if (done)
+      {
+        break;
+      }
+    }
+    if (!done)
+    {
+      return false;
+    }
+    current = this->Strip.back();
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

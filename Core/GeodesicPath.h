@@ -1,8 +1,14 @@
 // Shortest (locally shortest) geodesic path between two surface points.
 //
 // Three stages, after Lee-Preparata and the strip straightening used by BoolSurf/b-Surf:
-//  1. DualGraphSearch gives an initial strip: a chain of edge-adjacent triangles from a
-//     triangle holding the start to one holding the end.
+//  1. EdgeGraphSearch finds the shortest path along mesh edges (start -> corners of its
+//     triangle -> ... -> corners of the end's triangle -> end; exact bidirectional A*). The
+//     initial strip is the chain of triangles along one side of it, turning around each path
+//     vertex on the side it came from. The edge path lies in that strip, so the funnel result
+//     is never longer than it, and stage 3 only shortens: a traced path is never longer than
+//     the shortest edge path (vtkDijkstraGraphGeodesicPath) between the same points, on any
+//     surface, whatever its genus. If the strip cannot be built (a non-manifold vertex on the
+//     edge path), DualGraphSearch (greedy A* over triangles) gives the strip instead.
 //  2. The strip is unfolded into the plane and the funnel algorithm finds the shortest
 //     polyline inside it; it bends only at strip vertices.
 //  3. Where that polyline passes through a mesh vertex and the angle on the side outside the
@@ -19,6 +25,7 @@
 #define boolsurf_GeodesicPath_h
 
 #include "DualGraphSearch.h"
+#include "EdgeGraphSearch.h"
 #include "SurfacePoint.h"
 
 #include <array>
@@ -52,7 +59,9 @@ struct GeodesicPath
 /// What the last GeodesicPathSolver::Compute did (for benchmarks and tests).
 struct GeodesicPathStatistics
 {
-  int ExpandedTriangles = 0;   ///< A* work
+  int SettledVertices = 0;     ///< edge-path search work
+  int ExpandedTriangles = 0;   ///< dual A* work (only when the edge-path strip failed)
+  double EdgePathLength = -1;  ///< shortest edge path (an upper bound of the result)
   int StripTriangles = 0;      ///< final strip length
   int StraighteningRounds = 0; ///< funnel runs
 };
@@ -82,9 +91,12 @@ public:
   /// loop ends anyway; the bound only guards against numerical ping-pong).
   void SetMaximumStraighteningRounds(int n) { this->MaximumRounds = n; }
 
-  /// See DualGraphSearch::SetHeuristicWeight. Default 2 (greedy A*); 1 gives the exact
-  /// cheapest dual chain as the initial strip.
+  /// See DualGraphSearch::SetHeuristicWeight: the weight of the fallback dual search
+  /// (default 2, greedy). The edge-path search is always exact.
   void SetHeuristicWeight(double w) { this->Search.SetHeuristicWeight(w); }
+
+  /// Seed with the dual-graph strip only (no edge-path bound); for benchmarks and tests.
+  void SetUseEdgePathStrip(bool on) { this->UseEdgePathStrip = on; }
 
 private:
   struct Portal
@@ -105,6 +117,7 @@ private:
     int FirstPortal = -1, LastPortal = -1; // Vertex points: strip portals that contain it
   };
 
+  bool StripFromEdgePath(const CanonicalPoint& start, const CanonicalPoint& end);
   void TrimStrip(const CanonicalPoint& start, const CanonicalPoint& end);
   bool UnfoldStrip(const CanonicalPoint& start, const CanonicalPoint& end);
   void RunFunnel();
@@ -123,6 +136,10 @@ private:
     std::vector<int>& swept) const;
 
   DualGraphSearch Search;
+  EdgeGraphSearch EdgeSearch;
+  bool UseEdgePathStrip = true;
+  std::vector<EdgeGraphSearch::Terminal> Sources, Targets;
+  std::vector<int> VertexPath;
   GeodesicPathStatistics Statistics;
   int MaximumRounds = 10000;
 
