@@ -12,13 +12,57 @@ EdgeGraphSearch::EdgeGraphSearch(const TriangleMesh& mesh)
   : Mesh(mesh)
 {
   const int nv = mesh.GetNumberOfVertices();
+  // Morton order of the vertex positions (21 bits per axis in the bounding box).
+  std::vector<std::pair<std::uint64_t, int>> keys(nv);
+  Vec3 lo{ 0, 0, 0 }, hi{ 0, 0, 0 };
+  if (nv > 0)
+  {
+    lo = hi = mesh.GetPosition(0);
+  }
+  for (const Vec3& p : mesh.GetPositions())
+  {
+    lo = { std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z) };
+    hi = { std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z) };
+  }
+  auto spread = [](std::uint64_t x)
+  {
+    x &= 0x1fffff;
+    x = (x | x << 32) & 0x1f00000000ffffULL;
+    x = (x | x << 16) & 0x1f0000ff0000ffULL;
+    x = (x | x << 8) & 0x100f00f00f00f00fULL;
+    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+    x = (x | x << 2) & 0x1249249249249249ULL;
+    return x;
+  };
+  auto quantize = [](double v, double a, double b)
+  {
+    const double s = b > a ? (v - a) / (b - a) : 0.0;
+    return static_cast<std::uint64_t>(std::min(std::max(s, 0.0), 1.0) * 2097151.0);
+  };
+  for (int v = 0; v < nv; ++v)
+  {
+    const Vec3& p = mesh.GetPosition(v);
+    keys[v] = { spread(quantize(p.x, lo.x, hi.x)) | spread(quantize(p.y, lo.y, hi.y)) << 1 |
+        spread(quantize(p.z, lo.z, hi.z)) << 2,
+      v };
+  }
+  std::sort(keys.begin(), keys.end());
+  this->Internal.resize(nv);
+  this->External.resize(nv);
+  for (int i = 0; i < nv; ++i)
+  {
+    this->External[i] = keys[i].second;
+    this->Internal[keys[i].second] = i;
+  }
+
   this->Offsets.assign(nv + 1, 0);
   this->Nodes.resize(nv);
   // Each vertex lists the other two corners of every usable triangle around it, deduplicated
   // (an interior edge is seen from both of its triangles).
   std::vector<int> row;
-  for (int v = 0; v < nv; ++v)
+  for (int i = 0; i < nv; ++i)
   {
+    const int v = this->External[i];
     row.clear();
     for (int corner : mesh.GetVertexCorners(v))
     {
@@ -34,12 +78,14 @@ EdgeGraphSearch::EdgeGraphSearch(const TriangleMesh& mesh)
     std::sort(row.begin(), row.end());
     row.erase(std::unique(row.begin(), row.end()), row.end());
     const Vec3& p = mesh.GetPosition(v);
+    this->Nodes[i].Position = p;
+    this->Nodes[i].Seen = 0;
     for (int w : row)
     {
-      this->Neighbors.push_back(w);
+      this->Neighbors.push_back(this->Internal[w]);
       this->EdgeCosts.push_back(Distance(p, mesh.GetPosition(w)));
     }
-    this->Offsets[v + 1] = static_cast<int>(this->Neighbors.size());
+    this->Offsets[i + 1] = static_cast<int>(this->Neighbors.size());
   }
 }
 
@@ -75,9 +121,8 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
   this->NextGeneration();
   const std::uint32_t gen = this->Generation;
   const std::greater<std::pair<double, int>> later;
-  const std::vector<Vec3>& positions = this->Mesh.GetPositions();
-  auto potential = [&](int v)
-  { return 0.5 * (Distance(positions[v], to) - Distance(positions[v], from)); };
+  auto potential = [&](const Node& n)
+  { return 0.5 * (Distance(n.Position, to) - Distance(n.Position, from)); };
   auto node = [&](int v) -> Node&
   {
     Node& n = this->Nodes[v];
@@ -99,7 +144,8 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
     const int other = 1 - side;
     for (const Terminal& terminal : side == 0 ? sources : targets)
     {
-      Node& n = node(terminal.Vertex);
+      const int v = this->Internal[terminal.Vertex];
+      Node& n = node(v);
       if ((n.SeenMask & (1 << side)) && n.Cost[side] <= terminal.Cost)
       {
         continue;
@@ -107,12 +153,12 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
       n.SeenMask |= 1 << side;
       n.Cost[side] = terminal.Cost;
       n.Parent[side] = -1;
-      heap.emplace_back(terminal.Cost + sign * potential(terminal.Vertex), terminal.Vertex);
+      heap.emplace_back(terminal.Cost + sign * potential(n), v);
       std::push_heap(heap.begin(), heap.end(), later);
       if ((n.SeenMask & (1 << other)) && n.Cost[0] + n.Cost[1] < mu)
       {
         mu = n.Cost[0] + n.Cost[1];
-        meetA = meetB = terminal.Vertex;
+        meetA = meetB = v;
       }
     }
   }
@@ -171,7 +217,7 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
       nw.SeenMask |= 1 << side;
       nw.Cost[side] = g;
       nw.Parent[side] = u;
-      heap.emplace_back(g + sign * potential(w), w);
+      heap.emplace_back(g + sign * potential(nw), w);
       std::push_heap(heap.begin(), heap.end(), later);
     }
   }
@@ -198,6 +244,10 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
   {
     vertices.clear();
     return -1.0;
+  }
+  for (int& v : vertices)
+  {
+    v = this->External[v];
   }
   return mu;
 }

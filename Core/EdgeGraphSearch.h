@@ -14,7 +14,10 @@
 // cost about half of one ball of the full radius.
 //
 // The search state is sized to the mesh once and stamped per query (nothing mesh-sized is
-// cleared per call), so a short path costs what its neighbourhood costs.
+// cleared per call), so a short path costs what its neighbourhood costs. Internally vertices
+// are renumbered along a Morton (Z-order) curve and each one's search state and position
+// share a cache line: a long search touches a large part of the mesh, and in file order
+// (e.g. after subdivision) neighbours are far apart in memory.
 #ifndef boolsurf_EdgeGraphSearch_h
 #define boolsurf_EdgeGraphSearch_h
 
@@ -57,10 +60,11 @@ public:
   const TriangleMesh& GetMesh() const { return this->Mesh; }
 
 private:
-  struct Node
+  struct alignas(64) Node
   {
+    Vec3 Position;
     double Cost[2];     // from the start point (0) / to the end point (1)
-    int Parent[2];      // previous vertex towards the start (0) / the end (1); -1 at a terminal
+    int Parent[2];      // previous vertex (internal id) towards the start (0) / end (1), or -1
     std::uint32_t Seen; // == Generation: Cost/Parent valid (per direction: SeenMask)
     std::uint8_t SeenMask, ClosedMask;
   };
@@ -68,9 +72,10 @@ private:
   void NextGeneration();
 
   const TriangleMesh& Mesh;
-  std::vector<int> Offsets;      // size V + 1
-  std::vector<int> Neighbors;    // Neighbors[Offsets[v] .. Offsets[v + 1])
-  std::vector<double> EdgeCosts; // parallel to Neighbors
+  std::vector<int> Internal, External; // mesh id <-> internal (Morton-ordered) id
+  std::vector<int> Offsets;            // size V + 1, internal ids
+  std::vector<int> Neighbors;          // Neighbors[Offsets[v] .. Offsets[v + 1])
+  std::vector<double> EdgeCosts;       // parallel to Neighbors
   std::vector<Node> Nodes;
   std::uint32_t Generation = 0;
   std::vector<std::pair<double, int>> Heaps[2]; // (key, vertex); min-heaps
