@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace boolsurf
@@ -30,6 +31,24 @@ void ParallelFor(tbb::task_arena& arena, int n, const Body& body)
     [&]
     {
       tbb::parallel_for(tbb::blocked_range<int>(0, n),
+        [&](const tbb::blocked_range<int>& range)
+        {
+          for (int i = range.begin(); i != range.end(); ++i)
+          {
+            body(i);
+          }
+        });
+    });
+}
+
+// The same over [0, n) in chunks of at least `grain` (for cheap bodies over the whole mesh).
+template <class Body>
+void ParallelRange(tbb::task_arena& arena, int n, const Body& body, int grain = 4096)
+{
+  arena.execute(
+    [&]
+    {
+      tbb::parallel_for(tbb::blocked_range<int>(0, n, grain),
         [&](const tbb::blocked_range<int>& range)
         {
           for (int i = range.begin(); i != range.end(); ++i)
@@ -108,7 +127,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   out.Positions.resize(totalPoints);
   out.PointOnMesh.resize(totalPoints);
   out.PointSurface.resize(totalPoints);
-  ParallelFor(arena,
+  // Mesh vertices: each one's surface point is its first corner.
+  ParallelRange(arena,
     nv,
     [&](int v)
     {
@@ -117,8 +137,16 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       c.Id = v;
       out.Positions[v] = mesh.GetPosition(v);
       out.PointOnMesh[v] = c;
-      out.PointSurface[v] =
-        mesh.GetVertexCorners(v).size() > 0 ? SurfacePointOf(mesh, c) : SurfacePoint();
+      const IntRange corners = mesh.GetVertexCorners(v);
+      SurfacePoint sp;
+      if (corners.size() > 0)
+      {
+        const int k = corners[0] % 3;
+        sp.Triangle = corners[0] / 3;
+        sp.U = k == 1 ? 1.0 : 0.0;
+        sp.V = k == 2 ? 1.0 : 0.0;
+      }
+      out.PointSurface[v] = sp;
     });
   std::vector<int> edgeOfEdgePoint(edgePoints);
   ParallelFor(arena,
@@ -163,26 +191,85 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       }
     });
 
+  // Per source triangle: its state for the flood fill (refined, or next to a closed curve
+  // running along one of its edges), its slot, and its range of refined triangles.
+  std::vector<char> state(nt, 0);
   std::vector<int> slotOfTriangle(nt, -1);
-  std::vector<char> refined(nt, 0);
   for (int s = 0; s < slots; ++s)
   {
     slotOfTriangle[map.Triangles[s]] = s;
-    refined[map.Triangles[s]] = 1;
+    state[map.Triangles[s]] = RefinedSurfaceView::RefinedBit;
   }
-  std::vector<int> offset(nt + 1, 0);
-  for (int t = 0; t < nt; ++t)
+  std::unordered_set<std::uint64_t> blockedMeshSubEdges;
+  std::vector<char> meshEdgeHasBlocked(mesh.GetNumberOfEdges(), 0);
+  for (size_t i = 0; i < map.EdgeSegments.size(); ++i)
   {
-    const int s = slotOfTriangle[t];
-    const int count =
-      !mesh.IsUsable(t) ? 0 : (s >= 0 ? static_cast<int>(local[s].Triangles.size()) : 1);
-    offset[t + 1] = offset[t] + count;
+    const EdgeSegment& es = map.EdgeSegments[i];
+    if (!curves[es.Curve].Closed)
+    {
+      continue;
+    }
+    meshEdgeHasBlocked[es.Edge] = 1;
+    const int h = mesh.GetEdgeHalfEdge(es.Edge);
+    state[h / 3] |= RefinedSurfaceView::BlockedEdgeBit;
+    const int twin = mesh.GetTwin(h);
+    if (twin >= 0)
+    {
+      state[twin / 3] |= RefinedSurfaceView::BlockedEdgeBit;
+    }
+    const std::vector<int>& ids = edgeSegmentPoints[i];
+    for (size_t k = 0; k + 1 < ids.size(); ++k)
+    {
+      blockedMeshSubEdges.insert(UndirectedPointPair(ids[k], ids[k + 1]));
+    }
+  }
+  // Offsets: a prefix sum over fixed blocks (block sums in parallel, a short scan, then the
+  // blocks in parallel again).
+  std::vector<int> offset(nt + 1, 0);
+  {
+    const int blockSize = 1 << 16;
+    const int blocks = (nt + blockSize - 1) / blockSize;
+    std::vector<int> blockStart(blocks + 1, 0);
+    auto countOf = [&](int t)
+    {
+      const int s = slotOfTriangle[t];
+      return !mesh.IsUsable(t) ? 0 : (s >= 0 ? static_cast<int>(local[s].Triangles.size()) : 1);
+    };
+    ParallelFor(arena,
+      blocks,
+      [&](int b)
+      {
+        const int end = std::min(nt, (b + 1) * blockSize);
+        int sum = 0;
+        for (int t = b * blockSize; t < end; ++t)
+        {
+          sum += countOf(t);
+        }
+        blockStart[b + 1] = sum;
+      });
+    for (int b = 0; b < blocks; ++b)
+    {
+      blockStart[b + 1] += blockStart[b];
+    }
+    ParallelFor(arena,
+      blocks,
+      [&](int b)
+      {
+        const int end = std::min(nt, (b + 1) * blockSize);
+        int sum = blockStart[b];
+        for (int t = b * blockSize; t < end; ++t)
+        {
+          offset[t] = sum;
+          sum += countOf(t);
+        }
+      });
+    offset[nt] = blockStart[blocks];
   }
   const int refinedCount = offset[nt];
   out.Triangles.resize(refinedCount);
   out.SourceTriangle.resize(refinedCount);
   std::vector<unsigned char> blocked(refinedCount, 0);
-  ParallelFor(arena,
+  ParallelRange(arena,
     nt,
     [&](int t)
     {
@@ -212,34 +299,18 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   const Clock::time_point refinedTime = Clock::now();
 
   // --- 4. flood fill
-  std::unordered_set<std::uint64_t> blockedMeshSubEdges;
-  std::vector<char> meshEdgeHasBlocked(mesh.GetNumberOfEdges(), 0);
-  for (size_t i = 0; i < map.EdgeSegments.size(); ++i)
-  {
-    const EdgeSegment& es = map.EdgeSegments[i];
-    if (!curves[es.Curve].Closed)
-    {
-      continue;
-    }
-    meshEdgeHasBlocked[es.Edge] = 1;
-    const std::vector<int>& ids = edgeSegmentPoints[i];
-    for (size_t k = 0; k + 1 < ids.size(); ++k)
-    {
-      blockedMeshSubEdges.insert(UndirectedPointPair(ids[k], ids[k + 1]));
-    }
-  }
   RefinedSurfaceView view;
   view.Mesh = &mesh;
   view.Offset = &offset;
   view.Triangles = &out.Triangles;
   view.SourceTriangle = &out.SourceTriangle;
-  view.Refined = &refined;
+  view.Refined = &state;
   view.Blocked = &blocked;
   view.FirstInteriorPoint = nv + edgePoints;
   view.EdgeOfEdgePoint = &edgeOfEdgePoint;
   view.BlockedMeshSubEdges = &blockedMeshSubEdges;
   view.MeshEdgeHasBlocked = &meshEdgeHasBlocked;
-  out.NumberOfCells = FloodFillCells(view, out.TriangleCell);
+  arena.execute([&] { out.NumberOfCells = FloodFillCells(view, out.TriangleCell); });
   const Clock::time_point filled = Clock::now();
 
   // --- 5. curves on the refined surface, patches, cell graph

@@ -1,6 +1,12 @@
 #include "CellPartition.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
+#include <atomic>
+#include <memory>
 
 namespace boolsurf
 {
@@ -38,6 +44,49 @@ int LocalEdgesOfPoint(const RefinedSurfaceView& s, int t, int id)
   return 0;
 }
 
+// Lock-free union-find over refined triangles. A parent is never above its child, so the root of
+// a set is its lowest member; unions link the higher root below the lower one by CAS, and
+// path halving only ever stores ancestors, so concurrent finds stay correct.
+inline int FindSet(std::atomic<int>* parent, int x)
+{
+  for (;;)
+  {
+    const int p = parent[x].load(std::memory_order_relaxed);
+    if (p == x)
+    {
+      return x;
+    }
+    const int g = parent[p].load(std::memory_order_relaxed);
+    if (g != p)
+    {
+      parent[x].store(g, std::memory_order_relaxed);
+    }
+    x = g;
+  }
+}
+
+inline void UniteSets(std::atomic<int>* parent, int a, int b)
+{
+  for (;;)
+  {
+    a = FindSet(parent, a);
+    b = FindSet(parent, b);
+    if (a == b)
+    {
+      return;
+    }
+    if (a < b)
+    {
+      std::swap(a, b);
+    }
+    int expected = a;
+    if (parent[a].compare_exchange_strong(expected, b, std::memory_order_acq_rel))
+    {
+      return;
+    }
+  }
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -63,7 +112,7 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
   const int x = v[j], y = v[(j + 1) % 3];
   int k = j; // an unrefined triangle's edge j is the mesh edge j
   blocked = false;
-  if (!(*this->Refined)[t])
+  if (!((*this->Refined)[t] & RefinedBit))
   {
     // The common case, kept short: an unrefined triangle next to an unrefined triangle.
     const int n = mesh.GetNeighbor(t, j);
@@ -75,7 +124,7 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
     {
       blocked = this->BlockedMeshSubEdges->count(UndirectedPointPair(x, y)) > 0;
     }
-    return (*this->Refined)[n] ? this->FindDirected(n, y, x) : (*this->Offset)[n];
+    return ((*this->Refined)[n] & RefinedBit) ? this->FindDirected(n, y, x) : (*this->Offset)[n];
   }
   else
   {
@@ -102,37 +151,188 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
 //------------------------------------------------------------------------------
 int FloodFillCells(const RefinedSurfaceView& surface, std::vector<int>& cellOfTriangle)
 {
+  const TriangleMesh& mesh = *surface.Mesh;
   const int count = static_cast<int>(surface.Triangles->size());
-  cellOfTriangle.assign(count, -1);
-  std::vector<int> queue;
-  queue.reserve(count);
-  int cells = 0;
-  for (int seed = 0; seed < count; ++seed)
-  {
-    if (cellOfTriangle[seed] >= 0)
+  const int nt = mesh.GetNumberOfTriangles();
+  const int* offset = surface.Offset->data();
+  const char* state = surface.Refined->data();
+  const Triangle* meshTriangles = mesh.GetTriangles().data();
+  std::unique_ptr<std::atomic<int>[]> parentStore(new std::atomic<int>[count]);
+  std::atomic<int>* parent = parentStore.get();
+  cellOfTriangle.resize(count);
+  const int grain = 4096;
+  tbb::parallel_for(tbb::blocked_range<int>(0, count, grain),
+    [&](const tbb::blocked_range<int>& range)
     {
-      continue;
-    }
-    const int cell = cells++;
-    queue.clear();
-    queue.push_back(seed);
-    cellOfTriangle[seed] = cell;
-    for (size_t head = 0; head < queue.size(); ++head)
-    {
-      const int r = queue[head];
-      for (int j = 0; j < 3; ++j)
+      for (int r = range.begin(); r != range.end(); ++r)
       {
-        bool blocked = false;
-        const int n = surface.Neighbor(r, j, blocked);
-        if (n >= 0 && !blocked && cellOfTriangle[n] < 0)
+        parent[r].store(r, std::memory_order_relaxed);
+      }
+    });
+
+  // Per source triangle, its refined index when it is unrefined, else -1: one random read per
+  // neighbour on the fast path.
+  std::vector<int> unrefinedIndex(nt);
+  tbb::parallel_for(tbb::blocked_range<int>(0, nt, grain),
+    [&](const tbb::blocked_range<int>& range)
+    {
+      for (int t = range.begin(); t != range.end(); ++t)
+      {
+        unrefinedIndex[t] = (state[t] & RefinedSurfaceView::RefinedBit) ? -1 : offset[t];
+      }
+    });
+
+  // Phase 1, per fixed block of source triangles (independent of the thread count): arcs with
+  // both ends in the block are united with plain loads and stores, since no other thread
+  // touches the block's nodes; arcs leaving the block are kept for phase 2. Every arc is
+  // united from at least one side: arcs between unrefined triangles from the lower one, arcs
+  // touching a refined triangle from each refined side. With one thread, all arcs are united
+  // in phase 1 (the same sets, without atomic instructions).
+  const bool serial = tbb::this_task_arena::max_concurrency() == 1;
+  const int sourceBlock = 1 << 16;
+  const int sourceBlocks = (nt + sourceBlock - 1) / sourceBlock;
+  std::vector<std::vector<std::pair<int, int>>> crossing(sourceBlocks);
+  tbb::parallel_for(0,
+    sourceBlocks,
+    [&](int b)
+    {
+      const int t0 = b * sourceBlock, t1 = std::min(nt, t0 + sourceBlock);
+      const int lo = offset[t0], hi = offset[t1];
+      std::vector<std::pair<int, int>>& out = crossing[b];
+      auto unite = [&](int x, int y)
+      {
+        if (!serial && (y < lo || y >= hi))
         {
-          cellOfTriangle[n] = cell;
-          queue.push_back(n);
+          out.emplace_back(x, y);
+          return;
+        }
+        x = FindSet(parent, x);
+        y = FindSet(parent, y);
+        if (x != y)
+        {
+          parent[std::max(x, y)].store(std::min(x, y), std::memory_order_relaxed);
+        }
+      };
+      for (int t = t0; t < t1; ++t)
+      {
+        const int r0 = offset[t], r1 = offset[t + 1];
+        if (r0 == r1)
+        {
+          continue; // unusable triangle
+        }
+        const char st = state[t];
+        if (st == 0)
+        {
+          // Fast path: an unrefined triangle without curves on its edges.
+          for (int j = 0; j < 3; ++j)
+          {
+            const int n = mesh.GetNeighbor(t, j);
+            if (n > t)
+            {
+              const int rn = unrefinedIndex[n];
+              if (rn >= 0)
+              {
+                unite(r0, rn);
+              }
+            }
+          }
+        }
+        else if (!(st & RefinedSurfaceView::RefinedBit))
+        {
+          const Triangle& tri = meshTriangles[t];
+          for (int j = 0; j < 3; ++j)
+          {
+            const int n = mesh.GetNeighbor(t, j);
+            if (n <= t || (state[n] & RefinedSurfaceView::RefinedBit))
+            {
+              continue;
+            }
+            if ((*surface.MeshEdgeHasBlocked)[mesh.GetEdgeId(t, j)] &&
+              surface.BlockedMeshSubEdges->count(UndirectedPointPair(tri[j], tri[(j + 1) % 3])))
+            {
+              continue;
+            }
+            unite(r0, offset[n]);
+          }
+        }
+        else
+        {
+          for (int r = r0; r < r1; ++r)
+          {
+            for (int j = 0; j < 3; ++j)
+            {
+              bool blocked = false;
+              const int n = surface.Neighbor(r, j, blocked);
+              if (n >= 0 && !blocked)
+              {
+                unite(r, n);
+              }
+            }
+          }
         }
       }
-    }
+    });
+  // Phase 2: arcs between blocks, by lock-free unions.
+  tbb::parallel_for(0,
+    sourceBlocks,
+    [&](int b)
+    {
+      for (const std::pair<int, int>& arc : crossing[b])
+      {
+        UniteSets(parent, arc.first, arc.second);
+      }
+    });
+
+  // Number the roots (the lowest triangle of each cell) in order: per fixed block, count, scan,
+  // then number; then every triangle takes its root's number.
+  const int blockSize = 1 << 16;
+  const int blocks = (count + blockSize - 1) / blockSize;
+  std::vector<int> blockRoots(blocks + 1, 0);
+  tbb::parallel_for(0,
+    blocks,
+    [&](int b)
+    {
+      const int end = std::min(count, (b + 1) * blockSize);
+      int roots = 0;
+      for (int r = b * blockSize; r < end; ++r)
+      {
+        const int root = FindSet(parent, r);
+        parent[r].store(root, std::memory_order_relaxed);
+        roots += root == r;
+      }
+      blockRoots[b + 1] = roots;
+    });
+  for (int b = 0; b < blocks; ++b)
+  {
+    blockRoots[b + 1] += blockRoots[b];
   }
-  return cells;
+  tbb::parallel_for(0,
+    blocks,
+    [&](int b)
+    {
+      const int end = std::min(count, (b + 1) * blockSize);
+      int next = blockRoots[b];
+      for (int r = b * blockSize; r < end; ++r)
+      {
+        if (parent[r].load(std::memory_order_relaxed) == r)
+        {
+          cellOfTriangle[r] = next++;
+        }
+      }
+    });
+  tbb::parallel_for(tbb::blocked_range<int>(0, count, grain),
+    [&](const tbb::blocked_range<int>& range)
+    {
+      for (int r = range.begin(); r != range.end(); ++r)
+      {
+        const int root = parent[r].load(std::memory_order_relaxed);
+        if (root != r)
+        {
+          cellOfTriangle[r] = cellOfTriangle[root];
+        }
+      }
+    });
+  return blockRoots[blocks];
 }
 
 //------------------------------------------------------------------------------

@@ -37,8 +37,11 @@ struct RefinedSurfaceView
   const std::vector<int>* Offset = nullptr;
   const std::vector<std::array<int, 3>>* Triangles = nullptr;
   const std::vector<int>* SourceTriangle = nullptr;
-  /// Per source triangle: 1 when it was refined.
+  /// Per source triangle: bit 0 (RefinedBit) when it was refined, bit 1 (BlockedEdgeBit) when
+  /// one of its mesh edges carries a closed curve running along it.
   const std::vector<char>* Refined = nullptr;
+  static constexpr char RefinedBit = 1;
+  static constexpr char BlockedEdgeBit = 2;
   /// Per refined triangle: bit j when its edge j (vertex j -> j+1) lies on a closed curve
   /// inside its source triangle.
   const std::vector<unsigned char>* Blocked = nullptr;
@@ -65,8 +68,12 @@ inline std::uint64_t UndirectedPointPair(int a, int b)
   return (static_cast<std::uint64_t>(lo) << 32) | hi;
 }
 
-/// Breadth-first flood fill; cells are numbered in order of their lowest triangle, so the
-/// result does not depend on threads. Returns the number of cells.
+/// Connected components of the DGA without the blocked arcs (the flood fill of the method), as
+/// a lock-free union-find run in parallel over source triangles on the calling TBB arena.
+/// Unrefined triangles between unrefined neighbours take a fast path (base-mesh twins, no
+/// hashing). Every set's root is its lowest triangle, and cells are numbered in order of their
+/// lowest triangle, so the result is that of a sequential breadth-first flood fill seeded in
+/// triangle order, whatever the number of threads. Returns the number of cells.
 int FloodFillCells(const RefinedSurfaceView& surface, std::vector<int>& cellOfTriangle);
 
 /// A curve on the refined surface: its refined point ids and, per sub-edge i (from point i to

@@ -10,10 +10,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <random>
 #include <set>
+#include <unordered_map>
 #include <vector>
 
 namespace boolsurf
@@ -176,6 +179,68 @@ inline TracedCurve TraceOrDie(const FlatPolygonTracer& tracer,
   return c;
 }
 
+/// Independent check of the partition: a sequential breadth-first flood fill over refined
+/// triangles sharing an edge (exactly two of them) that no closed patch runs along, seeded in
+/// triangle order, must give exactly TriangleCell.
+inline void ExpectCellsAreFloodFill(const Arrangement& arr)
+{
+  auto key = [](int a, int b)
+  {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+      static_cast<std::uint32_t>(std::max(a, b));
+  };
+  std::unordered_map<std::uint64_t, std::vector<int>> edgeTriangles;
+  for (size_t r = 0; r < arr.Triangles.size(); ++r)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      edgeTriangles[key(arr.Triangles[r][j], arr.Triangles[r][(j + 1) % 3])].push_back(
+        static_cast<int>(r));
+    }
+  }
+  std::set<std::uint64_t> cut;
+  for (const ArrangementPatch& p : arr.Patches)
+  {
+    for (size_t k = 0; p.Closed && k + 1 < p.Points.size(); ++k)
+    {
+      cut.insert(key(p.Points[k], p.Points[k + 1]));
+    }
+  }
+  std::vector<int> cell(arr.Triangles.size(), -1);
+  int cells = 0;
+  for (size_t seed = 0; seed < arr.Triangles.size(); ++seed)
+  {
+    if (cell[seed] >= 0)
+    {
+      continue;
+    }
+    std::vector<int> queue{ static_cast<int>(seed) };
+    cell[seed] = cells;
+    for (size_t head = 0; head < queue.size(); ++head)
+    {
+      const int r = queue[head];
+      for (int j = 0; j < 3; ++j)
+      {
+        const std::uint64_t e = key(arr.Triangles[r][j], arr.Triangles[r][(j + 1) % 3]);
+        const std::vector<int>& around = edgeTriangles[e];
+        if (around.size() != 2 || cut.count(e))
+        {
+          continue;
+        }
+        const int n = around[0] == r ? around[1] : around[0];
+        if (cell[n] < 0)
+        {
+          cell[n] = cells;
+          queue.push_back(n);
+        }
+      }
+    }
+    ++cells;
+  }
+  EXPECT_EQ(cells, arr.NumberOfCells);
+  EXPECT_TRUE(cell == arr.TriangleCell) << "partition differs from a sequential flood fill";
+}
+
 inline Arrangement ArrangeOrDie(const TriangleMesh& mesh,
   const std::vector<TracedCurve>& curves,
   int threads = 0)
@@ -185,6 +250,7 @@ inline Arrangement ArrangeOrDie(const TriangleMesh& mesh,
   ArrangementOptions options;
   options.Threads = threads;
   EXPECT_TRUE(ComputeArrangement(mesh, curves, options, arr, error)) << error;
+  ExpectCellsAreFloodFill(arr);
   return arr;
 }
 
