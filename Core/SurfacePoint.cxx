@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace boolsurf
 {
@@ -11,6 +12,13 @@ namespace boolsurf
 CanonicalPoint Canonicalize(const TriangleMesh& mesh, SurfacePoint p, double snap)
 {
   double w[3] = { 1.0 - p.U - p.V, p.U, p.V };
+  // Corner 0's weight is implicit: a point on the opposite edge written as (u, 1 - u) gives
+  // 1 - u - v a few ulps away from zero. Within that rounding it is zero, so the point lands
+  // on the edge it was written from (u and v themselves are compared exactly).
+  if (std::abs(w[0]) <= 4.0 * std::numeric_limits<double>::epsilon())
+  {
+    w[0] = 0.0;
+  }
   int zeros = 0;
   for (double& x : w)
   {

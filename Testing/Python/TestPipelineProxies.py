@@ -19,7 +19,7 @@ curves = AppendGeometry(Input=[square_a, square_b])  # no ShapeId: shape = cell 
 
 
 def area(proxy, port=0):
-    data = sm.Fetch(proxy, port) if port == 0 else sm.Fetch(OutputPort(proxy, port))
+    data = sm.Fetch(proxy, idx=port)
     sizes = vtkCellSizeFilter()
     sizes.SetInputData(data)
     sizes.Update()
@@ -35,7 +35,7 @@ arrangement.UpdatePipeline()
 refined = sm.Fetch(arrangement)
 assert refined.GetFieldData().GetArray("NumberOfCells").GetValue(0) == 4
 assert abs(area(arrangement) - 1.0) < 1e-12
-patches = sm.Fetch(OutputPort(arrangement, 1))
+patches = sm.Fetch(arrangement, idx=1)
 assert patches.GetNumberOfLines() == 4, patches.GetNumberOfLines()  # two crossings, 4 patches
 
 labels = LabelArrangementCells(Input=arrangement)
@@ -56,7 +56,7 @@ boolean.Operation = "Expression"
 boolean.Expression = "S1 - S0"
 boolean.UpdatePipeline()
 assert abs(area(boolean) - 0.12) < 1e-12
-boundary = sm.Fetch(OutputPort(boolean, 1))
+boundary = sm.Fetch(boolean, idx=1)
 assert boundary.GetNumberOfLines() == 1
 assert boundary.GetPointData().GetArray("TriangleId") is not None
 

@@ -113,22 +113,28 @@ TEST(SurfaceBooleans, SphereInclusionExclusionIsExact)
 
 TEST(SurfaceBooleans, GeodesicTriangleAreaApproachesAngleExcess)
 {
-  // The octant triangle: three right angles, excess pi/2 on the unit sphere.
+  // The octant triangle: three right angles, excess pi/2 on the unit sphere. The icosphere is
+  // inscribed, so its area falls short of 4 pi; on coarse meshes the traced geodesics wander,
+  // so the error must shrink level after level and be small at the finest.
   ControlPolygon octant;
   octant.Points = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-  double previous = 1e9;
+  double previous = 1e9, relative = 1e9;
   for (int level = 2; level <= 5; ++level)
   {
+    auto sphere = testutils::ToPolyData(boolsurf::MakeIcosphere(level));
     vtkNew<vtkBoolSurf> f;
-    f->SetInputData(0, testutils::ToPolyData(boolsurf::MakeIcosphere(level)));
+    f->SetInputData(0, sphere);
     f->SetInputData(1, testutils::ToCurves({ octant }));
     f->SetOperationToExpression();
     f->SetExpression("S0");
-    const double error = std::abs(RunArea(f) - Pi / 2);
+    const double area = RunArea(f);
+    const double error = std::abs(area - Pi / 2);
+    relative = std::abs(area / testutils::Area(sphere) - 0.125);
     EXPECT_LT(error, previous) << "level " << level;
     previous = error;
   }
-  EXPECT_LT(previous, 0.01);
+  EXPECT_LT(previous, 0.015); // about 1% of pi/2 at 20480 triangles
+  EXPECT_LT(relative, 2e-3);  // of the mesh's area, at the finest level
 }
 
 TEST(SurfaceBooleans, TorusMeridianIsInconsistentAndRefused)
