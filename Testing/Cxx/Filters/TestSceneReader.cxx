@@ -1,0 +1,339 @@
+// vtkBoolSurfSceneReader: BoolSurf's scene format (points {face, uv}, polygons, are_closed,
+// shapes, operations, screenspace), mesh lookup, and named errors for malformed files.
+#include "vtkBoolSurfSceneReader.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+namespace
+{
+namespace fs = std::filesystem;
+
+/// A scratch folder per test process.
+fs::path Scratch()
+{
+  static const fs::path dir = []
+  {
+    fs::path d = fs::temp_directory_path() / ("boolsurf-scene-reader-" + std::to_string(getpid()));
+    fs::create_directories(d / "meshes");
+    return d;
+  }();
+  return dir;
+}
+
+/// A 2x1 quad strip in z = 0 (two quads: the reader splits them into 4 triangles).
+void WriteQuadMesh(const fs::path& file)
+{
+  vtkNew<vtkPoints> points;
+  for (double x : { 0.0, 1.0, 2.0 })
+  {
+    points->InsertNextPoint(x, 0, 0);
+  }
+  for (double x : { 0.0, 1.0, 2.0 })
+  {
+    points->InsertNextPoint(x, 1, 0);
+  }
+  vtkNew<vtkCellArray> quads;
+  quads->InsertNextCell({ 0, 1, 4, 3 });
+  quads->InsertNextCell({ 1, 2, 5, 4 });
+  vtkNew<vtkPolyData> pd;
+  pd->SetPoints(points);
+  pd->SetPolys(quads);
+  vtkNew<vtkPLYWriter> writer;
+  writer->SetInputData(pd);
+  writer->SetFileName(file.string().c_str());
+  writer->Write();
+}
+
+fs::path WriteScene(const std::string& name, const std::string& text)
+{
+  const fs::path file = Scratch() / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+struct Read
+{
+  vtkNew<vtkBoolSurfSceneReader> Reader;
+  std::string Errors;
+  vtkNew<vtkCallbackCommand> OnError;
+  vtkNew<vtkCallbackCommand> OnWarning;
+
+  explicit Read(const fs::path& file, const std::string& mesh = "", const std::string& path = "")
+  {
+    this->OnError->SetClientData(&this->Errors);
+    this->OnError->SetCallback([](vtkObject*, unsigned long, void* errors, void* text)
+      { *static_cast<std::string*>(errors) += static_cast<const char*>(text); });
+    this->Reader->AddObserver(vtkCommand::ErrorEvent, this->OnError);
+    this->Reader->AddObserver(vtkCommand::WarningEvent, this->OnWarning);
+    this->Reader->SetFileName(file.string().c_str());
+    this->Reader->SetMeshFileName(mesh.c_str());
+    this->Reader->SetMeshSearchPath(path.c_str());
+    this->Reader->Update();
+  }
+  vtkPolyData* Mesh() { return this->Reader->GetOutput(0); }
+  vtkPolyData* Curves() { return this->Reader->GetCurvesOutput(); }
+  std::vector<int> CellInts(const char* name)
+  {
+    std::vector<int> out;
+    vtkDataArray* a = this->Curves()->GetCellData()->GetArray(name);
+    for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
+    {
+      out.push_back(static_cast<int>(a->GetComponent(i, 0)));
+    }
+    return out;
+  }
+};
+
+const char* ValidScene = R"({
+  "model": "./data/models/quads.ply",
+  "points": [ {"face": 0, "uv": [0.25, 0.25]}, {"face": 1, "uv": [0.5, 0.25]},
+              {"face": 2, "uv": [0.2, 0.3]},   {"face": 3, "uv": [0.1, 0.1]},
+              {"face": 2, "uv": [0.0, 1.0]} ],
+  "polygons": [ [], [0, 1, 2], [2, 3, 4], [], [1, 4] ],
+  "are_closed": [true, true, false, true, true],
+  "shapes": [ [0], [1, 2] ],
+  "operations": [ {"a": 1, "b": 3, "type": 2} ]
+})";
+
+TEST(SceneReader, SurfacePointsShapesAndOperations)
+{
+  WriteQuadMesh(Scratch() / "meshes" / "quads.ply");
+  Read r(WriteScene("valid.json", ValidScene));
+  ASSERT_EQ(r.Errors, "");
+  ASSERT_EQ(r.Mesh()->GetNumberOfPolys(), 4); // quads split the Yocto way
+  // Quad (0,1,4,3) -> (0,1,3), (4,3,1).
+  vtkIdType n;
+  const vtkIdType* ids;
+  r.Mesh()->GetPolys()->GetCellAtId(1, n, ids);
+  EXPECT_EQ(
+    (std::vector<vtkIdType>{ ids[0], ids[1], ids[2] }), (std::vector<vtkIdType>{ 4, 3, 1 }));
+
+  vtkPolyData* c = r.Curves();
+  ASSERT_EQ(c->GetNumberOfPoints(), 5); // point id = index in 'points'
+  ASSERT_EQ(c->GetNumberOfLines(), 3);  // empty polygons 0 and 3 skipped
+  EXPECT_EQ(r.CellInts("CurveId"), (std::vector<int>{ 1, 2, 4 }));
+  // Polygons 1, 2 are shape 1; polygon 4 is in no shape: a new shape after the scene's two.
+  EXPECT_EQ(r.CellInts("ShapeId"), (std::vector<int>{ 1, 1, 2 }));
+  EXPECT_EQ(r.CellInts("Closed"), (std::vector<int>{ 1, 0, 1 }));
+  EXPECT_EQ(r.CellInts("CurveType"), (std::vector<int>{ 0, 0, 0 }));
+  // A closed curve repeats its first point id; an open one does not.
+  c->GetLines()->GetCellAtId(0, n, ids);
+  EXPECT_EQ((std::vector<vtkIdType>(ids, ids + n)), (std::vector<vtkIdType>{ 0, 1, 2, 0 }));
+  c->GetLines()->GetCellAtId(1, n, ids);
+  EXPECT_EQ((std::vector<vtkIdType>(ids, ids + n)), (std::vector<vtkIdType>{ 2, 3, 4 }));
+
+  // TriangleId/Barycentric are exactly face/uv, and the point is (1-u-v)p0 + u p1 + v p2.
+  vtkDataArray* tid = c->GetPointData()->GetArray("TriangleId");
+  vtkDataArray* bary = c->GetPointData()->GetArray("Barycentric");
+  ASSERT_TRUE(tid && bary);
+  EXPECT_EQ(tid->GetComponent(1, 0), 1);
+  EXPECT_EQ(bary->GetComponent(1, 0), 0.5);
+  EXPECT_EQ(bary->GetComponent(1, 1), 0.25);
+  double x[3];
+  c->GetPoint(1, x); // triangle (4,3,1): p0 (1,1), p1 (0,1), p2 (1,0)
+  EXPECT_NEAR(x[0], 0.25 * 1 + 0.5 * 0 + 0.25 * 1, 1e-15);
+  EXPECT_NEAR(x[1], 0.25 * 1 + 0.5 * 1 + 0.25 * 0, 1e-15);
+
+  vtkFieldData* fd = c->GetFieldData();
+  ASSERT_TRUE(
+    fd->GetArray("OperationA") && fd->GetArray("OperationB") && fd->GetArray("OperationType"));
+  EXPECT_EQ(fd->GetArray("OperationA")->GetComponent(0, 0), 1);
+  EXPECT_EQ(fd->GetArray("OperationB")->GetComponent(0, 0), 3);
+  EXPECT_EQ(fd->GetArray("OperationType")->GetComponent(0, 0), 2);
+  auto* mesh = vtkStringArray::SafeDownCast(fd->GetAbstractArray("MeshFileName"));
+  ASSERT_TRUE(mesh);
+  EXPECT_EQ(fs::path(std::string(mesh->GetValue(0))).filename(), "quads.ply");
+}
+
+TEST(SceneReader, DefaultsOneShapePerPolygonAllClosedNoOperations)
+{
+  WriteQuadMesh(Scratch() / "meshes" / "quads.ply");
+  Read r(WriteScene("defaults.json", R"({"model": "quads.ply",
+    "points": [{"face": 0, "uv": [0.1, 0.1]}, {"face": 3, "uv": [0.1, 0.1]},
+               {"face": 2, "uv": [0.3, 0.3]}],
+    "polygons": [[], [0, 1, 2], [2, 1]], "operations": []})"));
+  ASSERT_EQ(r.Errors, "");
+  EXPECT_EQ(r.CellInts("ShapeId"), (std::vector<int>{ 1, 2 }));
+  EXPECT_EQ(r.CellInts("Closed"), (std::vector<int>{ 1, 1 }));
+  // No empty numeric field arrays (VTK's XML writer cannot read them back).
+  EXPECT_EQ(r.Curves()->GetFieldData()->GetArray("OperationA"), nullptr);
+}
+
+TEST(SceneReader, MeshLookupByRenamedCopySearchPathAndOverride)
+{
+  const fs::path elsewhere = Scratch() / "elsewhere";
+  fs::create_directories(elsewhere);
+  WriteQuadMesh(elsewhere / "eight_200k.ply");
+  const std::string scene = R"({"model": ".\\data\\complex_meshes\\eight200k-remeshed.ply",
+    "points": [{"face": 0, "uv": [0.1, 0.1]}, {"face": 3, "uv": [0.1, 0.1]}],
+    "polygons": [[], [0, 1]]})";
+  const fs::path file = WriteScene("renamed.json", scene);
+  {
+    Read r(file);
+    EXPECT_NE(r.Errors.find("eight200k-remeshed.ply' not found"), std::string::npos) << r.Errors;
+    EXPECT_EQ(r.Curves()->GetNumberOfCells(), 0);
+  }
+  {
+    Read r(file, "", "/nonexistent;" + elsewhere.string());
+    EXPECT_EQ(r.Errors, "");
+    EXPECT_EQ(fs::path(r.Reader->GetResolvedMeshFileName()).filename(), "eight_200k.ply");
+    EXPECT_EQ(r.Curves()->GetNumberOfCells(), 1);
+  }
+  {
+    Read r(file, "elsewhere/eight_200k.ply"); // relative to the scene's folder
+    EXPECT_EQ(r.Errors, "");
+    EXPECT_EQ(r.Mesh()->GetNumberOfPolys(), 4);
+  }
+  {
+    Read r(file, "elsewhere/none.ply");
+    EXPECT_NE(r.Errors.find("mesh 'elsewhere/none.ply' not found"), std::string::npos);
+  }
+}
+
+TEST(SceneReader, ScreenSpaceScenesGoOnAFlatGrid)
+{
+  // A clockwise square (in screen coordinates, y down) and an open polyline.
+  Read r(WriteScene("screen.json", R"({"screenspace": true,
+    "polygons": [[[0, 0], [10, 0], [10, 10], [0, 10]], [[2, 2], [8, 3]]],
+    "are_closed": [true, false]})"));
+  ASSERT_EQ(r.Errors, "");
+  EXPECT_EQ(r.Mesh()->GetNumberOfPolys(), 2 * 64 * 64);
+  vtkPolyData* c = r.Curves();
+  ASSERT_EQ(c->GetNumberOfLines(), 2);
+  EXPECT_EQ(r.CellInts("Closed"), (std::vector<int>{ 1, 0 }));
+  vtkDataArray* tid = c->GetPointData()->GetArray("TriangleId");
+  vtkDataArray* bary = c->GetPointData()->GetArray("Barycentric");
+  double area2 = 0;
+  for (vtkIdType i = 0; i < c->GetNumberOfPoints(); ++i)
+  {
+    double x[3], p[3][3];
+    c->GetPoint(i, x);
+    EXPECT_GE(x[0], 0.1 - 1e-12);
+    EXPECT_LE(x[0], 0.9 + 1e-12);
+    vtkIdType n;
+    const vtkIdType* ids;
+    r.Mesh()->GetPolys()->GetCellAtId(static_cast<vtkIdType>(tid->GetComponent(i, 0)), n, ids);
+    for (int k = 0; k < 3; ++k)
+    {
+      r.Mesh()->GetPoint(ids[k], p[k]);
+    }
+    const double u = bary->GetComponent(i, 0), v = bary->GetComponent(i, 1);
+    EXPECT_GE(u, 0);
+    EXPECT_GE(v, 0);
+    EXPECT_LE(u + v, 1 + 1e-12);
+    for (int d = 0; d < 2; ++d)
+    {
+      EXPECT_NEAR((1 - u - v) * p[0][d] + u * p[1][d] + v * p[2][d], x[d], 1e-12);
+    }
+    if (i < 4)
+    {
+      double y[3];
+      c->GetPoint((i + 1) % 4, y);
+      area2 += x[0] * y[1] - y[0] * x[1];
+    }
+  }
+  EXPECT_GT(area2, 0); // turned counter-clockwise
+}
+
+struct BadCase
+{
+  const char* Name;
+  const char* Text;
+  std::vector<std::string> Expected; ///< substrings of the error
+};
+
+TEST(SceneReader, MalformedScenesAreNamedErrors)
+{
+  WriteQuadMesh(Scratch() / "meshes" / "quads.ply");
+  const std::vector<BadCase> cases = {
+    { "badjson.json", R"({"model": "quads.ply", "points": [)", { "bad JSON" } },
+    { "notobject.json", "[1, 2]", { "not a JSON object" } },
+    { "nopolygons.json", R"({"model": "quads.ply", "points": []})", { "'polygons'" } },
+    { "nopoints.json", R"({"model": "quads.ply", "polygons": [[], [0, 1]]})", { "'points'" } },
+    { "nomodel.json", R"({"points": [], "polygons": [[], [0, 1]]})", { "'model'" } },
+    { "face.json",
+      R"({"model": "quads.ply", "points": [{"face": 0, "uv": [0.1, 0.1]},
+          {"face": 4, "uv": [0.1, 0.1]}], "polygons": [[], [0, 1]]})",
+      { "'points'[1].face = 4 is out of range", "has 4 triangles" } },
+    { "uv.json",
+      R"({"model": "quads.ply", "points": [{"face": 0, "uv": [0.7, 0.4]},
+          {"face": 1, "uv": [0.1, 0.1]}], "polygons": [[], [0, 1]]})",
+      { "'points'[0].uv = [0.7,0.4] is outside the triangle" } },
+    { "uvtype.json",
+      R"({"model": "quads.ply", "points": [{"face": 0, "uv": [0.1]}], "polygons": [[], [0, 0]]})",
+      { "'points'[0].uv is [0.1], not two numbers" } },
+    { "noface.json",
+      R"({"model": "quads.ply", "points": [{"uv": [0.1, 0.1]}], "polygons": [[], [0, 0]]})",
+      { "'points'[0] has no key 'face'" } },
+    { "pointindex.json",
+      R"({"model": "quads.ply", "points": [{"face": 0, "uv": [0.1, 0.1]}],
+          "polygons": [[], [0, 7]]})",
+      { "'polygons'[1][1] names point 7", "has 1 points" } },
+    { "single.json",
+      R"({"model": "quads.ply", "points": [{"face": 0, "uv": [0.1, 0.1]}],
+          "polygons": [[], [0]]})",
+      { "'polygons'[1] has a single point" } },
+    { "allempty.json",
+      R"({"model": "quads.ply", "points": [], "polygons": [[], []]})",
+      { "no curve" } },
+    { "shapes.json",
+      R"({"model": "quads.ply", "points": [{"face": 0, "uv": [0.1, 0.1]},
+          {"face": 1, "uv": [0.1, 0.1]}], "polygons": [[], [0, 1]], "shapes": [[0], [5]]})",
+      { "'shapes'[1][0] names polygon 5" } },
+    { "ops.json",
+      R"({"model": "quads.ply", "points": [{"face": 0, "uv": [0.1, 0.1]},
+          {"face": 1, "uv": [0.1, 0.1]}], "polygons": [[], [0, 1]],
+          "operations": [{"a": 1, "type": 0}]})",
+      { "'operations'[0] has no key 'b'" } },
+    { "missingmesh.json",
+      R"({"model": "./data/models/nowhere.ply", "points": [{"face": 0, "uv": [0.1, 0.1]},
+          {"face": 1, "uv": [0.1, 0.1]}], "polygons": [[], [0, 1]]})",
+      { "mesh './data/models/nowhere.ply' not found", "looked for" } },
+  };
+  for (const BadCase& bad : cases)
+  {
+    const fs::path file = WriteScene(bad.Name, bad.Text);
+    Read r(file);
+    EXPECT_NE(r.Errors.find(file.string()), std::string::npos)
+      << bad.Name << ": the error names the file: " << r.Errors;
+    for (const std::string& expected : bad.Expected)
+    {
+      EXPECT_NE(r.Errors.find(expected), std::string::npos)
+        << bad.Name << ": expected '" << expected << "' in: " << r.Errors;
+    }
+    EXPECT_EQ(r.Curves()->GetNumberOfCells(), 0) << bad.Name;
+    EXPECT_EQ(r.Mesh()->GetNumberOfCells(), 0) << bad.Name;
+  }
+  Read none(Scratch() / "does-not-exist.json");
+  EXPECT_NE(none.Errors.find("cannot open"), std::string::npos);
+}
+
+TEST(SceneReader, CanReadFileWantsPolygons)
+{
+  EXPECT_EQ(vtkBoolSurfSceneReader::CanReadFile(WriteScene("valid2.json", ValidScene).c_str()), 1);
+  EXPECT_EQ(vtkBoolSurfSceneReader::CanReadFile(
+              WriteScene("other.json", R"({"basis": [], "model": "x.ply"})").c_str()),
+    0);
+  EXPECT_EQ(vtkBoolSurfSceneReader::CanReadFile(WriteScene("bad2.json", "{").c_str()), 0);
+  EXPECT_EQ(vtkBoolSurfSceneReader::CanReadFile(nullptr), 0);
+}
+} // namespace
