@@ -1,6 +1,5 @@
 #include "vtkBoolSurf.h"
 
-#include "Arrangement.h"
 #include "vtkBoolSurfArrangementOutput.h"
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
@@ -48,26 +47,27 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
 
   // 1. surface (cached)
-  bool rebuilt = false;
-  const boolsurf::vtkSurfaceInput& surface =
-    this->Internal->Surface.Get(surfaceInput, boolsurf::SurfaceCheckOptions(), rebuilt);
-  for (const std::string& w : surface.Warnings)
+  std::vector<std::string> warnings, problems;
+  std::string error, warning;
+  const boolsurf::vtkSurfaceInput* surface =
+    this->Internal->Surface.GetUsable(surfaceInput, warnings, error);
+  for (const std::string& w : warnings)
   {
-    vtkWarningMacro(<< "Surface: " << w);
+    vtkWarningMacro(<< w);
   }
-  if (surface.Check.HasErrors())
+  if (!surface)
   {
-    vtkErrorMacro(<< "The surface is unfit for BoolSurf:\n" << surface.Check.ErrorSummary());
+    vtkErrorMacro(<< error);
     return 0;
   }
   this->UpdateProgress(0.05);
 
   // 2. tracing
-  std::vector<std::string> problems, notes;
   std::vector<boolsurf::TracedCurve> traced;
   boolsurf::TraceOptions traceOptions;
   traceOptions.Resolution = this->Resolution;
   traceOptions.ProjectionTolerance = this->ProjectionTolerance;
+  std::vector<std::string> notes;
   const bool ok = boolsurf::TraceControlCurves(
     this->Internal->Surface, curvesInput, traceOptions, nullptr, traced, nullptr, problems, notes);
   for (const std::string& n : notes)
@@ -76,12 +76,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   }
   if (!ok)
   {
-    std::string all;
-    for (const std::string& p : problems)
-    {
-      all += "\n  " + p;
-    }
-    vtkErrorMacro(<< "Cannot trace the curves:" << all);
+    vtkErrorMacro(<< "Cannot trace the curves:" << boolsurf::JoinLines(problems));
     return 0;
   }
   this->UpdateProgress(0.3);
@@ -91,17 +86,12 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   }
 
   // 3. arrangement
-  boolsurf::ArrangementOptions arrangementOptions;
-  arrangementOptions.Threads = this->NumberOfThreads;
-  boolsurf::Arrangement arrangement;
-  std::string error, warning;
-  if (!boolsurf::ComputeArrangement(*surface.Mesh, traced, arrangementOptions, arrangement, error))
+  vtkNew<vtkPolyData> refined;
+  if (!boolsurf::ArrangeCurves(*surface, traced, this->NumberOfThreads, refined, nullptr, error))
   {
-    vtkErrorMacro(<< "Arrangement failed: " << error);
+    vtkErrorMacro(<< error);
     return 0;
   }
-  vtkNew<vtkPolyData> refined;
-  boolsurf::WriteArrangementSurface(surface, traced, arrangement, refined);
   this->UpdateProgress(0.7);
   if (this->CheckAbort())
   {
@@ -130,12 +120,8 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   this->UpdateProgress(0.8);
 
   // 5. Boolean
-  boolsurf::BooleanRequest request;
-  request.Operation = static_cast<boolsurf::BooleanOperation>(this->Operation);
-  request.ShapeA = this->ShapeA;
-  request.ShapeB = this->ShapeB;
-  request.Expression = this->Expression;
-  request.Rule = static_cast<boolsurf::FillRule>(this->FillRule);
+  const boolsurf::BooleanRequest request = boolsurf::MakeBooleanRequest(
+    this->Operation, this->ShapeA, this->ShapeB, this->Expression, this->FillRule);
   if (!boolsurf::ComputeBoolean(labeled, fields, labels, request, region, boundary, error))
   {
     vtkErrorMacro(<< error);

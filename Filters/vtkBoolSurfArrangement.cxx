@@ -1,6 +1,5 @@
 #include "vtkBoolSurfArrangement.h"
 
-#include "Arrangement.h"
 #include "vtkBoolSurfArrangementOutput.h"
 #include "vtkBoolSurfSurfaceCache.h"
 #include "vtkBoolSurfTracedCurves.h"
@@ -53,28 +52,23 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* patches = vtkPolyData::GetData(outputVector, 1);
 
   this->UpdateProgress(0.0);
-  bool rebuilt = false;
-  const boolsurf::vtkSurfaceInput& surface =
-    this->Internal->Surface.Get(surfaceInput, boolsurf::SurfaceCheckOptions(), rebuilt);
-  for (const std::string& w : surface.Warnings)
+  std::vector<std::string> warnings, problems;
+  std::string error;
+  const boolsurf::vtkSurfaceInput* surface =
+    this->Internal->Surface.GetUsable(surfaceInput, warnings, error);
+  for (const std::string& w : warnings)
   {
-    vtkWarningMacro(<< "Surface: " << w);
+    vtkWarningMacro(<< w);
   }
-  if (surface.Check.HasErrors())
+  if (!surface)
   {
-    vtkErrorMacro(<< "The surface is unfit for BoolSurf:\n" << surface.Check.ErrorSummary());
+    vtkErrorMacro(<< error);
     return 0;
   }
   std::vector<boolsurf::TracedCurve> curves;
-  std::vector<std::string> problems;
-  if (!boolsurf::ReadTracedCurves(curvesInput, *surface.Mesh, curves, problems))
+  if (!boolsurf::ReadTracedCurves(curvesInput, *surface->Mesh, curves, problems))
   {
-    std::string all;
-    for (const std::string& p : problems)
-    {
-      all += "\n" + p;
-    }
-    vtkErrorMacro(<< "Invalid traced curves:" << all);
+    vtkErrorMacro(<< "Invalid traced curves:" << boolsurf::JoinLines(problems));
     return 0;
   }
   this->UpdateProgress(0.1);
@@ -82,23 +76,11 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
-
-  boolsurf::ArrangementOptions options;
-  options.Threads = this->NumberOfThreads;
-  boolsurf::Arrangement arrangement;
-  std::string error;
-  if (!boolsurf::ComputeArrangement(*surface.Mesh, curves, options, arrangement, error))
+  if (!boolsurf::ArrangeCurves(*surface, curves, this->NumberOfThreads, output, patches, error))
   {
-    vtkErrorMacro(<< "Arrangement failed: " << error);
+    vtkErrorMacro(<< error);
     return 0;
   }
-  this->UpdateProgress(0.8);
-  if (this->CheckAbort())
-  {
-    return 1;
-  }
-  boolsurf::WriteArrangementSurface(surface, curves, arrangement, output);
-  boolsurf::WriteArrangementPatches(arrangement, output, patches);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -157,6 +157,30 @@ std::vector<int> ReadInts(vtkFieldData* fd, const char* name, int comps = 1)
 } // namespace
 
 //------------------------------------------------------------------------------
+bool ArrangeCurves(const vtkSurfaceInput& surface,
+  const std::vector<TracedCurve>& curves,
+  int threads,
+  vtkPolyData* refined,
+  vtkPolyData* patches,
+  std::string& error)
+{
+  ArrangementOptions options;
+  options.Threads = threads;
+  Arrangement arrangement;
+  if (!ComputeArrangement(*surface.Mesh, curves, options, arrangement, error))
+  {
+    error = "Arrangement failed: " + error;
+    return false;
+  }
+  WriteArrangementSurface(surface, curves, arrangement, refined);
+  if (patches)
+  {
+    WriteArrangementPatches(arrangement, refined, patches);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void WriteArrangementSurface(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   const Arrangement& arr,

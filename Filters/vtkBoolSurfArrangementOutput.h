@@ -17,6 +17,15 @@ class vtkPolyData;
 namespace boolsurf
 {
 
+/// The arrangement stage: computes the arrangement of `curves` and writes port 0 (`refined`)
+/// and, when not null, port 1 (`patches`). False with a message naming the curve and point.
+bool ArrangeCurves(const vtkSurfaceInput& surface,
+  const std::vector<TracedCurve>& curves,
+  int threads,
+  vtkPolyData* refined,
+  vtkPolyData* patches,
+  std::string& error);
+
 /// Port 0: refined triangles, ArrangementCell/SourceTriangle, TriangleId/Barycentric, the
 /// input's arrays, and the cell graph, patches and zero-cell candidates as field data.
 void WriteArrangementSurface(const vtkSurfaceInput& surface,

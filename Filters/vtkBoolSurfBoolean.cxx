@@ -69,12 +69,8 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
     }
   }
   this->UpdateProgress(0.5);
-  boolsurf::BooleanRequest request;
-  request.Operation = static_cast<boolsurf::BooleanOperation>(this->Operation);
-  request.ShapeA = this->ShapeA;
-  request.ShapeB = this->ShapeB;
-  request.Expression = this->Expression;
-  request.Rule = static_cast<boolsurf::FillRule>(this->FillRule);
+  const boolsurf::BooleanRequest request = boolsurf::MakeBooleanRequest(
+    this->Operation, this->ShapeA, this->ShapeB, this->Expression, this->FillRule);
   if (!boolsurf::ComputeBoolean(labeled, fields, labels, request, region, boundary, error))
   {
     vtkErrorMacro(<< error);

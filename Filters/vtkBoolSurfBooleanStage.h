@@ -30,6 +30,22 @@ struct BooleanRequest
   FillRule Rule = FillRule::NonZero;
 };
 
+/// A request from the filters' integer properties (the enumerations' values).
+inline BooleanRequest MakeBooleanRequest(int operation,
+  int shapeA,
+  int shapeB,
+  const std::string& expression,
+  int fillRule)
+{
+  BooleanRequest request;
+  request.Operation = static_cast<BooleanOperation>(operation);
+  request.ShapeA = shapeA;
+  request.ShapeB = shapeB;
+  request.Expression = expression;
+  request.Rule = static_cast<FillRule>(fillRule);
+  return request;
+}
+
 /// The expression text of a request over `numberOfShapes` shapes, or false and a message
 /// (unknown shape ids, no shapes).
 bool ExpressionText(const BooleanRequest& request,

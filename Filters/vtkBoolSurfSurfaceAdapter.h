@@ -34,6 +34,17 @@ struct vtkSurfaceInput
   std::vector<std::string> Warnings;
 };
 
+/// Lines joined into one message, each on its own line after `indent`.
+inline std::string JoinLines(const std::vector<std::string>& lines, const char* indent = "  ")
+{
+  std::string all;
+  for (const std::string& line : lines)
+  {
+    all += "\n" + std::string(indent) + line;
+  }
+  return all;
+}
+
 /// Fills `out` from `input` (which may be null: reported as EmptyInput). Never throws.
 void ConvertSurface(vtkPolyData* input,
   vtkSurfaceInput& out,

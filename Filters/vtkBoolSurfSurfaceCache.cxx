@@ -32,6 +32,25 @@ const vtkSurfaceInput& vtkSurfaceCache::Get(vtkPolyData* input,
 }
 
 //------------------------------------------------------------------------------
+const vtkSurfaceInput* vtkSurfaceCache::GetUsable(vtkPolyData* input,
+  std::vector<std::string>& warnings,
+  std::string& error)
+{
+  bool rebuilt = false;
+  const vtkSurfaceInput& surface = this->Get(input, SurfaceCheckOptions(), rebuilt);
+  for (const std::string& w : surface.Warnings)
+  {
+    warnings.push_back("Surface: " + w);
+  }
+  if (surface.Check.HasErrors())
+  {
+    error = "The surface is unfit for BoolSurf:\n" + surface.Check.ErrorSummary();
+    return nullptr;
+  }
+  return &surface;
+}
+
+//------------------------------------------------------------------------------
 vtkStaticCellLocator* vtkSurfaceCache::GetLocator()
 {
   if (!this->Locator)

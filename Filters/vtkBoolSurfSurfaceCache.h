@@ -31,6 +31,12 @@ public:
   /// time or the options changed. `rebuilt` tells which happened.
   const vtkSurfaceInput& Get(vtkPolyData* input, const SurfaceCheckOptions& options, bool& rebuilt);
 
+  /// Get() for the stages that need a valid surface: conversion notes go to `warnings`; when
+  /// the surface is unfit, returns null with every problem in `error`.
+  const vtkSurfaceInput* GetUsable(vtkPolyData* input,
+    std::vector<std::string>& warnings,
+    std::string& error);
+
   /// The result of the last Get().
   const vtkSurfaceInput& GetCurrent() const { return this->Surface; }
 

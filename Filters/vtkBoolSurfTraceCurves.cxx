@@ -43,17 +43,15 @@ int vtkBoolSurfTraceCurves::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* curvesInput = vtkPolyData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
 
-  bool rebuilt = false;
-  const boolsurf::vtkSurfaceInput& surface =
-    this->Internal->Surface.Get(surfaceInput, boolsurf::SurfaceCheckOptions(), rebuilt);
-  for (const std::string& w : surface.Warnings)
+  std::vector<std::string> warnings, problems, notes;
+  std::string error;
+  if (!this->Internal->Surface.GetUsable(surfaceInput, warnings, error))
   {
-    vtkWarningMacro(<< "Surface: " << w);
+    problems.push_back(error);
   }
-  std::vector<std::string> problems, notes;
-  if (surface.Check.HasErrors())
+  for (const std::string& w : warnings)
   {
-    problems.push_back("the surface is unfit for BoolSurf: " + surface.Check.ErrorSummary());
+    vtkWarningMacro(<< w);
   }
   std::vector<boolsurf::TracedCurve> traced;
   boolsurf::TraceOptions options;
@@ -73,14 +71,12 @@ int vtkBoolSurfTraceCurves::RequestData(vtkInformation* vtkNotUsed(request),
     output->Initialize();
     vtkNew<vtkStringArray> errors;
     errors->SetName("TraceErrors");
-    std::string all;
     for (const std::string& p : problems)
     {
       errors->InsertNextValue(p);
-      all += "\n  " + p;
     }
     output->GetFieldData()->AddArray(errors);
-    vtkErrorMacro(<< "Cannot trace the curves:" << all);
+    vtkErrorMacro(<< "Cannot trace the curves:" << boolsurf::JoinLines(problems));
     return 1; // the empty output with TraceErrors is the answer
   }
   this->UpdateProgress(1.0);
