@@ -4,7 +4,9 @@
 //    chords (the tracing stage's exact output on a flat mesh);
 //  * Icosphere8: level-8 icosphere (1.3M triangles), great and small circles (plane sections);
 //  * igea_1m / 3torus_800k from the shared data, closed geodesic polygons traced by
-//    CurveTracer through random nearby points (skipped when the files are missing).
+//    CurveTracer through random nearby points (skipped when the files are missing);
+//  * BoolSurf reference scenes (../shared/data/boolsurf-scenes) on their 5k-200k meshes;
+//  * EditTime*: the same curves (an icosphere's plane sections) on a ~100k and a ~1M mesh.
 // Curve construction is outside the timed loop. The argument is the thread count; per-stage
 // milliseconds are reported as counters (averages over iterations, and minima: min_*).
 #include "Arrangement.h"
@@ -14,9 +16,11 @@
 #include "SyntheticCurves.h"
 
 #include <benchmark/benchmark.h>
+#include <nlohmann/json.hpp> // header-only (system include)
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <random>
@@ -41,10 +45,10 @@ void CountPoints(Scene& s)
     s.CurvePoints += c.Points.size();
 }
 
-Scene MakeFlatScene(int polygons, int sides)
+Scene MakeFlatScene(int polygons, int sides, int cells = 708)
 {
   Scene s;
-  const MeshData d = MakeFlatSquare(708, 1.0, 0.3, 17); // 1,002,528 triangles
+  const MeshData d = MakeFlatSquare(cells, 1.0, 0.3, 17); // 708: 1,002,528 triangles
   s.Mesh.reset(new TriangleMesh(d.Positions, d.Triangles));
   FlatPolygonTracer tracer(*s.Mesh);
   std::mt19937 rng(123);
@@ -144,6 +148,53 @@ Scene MakeTracedScene(const std::string& name, int polygons)
   return s;
 }
 
+// A BoolSurf reference scene (../shared/data/boolsurf-scenes; see TestReferenceScenes.cxx):
+// its geodesic polygons traced through the control points.
+Scene MakeReferenceScene(const std::string& file, const std::string& meshName)
+{
+  Scene s;
+  const std::string root = std::string(BOOLSURF_SHARED_DATA_DIR);
+  MeshData d;
+  if (!ReadPly(root + "/meshes/" + meshName, d, s.Error))
+    return s;
+  s.Mesh.reset(new TriangleMesh(d.Positions, d.Triangles));
+  std::ifstream in(root + "/boolsurf-scenes/" + file);
+  nlohmann::json scene;
+  try
+  {
+    in >> scene;
+  }
+  catch (const std::exception& e)
+  {
+    s.Error = file + ": " + e.what();
+    s.Mesh.reset();
+    return s;
+  }
+  std::vector<SurfacePoint> points;
+  for (const nlohmann::json& p : scene.at("points"))
+    points.push_back(
+      { p.at("face").get<int>(), p.at("uv")[0].get<double>(), p.at("uv")[1].get<double>() });
+  CurveTracer tracer(*s.Mesh);
+  const nlohmann::json& polygons = scene.at("polygons");
+  for (size_t i = 0; i < polygons.size(); ++i)
+  {
+    std::vector<SurfacePoint> control;
+    for (const nlohmann::json& k : polygons[i])
+      control.push_back(points.at(k.get<size_t>()));
+    const bool closed = !scene.contains("are_closed") || i >= scene.at("are_closed").size() ||
+      scene.at("are_closed")[i].get<bool>();
+    CurveTrace trace;
+    if (control.size() >= 2 &&
+      tracer.Trace(control, CurveType::GeodesicPolygon, closed, trace, static_cast<int>(i)))
+    {
+      trace.Curve.ShapeId = static_cast<int>(i);
+      s.Curves.push_back(trace.Curve);
+    }
+  }
+  CountPoints(s);
+  return s;
+}
+
 Scene& GetScene(const std::string& key)
 {
   static std::map<std::string, Scene> cache;
@@ -153,8 +204,15 @@ Scene& GetScene(const std::string& key)
   Scene& s = cache[key];
   if (key == "flat")
     s = MakeFlatScene(40, 12);
+  else if (key == "flat100k")
+    s = MakeFlatScene(40, 12, 224); // 100,352 triangles, the same polygons
   else if (key == "sphere")
     s = MakeSphereScene(30);
+  else if (key.find(".json") != std::string::npos)
+  {
+    const size_t bar = key.find('|');
+    s = MakeReferenceScene(key.substr(0, bar), key.substr(bar + 1));
+  }
   else
     s = MakeTracedScene(key, 40);
   return s;
@@ -223,6 +281,11 @@ BENCHMARK_CAPTURE(RunArrangement, FlatSquare1M, std::string("flat"))
   ->Arg(1)
   ->Arg(2)
   ->Unit(benchmark::kMillisecond);
+// Edit time: the same 40 polygons on a 100k and on the 1M square (FlatSquare1M).
+BENCHMARK_CAPTURE(RunArrangement, EditTimeFlatSquare100k, std::string("flat100k"))
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(RunArrangement, Icosphere8, std::string("sphere"))
   ->Arg(1)
   ->Arg(2)
@@ -232,6 +295,42 @@ BENCHMARK_CAPTURE(RunArrangement, Igea1M, std::string("igea_1m.ply"))
   ->Arg(2)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(RunArrangement, ThreeTorus800k, std::string("3torus_800k.ply"))
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond);
+
+// BoolSurf reference scenes on the largest available meshes ("scene|mesh").
+BENCHMARK_CAPTURE(RunArrangement, SceneBimba100k, std::string("final_tests/bimba.json|bimba.ply"))
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(RunArrangement,
+  SceneBunny2_144k,
+  std::string("tests/bunny2.json|bunny_boolsurf.ply"))
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(RunArrangement,
+  SceneTritorus13Loops200k,
+  std::string("tests/examples/tritorus-13loops.json|3torus_200k.ply"))
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(RunArrangement,
+  SceneSpiral3Torus200k,
+  std::string("tests/3torus-spiral-rev.json|3torus_200k.ply"))
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(RunArrangement,
+  SceneBitorusHomotopy5_200k,
+  std::string("tests/bitorus-homotopy5.json|eight_200k.ply"))
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(RunArrangement,
+  SceneSphere2,
+  std::string("tests/sphere2.json|sphere_complete.ply"))
   ->Arg(1)
   ->Arg(2)
   ->Unit(benchmark::kMillisecond);
