@@ -54,8 +54,22 @@ MeshData MakeFlatSquare(int n, double size, double jitter, std::uint32_t seed)
     for (int i = 0; i < n; ++i)
     {
       const int a = j * (n + 1) + i;
-      const bool ac = jitter > 0 ? coin(rng) : true;
-      AddQuad(m, a, a + 1, a + n + 2, a + n + 1, ac);
+      const int q[4] = { a, a + 1, a + n + 2, a + n + 1 };
+      bool ac = jitter > 0 ? coin(rng) : true;
+      // Jitter can make a cell non-convex; then only the diagonal through its reflex corner
+      // gives two counter-clockwise triangles (the other would fold the mesh over itself).
+      auto ccw = [&](int x, int y, int z)
+      {
+        const Vec3 &p = m.Positions[x], &r = m.Positions[y], &t = m.Positions[z];
+        return (r.x - p.x) * (t.y - p.y) - (t.x - p.x) * (r.y - p.y) > 0;
+      };
+      const bool acValid = ccw(q[0], q[1], q[2]) && ccw(q[0], q[2], q[3]);
+      const bool bdValid = ccw(q[0], q[1], q[3]) && ccw(q[1], q[2], q[3]);
+      if (ac ? !acValid : !bdValid)
+      {
+        ac = !ac;
+      }
+      AddQuad(m, q[0], q[1], q[2], q[3], ac);
     }
   }
   return m;

@@ -21,7 +21,8 @@ struct MeshData
 
 /// Square [0,size]^2 in the plane z = 0, n x n cells, normals +z. With jitter > 0 the interior
 /// vertices move by up to jitter * cell size and each cell's diagonal is chosen at random
-/// (seeded), giving an irregular triangulation of the same square.
+/// (seeded) among those that keep every triangle counter-clockwise, giving an irregular
+/// triangulation of the same square that never folds over itself.
 MeshData MakeFlatSquare(int n, double size = 1.0, double jitter = 0.0, std::uint32_t seed = 1);
 
 /// Icosahedron subdivided `levels` times, vertices projected to the sphere of `radius`;

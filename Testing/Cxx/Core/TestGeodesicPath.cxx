@@ -402,50 +402,6 @@ int CountInvertedTriangles(const MeshData& d)
   return inverted;
 }
 
-/// MakeFlatSquare with every fold removed. A jittered quad can come out non-convex, and when
-/// the coin picks the diagonal through its convex corners one triangle is inverted: the mesh
-/// then folds over itself. Its edge lengths describe a surface that is NOT flat (the fold
-/// vertices have cone angles above 2 pi), so its geodesics are not straight in the plane;
-/// MakeFlatSquare(20, 1, 0.3, 4) is such a mesh. The other diagonal (through the reflex
-/// corner) always gives two positive triangles; `repaired` counts the quads flipped.
-MeshData FlatSquareWithoutFolds(int n,
-  double size,
-  double jitter,
-  std::uint32_t seed,
-  int* repaired = nullptr)
-{
-  MeshData d = MakeFlatSquare(n, size, jitter, seed);
-  int flipped = 0;
-  for (size_t q = 0; q + 1 < d.Triangles.size(); q += 2)
-  {
-    Triangle& t0 = d.Triangles[q];
-    Triangle& t1 = d.Triangles[q + 1];
-    if (SignedArea2(d, t0) > 0.0 && SignedArea2(d, t1) > 0.0)
-    {
-      continue;
-    }
-    // AddQuad(a, b, c, d): {a, b, c}, {a, c, d} or {a, b, d}, {b, c, d}.
-    if (t1[0] == t0[0])
-    {
-      const int a = t0[0], b = t0[1], c = t0[2], e = t1[2];
-      t0 = { a, b, e };
-      t1 = { b, c, e };
-    }
-    else
-    {
-      const int a = t0[0], b = t0[1], e = t0[2], c = t1[1];
-      t0 = { a, b, c };
-      t1 = { a, c, e };
-    }
-    ++flipped;
-  }
-  if (repaired)
-  {
-    *repaired = flipped;
-  }
-  return d;
-}
-
 /// Intrinsic straightness, independent of the solver and valid on any mesh: at every Edge
 /// point the incoming and outgoing segments, laid flat across that edge, are collinear and
 /// keep going forward.
@@ -550,14 +506,11 @@ TEST(GeodesicPath, ManyFlatJitteredSquaresAreStraight)
 {
   // Random pairs anywhere (vertex, edge and face points, any distance) on several grid sizes
   // and jitter seeds: every path is the straight segment, on every mesh.
-  int folds = 0;
   for (int n : { 2, 3, 5, 8, 13, 20, 31 })
   {
     for (std::uint32_t seed = 1; seed <= 8; ++seed)
     {
-      int repaired = 0;
-      const MeshData d = FlatSquareWithoutFolds(n, 1.0, 0.3, seed, &repaired);
-      folds += repaired;
+      const MeshData d = MakeFlatSquare(n, 1.0, 0.3, seed);
       ASSERT_EQ(CountInvertedTriangles(d), 0) << "n " << n << " seed " << seed;
       const TriangleMesh mesh = ToMesh(d);
       GeodesicPathSolver solver(mesh);
@@ -578,50 +531,27 @@ TEST(GeodesicPath, ManyFlatJitteredSquaresAreStraight)
       }
     }
   }
-  EXPECT_GT(folds, 0) << "the repaired generator is exercised (MakeFlatSquare(20, 1, 0.3, 4))";
 }
 
 TEST(GeodesicPath, FoldedFlatSquareRegression)
 {
   // Reported as "a path on a flat mesh is 1.45e-4 too long": MakeFlatSquare(20, 1, 0.3, 4)
-  // has a non-convex quad split along the wrong diagonal, so triangle (118, 119, 139) is
-  // inverted (a 8e-6 sliver) and the mesh folds. Intrinsically that surface is not flat: the
-  // path that crosses the sliver is straight in the unfolded strip (a true geodesic of the
-  // surface the edge lengths describe) and only looks bent in the plane. The solver is right
-  // on both meshes; the same points on the fold-free triangulation give the straight segment.
+  // used to split a non-convex jittered cell along the wrong diagonal, leaving an inverted
+  // sliver, so the mesh folded and was intrinsically not flat (the solver's path was the
+  // geodesic of that folded surface). The generator now splits such cells through their
+  // reflex corner: the same points give the exact straight segment.
+  const MeshData d = MakeFlatSquare(20, 1.0, 0.3, 4);
+  ASSERT_EQ(CountInvertedTriangles(d), 0);
+  const TriangleMesh mesh = ToMesh(d);
+  GeodesicPathSolver solver(mesh);
+  GeodesicPath path;
+  const CanonicalPoint a = LocateFlat(mesh, 0.1, 0.15), b = LocateFlat(mesh, 0.8, 0.3);
+  ASSERT_TRUE(solver.Compute(a, b, path).Ok);
+  ExpectStraight(mesh, a, b, path);
   const double straight = std::hypot(0.7, 0.15);
-  {
-    const MeshData d = MakeFlatSquare(20, 1.0, 0.3, 4);
-    const TriangleMesh mesh = ToMesh(d);
-    GeodesicPathSolver solver(mesh);
-    GeodesicPath path;
-    const CanonicalPoint a = LocateFlat(mesh, 0.1, 0.15), b = LocateFlat(mesh, 0.8, 0.3);
-    ASSERT_TRUE(solver.Compute(a, b, path).Ok);
-    ExpectConsecutivePointsShareATriangle(mesh, path);
-    ExpectStraightAcrossEdges(mesh, path);
-    ExpectEdgePointsAwayFromEnds(path);
-    ExpectLocallyShortest(mesh, path);
-    EXPECT_LE(path.Length, EdgePathLength(mesh, a, b) * (1 + 1e-12));
-    if (CountInvertedTriangles(d) > 0)
-    {
-      // Still folded: the geodesic cannot take the planar shortcut through the fold.
-      EXPECT_GT(path.Length, straight);
-    }
-  }
-  {
-    int repaired = 0;
-    const MeshData d = FlatSquareWithoutFolds(20, 1.0, 0.3, 4, &repaired);
-    ASSERT_EQ(CountInvertedTriangles(d), 0);
-    const TriangleMesh mesh = ToMesh(d);
-    GeodesicPathSolver solver(mesh);
-    GeodesicPath path;
-    const CanonicalPoint a = LocateFlat(mesh, 0.1, 0.15), b = LocateFlat(mesh, 0.8, 0.3);
-    ASSERT_TRUE(solver.Compute(a, b, path).Ok);
-    ExpectStraight(mesh, a, b, path);
-    EXPECT_NEAR(path.Length, straight, 1e-12 * straight);
-    ExpectStraightAcrossEdges(mesh, path);
-    ExpectEdgePointsAwayFromEnds(path);
-  }
+  EXPECT_NEAR(path.Length, straight, 1e-12 * straight);
+  ExpectStraightAcrossEdges(mesh, path);
+  ExpectEdgePointsAwayFromEnds(path);
 }
 
 TEST(GeodesicPath, AlongGridLinesThroughVertices)

@@ -26,3 +26,25 @@ TEST(TriangleMesh, FlatSquareAdjacency)
   EXPECT_TRUE(mesh.GetMisorientedEdges().empty());
   EXPECT_TRUE(mesh.GetNonManifoldEdges().empty());
 }
+
+// Jittered squares stay flat triangulations: no triangle folds over (cells made non-convex
+// by the jitter are split through their reflex corner).
+TEST(ProceduralMeshes, JitteredFlatSquaresNeverFold)
+{
+  for (int n : { 2, 5, 13, 20, 48 })
+  {
+    for (std::uint32_t seed = 1; seed <= 12; ++seed)
+    {
+      MeshData d = MakeFlatSquare(n, 1.0, 0.4, seed);
+      double area = 0;
+      for (const auto& t : d.Triangles)
+      {
+        const Vec3 a = d.Positions[t[0]], b = d.Positions[t[1]], c = d.Positions[t[2]];
+        const double twice = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+        EXPECT_GT(twice, 0.0) << "n " << n << " seed " << seed;
+        area += 0.5 * twice;
+      }
+      EXPECT_NEAR(area, 1.0, 1e-12);
+    }
+  }
+}
