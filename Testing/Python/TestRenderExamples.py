@@ -1,0 +1,44 @@
+"""pvbatch under Xvfb: the examples a new user runs first (Examples/boolean_genus2.py and
+Examples/variadic_xor.py) write a readable .vtp region and a non-trivial .png."""
+import os
+import shutil
+import subprocess
+import tempfile
+
+from paraview.simple import *  # noqa: F401,F403
+from paraview import servermanager as sm
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+source_dir = os.environ["BOOLSURF_SOURCE_DIR"]
+out = tempfile.mkdtemp(prefix="boolsurf-examples-")
+pvbatch = shutil.which("pvbatch") or "pvbatch"
+expected = {
+    "boolean_genus2.py": ("genus2_boolean", 0.03, 0.08),  # (S0 ^ S1) | band: 0.0516
+    "variadic_xor.py": ("bunny_xor", 3.0, 10.0),  # odd coverage of six discs: 6.23
+}
+for script, (name, low, high) in expected.items():
+    subprocess.check_call([pvbatch, os.path.join(source_dir, "Examples", script), "--output", out])
+    vtp, png = os.path.join(out, name + ".vtp"), os.path.join(out, name + ".png")
+    reader = XMLPolyDataReader(FileName=[vtp])
+    reader.UpdatePipeline()
+    region = sm.Fetch(reader)
+    assert region.GetNumberOfCells() > 50, (script, region.GetNumberOfCells())
+    assert region.GetCellData().GetArray("Labels") is not None
+    from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
+    sizes = vtkCellSizeFilter()
+    sizes.SetInputData(region)
+    sizes.Update()
+    a = sizes.GetOutput().GetCellData().GetArray("Area")
+    total = sum(a.GetValue(i) for i in range(a.GetNumberOfTuples()))
+    assert low < total < high, (script, total)
+    image = vtkPNGReader()
+    image.SetFileName(png)
+    image.Update()
+    dims = image.GetOutput().GetDimensions()
+    assert dims[0] == 1024 and dims[1] == 768, dims
+    scalars = image.GetOutput().GetPointData().GetScalars()
+    # Non-trivial: more than a blank background (orange region and gray surface present).
+    colors = set(scalars.GetTuple(i)[:3] for i in range(0, scalars.GetNumberOfTuples(), 97))
+    assert len(colors) > 20, (png, len(colors))
+    print("%s: %d triangles, area %.4f, %s" % (script, region.GetNumberOfCells(), total, png))
+print("EXAMPLES_OK")
