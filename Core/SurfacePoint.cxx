@@ -57,9 +57,17 @@ CanonicalPoint Canonicalize(const TriangleMesh& mesh, SurfacePoint p, double sna
     c.T = mesh.GetEdgeVertices(e)[0] == a ? s : 1.0 - s;
     return c;
   }
-  const double sum = w[0] + w[1] + w[2];
   c.Location = PointLocation::Face;
   c.Id = p.Triangle;
+  if (w[1] == p.U && w[2] == p.V)
+  {
+    // Nothing was clamped: keep the user's numbers bit for bit (a renormalization by a sum
+    // that rounds to 1 - 1 ulp would move them).
+    c.U = p.U;
+    c.V = p.V;
+    return c;
+  }
+  const double sum = w[0] + w[1] + w[2];
   c.U = w[1] / sum;
   c.V = w[2] / sum;
   return c;

@@ -117,13 +117,25 @@ void ReadControlCurves(vtkPolyData* curves,
       }
       curve.Type = static_cast<CurveType>(type);
       curve.Closed = polygon;
-      // A polyline whose last point repeats its first (same id or same position) is closed.
+      // A polyline whose last point repeats its first (same id, or same point: the same
+      // surface point when given exactly, else the same coordinates) is closed.
       if (!polygon && n >= 3)
       {
-        double p[3], q[3];
-        curves->GetPoint(ids[0], p);
-        curves->GetPoint(ids[n - 1], q);
-        if (ids[0] == ids[n - 1] || (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]))
+        bool same = ids[0] == ids[n - 1];
+        if (!same && exact)
+        {
+          same = triangleIds->GetComponent(ids[0], 0) == triangleIds->GetComponent(ids[n - 1], 0) &&
+            barycentric->GetComponent(ids[0], 0) == barycentric->GetComponent(ids[n - 1], 0) &&
+            barycentric->GetComponent(ids[0], 1) == barycentric->GetComponent(ids[n - 1], 1);
+        }
+        else if (!same)
+        {
+          double p[3], q[3];
+          curves->GetPoint(ids[0], p);
+          curves->GetPoint(ids[n - 1], q);
+          same = p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
+        }
+        if (same)
         {
           curve.Closed = true;
           --n;

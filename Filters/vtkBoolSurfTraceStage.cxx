@@ -69,16 +69,17 @@ void WriteTraces(const TriangleMesh& mesh,
       const CanonicalPoint& p = trace.Curve.Points[i];
       const Vec3 x = PositionOf(mesh, p);
       points->InsertNextPoint(x.x, x.y, x.z);
-      const SurfacePoint sp = ToSurfacePoint(mesh, p);
+      // Control points keep the surface point the user gave, bit for bit (a point on an edge
+      // or vertex has several triangle forms; the user's stays theirs).
+      const int k = trace.ControlPoint[i];
+      const bool isControl = k >= 0 && k < static_cast<int>(control.Points.size());
+      const SurfacePoint sp = isControl ? control.Points[k] : ToSurfacePoint(mesh, p);
       triangleId->InsertNextValue(sp.Triangle);
       const double uv[2] = { sp.U, sp.V };
       barycentric->InsertNextTuple(uv);
       parameter->InsertNextValue(trace.Parameter[i]);
       segment->InsertNextValue(trace.Segment[i]);
-      const int k = trace.ControlPoint[i];
-      controlPoint->InsertNextValue(k >= 0 && k < static_cast<int>(control.PointIds.size())
-          ? static_cast<int>(control.PointIds[k])
-          : -1);
+      controlPoint->InsertNextValue(isControl ? static_cast<int>(control.PointIds[k]) : -1);
     }
     const bool isClosed = trace.Curve.Closed && n > 1;
     lines->InsertNextCell(static_cast<vtkIdType>(n + (isClosed ? 1 : 0)));

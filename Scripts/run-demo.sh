@@ -7,4 +7,4 @@ bash Scripts/setup.sh
 out="${1:-out}"
 mkdir -p "$out"
 export BOOLSURF_PLUGIN="$PWD/build/lib/paraview-5.11/plugins/BoolSurf/BoolSurf.so"
-xvfb-run -a -s "-screen 0 1280x1024x24" pvbatch Examples/demo.py --output "$out"
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" pvbatch Examples/demo.py --output "$out"

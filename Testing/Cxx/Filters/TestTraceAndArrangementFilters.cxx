@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <string>
 
 using testutils::ControlPolygon;
@@ -128,6 +129,66 @@ TEST(TraceCurvesFilter, ExactSurfacePointsAreUsedAsGiven)
   EXPECT_EQ(outTri->GetComponent(last, 0), 31);
   EXPECT_EQ(outBary->GetComponent(last, 0), 0.5);
   EXPECT_EQ(outBary->GetComponent(last, 1), 0.25);
+}
+
+// Control points given as surface points come back bit for bit at their ControlPointId, for
+// arbitrary doubles, points on edges (v = 1 - u) and on vertices.
+TEST(TraceCurvesFilter, ControlPointsRoundTripExactly)
+{
+  auto mesh = testutils::ToPolyData(boolsurf::MakeFlatSquare(12, 1.0, 0.3, 5));
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> triangle(0, static_cast<int>(mesh->GetNumberOfCells()) - 1);
+  const int n = 12;
+  ControlPolygon c;
+  c.Closed = false;
+  vtkNew<vtkIdTypeArray> tri;
+  tri->SetName("TriangleId");
+  vtkNew<vtkDoubleArray> bary;
+  bary->SetName("Barycentric");
+  bary->SetNumberOfComponents(2);
+  for (int i = 0; i < n; ++i)
+  {
+    double u = unit(rng), v = unit(rng) * (1 - u);
+    if (i % 4 == 1)
+    {
+      v = 1 - u; // on the edge opposite corner 0
+    }
+    else if (i % 4 == 2)
+    {
+      u = 0; // on the edge from corner 0 to corner 2
+    }
+    else if (i % 4 == 3)
+    {
+      u = 1; // on corner 1
+      v = 0;
+    }
+    c.Points.push_back({ 0, 0, 0 });
+    tri->InsertNextValue(triangle(rng));
+    bary->InsertNextTuple2(u, v);
+  }
+  auto curves = testutils::ToCurves({ c });
+  curves->GetPointData()->AddArray(tri);
+  curves->GetPointData()->AddArray(bary);
+  auto out = Trace(mesh, curves);
+  ASSERT_EQ(TraceErrors(out), "");
+  auto* outTri = out->GetPointData()->GetArray("TriangleId");
+  auto* outBary = out->GetPointData()->GetArray("Barycentric");
+  auto* control = out->GetPointData()->GetArray("ControlPointId");
+  int found = 0;
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+  {
+    const int k = static_cast<int>(control->GetComponent(p, 0));
+    if (k < 0)
+    {
+      continue;
+    }
+    ++found;
+    EXPECT_EQ(outTri->GetComponent(p, 0), tri->GetValue(k)) << "control point " << k;
+    EXPECT_EQ(outBary->GetComponent(p, 0), bary->GetComponent(k, 0)) << "control point " << k;
+    EXPECT_EQ(outBary->GetComponent(p, 1), bary->GetComponent(k, 1)) << "control point " << k;
+  }
+  EXPECT_GE(found, n);
 }
 
 TEST(TraceCurvesFilter, BadInputsAreNamed)
