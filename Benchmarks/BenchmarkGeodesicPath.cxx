@@ -22,7 +22,7 @@ namespace
 struct LoadedMesh
 {
   std::unique_ptr<TriangleMesh> Mesh;
-  std::unique_ptr<GeodesicPathSolver> Solver;
+  std::unique_ptr<GeodesicPathSolver> Solver, PlainSolver; // ALT / straight-line bound only
   std::vector<std::pair<CanonicalPoint, CanonicalPoint>> ShortPairs, LongPairs;
   std::string Error;
 };
@@ -55,6 +55,9 @@ LoadedMesh& Load(const std::string& name)
   }
   m.Mesh = std::make_unique<TriangleMesh>(std::move(data.Positions), std::move(data.Triangles));
   m.Solver = std::make_unique<GeodesicPathSolver>(*m.Mesh);
+  m.Solver->PrepareLandmarks(); // one-time cost, reported as landmark_setup_s
+  m.PlainSolver = std::make_unique<GeodesicPathSolver>(*m.Mesh);
+  m.PlainSolver->SetNumberOfLandmarks(0);
   const TriangleMesh& mesh = *m.Mesh;
   const int nt = mesh.GetNumberOfTriangles();
   Vec3 lo = mesh.GetPosition(0), hi = lo;
@@ -119,7 +122,8 @@ LoadedMesh& Load(const std::string& name)
 void BenchmarkPaths(benchmark::State& state,
   const std::string& name,
   bool longPaths,
-  bool edgePathStrip = true)
+  bool edgePathStrip = true,
+  bool landmarks = true)
 {
   LoadedMesh& m = Load(name);
   if (!m.Mesh)
@@ -128,21 +132,22 @@ void BenchmarkPaths(benchmark::State& state,
     return;
   }
   const auto& pairs = longPaths ? m.LongPairs : m.ShortPairs;
-  m.Solver->SetUseEdgePathStrip(edgePathStrip);
+  GeodesicPathSolver& solver = landmarks ? *m.Solver : *m.PlainSolver;
+  solver.SetUseEdgePathStrip(edgePathStrip);
   GeodesicPath path;
   size_t i = 0;
   double settled = 0, expanded = 0, strip = 0, rounds = 0, length = 0, ratio = 0;
   for (auto _ : state)
   {
     const auto& pair = pairs[i++ % pairs.size()];
-    const TraceStatus status = m.Solver->Compute(pair.first, pair.second, path);
+    const TraceStatus status = solver.Compute(pair.first, pair.second, path);
     if (!status)
     {
       state.SkipWithError(status.Message.c_str());
       return;
     }
     benchmark::DoNotOptimize(path.Points.data());
-    const GeodesicPathStatistics& s = m.Solver->GetLastStatistics();
+    const GeodesicPathStatistics& s = solver.GetLastStatistics();
     settled += s.SettledVertices;
     expanded += s.ExpandedTriangles;
     ratio += s.EdgePathLength > 0 ? path.Length / s.EdgePathLength : 0.0;
@@ -158,7 +163,9 @@ void BenchmarkPaths(benchmark::State& state,
   state.counters["strip"] = strip / n;
   state.counters["rounds"] = rounds / n;
   state.counters["points"] = length / n;
-  m.Solver->SetUseEdgePathStrip(true);
+  state.counters["landmark_setup_s"] = solver.GetEdgeSearch().GetLandmarkBuildSeconds();
+  state.counters["landmark_MB"] = solver.GetEdgeSearch().GetLandmarkMemory() / 1048576.0;
+  solver.SetUseEdgePathStrip(true);
 }
 } // namespace
 
@@ -169,6 +176,21 @@ BENCHMARK_CAPTURE(BenchmarkPaths, igea_1m_long, std::string("igea_1m.ply"), true
 BENCHMARK_CAPTURE(BenchmarkPaths, torus3_800k_short, std::string("3torus_800k.ply"), false)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BenchmarkPaths, torus3_800k_long, std::string("3torus_800k.ply"), true)
+  ->Unit(benchmark::kMillisecond);
+// Straight-line bound only (no landmarks), for comparison.
+BENCHMARK_CAPTURE(BenchmarkPaths,
+  igea_1m_long_no_alt,
+  std::string("igea_1m.ply"),
+  true,
+  true,
+  false)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BenchmarkPaths,
+  torus3_800k_long_no_alt,
+  std::string("3torus_800k.ply"),
+  true,
+  true,
+  false)
   ->Unit(benchmark::kMillisecond);
 // Greedy dual A* strip (weight 2), the previous default, for comparison.
 BENCHMARK_CAPTURE(BenchmarkPaths, igea_1m_long_dual_strip, std::string("igea_1m.ply"), true, false)

@@ -1,11 +1,70 @@
 #include "EdgeGraphSearch.h"
 
 #include <algorithm>
+#include <cmath>
+#include <ctime>
 #include <functional>
 #include <limits>
 
 namespace boolsurf
 {
+namespace
+{
+// 4-ary min-heap of (key, vertex): half the depth of a binary heap, and the four children of a
+// node share a cache line, so a pop costs fewer misses.
+using Entry = std::pair<double, int>;
+void HeapPush(std::vector<Entry>& heap, Entry e)
+{
+  std::size_t i = heap.size();
+  heap.push_back(e);
+  while (i > 0)
+  {
+    const std::size_t parent = (i - 1) / 4;
+    if (!(e.first < heap[parent].first))
+    {
+      break;
+    }
+    heap[i] = heap[parent];
+    i = parent;
+  }
+  heap[i] = e;
+}
+void HeapPop(std::vector<Entry>& heap)
+{
+  const Entry e = heap.back();
+  heap.pop_back();
+  const std::size_t n = heap.size();
+  if (n == 0)
+  {
+    return;
+  }
+  std::size_t i = 0;
+  for (;;)
+  {
+    const std::size_t first = 4 * i + 1;
+    if (first >= n)
+    {
+      break;
+    }
+    std::size_t best = first;
+    const std::size_t last = std::min(first + 4, n);
+    for (std::size_t c = first + 1; c < last; ++c)
+    {
+      if (heap[c].first < heap[best].first)
+      {
+        best = c;
+      }
+    }
+    if (!(heap[best].first < e.first))
+    {
+      break;
+    }
+    heap[i] = heap[best];
+    i = best;
+  }
+  heap[i] = e;
+}
+} // namespace
 
 //------------------------------------------------------------------------------
 EdgeGraphSearch::EdgeGraphSearch(const TriangleMesh& mesh)
@@ -90,6 +149,148 @@ EdgeGraphSearch::EdgeGraphSearch(const TriangleMesh& mesh)
 }
 
 //------------------------------------------------------------------------------
+void EdgeGraphSearch::SetNumberOfLandmarks(int n)
+{
+  n = std::max(0, n);
+  if (n != this->LandmarkCount)
+  {
+    this->LandmarkCount = n;
+    this->Landmarks.clear();
+    this->Landmarks.shrink_to_fit();
+    this->LandmarkSeconds = 0;
+    this->SettledSinceStart = 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void EdgeGraphSearch::LandmarkDistances(const std::vector<int>& sources,
+  std::vector<float>& distance)
+{
+  const float infinity = std::numeric_limits<float>::infinity();
+  distance.assign(this->Nodes.size(), infinity);
+  std::vector<Entry> heap;
+  for (int s : sources)
+  {
+    distance[s] = 0.0f;
+    HeapPush(heap, { 0.0, s });
+  }
+  while (!heap.empty())
+  {
+    const int u = heap.front().second;
+    const float du = static_cast<float>(heap.front().first);
+    HeapPop(heap);
+    if (du > distance[u])
+    {
+      continue;
+    }
+    for (int i = this->Offsets[u], end = this->Offsets[u + 1]; i < end; ++i)
+    {
+      const int w = this->Neighbors[i];
+      // Rounded down: the stored value never exceeds d(u) + |uw|, so the table is exactly
+      // 1-Lipschitz along edges (what keeps the potentials consistent), and sums never drop
+      // below d(u), so the search stays monotone.
+      const double sum = static_cast<double>(du) + this->EdgeCosts[i];
+      float d = static_cast<float>(sum);
+      if (static_cast<double>(d) > sum)
+      {
+        d = std::nextafter(d, -infinity);
+      }
+      if (d < distance[w])
+      {
+        distance[w] = d;
+        HeapPush(heap, { d, w });
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Farthest-point landmarks, per connected component: the first is the vertex farthest from an
+// arbitrary one, each next one the vertex farthest from all chosen so far.
+void EdgeGraphSearch::BuildLandmarks()
+{
+  const int k = this->LandmarkCount;
+  const int nv = static_cast<int>(this->Nodes.size());
+  if (k == 0 || nv == 0 || !this->Landmarks.empty())
+  {
+    return;
+  }
+#if defined(CLOCK_THREAD_CPUTIME_ID)
+  auto now = []()
+  {
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+  };
+#else
+  auto now = []() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; };
+#endif
+  const double t0 = now();
+
+  // Vertex components of the edge graph.
+  std::vector<int> component(nv, -1), stack, representatives;
+  for (int v = 0; v < nv; ++v)
+  {
+    if (component[v] >= 0)
+    {
+      continue;
+    }
+    const int c = static_cast<int>(representatives.size());
+    representatives.push_back(v);
+    component[v] = c;
+    stack.assign(1, v);
+    while (!stack.empty())
+    {
+      const int u = stack.back();
+      stack.pop_back();
+      for (int i = this->Offsets[u], end = this->Offsets[u + 1]; i < end; ++i)
+      {
+        const int w = this->Neighbors[i];
+        if (component[w] < 0)
+        {
+          component[w] = c;
+          stack.push_back(w);
+        }
+      }
+    }
+  }
+  const int nc = static_cast<int>(representatives.size());
+  std::vector<float> distance, nearest;
+  std::vector<int> sources;
+  std::vector<std::pair<float, int>> farthest;
+  auto farthestPerComponent = [&](const std::vector<float>& d)
+  {
+    farthest.assign(nc, { -1.0f, -1 });
+    for (int v = 0; v < nv; ++v)
+    {
+      std::pair<float, int>& f = farthest[component[v]];
+      if (d[v] > f.first)
+      {
+        f = { d[v], v };
+      }
+    }
+    sources.clear();
+    for (const auto& f : farthest)
+    {
+      sources.push_back(f.second);
+    }
+  };
+  this->LandmarkDistances(representatives, nearest);
+  this->Landmarks.assign(static_cast<std::size_t>(nv) * k, 0.0f);
+  for (int l = 0; l < k; ++l)
+  {
+    farthestPerComponent(nearest);
+    this->LandmarkDistances(sources, distance);
+    for (int v = 0; v < nv; ++v)
+    {
+      this->Landmarks[static_cast<std::size_t>(v) * k + l] = distance[v];
+      nearest[v] = l == 0 ? distance[v] : std::min(nearest[v], distance[v]);
+    }
+  }
+  this->LandmarkSeconds = now() - t0;
+}
+
+//------------------------------------------------------------------------------
 void EdgeGraphSearch::NextGeneration()
 {
   if (this->Generation == std::numeric_limits<std::uint32_t>::max())
@@ -104,25 +305,103 @@ void EdgeGraphSearch::NextGeneration()
 }
 
 //------------------------------------------------------------------------------
-// Bidirectional A* with the average potential p(v) = (|v - to| - |v - from|) / 2: the forward
-// search orders vertices by g_f(v) + p(v), the backward one by g_b(v) - p(v). Both are
-// Dijkstra searches on consistently reduced arc lengths, so the classic bidirectional stopping
-// rule applies: once the two smallest keys add up to at least the best complete path seen
-// (mu), no shorter path exists. With the virtual start and end nodes the offsets cancel
-// (p(from) = -p(to)), which is why the rule reads minF + minB >= mu.
+// Bidirectional A* with the average potential p(v) = (pi_end(v) - pi_start(v)) / 2, where
+// pi_end(v) bounds d(v, to) from below (the larger of |v - to| and the landmark bounds) and
+// pi_start(v) bounds d(from, v). Both are 1-Lipschitz along every edge, so p is too: the
+// forward search orders vertices by g_f(v) + p(v), the backward one by g_b(v) - p(v), and both
+// are Dijkstra searches on the same non-negative reduced arc lengths, so the classic
+// bidirectional stopping rule applies: once the two smallest keys add up to at least the best
+// complete path seen (mu), no shorter path exists. The virtual start and end nodes take any
+// potentials that keep their arcs non-negative (there always are some: each has arcs one way
+// only); those offsets cancel, which is why the rule reads minF + minB >= mu. Tight bounds
+// only make the search smaller; exactness needs only the Lipschitz property.
 double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
   const Vec3& from,
   const std::vector<Terminal>& targets,
   const Vec3& to,
   std::vector<int>& vertices)
 {
+  static_assert(sizeof(Node) == 64, "one cache line per vertex");
   vertices.clear();
+  if (this->LandmarkCount > 0 && this->Landmarks.empty() &&
+    this->SettledSinceStart >=
+      this->BuildThreshold * (this->LandmarkCount + 1) * static_cast<double>(this->Nodes.size()))
+  {
+    this->BuildLandmarks();
+  }
   this->LastSettled = 0;
   this->NextGeneration();
   const std::uint32_t gen = this->Generation;
-  const std::greater<std::pair<double, int>> later;
-  auto potential = [&](const Node& n)
-  { return 0.5 * (Distance(n.Position, to) - Distance(n.Position, from)); };
+
+  // Landmark bounds of the two ends: d(v, end) >= max(d_l(v) - hi, lo - d_l(v)) with
+  // hi = max over targets of d_l(t) - cost(t), lo = min of d_l(t) + cost(t) (likewise for the
+  // start). Only the landmarks with the best bounds on d(start, end) take part (the others
+  // mostly give weaker bounds and cost time at every vertex).
+  const int k = this->Landmarks.empty() ? 0 : this->LandmarkCount;
+  this->Active.clear();
+  this->Bounds.clear();
+  if (k > 0)
+  {
+    auto value = [&](const Terminal& terminal, int l)
+    {
+      return static_cast<double>(
+        this->Landmarks[std::size_t(this->Internal[terminal.Vertex]) * k + l]);
+    };
+    this->Scores.clear();
+    for (int l = 0; l < k; ++l)
+    {
+      double hi = -std::numeric_limits<double>::infinity();
+      double lo = std::numeric_limits<double>::infinity();
+      for (const Terminal& terminal : targets)
+      {
+        hi = std::max(hi, value(terminal, l) - terminal.Cost);
+        lo = std::min(lo, value(terminal, l) + terminal.Cost);
+      }
+      double score = std::numeric_limits<double>::infinity();
+      for (const Terminal& terminal : sources)
+      {
+        const double d = value(terminal, l);
+        score = std::min(score, terminal.Cost + std::max(d - hi, lo - d));
+      }
+      this->Scores.emplace_back(-score, l);
+    }
+    const int active = std::min(k, this->ActiveLandmarks);
+    std::partial_sort(this->Scores.begin(), this->Scores.begin() + active, this->Scores.end());
+    for (int a = 0; a < active; ++a)
+    {
+      const int l = this->Scores[a].second;
+      this->Active.push_back(l);
+      for (int side = 0; side < 2; ++side)
+      {
+        double hi = -std::numeric_limits<double>::infinity();
+        double lo = std::numeric_limits<double>::infinity();
+        for (const Terminal& terminal : side == 0 ? targets : sources)
+        {
+          hi = std::max(hi, value(terminal, l) - terminal.Cost);
+          lo = std::min(lo, value(terminal, l) + terminal.Cost);
+        }
+        this->Bounds.push_back(hi);
+        this->Bounds.push_back(lo);
+      }
+    }
+  }
+  const int na = static_cast<int>(this->Active.size());
+  const int* activeList = this->Active.data();
+  const double* bounds = this->Bounds.data();
+  const float* landmarks = this->Landmarks.data();
+  auto potential = [&](int v, const Node& n)
+  {
+    double toEnd = Distance(n.Position, to), fromStart = Distance(n.Position, from);
+    const float* d = landmarks + static_cast<std::size_t>(v) * k;
+    for (int a = 0; a < na; ++a)
+    {
+      const double x = d[activeList[a]];
+      const double* b = bounds + 4 * a;
+      toEnd = std::max(toEnd, std::max(x - b[0], b[1] - x));
+      fromStart = std::max(fromStart, std::max(x - b[2], b[3] - x));
+    }
+    return 0.5 * (toEnd - fromStart);
+  };
   auto node = [&](int v) -> Node&
   {
     Node& n = this->Nodes[v];
@@ -130,6 +409,7 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
     {
       n.Seen = gen;
       n.SeenMask = n.ClosedMask = 0;
+      n.Potential = potential(v, n);
     }
     return n;
   };
@@ -153,8 +433,7 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
       n.SeenMask |= 1 << side;
       n.Cost[side] = terminal.Cost;
       n.Parent[side] = -1;
-      heap.emplace_back(terminal.Cost + sign * potential(n), v);
-      std::push_heap(heap.begin(), heap.end(), later);
+      HeapPush(heap, { terminal.Cost + sign * n.Potential, v });
       if ((n.SeenMask & (1 << other)) && n.Cost[0] + n.Cost[1] < mu)
       {
         mu = n.Cost[0] + n.Cost[1];
@@ -171,8 +450,7 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
       std::vector<std::pair<double, int>>& heap = this->Heaps[side];
       while (!heap.empty() && (this->Nodes[heap.front().second].ClosedMask & (1 << side)))
       {
-        std::pop_heap(heap.begin(), heap.end(), later);
-        heap.pop_back();
+        HeapPop(heap);
       }
     }
     if (this->Heaps[0].empty() || this->Heaps[1].empty())
@@ -188,9 +466,8 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
     const int other = 1 - side;
     const double sign = side == 0 ? 1.0 : -1.0;
     std::vector<std::pair<double, int>>& heap = this->Heaps[side];
-    std::pop_heap(heap.begin(), heap.end(), later);
-    const int u = heap.back().second;
-    heap.pop_back();
+    const int u = heap.front().second;
+    HeapPop(heap);
     Node& nu = this->Nodes[u];
     nu.ClosedMask |= 1 << side;
     ++this->LastSettled;
@@ -217,10 +494,10 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
       nw.SeenMask |= 1 << side;
       nw.Cost[side] = g;
       nw.Parent[side] = u;
-      heap.emplace_back(g + sign * potential(nw), w);
-      std::push_heap(heap.begin(), heap.end(), later);
+      HeapPush(heap, { g + sign * nw.Potential, w });
     }
   }
+  this->SettledSinceStart += this->LastSettled;
   if (meetA < 0)
   {
     return -1.0;

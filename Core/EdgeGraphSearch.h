@@ -13,6 +13,18 @@
 // and each direction settles roughly a ball around its end, so two balls of half the radius
 // cost about half of one ball of the full radius.
 //
+// Landmarks (ALT, Goldberg and Harrelson): a few vertices, chosen farthest-point, with the
+// edge-graph distance from each to every vertex, computed once per mesh. By the triangle
+// inequality |d_l(v) - d_l(t)| bounds d(v, t) from below; the potential of each direction is
+// the largest of these bounds and the straight-line distance. On curved surfaces the landmark
+// bound is much tighter than the straight line (it follows the surface), so far fewer
+// vertices are settled. Exactness does not depend on the bounds being tight, only on the
+// potentials being 1-Lipschitz along every edge (consistent): the distances are stored as
+// floats computed by a Dijkstra that rounds every sum down, so d_l(w) <= d_l(u) + |uw| holds
+// for the stored values themselves, not only up to float rounding. Each landmark slot holds
+// one landmark per connected component (a multi-source search), so every vertex has a finite
+// value in every slot. The table is built lazily (see SetLandmarkBuildThreshold).
+//
 // The search state is sized to the mesh once and stamped per query (nothing mesh-sized is
 // cleared per call), so a short path costs what its neighbourhood costs. Internally vertices
 // are renumbered along a Morton (Z-order) curve and each one's search state and position
@@ -23,6 +35,8 @@
 
 #include "TriangleMesh.h"
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -59,17 +73,43 @@ public:
 
   const TriangleMesh& GetMesh() const { return this->Mesh; }
 
+  /// Landmarks per connected component (default 16; 0 disables ALT). Drops a built table.
+  void SetNumberOfLandmarks(int n);
+  int GetNumberOfLandmarks() const { return this->LandmarkCount; }
+
+  /// Landmarks used per query (default 16, all of them): those with the best bounds on the distance
+  /// between its two ends.
+  void SetNumberOfActiveLandmarks(int n) { this->ActiveLandmarks = std::max(1, n); }
+
+  /// The landmark table is built once the searches so far have settled this many times as
+  /// many vertices as the build does (one full search per landmark, plus one). Default 1: a
+  /// session of short paths never pays for the table, and a session of long ones spends at
+  /// most as much on searches before it as the build costs (ski rental: never more than twice
+  /// the better choice in hindsight). 0 builds on first use.
+  void SetLandmarkBuildThreshold(double timesVertices) { this->BuildThreshold = timesVertices; }
+
+  /// Builds the landmark table now (no-op when built or disabled).
+  void BuildLandmarks();
+  bool HasLandmarks() const { return !this->Landmarks.empty(); }
+  /// CPU seconds the landmark table took to build (0 until built).
+  double GetLandmarkBuildSeconds() const { return this->LandmarkSeconds; }
+  /// Bytes held by the landmark table.
+  std::size_t GetLandmarkMemory() const { return this->Landmarks.size() * sizeof(float); }
+
 private:
   struct alignas(64) Node
   {
     Vec3 Position;
     double Cost[2];     // from the start point (0) / to the end point (1)
     int Parent[2];      // previous vertex (internal id) towards the start (0) / end (1), or -1
-    std::uint32_t Seen; // == Generation: Cost/Parent valid (per direction: SeenMask)
+    std::uint32_t Seen; // == Generation: Cost/Parent/Potential valid (per direction: SeenMask)
     std::uint8_t SeenMask, ClosedMask;
+    double Potential; // forward potential of this query (the backward one is its negation)
   };
 
   void NextGeneration();
+  /// Dijkstra from `sources` (internal ids) over all vertices, rounding sums down to float.
+  void LandmarkDistances(const std::vector<int>& sources, std::vector<float>& distance);
 
   const TriangleMesh& Mesh;
   std::vector<int> Internal, External; // mesh id <-> internal (Morton-ordered) id
@@ -80,6 +120,16 @@ private:
   std::uint32_t Generation = 0;
   std::vector<std::pair<double, int>> Heaps[2]; // (key, vertex); min-heaps
   int LastSettled = 0;
+
+  int LandmarkCount = 16;
+  double BuildThreshold = 1.0;
+  double SettledSinceStart = 0; // towards BuildThreshold
+  double LandmarkSeconds = 0;
+  std::vector<float> Landmarks; // Landmarks[v * LandmarkCount + l], internal ids
+  int ActiveLandmarks = 16;
+  std::vector<int> Active;    // per query: the landmarks used
+  std::vector<double> Bounds; // per query: per active landmark, hi/lo of the end, then start
+  std::vector<std::pair<double, int>> Scores;
 };
 
 } // namespace boolsurf

@@ -95,6 +95,15 @@ public:
   /// (default 2, greedy). The edge-path search is always exact.
   void SetHeuristicWeight(double w) { this->Search.SetHeuristicWeight(w); }
 
+  /// Landmarks of the exact edge-path search (see EdgeGraphSearch: ALT lower bounds, built
+  /// once per mesh; default 16, 0 disables). The edge path found is as short either way.
+  void SetNumberOfLandmarks(int n) { this->EdgeSearch.SetNumberOfLandmarks(n); }
+  /// See EdgeGraphSearch::SetLandmarkBuildThreshold (default 1; 0 builds on first use).
+  void SetLandmarkBuildThreshold(double t) { this->EdgeSearch.SetLandmarkBuildThreshold(t); }
+  /// Builds the landmark table now rather than lazily.
+  void PrepareLandmarks() { this->EdgeSearch.BuildLandmarks(); }
+  const EdgeGraphSearch& GetEdgeSearch() const { return this->EdgeSearch; }
+
   /// Seed with the dual-graph strip only (no edge-path bound); for benchmarks and tests.
   void SetUseEdgePathStrip(bool on) { this->UseEdgePathStrip = on; }
 

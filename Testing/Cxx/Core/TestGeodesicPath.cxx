@@ -801,10 +801,17 @@ TEST(GeodesicPath, LocallyShortestOnCurvedMeshes)
 namespace
 {
 /// Traces many random pairs (vertex, edge and face points) and checks each result against an
-/// independent Dijkstra over the mesh edges; returns how many were checked.
-void ExpectNeverLongerThanEdgePaths(const TriangleMesh& mesh, int pairs, std::uint32_t seed)
+/// independent Dijkstra over the mesh edges; returns how many were checked. `landmarks` > 0:
+/// the edge-path search uses that many landmarks (ALT bounds) from the first path on; 0: the
+/// straight-line bound only. Both must find the exact shortest edge path.
+void ExpectNeverLongerThanEdgePaths(const TriangleMesh& mesh,
+  int pairs,
+  std::uint32_t seed,
+  int landmarks = 8)
 {
   GeodesicPathSolver solver(mesh);
+  solver.SetNumberOfLandmarks(landmarks);
+  solver.SetLandmarkBuildThreshold(0.0);
   std::mt19937 rng(seed);
   GeodesicPath path;
   double worst = 0;
@@ -836,6 +843,51 @@ TEST(GeodesicPath, NeverLongerThanEdgePathOnTorus)
   // Coarse and thin: handles where a strip seeded the wrong way round used to lose.
   ExpectNeverLongerThanEdgePaths(ToMesh(MakeTorus(2.0, 0.7, 48, 24)), 300, 3);
   ExpectNeverLongerThanEdgePaths(ToMesh(MakeTorus(1.0, 0.6, 12, 8)), 300, 4);
+  ExpectNeverLongerThanEdgePaths(ToMesh(MakeTorus(2.0, 0.7, 48, 24)), 100, 3, 0);
+}
+
+TEST(GeodesicPath, LandmarksOnSeveralComponents)
+{
+  // Two tori side by side and one on its own: every landmark slot holds one landmark per
+  // component, so the bounds stay finite (and Lipschitz) on each of them.
+  MeshData data = MakeTorus(2.0, 0.7, 40, 20);
+  const MeshData second = MakeTorus(1.0, 0.3, 24, 12);
+  const int offset = static_cast<int>(data.Positions.size());
+  for (const Vec3& p : second.Positions)
+  {
+    data.Positions.push_back(p + Vec3{ 5.0, 0.0, 0.0 });
+  }
+  for (const Triangle& t : second.Triangles)
+  {
+    data.Triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  }
+  const TriangleMesh mesh = ToMesh(data);
+  GeodesicPathSolver solver(mesh);
+  solver.SetLandmarkBuildThreshold(0.0);
+  std::mt19937 rng(11);
+  GeodesicPath path;
+  int traced = 0;
+  for (int i = 0; i < 300; ++i)
+  {
+    const CanonicalPoint a = RandomPoint(mesh, rng), b = RandomPoint(mesh, rng);
+    if (!solver.Compute(a, b, path).Ok)
+    {
+      continue; // different components: a named error (tested elsewhere)
+    }
+    ++traced;
+    const double edgePath = EdgePathLength(mesh, a, b);
+    EXPECT_LE(path.Length, edgePath * (1 + 1e-12) + 1e-14) << "pair " << i;
+    const double own = solver.GetLastStatistics().EdgePathLength;
+    if (own >= 0)
+    {
+      EXPECT_NEAR(own, edgePath, 1e-9 * std::max(1.0, edgePath)) << "pair " << i;
+    }
+  }
+  EXPECT_GT(traced, 100);
+  EXPECT_TRUE(solver.GetEdgeSearch().HasLandmarks());
+  EXPECT_EQ(solver.GetEdgeSearch().GetLandmarkMemory(),
+    sizeof(float) * solver.GetEdgeSearch().GetNumberOfLandmarks() *
+      static_cast<std::size_t>(mesh.GetNumberOfVertices()));
 }
 
 TEST(GeodesicPath, NeverLongerThanEdgePathOnGenusThree)
