@@ -170,12 +170,16 @@ void BenchmarkPaths(benchmark::State& state,
 } // namespace
 
 BENCHMARK_CAPTURE(BenchmarkPaths, igea_1m_short, std::string("igea_1m.ply"), false)
+  ->Iterations(320)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BenchmarkPaths, igea_1m_long, std::string("igea_1m.ply"), true)
+  ->Iterations(24)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BenchmarkPaths, torus3_800k_short, std::string("3torus_800k.ply"), false)
+  ->Iterations(320)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BenchmarkPaths, torus3_800k_long, std::string("3torus_800k.ply"), true)
+  ->Iterations(24)
   ->Unit(benchmark::kMillisecond);
 // Straight-line bound only (no landmarks), for comparison.
 BENCHMARK_CAPTURE(BenchmarkPaths,
@@ -184,6 +188,7 @@ BENCHMARK_CAPTURE(BenchmarkPaths,
   true,
   true,
   false)
+  ->Iterations(24)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BenchmarkPaths,
   torus3_800k_long_no_alt,
@@ -191,13 +196,16 @@ BENCHMARK_CAPTURE(BenchmarkPaths,
   true,
   true,
   false)
+  ->Iterations(24)
   ->Unit(benchmark::kMillisecond);
 // Greedy dual A* strip (weight 2), the previous default, for comparison.
 BENCHMARK_CAPTURE(BenchmarkPaths, igea_1m_long_dual_strip, std::string("igea_1m.ply"), true, false)
+  ->Iterations(24)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BenchmarkPaths,
   torus3_800k_long_dual_strip,
   std::string("3torus_800k.ply"),
   true,
   false)
+  ->Iterations(24)
   ->Unit(benchmark::kMillisecond);

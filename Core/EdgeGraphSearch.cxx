@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <ctime>
 #include <functional>
 #include <limits>
@@ -146,6 +147,72 @@ EdgeGraphSearch::EdgeGraphSearch(const TriangleMesh& mesh)
     }
     this->Offsets[i + 1] = static_cast<int>(this->Neighbors.size());
   }
+}
+
+//------------------------------------------------------------------------------
+std::uint64_t EdgeGraphSearch::RadixQueue::Bits(double key)
+{
+  // Order-preserving map of doubles to unsigned integers.
+  std::uint64_t b;
+  std::memcpy(&b, &key, sizeof b);
+  return (b >> 63) ? ~b : (b | (std::uint64_t(1) << 63));
+}
+
+void EdgeGraphSearch::RadixQueue::Clear()
+{
+  for (auto& bucket : this->Buckets)
+  {
+    bucket.clear();
+  }
+  this->Last = -std::numeric_limits<double>::infinity();
+  this->LastBits = 0;
+  this->Size = 0;
+}
+
+void EdgeGraphSearch::RadixQueue::Push(double key, int vertex)
+{
+  if (!(key >= this->Last))
+  {
+    key = this->Last; // rounding noise of a reduced arc length of zero
+  }
+  const std::uint64_t x = Bits(key) ^ this->LastBits;
+  const int bucket = x == 0 ? 0 : 64 - __builtin_clzll(x);
+  this->Buckets[bucket].emplace_back(key, vertex);
+  ++this->Size;
+}
+
+const std::pair<double, int>& EdgeGraphSearch::RadixQueue::Top()
+{
+  if (this->Buckets[0].empty())
+  {
+    int i = 1;
+    while (this->Buckets[i].empty())
+    {
+      ++i;
+    }
+    std::vector<std::pair<double, int>>& source = this->Buckets[i];
+    double smallest = source.front().first;
+    for (const auto& e : source)
+    {
+      smallest = std::min(smallest, e.first);
+    }
+    this->Last = smallest;
+    this->LastBits = Bits(smallest);
+    for (const auto& e : source)
+    {
+      const std::uint64_t x = Bits(e.first) ^ this->LastBits;
+      this->Buckets[x == 0 ? 0 : 64 - __builtin_clzll(x)].push_back(e);
+    }
+    source.clear();
+  }
+  return this->Buckets[0].back();
+}
+
+void EdgeGraphSearch::RadixQueue::Pop()
+{
+  this->Top();
+  this->Buckets[0].pop_back();
+  --this->Size;
 }
 
 //------------------------------------------------------------------------------
@@ -418,8 +485,8 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
   int meetA = -1, meetB = -1; // best path: forward chain to meetA, arc, backward chain from meetB
   for (int side = 0; side < 2; ++side)
   {
-    std::vector<std::pair<double, int>>& heap = this->Heaps[side];
-    heap.clear();
+    RadixQueue& heap = this->Heaps[side];
+    heap.Clear();
     const double sign = side == 0 ? 1.0 : -1.0;
     const int other = 1 - side;
     for (const Terminal& terminal : side == 0 ? sources : targets)
@@ -433,7 +500,7 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
       n.SeenMask |= 1 << side;
       n.Cost[side] = terminal.Cost;
       n.Parent[side] = -1;
-      HeapPush(heap, { terminal.Cost + sign * n.Potential, v });
+      heap.Push(terminal.Cost + sign * n.Potential, v);
       if ((n.SeenMask & (1 << other)) && n.Cost[0] + n.Cost[1] < mu)
       {
         mu = n.Cost[0] + n.Cost[1];
@@ -447,17 +514,17 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
     // Drop stale tops (vertices already settled on that side) so the bounds are tight.
     for (int side = 0; side < 2; ++side)
     {
-      std::vector<std::pair<double, int>>& heap = this->Heaps[side];
-      while (!heap.empty() && (this->Nodes[heap.front().second].ClosedMask & (1 << side)))
+      RadixQueue& heap = this->Heaps[side];
+      while (!heap.Empty() && (this->Nodes[heap.Top().second].ClosedMask & (1 << side)))
       {
-        HeapPop(heap);
+        heap.Pop();
       }
     }
-    if (this->Heaps[0].empty() || this->Heaps[1].empty())
+    if (this->Heaps[0].Empty() || this->Heaps[1].Empty())
     {
       break; // one side exhausted its component: mu (if finite) is final
     }
-    const double minF = this->Heaps[0].front().first, minB = this->Heaps[1].front().first;
+    const double minF = this->Heaps[0].Top().first, minB = this->Heaps[1].Top().first;
     if (minF + minB >= mu)
     {
       break;
@@ -465,9 +532,9 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
     const int side = minF <= minB ? 0 : 1;
     const int other = 1 - side;
     const double sign = side == 0 ? 1.0 : -1.0;
-    std::vector<std::pair<double, int>>& heap = this->Heaps[side];
-    const int u = heap.front().second;
-    HeapPop(heap);
+    RadixQueue& heap = this->Heaps[side];
+    const int u = heap.Top().second;
+    heap.Pop();
     Node& nu = this->Nodes[u];
     nu.ClosedMask |= 1 << side;
     ++this->LastSettled;
@@ -494,7 +561,7 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
       nw.SeenMask |= 1 << side;
       nw.Cost[side] = g;
       nw.Parent[side] = u;
-      HeapPush(heap, { g + sign * nw.Potential, w });
+      heap.Push(g + sign * nw.Potential, w);
     }
   }
   this->SettledSinceStart += this->LastSettled;

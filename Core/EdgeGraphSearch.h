@@ -107,6 +107,28 @@ private:
     double Potential; // forward potential of this query (the backward one is its negation)
   };
 
+  /// Monotone priority queue of (key, vertex) (a radix heap on the keys' bit patterns): keys
+  /// pushed are never below the last key taken off (a consistent potential guarantees that;
+  /// rounding noise below it is clamped), push is O(1) and a pop moves each entry down at most
+  /// 64 buckets in all. Cheaper than a comparison heap for the long searches.
+  class RadixQueue
+  {
+  public:
+    void Clear();
+    bool Empty() const { return this->Size == 0; }
+    void Push(double key, int vertex);
+    /// Smallest entry (the queue must not be empty).
+    const std::pair<double, int>& Top();
+    void Pop();
+
+  private:
+    static std::uint64_t Bits(double key);
+    std::vector<std::pair<double, int>> Buckets[65];
+    double Last = 0;
+    std::uint64_t LastBits = 0;
+    std::size_t Size = 0;
+  };
+
   void NextGeneration();
   /// Dijkstra from `sources` (internal ids) over all vertices, rounding sums down to float.
   void LandmarkDistances(const std::vector<int>& sources, std::vector<float>& distance);
@@ -118,7 +140,7 @@ private:
   std::vector<double> EdgeCosts;       // parallel to Neighbors
   std::vector<Node> Nodes;
   std::uint32_t Generation = 0;
-  std::vector<std::pair<double, int>> Heaps[2]; // (key, vertex); min-heaps
+  RadixQueue Heaps[2];
   int LastSettled = 0;
 
   int LandmarkCount = 16;

@@ -143,6 +143,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
     return TraceStatus::Success();
   }
 
+  this->UnfoldedStrip.clear();
   TrianglesOf(mesh, start, this->StartTriangles);
   TrianglesOf(mesh, end, this->EndTriangles);
   bool connected = false;
@@ -390,8 +391,19 @@ bool GeodesicPathSolver::UnfoldStrip(const CanonicalPoint& start, const Canonica
 {
   const TriangleMesh& mesh = this->GetMesh();
   const int n = static_cast<int>(this->Strip.size());
+  // Unfolded[i] and Portals[i - 1] depend on Strip[0..i] only: keep what the last unfolding
+  // of this path computed for the common prefix (a straightening round changes the strip only
+  // from its first reroute on), bit for bit the same as unfolding again.
+  const int old = static_cast<int>(this->UnfoldedStrip.size());
+  int common = 0;
+  while (common < n && common < old && this->Strip[common] == this->UnfoldedStrip[common])
+  {
+    ++common;
+  }
+  this->UnfoldedStrip.clear(); // valid again only if this unfolding succeeds
   this->Unfolded.resize(n);
   this->Portals.resize(n - 1);
+  if (common == 0)
   {
     const int t = this->Strip[0];
     const Vec3 p0 = mesh.GetCornerPosition(t, 0);
@@ -402,7 +414,7 @@ bool GeodesicPathSolver::UnfoldStrip(const CanonicalPoint& start, const Canonica
       Vec2{ 0.0, 0.0 }, Vec2{ l1, 0.0 }, Vec2{ Dot(e2, e1) / l1, Length(Cross(e1, e2)) / l1 }
     };
   }
-  for (int i = 0; i + 1 < n; ++i)
+  for (int i = std::max(common - 1, 0); i + 1 < n; ++i)
   {
     const int t = this->Strip[i];
     const int next = this->Strip[i + 1];
@@ -476,6 +488,7 @@ bool GeodesicPathSolver::UnfoldStrip(const CanonicalPoint& start, const Canonica
   };
   this->StartPosition = place(start, 0);
   this->EndPosition = place(end, n - 1);
+  this->UnfoldedStrip = this->Strip;
   return true;
 }
 

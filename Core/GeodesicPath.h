@@ -156,7 +156,8 @@ private:
   std::vector<int> StartTriangles, EndTriangles;
   std::vector<int> Strip, NewStrip, Swept;
   std::vector<std::array<Vec2, 3>> Unfolded;
-  std::vector<Portal> Portals; // Portals[i] joins Strip[i] and Strip[i + 1]
+  std::vector<int> UnfoldedStrip; // the strip Unfolded and Portals were computed for
+  std::vector<Portal> Portals;    // Portals[i] joins Strip[i] and Strip[i + 1]
   Vec2 StartPosition, EndPosition;
   std::vector<Corner> Corners;
   std::vector<PathPoint> Points;
