@@ -9,63 +9,6 @@
 
 namespace boolsurf
 {
-namespace
-{
-// 4-ary min-heap of (key, vertex): half the depth of a binary heap, and the four children of a
-// node share a cache line, so a pop costs fewer misses.
-using Entry = std::pair<double, int>;
-void HeapPush(std::vector<Entry>& heap, Entry e)
-{
-  std::size_t i = heap.size();
-  heap.push_back(e);
-  while (i > 0)
-  {
-    const std::size_t parent = (i - 1) / 4;
-    if (!(e.first < heap[parent].first))
-    {
-      break;
-    }
-    heap[i] = heap[parent];
-    i = parent;
-  }
-  heap[i] = e;
-}
-void HeapPop(std::vector<Entry>& heap)
-{
-  const Entry e = heap.back();
-  heap.pop_back();
-  const std::size_t n = heap.size();
-  if (n == 0)
-  {
-    return;
-  }
-  std::size_t i = 0;
-  for (;;)
-  {
-    const std::size_t first = 4 * i + 1;
-    if (first >= n)
-    {
-      break;
-    }
-    std::size_t best = first;
-    const std::size_t last = std::min(first + 4, n);
-    for (std::size_t c = first + 1; c < last; ++c)
-    {
-      if (heap[c].first < heap[best].first)
-      {
-        best = c;
-      }
-    }
-    if (!(heap[best].first < e.first))
-    {
-      break;
-    }
-    heap[i] = heap[best];
-    i = best;
-  }
-  heap[i] = e;
-}
-} // namespace
 
 //------------------------------------------------------------------------------
 EdgeGraphSearch::EdgeGraphSearch(const TriangleMesh& mesh)
@@ -235,17 +178,18 @@ void EdgeGraphSearch::LandmarkDistances(const std::vector<int>& sources,
 {
   const float infinity = std::numeric_limits<float>::infinity();
   distance.assign(this->Nodes.size(), infinity);
-  std::vector<Entry> heap;
+  RadixQueue heap; // keys (floats, exact as doubles) never drop below the last one taken
+  heap.Clear();
   for (int s : sources)
   {
     distance[s] = 0.0f;
-    HeapPush(heap, { 0.0, s });
+    heap.Push(0.0, s);
   }
-  while (!heap.empty())
+  while (!heap.Empty())
   {
-    const int u = heap.front().second;
-    const float du = static_cast<float>(heap.front().first);
-    HeapPop(heap);
+    const int u = heap.Top().second;
+    const float du = static_cast<float>(heap.Top().first);
+    heap.Pop();
     if (du > distance[u])
     {
       continue;
@@ -258,14 +202,17 @@ void EdgeGraphSearch::LandmarkDistances(const std::vector<int>& sources,
       // below d(u), so the search stays monotone.
       const double sum = static_cast<double>(du) + this->EdgeCosts[i];
       float d = static_cast<float>(sum);
-      if (static_cast<double>(d) > sum)
+      if (static_cast<double>(d) > sum) // then d > 0: the next float down
       {
-        d = std::nextafter(d, -infinity);
+        std::uint32_t bits;
+        std::memcpy(&bits, &d, sizeof bits);
+        --bits;
+        std::memcpy(&d, &bits, sizeof d);
       }
       if (d < distance[w])
       {
         distance[w] = d;
-        HeapPush(heap, { d, w });
+        heap.Push(d, w);
       }
     }
   }
