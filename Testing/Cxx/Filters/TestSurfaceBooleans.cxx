@@ -113,13 +113,16 @@ TEST(SurfaceBooleans, SphereInclusionExclusionIsExact)
 
 TEST(SurfaceBooleans, GeodesicTriangleAreaApproachesAngleExcess)
 {
-  // The octant triangle: three right angles, excess pi/2 on the unit sphere. The icosphere is
-  // inscribed, so its area falls short of 4 pi; on coarse meshes the traced geodesics wander,
-  // so the error must shrink level after level and be small at the finest.
+  // The octant triangle: three right angles, excess pi/2 on the unit sphere. On coarse
+  // icospheres the locally shortest paths wander around the great circles (which way depends
+  // on the triangulation), so the error is compared between the coarsest and the finest
+  // levels rather than level by level; at the finest it must be small, also relative to the
+  // inscribed mesh's own area (which removes its shortfall from 4 pi).
   ControlPolygon octant;
   octant.Points = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-  double previous = 1e9, relative = 1e9;
-  for (int level = 2; level <= 5; ++level)
+  std::vector<double> errors;
+  double relative = 1;
+  for (int level = 2; level <= 6; ++level)
   {
     auto sphere = testutils::ToPolyData(boolsurf::MakeIcosphere(level));
     vtkNew<vtkBoolSurf> f;
@@ -128,13 +131,12 @@ TEST(SurfaceBooleans, GeodesicTriangleAreaApproachesAngleExcess)
     f->SetOperationToExpression();
     f->SetExpression("S0");
     const double area = RunArea(f);
-    const double error = std::abs(area - Pi / 2);
+    errors.push_back(std::abs(area - Pi / 2));
     relative = std::abs(area / testutils::Area(sphere) - 0.125);
-    EXPECT_LT(error, previous) << "level " << level;
-    previous = error;
   }
-  EXPECT_LT(previous, 0.015); // about 1% of pi/2 at 20480 triangles
-  EXPECT_LT(relative, 2e-3);  // of the mesh's area, at the finest level
+  EXPECT_LT(errors.back(), 0.5 * errors.front());
+  EXPECT_LT(errors.back(), 0.01); // well under 1% of pi/2 at 81920 triangles
+  EXPECT_LT(relative, 1e-3);
 }
 
 TEST(SurfaceBooleans, TorusMeridianIsInconsistentAndRefused)
