@@ -10,12 +10,22 @@
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <cstdint>
 
 vtkStandardNewMacro(vtkBoolSurf);
 
 struct vtkBoolSurf::Internals
 {
   boolsurf::vtkSurfaceCache Surface;
+
+  // The labeled arrangement of the last run, reused when only the Boolean properties
+  // (operation, operands, expression, fill rule) change.
+  vtkSmartPointer<vtkPolyData> Labeled;
+  boolsurf::ArrangementFields Fields;
+  boolsurf::LabelingResult Labels;
+  std::vector<double> LabeledKey; // what the labeled arrangement was computed from
 };
 
 //------------------------------------------------------------------------------
@@ -47,8 +57,8 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
 
   // 1. surface (cached)
-  std::vector<std::string> warnings, problems;
-  std::string error, warning;
+  std::vector<std::string> warnings;
+  std::string error;
   const boolsurf::vtkSurfaceInput* surface =
     this->Internal->Surface.GetUsable(surfaceInput, warnings, error);
   for (const std::string& w : warnings)
@@ -62,6 +72,59 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   }
   this->UpdateProgress(0.05);
 
+  // 2-4. tracing, arrangement, labeling: reused while only the Boolean properties change.
+  // Inputs and properties the labeled arrangement depends on; the surface's cached
+  // conversion is keyed separately.
+  const std::vector<double> key = { static_cast<double>(surfaceInput->GetMTime()),
+    static_cast<double>(reinterpret_cast<std::uintptr_t>(surfaceInput)),
+    static_cast<double>(curvesInput ? curvesInput->GetMTime() : 0),
+    static_cast<double>(reinterpret_cast<std::uintptr_t>(curvesInput)),
+    static_cast<double>(this->Resolution),
+    this->ProjectionTolerance,
+    static_cast<double>(this->ZeroCellMode),
+    this->ZeroCellPoint[0],
+    this->ZeroCellPoint[1],
+    this->ZeroCellPoint[2],
+    static_cast<double>(this->NumberOfThreads) };
+  if (!this->Internal->Labeled || key != this->Internal->LabeledKey)
+  {
+    this->Internal->Labeled = nullptr;
+    auto labeled = vtkSmartPointer<vtkPolyData>::New();
+    if (!this->LabelCurves(*surface, curvesInput, labeled, error))
+    {
+      vtkErrorMacro(<< error);
+      return 0;
+    }
+    this->Internal->Labeled = labeled;
+    this->Internal->LabeledKey = key;
+  }
+  this->UpdateProgress(0.8);
+
+  // 5. Boolean
+  const boolsurf::BooleanRequest request = boolsurf::MakeBooleanRequest(
+    this->Operation, this->ShapeA, this->ShapeB, this->Expression, this->FillRule);
+  if (!boolsurf::ComputeBoolean(this->Internal->Labeled,
+        this->Internal->Fields,
+        this->Internal->Labels,
+        request,
+        region,
+        boundary,
+        error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
+  vtkPolyData* curvesInput,
+  vtkPolyData* labeled,
+  std::string& error)
+{
+  std::vector<std::string> problems;
   // 2. tracing
   std::vector<boolsurf::TracedCurve> traced;
   boolsurf::TraceOptions traceOptions;
@@ -76,59 +139,46 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   }
   if (!ok)
   {
-    vtkErrorMacro(<< "Cannot trace the curves:" << boolsurf::JoinLines(problems));
-    return 0;
+    error = "Cannot trace the curves:" + boolsurf::JoinLines(problems);
+    return false;
   }
   this->UpdateProgress(0.3);
   if (this->CheckAbort())
   {
-    return 1;
+    error = "aborted";
+    return false;
   }
 
   // 3. arrangement
   vtkNew<vtkPolyData> refined;
-  if (!boolsurf::ArrangeCurves(*surface, traced, this->NumberOfThreads, refined, nullptr, error))
+  if (!boolsurf::ArrangeCurves(surface, traced, this->NumberOfThreads, refined, nullptr, error))
   {
-    vtkErrorMacro(<< error);
-    return 0;
+    return false;
   }
   this->UpdateProgress(0.7);
   if (this->CheckAbort())
   {
-    return 1;
+    error = "aborted";
+    return false;
   }
 
   // 4. labeling
-  vtkNew<vtkPolyData> labeled;
-  boolsurf::ArrangementFields fields;
-  boolsurf::LabelingResult labels;
+  std::string warning;
   if (!boolsurf::LabelArrangement(refined,
         this->ZeroCellMode == 1 ? this->ZeroCellPoint : nullptr,
         labeled,
-        fields,
-        labels,
+        this->Internal->Fields,
+        this->Internal->Labels,
         error,
         warning))
   {
-    vtkErrorMacro(<< error);
-    return 0;
+    return false;
   }
   if (!warning.empty())
   {
     vtkWarningMacro(<< warning);
   }
-  this->UpdateProgress(0.8);
-
-  // 5. Boolean
-  const boolsurf::BooleanRequest request = boolsurf::MakeBooleanRequest(
-    this->Operation, this->ShapeA, this->ShapeB, this->Expression, this->FillRule);
-  if (!boolsurf::ComputeBoolean(labeled, fields, labels, request, region, boundary, error))
-  {
-    vtkErrorMacro(<< error);
-    return 0;
-  }
-  this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------

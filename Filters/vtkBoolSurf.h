@@ -28,6 +28,11 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+namespace boolsurf
+{
+struct vtkSurfaceInput;
+}
+
 class BOOLSURFFILTERS_EXPORT vtkBoolSurf : public vtkPolyDataAlgorithm
 {
 public:
@@ -110,6 +115,12 @@ protected:
 private:
   vtkBoolSurf(const vtkBoolSurf&) = delete;
   void operator=(const vtkBoolSurf&) = delete;
+
+  /// Trace, arrange and label the curves on the (valid) surface.
+  bool LabelCurves(const boolsurf::vtkSurfaceInput& surface,
+    vtkPolyData* curves,
+    vtkPolyData* labeled,
+    std::string& error);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -66,6 +66,10 @@ void TransferSurfaceAttributes(vtkPolyData* source,
     }
   }
   inPD->CopyNormalsOff();
+  if (inPD->GetNumberOfArrays() == 0 && inCD->GetNumberOfArrays() == 0)
+  {
+    return; // nothing to carry: skip a per-point and per-triangle loop over the whole mesh
+  }
   vtkPointData* outPD = target->GetPointData();
   vtkCellData* outCD = target->GetCellData();
   const vtkIdType np = static_cast<vtkIdType>(pointSurface.size());
