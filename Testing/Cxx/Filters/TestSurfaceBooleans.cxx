@@ -272,3 +272,58 @@ TEST(SurfaceBooleans, BadOperationsAreNamedErrors)
     << messages.Catcher->Errors;
   EXPECT_EQ(f->GetOutput()->GetNumberOfCells(), 0);
 }
+
+// The one-step filter reuses its labeled arrangement while only the Boolean properties change;
+// any change of the curves (new data, points moved in place) or of a tracing property must
+// recompute it.
+TEST(SurfaceBooleans, OneStepFilterNeverServesAStaleArrangement)
+{
+  auto mesh = testutils::ToPolyData(boolsurf::MakeFlatSquare(20, 1.0, 0.2, 8));
+  ControlPolygon a{
+    { { 0.2, 0.2, 0 }, { 0.6, 0.2, 0 }, { 0.6, 0.6, 0 }, { 0.2, 0.6, 0 } }, 0, true
+  };
+  ControlPolygon b{
+    { { 0.4, 0.4, 0 }, { 0.8, 0.4, 0 }, { 0.8, 0.8, 0 }, { 0.4, 0.8, 0 } }, 1, true
+  };
+  vtkNew<vtkBoolSurf> f;
+  f->SetInputData(0, mesh);
+  auto curves = testutils::ToCurves({ a, b });
+  f->SetInputData(1, curves);
+  f->SetOperationToUnion();
+  EXPECT_NEAR(RunArea(f), 0.28, 1e-12);
+  f->SetOperationToIntersection(); // labels reused
+  EXPECT_NEAR(RunArea(f), 0.04, 1e-12);
+  // Move square B in place: the intersection shrinks to [0.5,0.6]^2.
+  for (vtkIdType p = 4; p < 8; ++p)
+  {
+    double x[3];
+    curves->GetPoint(p, x);
+    curves->GetPoints()->SetPoint(p, x[0] + 0.1, x[1] + 0.1, 0);
+  }
+  curves->GetPoints()->Modified();
+  EXPECT_NEAR(RunArea(f), 0.01, 1e-12);
+  // New curves object.
+  ControlPolygon c{
+    { { 0.1, 0.1, 0 }, { 0.3, 0.1, 0 }, { 0.3, 0.3, 0 }, { 0.1, 0.3, 0 } }, 1, true
+  };
+  f->SetInputData(1, testutils::ToCurves({ a, c }));
+  EXPECT_NEAR(RunArea(f), 0.01, 1e-12); // [0.2,0.3]^2
+  // A tracing property: Bezier resolution changes the traced curve.
+  ControlPolygon bezier{ { { 0.1, 0.5, 0 },
+                           { 0.3, 0.9, 0 },
+                           { 0.7, 0.9, 0 },
+                           { 0.9, 0.5, 0 },
+                           { 0.7, 0.1, 0 },
+                           { 0.3, 0.1, 0 } },
+    0,
+    true,
+    1 };
+  f->SetInputData(1, testutils::ToCurves({ bezier }));
+  f->SetOperationToExpression();
+  f->SetExpression("S0");
+  f->SetResolution(1);
+  const double coarse = RunArea(f);
+  f->SetResolution(6);
+  const double fine = RunArea(f);
+  EXPECT_GT(std::abs(fine - coarse), 1e-6);
+}
