@@ -157,7 +157,8 @@ const PreparedScene& Prepare(const benchutil::SceneFile& file)
     slot->Error = "the pipeline failed on " + file.Scene;
     return *slot;
   }
-  slot->Cells = static_cast<int>(slot->Arranged->GetFieldData()->GetArray("NumberOfCells")->GetComponent(0, 0));
+  slot->Cells =
+    static_cast<int>(slot->Arranged->GetFieldData()->GetArray("NumberOfCells")->GetComponent(0, 0));
   for (vtkIdType s = 0; s < consistent->GetNumberOfTuples(); ++s)
   {
     if (consistent->GetComponent(s, 0) != 0)
@@ -211,7 +212,8 @@ void BM_Boolean(benchmark::State& state, benchutil::SceneFile file)
 }
 
 // Registered at start-up: one benchmark per available scene.
-const bool registered = [] {
+const bool registered = []
+{
   for (const benchutil::SceneFile& file : benchutil::AvailableScenes(BOOLSURF_SHARED_DATA_DIR))
   {
     benchmark::RegisterBenchmark(("BM_Labeling/" + file.Scene).c_str(), BM_Labeling, file)
