@@ -28,7 +28,8 @@ const boolsurf::MeshData* LoadSharedMesh(const std::string& name, std::string& e
   return &it->second;
 }
 
-void BM_Adjacency(benchmark::State& state, const std::string& name)
+// The adjacency alone, or followed by the topology (components, fans, loops, genus).
+void BuildSharedMesh(benchmark::State& state, const std::string& name, bool withTopology)
 {
   std::string error;
   const boolsurf::MeshData* data = LoadSharedMesh(name, error);
@@ -41,26 +42,23 @@ void BM_Adjacency(benchmark::State& state, const std::string& name)
   {
     boolsurf::TriangleMesh mesh(data->Positions, data->Triangles);
     benchmark::DoNotOptimize(mesh.GetNumberOfEdges());
+    if (withTopology)
+    {
+      boolsurf::MeshTopology topo = boolsurf::MeshTopology::Compute(mesh);
+      benchmark::DoNotOptimize(topo.Components.size());
+    }
   }
   state.counters["triangles"] = static_cast<double>(data->Triangles.size());
 }
 
+void BM_Adjacency(benchmark::State& state, const std::string& name)
+{
+  BuildSharedMesh(state, name, false);
+}
+
 void BM_AdjacencyAndTopology(benchmark::State& state, const std::string& name)
 {
-  std::string error;
-  const boolsurf::MeshData* data = LoadSharedMesh(name, error);
-  if (!data)
-  {
-    state.SkipWithError(error.c_str());
-    return;
-  }
-  for (auto _ : state)
-  {
-    boolsurf::TriangleMesh mesh(data->Positions, data->Triangles);
-    boolsurf::MeshTopology topo = boolsurf::MeshTopology::Compute(mesh);
-    benchmark::DoNotOptimize(topo.Components.size());
-  }
-  state.counters["triangles"] = static_cast<double>(data->Triangles.size());
+  BuildSharedMesh(state, name, true);
 }
 } // namespace
 

@@ -59,19 +59,6 @@ void ParallelRange(tbb::task_arena& arena, int n, const Body& body, int grain = 
     });
 }
 
-SurfacePoint SurfacePointOf(const TriangleMesh& mesh, const CanonicalPoint& c)
-{
-  SurfacePoint s;
-  s.Triangle = AnyTriangleOf(mesh, c);
-  if (s.Triangle >= 0)
-  {
-    const std::array<double, 3> w = WeightsInTriangle(mesh, c, s.Triangle);
-    s.U = w[1];
-    s.V = w[2];
-  }
-  return s;
-}
-
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -160,7 +147,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       edgeOfEdgePoint[i] = c.Id;
       out.Positions[nv + i] = PositionOf(mesh, c);
       out.PointOnMesh[nv + i] = c;
-      out.PointSurface[nv + i] = SurfacePointOf(mesh, c);
+      out.PointSurface[nv + i] = ToSurfacePoint(mesh, c);
     });
   ParallelFor(arena,
     slots,

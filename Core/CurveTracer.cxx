@@ -24,6 +24,19 @@ void CurveTrace::Clear()
 }
 
 //------------------------------------------------------------------------------
+void CurveTrace::DropRepeatedClosingPoint()
+{
+  if (this->Curve.Points.size() > 1 && this->Curve.Points.back() == this->Curve.Points[0])
+  {
+    this->Curve.Points.pop_back();
+    this->Segment.pop_back();
+    this->ControlPoint.pop_back();
+    this->Parameter.pop_back();
+    this->OnCurve.pop_back();
+  }
+}
+
+//------------------------------------------------------------------------------
 CurveTracer::CurveTracer(const TriangleMesh& mesh)
   : Solver(mesh)
 {
@@ -120,13 +133,9 @@ TraceStatus CurveTracer::TraceGeodesicPolygon(const std::vector<CanonicalPoint>&
     this->AppendPath(this->Path, i, 0.0, 1.0, i, j, true, true, true, out);
     out.Length += this->Path.Length;
   }
-  if (closed && out.Curve.Points.size() > 1 && out.Curve.Points.back() == out.Curve.Points[0])
+  if (closed)
   {
-    out.Curve.Points.pop_back();
-    out.Segment.pop_back();
-    out.ControlPoint.pop_back();
-    out.Parameter.pop_back();
-    out.OnCurve.pop_back();
+    out.DropRepeatedClosingPoint();
   }
   return TraceStatus::Success();
 }
@@ -207,13 +216,9 @@ TraceStatus CurveTracer::TraceBezierSpline(const std::vector<CanonicalPoint>& po
         "): " + status.Message);
     }
   }
-  if (closed && out.Curve.Points.size() > 1 && out.Curve.Points.back() == out.Curve.Points[0])
+  if (closed)
   {
-    out.Curve.Points.pop_back();
-    out.Segment.pop_back();
-    out.ControlPoint.pop_back();
-    out.Parameter.pop_back();
-    out.OnCurve.pop_back();
+    out.DropRepeatedClosingPoint();
   }
   return TraceStatus::Success();
 }

@@ -39,6 +39,9 @@ struct CurveTrace
   double Length = 0.0;
 
   void Clear();
+  /// A closed curve's trace ends where it started: remove that repeated last point (with its
+  /// provenance), since closed curves do not repeat their first point.
+  void DropRepeatedClosingPoint();
 };
 
 class CurveTracer

@@ -11,6 +11,27 @@ namespace boolsurf
 {
 
 //------------------------------------------------------------------------------
+void ForEachCurveCell(vtkPolyData* curves,
+  const std::function<void(vtkIdType cellId, vtkIdType n, const vtkIdType* ids, bool polygon)>&
+    visit)
+{
+  // vtkPolyData numbers cells vertices first, then lines, polygons, strips.
+  vtkIdType cellId = curves->GetNumberOfVerts();
+  for (const bool polygon : { false, true })
+  {
+    vtkCellArray* cells = polygon ? curves->GetPolys() : curves->GetLines();
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      visit(cellId, n, ids, polygon);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 bool ReadTracedCurves(vtkPolyData* curves,
   const TriangleMesh& mesh,
   std::vector<TracedCurve>& out,
@@ -35,15 +56,9 @@ bool ReadTracedCurves(vtkPolyData* curves,
   vtkDataArray* closedFlags = curves->GetCellData()->GetArray("Closed");
   const size_t before = problems.size();
 
-  auto readCells = [&](vtkCellArray* cells, vtkIdType firstCellId, bool polygon)
-  {
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    vtkIdType cellId = firstCellId;
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+  ForEachCurveCell(curves,
+    [&](vtkIdType cellId, vtkIdType n, const vtkIdType* ids, bool polygon)
     {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
       TracedCurve curve;
       curve.CurveId =
         curveIds ? static_cast<int>(curveIds->GetComponent(cellId, 0)) : static_cast<int>(cellId);
@@ -59,7 +74,7 @@ bool ReadTracedCurves(vtkPolyData* curves,
       {
         problems.push_back("curve " + std::to_string(curve.CurveId) + ": negative ShapeId " +
           std::to_string(curve.ShapeId));
-        continue;
+        return;
       }
       bool ok = true;
       for (vtkIdType i = 0; i < n; ++i)
@@ -82,11 +97,7 @@ bool ReadTracedCurves(vtkPolyData* curves,
       {
         out.push_back(std::move(curve));
       }
-    }
-  };
-  const vtkIdType firstLine = curves->GetNumberOfVerts();
-  readCells(curves->GetLines(), firstLine, false);
-  readCells(curves->GetPolys(), firstLine + curves->GetNumberOfLines(), true);
+    });
   return problems.size() == before;
 }
 

@@ -5,6 +5,9 @@
 
 #include "TracedCurve.h"
 
+#include <vtkType.h>
+
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -12,6 +15,12 @@ class vtkPolyData;
 
 namespace boolsurf
 {
+
+/// Calls `visit` for every line and polygon cell of `curves` (the cells that are curves), in
+/// cell-id order, with the cell's vtkPolyData id and point ids; `polygon` tells the two apart.
+void ForEachCurveCell(vtkPolyData* curves,
+  const std::function<void(vtkIdType cellId, vtkIdType n, const vtkIdType* ids, bool polygon)>&
+    visit);
 
 /// One TracedCurve per line/polygon cell. Cell data `ShapeId` (default: cell id), `CurveId`
 /// (default: cell id) and `Closed` (default: polygon cells and polylines whose last point id

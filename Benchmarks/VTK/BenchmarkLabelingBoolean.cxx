@@ -5,25 +5,16 @@
 #include "vtkBoolSurfArrangement.h"
 #include "vtkBoolSurfBoolean.h"
 #include "vtkBoolSurfLabeling.h"
+#include "vtkBoolSurfSceneReader.h"
 #include "vtkBoolSurfTraceCurves.h"
 
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
 #include <vtkDataArray.h>
-#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
-#include <vtkIdTypeArray.h>
-#include <vtkIntArray.h>
 #include <vtkNew.h>
-#include <vtkPLYReader.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 
 #include <benchmark/benchmark.h>
-#include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <map>
 #include <memory>
 
@@ -38,87 +29,6 @@ struct PreparedScene
   int Cells = 0;
 };
 
-// Control polygons from the scene's face/uv points, shapes and closedness.
-vtkSmartPointer<vtkPolyData> SceneCurves(const nlohmann::json& scene, vtkPolyData* mesh)
-{
-  auto curves = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkIdTypeArray> tri;
-  tri->SetName("TriangleId");
-  vtkNew<vtkDoubleArray> bary;
-  bary->SetName("Barycentric");
-  bary->SetNumberOfComponents(2);
-  for (const auto& p : scene["points"])
-  {
-    const vtkIdType f = p["face"].get<vtkIdType>();
-    const double u = p["uv"][0].get<double>(), v = p["uv"][1].get<double>();
-    const vtkIdType* ids;
-    vtkIdType n;
-    mesh->GetCellPoints(f, n, ids);
-    double a[3], b[3], c[3], x[3];
-    mesh->GetPoint(ids[0], a);
-    mesh->GetPoint(ids[1], b);
-    mesh->GetPoint(ids[2], c);
-    for (int k = 0; k < 3; ++k)
-    {
-      x[k] = (1 - u - v) * a[k] + u * b[k] + v * c[k];
-    }
-    points->InsertNextPoint(x);
-    tri->InsertNextValue(f);
-    bary->InsertNextTuple2(u, v);
-  }
-  const auto& polygons = scene["polygons"];
-  std::vector<int> shapeOf(polygons.size());
-  for (size_t i = 0; i < polygons.size(); ++i)
-  {
-    shapeOf[i] = static_cast<int>(i);
-  }
-  if (scene.contains("shapes"))
-  {
-    for (size_t s = 0; s < scene["shapes"].size(); ++s)
-    {
-      for (const auto& poly : scene["shapes"][s])
-      {
-        shapeOf[poly.get<size_t>()] = static_cast<int>(s);
-      }
-    }
-  }
-  vtkNew<vtkCellArray> lines, polys;
-  vtkNew<vtkIntArray> lineShapes, polyShapes;
-  for (size_t i = 0; i < polygons.size(); ++i)
-  {
-    if (polygons[i].size() < 2)
-    {
-      continue;
-    }
-    const bool closed = !scene.contains("are_closed") || scene["are_closed"][i].get<bool>();
-    vtkCellArray* cells = closed ? polys.GetPointer() : lines.GetPointer();
-    cells->InsertNextCell(static_cast<vtkIdType>(polygons[i].size()));
-    for (const auto& id : polygons[i])
-    {
-      cells->InsertCellPoint(id.get<vtkIdType>());
-    }
-    (closed ? polyShapes : lineShapes)->InsertNextValue(shapeOf[i]);
-  }
-  vtkNew<vtkIntArray> shapes;
-  shapes->SetName("ShapeId");
-  for (vtkIdType i = 0; i < lineShapes->GetNumberOfTuples(); ++i)
-  {
-    shapes->InsertNextValue(lineShapes->GetValue(i));
-  }
-  for (vtkIdType i = 0; i < polyShapes->GetNumberOfTuples(); ++i)
-  {
-    shapes->InsertNextValue(polyShapes->GetValue(i));
-  }
-  curves->SetPoints(points);
-  curves->SetLines(lines);
-  curves->SetPolys(polys);
-  curves->GetPointData()->AddArray(tri);
-  curves->GetPointData()->AddArray(bary);
-  curves->GetCellData()->AddArray(shapes);
-  return curves;
-}
-
 const PreparedScene& Prepare(const benchutil::SceneFile& file)
 {
   static std::map<std::string, std::unique_ptr<PreparedScene>> cache;
@@ -129,20 +39,19 @@ const PreparedScene& Prepare(const benchutil::SceneFile& file)
   }
   slot = std::make_unique<PreparedScene>();
   const std::string data = BOOLSURF_SHARED_DATA_DIR;
-  std::ifstream in(data + "/boolsurf-scenes/" + file.Scene);
-  const nlohmann::json scene = nlohmann::json::parse(in, nullptr, false);
-  if (scene.is_discarded() || !scene.contains("points"))
+  vtkNew<vtkBoolSurfSceneReader> reader;
+  reader->SetFileName((data + "/boolsurf-scenes/" + file.Scene).c_str());
+  reader->SetMeshFileName((data + "/meshes/" + file.Mesh).c_str());
+  reader->Update();
+  vtkPolyData* mesh = reader->GetOutput(0);
+  if (mesh->GetNumberOfCells() == 0 || reader->GetCurvesOutput()->GetNumberOfCells() == 0)
   {
     slot->Error = "cannot read scene " + file.Scene;
     return *slot;
   }
-  vtkNew<vtkPLYReader> reader;
-  reader->SetFileName((data + "/meshes/" + file.Mesh).c_str());
-  reader->Update();
-  vtkPolyData* mesh = reader->GetOutput();
   vtkNew<vtkBoolSurfTraceCurves> trace;
   trace->SetInputData(0, mesh);
-  trace->SetInputData(1, SceneCurves(scene, mesh));
+  trace->SetInputConnection(1, reader->GetOutputPort(1));
   vtkNew<vtkBoolSurfArrangement> arrangement;
   arrangement->SetInputData(0, mesh);
   arrangement->SetInputConnection(1, trace->GetOutputPort());
