@@ -12,7 +12,8 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
-#include <cstdint>
+#include <array>
+#include <tuple>
 
 vtkStandardNewMacro(vtkBoolSurf);
 
@@ -25,7 +26,43 @@ struct vtkBoolSurf::Internals
   vtkSmartPointer<vtkPolyData> Labeled;
   boolsurf::ArrangementFields Fields;
   boolsurf::LabelingResult Labels;
-  std::vector<double> LabeledKey; // what the labeled arrangement was computed from
+  /// What the labeled arrangement was computed from (the inputs by identity and time, and the
+  /// tracing and labeling properties).
+  struct Key
+  {
+    vtkPolyData* Surface = nullptr;
+    vtkMTimeType SurfaceTime = 0;
+    vtkPolyData* Curves = nullptr;
+    vtkMTimeType CurvesTime = 0;
+    int Resolution = 0;
+    double ProjectionTolerance = 0;
+    int ZeroCellMode = 0;
+    std::array<double, 3> ZeroCellPoint{};
+    int NumberOfThreads = 0;
+
+    bool operator==(const Key& o) const
+    {
+      return std::tie(this->Surface,
+               this->SurfaceTime,
+               this->Curves,
+               this->CurvesTime,
+               this->Resolution,
+               this->ProjectionTolerance,
+               this->ZeroCellMode,
+               this->ZeroCellPoint,
+               this->NumberOfThreads) ==
+        std::tie(o.Surface,
+          o.SurfaceTime,
+          o.Curves,
+          o.CurvesTime,
+          o.Resolution,
+          o.ProjectionTolerance,
+          o.ZeroCellMode,
+          o.ZeroCellPoint,
+          o.NumberOfThreads);
+    }
+  };
+  Key LabeledKey;
 };
 
 //------------------------------------------------------------------------------
@@ -75,18 +112,16 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   // 2-4. tracing, arrangement, labeling: reused while only the Boolean properties change.
   // Inputs and properties the labeled arrangement depends on; the surface's cached
   // conversion is keyed separately.
-  const std::vector<double> key = { static_cast<double>(surfaceInput->GetMTime()),
-    static_cast<double>(reinterpret_cast<std::uintptr_t>(surfaceInput)),
-    static_cast<double>(curvesInput ? curvesInput->GetMTime() : 0),
-    static_cast<double>(reinterpret_cast<std::uintptr_t>(curvesInput)),
-    static_cast<double>(this->Resolution),
+  const Internals::Key key{ surfaceInput,
+    surfaceInput->GetMTime(),
+    curvesInput,
+    curvesInput ? curvesInput->GetMTime() : 0,
+    this->Resolution,
     this->ProjectionTolerance,
-    static_cast<double>(this->ZeroCellMode),
-    this->ZeroCellPoint[0],
-    this->ZeroCellPoint[1],
-    this->ZeroCellPoint[2],
-    static_cast<double>(this->NumberOfThreads) };
-  if (!this->Internal->Labeled || key != this->Internal->LabeledKey)
+    this->ZeroCellMode,
+    { this->ZeroCellPoint[0], this->ZeroCellPoint[1], this->ZeroCellPoint[2] },
+    this->NumberOfThreads };
+  if (!this->Internal->Labeled || !(key == this->Internal->LabeledKey))
   {
     this->Internal->Labeled = nullptr;
     auto labeled = vtkSmartPointer<vtkPolyData>::New();

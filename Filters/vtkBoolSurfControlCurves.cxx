@@ -1,5 +1,7 @@
 #include "vtkBoolSurfControlCurves.h"
 
+#include "vtkBoolSurfTracedCurves.h"
+
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
@@ -54,8 +56,7 @@ SurfacePoint ToBarycentric(const TriangleMesh& mesh, int t, const Vec3& x)
 
 //------------------------------------------------------------------------------
 void ReadControlCurves(vtkPolyData* curves,
-  vtkPolyData* surface,
-  vtkStaticCellLocator* locator,
+  const std::function<vtkStaticCellLocator*()>& locator,
   const TriangleMesh& mesh,
   const ControlCurveOptions& options,
   std::vector<ControlCurve>& out,
@@ -68,7 +69,6 @@ void ReadControlCurves(vtkPolyData* curves,
     problems.push_back("the curves input holds no line or polygon cell");
     return;
   }
-  (void)surface;
   if (curves->GetNumberOfVerts() + curves->GetNumberOfStrips() > 0)
   {
     notes.push_back("ignored " +
@@ -85,19 +85,10 @@ void ReadControlCurves(vtkPolyData* curves,
     notes.push_back("point data TriangleId/Barycentric is incomplete (both arrays needed, "
                     "Barycentric with 2 components): control points are projected instead");
   }
-  const vtkIdType firstLine = curves->GetNumberOfVerts();
-  const vtkIdType firstPoly = firstLine + curves->GetNumberOfLines();
   vtkNew<vtkGenericCell> cell;
-
-  auto readCells = [&](vtkCellArray* cells, vtkIdType firstCellId, bool polygon)
-  {
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    vtkIdType cellId = firstCellId;
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+  ForEachCurveCell(curves,
+    [&](vtkIdType cellId, vtkIdType n, const vtkIdType* ids, bool polygon)
     {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
       ControlCurve curve;
       curve.CurveId = static_cast<int>(cellId);
       curve.ShapeId =
@@ -107,13 +98,13 @@ void ReadControlCurves(vtkPolyData* curves,
       {
         problems.push_back(CurveLabel(curve.CurveId) + ": ShapeId " +
           std::to_string(curve.ShapeId) + " is negative");
-        continue;
+        return;
       }
       if (type != 0 && type != 1)
       {
         problems.push_back(CurveLabel(curve.CurveId) + ": CurveType " + std::to_string(type) +
           " is neither 0 (geodesic polygon) nor 1 (cubic Bezier)");
-        continue;
+        return;
       }
       curve.Type = static_cast<CurveType>(type);
       curve.Closed = polygon;
@@ -170,7 +161,7 @@ void ReadControlCurves(vtkPolyData* curves,
           }
           vtkIdType triangle = -1;
           int subId = 0;
-          locator->FindClosestPoint(x, closest, cell, triangle, subId, dist2);
+          locator()->FindClosestPoint(x, closest, cell, triangle, subId, dist2);
           if (triangle < 0)
           {
             problems.push_back(
@@ -194,14 +185,14 @@ void ReadControlCurves(vtkPolyData* curves,
       }
       if (!ok)
       {
-        continue;
+        return;
       }
       const int count = static_cast<int>(curve.Points.size());
       if (count < 2)
       {
         problems.push_back(CurveLabel(curve.CurveId) + " has " + std::to_string(count) +
           " control point(s); a curve needs at least 2");
-        continue;
+        return;
       }
       if (curve.Type == CurveType::CubicBezier)
       {
@@ -212,14 +203,11 @@ void ReadControlCurves(vtkPolyData* curves,
             std::string(curve.Closed ? "closed" : "open") + " cubic Bezier spline needs " +
             (curve.Closed ? "3n" : "3n+1") + " control points (anchor, handle, handle, " +
             "anchor, ...), it has " + std::to_string(count));
-          continue;
+          return;
         }
       }
       out.push_back(std::move(curve));
-    }
-  };
-  readCells(curves->GetLines(), firstLine, false);
-  readCells(curves->GetPolys(), firstPoly, true);
+    });
 }
 
 } // namespace boolsurf

@@ -8,6 +8,7 @@
 #include "CurveTracer.h" // for CurveType
 #include "SurfacePoint.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,12 +35,12 @@ struct ControlCurveOptions
 };
 
 /// Reads every line and polygon cell of `curves` (vertex cells and strips are ignored with a
-/// note in `problems`). Each problem met (named by curve id and point id) is appended to
-/// `problems`; the curve it concerns is left out of `out`. `surface` must hold triangles
-/// only, with the same ids as `mesh`; `locator` is built on it.
+/// note in `notes`). Each problem met (named by curve id and point id) is appended to
+/// `problems`; the curve it concerns is left out of `out`. `locator` gives a closest-cell
+/// locator on the triangles of `mesh` (same ids); it is asked for only when a control point
+/// must be projected, so curves given exactly never build one.
 void ReadControlCurves(vtkPolyData* curves,
-  vtkPolyData* surface,
-  vtkStaticCellLocator* locator,
+  const std::function<vtkStaticCellLocator*()>& locator,
   const TriangleMesh& mesh,
   const ControlCurveOptions& options,
   std::vector<ControlCurve>& out,

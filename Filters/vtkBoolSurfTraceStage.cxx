@@ -131,9 +131,9 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   ControlCurveOptions controlOptions;
   controlOptions.MaximumDistance = options.ProjectionTolerance * BoundsDiagonal(surface.Triangles);
   std::vector<ControlCurve> controls;
-  ReadControlCurves(controlCurves,
-    surface.Triangles,
-    cache.GetLocator(),
+  ReadControlCurves(
+    controlCurves,
+    [&cache] { return cache.GetLocator(); },
     mesh,
     controlOptions,
     controls,
