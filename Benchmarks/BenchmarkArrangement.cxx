@@ -9,11 +9,11 @@
 //  * EditTime*: the same curves (an icosphere's plane sections) on a ~100k and a ~1M mesh.
 // Curve construction is outside the timed loop. The argument is the thread count; per-stage
 // milliseconds are reported as counters (averages over iterations, and minima: min_*).
-#include "Arrangement.h"
-#include "CurveTracer.h"
-#include "PlyReader.h"
-#include "ProceduralMeshes.h"
-#include "SyntheticCurves.h"
+#include "Arrangement/Arrangement.h"
+#include "Geodesic/CurveTracer.h"
+#include "Mesh/PlyReader.h"
+#include "Mesh/ProceduralMeshes.h"
+#include "Support/SyntheticCurves.h"
 
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp> // header-only (system include)

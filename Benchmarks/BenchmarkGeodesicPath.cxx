@@ -5,8 +5,8 @@
 // The default solver seeds with the exact shortest edge path (bidirectional A*); the
 // *_dual_strip runs seed with the greedy dual A* strip instead (faster, but without the
 // "never longer than the edge path" guarantee) for comparison.
-#include "GeodesicPath.h"
-#include "PlyReader.h"
+#include "Geodesic/GeodesicPath.h"
+#include "Mesh/PlyReader.h"
 
 #include <benchmark/benchmark.h>
 

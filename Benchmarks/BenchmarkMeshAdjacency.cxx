@@ -1,8 +1,8 @@
 // Adjacency (the dual graph of adjacencies) and topology build times on the large meshes of
 // the shared collection. Run: BoolSurfBenchmarks --benchmark_filter=Adjacency
-#include "MeshTopology.h"
-#include "PlyReader.h"
-#include "TriangleMesh.h"
+#include "Mesh/MeshTopology.h"
+#include "Mesh/PlyReader.h"
+#include "Mesh/TriangleMesh.h"
 
 #include <benchmark/benchmark.h>
 

@@ -4,9 +4,9 @@
 #ifndef vtkBoolSurfArrangementOutput_h
 #define vtkBoolSurfArrangementOutput_h
 
-#include "Arrangement.h"
-#include "CellLabeling.h"
-#include "RegionBoundary.h"
+#include "Arrangement/Arrangement.h"
+#include "Labeling/CellLabeling.h"
+#include "Selection/RegionBoundary.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
 
 #include <string>

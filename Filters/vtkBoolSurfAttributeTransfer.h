@@ -5,7 +5,7 @@
 #ifndef vtkBoolSurfAttributeTransfer_h
 #define vtkBoolSurfAttributeTransfer_h
 
-#include "SurfacePoint.h"
+#include "Mesh/SurfacePoint.h"
 
 #include <array>
 #include <vector>

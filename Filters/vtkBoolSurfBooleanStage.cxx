@@ -1,6 +1,6 @@
 #include "vtkBoolSurfBooleanStage.h"
 
-#include "RegionBoundary.h"
+#include "Selection/RegionBoundary.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>

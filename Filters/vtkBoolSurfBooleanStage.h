@@ -3,7 +3,7 @@
 #ifndef vtkBoolSurfBooleanStage_h
 #define vtkBoolSurfBooleanStage_h
 
-#include "BooleanSelection.h"
+#include "Selection/BooleanSelection.h"
 #include "vtkBoolSurfArrangementOutput.h"
 
 #include <string>

@@ -5,8 +5,8 @@
 #ifndef vtkBoolSurfControlCurves_h
 #define vtkBoolSurfControlCurves_h
 
-#include "CurveTracer.h" // for CurveType
-#include "SurfacePoint.h"
+#include "Geodesic/CurveTracer.h" // for CurveType
+#include "Mesh/SurfacePoint.h"
 
 #include <functional>
 #include <string>

@@ -3,7 +3,7 @@
 #ifndef vtkBoolSurfLabelingStage_h
 #define vtkBoolSurfLabelingStage_h
 
-#include "CellLabeling.h"
+#include "Labeling/CellLabeling.h"
 #include "vtkBoolSurfArrangementOutput.h"
 
 #include <string>

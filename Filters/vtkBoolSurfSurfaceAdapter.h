@@ -8,9 +8,9 @@
 #ifndef vtkBoolSurfSurfaceAdapter_h
 #define vtkBoolSurfSurfaceAdapter_h
 
-#include "MeshTopology.h"
-#include "SurfaceCheck.h"
-#include "TriangleMesh.h"
+#include "Mesh/MeshTopology.h"
+#include "Mesh/SurfaceCheck.h"
+#include "Mesh/TriangleMesh.h"
 
 #include <vtkSmartPointer.h>
 

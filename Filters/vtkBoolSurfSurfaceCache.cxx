@@ -1,6 +1,6 @@
 #include "vtkBoolSurfSurfaceCache.h"
 
-#include "CurveTracer.h"
+#include "Geodesic/CurveTracer.h"
 
 #include <vtkPolyData.h>
 #include <vtkStaticCellLocator.h>

@@ -3,7 +3,7 @@
 #ifndef vtkBoolSurfTraceStage_h
 #define vtkBoolSurfTraceStage_h
 
-#include "CurveTracer.h"
+#include "Geodesic/CurveTracer.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
 #include <string>

@@ -3,7 +3,7 @@
 #ifndef vtkBoolSurfTracedCurves_h
 #define vtkBoolSurfTracedCurves_h
 
-#include "TracedCurve.h"
+#include "Geodesic/TracedCurve.h"
 
 #include <vtkType.h>
 

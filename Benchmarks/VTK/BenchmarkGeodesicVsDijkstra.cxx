@@ -10,7 +10,7 @@
 // length_ratio_max / length_ratio_mean (our length over Dijkstra's edge-path length: never above
 // 1), ours_setup_s (TriangleMesh adjacency and solver construction), ours_landmarks_s and
 // ours_landmarks_MB (the edge-path search's landmark table, built once per mesh).
-#include "GeodesicPath.h"
+#include "Geodesic/GeodesicPath.h"
 
 #include <vtkCellArray.h>
 #include <vtkDijkstraGraphGeodesicPath.h>

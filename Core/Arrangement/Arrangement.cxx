@@ -1,8 +1,8 @@
-#include "Arrangement.h"
+#include "Arrangement/Arrangement.h"
 
-#include "SegmentIntersection.h"
-#include "TriangleRefinement.h"
-#include "TriangleSegments.h"
+#include "Arrangement/SegmentIntersection.h"
+#include "Arrangement/TriangleRefinement.h"
+#include "Arrangement/TriangleSegments.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>

@@ -15,8 +15,8 @@
 #ifndef boolsurf_Arrangement_h
 #define boolsurf_Arrangement_h
 
-#include "CellPartition.h"
-#include "TracedCurve.h"
+#include "Arrangement/CellPartition.h"
+#include "Geodesic/TracedCurve.h"
 
 #include <string>
 #include <vector>

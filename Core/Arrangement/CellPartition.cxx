@@ -1,4 +1,4 @@
-#include "CellPartition.h"
+#include "Arrangement/CellPartition.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

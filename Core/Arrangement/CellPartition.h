@@ -18,8 +18,8 @@
 #ifndef boolsurf_CellPartition_h
 #define boolsurf_CellPartition_h
 
-#include "SurfacePoint.h"
-#include "TracedCurve.h"
+#include "Geodesic/TracedCurve.h"
+#include "Mesh/SurfacePoint.h"
 
 #include <array>
 #include <cstdint>

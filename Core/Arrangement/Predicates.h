@@ -9,7 +9,7 @@
 #ifndef boolsurf_Predicates_h
 #define boolsurf_Predicates_h
 
-#include "Vec3.h"
+#include "Mesh/Vec3.h"
 
 namespace boolsurf
 {

@@ -1,6 +1,6 @@
-#include "SegmentIntersection.h"
+#include "Arrangement/SegmentIntersection.h"
 
-#include "Predicates.h"
+#include "Arrangement/Predicates.h"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 #ifndef boolsurf_SegmentIntersection_h
 #define boolsurf_SegmentIntersection_h
 
-#include "TriangleSegments.h"
+#include "Arrangement/TriangleSegments.h"
 
 #include <array>
 #include <string>

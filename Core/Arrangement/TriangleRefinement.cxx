@@ -1,6 +1,6 @@
-#include "TriangleRefinement.h"
+#include "Arrangement/TriangleRefinement.h"
 
-#include "Predicates.h"
+#include "Arrangement/Predicates.h"
 
 #include <algorithm>
 #include <cstdint>

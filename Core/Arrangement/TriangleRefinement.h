@@ -17,7 +17,7 @@
 #ifndef boolsurf_TriangleRefinement_h
 #define boolsurf_TriangleRefinement_h
 
-#include "SegmentIntersection.h"
+#include "Arrangement/SegmentIntersection.h"
 
 namespace boolsurf
 {

@@ -1,6 +1,6 @@
-#include "TriangleSegments.h"
+#include "Arrangement/TriangleSegments.h"
 
-#include "Predicates.h"
+#include "Arrangement/Predicates.h"
 
 #include <algorithm>
 #include <cmath>

@@ -17,7 +17,7 @@
 #ifndef boolsurf_TriangleSegments_h
 #define boolsurf_TriangleSegments_h
 
-#include "TracedCurve.h"
+#include "Geodesic/TracedCurve.h"
 
 #include <string>
 #include <unordered_map>

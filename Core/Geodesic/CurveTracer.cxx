@@ -1,4 +1,4 @@
-#include "CurveTracer.h"
+#include "Geodesic/CurveTracer.h"
 
 #include <algorithm>
 

@@ -9,9 +9,9 @@
 #ifndef boolsurf_CurveTracer_h
 #define boolsurf_CurveTracer_h
 
-#include "GeodesicBezier.h"
-#include "GeodesicPath.h"
-#include "TracedCurve.h"
+#include "Geodesic/GeodesicBezier.h"
+#include "Geodesic/GeodesicPath.h"
+#include "Geodesic/TracedCurve.h"
 
 #include <vector>
 

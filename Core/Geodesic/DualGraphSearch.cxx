@@ -1,4 +1,4 @@
-#include "DualGraphSearch.h"
+#include "Geodesic/DualGraphSearch.h"
 
 #include <algorithm>
 #include <functional>

@@ -11,7 +11,7 @@
 #ifndef boolsurf_DualGraphSearch_h
 #define boolsurf_DualGraphSearch_h
 
-#include "TriangleMesh.h"
+#include "Mesh/TriangleMesh.h"
 
 #include <cstdint>
 #include <utility>

@@ -1,4 +1,4 @@
-#include "EdgeGraphSearch.h"
+#include "Geodesic/EdgeGraphSearch.h"
 
 #include <algorithm>
 #include <cmath>

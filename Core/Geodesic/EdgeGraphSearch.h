@@ -33,7 +33,7 @@
 #ifndef boolsurf_EdgeGraphSearch_h
 #define boolsurf_EdgeGraphSearch_h
 
-#include "TriangleMesh.h"
+#include "Mesh/TriangleMesh.h"
 
 #include <algorithm>
 #include <cstddef>

@@ -1,4 +1,4 @@
-#include "GeodesicBezier.h"
+#include "Geodesic/GeodesicBezier.h"
 
 namespace boolsurf
 {

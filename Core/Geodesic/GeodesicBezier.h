@@ -12,7 +12,7 @@
 #ifndef boolsurf_GeodesicBezier_h
 #define boolsurf_GeodesicBezier_h
 
-#include "GeodesicPath.h"
+#include "Geodesic/GeodesicPath.h"
 
 #include <array>
 #include <vector>

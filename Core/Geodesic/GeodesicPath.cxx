@@ -1,4 +1,4 @@
-#include "GeodesicPath.h"
+#include "Geodesic/GeodesicPath.h"
 
 #include <algorithm>
 #include <cmath>

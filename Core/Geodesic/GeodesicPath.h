@@ -24,9 +24,9 @@
 #ifndef boolsurf_GeodesicPath_h
 #define boolsurf_GeodesicPath_h
 
-#include "DualGraphSearch.h"
-#include "EdgeGraphSearch.h"
-#include "SurfacePoint.h"
+#include "Geodesic/DualGraphSearch.h"
+#include "Geodesic/EdgeGraphSearch.h"
+#include "Mesh/SurfacePoint.h"
 
 #include <array>
 #include <cstdint>

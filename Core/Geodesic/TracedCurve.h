@@ -9,7 +9,7 @@
 #ifndef boolsurf_TracedCurve_h
 #define boolsurf_TracedCurve_h
 
-#include "SurfacePoint.h"
+#include "Mesh/SurfacePoint.h"
 
 #include <vector>
 

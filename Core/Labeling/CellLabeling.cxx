@@ -1,4 +1,4 @@
-#include "CellLabeling.h"
+#include "Labeling/CellLabeling.h"
 
 #include <algorithm>
 #include <climits>

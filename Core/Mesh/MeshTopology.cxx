@@ -1,4 +1,4 @@
-#include "MeshTopology.h"
+#include "Mesh/MeshTopology.h"
 
 #include <algorithm>
 

@@ -8,7 +8,7 @@
 #ifndef boolsurf_MeshTopology_h
 #define boolsurf_MeshTopology_h
 
-#include "TriangleMesh.h"
+#include "Mesh/TriangleMesh.h"
 
 #include <vector>
 

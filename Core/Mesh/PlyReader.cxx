@@ -1,4 +1,4 @@
-#include "PlyReader.h"
+#include "Mesh/PlyReader.h"
 
 #include <cstdint>
 #include <cstring>

@@ -6,7 +6,7 @@
 #ifndef boolsurf_PlyReader_h
 #define boolsurf_PlyReader_h
 
-#include "ProceduralMeshes.h"
+#include "Mesh/ProceduralMeshes.h"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "ProceduralMeshes.h"
+#include "Mesh/ProceduralMeshes.h"
 
 #include <cmath>
 #include <map>

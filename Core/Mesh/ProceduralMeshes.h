@@ -4,7 +4,7 @@
 #ifndef boolsurf_ProceduralMeshes_h
 #define boolsurf_ProceduralMeshes_h
 
-#include "Vec3.h"
+#include "Mesh/Vec3.h"
 
 #include <array>
 #include <cstdint>

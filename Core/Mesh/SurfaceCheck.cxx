@@ -1,4 +1,4 @@
-#include "SurfaceCheck.h"
+#include "Mesh/SurfaceCheck.h"
 
 #include <algorithm>
 #include <sstream>

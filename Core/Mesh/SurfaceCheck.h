@@ -7,8 +7,8 @@
 #ifndef boolsurf_SurfaceCheck_h
 #define boolsurf_SurfaceCheck_h
 
-#include "MeshTopology.h"
-#include "TriangleMesh.h"
+#include "Mesh/MeshTopology.h"
+#include "Mesh/TriangleMesh.h"
 
 #include <string>
 #include <vector>

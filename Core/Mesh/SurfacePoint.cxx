@@ -1,4 +1,4 @@
-#include "SurfacePoint.h"
+#include "Mesh/SurfacePoint.h"
 
 #include <algorithm>
 #include <cmath>

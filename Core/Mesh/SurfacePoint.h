@@ -12,7 +12,7 @@
 #ifndef boolsurf_SurfacePoint_h
 #define boolsurf_SurfacePoint_h
 
-#include "TriangleMesh.h"
+#include "Mesh/TriangleMesh.h"
 
 #include <string>
 #include <vector>

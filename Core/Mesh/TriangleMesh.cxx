@@ -1,4 +1,4 @@
-#include "TriangleMesh.h"
+#include "Mesh/TriangleMesh.h"
 
 #include <algorithm>
 #include <utility>

@@ -14,7 +14,7 @@
 #ifndef boolsurf_TriangleMesh_h
 #define boolsurf_TriangleMesh_h
 
-#include "Vec3.h"
+#include "Mesh/Vec3.h"
 
 #include <array>
 #include <vector>

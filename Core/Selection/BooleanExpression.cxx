@@ -1,4 +1,4 @@
-#include "BooleanExpression.h"
+#include "Selection/BooleanExpression.h"
 
 #include <algorithm>
 #include <cctype>

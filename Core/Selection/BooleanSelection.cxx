@@ -1,4 +1,4 @@
-#include "BooleanSelection.h"
+#include "Selection/BooleanSelection.h"
 
 namespace boolsurf
 {

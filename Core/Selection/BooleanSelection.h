@@ -6,8 +6,8 @@
 #ifndef boolsurf_BooleanSelection_h
 #define boolsurf_BooleanSelection_h
 
-#include "BooleanExpression.h"
-#include "CellLabeling.h"
+#include "Labeling/CellLabeling.h"
+#include "Selection/BooleanExpression.h"
 
 #include <string>
 #include <vector>

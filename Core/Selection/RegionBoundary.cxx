@@ -1,4 +1,4 @@
-#include "RegionBoundary.h"
+#include "Selection/RegionBoundary.h"
 
 #include <unordered_map>
 

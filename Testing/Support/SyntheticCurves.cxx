@@ -1,6 +1,6 @@
-#include "SyntheticCurves.h"
+#include "Support/SyntheticCurves.h"
 
-#include "Predicates.h"
+#include "Arrangement/Predicates.h"
 
 #include <algorithm>
 #include <cmath>

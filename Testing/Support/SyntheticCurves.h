@@ -10,7 +10,7 @@
 #ifndef boolsurf_SyntheticCurves_h
 #define boolsurf_SyntheticCurves_h
 
-#include "TracedCurve.h"
+#include "Geodesic/TracedCurve.h"
 
 #include <memory>
 #include <vector>

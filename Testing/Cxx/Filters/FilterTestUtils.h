@@ -2,7 +2,7 @@
 #ifndef FilterTestUtils_h
 #define FilterTestUtils_h
 
-#include "ProceduralMeshes.h"
+#include "Mesh/ProceduralMeshes.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>

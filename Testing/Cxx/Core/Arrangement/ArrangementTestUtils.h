@@ -3,10 +3,10 @@
 #ifndef boolsurf_ArrangementTestUtils_h
 #define boolsurf_ArrangementTestUtils_h
 
-#include "Arrangement.h"
-#include "ProceduralMeshes.h"
-#include "SyntheticCurves.h"
-#include "TriangleMesh.h"
+#include "Arrangement/Arrangement.h"
+#include "Mesh/ProceduralMeshes.h"
+#include "Mesh/TriangleMesh.h"
+#include "Support/SyntheticCurves.h"
 
 #include <gtest/gtest.h>
 

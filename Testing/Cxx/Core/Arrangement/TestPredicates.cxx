@@ -1,4 +1,4 @@
-#include "Predicates.h"
+#include "Arrangement/Predicates.h"
 
 #include <gtest/gtest.h>
 

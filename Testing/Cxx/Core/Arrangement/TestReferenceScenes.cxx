@@ -6,10 +6,10 @@
 //
 // Set BOOLSURF_UPDATE_SCENE_CELLS=1 to rewrite that file from the current results (then review
 // the diff). The test skips when BOOLSURF_SHARED_DATA (set by ctest) is unset or missing.
-#include "Arrangement.h"
-#include "CurveTracer.h"
-#include "PlyReader.h"
-#include "TriangleMesh.h"
+#include "Arrangement/Arrangement.h"
+#include "Geodesic/CurveTracer.h"
+#include "Mesh/PlyReader.h"
+#include "Mesh/TriangleMesh.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -70,7 +70,14 @@ std::string SourceDir()
   {
     return dir;
   }
-  return fs::path(__FILE__).parent_path().parent_path().parent_path().parent_path().string();
+  // Testing/Cxx/Core/Arrangement/this file -> the source tree
+  return fs::path(__FILE__)
+    .parent_path()
+    .parent_path()
+    .parent_path()
+    .parent_path()
+    .parent_path()
+    .string();
 }
 
 struct SceneResult

@@ -1,6 +1,6 @@
 // Curve tracing: geodesic polygons with provenance, and the named errors users see.
-#include "CurveTracer.h"
-#include "ProceduralMeshes.h"
+#include "Geodesic/CurveTracer.h"
+#include "Mesh/ProceduralMeshes.h"
 
 #include <gtest/gtest.h>
 

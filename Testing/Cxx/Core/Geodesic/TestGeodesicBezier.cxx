@@ -1,8 +1,8 @@
 // Geodesic Bezier splines: on a flat mesh they are planar cubic Beziers; on curved meshes they
 // interpolate their anchors, close when closed, and keep the tracing invariants.
-#include "CurveTracer.h"
-#include "GeodesicBezier.h"
-#include "ProceduralMeshes.h"
+#include "Geodesic/CurveTracer.h"
+#include "Geodesic/GeodesicBezier.h"
+#include "Mesh/ProceduralMeshes.h"
 
 #include <gtest/gtest.h>
 

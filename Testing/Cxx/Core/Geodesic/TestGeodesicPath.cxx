@@ -1,8 +1,8 @@
 // Geodesic paths: straight on flat meshes, unfolded-straight on developable ones, converging
 // to great circles on spheres, locally shortest everywhere, and clear errors on bad input.
-#include "GeodesicPath.h"
-#include "PlyReader.h"
-#include "ProceduralMeshes.h"
+#include "Geodesic/GeodesicPath.h"
+#include "Mesh/PlyReader.h"
+#include "Mesh/ProceduralMeshes.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Topology (components, boundary loops, Euler characteristic, genus) on procedural meshes and
 // on every mesh of the shared collection, compared with its manifest.
-#include "MeshTopology.h"
-#include "PlyReader.h"
-#include "ProceduralMeshes.h"
-#include "SurfaceCheck.h"
+#include "Mesh/MeshTopology.h"
+#include "Mesh/PlyReader.h"
+#include "Mesh/ProceduralMeshes.h"
+#include "Mesh/SurfaceCheck.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

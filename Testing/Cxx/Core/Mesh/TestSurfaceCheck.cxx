@@ -1,7 +1,7 @@
 // Each bad-input case gets a named problem (kind + ids in the message), never a crash.
-#include "MeshTopology.h"
-#include "ProceduralMeshes.h"
-#include "SurfaceCheck.h"
+#include "Mesh/MeshTopology.h"
+#include "Mesh/ProceduralMeshes.h"
+#include "Mesh/SurfaceCheck.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "ProceduralMeshes.h"
-#include "TriangleMesh.h"
+#include "Mesh/ProceduralMeshes.h"
+#include "Mesh/TriangleMesh.h"
 
 #include <gtest/gtest.h>
 
