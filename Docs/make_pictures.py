@@ -47,7 +47,7 @@ control = curves_source([(surface_circle(front, (0.0, -0.035), 0.06), 0),
                          (tube_loop(0.22, False), 2), (tube_loop(0.30, True), 2)])
 traced = TraceSurfaceCurves(Surface=eight, Curves=control)
 arrangement = SurfaceArrangement(Surface=eight, Curves=traced)
-labels = LabelArrangementCells(Input=arrangement)
+labels = LabelArrangementCells(Input=arrangement, ColorShape=2)
 boolean = SurfaceBoolean(Input=labels, Operation="Expression", Expression="(S0 ^ S1) | S2")
 view = dict(view_axis=1, view_up=(0, 0, 1), size=size)
 
@@ -55,7 +55,7 @@ render_result(out("TraceSurfaceCurves"), eight, traced, curves=traced, **view)
 render_result(out("SurfaceArrangement"), eight, arrangement, boundary=OutputPort(arrangement, 1),
               color_by="ArrangementCell", **view)
 render_result(out("LabelArrangementCells"), eight, labels, boundary=OutputPort(arrangement, 1),
-              color_by="Labels", **view)
+              color_by="ShapeLabel", **view)
 render_result(out("SurfaceBoolean"), eight, boolean, boundary=OutputPort(boolean, 1),
               curves=traced, **view)
 

@@ -44,10 +44,10 @@ xor = BoolSurf(Surface=mesh, Curves=control, Operation="SymmetricDifference", Sh
                ShapeB=-1, FillRule="NonZero")
 xor.UpdatePipeline()
 region = sm.Fetch(xor)
-labels = region.GetCellData().GetArray("Labels")
-print("%d shapes, xor region: %d triangles, area %.4f of %.4f; labels per cell: %d" % (
+labels = region.GetFieldData().GetArray("CellLabels")  # one row per arrangement cell
+print("%d shapes, xor region: %d triangles, area %.4f of %.4f; %d cells x %d shapes" % (
     args.shapes, region.GetNumberOfCells(), area(xor), area(mesh),
-    labels.GetNumberOfComponents() if labels else 0))
+    labels.GetNumberOfTuples() if labels else 0, labels.GetNumberOfComponents() if labels else 0))
 
 save_result(xor, os.path.join(args.output, "bunny_xor.vtp"))
 traced = TraceSurfaceCurves(Surface=mesh, Curves=control)

@@ -1,31 +1,62 @@
 #include "vtkBoolSurf.h"
 
-#include "vtkBoolSurfArrangementOutput.h"
+#include "Labeling/ArrangementLabelingInput.h"
+#include "Selection/RegionExtraction.h"
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
+#include "vtkBoolSurfRegionOutput.h"
 #include "vtkBoolSurfTraceStage.h"
 
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkGenericCell.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
+#include <vtkStaticCellLocator.h>
 
 #include <array>
+#include <chrono>
 #include <tuple>
 
 vtkStandardNewMacro(vtkBoolSurf);
 
+namespace
+{
+using Clock = std::chrono::steady_clock;
+double Milliseconds(Clock::time_point from, Clock::time_point to)
+{
+  return std::chrono::duration<double, std::milli>(to - from).count();
+}
+} // namespace
+
+// The one-step filter works on Core data end to end: the refined surface is never written as a
+// whole in VTK form, labels stay a cells x shapes table, and only the selected region becomes
+// polydata. Everything below is kept between updates, so an edit reuses every buffer.
 struct vtkBoolSurf::Internals
 {
   boolsurf::vtkSurfaceCache Surface;
 
   // The labeled arrangement of the last run, reused when only the Boolean properties
   // (operation, operands, expression, fill rule) change.
-  vtkSmartPointer<vtkPolyData> Labeled;
-  boolsurf::ArrangementFields Fields;
+  bool HasLabels = false;
+  std::vector<boolsurf::TracedCurve> Curves;
+  boolsurf::Arrangement Arrangement;
   boolsurf::LabelingResult Labels;
+  std::vector<boolsurf::BoundaryPatch> Patches;
+  std::vector<int> CellOffsets, CellTriangles; ///< triangles of each cell
+  // Selection buffers.
+  std::vector<char> Selected;
+  std::vector<int> RegionTriangles;
+  boolsurf::RegionExtractor Extractor;
+  boolsurf::RegionMesh Region;
+  /// Milliseconds of the stages of the last labeled arrangement (tracing, labeling, cell lists).
+  double TraceTime = 0, LabelingTime = 0, CellListTime = 0;
+
   /// What the labeled arrangement was computed from (the inputs by identity and time, and the
   /// tracing and labeling properties).
   struct Key
@@ -112,6 +143,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   // 2-4. tracing, arrangement, labeling: reused while only the Boolean properties change.
   // Inputs and properties the labeled arrangement depends on; the surface's cached
   // conversion is keyed separately.
+  Internals& in = *this->Internal;
   const Internals::Key key{ surfaceInput,
     surfaceInput->GetMTime(),
     curvesInput,
@@ -121,34 +153,57 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
     this->ZeroCellMode,
     { this->ZeroCellPoint[0], this->ZeroCellPoint[1], this->ZeroCellPoint[2] },
     this->NumberOfThreads };
-  if (!this->Internal->Labeled || !(key == this->Internal->LabeledKey))
+  const bool reuse = in.HasLabels && key == in.LabeledKey;
+  if (!reuse)
   {
-    this->Internal->Labeled = nullptr;
-    auto labeled = vtkSmartPointer<vtkPolyData>::New();
-    if (!this->LabelCurves(*surface, curvesInput, labeled, error))
+    in.HasLabels = false;
+    if (!this->LabelCurves(*surface, curvesInput, error))
     {
       vtkErrorMacro(<< error);
       return 0;
     }
-    this->Internal->Labeled = labeled;
-    this->Internal->LabeledKey = key;
+    in.HasLabels = true;
+    in.LabeledKey = key;
   }
   this->UpdateProgress(0.8);
 
-  // 5. Boolean
+  // 5. Boolean: once per cell, then only the region's triangles are written.
+  const Clock::time_point selectStart = Clock::now();
   const boolsurf::BooleanRequest request = boolsurf::MakeBooleanRequest(
     this->Operation, this->ShapeA, this->ShapeB, this->Expression, this->FillRule);
-  if (!boolsurf::ComputeBoolean(this->Internal->Labeled,
-        this->Internal->Fields,
-        this->Internal->Labels,
-        request,
-        region,
-        boundary,
-        error))
+  std::string text;
+  if (!boolsurf::SelectRequestedCells(in.Labels, request, in.Selected, text, error))
   {
     vtkErrorMacro(<< error);
     return 0;
   }
+  boolsurf::RegionExtractor::SelectedTriangles(
+    in.Selected, in.CellOffsets, in.CellTriangles, in.RegionTriangles);
+  const boolsurf::Arrangement& arr = in.Arrangement;
+  in.Extractor.Extract(
+    in.RegionTriangles,
+    static_cast<int>(arr.Positions.size()),
+    [&](int t, int k) { return arr.Triangles[t][k]; },
+    in.Region);
+  const Clock::time_point selected = Clock::now();
+  boolsurf::WriteRegion(*surface, arr, in.Region, region);
+  boolsurf::WriteBoundary(
+    boolsurf::ExtractRegionBoundary(in.Patches, in.Selected),
+    [&](int p, double x[3])
+    {
+      x[0] = arr.Positions[p].x;
+      x[1] = arr.Positions[p].y;
+      x[2] = arr.Positions[p].z;
+    },
+    [&](int p) { return arr.PointSurface[p]; },
+    true,
+    boundary);
+  this->WriteFieldData(text,
+    reuse,
+    Milliseconds(selectStart, selected),
+    Milliseconds(selected, Clock::now()),
+    region,
+    boundary);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -156,18 +211,18 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
 //------------------------------------------------------------------------------
 bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   vtkPolyData* curvesInput,
-  vtkPolyData* labeled,
   std::string& error)
 {
+  Internals& in = *this->Internal;
   std::vector<std::string> problems;
   // 2. tracing
-  std::vector<boolsurf::TracedCurve> traced;
+  const Clock::time_point traceStart = Clock::now();
   boolsurf::TraceOptions traceOptions;
   traceOptions.Resolution = this->Resolution;
   traceOptions.ProjectionTolerance = this->ProjectionTolerance;
   std::vector<std::string> notes;
   const bool ok = boolsurf::TraceControlCurves(
-    this->Internal->Surface, curvesInput, traceOptions, nullptr, traced, nullptr, problems, notes);
+    in.Surface, curvesInput, traceOptions, nullptr, in.Curves, nullptr, problems, notes);
   for (const std::string& n : notes)
   {
     vtkWarningMacro(<< n);
@@ -177,6 +232,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     error = "Cannot trace the curves:" + boolsurf::JoinLines(problems);
     return false;
   }
+  in.TraceTime = Milliseconds(traceStart, Clock::now());
   this->UpdateProgress(0.3);
   if (this->CheckAbort())
   {
@@ -184,10 +240,12 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     return false;
   }
 
-  // 3. arrangement
-  vtkNew<vtkPolyData> refined;
-  if (!boolsurf::ArrangeCurves(surface, traced, this->NumberOfThreads, refined, nullptr, error))
+  // 3. arrangement, into the buffers of the previous edit
+  boolsurf::ArrangementOptions options;
+  options.Threads = this->NumberOfThreads;
+  if (!boolsurf::ComputeArrangement(*surface.Mesh, in.Curves, options, in.Arrangement, error))
   {
+    error = "Arrangement failed: " + error;
     return false;
   }
   this->UpdateProgress(0.7);
@@ -197,23 +255,161 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     return false;
   }
 
-  // 4. labeling
-  std::string warning;
-  if (!boolsurf::LabelArrangement(refined,
-        this->ZeroCellMode == 1 ? this->ZeroCellPoint : nullptr,
-        labeled,
-        this->Internal->Fields,
-        this->Internal->Labels,
-        error,
-        warning))
+  // 4. labeling, on the cell graph only
+  const Clock::time_point labelStart = Clock::now();
+  const boolsurf::Arrangement& arr = in.Arrangement;
+  boolsurf::LabelingInput labeling =
+    boolsurf::MakeLabelingInput(*surface.Mesh, *surface.Topology, in.Curves, arr);
+  if (this->ZeroCellMode == 1)
   {
-    return false;
+    const int zero = this->FindZeroCell(surface, error);
+    if (zero < 0)
+    {
+      return false;
+    }
+    const int component = labeling.CellComponent.empty() ? 0 : labeling.CellComponent[zero];
+    if (static_cast<int>(labeling.ZeroCells.size()) <= component)
+    {
+      labeling.ZeroCells.resize(component + 1, -1);
+    }
+    labeling.ZeroCells[component] = zero;
   }
+  in.Labels = boolsurf::LabelCells(labeling);
+  const std::string warning = boolsurf::InconsistencyWarning(in.Labels);
   if (!warning.empty())
   {
     vtkWarningMacro(<< warning);
   }
+  in.Patches.resize(arr.Patches.size());
+  for (size_t p = 0; p < arr.Patches.size(); ++p)
+  {
+    in.Patches[p].Points = arr.Patches[p].Points;
+    in.Patches[p].LeftCell = arr.Patches[p].LeftCell;
+    in.Patches[p].RightCell = arr.Patches[p].RightCell;
+  }
+  const Clock::time_point labeled = Clock::now();
+  boolsurf::BuildCellTriangleLists(
+    arr.TriangleCell, arr.NumberOfCells, in.CellOffsets, in.CellTriangles);
+  in.LabelingTime = Milliseconds(labelStart, labeled);
+  in.CellListTime = Milliseconds(labeled, Clock::now());
   return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurf::FindZeroCell(const boolsurf::vtkSurfaceInput& surface, std::string& error)
+{
+  // The closest point of the input surface, then the refined triangle holding it.
+  vtkStaticCellLocator* locator = this->Internal->Surface.GetLocator();
+  double closest[3], dist2;
+  vtkIdType cell = -1;
+  int sub;
+  vtkNew<vtkGenericCell> scratch;
+  locator->FindClosestPoint(this->ZeroCellPoint, closest, scratch, cell, sub, dist2);
+  if (cell < 0)
+  {
+    error = "no surface cell found near ZeroCellPoint";
+    return -1;
+  }
+  const boolsurf::TriangleMesh& mesh = *surface.Mesh;
+  const boolsurf::Triangle& tri = mesh.GetTriangle(static_cast<int>(cell));
+  // Barycentric coordinates of the closest point (least squares in the triangle's plane).
+  const boolsurf::Vec3 a = mesh.GetPosition(tri[0]);
+  const boolsurf::Vec3 e1 = mesh.GetPosition(tri[1]) - a, e2 = mesh.GetPosition(tri[2]) - a;
+  const boolsurf::Vec3 d = boolsurf::Vec3{ closest[0], closest[1], closest[2] } - a;
+  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
+  const double b1 = Dot(d, e1), b2 = Dot(d, e2);
+  const double det = d11 * d22 - d12 * d12;
+  const double u = det != 0 ? (b1 * d22 - b2 * d12) / det : 0;
+  const double v = det != 0 ? (b2 * d11 - b1 * d12) / det : 0;
+  const int zero =
+    boolsurf::CellAtSurfacePoint(mesh, this->Internal->Arrangement, static_cast<int>(cell), u, v);
+  if (zero < 0)
+  {
+    error = "ZeroCellPoint lies on triangle " + std::to_string(cell) +
+      ", which is not part of the surface";
+  }
+  return zero;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurf::WriteFieldData(const std::string& expression,
+  bool reused,
+  double selectionTime,
+  double outputTime,
+  vtkPolyData* region,
+  vtkPolyData* boundary)
+{
+  const Internals& in = *this->Internal;
+  boolsurf::AddExpressionField(region, expression);
+  boolsurf::AddExpressionField(boundary, expression);
+  vtkFieldData* fd = region->GetFieldData();
+  const boolsurf::LabelingResult& labels = in.Labels;
+  const int ns = labels.NumberOfShapes;
+  const int nc = in.Arrangement.NumberOfCells;
+  if (ns > 0 && nc > 0)
+  {
+    // The labels of the arrangement's cells (rows: ArrangementCell), for coloring the region
+    // by a shape without per-triangle label arrays.
+    vtkNew<vtkIntArray> ids, consistent, cellLabels;
+    ids->SetName("ShapeIds");
+    consistent->SetName("ShapeConsistent");
+    ids->SetNumberOfTuples(ns);
+    consistent->SetNumberOfTuples(ns);
+    cellLabels->SetName("CellLabels");
+    cellLabels->SetNumberOfComponents(ns);
+    for (int s = 0; s < ns; ++s)
+    {
+      ids->SetValue(s, labels.ShapeIdOf(s));
+      consistent->SetValue(s, labels.ShapeConsistent[s]);
+      cellLabels->SetComponentName(s, ("S" + std::to_string(labels.ShapeIdOf(s))).c_str());
+    }
+    cellLabels->SetNumberOfTuples(nc);
+    std::copy(labels.Labels.begin(), labels.Labels.end(), cellLabels->GetPointer(0));
+    fd->AddArray(ids);
+    fd->AddArray(consistent);
+    fd->AddArray(cellLabels);
+  }
+  // Milliseconds per stage of this update (0 for the stages reused from the previous one).
+  const boolsurf::ArrangementStageTimes& t = in.Arrangement.Times;
+  const char* names[] = { "Trace",
+    "Hash",
+    "Intersections",
+    "Refinement",
+    "FloodFill",
+    "CellGraph",
+    "Labeling",
+    "CellLists",
+    "Selection",
+    "Output",
+    "Total" };
+  std::array<double, 11> times{ in.TraceTime,
+    t.Hash,
+    t.Intersections,
+    t.Refinement,
+    t.FloodFill,
+    t.CellGraph,
+    in.LabelingTime,
+    in.CellListTime,
+    selectionTime,
+    outputTime,
+    0 };
+  if (reused)
+  {
+    std::fill(times.begin(), times.begin() + 8, 0.0);
+  }
+  for (int k = 0; k < 10; ++k)
+  {
+    times[10] += times[k];
+  }
+  vtkNew<vtkDoubleArray> stageTimes;
+  stageTimes->SetName("StageTimes");
+  stageTimes->SetNumberOfComponents(11);
+  for (int k = 0; k < 11; ++k)
+  {
+    stageTimes->SetComponentName(k, names[k]);
+  }
+  stageTimes->InsertNextTypedTuple(times.data());
+  fd->AddArray(stageTimes);
 }
 
 //------------------------------------------------------------------------------

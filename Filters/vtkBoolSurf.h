@@ -10,12 +10,21 @@
  *
  * Inputs: port 0 the surface, port 1 the control polygons (cell data `ShapeId`,
  * `CurveType`; optional point data `TriangleId`/`Barycentric`). Outputs: port 0 the selected
- * region as surface triangles carrying `ArrangementCell`, `SourceTriangle`, `Labels` and the
- * input surface's own arrays; port 1 its boundary as oriented polylines (region on the left)
- * with point data `TriangleId`/`Barycentric`.
+ * region as surface triangles carrying cell data `ArrangementCell`, `SourceTriangle`, point
+ * data `TriangleId`/`Barycentric` and the input surface's own arrays, and field data
+ * `ShapeIds`, `ShapeConsistent`, `CellLabels` (the labels of every arrangement cell, one
+ * component per shape: row ArrangementCell gives a triangle's labels), `Expression` and
+ * `StageTimes` (milliseconds of this update per stage: Trace, Hash, Intersections,
+ * Refinement, FloodFill, CellGraph, Labeling, CellLists, Selection, Output, Total; 0 for the
+ * stages reused from the previous update); port 1 its boundary as oriented polylines (region
+ * on the left) with point data `TriangleId`/`Barycentric`.
  *
- * The surface's adjacency, topology, locator and geodesic search state are built once and
- * reused while only the curves or the operation change.
+ * Speed: the surface's adjacency, topology, locator and geodesic search state are built once
+ * and reused while only the curves or the operation change; an edit reuses the arrangement's
+ * buffers, labels only the cells (never per triangle), and writes only the region, so its cost
+ * is the curves' work, the flood fill of the refined surface and the region's size. When only
+ * the Boolean properties change, the labeled arrangement is reused and the update costs the
+ * selection (once per cell) and the region.
  *
  * @sa vtkBoolSurfTraceCurves vtkBoolSurfArrangement vtkBoolSurfLabeling vtkBoolSurfBoolean
  */
@@ -116,11 +125,19 @@ private:
   vtkBoolSurf(const vtkBoolSurf&) = delete;
   void operator=(const vtkBoolSurf&) = delete;
 
-  /// Trace, arrange and label the curves on the (valid) surface.
+  /// Trace, arrange and label the curves on the (valid) surface, into Internal.
   bool LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     vtkPolyData* curves,
-    vtkPolyData* labeled,
     std::string& error);
+  /// The arrangement cell at ZeroCellPoint, or -1 and a message.
+  int FindZeroCell(const boolsurf::vtkSurfaceInput& surface, std::string& error);
+  /// Expression, labels table and StageTimes on the outputs.
+  void WriteFieldData(const std::string& expression,
+    bool reused,
+    double selectionTime,
+    double outputTime,
+    vtkPolyData* region,
+    vtkPolyData* boundary);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -14,6 +14,7 @@ vtkStandardNewMacro(vtkBoolSurfArrangement);
 struct vtkBoolSurfArrangement::Internals
 {
   boolsurf::vtkSurfaceCache Surface;
+  boolsurf::Arrangement Arrangement; ///< its buffers are reused by the next update
 };
 
 //------------------------------------------------------------------------------
@@ -76,7 +77,13 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
-  if (!boolsurf::ArrangeCurves(*surface, curves, this->NumberOfThreads, output, patches, error))
+  if (!boolsurf::ArrangeCurves(*surface,
+        curves,
+        this->NumberOfThreads,
+        this->Internal->Arrangement,
+        output,
+        patches,
+        error))
   {
     vtkErrorMacro(<< error);
     return 0;

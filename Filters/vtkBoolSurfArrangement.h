@@ -24,8 +24,10 @@
  * Output port 0, the refined surface: cell data `ArrangementCell` and `SourceTriangle`, point
  * data `TriangleId`/`Barycentric` (each refined point as a point of the input surface), the
  * input surface's own arrays (cell data copied from the source triangle, point data
- * interpolated), and field data: `NumberOfCells`, `NumberOfShapes` (largest ShapeId + 1),
- * the cell graph `CellGraphArcs` (2 components: right cell, left cell), `CellGraphShape`,
+ * interpolated), and field data: `NumberOfCells`, `NumberOfShapes` (distinct ShapeIds), `ShapeIds`
+ * (the distinct ShapeIds, sorted: shape index i in per-shape arrays is ShapeIds[i]),
+ * the cell graph `CellGraphArcs` (2 components: right cell, left cell), `CellGraphShape`
+ * (the ShapeId of each arc),
  * `CellGraphPatch`, `CellGraphLocation` (arcs of overlapping patches share a location),
  * `CellComponent` (surface component of each cell), `ZeroCellCandidates` (per component, the
  * cell at its longest boundary loop, -1 for closed components), the patches (`PatchOffsets`,

@@ -1,5 +1,6 @@
 #include "vtkBoolSurfArrangementOutput.h"
 
+#include "Labeling/ArrangementLabelingInput.h"
 #include "vtkBoolSurfAttributeTransfer.h"
 
 #include <vtkCellArray.h>
@@ -44,97 +45,6 @@ void AddField(vtkFieldData* fd, vtkAbstractArray* a)
   }
 }
 
-// Patches lying on the same refined sub-edges (overlapping curves) get one location id: they
-// are crossed together. Overlapping patches have the same point sequence, maybe reversed.
-std::vector<int> PatchLocations(const std::vector<ArrangementPatch>& patches)
-{
-  std::map<std::tuple<int, int, int, int>, int> ids;
-  std::vector<int> location(patches.size(), -1);
-  for (size_t p = 0; p < patches.size(); ++p)
-  {
-    const std::vector<int>& pts = patches[p].Points;
-    if (pts.size() < 2)
-    {
-      // Degenerate patch: a place of its own.
-      location[p] =
-        ids
-          .emplace(std::make_tuple(-1 - static_cast<int>(p), 0, 0, 0), static_cast<int>(ids.size()))
-          .first->second;
-      continue;
-    }
-    const int a = pts.front(), b = pts.back();
-    const int c = pts[1], d = pts[pts.size() - 2];
-    auto key = std::make_tuple(std::min(a, b), std::max(a, b), a <= b ? c : d, a <= b ? d : c);
-    if (a == b) // a closed patch: its two directions give (c, d) and (d, c)
-    {
-      key = std::make_tuple(a, b, std::min(c, d), std::max(c, d));
-    }
-    location[p] = ids.emplace(key, static_cast<int>(ids.size())).first->second;
-  }
-  return location;
-}
-
-// Per surface component, a cell at its longest boundary loop (-1 for closed components): the
-// zero cell of the labeling (paper §3.4: plugged holes are outside every shape).
-std::vector<int> ZeroCellCandidates(const vtkSurfaceInput& surface, const Arrangement& arr)
-{
-  const TriangleMesh& mesh = *surface.Mesh;
-  const MeshTopology& topo = *surface.Topology;
-  std::vector<int> result(topo.GetNumberOfComponents(), -1);
-  std::vector<int> longest(topo.GetNumberOfComponents(), -1);
-  for (int l = 0; l < static_cast<int>(topo.BoundaryLoops.size()); ++l)
-  {
-    const int c = topo.BoundaryLoops[l].Component;
-    if (longest[c] < 0 || topo.BoundaryLoops[l].Length > topo.BoundaryLoops[longest[c]].Length)
-    {
-      longest[c] = l;
-    }
-  }
-  // Refined triangles are grouped by source triangle in increasing order.
-  auto firstRefined = [&](int t)
-  {
-    auto it = std::lower_bound(arr.SourceTriangle.begin(), arr.SourceTriangle.end(), t);
-    return it != arr.SourceTriangle.end() && *it == t
-      ? static_cast<int>(it - arr.SourceTriangle.begin())
-      : -1;
-  };
-  for (int c = 0; c < topo.GetNumberOfComponents(); ++c)
-  {
-    if (longest[c] < 0)
-    {
-      continue;
-    }
-    const BoundaryLoop& loop = topo.BoundaryLoops[longest[c]];
-    for (size_t i = 0; i < loop.HalfEdges.size() && result[c] < 0; ++i)
-    {
-      const int h = loop.HalfEdges[i];
-      const int t = h / 3;
-      const int a = mesh.GetTriangle(t)[h % 3], b = mesh.GetTriangle(t)[(h % 3 + 1) % 3];
-      const int e = mesh.GetEdgeId(t, h % 3);
-      // The refined triangle of t holding the boundary sub-edge that starts at vertex a
-      // (mesh vertices keep their ids in the refined surface; the next point is b or a
-      // point on edge e).
-      for (int r = firstRefined(t); r >= 0 && r < static_cast<int>(arr.Triangles.size()) &&
-           arr.SourceTriangle[r] == t && result[c] < 0;
-           ++r)
-      {
-        const auto& tri = arr.Triangles[r];
-        for (int k = 0; k < 3; ++k)
-        {
-          const int next = tri[(k + 1) % 3];
-          const CanonicalPoint& q = arr.PointOnMesh[next];
-          const bool onEdge = next == b || (q.Location == PointLocation::Edge && q.Id == e);
-          if (tri[k] == a && onEdge)
-          {
-            result[c] = arr.TriangleCell[r];
-          }
-        }
-      }
-    }
-  }
-  return result;
-}
-
 std::vector<int> ReadInts(vtkFieldData* fd, const char* name, int comps = 1)
 {
   std::vector<int> v;
@@ -160,13 +70,13 @@ std::vector<int> ReadInts(vtkFieldData* fd, const char* name, int comps = 1)
 bool ArrangeCurves(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   int threads,
+  Arrangement& arrangement,
   vtkPolyData* refined,
   vtkPolyData* patches,
   std::string& error)
 {
   ArrangementOptions options;
   options.Threads = threads;
-  Arrangement arrangement;
   if (!ComputeArrangement(*surface.Mesh, curves, options, arrangement, error))
   {
     error = "Arrangement failed: " + error;
@@ -249,13 +159,11 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
 
   // --- field data: cell graph, patches, components
   vtkFieldData* fd = output->GetFieldData();
-  int numberOfShapes = 0;
-  for (const TracedCurve& c : curves)
-  {
-    numberOfShapes = std::max(numberOfShapes, c.ShapeId + 1);
-  }
+  // Shapes are numbered densely (index i is ShapeIds[i]); arrays keep the users' ids.
+  const std::vector<int> shapeIds = DistinctShapeIds(curves);
   fd->AddArray(IntArray("NumberOfCells", { arr.NumberOfCells }));
-  fd->AddArray(IntArray("NumberOfShapes", { numberOfShapes }));
+  fd->AddArray(IntArray("NumberOfShapes", { static_cast<int>(shapeIds.size()) }));
+  AddField(fd, IntArray("ShapeIds", shapeIds));
 
   const std::vector<int> location = PatchLocations(arr.Patches);
   std::vector<int> arcs, arcShape, arcPatch, arcLocation;
@@ -272,13 +180,9 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   AddField(fd, IntArray("CellGraphPatch", arcPatch));
   AddField(fd, IntArray("CellGraphLocation", arcLocation));
 
-  std::vector<int> cellComponent(arr.NumberOfCells, 0);
-  for (size_t r = 0; r < arr.TriangleCell.size(); ++r)
-  {
-    cellComponent[arr.TriangleCell[r]] = surface.Topology->TriangleComponent[arr.SourceTriangle[r]];
-  }
-  AddField(fd, IntArray("CellComponent", cellComponent));
-  AddField(fd, IntArray("ZeroCellCandidates", ZeroCellCandidates(surface, arr)));
+  AddField(fd, IntArray("CellComponent", CellComponents(*surface.Topology, arr)));
+  AddField(
+    fd, IntArray("ZeroCellCandidates", ZeroCellCandidates(*surface.Mesh, *surface.Topology, arr)));
 
   std::vector<int> offsets{ 0 }, pointIds, left, right, shape, curve;
   for (const ArrangementPatch& p : arr.Patches)
@@ -378,6 +282,21 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
   }
   out.NumberOfCells = ReadInts(fd, "NumberOfCells")[0];
   out.NumberOfShapes = ReadInts(fd, "NumberOfShapes")[0];
+  out.ShapeIds = ReadInts(fd, "ShapeIds");
+  if (out.ShapeIds.empty())
+  {
+    // Written before shape ids were numbered densely: ids are 0..NumberOfShapes-1.
+    for (int s = 0; s < out.NumberOfShapes; ++s)
+    {
+      out.ShapeIds.push_back(s);
+    }
+  }
+  if (static_cast<int>(out.ShapeIds.size()) != out.NumberOfShapes ||
+    !std::is_sorted(out.ShapeIds.begin(), out.ShapeIds.end()))
+  {
+    error = "field data ShapeIds must hold NumberOfShapes sorted shape ids";
+    return false;
+  }
   const std::vector<int> arcs = ReadInts(fd, "CellGraphArcs", 2);
   const std::vector<int> shape = ReadInts(fd, "CellGraphShape");
   const std::vector<int> location = ReadInts(fd, "CellGraphLocation");
@@ -388,7 +307,14 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
   }
   for (size_t i = 0; i < shape.size(); ++i)
   {
-    out.Arcs.push_back({ arcs[2 * i], arcs[2 * i + 1], shape[i], location[i] });
+    const int index = ShapeIndexOf(out.ShapeIds, shape[i]);
+    if (index < 0)
+    {
+      error = "CellGraphShape names shape " + std::to_string(shape[i]) + " (arc " +
+        std::to_string(i) + "), which is not in ShapeIds";
+      return false;
+    }
+    out.Arcs.push_back({ arcs[2 * i], arcs[2 * i + 1], index, location[i] });
   }
   out.CellComponent = ReadInts(fd, "CellComponent");
   out.ZeroCellCandidates = ReadInts(fd, "ZeroCellCandidates");

@@ -17,11 +17,13 @@ class vtkPolyData;
 namespace boolsurf
 {
 
-/// The arrangement stage: computes the arrangement of `curves` and writes port 0 (`refined`)
-/// and, when not null, port 1 (`patches`). False with a message naming the curve and point.
+/// The arrangement stage: computes the arrangement of `curves` into `arrangement` (reusing
+/// its buffers) and writes port 0 (`refined`) and, when not null, port 1 (`patches`). False
+/// with a message naming the curve and point.
 bool ArrangeCurves(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   int threads,
+  Arrangement& arrangement,
   vtkPolyData* refined,
   vtkPolyData* patches,
   std::string& error);
@@ -43,6 +45,7 @@ struct ArrangementFields
 {
   int NumberOfCells = 0;
   int NumberOfShapes = 0;
+  std::vector<int> ShapeIds; ///< sorted; arcs name shapes by index into it
   std::vector<CellArc> Arcs;
   std::vector<int> CellComponent;
   std::vector<int> ZeroCellCandidates;

@@ -7,6 +7,7 @@
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
@@ -44,13 +45,31 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
       return 0;
     }
     const int ns = fields.NumberOfShapes;
-    labels.NumberOfShapes = ns;
-    labels.Labels.resize(static_cast<size_t>(fields.NumberOfCells) * ns);
-    for (vtkIdType c = 0; c < cellLabels->GetNumberOfTuples(); ++c)
+    if (cellLabels->GetNumberOfComponents() != ns ||
+      cellLabels->GetNumberOfTuples() != fields.NumberOfCells ||
+      consistent->GetNumberOfTuples() != ns)
     {
-      for (int s = 0; s < ns; ++s)
+      vtkErrorMacro(<< "field data CellLabels (" << cellLabels->GetNumberOfTuples() << " x "
+                    << cellLabels->GetNumberOfComponents() << ") or ShapeConsistent ("
+                    << consistent->GetNumberOfTuples() << ") does not match the arrangement's "
+                    << fields.NumberOfCells << " cells and " << ns << " shapes");
+      return 0;
+    }
+    labels.NumberOfShapes = ns;
+    labels.ShapeIds = fields.ShapeIds;
+    labels.Labels.resize(static_cast<size_t>(fields.NumberOfCells) * ns);
+    if (auto* ints = vtkArrayDownCast<vtkIntArray>(cellLabels))
+    {
+      std::copy_n(ints->GetPointer(0), labels.Labels.size(), labels.Labels.data());
+    }
+    else
+    {
+      for (vtkIdType c = 0; c < cellLabels->GetNumberOfTuples(); ++c)
       {
-        labels.Labels[c * ns + s] = static_cast<int>(cellLabels->GetComponent(c, s));
+        for (int s = 0; s < ns; ++s)
+        {
+          labels.Labels[c * ns + s] = static_cast<int>(cellLabels->GetComponent(c, s));
+        }
       }
     }
     for (int s = 0; s < ns; ++s)
@@ -62,7 +81,8 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
   {
     // An arrangement without labels: label it here with the automatic zero cell.
     labeled = vtkSmartPointer<vtkPolyData>::New();
-    if (!boolsurf::LabelArrangement(input, nullptr, labeled, fields, labels, error, warning))
+    if (!boolsurf::LabelArrangement(
+          input, boolsurf::LabelingOutputOptions(), labeled, fields, labels, error, warning))
     {
       vtkErrorMacro(<< error);
       return 0;

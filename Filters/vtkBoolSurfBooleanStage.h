@@ -7,6 +7,7 @@
 #include "vtkBoolSurfArrangementOutput.h"
 
 #include <string>
+#include <vector>
 
 class vtkPolyData;
 
@@ -46,12 +47,23 @@ inline BooleanRequest MakeBooleanRequest(int operation,
   return request;
 }
 
-/// The expression text of a request over `numberOfShapes` shapes, or false and a message
-/// (unknown shape ids, no shapes).
+/// The expression text of a request over the shapes `shapeIds` (sorted), or false and a
+/// message (unknown shape ids, no shapes).
 bool ExpressionText(const BooleanRequest& request,
-  int numberOfShapes,
+  const std::vector<int>& shapeIds,
   std::string& text,
   std::string& error);
+
+/// Evaluates a request once per cell: selected[cell], and the expression text it ran. False
+/// with a named error: malformed expression, unknown shape, inconsistent operand.
+bool SelectRequestedCells(const LabelingResult& labels,
+  const BooleanRequest& request,
+  std::vector<char>& selected,
+  std::string& text,
+  std::string& error);
+
+/// The field data `Expression` (the expression a result was selected with).
+void AddExpressionField(vtkPolyData* output, const std::string& text);
 
 /// Selects the cells of a labeled refined surface and writes the region (its triangles with
 /// all their arrays) and its boundary (oriented loops, region on the left, with point data

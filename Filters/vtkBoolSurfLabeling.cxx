@@ -23,13 +23,11 @@ int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
   boolsurf::ArrangementFields fields;
   boolsurf::LabelingResult labels;
   std::string error, warning;
-  if (!boolsurf::LabelArrangement(input,
-        this->ZeroCellMode == POINT ? this->ZeroCellPoint : nullptr,
-        output,
-        fields,
-        labels,
-        error,
-        warning))
+  boolsurf::LabelingOutputOptions options;
+  options.ZeroCellPoint = this->ZeroCellMode == POINT ? this->ZeroCellPoint : nullptr;
+  options.ColorShape = this->ColorShape;
+  options.PerTriangleLabels = this->PerTriangleLabels;
+  if (!boolsurf::LabelArrangement(input, options, output, fields, labels, error, warning))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -49,4 +47,6 @@ void vtkBoolSurfLabeling::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ZeroCellMode: " << this->ZeroCellMode << "\n";
   os << indent << "ZeroCellPoint: " << this->ZeroCellPoint[0] << " " << this->ZeroCellPoint[1]
      << " " << this->ZeroCellPoint[2] << "\n";
+  os << indent << "ColorShape: " << this->ColorShape << "\n";
+  os << indent << "PerTriangleLabels: " << this->PerTriangleLabels << "\n";
 }

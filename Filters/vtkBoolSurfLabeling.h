@@ -18,10 +18,15 @@
  * open boundary, the cell at its longest boundary loop (the plugged holes of the paper,
  * §3.4); on a closed component, each shape's labels are shifted so their minimum is 0.
  *
- * Output: the input with cell data `Labels` (int, one component per shape, named S0, S1,
- * ...), field data `ShapeConsistent` (one value per shape) and `CellLabels` (one tuple per
- * arrangement cell). A warning names the inconsistent shapes and the cells where the
- * conflict was found.
+ * Labels belong to cells, not triangles. Output: the input (shallow copy) with field data
+ * `CellLabels` (int, one tuple per arrangement cell, one component per shape named S<id>, in
+ * the order of the field data `ShapeIds`) and `ShapeConsistent` (one value per shape, same
+ * order). Shapes are numbered densely, so a sparse or huge ShapeId costs nothing: memory is
+ * triangles + cells x shapes. Per-triangle arrays only on request: ColorShape >= 0 adds the
+ * cell array `ShapeLabel` (that shape's label, for coloring the surface), PerTriangleLabels
+ * adds `Labels` (every shape's label per triangle; triangles x shapes memory). A triangle's
+ * labels are row ArrangementCell of CellLabels. A warning names the inconsistent shapes and
+ * the cells where the conflict was found.
  *
  * @sa vtkBoolSurfArrangement vtkBoolSurfBoolean
  */
@@ -59,6 +64,21 @@ public:
   vtkGetVector3Macro(ZeroCellPoint, double);
   ///@}
 
+  ///@{
+  /// ShapeId whose label is written per triangle as the cell array `ShapeLabel` (to color the
+  /// surface by it); -1 (default) writes none.
+  vtkSetClampMacro(ColorShape, int, -1, VTK_INT_MAX);
+  vtkGetMacro(ColorShape, int);
+  ///@}
+
+  ///@{
+  /// Also write every shape's label per triangle as the cell array `Labels` (one component per
+  /// shape). Off by default: it costs triangles x shapes memory.
+  vtkSetMacro(PerTriangleLabels, bool);
+  vtkGetMacro(PerTriangleLabels, bool);
+  vtkBooleanMacro(PerTriangleLabels, bool);
+  ///@}
+
 protected:
   vtkBoolSurfLabeling();
   ~vtkBoolSurfLabeling() override = default;
@@ -69,6 +89,8 @@ protected:
 
   int ZeroCellMode = AUTOMATIC;
   double ZeroCellPoint[3] = { 0, 0, 0 };
+  int ColorShape = -1;
+  bool PerTriangleLabels = false;
 
 private:
   vtkBoolSurfLabeling(const vtkBoolSurfLabeling&) = delete;

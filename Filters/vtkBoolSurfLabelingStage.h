@@ -1,5 +1,5 @@
-// The labeling stage on VTK data, shared by vtkBoolSurfLabeling and the one-step vtkBoolSurf
-// filter (a private header of the module).
+// The labeling stage on VTK data, shared by vtkBoolSurfLabeling and vtkBoolSurfBoolean (a
+// private header of the module).
 #ifndef vtkBoolSurfLabelingStage_h
 #define vtkBoolSurfLabelingStage_h
 
@@ -13,16 +13,34 @@ class vtkPolyData;
 namespace boolsurf
 {
 
-/// Labels the cells of a refined surface. zeroCellPoint is null in automatic mode. Adds
-/// `Labels`, `ShapeConsistent` and `CellLabels` to `output` (a shallow copy of the
-/// input). `warning` names inconsistent shapes (empty when all are consistent).
+/// What the labeling writes besides the per-cell table.
+struct LabelingOutputOptions
+{
+  /// The cell containing this point is the zero cell; null: automatic.
+  const double* ZeroCellPoint = nullptr;
+  /// ShapeId whose label is written per triangle as the 1-component cell array `ShapeLabel`
+  /// (for coloring); -1: none.
+  int ColorShape = -1;
+  /// Every shape's label per triangle as the cell array `Labels` (one component per shape):
+  /// memory triangles x shapes, so off unless asked for.
+  bool PerTriangleLabels = false;
+};
+
+/// Labels the cells of a refined surface. Adds field data `CellLabels` (cells x shapes,
+/// components named S<id>) and `ShapeConsistent` (per shape index, in the order of
+/// `ShapeIds`) to `output` (a shallow copy of the input), plus the per-triangle arrays asked
+/// for. `warning` names inconsistent shapes and unknown ColorShape ids (empty when none).
 bool LabelArrangement(vtkPolyData* input,
-  const double* zeroCellPoint,
+  const LabelingOutputOptions& options,
   vtkPolyData* output,
   ArrangementFields& fields,
   LabelingResult& labels,
   std::string& error,
   std::string& warning);
+
+/// "shape S7 is inconsistent: cell 3 is reached with labels 0 and 1; ..." for the conflicts
+/// of `labels` (empty when every shape is consistent).
+std::string InconsistencyWarning(const LabelingResult& labels);
 
 } // namespace boolsurf
 

@@ -62,19 +62,80 @@ void ParallelRange(tbb::task_arena& arena, int n, const Body& body, int grain = 
 } // namespace
 
 //------------------------------------------------------------------------------
+struct Arrangement::WorkBuffers
+{
+  /// The mesh whose vertices fill the first NumberOfMeshVertices refined points (0: none yet).
+  std::uint64_t MeshSerial = 0;
+  int NumberOfMeshTriangles = -1;
+  TriangleSegmentMap Map;
+  std::vector<LocalArrangement> Local;
+  std::vector<std::vector<int>> EdgeSegmentPoints;
+  std::vector<int> NewPointBase, EdgeOfEdgePoint, SlotOfTriangle, BlockStart, SlotOfSegment;
+  std::vector<char> State, MeshEdgeHasBlocked;
+  /// Triangles and mesh edges whose State / SlotOfTriangle / MeshEdgeHasBlocked entries the
+  /// last call set: reset at the next call instead of clearing whole-mesh arrays.
+  std::vector<int> TouchedTriangles, TouchedEdges;
+  std::unordered_set<std::uint64_t> BlockedMeshSubEdges;
+  std::vector<unsigned char> Blocked;
+  FloodFillBuffers Flood;
+  std::vector<RefinedCurve> RefinedCurves;
+};
+
+//------------------------------------------------------------------------------
 bool ComputeArrangement(const TriangleMesh& mesh,
   const std::vector<TracedCurve>& curves,
   const ArrangementOptions& options,
   Arrangement& out,
   std::string& error)
 {
-  out = Arrangement();
   error.clear();
+  if (!out.Work)
+  {
+    out.Work = std::make_shared<Arrangement::WorkBuffers>();
+  }
+  Arrangement::WorkBuffers& work = *out.Work;
+  const int nv = mesh.GetNumberOfVertices();
+  const int nt = mesh.GetNumberOfTriangles();
+  // Results are cleared, keeping their capacity (the next edit needs about as much).
+  const bool sameMesh = work.MeshSerial != 0 && work.MeshSerial == mesh.GetSerial() &&
+    static_cast<int>(out.Positions.size()) >= nv;
+  out.Triangles.clear();
+  out.SourceTriangle.clear();
+  out.NumberOfCells = 0;
+  out.NumberOfRefinedSourceTriangles = 0;
+  out.Patches.clear();
+  out.CellGraph.clear();
+  out.NumberOfPatchGraphVertices = 0;
+  out.CurvePoints.clear();
+  out.Times = ArrangementStageTimes();
+  if (work.NumberOfMeshTriangles != nt || !sameMesh)
+  {
+    work.State.assign(nt, 0);
+    work.SlotOfTriangle.assign(nt, -1);
+    work.MeshEdgeHasBlocked.assign(mesh.GetNumberOfEdges(), 0);
+    work.NumberOfMeshTriangles = nt;
+  }
+  else
+  {
+    for (int t : work.TouchedTriangles)
+    {
+      work.State[t] = 0;
+      work.SlotOfTriangle[t] = -1;
+    }
+    for (int e : work.TouchedEdges)
+    {
+      work.MeshEdgeHasBlocked[e] = 0;
+    }
+  }
+  work.TouchedTriangles.clear();
+  work.TouchedEdges.clear();
+  work.MeshSerial = 0; // until the vertex part of the refined points is written again
+
   tbb::task_arena arena(options.Threads > 0 ? options.Threads : tbb::task_arena::automatic);
   const Clock::time_point start = Clock::now();
 
   // --- 1. hash map triangle -> segments
-  TriangleSegmentMap map;
+  TriangleSegmentMap& map = work.Map;
   if (!BuildTriangleSegmentMap(mesh, curves, map, error))
   {
     return false;
@@ -83,10 +144,12 @@ bool ComputeArrangement(const TriangleMesh& mesh,
 
   // --- 2. intersections
   const int slots = static_cast<int>(map.Triangles.size());
-  std::vector<LocalArrangement> local(slots);
+  std::vector<LocalArrangement>& local = work.Local;
+  local.resize(slots);
   ParallelFor(
     arena, slots, [&](int s) { IntersectTriangleSegments(mesh, map, curves, s, local[s]); });
-  std::vector<std::vector<int>> edgeSegmentPoints(map.EdgeSegments.size());
+  std::vector<std::vector<int>>& edgeSegmentPoints = work.EdgeSegmentPoints;
+  edgeSegmentPoints.resize(map.EdgeSegments.size());
   ParallelFor(arena,
     static_cast<int>(map.EdgeSegments.size()),
     [&](int i) { SplitEdgeSegment(mesh, map, i, edgeSegmentPoints[i]); });
@@ -94,18 +157,17 @@ bool ComputeArrangement(const TriangleMesh& mesh,
 
   // --- 3. refinement, then assembly of the refined surface
   ParallelFor(arena, slots, [&](int s) { RefineTriangle(local[s]); });
-  for (const LocalArrangement& a : local)
+  for (int s = 0; s < slots; ++s)
   {
-    if (!a.Error.empty())
+    if (!local[s].Error.empty())
     {
-      error = "arrangement failed in " + a.Error;
+      error = "arrangement failed in " + local[s].Error;
       return false;
     }
   }
-  const int nv = mesh.GetNumberOfVertices();
-  const int nt = mesh.GetNumberOfTriangles();
   const int edgePoints = static_cast<int>(map.EdgePoints.size());
-  std::vector<int> newPointBase(slots + 1, nv + edgePoints);
+  std::vector<int>& newPointBase = work.NewPointBase;
+  newPointBase.assign(slots + 1, nv + edgePoints);
   for (int s = 0; s < slots; ++s)
   {
     newPointBase[s + 1] = newPointBase[s] + local[s].NumberOfNewPoints;
@@ -114,28 +176,33 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   out.Positions.resize(totalPoints);
   out.PointOnMesh.resize(totalPoints);
   out.PointSurface.resize(totalPoints);
-  // Mesh vertices: each one's surface point is its first corner.
-  ParallelRange(arena,
-    nv,
-    [&](int v)
-    {
-      CanonicalPoint c;
-      c.Location = PointLocation::Vertex;
-      c.Id = v;
-      out.Positions[v] = mesh.GetPosition(v);
-      out.PointOnMesh[v] = c;
-      const IntRange corners = mesh.GetVertexCorners(v);
-      SurfacePoint sp;
-      if (corners.size() > 0)
+  // Mesh vertices keep their ids: written once per mesh, then reused by every edit.
+  if (!sameMesh)
+  {
+    ParallelRange(arena,
+      nv,
+      [&](int v)
       {
-        const int k = corners[0] % 3;
-        sp.Triangle = corners[0] / 3;
-        sp.U = k == 1 ? 1.0 : 0.0;
-        sp.V = k == 2 ? 1.0 : 0.0;
-      }
-      out.PointSurface[v] = sp;
-    });
-  std::vector<int> edgeOfEdgePoint(edgePoints);
+        CanonicalPoint c;
+        c.Location = PointLocation::Vertex;
+        c.Id = v;
+        out.Positions[v] = mesh.GetPosition(v);
+        out.PointOnMesh[v] = c;
+        const IntRange corners = mesh.GetVertexCorners(v);
+        SurfacePoint sp;
+        if (corners.size() > 0)
+        {
+          const int k = corners[0] % 3;
+          sp.Triangle = corners[0] / 3;
+          sp.U = k == 1 ? 1.0 : 0.0;
+          sp.V = k == 2 ? 1.0 : 0.0;
+        }
+        out.PointSurface[v] = sp;
+      });
+  }
+  work.MeshSerial = mesh.GetSerial();
+  std::vector<int>& edgeOfEdgePoint = work.EdgeOfEdgePoint;
+  edgeOfEdgePoint.resize(edgePoints);
   ParallelFor(arena,
     edgePoints,
     [&](int i)
@@ -180,15 +247,17 @@ bool ComputeArrangement(const TriangleMesh& mesh,
 
   // Per source triangle: its state for the flood fill (refined, or next to a closed curve
   // running along one of its edges), its slot, and its range of refined triangles.
-  std::vector<char> state(nt, 0);
-  std::vector<int> slotOfTriangle(nt, -1);
+  std::vector<char>& state = work.State;
+  std::vector<int>& slotOfTriangle = work.SlotOfTriangle;
   for (int s = 0; s < slots; ++s)
   {
     slotOfTriangle[map.Triangles[s]] = s;
     state[map.Triangles[s]] = RefinedSurfaceView::RefinedBit;
+    work.TouchedTriangles.push_back(map.Triangles[s]);
   }
-  std::unordered_set<std::uint64_t> blockedMeshSubEdges;
-  std::vector<char> meshEdgeHasBlocked(mesh.GetNumberOfEdges(), 0);
+  std::unordered_set<std::uint64_t>& blockedMeshSubEdges = work.BlockedMeshSubEdges;
+  blockedMeshSubEdges.clear();
+  std::vector<char>& meshEdgeHasBlocked = work.MeshEdgeHasBlocked;
   for (size_t i = 0; i < map.EdgeSegments.size(); ++i)
   {
     const EdgeSegment& es = map.EdgeSegments[i];
@@ -197,12 +266,15 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       continue;
     }
     meshEdgeHasBlocked[es.Edge] = 1;
+    work.TouchedEdges.push_back(es.Edge);
     const int h = mesh.GetEdgeHalfEdge(es.Edge);
     state[h / 3] |= RefinedSurfaceView::BlockedEdgeBit;
+    work.TouchedTriangles.push_back(h / 3);
     const int twin = mesh.GetTwin(h);
     if (twin >= 0)
     {
       state[twin / 3] |= RefinedSurfaceView::BlockedEdgeBit;
+      work.TouchedTriangles.push_back(twin / 3);
     }
     const std::vector<int>& ids = edgeSegmentPoints[i];
     for (size_t k = 0; k + 1 < ids.size(); ++k)
@@ -212,11 +284,13 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   }
   // Offsets: a prefix sum over fixed blocks (block sums in parallel, a short scan, then the
   // blocks in parallel again).
-  std::vector<int> offset(nt + 1, 0);
+  std::vector<int>& offset = out.TriangleOffset;
+  offset.resize(nt + 1);
   {
     const int blockSize = 1 << 16;
     const int blocks = (nt + blockSize - 1) / blockSize;
-    std::vector<int> blockStart(blocks + 1, 0);
+    std::vector<int>& blockStart = work.BlockStart;
+    blockStart.assign(blocks + 1, 0);
     auto countOf = [&](int t)
     {
       const int s = slotOfTriangle[t];
@@ -255,7 +329,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   const int refinedCount = offset[nt];
   out.Triangles.resize(refinedCount);
   out.SourceTriangle.resize(refinedCount);
-  std::vector<unsigned char> blocked(refinedCount, 0);
+  std::vector<unsigned char>& blocked = work.Blocked;
+  blocked.assign(refinedCount, 0);
   ParallelRange(arena,
     nt,
     [&](int t)
@@ -297,11 +372,17 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   view.EdgeOfEdgePoint = &edgeOfEdgePoint;
   view.BlockedMeshSubEdges = &blockedMeshSubEdges;
   view.MeshEdgeHasBlocked = &meshEdgeHasBlocked;
-  arena.execute([&] { out.NumberOfCells = FloodFillCells(view, out.TriangleCell); });
+  arena.execute(
+    [&]
+    {
+      out.NumberOfCells =
+        FloodFillCells(view, out.TriangleCell, &out.CellFirstTriangle, &work.Flood);
+    });
   const Clock::time_point filled = Clock::now();
 
   // --- 5. curves on the refined surface, patches, cell graph
-  std::vector<int> slotOfSegment(map.Segments.size());
+  std::vector<int>& slotOfSegment = work.SlotOfSegment;
+  slotOfSegment.resize(map.Segments.size());
   for (int s = 0; s < slots; ++s)
   {
     for (int g = map.SegmentOffset[s]; g < map.SegmentOffset[s + 1]; ++g)
@@ -309,11 +390,14 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       slotOfSegment[g] = s;
     }
   }
-  std::vector<RefinedCurve> refinedCurves(curves.size());
+  std::vector<RefinedCurve>& refinedCurves = work.RefinedCurves;
+  refinedCurves.resize(curves.size());
   std::vector<int> ids;
   for (size_t ci = 0; ci < curves.size(); ++ci)
   {
     RefinedCurve& rc = refinedCurves[ci];
+    rc.Points.clear();
+    rc.SubEdgeSource.clear();
     for (const SegmentLocation& loc : map.CurveSegments[ci])
     {
       int source;

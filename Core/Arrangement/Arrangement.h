@@ -18,6 +18,8 @@
 #include "Arrangement/CellPartition.h"
 #include "Geodesic/TracedCurve.h"
 
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -45,7 +47,11 @@ struct Arrangement
   std::vector<std::array<int, 3>> Triangles; ///< oriented like their source triangles
   std::vector<int> SourceTriangle;           ///< mesh triangle each refined triangle comes from
   std::vector<int> TriangleCell;             ///< arrangement cell of each refined triangle
+  /// Refined triangles of mesh triangle t: [TriangleOffset[t], TriangleOffset[t + 1]).
+  std::vector<int> TriangleOffset;
   int NumberOfCells = 0;
+  /// The lowest refined triangle of each cell (cells are numbered in this order).
+  std::vector<int> CellFirstTriangle;
   int NumberOfRefinedSourceTriangles = 0; ///< mesh triangles replaced by a triangulation
 
   // --- curves
@@ -58,12 +64,18 @@ struct Arrangement
   std::vector<std::vector<int>> CurvePoints;
 
   ArrangementStageTimes Times;
+
+  /// Work buffers kept between calls: computing again into the same Arrangement (an edit of
+  /// the curves on the same mesh) reuses every allocation, and rewrites the mesh vertices'
+  /// part of the refined points only when the mesh changed.
+  struct WorkBuffers;
+  std::shared_ptr<WorkBuffers> Work;
 };
 
-/// Computes the arrangement. Unusable mesh triangles (see TriangleMesh::IsUsable) are left out
-/// of the refined surface. Fails, with a message naming the curve and point, on invalid curve
-/// points or consecutive points that share no triangle; the mesh must not be modified while
-/// `mesh` is in use (its adjacency is the base of the dual graph).
+/// Computes the arrangement into `out`, reusing its buffers. Unusable mesh triangles (see
+/// TriangleMesh::IsUsable) are left out of the refined surface. Fails, with a message naming the
+/// curve and point, on invalid curve points or consecutive points that share no triangle; the mesh
+/// must not be modified while `mesh` is in use (its adjacency is the base of the dual graph).
 bool ComputeArrangement(const TriangleMesh& mesh,
   const std::vector<TracedCurve>& curves,
   const ArrangementOptions& options,

@@ -149,16 +149,25 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
 }
 
 //------------------------------------------------------------------------------
-int FloodFillCells(const RefinedSurfaceView& surface, std::vector<int>& cellOfTriangle)
+int FloodFillCells(const RefinedSurfaceView& surface,
+  std::vector<int>& cellOfTriangle,
+  std::vector<int>* cellFirstTriangle,
+  FloodFillBuffers* buffers)
 {
+  FloodFillBuffers localBuffers;
+  FloodFillBuffers& scratch = buffers ? *buffers : localBuffers;
   const TriangleMesh& mesh = *surface.Mesh;
   const int count = static_cast<int>(surface.Triangles->size());
   const int nt = mesh.GetNumberOfTriangles();
   const int* offset = surface.Offset->data();
   const char* state = surface.Refined->data();
   const Triangle* meshTriangles = mesh.GetTriangles().data();
-  std::unique_ptr<std::atomic<int>[]> parentStore(new std::atomic<int>[count]);
-  std::atomic<int>* parent = parentStore.get();
+  if (scratch.ParentCapacity < static_cast<size_t>(count))
+  {
+    scratch.Parent.reset(new std::atomic<int>[count]);
+    scratch.ParentCapacity = count;
+  }
+  std::atomic<int>* parent = scratch.Parent.get();
   cellOfTriangle.resize(count);
   const int grain = 4096;
   tbb::parallel_for(tbb::blocked_range<int>(0, count, grain),
@@ -172,7 +181,8 @@ int FloodFillCells(const RefinedSurfaceView& surface, std::vector<int>& cellOfTr
 
   // Per source triangle, its refined index when it is unrefined, else -1: one random read per
   // neighbour on the fast path.
-  std::vector<int> unrefinedIndex(nt);
+  std::vector<int>& unrefinedIndex = scratch.UnrefinedIndex;
+  unrefinedIndex.resize(nt);
   tbb::parallel_for(tbb::blocked_range<int>(0, nt, grain),
     [&](const tbb::blocked_range<int>& range)
     {
@@ -191,7 +201,12 @@ int FloodFillCells(const RefinedSurfaceView& surface, std::vector<int>& cellOfTr
   const bool serial = tbb::this_task_arena::max_concurrency() == 1;
   const int sourceBlock = 1 << 16;
   const int sourceBlocks = (nt + sourceBlock - 1) / sourceBlock;
-  std::vector<std::vector<std::pair<int, int>>> crossing(sourceBlocks);
+  std::vector<std::vector<std::pair<int, int>>>& crossing = scratch.Crossing;
+  crossing.resize(sourceBlocks);
+  for (auto& arcs : crossing)
+  {
+    arcs.clear();
+  }
   tbb::parallel_for(0,
     sourceBlocks,
     [&](int b)
@@ -287,7 +302,8 @@ int FloodFillCells(const RefinedSurfaceView& surface, std::vector<int>& cellOfTr
   // then number; then every triangle takes its root's number.
   const int blockSize = 1 << 16;
   const int blocks = (count + blockSize - 1) / blockSize;
-  std::vector<int> blockRoots(blocks + 1, 0);
+  std::vector<int>& blockRoots = scratch.BlockRoots;
+  blockRoots.assign(blocks + 1, 0);
   tbb::parallel_for(0,
     blocks,
     [&](int b)
@@ -306,6 +322,10 @@ int FloodFillCells(const RefinedSurfaceView& surface, std::vector<int>& cellOfTr
   {
     blockRoots[b + 1] += blockRoots[b];
   }
+  if (cellFirstTriangle)
+  {
+    cellFirstTriangle->resize(blockRoots[blocks]);
+  }
   tbb::parallel_for(0,
     blocks,
     [&](int b)
@@ -316,6 +336,10 @@ int FloodFillCells(const RefinedSurfaceView& surface, std::vector<int>& cellOfTr
       {
         if (parent[r].load(std::memory_order_relaxed) == r)
         {
+          if (cellFirstTriangle)
+          {
+            (*cellFirstTriangle)[next] = r;
+          }
           cellOfTriangle[r] = next++;
         }
       }
@@ -333,6 +357,38 @@ int FloodFillCells(const RefinedSurfaceView& surface, std::vector<int>& cellOfTr
       }
     });
   return blockRoots[blocks];
+}
+
+//------------------------------------------------------------------------------
+void BuildCellTriangleLists(const std::vector<int>& cellOfTriangle,
+  int numberOfCells,
+  std::vector<int>& offsets,
+  std::vector<int>& triangles)
+{
+  offsets.assign(static_cast<size_t>(numberOfCells) + 1, 0);
+  const int n = static_cast<int>(cellOfTriangle.size());
+  const int* cell = cellOfTriangle.data();
+  int* count = offsets.data() + 1;
+  for (int r = 0; r < n; ++r)
+  {
+    ++count[cell[r]];
+  }
+  for (int c = 0; c < numberOfCells; ++c)
+  {
+    offsets[c + 1] += offsets[c];
+  }
+  triangles.resize(n);
+  // Scatter with a running cursor per cell (offsets shifted back by one slot afterwards).
+  int* cursor = offsets.data();
+  for (int r = 0; r < n; ++r)
+  {
+    triangles[cursor[cell[r]]++] = r;
+  }
+  for (int c = numberOfCells; c > 0; --c)
+  {
+    offsets[c] = offsets[c - 1];
+  }
+  offsets[0] = 0;
 }
 
 //------------------------------------------------------------------------------

@@ -22,8 +22,11 @@
 #include "Mesh/SurfacePoint.h"
 
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 namespace boolsurf
@@ -68,13 +71,36 @@ inline std::uint64_t UndirectedPointPair(int a, int b)
   return (static_cast<std::uint64_t>(lo) << 32) | hi;
 }
 
+/// Scratch memory of FloodFillCells, kept by callers that flood the same mesh repeatedly.
+struct FloodFillBuffers
+{
+  std::unique_ptr<std::atomic<int>[]> Parent;
+  size_t ParentCapacity = 0;
+  std::vector<int> UnrefinedIndex;
+  std::vector<std::vector<std::pair<int, int>>> Crossing;
+  std::vector<int> BlockRoots;
+};
+
 /// Connected components of the DGA without the blocked arcs (the flood fill of the method), as
 /// a lock-free union-find run in parallel over source triangles on the calling TBB arena.
 /// Unrefined triangles between unrefined neighbours take a fast path (base-mesh twins, no
 /// hashing). Every set's root is its lowest triangle, and cells are numbered in order of their
 /// lowest triangle, so the result is that of a sequential breadth-first flood fill seeded in
-/// triangle order, whatever the number of threads. Returns the number of cells.
-int FloodFillCells(const RefinedSurfaceView& surface, std::vector<int>& cellOfTriangle);
+/// triangle order, whatever the number of threads. Returns the number of cells;
+/// `cellFirstTriangle`, when given, receives each cell's lowest triangle. `buffers` (optional)
+/// keeps the scratch memory for the next call.
+int FloodFillCells(const RefinedSurfaceView& surface,
+  std::vector<int>& cellOfTriangle,
+  std::vector<int>* cellFirstTriangle = nullptr,
+  FloodFillBuffers* buffers = nullptr);
+
+/// The triangles of each cell as lists (counting sort by cell): those of cell c are
+/// triangles[offsets[c] .. offsets[c + 1]), ascending. Built once per arrangement, they make
+/// extracting any selection of cells cost the size of the selection.
+void BuildCellTriangleLists(const std::vector<int>& cellOfTriangle,
+  int numberOfCells,
+  std::vector<int>& offsets,
+  std::vector<int>& triangles);
 
 /// A curve on the refined surface: its refined point ids and, per sub-edge i (from point i to
 /// i+1, and for closed curves the last back to the first), the source triangle holding it or,

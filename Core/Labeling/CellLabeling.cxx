@@ -83,6 +83,7 @@ LabelingResult LabelCells(const LabelingInput& input)
   const int ns = input.NumberOfShapes;
   LabelingResult result;
   result.NumberOfShapes = ns;
+  result.ShapeIds = input.ShapeIds;
   result.Labels.assign(static_cast<size_t>(nc) * ns, 0);
   result.ShapeConsistent.assign(ns, 1);
 

@@ -13,6 +13,7 @@
 #ifndef boolsurf_CellLabeling_h
 #define boolsurf_CellLabeling_h
 
+#include <cstddef>
 #include <vector>
 
 namespace boolsurf
@@ -31,7 +32,9 @@ struct CellArc
 struct LabelingInput
 {
   int NumberOfCells = 0;
-  int NumberOfShapes = 0;
+  int NumberOfShapes = 0; ///< arcs name shapes by index 0..NumberOfShapes-1
+  /// The user's id of each shape index (copied to the result; may be empty).
+  std::vector<int> ShapeIds;
   std::vector<CellArc> Arcs;
   /// Connected component of each cell (surface component); empty = all in component 0.
   std::vector<int> CellComponent;
@@ -50,7 +53,11 @@ struct LabelConflict
 
 struct LabelingResult
 {
+  /// Shapes are dense indices 0..NumberOfShapes-1 (labels are a cells x shapes table, so a
+  /// sparse or huge user shape id costs nothing); ShapeIds[index] is the user's id (empty: the
+  /// id is the index).
   int NumberOfShapes = 0;
+  std::vector<int> ShapeIds;
   /// Labels[cell * NumberOfShapes + shape].
   std::vector<int> Labels;
   /// 1 when the shape's labels are path independent.
@@ -60,8 +67,11 @@ struct LabelingResult
 
   int GetLabel(int cell, int shape) const
   {
-    return this->Labels[cell * this->NumberOfShapes + shape];
+    return this->Labels[static_cast<std::size_t>(cell) * this->NumberOfShapes + shape];
   }
+
+  /// The user's id of shape index `shape`.
+  int ShapeIdOf(int shape) const { return this->ShapeIds.empty() ? shape : this->ShapeIds[shape]; }
 };
 
 /// Labels every cell. Arcs naming cells or shapes out of range are ignored (the caller

@@ -1,6 +1,7 @@
 #include "Mesh/TriangleMesh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <utility>
 
 namespace boolsurf
@@ -11,6 +12,8 @@ TriangleMesh::TriangleMesh(std::vector<Vec3> positions, std::vector<Triangle> tr
   : Positions(std::move(positions))
   , Triangles(std::move(triangles))
 {
+  static std::atomic<std::uint64_t> lastSerial{ 0 };
+  this->Serial = ++lastSerial;
   const int nv = this->GetNumberOfVertices();
   this->Usable.resize(this->Triangles.size());
   for (size_t t = 0; t < this->Triangles.size(); ++t)

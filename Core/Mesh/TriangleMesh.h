@@ -17,6 +17,7 @@
 #include "Mesh/Vec3.h"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace boolsurf
@@ -57,6 +58,11 @@ public:
   /// Builds the adjacency. Triangles whose indices are out of range or repeated are kept (so
   /// triangle ids stay those of the input) but take no part in the topology: see IsUsable().
   TriangleMesh(std::vector<Vec3> positions, std::vector<Triangle> triangles);
+
+  /// A number no other mesh built in this process has (0 for an empty default mesh): lets
+  /// consumers that keep buffers derived from a mesh tell whether it is still the same one,
+  /// where a pointer could be reused by a new mesh at the same address.
+  std::uint64_t GetSerial() const { return this->Serial; }
 
   int GetNumberOfVertices() const { return static_cast<int>(this->Positions.size()); }
   int GetNumberOfTriangles() const { return static_cast<int>(this->Triangles.size()); }
@@ -124,6 +130,7 @@ private:
   void BuildVertexCorners();
   void BuildTwins();
 
+  std::uint64_t Serial = 0;
   std::vector<Vec3> Positions;
   std::vector<Triangle> Triangles;
   std::vector<char> Usable;

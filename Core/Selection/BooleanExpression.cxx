@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 
 namespace boolsurf
 {
@@ -12,9 +13,15 @@ namespace
 class Parser
 {
 public:
-  Parser(const std::string& text, int numberOfShapes, std::vector<int>& code)
+  /// `ids`: the shapes' ids, sorted (S<id> compiles to the id's index), or null: S<id>
+  /// compiles to id, valid below numberOfShapes (any id when numberOfShapes < 0).
+  Parser(const std::string& text,
+    int numberOfShapes,
+    const std::vector<int>* ids,
+    std::vector<int>& code)
     : Text(text)
     , NumberOfShapes(numberOfShapes)
+    , Ids(ids)
     , Code(code)
   {
   }
@@ -77,6 +84,10 @@ private:
     return false;
   }
 
+  // Parentheses nest by recursion: deeper than this is refused rather than overflowing the
+  // stack (no real expression comes near it).
+  static constexpr int MaximumDepth = 256;
+
   bool Primary()
   {
     this->SkipSpace();
@@ -84,19 +95,32 @@ private:
     {
       return this->Fail("unexpected end (expected a shape S<id>, '~' or '(')");
     }
-    if (this->Accept('~'))
+    // A run of '~' is counted, not recursed into: only its parity matters.
+    size_t nots = 0;
+    while (this->Accept('~'))
+    {
+      ++nots;
+    }
+    if (nots > 0)
     {
       if (!this->Primary())
         return false;
-      this->Code.push_back(Not);
+      if (nots % 2)
+        this->Code.push_back(Not);
       return true;
     }
     if (this->Accept('('))
     {
+      if (++this->Depth > MaximumDepth)
+      {
+        --this->Pos;
+        return this->Fail("parentheses nested deeper than " + std::to_string(MaximumDepth));
+      }
       if (!this->Expr())
         return false;
       if (!this->Accept(')'))
         return this->Fail("missing ')'");
+      --this->Depth;
       return true;
     }
     const char c = this->Text[this->Pos];
@@ -116,8 +140,20 @@ private:
       {
         return this->Fail("shape id too large");
       }
-      const int id = std::stoi(this->Text.substr(start, this->Pos - start));
-      if (this->NumberOfShapes >= 0 && id >= this->NumberOfShapes)
+      const long long id = std::stoll(this->Text.substr(start, this->Pos - start));
+      int operand = static_cast<int>(id);
+      if (this->Ids)
+      {
+        const auto it = std::lower_bound(this->Ids->begin(), this->Ids->end(), id);
+        if (it == this->Ids->end() || *it != id)
+        {
+          this->Pos = start - 1;
+          return this->Fail("unknown shape S" + std::to_string(id) + " (the input has " +
+            ShapeList(*this->Ids) + ")");
+        }
+        operand = static_cast<int>(it - this->Ids->begin());
+      }
+      else if (id > INT_MAX || (this->NumberOfShapes >= 0 && id >= this->NumberOfShapes))
       {
         this->Pos = start - 1;
         return this->Fail("unknown shape S" + std::to_string(id) + " (the input has " +
@@ -125,7 +161,7 @@ private:
           std::to_string(this->NumberOfShapes - 1) + ")");
       }
       this->Code.push_back(Push);
-      this->Code.push_back(id);
+      this->Code.push_back(operand);
       return true;
     }
     return this->Fail(
@@ -179,10 +215,37 @@ private:
 
   const std::string& Text;
   int NumberOfShapes;
+  const std::vector<int>* Ids;
   std::vector<int>& Code;
   size_t Pos = 0;
+  int Depth = 0;
   std::string Error;
 };
+
+} // namespace
+
+//------------------------------------------------------------------------------
+std::string ShapeList(const std::vector<int>& ids)
+{
+  if (ids.empty())
+  {
+    return "no shapes";
+  }
+  std::string s = std::to_string(ids.size()) + " shape(s): ";
+  const size_t shown = std::min<size_t>(ids.size(), 8);
+  for (size_t i = 0; i < shown; ++i)
+  {
+    s += (i ? ", S" : "S") + std::to_string(ids[i]);
+  }
+  if (shown < ids.size())
+  {
+    s += ", ..., S" + std::to_string(ids.back());
+  }
+  return s;
+}
+
+namespace
+{
 
 std::string Join(const std::vector<int>& ids, const char* op)
 {
@@ -194,23 +257,22 @@ std::string Join(const std::vector<int>& ids, const char* op)
   return s;
 }
 
-std::vector<int> AllShapes(int n, int skip = -1)
+std::vector<int> Range(int n)
 {
-  std::vector<int> ids;
+  std::vector<int> ids(std::max(n, 0));
   for (int i = 0; i < n; ++i)
   {
-    if (i != skip)
-      ids.push_back(i);
+    ids[i] = i;
   }
   return ids;
 }
 
 // "Sa op Sb", or the variadic form over every shape when a or b is -1.
-std::string Variadic(int a, int b, int n, const char* op)
+std::string Variadic(int a, int b, const std::vector<int>& ids, const char* op)
 {
   if (a < 0 || b < 0)
   {
-    return Join(AllShapes(n), op);
+    return Join(ids, op);
   }
   return "S" + std::to_string(a) + " " + op + " S" + std::to_string(b);
 }
@@ -220,7 +282,24 @@ std::string Variadic(int a, int b, int n, const char* op)
 //------------------------------------------------------------------------------
 bool BooleanExpression::Parse(const std::string& text, int numberOfShapes, std::string& error)
 {
-  Parser parser(text, numberOfShapes, this->Code);
+  return this->Compile(text, numberOfShapes, nullptr, error);
+}
+
+//------------------------------------------------------------------------------
+bool BooleanExpression::Parse(const std::string& text,
+  const std::vector<int>& shapeIds,
+  std::string& error)
+{
+  return this->Compile(text, -1, &shapeIds, error);
+}
+
+//------------------------------------------------------------------------------
+bool BooleanExpression::Compile(const std::string& text,
+  int numberOfShapes,
+  const std::vector<int>* shapeIds,
+  std::string& error)
+{
+  Parser parser(text, numberOfShapes, shapeIds, this->Code);
   if (!parser.Run(error))
   {
     this->Code.clear();
@@ -284,22 +363,47 @@ bool BooleanExpression::Evaluate(const std::vector<char>& inside) const
 //------------------------------------------------------------------------------
 std::string BooleanExpression::Union(int a, int b, int n)
 {
-  return Variadic(a, b, n, "|");
+  return Union(a, b, Range(n));
 }
 std::string BooleanExpression::Intersection(int a, int b, int n)
 {
-  return Variadic(a, b, n, "&");
+  return Intersection(a, b, Range(n));
 }
 std::string BooleanExpression::SymmetricDifference(int a, int b, int n)
 {
-  return Variadic(a, b, n, "^");
+  return SymmetricDifference(a, b, Range(n));
 }
 std::string BooleanExpression::Difference(int a, int b, int n)
 {
+  return Difference(a, b, Range(n));
+}
+std::string BooleanExpression::Union(int a, int b, const std::vector<int>& ids)
+{
+  return Variadic(a, b, ids, "|");
+}
+std::string BooleanExpression::Intersection(int a, int b, const std::vector<int>& ids)
+{
+  return Variadic(a, b, ids, "&");
+}
+std::string BooleanExpression::SymmetricDifference(int a, int b, const std::vector<int>& ids)
+{
+  return Variadic(a, b, ids, "^");
+}
+std::string BooleanExpression::Difference(int a, int b, const std::vector<int>& ids)
+{
   if (a < 0 || b < 0)
   {
-    const int first = a < 0 ? 0 : a;
-    const std::vector<int> others = AllShapes(n, first);
+    if (ids.empty())
+    {
+      return "S0";
+    }
+    const int first = a < 0 ? ids.front() : a;
+    std::vector<int> others;
+    for (int id : ids)
+    {
+      if (id != first)
+        others.push_back(id);
+    }
     if (others.empty())
     {
       return "S" + std::to_string(first);

@@ -16,6 +16,9 @@
 namespace boolsurf
 {
 
+/// "3 shape(s): S0, S5, S1000000" (the first few and the last when there are many).
+std::string ShapeList(const std::vector<int>& shapeIds);
+
 class BooleanExpression
 {
 public:
@@ -23,10 +26,17 @@ public:
   /// expected; shape ids >= numberOfShapes are "unknown shape" errors (pass -1 to accept any).
   bool Parse(const std::string& text, int numberOfShapes, std::string& error);
 
+  /// Parses `text` over the shapes `shapeIds` (sorted, distinct; any int ids, e.g. 7 and
+  /// 1000000): S<id> names a shape by its id and is evaluated on its index in `shapeIds`, so
+  /// Evaluate's `inside` and GetShapes() use indices. Ids not in the list are "unknown shape"
+  /// errors.
+  bool Parse(const std::string& text, const std::vector<int>& shapeIds, std::string& error);
+
   /// Value for one cell; inside[s] tells whether the cell is inside shape s.
   bool Evaluate(const std::vector<char>& inside) const;
 
-  /// Shapes the expression reads, sorted, without repeats.
+  /// Shapes the expression reads (ids, or indices in the shapeIds given to Parse), sorted,
+  /// without repeats.
   const std::vector<int>& GetShapes() const { return this->Shapes; }
 
   ///@{
@@ -39,7 +49,20 @@ public:
   static std::string SymmetricDifference(int a, int b, int numberOfShapes);
   ///@}
 
+  ///@{
+  /// The same over the shapes `shapeIds` (sorted ids; "all shapes" means all of them).
+  static std::string Union(int a, int b, const std::vector<int>& shapeIds);
+  static std::string Intersection(int a, int b, const std::vector<int>& shapeIds);
+  static std::string Difference(int a, int b, const std::vector<int>& shapeIds);
+  static std::string SymmetricDifference(int a, int b, const std::vector<int>& shapeIds);
+  ///@}
+
 private:
+  bool Compile(const std::string& text,
+    int numberOfShapes,
+    const std::vector<int>* shapeIds,
+    std::string& error);
+
   enum Op : int
   {
     Push = 0, // followed by the shape id in Code

@@ -15,8 +15,8 @@ bool SelectCells(const LabelingResult& labels,
   {
     if (s >= labels.NumberOfShapes)
     {
-      error = "the expression reads shape S" + std::to_string(s) + " but the arrangement has " +
-        std::to_string(labels.NumberOfShapes) + " shape(s)";
+      error = "the expression reads shape index " + std::to_string(s) +
+        " but the arrangement has " + std::to_string(labels.NumberOfShapes) + " shape(s)";
       return false;
     }
     if (!labels.ShapeConsistent[s])
@@ -30,7 +30,8 @@ bool SelectCells(const LabelingResult& labels,
             std::to_string(c.FirstLabel) + " and " + std::to_string(c.SecondLabel) + ")";
         }
       }
-      bad += (bad.empty() ? "" : ", ") + std::string("S") + std::to_string(s) + where;
+      bad +=
+        (bad.empty() ? "" : ", ") + std::string("S") + std::to_string(labels.ShapeIdOf(s)) + where;
     }
   }
   if (!bad.empty())
@@ -42,13 +43,17 @@ bool SelectCells(const LabelingResult& labels,
   }
   const int ns = labels.NumberOfShapes;
   const int nc = ns > 0 ? static_cast<int>(labels.Labels.size()) / ns : 0;
+  // Once per cell, reading only the shapes the expression names: the cost is cells x operands,
+  // never triangles.
   selected.assign(nc, 0);
   std::vector<char> inside(ns, 0);
-  for (int c = 0; c < nc; ++c)
+  const std::vector<int>& operands = expression.GetShapes();
+  const int* row = labels.Labels.data();
+  for (int c = 0; c < nc; ++c, row += ns)
   {
-    for (int s : expression.GetShapes())
+    for (int s : operands)
     {
-      inside[s] = IsInside(labels.Labels[static_cast<size_t>(c) * ns + s], rule);
+      inside[s] = IsInside(row[s], rule);
     }
     selected[c] = expression.Evaluate(inside);
   }

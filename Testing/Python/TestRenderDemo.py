@@ -22,7 +22,9 @@ reader.UpdatePipeline()
 info = reader.GetDataInformation()
 assert info.GetNumberOfCells() > 20, info.GetNumberOfCells()
 assert reader.CellData["ArrangementCell"] is not None
-assert reader.CellData["Labels"] is not None
+# Labels belong to cells: the region carries the cells x shapes table, no per-triangle labels.
+assert reader.FieldData["CellLabels"] is not None
+assert reader.CellData["Labels"] is None
 # The union of two discs of radius 0.12 * 0.49 on the front face: a small part of the surface.
 from paraview import servermanager as sm  # noqa: E402
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402

@@ -23,7 +23,7 @@ for script, (name, low, high) in expected.items():
     reader.UpdatePipeline()
     region = sm.Fetch(reader)
     assert region.GetNumberOfCells() > 50, (script, region.GetNumberOfCells())
-    assert region.GetCellData().GetArray("Labels") is not None
+    assert region.GetFieldData().GetArray("CellLabels") is not None
     from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
     sizes = vtkCellSizeFilter()
     sizes.SetInputData(region)

@@ -195,12 +195,14 @@ json RunScene(const fs::path& scene)
   }
   result["status"] = "ok";
   result["cells"] = static_cast<int>(cells->GetComponent(0, 0));
+  // Inconsistent shapes by ShapeId (ShapeConsistent is per shape index, in ShapeIds' order).
+  vtkDataArray* shapeIds = fd->GetArray("ShapeIds");
   std::vector<int> inconsistent;
   for (vtkIdType s = 0; s < consistent->GetNumberOfTuples(); ++s)
   {
     if (consistent->GetComponent(s, 0) == 0)
     {
-      inconsistent.push_back(static_cast<int>(s));
+      inconsistent.push_back(static_cast<int>(shapeIds->GetComponent(s, 0)));
     }
   }
   result["inconsistent"] = inconsistent;

@@ -205,10 +205,16 @@ TEST(SurfaceBooleans, TwoOppositeMeridiansBoundABand)
   // has u > pi/2: the band labeled 1 is u in (pi/2, 2pi), three quarters of the torus.
   const double total = testutils::Area(torus);
   EXPECT_NEAR(band / total, 0.75, 0.01);
-  auto* labels = f->GetOutput()->GetCellData()->GetArray("Labels");
-  ASSERT_NE(labels, nullptr);
-  EXPECT_EQ(labels->GetRange(0)[0], 1);
-  EXPECT_EQ(labels->GetRange(0)[1], 1);
+  // Every region triangle's cell has label 1 for S0 (labels are per cell: CellLabels row
+  // ArrangementCell).
+  auto* labels = f->GetOutput()->GetFieldData()->GetArray("CellLabels");
+  auto* cellOf = f->GetOutput()->GetCellData()->GetArray("ArrangementCell");
+  ASSERT_TRUE(labels && cellOf);
+  EXPECT_EQ(f->GetOutput()->GetCellData()->GetArray("Labels"), nullptr);
+  for (vtkIdType t = 0; t < f->GetOutput()->GetNumberOfCells(); ++t)
+  {
+    ASSERT_EQ(labels->GetComponent(static_cast<vtkIdType>(cellOf->GetComponent(t, 0)), 0), 1);
+  }
 }
 
 TEST(SurfaceBooleans, VariadicOperationsEqualTheirExpressions)

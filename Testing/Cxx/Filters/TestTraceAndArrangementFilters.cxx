@@ -328,7 +328,9 @@ TEST(ArrangementFilter, InputArraysAreCarriedToTheResult)
   {
     EXPECT_EQ(input->GetComponent(c, 0), source->GetComponent(c, 0));
   }
-  EXPECT_NE(region->GetCellData()->GetArray("Labels"), nullptr);
+  // Labels belong to cells (field data CellLabels), never per triangle in the region.
+  EXPECT_EQ(region->GetCellData()->GetArray("Labels"), nullptr);
+  EXPECT_NE(region->GetFieldData()->GetArray("CellLabels"), nullptr);
   EXPECT_NE(region->GetCellData()->GetArray("ArrangementCell"), nullptr);
   // The boundary is one closed loop with the region on its left (counter-clockwise here).
   vtkPolyData* boundary = f->GetBoundaryOutput();

@@ -1,0 +1,194 @@
+#include "Labeling/ArrangementLabelingInput.h"
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+namespace boolsurf
+{
+
+//------------------------------------------------------------------------------
+std::vector<int> DistinctShapeIds(const std::vector<TracedCurve>& curves)
+{
+  std::vector<int> ids;
+  ids.reserve(curves.size());
+  for (const TracedCurve& c : curves)
+  {
+    ids.push_back(c.ShapeId);
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+//------------------------------------------------------------------------------
+int ShapeIndexOf(const std::vector<int>& shapeIds, int shapeId)
+{
+  const auto it = std::lower_bound(shapeIds.begin(), shapeIds.end(), shapeId);
+  return it != shapeIds.end() && *it == shapeId ? static_cast<int>(it - shapeIds.begin()) : -1;
+}
+
+//------------------------------------------------------------------------------
+std::vector<int> PatchLocations(const std::vector<ArrangementPatch>& patches)
+{
+  // Overlapping patches have the same point sequence, maybe reversed: the key is the ordered
+  // end points and the points next to them.
+  std::map<std::tuple<int, int, int, int>, int> ids;
+  std::vector<int> location(patches.size(), -1);
+  for (size_t p = 0; p < patches.size(); ++p)
+  {
+    const std::vector<int>& pts = patches[p].Points;
+    if (pts.size() < 2)
+    {
+      // Degenerate patch: a place of its own.
+      location[p] =
+        ids
+          .emplace(std::make_tuple(-1 - static_cast<int>(p), 0, 0, 0), static_cast<int>(ids.size()))
+          .first->second;
+      continue;
+    }
+    const int a = pts.front(), b = pts.back();
+    const int c = pts[1], d = pts[pts.size() - 2];
+    auto key = std::make_tuple(std::min(a, b), std::max(a, b), a <= b ? c : d, a <= b ? d : c);
+    if (a == b) // a closed patch: its two directions give (c, d) and (d, c)
+    {
+      key = std::make_tuple(a, b, std::min(c, d), std::max(c, d));
+    }
+    location[p] = ids.emplace(key, static_cast<int>(ids.size())).first->second;
+  }
+  return location;
+}
+
+//------------------------------------------------------------------------------
+std::vector<int> CellComponents(const MeshTopology& topology, const Arrangement& arr)
+{
+  std::vector<int> component(arr.NumberOfCells, 0);
+  for (int c = 0; c < arr.NumberOfCells && c < static_cast<int>(arr.CellFirstTriangle.size()); ++c)
+  {
+    component[c] = topology.TriangleComponent[arr.SourceTriangle[arr.CellFirstTriangle[c]]];
+  }
+  return component;
+}
+
+//------------------------------------------------------------------------------
+std::vector<int> ZeroCellCandidates(const TriangleMesh& mesh,
+  const MeshTopology& topo,
+  const Arrangement& arr)
+{
+  std::vector<int> result(topo.GetNumberOfComponents(), -1);
+  std::vector<int> longest(topo.GetNumberOfComponents(), -1);
+  for (int l = 0; l < static_cast<int>(topo.BoundaryLoops.size()); ++l)
+  {
+    const int c = topo.BoundaryLoops[l].Component;
+    if (longest[c] < 0 || topo.BoundaryLoops[l].Length > topo.BoundaryLoops[longest[c]].Length)
+    {
+      longest[c] = l;
+    }
+  }
+  for (int c = 0; c < topo.GetNumberOfComponents(); ++c)
+  {
+    if (longest[c] < 0)
+    {
+      continue;
+    }
+    const BoundaryLoop& loop = topo.BoundaryLoops[longest[c]];
+    for (size_t i = 0; i < loop.HalfEdges.size() && result[c] < 0; ++i)
+    {
+      const int h = loop.HalfEdges[i];
+      const int t = h / 3;
+      const int a = mesh.GetTriangle(t)[h % 3], b = mesh.GetTriangle(t)[(h % 3 + 1) % 3];
+      const int e = mesh.GetEdgeId(t, h % 3);
+      // The refined triangle of t holding the boundary sub-edge that starts at vertex a
+      // (mesh vertices keep their ids in the refined surface; the next point is b or a
+      // point on edge e).
+      for (int r = arr.TriangleOffset[t]; r < arr.TriangleOffset[t + 1] && result[c] < 0; ++r)
+      {
+        const auto& tri = arr.Triangles[r];
+        for (int k = 0; k < 3; ++k)
+        {
+          const int next = tri[(k + 1) % 3];
+          const CanonicalPoint& q = arr.PointOnMesh[next];
+          const bool onEdge = next == b || (q.Location == PointLocation::Edge && q.Id == e);
+          if (tri[k] == a && onEdge)
+          {
+            result[c] = arr.TriangleCell[r];
+          }
+        }
+      }
+    }
+  }
+  return result;
+}
+
+//------------------------------------------------------------------------------
+LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const std::vector<TracedCurve>& curves,
+  const Arrangement& arr)
+{
+  LabelingInput in;
+  in.ShapeIds = DistinctShapeIds(curves);
+  in.NumberOfCells = arr.NumberOfCells;
+  in.NumberOfShapes = static_cast<int>(in.ShapeIds.size());
+  const std::vector<int> location = PatchLocations(arr.Patches);
+  in.Arcs.reserve(arr.CellGraph.size());
+  for (const CellGraphArc& a : arr.CellGraph)
+  {
+    in.Arcs.push_back({ a.RightCell,
+      a.LeftCell,
+      ShapeIndexOf(in.ShapeIds, a.Shape),
+      a.Patch >= 0 ? location[a.Patch] : -1 });
+  }
+  in.CellComponent = CellComponents(topology, arr);
+  in.ZeroCells = ZeroCellCandidates(mesh, topology, arr);
+  return in;
+}
+
+//------------------------------------------------------------------------------
+int CellAtSurfacePoint(const TriangleMesh& mesh, const Arrangement& arr, int t, double u, double v)
+{
+  if (t < 0 || t + 1 >= static_cast<int>(arr.TriangleOffset.size()))
+  {
+    return -1;
+  }
+  const int r0 = arr.TriangleOffset[t], r1 = arr.TriangleOffset[t + 1];
+  if (r1 - r0 == 1)
+  {
+    return arr.TriangleCell[r0];
+  }
+  // The sub-triangle whose smallest barycentric coordinate of (u, v) is largest: the one that
+  // contains the point, or the nearest one when rounding puts it just outside all.
+  int best = -1;
+  double bestScore = -1e300;
+  for (int r = r0; r < r1; ++r)
+  {
+    double x[3], y[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::array<double, 3> w =
+        WeightsInTriangle(mesh, arr.PointOnMesh[arr.Triangles[r][k]], t);
+      x[k] = w[1];
+      y[k] = w[2];
+    }
+    const double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+    if (area == 0)
+    {
+      continue;
+    }
+    double score = 1e300;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = (k + 1) % 3, b = (k + 2) % 3;
+      const double wk = ((x[b] - x[a]) * (v - y[a]) - (y[b] - y[a]) * (u - x[a])) / area;
+      score = std::min(score, wk);
+    }
+    if (score > bestScore)
+    {
+      bestScore = score;
+      best = r;
+    }
+  }
+  return best >= 0 ? arr.TriangleCell[best] : -1;
+}
+
+} // namespace boolsurf

@@ -1,0 +1,55 @@
+// What the labeling reads from an arrangement: the cell graph with shapes as dense indices,
+// crossings grouped by place, the surface component of each cell and a zero cell per component
+// (BoolSurf §3.4, §4.4). Shared by the VTK filters (which also write it as field data) and
+// the one-step filter, which labels straight from the Core arrangement.
+#ifndef boolsurf_ArrangementLabelingInput_h
+#define boolsurf_ArrangementLabelingInput_h
+
+#include "Arrangement/Arrangement.h"
+#include "Labeling/CellLabeling.h"
+#include "Mesh/MeshTopology.h"
+
+#include <vector>
+
+namespace boolsurf
+{
+
+/// The distinct ShapeIds of `curves`, sorted: shape index i is ShapeIds[i]. Labels and
+/// selections work on indices, so memory never depends on how large the ids are.
+std::vector<int> DistinctShapeIds(const std::vector<TracedCurve>& curves);
+
+/// Index of `shapeId` in the sorted `shapeIds`, or -1.
+int ShapeIndexOf(const std::vector<int>& shapeIds, int shapeId);
+
+/// Per patch, a place id: patches on the same refined sub-edges (overlapping curves, maybe
+/// reversed) share it and are crossed together.
+std::vector<int> PatchLocations(const std::vector<ArrangementPatch>& patches);
+
+/// Surface component of each cell (that of its lowest triangle).
+std::vector<int> CellComponents(const MeshTopology& topology, const Arrangement& arrangement);
+
+/// Per surface component, a cell touching its longest boundary loop, or -1 for closed
+/// components: the zero cell of the labeling (plugged holes are outside every shape).
+std::vector<int> ZeroCellCandidates(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const Arrangement& arrangement);
+
+/// The labeling input of an arrangement of `curves` (the curves it was computed from):
+/// shapes as indices into DistinctShapeIds(curves), arcs located by PatchLocations, cell
+/// components and automatic zero cells.
+LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const std::vector<TracedCurve>& curves,
+  const Arrangement& arrangement);
+
+/// The cell of `arrangement` holding the point (u, v) of mesh triangle t (barycentric weights
+/// of corners 1 and 2), or -1 when t is not part of the refined surface.
+int CellAtSurfacePoint(const TriangleMesh& mesh,
+  const Arrangement& arrangement,
+  int t,
+  double u,
+  double v);
+
+} // namespace boolsurf
+
+#endif

@@ -1,0 +1,166 @@
+#include "vtkBoolSurfRegionOutput.h"
+
+#include "vtkBoolSurfAttributeTransfer.h"
+
+#include <vtkDataArray.h>
+#include <vtkIdList.h>
+
+#include <algorithm>
+
+namespace boolsurf
+{
+namespace
+{
+
+// Connectivity of triangles 0..n-1 as a cell array (offsets 0, 3, 6, ...).
+void SetTriangles(const std::vector<int>& connectivity, vtkPolyData* output)
+{
+  const vtkIdType nt = static_cast<vtkIdType>(connectivity.size() / 3);
+  vtkNew<vtkIdTypeArray> offsets, conn;
+  offsets->SetNumberOfTuples(nt + 1);
+  conn->SetNumberOfTuples(3 * nt);
+  vtkIdType* o = offsets->GetPointer(0);
+  for (vtkIdType t = 0; t <= nt; ++t)
+  {
+    o[t] = 3 * t;
+  }
+  std::copy(connectivity.begin(), connectivity.end(), conn->GetPointer(0));
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, conn);
+  output->SetPolys(polys);
+}
+
+vtkSmartPointer<vtkIdList> IdList(const std::vector<int>& ids)
+{
+  auto list = vtkSmartPointer<vtkIdList>::New();
+  list->SetNumberOfIds(static_cast<vtkIdType>(ids.size()));
+  std::copy(ids.begin(), ids.end(), list->GetPointer(0));
+  return list;
+}
+
+// Every array of `from` gathered at `ids` into `to` (typed bulk copies, no per-tuple calls).
+void GatherArrays(vtkDataSetAttributes* from, vtkIdList* ids, vtkDataSetAttributes* to)
+{
+  const vtkIdType n = ids->GetNumberOfIds();
+  to->CopyAllocate(from, n);
+  vtkNew<vtkIdList> destination;
+  destination->SetNumberOfIds(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    destination->SetId(i, i);
+  }
+  to->CopyData(from, ids, destination);
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPolyData* region)
+{
+  vtkDataArray* cellOf = input->GetCellData()->GetArray("ArrangementCell");
+  const vtkIdType nt = input->GetNumberOfCells();
+  const vtkIntArray* ints = vtkArrayDownCast<vtkIntArray>(cellOf);
+  const int cells = static_cast<int>(selected.size());
+  // One pass over the triangles' cell ids.
+  std::vector<int> triangles;
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    const int c = ints ? ints->GetValue(t) : static_cast<int>(cellOf->GetComponent(t, 0));
+    if (c >= 0 && c < cells && selected[c])
+    {
+      triangles.push_back(static_cast<int>(t));
+    }
+  }
+  vtkCellArray* polys = input->GetPolys();
+  const bool onlyPolys = input->GetNumberOfPolys() == nt;
+  vtkNew<vtkIdList> pts;
+  RegionExtractor extractor;
+  RegionMesh mesh;
+  extractor.Extract(
+    triangles,
+    static_cast<int>(input->GetNumberOfPoints()),
+    [&](int t, int k)
+    {
+      if (onlyPolys)
+      {
+        polys->GetCellAtId(t, pts);
+      }
+      else
+      {
+        input->GetCellPoints(t, pts);
+      }
+      return static_cast<int>(pts->GetId(k));
+    },
+    mesh);
+
+  vtkSmartPointer<vtkIdList> pointIds = IdList(mesh.Points);
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(pointIds->GetNumberOfIds());
+  input->GetPoints()->GetData()->GetTuples(pointIds, points->GetData());
+  region->SetPoints(points);
+  SetTriangles(mesh.Connectivity, region);
+  GatherArrays(input->GetPointData(), pointIds, region->GetPointData());
+  GatherArrays(input->GetCellData(), IdList(mesh.Triangles), region->GetCellData());
+}
+
+//------------------------------------------------------------------------------
+void WriteRegion(const vtkSurfaceInput& surface,
+  const Arrangement& arr,
+  const RegionMesh& mesh,
+  vtkPolyData* region)
+{
+  const vtkIdType np = static_cast<vtkIdType>(mesh.Points.size());
+  const vtkIdType nt = static_cast<vtkIdType>(mesh.Triangles.size());
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(np);
+  double* xyz = coordinates->GetPointer(0);
+  vtkNew<vtkIdTypeArray> triangleId;
+  triangleId->SetName("TriangleId");
+  triangleId->SetNumberOfTuples(np);
+  vtkNew<vtkDoubleArray> barycentric;
+  barycentric->SetName("Barycentric");
+  barycentric->SetNumberOfComponents(2);
+  barycentric->SetNumberOfTuples(np);
+  std::vector<SurfacePoint> pointSurface(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    const int p = mesh.Points[i];
+    const Vec3& x = arr.Positions[p];
+    xyz[3 * i] = x.x;
+    xyz[3 * i + 1] = x.y;
+    xyz[3 * i + 2] = x.z;
+    pointSurface[i] = arr.PointSurface[p];
+    triangleId->SetValue(i, pointSurface[i].Triangle);
+    barycentric->SetTypedComponent(i, 0, pointSurface[i].U);
+    barycentric->SetTypedComponent(i, 1, pointSurface[i].V);
+  }
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  region->SetPoints(points);
+  SetTriangles(mesh.Connectivity, region);
+
+  std::vector<int> sourceTriangle(nt);
+  vtkNew<vtkIntArray> cell;
+  cell->SetName("ArrangementCell");
+  cell->SetNumberOfTuples(nt);
+  vtkNew<vtkIdTypeArray> source;
+  source->SetName("SourceTriangle");
+  source->SetNumberOfTuples(nt);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    const int r = mesh.Triangles[t];
+    sourceTriangle[t] = arr.SourceTriangle[r];
+    cell->SetValue(t, arr.TriangleCell[r]);
+    source->SetValue(t, sourceTriangle[t]);
+  }
+  // The surface's own arrays first (they skip BoolSurf's names), then ours.
+  TransferSurfaceAttributes(surface.Triangles, *surface.Mesh, pointSurface, sourceTriangle, region);
+  region->GetCellData()->AddArray(cell);
+  region->GetCellData()->AddArray(source);
+  region->GetPointData()->AddArray(triangleId);
+  region->GetPointData()->AddArray(barycentric);
+}
+
+} // namespace boolsurf
