@@ -17,6 +17,11 @@ namespace
 
 using Clock = std::chrono::steady_clock;
 
+// Triangles per tile of the flood fill: small enough that curves leave most tiles clean (a
+// curve crosses about the tile's diameter, ~8 triangles, per tile it enters), large enough
+// that clean tiles cost little next to their triangles.
+constexpr int TileSize = 64;
+
 double Milliseconds(Clock::time_point from, Clock::time_point to)
 {
   return std::chrono::duration<double, std::milli>(to - from).count();
@@ -77,7 +82,8 @@ struct Arrangement::WorkBuffers
   std::vector<int> TouchedTriangles, TouchedEdges;
   std::unordered_set<std::uint64_t> BlockedMeshSubEdges;
   std::vector<unsigned char> Blocked;
-  FloodFillBuffers Flood;
+  MeshTiles Tiles;
+  TileFloodBuffers Flood;
   std::vector<RefinedCurve> RefinedCurves;
 };
 
@@ -372,11 +378,21 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   view.EdgeOfEdgePoint = &edgeOfEdgePoint;
   view.BlockedMeshSubEdges = &blockedMeshSubEdges;
   view.MeshEdgeHasBlocked = &meshEdgeHasBlocked;
+  // Tiles of the mesh: built once per mesh (the persistent part of the dual graph); an edit
+  // floods clean tiles as single nodes and only the triangles of tiles that curves touch.
+  if (work.Tiles.MeshSerial != mesh.GetSerial() || mesh.GetSerial() == 0)
+  {
+    BuildMeshTiles(mesh, TileSize, work.Tiles);
+  }
   arena.execute(
     [&]
     {
-      out.NumberOfCells =
-        FloodFillCells(view, out.TriangleCell, &out.CellFirstTriangle, &work.Flood);
+      out.NumberOfCells = FloodFillCellsByTiles(view,
+        work.Tiles,
+        work.TouchedTriangles,
+        out.TriangleCell,
+        &out.CellFirstTriangle,
+        work.Flood);
     });
   const Clock::time_point filled = Clock::now();
 

@@ -5,7 +5,6 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <atomic>
 #include <memory>
 
 namespace boolsurf
@@ -42,49 +41,6 @@ int LocalEdgesOfPoint(const RefinedSurfaceView& s, int t, int id)
     }
   }
   return 0;
-}
-
-// Lock-free union-find over refined triangles. A parent is never above its child, so the root of
-// a set is its lowest member; unions link the higher root below the lower one by CAS, and
-// path halving only ever stores ancestors, so concurrent finds stay correct.
-inline int FindSet(std::atomic<int>* parent, int x)
-{
-  for (;;)
-  {
-    const int p = parent[x].load(std::memory_order_relaxed);
-    if (p == x)
-    {
-      return x;
-    }
-    const int g = parent[p].load(std::memory_order_relaxed);
-    if (g != p)
-    {
-      parent[x].store(g, std::memory_order_relaxed);
-    }
-    x = g;
-  }
-}
-
-inline void UniteSets(std::atomic<int>* parent, int a, int b)
-{
-  for (;;)
-  {
-    a = FindSet(parent, a);
-    b = FindSet(parent, b);
-    if (a == b)
-    {
-      return;
-    }
-    if (a < b)
-    {
-      std::swap(a, b);
-    }
-    int expected = a;
-    if (parent[a].compare_exchange_strong(expected, b, std::memory_order_acq_rel))
-    {
-      return;
-    }
-  }
 }
 
 } // namespace
@@ -149,214 +105,275 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
 }
 
 //------------------------------------------------------------------------------
-int FloodFillCells(const RefinedSurfaceView& surface,
+void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  tiles.MeshSerial = mesh.GetSerial();
+  tiles.TileOfTriangle.assign(nt, -1);
+  tiles.Offset.assign(1, 0);
+  tiles.Members.clear();
+  tiles.Members.reserve(nt);
+  // Seeds in increasing order: every triangle below a seed is already in a tile, so a tile's
+  // seed is its lowest member and tiles are ordered by lowest member.
+  for (int seed = 0; seed < nt; ++seed)
+  {
+    if (!mesh.IsUsable(seed) || tiles.TileOfTriangle[seed] >= 0)
+    {
+      continue;
+    }
+    const int k = tiles.GetNumberOfTiles();
+    const size_t start = tiles.Members.size();
+    auto full = [&] { return static_cast<int>(tiles.Members.size() - start) >= size; };
+    tiles.TileOfTriangle[seed] = k;
+    tiles.Members.push_back(seed);
+    for (size_t head = start; head < tiles.Members.size() && !full(); ++head)
+    {
+      const int t = tiles.Members[head];
+      for (int j = 0; j < 3 && !full(); ++j)
+      {
+        const int n = mesh.GetNeighbor(t, j);
+        if (n >= 0 && mesh.IsUsable(n) && tiles.TileOfTriangle[n] < 0)
+        {
+          tiles.TileOfTriangle[n] = k;
+          tiles.Members.push_back(n);
+        }
+      }
+    }
+    std::sort(tiles.Members.begin() + start, tiles.Members.end());
+    tiles.Offset.push_back(static_cast<int>(tiles.Members.size()));
+  }
+  tiles.Adjacent.clear();
+  for (int t = 0; t < nt; ++t)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      const int n = mesh.GetNeighbor(t, j);
+      if (n < 0)
+      {
+        continue;
+      }
+      const int a = tiles.TileOfTriangle[t], b = tiles.TileOfTriangle[n];
+      if (a >= 0 && b >= 0 && a < b)
+      {
+        tiles.Adjacent.emplace_back(a, b);
+      }
+    }
+  }
+  std::sort(tiles.Adjacent.begin(), tiles.Adjacent.end());
+  tiles.Adjacent.erase(
+    std::unique(tiles.Adjacent.begin(), tiles.Adjacent.end()), tiles.Adjacent.end());
+}
+
+namespace
+{
+// Plain union-find whose roots are the lowest members (single-threaded use).
+inline int FindRoot(int* parent, int x)
+{
+  while (parent[x] != x)
+  {
+    parent[x] = parent[parent[x]];
+    x = parent[x];
+  }
+  return x;
+}
+
+inline void Unite(int* parent, int a, int b)
+{
+  a = FindRoot(parent, a);
+  b = FindRoot(parent, b);
+  if (a != b)
+  {
+    parent[std::max(a, b)] = std::min(a, b);
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
+  const MeshTiles& tiles,
+  const std::vector<int>& changedTriangles,
   std::vector<int>& cellOfTriangle,
   std::vector<int>* cellFirstTriangle,
-  FloodFillBuffers* buffers)
+  TileFloodBuffers& buffers)
 {
-  FloodFillBuffers localBuffers;
-  FloodFillBuffers& scratch = buffers ? *buffers : localBuffers;
   const TriangleMesh& mesh = *surface.Mesh;
   const int count = static_cast<int>(surface.Triangles->size());
-  const int nt = mesh.GetNumberOfTriangles();
   const int* offset = surface.Offset->data();
   const char* state = surface.Refined->data();
-  const Triangle* meshTriangles = mesh.GetTriangles().data();
-  if (scratch.ParentCapacity < static_cast<size_t>(count))
+  const int* tileOf = tiles.TileOfTriangle.data();
+  const int numberOfTiles = tiles.GetNumberOfTiles();
+  if (static_cast<int>(buffers.Dirty.size()) != numberOfTiles)
   {
-    scratch.Parent.reset(new std::atomic<int>[count]);
-    scratch.ParentCapacity = count;
+    buffers.Dirty.assign(numberOfTiles, 0);
   }
-  std::atomic<int>* parent = scratch.Parent.get();
-  cellOfTriangle.resize(count);
-  const int grain = 4096;
-  tbb::parallel_for(tbb::blocked_range<int>(0, count, grain),
-    [&](const tbb::blocked_range<int>& range)
+  char* dirty = buffers.Dirty.data();
+  std::vector<int>& dirtyTiles = buffers.DirtyTiles;
+  dirtyTiles.clear();
+  for (int t : changedTriangles)
+  {
+    const int k = tileOf[t];
+    if (k >= 0 && !dirty[k])
     {
-      for (int r = range.begin(); r != range.end(); ++r)
+      dirty[k] = 1;
+      dirtyTiles.push_back(k);
+    }
+  }
+  std::sort(dirtyTiles.begin(), dirtyTiles.end());
+  if (static_cast<int>(buffers.Parent.size()) < count)
+  {
+    buffers.Parent.resize(count);
+  }
+  int* parent = buffers.Parent.data();
+  // A clean tile's node is the refined index of its lowest member (unrefined: one triangle).
+  std::vector<int>& tileNode = buffers.TileNode;
+  tileNode.resize(numberOfTiles);
+  auto rep = [&](int k) { return tileNode[k]; };
+  auto nodeOf = [&](int r)
+  {
+    const int k = tileOf[(*surface.SourceTriangle)[r]];
+    return dirty[k] ? r : tileNode[k];
+  };
+  std::vector<int>& nodes = buffers.Nodes;
+  nodes.clear();
+  for (int k = 0; k < numberOfTiles; ++k)
+  {
+    const int r = offset[tiles.Members[tiles.Offset[k]]];
+    tileNode[k] = r;
+    if (!dirty[k])
+    {
+      parent[r] = r;
+      nodes.push_back(r);
+    }
+  }
+  for (int k : dirtyTiles)
+  {
+    for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
+    {
+      const int t = tiles.Members[i];
+      for (int r = offset[t]; r < offset[t + 1]; ++r)
       {
-        parent[r].store(r, std::memory_order_relaxed);
+        parent[r] = r;
+        nodes.push_back(r);
       }
-    });
+    }
+  }
 
-  // Per source triangle, its refined index when it is unrefined, else -1: one random read per
-  // neighbour on the fast path.
-  std::vector<int>& unrefinedIndex = scratch.UnrefinedIndex;
-  unrefinedIndex.resize(nt);
-  tbb::parallel_for(tbb::blocked_range<int>(0, nt, grain),
+  // Arcs between clean tiles: precomputed with the tiles.
+  for (const std::pair<int, int>& ab : tiles.Adjacent)
+  {
+    if (!dirty[ab.first] && !dirty[ab.second])
+    {
+      Unite(parent, rep(ab.first), rep(ab.second));
+    }
+  }
+  // Arcs from the triangles of dirty tiles, as in FloodFillCells; an arc between two unrefined
+  // triangles of dirty tiles is united from the lower one, an arc into a clean tile from the
+  // dirty side, an arc touching a refined triangle from each refined side.
+  for (int k : dirtyTiles)
+  {
+    for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
+    {
+      const int t = tiles.Members[i];
+      const int r0 = offset[t], r1 = offset[t + 1];
+      const char st = state[t];
+      if (!(st & RefinedSurfaceView::RefinedBit))
+      {
+        const Triangle& tri = mesh.GetTriangle(t);
+        for (int j = 0; j < 3; ++j)
+        {
+          const int n = mesh.GetNeighbor(t, j);
+          if (n < 0 || (state[n] & RefinedSurfaceView::RefinedBit))
+          {
+            continue;
+          }
+          const bool cleanNeighbor = !dirty[tileOf[n]];
+          if (!cleanNeighbor && n <= t)
+          {
+            continue;
+          }
+          if (st != 0 && (*surface.MeshEdgeHasBlocked)[mesh.GetEdgeId(t, j)] &&
+            surface.BlockedMeshSubEdges->count(UndirectedPointPair(tri[j], tri[(j + 1) % 3])))
+          {
+            continue;
+          }
+          Unite(parent, r0, cleanNeighbor ? rep(tileOf[n]) : offset[n]);
+        }
+        continue;
+      }
+      for (int r = r0; r < r1; ++r)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          bool blocked = false;
+          const int n = surface.Neighbor(r, j, blocked);
+          if (n >= 0 && !blocked)
+          {
+            Unite(parent, r, nodeOf(n));
+          }
+        }
+      }
+    }
+  }
+
+  // Roots (lowest member of each set, hence its lowest triangle) numbered in increasing order.
+  std::vector<int>& cellOfRoot = buffers.CellOfRoot;
+  if (static_cast<int>(cellOfRoot.size()) < count)
+  {
+    cellOfRoot.resize(count);
+  }
+  std::vector<int> roots;
+  for (int r : nodes)
+  {
+    parent[r] = FindRoot(parent, r);
+    if (parent[r] == r)
+    {
+      roots.push_back(r);
+    }
+  }
+  std::sort(roots.begin(), roots.end());
+  for (size_t c = 0; c < roots.size(); ++c)
+  {
+    cellOfRoot[roots[c]] = static_cast<int>(c);
+  }
+  if (cellFirstTriangle)
+  {
+    *cellFirstTriangle = roots;
+  }
+  // Each tile's cell (clean tiles) then one streaming pass over the mesh triangles in order.
+  for (int k = 0; k < numberOfTiles; ++k)
+  {
+    tileNode[k] = dirty[k] ? -1 : cellOfRoot[parent[tileNode[k]]];
+  }
+  cellOfTriangle.resize(count);
+  int* cell = cellOfTriangle.data();
+  const int nt = mesh.GetNumberOfTriangles();
+  tbb::parallel_for(tbb::blocked_range<int>(0, nt, 1 << 14),
     [&](const tbb::blocked_range<int>& range)
     {
       for (int t = range.begin(); t != range.end(); ++t)
       {
-        unrefinedIndex[t] = (state[t] & RefinedSurfaceView::RefinedBit) ? -1 : offset[t];
+        const int k = tileOf[t];
+        if (k < 0)
+        {
+          continue;
+        }
+        const int c = tileNode[k];
+        if (c >= 0)
+        {
+          cell[offset[t]] = c;
+          continue;
+        }
+        for (int r = offset[t]; r < offset[t + 1]; ++r)
+        {
+          cell[r] = cellOfRoot[parent[r]];
+        }
       }
     });
-
-  // Phase 1, per fixed block of source triangles (independent of the thread count): arcs with
-  // both ends in the block are united with plain loads and stores, since no other thread
-  // touches the block's nodes; arcs leaving the block are kept for phase 2. Every arc is
-  // united from at least one side: arcs between unrefined triangles from the lower one, arcs
-  // touching a refined triangle from each refined side. With one thread, all arcs are united
-  // in phase 1 (the same sets, without atomic instructions).
-  const bool serial = tbb::this_task_arena::max_concurrency() == 1;
-  const int sourceBlock = 1 << 16;
-  const int sourceBlocks = (nt + sourceBlock - 1) / sourceBlock;
-  std::vector<std::vector<std::pair<int, int>>>& crossing = scratch.Crossing;
-  crossing.resize(sourceBlocks);
-  for (auto& arcs : crossing)
+  for (int k : dirtyTiles)
   {
-    arcs.clear();
+    dirty[k] = 0;
   }
-  tbb::parallel_for(0,
-    sourceBlocks,
-    [&](int b)
-    {
-      const int t0 = b * sourceBlock, t1 = std::min(nt, t0 + sourceBlock);
-      const int lo = offset[t0], hi = offset[t1];
-      std::vector<std::pair<int, int>>& out = crossing[b];
-      auto unite = [&](int x, int y)
-      {
-        if (!serial && (y < lo || y >= hi))
-        {
-          out.emplace_back(x, y);
-          return;
-        }
-        x = FindSet(parent, x);
-        y = FindSet(parent, y);
-        if (x != y)
-        {
-          parent[std::max(x, y)].store(std::min(x, y), std::memory_order_relaxed);
-        }
-      };
-      for (int t = t0; t < t1; ++t)
-      {
-        const int r0 = offset[t], r1 = offset[t + 1];
-        if (r0 == r1)
-        {
-          continue; // unusable triangle
-        }
-        const char st = state[t];
-        if (st == 0)
-        {
-          // Fast path: an unrefined triangle without curves on its edges.
-          for (int j = 0; j < 3; ++j)
-          {
-            const int n = mesh.GetNeighbor(t, j);
-            if (n > t)
-            {
-              const int rn = unrefinedIndex[n];
-              if (rn >= 0)
-              {
-                unite(r0, rn);
-              }
-            }
-          }
-        }
-        else if (!(st & RefinedSurfaceView::RefinedBit))
-        {
-          const Triangle& tri = meshTriangles[t];
-          for (int j = 0; j < 3; ++j)
-          {
-            const int n = mesh.GetNeighbor(t, j);
-            if (n <= t || (state[n] & RefinedSurfaceView::RefinedBit))
-            {
-              continue;
-            }
-            if ((*surface.MeshEdgeHasBlocked)[mesh.GetEdgeId(t, j)] &&
-              surface.BlockedMeshSubEdges->count(UndirectedPointPair(tri[j], tri[(j + 1) % 3])))
-            {
-              continue;
-            }
-            unite(r0, offset[n]);
-          }
-        }
-        else
-        {
-          for (int r = r0; r < r1; ++r)
-          {
-            for (int j = 0; j < 3; ++j)
-            {
-              bool blocked = false;
-              const int n = surface.Neighbor(r, j, blocked);
-              if (n >= 0 && !blocked)
-              {
-                unite(r, n);
-              }
-            }
-          }
-        }
-      }
-    });
-  // Phase 2: arcs between blocks, by lock-free unions.
-  tbb::parallel_for(0,
-    sourceBlocks,
-    [&](int b)
-    {
-      for (const std::pair<int, int>& arc : crossing[b])
-      {
-        UniteSets(parent, arc.first, arc.second);
-      }
-    });
-
-  // Number the roots (the lowest triangle of each cell) in order: per fixed block, count, scan,
-  // then number; then every triangle takes its root's number.
-  const int blockSize = 1 << 16;
-  const int blocks = (count + blockSize - 1) / blockSize;
-  std::vector<int>& blockRoots = scratch.BlockRoots;
-  blockRoots.assign(blocks + 1, 0);
-  tbb::parallel_for(0,
-    blocks,
-    [&](int b)
-    {
-      const int end = std::min(count, (b + 1) * blockSize);
-      int roots = 0;
-      for (int r = b * blockSize; r < end; ++r)
-      {
-        const int root = FindSet(parent, r);
-        parent[r].store(root, std::memory_order_relaxed);
-        roots += root == r;
-      }
-      blockRoots[b + 1] = roots;
-    });
-  for (int b = 0; b < blocks; ++b)
-  {
-    blockRoots[b + 1] += blockRoots[b];
-  }
-  if (cellFirstTriangle)
-  {
-    cellFirstTriangle->resize(blockRoots[blocks]);
-  }
-  tbb::parallel_for(0,
-    blocks,
-    [&](int b)
-    {
-      const int end = std::min(count, (b + 1) * blockSize);
-      int next = blockRoots[b];
-      for (int r = b * blockSize; r < end; ++r)
-      {
-        if (parent[r].load(std::memory_order_relaxed) == r)
-        {
-          if (cellFirstTriangle)
-          {
-            (*cellFirstTriangle)[next] = r;
-          }
-          cellOfTriangle[r] = next++;
-        }
-      }
-    });
-  tbb::parallel_for(tbb::blocked_range<int>(0, count, grain),
-    [&](const tbb::blocked_range<int>& range)
-    {
-      for (int r = range.begin(); r != range.end(); ++r)
-      {
-        const int root = parent[r].load(std::memory_order_relaxed);
-        if (root != r)
-        {
-          cellOfTriangle[r] = cellOfTriangle[root];
-        }
-      }
-    });
-  return blockRoots[blocks];
+  return static_cast<int>(roots.size());
 }
 
 //------------------------------------------------------------------------------

@@ -22,7 +22,6 @@
 #include "Mesh/SurfacePoint.h"
 
 #include <array>
-#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <unordered_set>
@@ -71,28 +70,50 @@ inline std::uint64_t UndirectedPointPair(int a, int b)
   return (static_cast<std::uint64_t>(lo) << 32) | hi;
 }
 
-/// Scratch memory of FloodFillCells, kept by callers that flood the same mesh repeatedly.
-struct FloodFillBuffers
+/// The base mesh cut into tiles: connected groups of about `size` triangles (grown breadth-first
+/// from the lowest unassigned triangle across manifold edges), built once per mesh. A tile with
+/// no curve inside or on its edges lies in one cell, so the flood fill of an edit treats it as
+/// one node: the persistent part of the dual graph of adjacencies.
+struct MeshTiles
 {
-  std::unique_ptr<std::atomic<int>[]> Parent;
-  size_t ParentCapacity = 0;
-  std::vector<int> UnrefinedIndex;
-  std::vector<std::vector<std::pair<int, int>>> Crossing;
-  std::vector<int> BlockRoots;
+  std::uint64_t MeshSerial = 0;    ///< TriangleMesh::GetSerial() of the mesh they were built on
+  std::vector<int> TileOfTriangle; ///< -1 for unusable triangles
+  std::vector<int> Offset;         ///< members of tile k: Members[Offset[k] .. Offset[k + 1])
+  std::vector<int> Members;        ///< ascending within each tile
+  std::vector<std::pair<int, int>> Adjacent; ///< tile pairs (a < b) sharing an edge, distinct
+  int GetNumberOfTiles() const
+  {
+    return this->Offset.empty() ? 0 : static_cast<int>(this->Offset.size()) - 1;
+  }
 };
 
-/// Connected components of the DGA without the blocked arcs (the flood fill of the method), as
-/// a lock-free union-find run in parallel over source triangles on the calling TBB arena.
-/// Unrefined triangles between unrefined neighbours take a fast path (base-mesh twins, no
-/// hashing). Every set's root is its lowest triangle, and cells are numbered in order of their
-/// lowest triangle, so the result is that of a sequential breadth-first flood fill seeded in
-/// triangle order, whatever the number of threads. Returns the number of cells;
-/// `cellFirstTriangle`, when given, receives each cell's lowest triangle. `buffers` (optional)
-/// keeps the scratch memory for the next call.
-int FloodFillCells(const RefinedSurfaceView& surface,
+void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles);
+
+/// Scratch memory of FloodFillCellsByTiles, kept between edits.
+struct TileFloodBuffers
+{
+  std::vector<int> Parent;   ///< indexed by refined triangle; only nodes in use are set
+  std::vector<char> Dirty;   ///< per tile; reset after each call
+  std::vector<int> TileNode; ///< per tile: its node, then its cell (-1 when dirty)
+  std::vector<int> DirtyTiles;
+  std::vector<int> Nodes; ///< union-find nodes of this call
+  std::vector<int> CellOfRoot;
+};
+
+/// Connected components of the DGA without the blocked arcs (the flood fill of the method),
+/// with clean tiles as single nodes: the cost is the tiles, plus the triangles of the tiles
+/// that curves touch, plus one streaming write of cellOfTriangle. Every set's root is its
+/// lowest refined triangle and cells are numbered in that order, so the result is that of a
+/// sequential breadth-first flood fill seeded in triangle order, whatever the number of
+/// threads. `changedTriangles` must list every mesh triangle whose state in
+/// `surface.Refined` is not 0 (repeats allowed). Returns the number of cells;
+/// `cellFirstTriangle`, when given, receives each cell's lowest triangle.
+int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
+  const MeshTiles& tiles,
+  const std::vector<int>& changedTriangles,
   std::vector<int>& cellOfTriangle,
-  std::vector<int>* cellFirstTriangle = nullptr,
-  FloodFillBuffers* buffers = nullptr);
+  std::vector<int>* cellFirstTriangle,
+  TileFloodBuffers& buffers);
 
 /// The triangles of each cell as lists (counting sort by cell): those of cell c are
 /// triangles[offsets[c] .. offsets[c + 1]), ascending. Built once per arrangement, they make

@@ -297,3 +297,110 @@ TEST(Arrangement, ErrorsNameCurveAndPoint)
   EXPECT_EQ(arr.NumberOfCells, 1);
   EXPECT_EQ(arr.Triangles.size(), static_cast<size_t>(mesh.GetNumberOfTriangles()));
 }
+
+// An edit computes into the Arrangement of the previous one (its buffers, its per-triangle
+// states reset where the last curves set them, its mesh-vertex points kept): every result must
+// equal that of a fresh Arrangement, whatever came before.
+TEST(Arrangement, EditsIntoTheSameArrangementEqualFreshOnes)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(40, 1.0, 0.3, 3));
+  FlatPolygonTracer tracer(mesh);
+  Arrangement reused;
+  std::string error;
+  for (std::uint32_t edit = 0; edit < 8; ++edit)
+  {
+    std::mt19937 rng(100 + edit);
+    std::vector<TracedCurve> curves;
+    const int count = 1 + static_cast<int>(edit % 4) * 2;
+    for (int c = 0; c < count; ++c)
+      curves.push_back(TraceOrDie(tracer, RandomPolygon(rng, 5 + c % 3, 0.02, 0.98), true, c, c));
+    SCOPED_TRACE("edit " + std::to_string(edit));
+    ASSERT_TRUE(ComputeArrangement(mesh, curves, ArrangementOptions(), reused, error)) << error;
+    ExpectCellsAreFloodFill(reused);
+    const Arrangement fresh = ArrangeOrDie(mesh, curves);
+    EXPECT_EQ(reused.NumberOfCells, fresh.NumberOfCells);
+    EXPECT_EQ(reused.TriangleCell, fresh.TriangleCell);
+    EXPECT_EQ(reused.CellFirstTriangle, fresh.CellFirstTriangle);
+    EXPECT_EQ(reused.TriangleOffset, fresh.TriangleOffset);
+    EXPECT_EQ(reused.Triangles, fresh.Triangles);
+    EXPECT_EQ(reused.SourceTriangle, fresh.SourceTriangle);
+    ASSERT_EQ(reused.Positions.size(), fresh.Positions.size());
+    for (size_t i = 0; i < fresh.Positions.size(); ++i)
+    {
+      ASSERT_EQ(Distance(reused.Positions[i], fresh.Positions[i]), 0.0) << "point " << i;
+      ASSERT_EQ(reused.PointSurface[i].Triangle, fresh.PointSurface[i].Triangle);
+      ASSERT_EQ(reused.PointSurface[i].U, fresh.PointSurface[i].U);
+      ASSERT_EQ(reused.PointSurface[i].V, fresh.PointSurface[i].V);
+    }
+    ASSERT_EQ(reused.Patches.size(), fresh.Patches.size());
+    for (size_t i = 0; i < fresh.Patches.size(); ++i)
+    {
+      EXPECT_EQ(reused.Patches[i].Points, fresh.Patches[i].Points);
+      EXPECT_EQ(reused.Patches[i].LeftCell, fresh.Patches[i].LeftCell);
+      EXPECT_EQ(reused.Patches[i].RightCell, fresh.Patches[i].RightCell);
+    }
+    ASSERT_EQ(reused.CellGraph.size(), fresh.CellGraph.size());
+    for (size_t i = 0; i < fresh.CellGraph.size(); ++i)
+    {
+      EXPECT_EQ(reused.CellGraph[i].LeftCell, fresh.CellGraph[i].LeftCell);
+      EXPECT_EQ(reused.CellGraph[i].RightCell, fresh.CellGraph[i].RightCell);
+    }
+  }
+  // Another mesh into the same Arrangement: nothing of the first mesh may survive.
+  const TriangleMesh other = MeshOf(MakeFlatSquare(17, 1.0, 0.2, 9));
+  FlatPolygonTracer otherTracer(other);
+  std::mt19937 rng(7);
+  const std::vector<TracedCurve> curves{ TraceOrDie(
+    otherTracer, RandomPolygon(rng, 6, 0.05, 0.95), true, 0, 0) };
+  ASSERT_TRUE(ComputeArrangement(other, curves, ArrangementOptions(), reused, error)) << error;
+  ExpectCellsAreFloodFill(reused);
+  const Arrangement fresh = ArrangeOrDie(other, curves);
+  EXPECT_EQ(reused.TriangleCell, fresh.TriangleCell);
+  EXPECT_EQ(reused.Triangles, fresh.Triangles);
+  ASSERT_EQ(reused.Positions.size(), fresh.Positions.size());
+  for (size_t i = 0; i < fresh.Positions.size(); ++i)
+    ASSERT_EQ(Distance(reused.Positions[i], fresh.Positions[i]), 0.0) << "point " << i;
+}
+
+// Tiles partition the usable triangles into connected groups of at most the requested size,
+// each led by its lowest member, in increasing order of that member.
+TEST(Arrangement, MeshTilesAreConnectedAndOrdered)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(30, 1.0, 0.3, 5));
+  MeshTiles tiles;
+  BuildMeshTiles(mesh, 64, tiles);
+  const int nt = mesh.GetNumberOfTriangles();
+  ASSERT_GT(tiles.GetNumberOfTiles(), 10);
+  std::vector<int> seen(nt, 0);
+  int previousFirst = -1;
+  for (int k = 0; k < tiles.GetNumberOfTiles(); ++k)
+  {
+    const int begin = tiles.Offset[k], end = tiles.Offset[k + 1];
+    ASSERT_GT(end, begin);
+    ASSERT_LE(end - begin, 64);
+    EXPECT_GT(tiles.Members[begin], previousFirst);
+    previousFirst = tiles.Members[begin];
+    EXPECT_TRUE(std::is_sorted(tiles.Members.begin() + begin, tiles.Members.begin() + end));
+    // Connected: a search from the first member through neighbours in the tile reaches all.
+    std::vector<int> queue{ tiles.Members[begin] };
+    std::vector<char> reached(nt, 0);
+    reached[queue[0]] = 1;
+    for (size_t head = 0; head < queue.size(); ++head)
+      for (int j = 0; j < 3; ++j)
+      {
+        const int n = mesh.GetNeighbor(queue[head], j);
+        if (n >= 0 && !reached[n] && tiles.TileOfTriangle[n] == k)
+        {
+          reached[n] = 1;
+          queue.push_back(n);
+        }
+      }
+    EXPECT_EQ(static_cast<int>(queue.size()), end - begin) << "tile " << k << " is not connected";
+    for (int i = begin; i < end; ++i)
+    {
+      ++seen[tiles.Members[i]];
+      EXPECT_EQ(tiles.TileOfTriangle[tiles.Members[i]], k);
+    }
+  }
+  EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+}
