@@ -8,8 +8,9 @@
  *
  * Operation: Union, Intersection, Difference (ShapeA minus ShapeB), SymmetricDifference, or
  * Expression. ShapeA/ShapeB = -1 means all shapes: the variadic union, intersection and
- * symmetric difference of every shape; Difference with -1 is ShapeA (S0 when ShapeA is -1)
- * minus the union of the others. Expression grammar: shapes `S<id>`, `~` not, `&` and,
+ * symmetric difference of every shape; Difference with -1 is ShapeA (the lowest ShapeId when
+ * ShapeA is -1) minus the union of the others. Shapes are named by their ShapeId, whatever
+ * its size (`S1000000`). Expression grammar: shapes `S<id>`, `~` not, `&` and,
  * `-` minus, `^` xor, `|` or (in decreasing precedence), parentheses; e.g.
  * `(S0 & S1) ^ S2 | ~S3`. Any expression is evaluated in one pass over the cells.
  *
@@ -23,7 +24,9 @@
  * unknown shape id is an error too.
  *
  * Port 0 keeps every array of the refined surface (`ArrangementCell`, `SourceTriangle`,
- * `Labels`, `TriangleId`, `Barycentric` and the input surface's own arrays); port 1 has point
+ * `TriangleId`, `Barycentric` and the input surface's own arrays) and the labels table
+ * (field data `ShapeIds`, `ShapeConsistent`, `CellLabels`); the selection is evaluated once
+ * per cell and only the region's triangles and points are copied; port 1 has point
  * data `TriangleId`/`Barycentric` and cell data `Closed`. Both carry field data `Expression`,
  * the expression evaluated.
  *

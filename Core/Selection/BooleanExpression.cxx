@@ -136,7 +136,7 @@ private:
       {
         return this->Fail("a shape is written S<id>, e.g. S0");
       }
-      if (this->Pos - start > 9)
+      if (this->Pos - start > 10)
       {
         return this->Fail("shape id too large");
       }

@@ -1,0 +1,724 @@
+// What a user waits for after an edit: fresh Update()s of the one-step filter vtkBoolSurf on a
+// large surface (igea_1m, 1.07M triangles), with the surface kept as the same input object so
+// its cached conversion (adjacency, topology, geodesic search state) is reused, as in ParaView.
+// Each benchmark builds its own filter and updates it once before timing (surface conversion
+// and first labeling are not what an edit costs). threads:N sets NumberOfThreads.
+//
+// - BM_OneStepCurveEdit/threads:N: 10 circles x 12 control points in two clusters of
+//   overlapping ones, union of all shapes; each iteration moves the curves (switches between two
+//   prepared curve sets: the same circles moved by 5 % of their radius and rotated by half a
+//   control-point step) and updates: tracing, arrangement, labeling and Boolean all rerun.
+// - BM_OneStepOperationChange/threads:N: same scene; each iteration only toggles Union and
+//   SymmetricDifference (the labeled arrangement is reused, only the Boolean reruns).
+// - BM_OneStepPaperScaleXor/threads:N: 112 circles x 32 control points (the scale of the paper's
+//   largest scenes) in clusters of 4, symmetric difference of all shapes, curve edits as above.
+// - BM_OneStepHugeShapeId: two overlapping circles with ShapeIds 0 and 1000000 on a small mesh
+//   (bunny_npm), union of all shapes, curve edits: what a sparse, huge ShapeId costs.
+//
+// Control points are given exactly (point data TriangleId/Barycentric of the closest surface
+// point), so no projection tolerance is involved. Circles are placed with a fixed-seed RNG:
+// every run measures the same scenes.
+//
+// Counters: <Stage>_ms per stage when output 0 carries the field data array StageTimes
+// (milliseconds, named components, averaged over iterations; absent: no such counters);
+// RegionTriangles and RegionCells (arrangement cells) of output 0 after the last update;
+// DeepCopyMs (median of 5 vtkPolyData::DeepCopy of the surface in this process: the yardstick
+// "as slow as copying the mesh") and EditOverDeepCopy (mean update time over it); PeakRSS_MB
+// (ru_maxrss, reset at the start of each benchmark on Linux so it is that benchmark's peak) and
+// PeakRSSGrowth_MB (that peak above the RSS the benchmark started from: meshes already loaded);
+// TracedVertices (paper-scale scene, from one vtkBoolSurfTraceCurves run outside the timing).
+// Meshes come from BOOLSURF_SHARED_DATA_DIR/meshes; a missing mesh skips the benchmark.
+//
+// Run: BoolSurfVTKBenchmarks --benchmark_filter=OneStep
+#include "vtkBoolSurf.h"
+#include "vtkBoolSurfTraceCurves.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkGenericCell.h>
+#include <vtkIdList.h>
+#include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPLYReader.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStaticCellLocator.h>
+
+#include <benchmark/benchmark.h>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+using Vec = std::array<double, 3>;
+
+Vec Add(const Vec& a, const Vec& b)
+{
+  return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };
+}
+Vec Sub(const Vec& a, const Vec& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+Vec Scale(const Vec& a, double s)
+{
+  return { s * a[0], s * a[1], s * a[2] };
+}
+double Dot(const Vec& a, const Vec& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Vec Cross(const Vec& a, const Vec& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+double Norm(const Vec& a)
+{
+  return std::sqrt(Dot(a, a));
+}
+Vec Normalized(const Vec& a)
+{
+  const double n = Norm(a);
+  return n > 0 ? Scale(a, 1.0 / n) : a;
+}
+
+double PeakRssMB()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0; // ru_maxrss is in KiB on Linux
+}
+
+/// Starts a new peak-RSS measurement and returns the resident size it starts from: on Linux,
+/// writing 5 to /proc/self/clear_refs resets the high-water mark that ru_maxrss reports to the
+/// current RSS, so each benchmark's peak is its own and not that of an earlier, larger one.
+/// Elsewhere the peak stays that of the whole process.
+double ResetPeakRss()
+{
+  std::ofstream("/proc/self/clear_refs") << "5";
+  return PeakRssMB();
+}
+
+double Milliseconds(std::chrono::steady_clock::time_point a,
+  std::chrono::steady_clock::time_point b)
+{
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+/// A surface read once per process, with what the circle placement needs.
+struct Surface
+{
+  vtkSmartPointer<vtkPolyData> Mesh;
+  vtkSmartPointer<vtkStaticCellLocator> Locator;
+  double Diagonal = 0;
+  double DeepCopyMs = 0; // median of 5 DeepCopy runs
+  std::string Error;
+
+  Vec Point(vtkIdType id) const
+  {
+    Vec p;
+    this->Mesh->GetPoint(id, p.data());
+    return p;
+  }
+  std::array<vtkIdType, 3> Triangle(vtkIdType t) const
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    this->Mesh->GetCellPoints(t, n, ids);
+    return { ids[0], ids[1], ids[2] };
+  }
+  /// Area-weighted normal (length = twice the area).
+  Vec AreaNormal(vtkIdType t) const
+  {
+    const auto ids = this->Triangle(t);
+    const Vec a = this->Point(ids[0]);
+    return Cross(Sub(this->Point(ids[1]), a), Sub(this->Point(ids[2]), a));
+  }
+};
+
+const Surface& LoadSurface(const std::string& name)
+{
+  static std::map<std::string, Surface> cache;
+  auto it = cache.find(name);
+  if (it != cache.end())
+  {
+    return it->second;
+  }
+  Surface& s = cache[name];
+  const std::string path = std::string(BOOLSURF_SHARED_DATA_DIR) + "/meshes/" + name;
+  if (!vtkPLYReader::CanReadFile(path.c_str()))
+  {
+    s.Error = "cannot read " + path;
+    return s;
+  }
+  vtkNew<vtkPLYReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  s.Mesh = reader->GetOutput();
+  // Exact control points name triangles by cell id: valid only if every cell is a triangle
+  // (the filter then uses the cells as they are, with the same ids).
+  if (s.Mesh->GetNumberOfPolys() == 0 || s.Mesh->GetNumberOfCells() != s.Mesh->GetNumberOfPolys())
+  {
+    s.Error = "no triangles (or other cells than polygons) in " + path;
+    return s;
+  }
+  s.Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+  s.Locator->SetDataSet(s.Mesh);
+  s.Locator->BuildLocator();
+  double b[6];
+  s.Mesh->GetBounds(b);
+  s.Diagonal = Norm({ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
+
+  std::vector<double> copies;
+  for (int k = 0; k < 5; ++k)
+  {
+    vtkNew<vtkPolyData> copy;
+    const auto t0 = std::chrono::steady_clock::now();
+    copy->DeepCopy(s.Mesh);
+    copies.push_back(Milliseconds(t0, std::chrono::steady_clock::now()));
+  }
+  std::nth_element(copies.begin(), copies.begin() + 2, copies.end());
+  s.DeepCopyMs = copies[2];
+  return s;
+}
+
+/// A control point given exactly: triangle and the weights of its 2nd and 3rd vertex.
+struct ControlPoint
+{
+  vtkIdType Triangle = -1;
+  double U = 0, V = 0;
+  Vec Position{};
+};
+
+/// A circle of the tangent plane at Center, (U, V, N) right-handed so that increasing angles
+/// run counter-clockwise seen from the normal side: the shape is the enclosed disc.
+struct Circle
+{
+  Vec Center{}, U{}, V{}, N{};
+  double Radius = 0;
+};
+
+/// The closest surface point of x, with its triangle's unit normal.
+ControlPoint Snap(const Surface& s, const Vec& x, vtkGenericCell* cell, Vec& normal)
+{
+  ControlPoint cp;
+  double closest[3], dist2 = 0;
+  vtkIdType triangle = -1;
+  int subId = 0;
+  s.Locator->FindClosestPoint(x.data(), closest, cell, triangle, subId, dist2);
+  if (triangle < 0)
+  {
+    return cp;
+  }
+  const auto ids = s.Triangle(triangle);
+  const Vec a = s.Point(ids[0]);
+  const Vec e1 = Sub(s.Point(ids[1]), a), e2 = Sub(s.Point(ids[2]), a);
+  const Vec d = Sub({ closest[0], closest[1], closest[2] }, a);
+  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
+  const double d1 = Dot(d, e1), d2 = Dot(d, e2);
+  const double det = d11 * d22 - d12 * d12;
+  if (det <= 0)
+  {
+    return cp; // degenerate triangle: let the caller reject the point
+  }
+  // The closest point lies in the triangle: clamp only rounding errors.
+  double u = std::max(0.0, (d22 * d1 - d12 * d2) / det);
+  double v = std::max(0.0, (d11 * d2 - d12 * d1) / det);
+  if (u + v > 1)
+  {
+    u /= u + v;
+    v = 1 - u;
+  }
+  cp.Triangle = triangle;
+  cp.U = u;
+  cp.V = v;
+  cp.Position = Add(a, Add(Scale(e1, u), Scale(e2, v)));
+  normal = Normalized(Cross(e1, e2));
+  return cp;
+}
+
+/// The tangent frame at the surface point closest to x: the normal averages the face normals
+/// within half a radius (one triangle of a 1M mesh is noisy), keeping the side of the closest
+/// triangle so the far side of a thin part does not cancel it.
+bool MakeCircle(const Surface& s, const Vec& x, double radius, vtkGenericCell* cell, Circle& c)
+{
+  Vec seedNormal;
+  const ControlPoint center = Snap(s, x, cell, seedNormal);
+  if (center.Triangle < 0)
+  {
+    return false;
+  }
+  const double h = 0.5 * radius;
+  const Vec& p = center.Position;
+  double box[6] = { p[0] - h, p[0] + h, p[1] - h, p[1] + h, p[2] - h, p[2] + h };
+  vtkNew<vtkIdList> cells;
+  s.Locator->FindCellsWithinBounds(box, cells);
+  Vec sum{};
+  for (vtkIdType k = 0; k < cells->GetNumberOfIds(); ++k)
+  {
+    const Vec n = s.AreaNormal(cells->GetId(k));
+    if (Dot(n, seedNormal) > 0)
+    {
+      sum = Add(sum, n);
+    }
+  }
+  c.N = Norm(sum) > 0 ? Normalized(sum) : seedNormal;
+  // Any tangent direction: the axis least aligned with the normal, projected.
+  Vec axis{ 0, 0, 0 };
+  const int least = std::fabs(c.N[0]) < std::fabs(c.N[1])
+    ? (std::fabs(c.N[0]) < std::fabs(c.N[2]) ? 0 : 2)
+    : (std::fabs(c.N[1]) < std::fabs(c.N[2]) ? 1 : 2);
+  axis[least] = 1;
+  c.U = Normalized(Cross(c.N, axis));
+  c.V = Cross(c.N, c.U);
+  c.Center = p;
+  c.Radius = radius;
+  return true;
+}
+
+/// The control points of one version of a circle: count points from angle phase, the center
+/// moved by offset (a fraction of the radius) along U. Fails when the surface is not close to a
+/// disc there: a point snaps far from the circle, onto a triangle facing away, or onto its
+/// neighbour.
+bool CirclePoints(const Surface& s,
+  const Circle& c,
+  int count,
+  double phase,
+  double offset,
+  vtkGenericCell* cell,
+  std::vector<ControlPoint>& points)
+{
+  points.clear();
+  const Vec center = Add(c.Center, Scale(c.U, offset * c.Radius));
+  const double chord = 2 * c.Radius * std::sin(vtkMath::Pi() / count);
+  for (int i = 0; i < count; ++i)
+  {
+    const double angle = phase + 2 * vtkMath::Pi() * i / count;
+    const Vec x = Add(
+      center, Add(Scale(c.U, c.Radius * std::cos(angle)), Scale(c.V, c.Radius * std::sin(angle))));
+    Vec normal;
+    const ControlPoint cp = Snap(s, x, cell, normal);
+    if (cp.Triangle < 0 || Norm(Sub(cp.Position, x)) > 0.25 * c.Radius || Dot(normal, c.N) < 0.3 ||
+      (!points.empty() && Norm(Sub(cp.Position, points.back().Position)) < 0.3 * chord))
+    {
+      return false;
+    }
+    points.push_back(cp);
+  }
+  return Norm(Sub(points.front().Position, points.back().Position)) >= 0.3 * chord;
+}
+
+/// Two versions of every circle: the prepared "before" and "after" of an edit.
+constexpr int Versions = 2;
+bool CircleVersions(const Surface& s, const Circle& c, int count, vtkGenericCell* cell)
+{
+  std::vector<ControlPoint> points;
+  for (int k = 0; k < Versions; ++k)
+  {
+    if (!CirclePoints(s, c, count, k * vtkMath::Pi() / count, 0.05 * k, cell, points))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Circles in clusters of clusterSize overlapping ones (each new member 1.1-1.5 radii from a
+/// random earlier member, so the curves cross), the clusters' seeds spread over the surface
+/// (at least 4 radii from every placed center). Deterministic: fixed seed, fixed order.
+std::vector<Circle> PlaceCircles(const Surface& s,
+  int number,
+  double radius,
+  int clusterSize,
+  int controlPoints,
+  unsigned seed)
+{
+  std::vector<Circle> circles;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  vtkNew<vtkGenericCell> cell;
+  size_t clusterBegin = 0;
+  const vtkIdType nPoints = s.Mesh->GetNumberOfPoints();
+  for (int attempts = 0; static_cast<int>(circles.size()) < number && attempts < 100000; ++attempts)
+  {
+    const bool seedCircle = circles.size() % clusterSize == 0;
+    Vec x;
+    if (seedCircle)
+    {
+      x = s.Point(static_cast<vtkIdType>(rng() % static_cast<unsigned>(nPoints)));
+    }
+    else
+    {
+      const Circle& from =
+        circles[clusterBegin + rng() % static_cast<unsigned>(circles.size() - clusterBegin)];
+      const double angle = 2 * vtkMath::Pi() * unit(rng);
+      const double distance = radius * (1.1 + 0.4 * unit(rng));
+      x = Add(from.Center,
+        Add(Scale(from.U, distance * std::cos(angle)), Scale(from.V, distance * std::sin(angle))));
+    }
+    Circle c;
+    if (!MakeCircle(s, x, radius, cell, c))
+    {
+      continue;
+    }
+    const double minimum = seedCircle ? 4 * radius : 0.9 * radius;
+    const bool separated = std::all_of(circles.begin(),
+      circles.end(),
+      [&](const Circle& o) { return Norm(Sub(o.Center, c.Center)) >= minimum; });
+    if (!separated || !CircleVersions(s, c, controlPoints, cell))
+    {
+      continue;
+    }
+    if (seedCircle)
+    {
+      clusterBegin = circles.size();
+    }
+    circles.push_back(c);
+  }
+  return circles;
+}
+
+/// The control-curve input of vtkBoolSurf: one polygon cell per circle (version `version`),
+/// cell data ShapeId and CurveType (0: geodesic polygon), exact point data TriangleId and
+/// Barycentric.
+vtkSmartPointer<vtkPolyData> CurvesInput(const Surface& s,
+  const std::vector<Circle>& circles,
+  const std::vector<int>& shapeIds,
+  int controlPoints,
+  int version)
+{
+  auto curves = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdTypeArray> triangleIds;
+  triangleIds->SetName("TriangleId");
+  vtkNew<vtkDoubleArray> barycentric;
+  barycentric->SetName("Barycentric");
+  barycentric->SetNumberOfComponents(2);
+  vtkNew<vtkIntArray> shapeId;
+  shapeId->SetName("ShapeId");
+  vtkNew<vtkIntArray> curveType;
+  curveType->SetName("CurveType");
+  vtkNew<vtkGenericCell> cell;
+  std::vector<ControlPoint> cps;
+  for (size_t i = 0; i < circles.size(); ++i)
+  {
+    // Placement checked every version, so this cannot fail.
+    CirclePoints(s,
+      circles[i],
+      controlPoints,
+      version * vtkMath::Pi() / controlPoints,
+      0.05 * version,
+      cell,
+      cps);
+    polys->InsertNextCell(static_cast<vtkIdType>(cps.size()));
+    for (const ControlPoint& cp : cps)
+    {
+      polys->InsertCellPoint(points->InsertNextPoint(cp.Position.data()));
+      triangleIds->InsertNextValue(cp.Triangle);
+      const double uv[2] = { cp.U, cp.V };
+      barycentric->InsertNextTuple(uv);
+    }
+    shapeId->InsertNextValue(shapeIds[i]);
+    curveType->InsertNextValue(0);
+  }
+  curves->SetPoints(points);
+  curves->SetPolys(polys);
+  curves->GetPointData()->AddArray(triangleIds);
+  curves->GetPointData()->AddArray(barycentric);
+  curves->GetCellData()->AddArray(shapeId);
+  curves->GetCellData()->AddArray(curveType);
+  return curves;
+}
+
+/// A scene: the surface and the prepared versions of its curves.
+struct Scene
+{
+  const Surface* Mesh = nullptr;
+  std::vector<vtkSmartPointer<vtkPolyData>> Curves; // one per version
+  int Circles = 0;
+  vtkIdType TracedVertices = -1; // computed on demand
+  std::string Error;
+};
+
+const Scene& GetScene(const std::string& key,
+  const std::string& mesh,
+  int number,
+  double radiusFraction,
+  int clusterSize,
+  int controlPoints,
+  unsigned seed,
+  const std::vector<int>& shapeIds = {})
+{
+  static std::map<std::string, Scene> cache;
+  auto it = cache.find(key);
+  if (it != cache.end())
+  {
+    return it->second;
+  }
+  Scene& scene = cache[key];
+  const Surface& s = LoadSurface(mesh);
+  if (!s.Error.empty())
+  {
+    scene.Error = s.Error;
+    return scene;
+  }
+  scene.Mesh = &s;
+  const std::vector<Circle> circles =
+    PlaceCircles(s, number, radiusFraction * s.Diagonal, clusterSize, controlPoints, seed);
+  if (static_cast<int>(circles.size()) < number)
+  {
+    scene.Error = "placed only " + std::to_string(circles.size()) + " of " +
+      std::to_string(number) + " circles on " + mesh;
+    return scene;
+  }
+  std::vector<int> ids = shapeIds;
+  for (int i = static_cast<int>(ids.size()); i < number; ++i)
+  {
+    ids.push_back(i);
+  }
+  for (int v = 0; v < Versions; ++v)
+  {
+    scene.Curves.push_back(CurvesInput(s, circles, ids, controlPoints, v));
+  }
+  scene.Circles = number;
+  return scene;
+}
+
+// The benchmark scenes (cached: placing 112 circles on 1M triangles is not free).
+const Scene& TenCircles()
+{
+  return GetScene("ten", "igea_1m.ply", 10, 0.03, 5, 12, 7);
+}
+const Scene& PaperScale()
+{
+  return GetScene("paper", "igea_1m.ply", 112, 0.027, 4, 32, 11);
+}
+const Scene& HugeShapeId()
+{
+  return GetScene("huge", "bunny_npm.ply", 2, 0.1, 2, 12, 3, { 0, 1000000 });
+}
+
+/// A fresh filter on the scene's surface and first curve version, updated once: the surface
+/// conversion and the first labeling are not what an edit costs.
+vtkSmartPointer<vtkBoolSurf> WarmFilter(const Scene& scene, int operation, int threads)
+{
+  auto filter = vtkSmartPointer<vtkBoolSurf>::New();
+  filter->SetInputData(0, scene.Mesh->Mesh);
+  filter->SetInputData(1, scene.Curves[0]);
+  filter->SetOperation(operation);
+  filter->SetShapeA(-1);
+  filter->SetShapeB(-1);
+  filter->SetNumberOfThreads(threads);
+  filter->Update();
+  return filter;
+}
+
+/// Sums the per-stage times of output 0's StageTimes field data (milliseconds, named
+/// components) when the filter provides it.
+struct StageSums
+{
+  std::vector<std::string> Names;
+  std::vector<double> Sums;
+  int Count = 0;
+
+  void Add(vtkPolyData* output)
+  {
+    vtkDataArray* times = output->GetFieldData()->GetArray("StageTimes");
+    if (!times || times->GetNumberOfTuples() < 1)
+    {
+      return;
+    }
+    const int n = times->GetNumberOfComponents();
+    if (this->Names.empty())
+    {
+      for (int k = 0; k < n; ++k)
+      {
+        const char* name = times->GetComponentName(k);
+        this->Names.push_back(name ? name : "Stage" + std::to_string(k));
+      }
+      this->Sums.assign(n, 0.0);
+    }
+    if (n != static_cast<int>(this->Sums.size()))
+    {
+      return;
+    }
+    for (int k = 0; k < n; ++k)
+    {
+      this->Sums[k] += times->GetComponent(0, k);
+    }
+    ++this->Count;
+  }
+
+  void Report(benchmark::State& state) const
+  {
+    for (size_t k = 0; this->Count > 0 && k < this->Names.size(); ++k)
+    {
+      state.counters[this->Names[k] + "_ms"] = this->Sums[k] / this->Count;
+    }
+  }
+};
+
+/// What every benchmark reports about the last update: the region's triangles, how many
+/// arrangement cells they make up (more cells than circles: the circles cross), and the
+/// benchmark's peak RSS, also above the RSS it started from (the meshes already loaded).
+void ReportRegion(benchmark::State& state, vtkBoolSurf* filter, double startRssMB)
+{
+  vtkPolyData* region = filter->GetOutput(0);
+  state.counters["RegionTriangles"] = static_cast<double>(region->GetNumberOfCells());
+  if (vtkDataArray* cellOf = region->GetCellData()->GetArray("ArrangementCell"))
+  {
+    std::set<double> cells;
+    for (vtkIdType t = 0; t < cellOf->GetNumberOfTuples(); ++t)
+    {
+      cells.insert(cellOf->GetComponent(t, 0));
+    }
+    state.counters["RegionCells"] = static_cast<double>(cells.size());
+  }
+  state.counters["PeakRSS_MB"] = PeakRssMB();
+  state.counters["PeakRSSGrowth_MB"] = PeakRssMB() - startRssMB;
+}
+
+/// Each iteration switches the curves to the other prepared version (a new input object: the
+/// filter retraces, rearranges, relabels) and updates.
+void CurveEdits(benchmark::State& state, const Scene& scene, int operation, int threads)
+{
+  if (!scene.Error.empty())
+  {
+    state.SkipWithError(scene.Error.c_str());
+    return;
+  }
+  const double startRss = ResetPeakRss();
+  vtkSmartPointer<vtkBoolSurf> filter = WarmFilter(scene, operation, threads);
+  if (filter->GetOutput(0)->GetNumberOfCells() == 0)
+  {
+    state.SkipWithError("the warm-up update produced no region");
+    return;
+  }
+  StageSums stages;
+  double updateMs = 0;
+  size_t version = 0;
+  for (auto _ : state)
+  {
+    version = (version + 1) % scene.Curves.size();
+    filter->SetInputData(1, scene.Curves[version]);
+    const auto t0 = std::chrono::steady_clock::now();
+    filter->Update();
+    updateMs += Milliseconds(t0, std::chrono::steady_clock::now());
+    stages.Add(filter->GetOutput(0));
+  }
+  if (filter->GetOutput(0)->GetNumberOfCells() == 0)
+  {
+    state.SkipWithError("an edit produced no region");
+    return;
+  }
+  stages.Report(state);
+  ReportRegion(state, filter, startRss);
+  state.counters["Circles"] = scene.Circles;
+  state.counters["DeepCopyMs"] = scene.Mesh->DeepCopyMs;
+  state.counters["EditOverDeepCopy"] =
+    updateMs / static_cast<double>(state.iterations()) / scene.Mesh->DeepCopyMs;
+}
+
+void BM_OneStepCurveEdit(benchmark::State& state)
+{
+  CurveEdits(state, TenCircles(), 0, static_cast<int>(state.range(0)));
+}
+
+void BM_OneStepOperationChange(benchmark::State& state)
+{
+  const Scene& scene = TenCircles();
+  if (!scene.Error.empty())
+  {
+    state.SkipWithError(scene.Error.c_str());
+    return;
+  }
+  const double startRss = ResetPeakRss();
+  vtkSmartPointer<vtkBoolSurf> filter = WarmFilter(scene, 0, static_cast<int>(state.range(0)));
+  StageSums stages;
+  int operation = 0;
+  for (auto _ : state)
+  {
+    operation = operation == 0 ? 3 : 0; // Union <-> SymmetricDifference
+    filter->SetOperation(operation);
+    filter->Update();
+    stages.Add(filter->GetOutput(0));
+  }
+  stages.Report(state);
+  ReportRegion(state, filter, startRss);
+}
+
+void BM_OneStepPaperScaleXor(benchmark::State& state)
+{
+  const Scene& scene = PaperScale();
+  if (!scene.Error.empty())
+  {
+    state.SkipWithError(scene.Error.c_str());
+    return;
+  }
+  // The traced curves' vertex count (every mesh-edge crossing), once per process: a separate
+  // tracing filter, outside any timing.
+  static vtkIdType tracedVertices = -1;
+  if (tracedVertices < 0)
+  {
+    vtkNew<vtkBoolSurfTraceCurves> trace;
+    trace->SetInputData(0, scene.Mesh->Mesh);
+    trace->SetInputData(1, scene.Curves[0]);
+    trace->Update();
+    tracedVertices = trace->GetOutput()->GetNumberOfPoints();
+  }
+  CurveEdits(state, scene, 3, static_cast<int>(state.range(0)));
+  state.counters["TracedVertices"] = static_cast<double>(tracedVertices);
+}
+
+// One thread: the scene is two circles, there is nothing to share out. Few iterations: with
+// per-shape costs an update takes seconds.
+void BM_OneStepHugeShapeId(benchmark::State& state)
+{
+  CurveEdits(state, HugeShapeId(), 0, 1);
+}
+
+BENCHMARK(BM_OneStepCurveEdit)
+  ->ArgName("threads")
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime()
+  ->Iterations(10);
+BENCHMARK(BM_OneStepOperationChange)
+  ->ArgName("threads")
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime()
+  ->Iterations(10);
+BENCHMARK(BM_OneStepPaperScaleXor)
+  ->ArgName("threads")
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime()
+  ->Iterations(6);
+BENCHMARK(BM_OneStepHugeShapeId)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
+
+} // namespace
