@@ -48,14 +48,13 @@ struct vtkBoolSurf::Internals
   boolsurf::Arrangement Arrangement;
   boolsurf::LabelingResult Labels;
   std::vector<boolsurf::BoundaryPatch> Patches;
-  std::vector<int> CellOffsets, CellTriangles; ///< triangles of each cell
   // Selection buffers.
   std::vector<char> Selected;
   std::vector<int> RegionTriangles;
   boolsurf::RegionExtractor Extractor;
   boolsurf::RegionMesh Region;
-  /// Milliseconds of the stages of the last labeled arrangement (tracing, labeling, cell lists).
-  double TraceTime = 0, LabelingTime = 0, CellListTime = 0;
+  /// Milliseconds of the stages of the last labeled arrangement (tracing, labeling).
+  double TraceTime = 0, LabelingTime = 0;
 
   /// What the labeled arrangement was computed from (the inputs by identity and time, and the
   /// tracing and labeling properties).
@@ -177,8 +176,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
     vtkErrorMacro(<< error);
     return 0;
   }
-  boolsurf::RegionExtractor::SelectedTriangles(
-    in.Selected, in.CellOffsets, in.CellTriangles, in.RegionTriangles);
+  boolsurf::RegionExtractor::SelectedTriangles(in.Selected, in.Arrangement, in.RegionTriangles);
   const boolsurf::Arrangement& arr = in.Arrangement;
   in.Extractor.Extract(
     in.RegionTriangles,
@@ -287,11 +285,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     in.Patches[p].LeftCell = arr.Patches[p].LeftCell;
     in.Patches[p].RightCell = arr.Patches[p].RightCell;
   }
-  const Clock::time_point labeled = Clock::now();
-  boolsurf::BuildCellTriangleLists(
-    arr.TriangleCell, arr.NumberOfCells, in.CellOffsets, in.CellTriangles);
-  in.LabelingTime = Milliseconds(labelStart, labeled);
-  in.CellListTime = Milliseconds(labeled, Clock::now());
+  in.LabelingTime = Milliseconds(labelStart, Clock::now());
   return true;
 }
 
@@ -378,33 +372,31 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
     "FloodFill",
     "CellGraph",
     "Labeling",
-    "CellLists",
     "Selection",
     "Output",
     "Total" };
-  std::array<double, 11> times{ in.TraceTime,
+  std::array<double, 10> times{ in.TraceTime,
     t.Hash,
     t.Intersections,
     t.Refinement,
     t.FloodFill,
     t.CellGraph,
     in.LabelingTime,
-    in.CellListTime,
     selectionTime,
     outputTime,
     0 };
   if (reused)
   {
-    std::fill(times.begin(), times.begin() + 8, 0.0);
+    std::fill(times.begin(), times.begin() + 7, 0.0);
   }
-  for (int k = 0; k < 10; ++k)
+  for (int k = 0; k < 9; ++k)
   {
-    times[10] += times[k];
+    times[9] += times[k];
   }
   vtkNew<vtkDoubleArray> stageTimes;
   stageTimes->SetName("StageTimes");
-  stageTimes->SetNumberOfComponents(11);
-  for (int k = 0; k < 11; ++k)
+  stageTimes->SetNumberOfComponents(10);
+  for (int k = 0; k < 10; ++k)
   {
     stageTimes->SetComponentName(k, names[k]);
   }

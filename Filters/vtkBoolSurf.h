@@ -15,7 +15,7 @@
  * `ShapeIds`, `ShapeConsistent`, `CellLabels` (the labels of every arrangement cell, one
  * component per shape: row ArrangementCell gives a triangle's labels), `Expression` and
  * `StageTimes` (milliseconds of this update per stage: Trace, Hash, Intersections,
- * Refinement, FloodFill, CellGraph, Labeling, CellLists, Selection, Output, Total; 0 for the
+ * Refinement, FloodFill, CellGraph, Labeling, Selection, Output, Total; 0 for the
  * stages reused from the previous update); port 1 its boundary as oriented polylines (region
  * on the left) with point data `TriangleId`/`Barycentric`.
  *

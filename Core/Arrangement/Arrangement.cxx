@@ -82,7 +82,7 @@ struct Arrangement::WorkBuffers
   std::vector<int> TouchedTriangles, TouchedEdges;
   std::unordered_set<std::uint64_t> BlockedMeshSubEdges;
   std::vector<unsigned char> Blocked;
-  MeshTiles Tiles;
+  std::shared_ptr<MeshTiles> Tiles;
   TileFloodBuffers Flood;
   std::vector<RefinedCurve> RefinedCurves;
 };
@@ -380,19 +380,22 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   view.MeshEdgeHasBlocked = &meshEdgeHasBlocked;
   // Tiles of the mesh: built once per mesh (the persistent part of the dual graph); an edit
   // floods clean tiles as single nodes and only the triangles of tiles that curves touch.
-  if (work.Tiles.MeshSerial != mesh.GetSerial() || mesh.GetSerial() == 0)
+  if (!work.Tiles || work.Tiles->MeshSerial != mesh.GetSerial() || mesh.GetSerial() == 0)
   {
-    BuildMeshTiles(mesh, TileSize, work.Tiles);
+    work.Tiles = std::make_shared<MeshTiles>();
+    BuildMeshTiles(mesh, TileSize, *work.Tiles);
   }
+  out.Tiles = work.Tiles;
   arena.execute(
     [&]
     {
       out.NumberOfCells = FloodFillCellsByTiles(view,
-        work.Tiles,
+        *work.Tiles,
         work.TouchedTriangles,
         out.TriangleCell,
         &out.CellFirstTriangle,
-        work.Flood);
+        work.Flood,
+        &out.Contents);
     });
   const Clock::time_point filled = Clock::now();
 

@@ -52,6 +52,11 @@ struct Arrangement
   int NumberOfCells = 0;
   /// The lowest refined triangle of each cell (cells are numbered in this order).
   std::vector<int> CellFirstTriangle;
+  /// Each cell's clean tiles of the mesh and loose refined triangles: its triangles, listed
+  /// without scanning the mesh (see ForEachCellTriangle).
+  CellContents Contents;
+  /// The tiles of the mesh (built once per mesh, shared with the next edit).
+  std::shared_ptr<const MeshTiles> Tiles;
   int NumberOfRefinedSourceTriangles = 0; ///< mesh triangles replaced by a triangulation
 
   // --- curves
@@ -71,6 +76,26 @@ struct Arrangement
   struct WorkBuffers;
   std::shared_ptr<WorkBuffers> Work;
 };
+
+/// Calls f(r) for every refined triangle r of cell c (clean tiles first, then loose triangles).
+template <class F>
+void ForEachCellTriangle(const Arrangement& arr, int c, F f)
+{
+  const CellContents& in = arr.Contents;
+  const MeshTiles& tiles = *arr.Tiles;
+  for (int i = in.TileOffset[c]; i < in.TileOffset[c + 1]; ++i)
+  {
+    const int k = in.Tiles[i];
+    for (int m = tiles.Offset[k]; m < tiles.Offset[k + 1]; ++m)
+    {
+      f(arr.TriangleOffset[tiles.Members[m]]);
+    }
+  }
+  for (int i = in.TriangleOffset[c]; i < in.TriangleOffset[c + 1]; ++i)
+  {
+    f(in.Triangles[i]);
+  }
+}
 
 /// Computes the arrangement into `out`, reusing its buffers. Unusable mesh triangles (see
 /// TriangleMesh::IsUsable) are left out of the refined surface. Fails, with a message naming the

@@ -194,7 +194,8 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   const std::vector<int>& changedTriangles,
   std::vector<int>& cellOfTriangle,
   std::vector<int>* cellFirstTriangle,
-  TileFloodBuffers& buffers)
+  TileFloodBuffers& buffers,
+  CellContents* contents)
 {
   const TriangleMesh& mesh = *surface.Mesh;
   const int count = static_cast<int>(surface.Triangles->size());
@@ -369,43 +370,72 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
         }
       }
     });
+  if (contents)
+  {
+    // Counting sorts by cell: clean tiles in tile order, loose triangles in the order of their
+    // (dirty) tiles.
+    const int cells = static_cast<int>(roots.size());
+    std::vector<int>& tileOffset = contents->TileOffset;
+    tileOffset.assign(cells + 1, 0);
+    for (int k = 0; k < numberOfTiles; ++k)
+    {
+      if (tileNode[k] >= 0)
+      {
+        ++tileOffset[tileNode[k] + 1];
+      }
+    }
+    for (int c = 0; c < cells; ++c)
+    {
+      tileOffset[c + 1] += tileOffset[c];
+    }
+    contents->Tiles.resize(tileOffset[cells]);
+    for (int k = 0; k < numberOfTiles; ++k)
+    {
+      if (tileNode[k] >= 0)
+      {
+        contents->Tiles[tileOffset[tileNode[k]]++] = k;
+      }
+    }
+    std::vector<int>& triangleOffset = contents->TriangleOffset;
+    triangleOffset.assign(cells + 1, 0);
+    std::vector<int>& loose = buffers.Loose;
+    loose.clear();
+    for (int k : dirtyTiles)
+    {
+      for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
+      {
+        const int t = tiles.Members[i];
+        for (int r = offset[t]; r < offset[t + 1]; ++r)
+        {
+          loose.push_back(r);
+          ++triangleOffset[cell[r] + 1];
+        }
+      }
+    }
+    for (int c = 0; c < cells; ++c)
+    {
+      triangleOffset[c + 1] += triangleOffset[c];
+    }
+    contents->Triangles.resize(triangleOffset[cells]);
+    for (int r : loose)
+    {
+      contents->Triangles[triangleOffset[cell[r]]++] = r;
+    }
+    // The cursors ran to the next cell's start: shift back by one cell.
+    for (std::vector<int>* o : { &tileOffset, &triangleOffset })
+    {
+      for (int c = cells; c > 0; --c)
+      {
+        (*o)[c] = (*o)[c - 1];
+      }
+      (*o)[0] = 0;
+    }
+  }
   for (int k : dirtyTiles)
   {
     dirty[k] = 0;
   }
   return static_cast<int>(roots.size());
-}
-
-//------------------------------------------------------------------------------
-void BuildCellTriangleLists(const std::vector<int>& cellOfTriangle,
-  int numberOfCells,
-  std::vector<int>& offsets,
-  std::vector<int>& triangles)
-{
-  offsets.assign(static_cast<size_t>(numberOfCells) + 1, 0);
-  const int n = static_cast<int>(cellOfTriangle.size());
-  const int* cell = cellOfTriangle.data();
-  int* count = offsets.data() + 1;
-  for (int r = 0; r < n; ++r)
-  {
-    ++count[cell[r]];
-  }
-  for (int c = 0; c < numberOfCells; ++c)
-  {
-    offsets[c + 1] += offsets[c];
-  }
-  triangles.resize(n);
-  // Scatter with a running cursor per cell (offsets shifted back by one slot afterwards).
-  int* cursor = offsets.data();
-  for (int r = 0; r < n; ++r)
-  {
-    triangles[cursor[cell[r]]++] = r;
-  }
-  for (int c = numberOfCells; c > 0; --c)
-  {
-    offsets[c] = offsets[c - 1];
-  }
-  offsets[0] = 0;
 }
 
 //------------------------------------------------------------------------------

@@ -89,6 +89,15 @@ struct MeshTiles
 
 void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles);
 
+/// What each cell is made of: clean tiles (all their triangles are in the cell, each unrefined:
+/// refined index TriangleOffset[t] of member t) and loose refined triangles (those of tiles that
+/// curves touch). Lists a cell's triangles without scanning the mesh.
+struct CellContents
+{
+  std::vector<int> TileOffset, Tiles;         ///< tiles of cell c: [TileOffset[c], TileOffset[c+1])
+  std::vector<int> TriangleOffset, Triangles; ///< loose refined triangles of cell c
+};
+
 /// Scratch memory of FloodFillCellsByTiles, kept between edits.
 struct TileFloodBuffers
 {
@@ -98,6 +107,7 @@ struct TileFloodBuffers
   std::vector<int> DirtyTiles;
   std::vector<int> Nodes; ///< union-find nodes of this call
   std::vector<int> CellOfRoot;
+  std::vector<int> Loose;
 };
 
 /// Connected components of the DGA without the blocked arcs (the flood fill of the method),
@@ -107,21 +117,15 @@ struct TileFloodBuffers
 /// sequential breadth-first flood fill seeded in triangle order, whatever the number of
 /// threads. `changedTriangles` must list every mesh triangle whose state in
 /// `surface.Refined` is not 0 (repeats allowed). Returns the number of cells;
-/// `cellFirstTriangle`, when given, receives each cell's lowest triangle.
+/// `cellFirstTriangle`, when given, receives each cell's lowest triangle; `contents`, when
+/// given, each cell's tiles and loose triangles.
 int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   const MeshTiles& tiles,
   const std::vector<int>& changedTriangles,
   std::vector<int>& cellOfTriangle,
   std::vector<int>* cellFirstTriangle,
-  TileFloodBuffers& buffers);
-
-/// The triangles of each cell as lists (counting sort by cell): those of cell c are
-/// triangles[offsets[c] .. offsets[c + 1]), ascending. Built once per arrangement, they make
-/// extracting any selection of cells cost the size of the selection.
-void BuildCellTriangleLists(const std::vector<int>& cellOfTriangle,
-  int numberOfCells,
-  std::vector<int>& offsets,
-  std::vector<int>& triangles);
+  TileFloodBuffers& buffers,
+  CellContents* contents = nullptr);
 
 /// A curve on the refined surface: its refined point ids and, per sub-edge i (from point i to
 /// i+1, and for closed curves the last back to the first), the source triangle holding it or,

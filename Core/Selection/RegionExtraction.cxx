@@ -1,23 +1,22 @@
 #include "Selection/RegionExtraction.h"
 
+#include <algorithm>
+
 namespace boolsurf
 {
 
 //------------------------------------------------------------------------------
 void RegionExtractor::SelectedTriangles(const std::vector<char>& selected,
-  const std::vector<int>& cellOffsets,
-  const std::vector<int>& cellTriangles,
+  const Arrangement& arrangement,
   std::vector<int>& triangles)
 {
   triangles.clear();
-  const int cells = static_cast<int>(selected.size());
-  for (int c = 0; c < cells && c + 1 < static_cast<int>(cellOffsets.size()); ++c)
+  const int cells = std::min(static_cast<int>(selected.size()), arrangement.NumberOfCells);
+  for (int c = 0; c < cells; ++c)
   {
     if (selected[c])
     {
-      triangles.insert(triangles.end(),
-        cellTriangles.begin() + cellOffsets[c],
-        cellTriangles.begin() + cellOffsets[c + 1]);
+      ForEachCellTriangle(arrangement, c, [&](int r) { triangles.push_back(r); });
     }
   }
 }

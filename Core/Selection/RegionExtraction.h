@@ -1,9 +1,11 @@
 // The selected region as a small mesh of its own (BoolSurf step 7): the triangles of the
 // selected cells and the points they use, renumbered. The cost is the size of the region:
-// the triangles come from per-cell lists (Arrangement/CellPartition BuildCellTriangleLists),
+// the triangles come from each cell's contents (clean tiles and loose triangles),
 // and the point map is kept between calls and reset only where it was written.
 #ifndef boolsurf_RegionExtraction_h
 #define boolsurf_RegionExtraction_h
+
+#include "Arrangement/Arrangement.h"
 
 #include <array>
 #include <cstddef>
@@ -22,10 +24,10 @@ struct RegionMesh
 class RegionExtractor
 {
 public:
-  /// The triangles of the cells with selected[c] != 0, from the lists of BuildCellTriangleLists.
+  /// The refined triangles of the cells with selected[c] != 0 (from the cells' contents: the
+  /// cost is the selection's size).
   static void SelectedTriangles(const std::vector<char>& selected,
-    const std::vector<int>& cellOffsets,
-    const std::vector<int>& cellTriangles,
+    const Arrangement& arrangement,
     std::vector<int>& triangles);
 
   /// Renumbers the points of `triangles` (corner(t, k) = point id of corner k of triangle t,

@@ -239,6 +239,21 @@ inline void ExpectCellsAreFloodFill(const Arrangement& arr)
   }
   EXPECT_EQ(cells, arr.NumberOfCells);
   EXPECT_TRUE(cell == arr.TriangleCell) << "partition differs from a sequential flood fill";
+  // Each cell's contents (clean tiles, loose triangles) list exactly its triangles, once.
+  std::vector<int> listed(arr.Triangles.size(), -1);
+  int twice = 0;
+  for (int c = 0; c < arr.NumberOfCells; ++c)
+  {
+    ForEachCellTriangle(arr,
+      c,
+      [&](int r)
+      {
+        twice += listed[r] >= 0;
+        listed[r] = c;
+      });
+  }
+  EXPECT_EQ(twice, 0);
+  EXPECT_TRUE(listed == arr.TriangleCell) << "cell contents differ from the partition";
 }
 
 inline Arrangement ArrangeOrDie(const TriangleMesh& mesh,
