@@ -2,7 +2,6 @@
 // selection on an arrangement made once outside the timed loop (BM_Labeling, BM_Boolean), and
 // whole edits of the one-step filter with per-stage times (BM_OneStepScene/<scene>/<threads>).
 // Run: BoolSurfVTKBenchmarks --benchmark_filter='Labeling|Boolean|OneStepScene'
-// 
 #include "../SharedScenes.h"
 #include "vtkBoolSurf.h"
 #include "vtkBoolSurfArrangement.h"

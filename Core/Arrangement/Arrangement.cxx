@@ -105,8 +105,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   // Results are cleared, keeping their capacity (the next edit needs about as much).
   const bool sameMesh = work.MeshSerial != 0 && work.MeshSerial == mesh.GetSerial() &&
     static_cast<int>(out.Positions.size()) >= nv;
-  out.Triangles.clear();
-  out.SourceTriangle.clear();
+  // Triangles, SourceTriangle, TriangleCell and the points keep their contents until
+  // overwritten: every entry is written again, and clearing first would zero them all once more.
   out.NumberOfCells = 0;
   out.NumberOfRefinedSourceTriangles = 0;
   out.Patches.clear();

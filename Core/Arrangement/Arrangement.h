@@ -97,7 +97,8 @@ void ForEachCellTriangle(const Arrangement& arr, int c, F f)
   }
 }
 
-/// Computes the arrangement into `out`, reusing its buffers. Unusable mesh triangles (see
+/// Computes the arrangement into `out`, reusing its buffers (on failure its contents are
+/// unspecified). Unusable mesh triangles (see
 /// TriangleMesh::IsUsable) are left out of the refined surface. Fails, with a message naming the
 /// curve and point, on invalid curve points or consecutive points that share no triangle; the mesh
 /// must not be modified while `mesh` is in use (its adjacency is the base of the dual graph).
