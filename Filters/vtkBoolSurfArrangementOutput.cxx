@@ -67,6 +67,29 @@ std::vector<int> ReadInts(vtkFieldData* fd, const char* name, int comps = 1)
 } // namespace
 
 //------------------------------------------------------------------------------
+void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData* pointData)
+{
+  const vtkIdType np = static_cast<vtkIdType>(points.size());
+  vtkNew<vtkIdTypeArray> triangleId;
+  triangleId->SetName("TriangleId");
+  triangleId->SetNumberOfTuples(np);
+  vtkNew<vtkDoubleArray> barycentric;
+  barycentric->SetName("Barycentric");
+  barycentric->SetNumberOfComponents(2);
+  barycentric->SetNumberOfTuples(np);
+  vtkIdType* tid = triangleId->GetPointer(0);
+  double* uv = barycentric->GetPointer(0);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    tid[i] = points[i].Triangle;
+    uv[2 * i] = points[i].U;
+    uv[2 * i + 1] = points[i].V;
+  }
+  pointData->AddArray(triangleId);
+  pointData->AddArray(barycentric);
+}
+
+//------------------------------------------------------------------------------
 bool ArrangeCurves(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   int threads,
@@ -139,23 +162,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   std::copy(arr.SourceTriangle.begin(), arr.SourceTriangle.end(), source->GetPointer(0));
   output->GetCellData()->AddArray(source);
 
-  vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName("TriangleId");
-  triangleId->SetNumberOfTuples(np);
-  vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName("Barycentric");
-  barycentric->SetNumberOfComponents(2);
-  barycentric->SetNumberOfTuples(np);
-  vtkIdType* tid = triangleId->GetPointer(0);
-  double* uv = barycentric->GetPointer(0);
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    tid[i] = arr.PointSurface[i].Triangle;
-    uv[2 * i] = arr.PointSurface[i].U;
-    uv[2 * i + 1] = arr.PointSurface[i].V;
-  }
-  output->GetPointData()->AddArray(triangleId);
-  output->GetPointData()->AddArray(barycentric);
+  AddSurfacePointArrays(arr.PointSurface, output->GetPointData());
 
   // --- field data: cell graph, patches, components
   vtkFieldData* fd = output->GetFieldData();

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+class vtkPointData;
 class vtkPolyData;
 
 namespace boolsurf
@@ -27,6 +28,9 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
   vtkPolyData* refined,
   vtkPolyData* patches,
   std::string& error);
+
+/// Point data TriangleId/Barycentric: each point as a point of the input surface.
+void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData* pointData);
 
 /// Port 0: refined triangles, ArrangementCell/SourceTriangle, TriangleId/Barycentric, the
 /// input's arrays, and the cell graph, patches and zero-cell candidates as field data.

@@ -1,5 +1,6 @@
 #include "vtkBoolSurfRegionOutput.h"
 
+#include "vtkBoolSurfArrangementOutput.h"
 #include "vtkBoolSurfAttributeTransfer.h"
 
 #include <vtkDataArray.h>
@@ -116,13 +117,6 @@ void WriteRegion(const vtkSurfaceInput& surface,
   coordinates->SetNumberOfComponents(3);
   coordinates->SetNumberOfTuples(np);
   double* xyz = coordinates->GetPointer(0);
-  vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName("TriangleId");
-  triangleId->SetNumberOfTuples(np);
-  vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName("Barycentric");
-  barycentric->SetNumberOfComponents(2);
-  barycentric->SetNumberOfTuples(np);
   std::vector<SurfacePoint> pointSurface(np);
   for (vtkIdType i = 0; i < np; ++i)
   {
@@ -132,9 +126,6 @@ void WriteRegion(const vtkSurfaceInput& surface,
     xyz[3 * i + 1] = x.y;
     xyz[3 * i + 2] = x.z;
     pointSurface[i] = arr.PointSurface[p];
-    triangleId->SetValue(i, pointSurface[i].Triangle);
-    barycentric->SetTypedComponent(i, 0, pointSurface[i].U);
-    barycentric->SetTypedComponent(i, 1, pointSurface[i].V);
   }
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
@@ -159,8 +150,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
   TransferSurfaceAttributes(surface.Triangles, *surface.Mesh, pointSurface, sourceTriangle, region);
   region->GetCellData()->AddArray(cell);
   region->GetCellData()->AddArray(source);
-  region->GetPointData()->AddArray(triangleId);
-  region->GetPointData()->AddArray(barycentric);
+  AddSurfacePointArrays(pointSurface, region->GetPointData());
 }
 
 } // namespace boolsurf
