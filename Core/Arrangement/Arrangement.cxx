@@ -386,6 +386,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     BuildMeshTiles(mesh, TileSize, *work.Tiles);
   }
   out.Tiles = work.Tiles;
+  work.Flood.Method = options.FloodFill;
   arena.execute(
     [&]
     {

@@ -29,6 +29,8 @@ namespace boolsurf
 struct ArrangementOptions
 {
   int Threads = 0; ///< 0: all hardware threads
+  /// Tiles (few tiles touched by curves), whole surface (most touched), or chosen per edit.
+  FloodFillMethod FloodFill = FloodFillMethod::Automatic;
 };
 
 /// Wall-clock milliseconds per stage.

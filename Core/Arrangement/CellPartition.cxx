@@ -166,6 +166,260 @@ void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles)
 
 namespace
 {
+// Lock-free union-find over refined triangles. A parent is never above its child, so the root of
+// a set is its lowest member; unions link the higher root below the lower one by CAS, and
+// path halving only ever stores ancestors, so concurrent finds stay correct.
+inline int FindSet(std::atomic<int>* parent, int x)
+{
+  for (;;)
+  {
+    const int p = parent[x].load(std::memory_order_relaxed);
+    if (p == x)
+    {
+      return x;
+    }
+    const int g = parent[p].load(std::memory_order_relaxed);
+    if (g != p)
+    {
+      parent[x].store(g, std::memory_order_relaxed);
+    }
+    x = g;
+  }
+}
+
+inline void UniteSets(std::atomic<int>* parent, int a, int b)
+{
+  for (;;)
+  {
+    a = FindSet(parent, a);
+    b = FindSet(parent, b);
+    if (a == b)
+    {
+      return;
+    }
+    if (a < b)
+    {
+      std::swap(a, b);
+    }
+    int expected = a;
+    if (parent[a].compare_exchange_strong(expected, b, std::memory_order_acq_rel))
+    {
+      return;
+    }
+  }
+}
+
+// The whole refined surface as one union-find, in parallel over fixed blocks of source
+// triangles (used when curves touch most tiles: then tiles save nothing and this scales with
+// threads). Same sets, roots and numbering as the tiled flood fill.
+int FloodFillAllTriangles(const RefinedSurfaceView& surface,
+  std::vector<int>& cellOfTriangle,
+  std::vector<int>* cellFirstTriangle,
+  TileFloodBuffers& scratch)
+{
+  const TriangleMesh& mesh = *surface.Mesh;
+  const int count = static_cast<int>(surface.Triangles->size());
+  const int nt = mesh.GetNumberOfTriangles();
+  const int* offset = surface.Offset->data();
+  const char* state = surface.Refined->data();
+  const Triangle* meshTriangles = mesh.GetTriangles().data();
+  if (scratch.AtomicCapacity < static_cast<size_t>(count))
+  {
+    scratch.AtomicParent.reset(new std::atomic<int>[count]);
+    scratch.AtomicCapacity = count;
+  }
+  std::atomic<int>* parent = scratch.AtomicParent.get();
+  cellOfTriangle.resize(count);
+  const int grain = 4096;
+  tbb::parallel_for(tbb::blocked_range<int>(0, count, grain),
+    [&](const tbb::blocked_range<int>& range)
+    {
+      for (int r = range.begin(); r != range.end(); ++r)
+      {
+        parent[r].store(r, std::memory_order_relaxed);
+      }
+    });
+
+  // Per source triangle, its refined index when it is unrefined, else -1: one random read per
+  // neighbour on the fast path.
+  std::vector<int>& unrefinedIndex = scratch.UnrefinedIndex;
+  unrefinedIndex.resize(nt);
+  tbb::parallel_for(tbb::blocked_range<int>(0, nt, grain),
+    [&](const tbb::blocked_range<int>& range)
+    {
+      for (int t = range.begin(); t != range.end(); ++t)
+      {
+        unrefinedIndex[t] = (state[t] & RefinedSurfaceView::RefinedBit) ? -1 : offset[t];
+      }
+    });
+
+  // Phase 1, per fixed block of source triangles (independent of the thread count): arcs with
+  // both ends in the block are united with plain loads and stores, since no other thread
+  // touches the block's nodes; arcs leaving the block are kept for phase 2. Every arc is
+  // united from at least one side: arcs between unrefined triangles from the lower one, arcs
+  // touching a refined triangle from each refined side. With one thread, all arcs are united
+  // in phase 1 (the same sets, without atomic instructions).
+  const bool serial = tbb::this_task_arena::max_concurrency() == 1;
+  const int sourceBlock = 1 << 16;
+  const int sourceBlocks = (nt + sourceBlock - 1) / sourceBlock;
+  std::vector<std::vector<std::pair<int, int>>>& crossing = scratch.Crossing;
+  crossing.resize(sourceBlocks);
+  for (auto& arcs : crossing)
+  {
+    arcs.clear();
+  }
+  tbb::parallel_for(0,
+    sourceBlocks,
+    [&](int b)
+    {
+      const int t0 = b * sourceBlock, t1 = std::min(nt, t0 + sourceBlock);
+      const int lo = offset[t0], hi = offset[t1];
+      std::vector<std::pair<int, int>>& out = crossing[b];
+      auto unite = [&](int x, int y)
+      {
+        if (!serial && (y < lo || y >= hi))
+        {
+          out.emplace_back(x, y);
+          return;
+        }
+        x = FindSet(parent, x);
+        y = FindSet(parent, y);
+        if (x != y)
+        {
+          parent[std::max(x, y)].store(std::min(x, y), std::memory_order_relaxed);
+        }
+      };
+      for (int t = t0; t < t1; ++t)
+      {
+        const int r0 = offset[t], r1 = offset[t + 1];
+        if (r0 == r1)
+        {
+          continue; // unusable triangle
+        }
+        const char st = state[t];
+        if (st == 0)
+        {
+          // Fast path: an unrefined triangle without curves on its edges.
+          for (int j = 0; j < 3; ++j)
+          {
+            const int n = mesh.GetNeighbor(t, j);
+            if (n > t)
+            {
+              const int rn = unrefinedIndex[n];
+              if (rn >= 0)
+              {
+                unite(r0, rn);
+              }
+            }
+          }
+        }
+        else if (!(st & RefinedSurfaceView::RefinedBit))
+        {
+          const Triangle& tri = meshTriangles[t];
+          for (int j = 0; j < 3; ++j)
+          {
+            const int n = mesh.GetNeighbor(t, j);
+            if (n <= t || (state[n] & RefinedSurfaceView::RefinedBit))
+            {
+              continue;
+            }
+            if ((*surface.MeshEdgeHasBlocked)[mesh.GetEdgeId(t, j)] &&
+              surface.BlockedMeshSubEdges->count(UndirectedPointPair(tri[j], tri[(j + 1) % 3])))
+            {
+              continue;
+            }
+            unite(r0, offset[n]);
+          }
+        }
+        else
+        {
+          for (int r = r0; r < r1; ++r)
+          {
+            for (int j = 0; j < 3; ++j)
+            {
+              bool blocked = false;
+              const int n = surface.Neighbor(r, j, blocked);
+              if (n >= 0 && !blocked)
+              {
+                unite(r, n);
+              }
+            }
+          }
+        }
+      }
+    });
+  // Phase 2: arcs between blocks, by lock-free unions.
+  tbb::parallel_for(0,
+    sourceBlocks,
+    [&](int b)
+    {
+      for (const std::pair<int, int>& arc : crossing[b])
+      {
+        UniteSets(parent, arc.first, arc.second);
+      }
+    });
+
+  // Number the roots (the lowest triangle of each cell) in order: per fixed block, count, scan,
+  // then number; then every triangle takes its root's number.
+  const int blockSize = 1 << 16;
+  const int blocks = (count + blockSize - 1) / blockSize;
+  std::vector<int>& blockRoots = scratch.BlockRoots;
+  blockRoots.assign(blocks + 1, 0);
+  tbb::parallel_for(0,
+    blocks,
+    [&](int b)
+    {
+      const int end = std::min(count, (b + 1) * blockSize);
+      int roots = 0;
+      for (int r = b * blockSize; r < end; ++r)
+      {
+        const int root = FindSet(parent, r);
+        parent[r].store(root, std::memory_order_relaxed);
+        roots += root == r;
+      }
+      blockRoots[b + 1] = roots;
+    });
+  for (int b = 0; b < blocks; ++b)
+  {
+    blockRoots[b + 1] += blockRoots[b];
+  }
+  if (cellFirstTriangle)
+  {
+    cellFirstTriangle->resize(blockRoots[blocks]);
+  }
+  tbb::parallel_for(0,
+    blocks,
+    [&](int b)
+    {
+      const int end = std::min(count, (b + 1) * blockSize);
+      int next = blockRoots[b];
+      for (int r = b * blockSize; r < end; ++r)
+      {
+        if (parent[r].load(std::memory_order_relaxed) == r)
+        {
+          if (cellFirstTriangle)
+          {
+            (*cellFirstTriangle)[next] = r;
+          }
+          cellOfTriangle[r] = next++;
+        }
+      }
+    });
+  tbb::parallel_for(tbb::blocked_range<int>(0, count, grain),
+    [&](const tbb::blocked_range<int>& range)
+    {
+      for (int r = range.begin(); r != range.end(); ++r)
+      {
+        const int root = parent[r].load(std::memory_order_relaxed);
+        if (root != r)
+        {
+          cellOfTriangle[r] = cellOfTriangle[root];
+        }
+      }
+    });
+  return blockRoots[blocks];
+}
+
 // Plain union-find whose roots are the lowest members (single-threaded use).
 inline int FindRoot(int* parent, int x)
 {
@@ -188,14 +442,14 @@ inline void Unite(int* parent, int a, int b)
 }
 } // namespace
 
+namespace
+{
 //------------------------------------------------------------------------------
-int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
+int FloodFillTiles(const RefinedSurfaceView& surface,
   const MeshTiles& tiles,
-  const std::vector<int>& changedTriangles,
   std::vector<int>& cellOfTriangle,
   std::vector<int>* cellFirstTriangle,
-  TileFloodBuffers& buffers,
-  CellContents* contents)
+  TileFloodBuffers& buffers)
 {
   const TriangleMesh& mesh = *surface.Mesh;
   const int count = static_cast<int>(surface.Triangles->size());
@@ -203,23 +457,8 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   const char* state = surface.Refined->data();
   const int* tileOf = tiles.TileOfTriangle.data();
   const int numberOfTiles = tiles.GetNumberOfTiles();
-  if (static_cast<int>(buffers.Dirty.size()) != numberOfTiles)
-  {
-    buffers.Dirty.assign(numberOfTiles, 0);
-  }
-  char* dirty = buffers.Dirty.data();
-  std::vector<int>& dirtyTiles = buffers.DirtyTiles;
-  dirtyTiles.clear();
-  for (int t : changedTriangles)
-  {
-    const int k = tileOf[t];
-    if (k >= 0 && !dirty[k])
-    {
-      dirty[k] = 1;
-      dirtyTiles.push_back(k);
-    }
-  }
-  std::sort(dirtyTiles.begin(), dirtyTiles.end());
+  const char* dirty = buffers.Dirty.data();
+  const std::vector<int>& dirtyTiles = buffers.DirtyTiles;
   if (static_cast<int>(buffers.Parent.size()) < count)
   {
     buffers.Parent.resize(count);
@@ -227,7 +466,6 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   int* parent = buffers.Parent.data();
   // A clean tile's node is the refined index of its lowest member (unrefined: one triangle).
   std::vector<int>& tileNode = buffers.TileNode;
-  tileNode.resize(numberOfTiles);
   auto rep = [&](int k) { return tileNode[k]; };
   auto nodeOf = [&](int r)
   {
@@ -370,11 +608,25 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
         }
       }
     });
+  return static_cast<int>(roots.size());
+}
+
+//------------------------------------------------------------------------------
+void ListCellContents(const MeshTiles& tiles,
+  const int* offset,
+  const std::vector<int>& cellOfTriangle,
+  int cells,
+  TileFloodBuffers& buffers,
+  CellContents* contents)
+{
+  const int numberOfTiles = tiles.GetNumberOfTiles();
+  const std::vector<int>& tileNode = buffers.TileNode; // cell of each clean tile, -1: dirty
+  const std::vector<int>& dirtyTiles = buffers.DirtyTiles;
+  const int* cell = cellOfTriangle.data();
   if (contents)
   {
     // Counting sorts by cell: clean tiles in tile order, loose triangles in the order of their
     // (dirty) tiles.
-    const int cells = static_cast<int>(roots.size());
     std::vector<int>& tileOffset = contents->TileOffset;
     tileOffset.assign(cells + 1, 0);
     for (int k = 0; k < numberOfTiles; ++k)
@@ -431,11 +683,75 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
       (*o)[0] = 0;
     }
   }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
+  const MeshTiles& tiles,
+  const std::vector<int>& changedTriangles,
+  std::vector<int>& cellOfTriangle,
+  std::vector<int>* cellFirstTriangle,
+  TileFloodBuffers& buffers,
+  CellContents* contents)
+{
+  const int count = static_cast<int>(surface.Triangles->size());
+  const int* offset = surface.Offset->data();
+  const int* tileOf = tiles.TileOfTriangle.data();
+  const int numberOfTiles = tiles.GetNumberOfTiles();
+  if (static_cast<int>(buffers.Dirty.size()) != numberOfTiles)
+  {
+    buffers.Dirty.assign(numberOfTiles, 0);
+  }
+  char* dirty = buffers.Dirty.data();
+  std::vector<int>& dirtyTiles = buffers.DirtyTiles;
+  dirtyTiles.clear();
+  for (int t : changedTriangles)
+  {
+    const int k = tileOf[t];
+    if (k >= 0 && !dirty[k])
+    {
+      dirty[k] = 1;
+      dirtyTiles.push_back(k);
+    }
+  }
+  std::sort(dirtyTiles.begin(), dirtyTiles.end());
+  // Where curves touch most of the surface, tiles save little and their triangle-level part is
+  // sequential: flood the whole surface in parallel instead (same result). Measured on 1M
+  // triangles, the tiled fill wins up to about a quarter of the triangles touched with two
+  // threads (and beyond with one); a flat square with a third touched floods in 24 ms on two
+  // threads this way against 36 ms tiled.
+  long long touched = 0;
+  for (int k : dirtyTiles)
+  {
+    for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
+    {
+      touched += offset[tiles.Members[i] + 1] - offset[tiles.Members[i]];
+    }
+  }
+  const int threads = tbb::this_task_arena::max_concurrency();
+  std::vector<int>& tileNode = buffers.TileNode;
+  tileNode.resize(numberOfTiles);
+  int cellCount = 0;
+  if (buffers.Method == FloodFillMethod::Triangles ||
+    (buffers.Method == FloodFillMethod::Automatic && touched * 2 * threads > count))
+  {
+    cellCount = FloodFillAllTriangles(surface, cellOfTriangle, cellFirstTriangle, buffers);
+    for (int k = 0; k < numberOfTiles; ++k)
+    {
+      tileNode[k] = dirty[k] ? -1 : cellOfTriangle[offset[tiles.Members[tiles.Offset[k]]]];
+    }
+  }
+  else
+  {
+    cellCount = FloodFillTiles(surface, tiles, cellOfTriangle, cellFirstTriangle, buffers);
+  }
+  ListCellContents(tiles, offset, cellOfTriangle, cellCount, buffers, contents);
   for (int k : dirtyTiles)
   {
     dirty[k] = 0;
   }
-  return static_cast<int>(roots.size());
+  return cellCount;
 }
 
 //------------------------------------------------------------------------------

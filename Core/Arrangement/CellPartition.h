@@ -22,6 +22,7 @@
 #include "Mesh/SurfacePoint.h"
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <unordered_set>
@@ -98,9 +99,20 @@ struct CellContents
   std::vector<int> TriangleOffset, Triangles; ///< loose refined triangles of cell c
 };
 
-/// Scratch memory of FloodFillCellsByTiles, kept between edits.
+/// How FloodFillCellsByTiles floods: Automatic picks Tiles when curves touch few tiles and
+/// Triangles (the whole surface as one parallel union-find) when they touch most of them.
+enum class FloodFillMethod
+{
+  Automatic,
+  Tiles,
+  Triangles
+};
+
+/// Scratch memory of FloodFillCellsByTiles, kept between edits, and the method to use.
 struct TileFloodBuffers
 {
+  FloodFillMethod Method = FloodFillMethod::Automatic;
+  // Tiled flood fill.
   std::vector<int> Parent;   ///< indexed by refined triangle; only nodes in use are set
   std::vector<char> Dirty;   ///< per tile; reset after each call
   std::vector<int> TileNode; ///< per tile: its node, then its cell (-1 when dirty)
@@ -108,6 +120,12 @@ struct TileFloodBuffers
   std::vector<int> Nodes; ///< union-find nodes of this call
   std::vector<int> CellOfRoot;
   std::vector<int> Loose;
+  // Whole-surface flood fill.
+  std::unique_ptr<std::atomic<int>[]> AtomicParent;
+  size_t AtomicCapacity = 0;
+  std::vector<int> UnrefinedIndex;
+  std::vector<std::vector<std::pair<int, int>>> Crossing;
+  std::vector<int> BlockRoots;
 };
 
 /// Connected components of the DGA without the blocked arcs (the flood fill of the method),

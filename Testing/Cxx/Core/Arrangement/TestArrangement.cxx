@@ -404,3 +404,37 @@ TEST(Arrangement, MeshTilesAreConnectedAndOrdered)
   }
   EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
 }
+
+// The tiled flood fill (few tiles touched) and the whole-surface one (most touched) give the
+// same cells, numbering and cell contents, with one thread and two.
+TEST(Arrangement, TiledAndWholeSurfaceFloodFillsAgree)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(48, 1.0, 0.3, 6));
+  FlatPolygonTracer tracer(mesh);
+  for (int curvesCount : { 1, 12 }) // a few tiles touched, then most of them
+  {
+    std::mt19937 rng(31 + curvesCount);
+    std::vector<TracedCurve> curves;
+    for (int c = 0; c < curvesCount; ++c)
+      curves.push_back(TraceOrDie(tracer, RandomPolygon(rng, 6, 0.05, 0.95), true, c, c));
+    SCOPED_TRACE(std::to_string(curvesCount) + " curves");
+    std::vector<Arrangement> results;
+    for (FloodFillMethod method : { FloodFillMethod::Tiles, FloodFillMethod::Triangles })
+      for (int threads : { 1, 2 })
+      {
+        ArrangementOptions options;
+        options.Threads = threads;
+        options.FloodFill = method;
+        Arrangement arr;
+        std::string error;
+        ASSERT_TRUE(ComputeArrangement(mesh, curves, options, arr, error)) << error;
+        ExpectCellsAreFloodFill(arr);
+        results.push_back(std::move(arr));
+      }
+    for (size_t i = 1; i < results.size(); ++i)
+    {
+      EXPECT_EQ(results[i].TriangleCell, results[0].TriangleCell) << "variant " << i;
+      EXPECT_EQ(results[i].CellFirstTriangle, results[0].CellFirstTriangle) << "variant " << i;
+    }
+  }
+}
