@@ -123,6 +123,10 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
 
+  // A failed update leaves empty outputs, never the previous region.
+  region->Initialize();
+  boundary->Initialize();
+
   // 1. surface (cached)
   std::vector<std::string> warnings;
   std::string error;

@@ -266,6 +266,9 @@ TEST(CellLabelsDataModel, HugeShapeIdsSelectCorrectly)
   one->SetExpression("S1000000 | S3");
   one->Update();
   EXPECT_NE(errors.Text.find("unknown shape S3"), std::string::npos) << errors.Text;
+  // A refused request leaves empty outputs, not the previous region.
+  EXPECT_EQ(one->GetOutput(0)->GetNumberOfCells(), 0);
+  EXPECT_EQ(one->GetOutput(1)->GetNumberOfCells(), 0);
 }
 
 // One filter driven through curve edits and operation changes gives, after every update, the
