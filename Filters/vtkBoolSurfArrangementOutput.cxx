@@ -15,8 +15,7 @@
 #include <vtkPolyData.h>
 
 #include <algorithm>
-#include <map>
-#include <tuple>
+#include <array>
 
 namespace boolsurf
 {

@@ -3,15 +3,10 @@
 #include "Selection/RegionBoundary.h"
 #include "vtkBoolSurfRegionOutput.h"
 
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
-#include <vtkIdList.h>
-#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
