@@ -9,10 +9,75 @@
 #include <vtkPolyData.h>
 #include <vtkTriangleFilter.h>
 
+#include <limits>
+#include <utility>
+
 namespace boolsurf
 {
 namespace
 {
+
+// Polygon and strip cells naming a point id outside [0, points): (cell id, first bad id). They
+// are checked before anything reads them (vtkTriangleFilter would crash on them or drop the
+// cell silently, and a conversion to int would wrap ids of 2^32 and more).
+std::vector<std::pair<vtkIdType, vtkIdType>> CellsWithInvalidIds(vtkPolyData* input)
+{
+  std::vector<std::pair<vtkIdType, vtkIdType>> bad;
+  const vtkIdType np = input->GetNumberOfPoints();
+  // Polygons come after vertices and lines in polydata cell ids, strips after polygons.
+  vtkIdType cellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        if (ids[k] < 0 || ids[k] >= np)
+        {
+          bad.emplace_back(cellId, ids[k]);
+          break;
+        }
+      }
+    }
+  }
+  return bad;
+}
+
+// A copy of `input` without the cells listed in `bad` (sorted by cell id).
+vtkSmartPointer<vtkPolyData> WithoutCells(vtkPolyData* input,
+  const std::vector<std::pair<vtkIdType, vtkIdType>>& bad)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->SetPoints(input->GetPoints());
+  copy->GetPointData()->ShallowCopy(input->GetPointData());
+  vtkNew<vtkCellArray> polys, strips;
+  size_t next = 0;
+  vtkIdType cellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
+  {
+    vtkCellArray* out = cells == input->GetPolys() ? polys.GetPointer() : strips.GetPointer();
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+    {
+      if (next < bad.size() && bad[next].first == cellId)
+      {
+        ++next;
+        continue;
+      }
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      out->InsertNextCell(n, ids);
+    }
+  }
+  copy->SetPolys(polys);
+  copy->SetStrips(strips);
+  return copy;
+}
 
 // Number of polygons with other than three points.
 vtkIdType CountNonTriangles(vtkCellArray* polys)
@@ -36,6 +101,42 @@ void ConvertSurface(vtkPolyData* input, vtkSurfaceInput& out, const SurfaceCheck
 {
   out = vtkSurfaceInput();
   out.Triangles = vtkSmartPointer<vtkPolyData>::New();
+  SurfaceProblem invalidIds;
+  vtkSmartPointer<vtkPolyData> filtered; // the input without its invalid cells, when it has some
+  if (input && input->GetNumberOfPoints() > std::numeric_limits<int>::max())
+  {
+    invalidIds.Kind = "TooManyPoints";
+    invalidIds.Message = "the surface has " + std::to_string(input->GetNumberOfPoints()) +
+      " points; at most " + std::to_string(std::numeric_limits<int>::max()) + " are supported";
+    input = nullptr;
+  }
+  if (input)
+  {
+    const std::vector<std::pair<vtkIdType, vtkIdType>> bad = CellsWithInvalidIds(input);
+    if (!bad.empty())
+    {
+      invalidIds.Kind = "InvalidVertexIndex";
+      invalidIds.Message = std::to_string(bad.size()) + " polygon(s) use point ids outside [0, " +
+        std::to_string(input->GetNumberOfPoints()) + "), cell id (point id)";
+      for (size_t i = 0; i < bad.size(); ++i)
+      {
+        if (i == 10)
+        {
+          invalidIds.Message += " ... and " + std::to_string(bad.size() - 10) + " more";
+          break;
+        }
+        invalidIds.Message += std::string(i ? ", " : ": ") + std::to_string(bad[i].first) + " (" +
+          std::to_string(bad[i].second) + ")";
+      }
+      for (const auto& cell : bad)
+      {
+        invalidIds.Ids.push_back(cell.first);
+      }
+      // The rest of the surface is still converted, so Check Surface can describe it.
+      filtered = WithoutCells(input, bad);
+      input = filtered;
+    }
+  }
   if (input)
   {
     const vtkIdType verts = input->GetNumberOfVerts();
@@ -95,6 +196,10 @@ void ConvertSurface(vtkPolyData* input, vtkSurfaceInput& out, const SurfaceCheck
   auto mesh = std::make_shared<TriangleMesh>(std::move(positions), std::move(triangles));
   auto topology = std::make_shared<MeshTopology>(MeshTopology::Compute(*mesh));
   out.Check = CheckSurface(*mesh, *topology, options);
+  if (!invalidIds.Kind.empty())
+  {
+    out.Check.Problems.insert(out.Check.Problems.begin(), invalidIds);
+  }
   out.Mesh = mesh;
   out.Topology = topology;
 }

@@ -70,8 +70,11 @@ SurfaceCheckResult CheckSurface(const TriangleMesh& mesh,
 {
   SurfaceCheckResult result;
   const int maxIds = options.MaxIdsInMessage;
+  // ids by rvalue reference: callers write `std::to_string(ids.size()) ..., std::move(ids)`,
+  // and a by-value parameter could be moved into before the count is taken (the arguments'
+  // order of evaluation is unspecified), printing 0.
   auto add =
-    [&](const char* kind, Severity level, const std::string& what, std::vector<long long> ids)
+    [&](const char* kind, Severity level, const std::string& what, std::vector<long long>&& ids)
   {
     SurfaceProblem p;
     p.Kind = kind;

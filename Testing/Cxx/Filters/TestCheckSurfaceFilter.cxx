@@ -1,9 +1,13 @@
 // vtkBoolSurfCheckSurface on vtkPolyData inputs: arrays, field data, and every bad-input case
 // reported by name without a crash.
+#include "FilterTestUtils.h"
+#include "vtkBoolSurf.h"
 #include "vtkBoolSurfCheckSurface.h"
 
+#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCommand.h>
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
@@ -173,4 +177,47 @@ TEST(CheckSurfaceFilter, DegenerateTriangleIsNamed)
   pd->GetPolys()->InsertNextCell({ 1, 0, 4 });
   auto out = RunCheck(pd);
   EXPECT_NE(Problem(out, "Error DegenerateTriangle").find("triangle ids: 2"), std::string::npos);
+}
+
+// Point ids outside the points (2^32 + 1, 10^7, one past the end) in triangles and in quads
+// are named with their cell before anything reads them: no triangulation crash, no id wrapped
+// to a valid one by a narrowing conversion, no quad dropped silently; the one-step filter
+// refuses the surface with the same message.
+TEST(CheckSurfaceFilter, InvalidPointIdsAreNamedBeforeTriangulation)
+{
+  auto pd = TwoTriangles();
+  pd->GetPolys()->InsertNextCell({ 0, 1, (vtkIdType(1) << 32) + 1 });
+  pd->GetPolys()->InsertNextCell({ 0, 1, 2, 10000000 });
+  pd->GetPolys()->InsertNextCell({ 0, 1, 2, 4 });
+  auto out = RunCheck(pd);
+  const std::string p = Problem(out, "Error InvalidVertexIndex");
+  EXPECT_NE(p.find("3 polygon(s) use point ids outside [0, 4)"), std::string::npos) << p;
+  EXPECT_NE(p.find("2 (4294967297), 3 (10000000), 4 (4)"), std::string::npos) << p;
+
+  vtkNew<vtkBoolSurf> one;
+  one->SetInputData(0, pd);
+  one->SetInputData(
+    1, testutils::ToCurves({ { { { 0.2, 0.1, 0 }, { 0.9, 0.2, 0 }, { 0.8, 0.7, 0 } }, 0, true } }));
+  vtkNew<vtkCallbackCommand> quiet;
+  std::string errors;
+  quiet->SetClientData(&errors);
+  quiet->SetCallback([](vtkObject*, unsigned long, void* text, void* data)
+    { *static_cast<std::string*>(text) += static_cast<const char*>(data); });
+  one->AddObserver(vtkCommand::ErrorEvent, quiet);
+  one->Update();
+  EXPECT_NE(errors.find("point ids outside [0, 4)"), std::string::npos) << errors;
+  EXPECT_EQ(one->GetOutput()->GetNumberOfCells(), 0);
+}
+
+// Problem messages count what they list (the count used to be taken after the list was moved).
+TEST(CheckSurfaceFilter, ProblemCountsMatchTheirIds)
+{
+  auto pd = TwoTriangles();
+  pd->GetPoints()->SetPoint(3, std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  pd->GetPoints()->SetPoint(1, std::numeric_limits<double>::infinity(), 0, 0);
+  auto out = RunCheck(pd);
+  const std::string p = Problem(out, "Error NonFiniteCoordinates");
+  EXPECT_NE(
+    p.find("2 point(s) have NaN or infinite coordinates, point ids: 1, 3"), std::string::npos)
+    << p;
 }
