@@ -82,9 +82,9 @@ public:
   void SetOperationToDifference() { this->SetOperation(2); }
   void SetOperationToSymmetricDifference() { this->SetOperation(3); }
   void SetOperationToExpression() { this->SetOperation(4); }
-  vtkSetClampMacro(ShapeA, int, -1, VTK_INT_MAX);
+  vtkSetMacro(ShapeA, int); // not clamped: an id below -1 is reported, not read as -1
   vtkGetMacro(ShapeA, int);
-  vtkSetClampMacro(ShapeB, int, -1, VTK_INT_MAX);
+  vtkSetMacro(ShapeB, int);
   vtkGetMacro(ShapeB, int);
   vtkSetStdStringFromCharMacro(Expression);
   vtkGetCharFromStdStringMacro(Expression);

@@ -76,9 +76,9 @@ public:
 
   ///@{
   /// Operand shapes (defaults 0 and 1); -1 means all shapes.
-  vtkSetClampMacro(ShapeA, int, -1, VTK_INT_MAX);
+  vtkSetMacro(ShapeA, int); // not clamped: an id below -1 is reported, not read as -1
   vtkGetMacro(ShapeA, int);
-  vtkSetClampMacro(ShapeB, int, -1, VTK_INT_MAX);
+  vtkSetMacro(ShapeB, int);
   vtkGetMacro(ShapeB, int);
   ///@}
 

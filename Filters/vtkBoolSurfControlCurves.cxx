@@ -13,6 +13,8 @@
 #include <vtkStaticCellLocator.h>
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 namespace boolsurf
 {
@@ -27,6 +29,20 @@ std::string CurveLabel(int curveId, long long pointId = -1)
     s += ", control point " + std::to_string(pointId);
   }
   return s;
+}
+
+// A value as the user gave it (1e+12, nan, 2.5), not as it would look after a cast to int.
+std::string AsGiven(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.17g", value);
+  return text;
+}
+
+// True when `value` is an integer in [0, INT_MAX]: a valid ShapeId or triangle id.
+bool IsIndex(double value)
+{
+  return value >= 0 && value <= std::numeric_limits<int>::max() && value == std::floor(value);
 }
 
 // Barycentric (u, v) of x, a point of the plane of triangle t, clamped into the triangle.
@@ -85,28 +101,52 @@ void ReadControlCurves(vtkPolyData* curves,
     notes.push_back("point data TriangleId/Barycentric is incomplete (both arrays needed, "
                     "Barycentric with 2 components): control points are projected instead");
   }
+  // Arrays shorter than the cells or points they describe would be read past their end.
+  const vtkIdType cells = curves->GetNumberOfCells(), points = curves->GetNumberOfPoints();
+  for (vtkDataArray* a : { shapeIds, types })
+  {
+    if (a && a->GetNumberOfTuples() < cells)
+    {
+      problems.push_back(std::string("cell data ") + a->GetName() + " has " +
+        std::to_string(a->GetNumberOfTuples()) + " value(s) for " + std::to_string(cells) +
+        " cells");
+    }
+  }
+  for (vtkDataArray* a : { exact ? triangleIds : nullptr, exact ? barycentric : nullptr })
+  {
+    if (a && a->GetNumberOfTuples() < points)
+    {
+      problems.push_back(std::string("point data ") + a->GetName() + " has " +
+        std::to_string(a->GetNumberOfTuples()) + " tuple(s) for " + std::to_string(points) +
+        " points");
+    }
+  }
+  if (!problems.empty())
+  {
+    return;
+  }
   vtkNew<vtkGenericCell> cell;
   ForEachCurveCell(curves,
     [&](vtkIdType cellId, vtkIdType n, const vtkIdType* ids, bool polygon)
     {
       ControlCurve curve;
       curve.CurveId = static_cast<int>(cellId);
-      curve.ShapeId =
-        shapeIds ? static_cast<int>(shapeIds->GetComponent(cellId, 0)) : curve.CurveId;
-      const int type = types ? static_cast<int>(types->GetComponent(cellId, 0)) : 0;
-      if (curve.ShapeId < 0)
+      const double shape = shapeIds ? shapeIds->GetComponent(cellId, 0) : double(cellId);
+      const double type = types ? types->GetComponent(cellId, 0) : 0.0;
+      if (!IsIndex(shape))
       {
-        problems.push_back(CurveLabel(curve.CurveId) + ": ShapeId " +
-          std::to_string(curve.ShapeId) + " is negative");
+        problems.push_back(CurveLabel(curve.CurveId) + ": ShapeId " + AsGiven(shape) +
+          " is not an integer in [0, " + std::to_string(std::numeric_limits<int>::max()) + "]");
         return;
       }
+      curve.ShapeId = static_cast<int>(shape);
       if (type != 0 && type != 1)
       {
-        problems.push_back(CurveLabel(curve.CurveId) + ": CurveType " + std::to_string(type) +
+        problems.push_back(CurveLabel(curve.CurveId) + ": CurveType " + AsGiven(type) +
           " is neither 0 (geodesic polygon) nor 1 (cubic Bezier)");
         return;
       }
-      curve.Type = static_cast<CurveType>(type);
+      curve.Type = static_cast<CurveType>(static_cast<int>(type));
       curve.Closed = polygon;
       // A polyline whose last point repeats its first (same id, or same point: the same
       // surface point when given exactly, else the same coordinates) is closed.
@@ -136,10 +176,25 @@ void ReadControlCurves(vtkPolyData* curves,
       for (vtkIdType i = 0; i < n && ok; ++i)
       {
         const vtkIdType pid = ids[i];
+        if (pid < 0 || pid >= points)
+        {
+          problems.push_back(CurveLabel(curve.CurveId) + " names point id " + std::to_string(pid) +
+            ", outside [0, " + std::to_string(points) + ")");
+          ok = false;
+          break;
+        }
         SurfacePoint sp;
         if (exact)
         {
-          sp.Triangle = static_cast<int>(triangleIds->GetComponent(pid, 0));
+          const double triangle = triangleIds->GetComponent(pid, 0);
+          if (!IsIndex(triangle))
+          {
+            problems.push_back(CurveLabel(curve.CurveId, pid) + ": TriangleId " +
+              AsGiven(triangle) + " is not a triangle id");
+            ok = false;
+            break;
+          }
+          sp.Triangle = static_cast<int>(triangle);
           sp.U = barycentric->GetComponent(pid, 0);
           sp.V = barycentric->GetComponent(pid, 1);
           std::string why;

@@ -1,0 +1,138 @@
+// Bad curve inputs and Boolean requests get a message naming the problem, the curve and the
+// value as given: never a wrapped or clamped value, never a read past an array's end.
+#include "FilterTestUtils.h"
+#include "vtkBoolSurf.h"
+#include "vtkBoolSurfTraceCurves.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkPointData.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace
+{
+using testutils::ControlPolygon;
+
+// Errors of one update of `filter`.
+std::string ErrorsOf(vtkAlgorithm* filter)
+{
+  std::string errors;
+  vtkNew<vtkCallbackCommand> catcher;
+  catcher->SetClientData(&errors);
+  catcher->SetCallback([](vtkObject*, unsigned long, void* text, void* data)
+    { *static_cast<std::string*>(text) += static_cast<const char*>(data); });
+  const unsigned long tag = filter->AddObserver(vtkCommand::ErrorEvent, catcher);
+  filter->Update();
+  filter->RemoveObserver(tag);
+  return errors;
+}
+
+struct Scene
+{
+  vtkSmartPointer<vtkPolyData> Mesh =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(8, 1.0, 0.0, 1));
+  vtkSmartPointer<vtkPolyData> Curves = testutils::ToCurves(
+    { ControlPolygon{ { { 0.2, 0.2, 0 }, { 0.8, 0.25, 0 }, { 0.5, 0.8, 0 } }, 0, true } });
+
+  std::string Trace()
+  {
+    vtkNew<vtkBoolSurfTraceCurves> trace;
+    trace->SetInputData(0, this->Mesh);
+    trace->SetInputData(1, this->Curves);
+    return ErrorsOf(trace);
+  }
+
+  // Exact control points: triangle 0 for every point, with the given barycentrics.
+  void SetExact(const std::vector<std::array<double, 2>>& uv)
+  {
+    vtkNew<vtkIdTypeArray> tid;
+    tid->SetName("TriangleId");
+    vtkNew<vtkDoubleArray> bary;
+    bary->SetName("Barycentric");
+    bary->SetNumberOfComponents(2);
+    for (const auto& p : uv)
+    {
+      tid->InsertNextValue(0);
+      bary->InsertNextTuple(p.data());
+    }
+    this->Curves->GetPointData()->AddArray(tid);
+    this->Curves->GetPointData()->AddArray(bary);
+  }
+};
+} // namespace
+
+TEST(BadCurveInputs, BarycentricsOutsideTheTriangleAreRefused)
+{
+  for (const std::array<double, 2>& bad :
+    { std::array<double, 2>{ 0.8, 0.7 }, { 3.0, 3.0 }, { -0.001, 0.5 } })
+  {
+    Scene s;
+    s.SetExact({ { 0.2, 0.2 }, bad, { 0.1, 0.6 } });
+    const std::string errors = s.Trace();
+    EXPECT_NE(errors.find("curve 0, control point 1: barycentric coordinates"), std::string::npos)
+      << errors;
+    EXPECT_NE(errors.find("lie outside triangle 0"), std::string::npos) << errors;
+  }
+  // On the triangle's edge up to rounding is inside.
+  Scene s;
+  s.SetExact({ { 0.2, 0.2 }, { 1.3e-16, 0.5 }, { 0.5, 0.5 + 1e-13 } });
+  EXPECT_EQ(s.Trace(), "");
+}
+
+TEST(BadCurveInputs, ShapeIdsAreCheckedAsGiven)
+{
+  for (double bad : { 1e12, -1.0, 2.5, std::numeric_limits<double>::quiet_NaN() })
+  {
+    Scene s;
+    vtkNew<vtkDoubleArray> shape;
+    shape->SetName("ShapeId");
+    shape->InsertNextValue(bad);
+    s.Curves->GetCellData()->RemoveArray("ShapeId");
+    s.Curves->GetCellData()->AddArray(shape);
+    const std::string errors = s.Trace();
+    char given[32];
+    std::snprintf(given, sizeof(given), "%.17g", bad);
+    EXPECT_NE(errors.find(std::string("curve 0: ShapeId ") + given + " is not an integer"),
+      std::string::npos)
+      << errors;
+  }
+}
+
+TEST(BadCurveInputs, ShortArraysAreNamedNotReadPastTheirEnd)
+{
+  Scene s;
+  // Two curves, one ShapeId value.
+  s.Curves = testutils::ToCurves(
+    { ControlPolygon{ { { 0.2, 0.2, 0 }, { 0.8, 0.25, 0 }, { 0.5, 0.8, 0 } }, 0, true },
+      ControlPolygon{ { { 0.3, 0.3, 0 }, { 0.7, 0.3, 0 }, { 0.5, 0.6, 0 } }, 1, true } });
+  s.Curves->GetCellData()->GetArray("ShapeId")->SetNumberOfTuples(1);
+  std::string errors = s.Trace();
+  EXPECT_NE(errors.find("cell data ShapeId has 1 value(s) for 2 cells"), std::string::npos)
+    << errors;
+
+  Scene t;
+  t.SetExact({ { 0.2, 0.2 }, { 0.3, 0.3 } }); // 2 tuples for 3 points
+  errors = t.Trace();
+  EXPECT_NE(errors.find("point data TriangleId has 2 tuple(s) for 3 points"), std::string::npos)
+    << errors;
+}
+
+TEST(BadCurveInputs, ShapeBelowMinusOneIsNamedNotClamped)
+{
+  Scene s;
+  vtkNew<vtkBoolSurf> one;
+  one->SetInputData(0, s.Mesh);
+  one->SetInputData(1, s.Curves);
+  one->SetShapeA(-5);
+  EXPECT_EQ(one->GetShapeA(), -5);
+  const std::string errors = ErrorsOf(one);
+  EXPECT_NE(errors.find("ShapeA = -5 is not a shape of the input"), std::string::npos) << errors;
+  EXPECT_EQ(one->GetOutput()->GetNumberOfCells(), 0);
+}
