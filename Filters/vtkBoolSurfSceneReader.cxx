@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSceneReader.h"
 
+#include "Mesh/PlyReader.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
@@ -24,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <climits>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -197,6 +200,14 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const fs::path& file, std::string& note)
   vtkSmartPointer<vtkPolyData> raw;
   if (ext == ".ply")
   {
+    // vtkPLYReader aborts or crashes on truncated and garbage files: the checked reader sees
+    // the file first.
+    boolsurf::MeshData checked;
+    std::string why;
+    if (!boolsurf::ReadPly(file.string(), checked, why))
+    {
+      throw SceneError("mesh " + file.string() + " is not a valid PLY file: " + why);
+    }
     vtkNew<vtkPLYReader> reader;
     reader->SetFileName(file.string().c_str());
     reader->Update();
@@ -267,22 +278,77 @@ std::string Where(const std::string& key, std::size_t index)
   return "'" + key + "'[" + std::to_string(index) + "]";
 }
 
-/// A non-negative integer (accepting integral floating-point values).
+/// A JSON value for a message: as written when small and shallow; else described by its kind
+/// and size (dump() recurses once per nesting level: a value nested 10^5 deep would overflow
+/// the stack).
+std::string Brief(const json& value)
+{
+  // Walk at most a few hundred nodes, without recursion, to bound depth and size.
+  std::vector<std::pair<const json*, int>> stack{ { &value, 0 } };
+  int visited = 0;
+  bool small = true;
+  while (!stack.empty() && small)
+  {
+    const auto [node, depth] = stack.back();
+    stack.pop_back();
+    if (++visited > 200 || depth > 8)
+    {
+      small = false;
+      break;
+    }
+    if (node->is_structured())
+    {
+      for (const json& child : *node)
+      {
+        stack.emplace_back(&child, depth + 1);
+      }
+    }
+  }
+  if (small)
+  {
+    std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
+    if (text.size() <= 120)
+    {
+      return text;
+    }
+  }
+  if (value.is_array())
+  {
+    return "an array of " + std::to_string(value.size()) + " item(s)";
+  }
+  if (value.is_object())
+  {
+    return "an object with " + std::to_string(value.size()) + " key(s)";
+  }
+  return value.dump(-1, ' ', false, json::error_handler_t::replace).substr(0, 117) + "...";
+}
+
+/// An integer in [0, INT_MAX] (accepting integral floating-point values); anything else is an
+/// error showing the value as written (never wrapped or truncated to an int).
 long long AsIndex(const json& value, const std::string& where)
 {
-  if (value.is_number_integer())
+  if (value.is_number_unsigned() && value.get<unsigned long long>() <= INT_MAX)
   {
     return value.get<long long>();
+  }
+  if (value.is_number_integer() && !value.is_number_unsigned())
+  {
+    const long long v = value.get<long long>();
+    if (v >= 0 && v <= INT_MAX)
+    {
+      return v;
+    }
   }
   if (value.is_number_float())
   {
     const double d = value.get<double>();
-    if (std::floor(d) == d && std::isfinite(d))
+    if (std::isfinite(d) && std::floor(d) == d && d >= 0 && d <= INT_MAX)
     {
       return static_cast<long long>(d);
     }
   }
-  throw SceneError(where + " is " + value.dump() + ", not an integer");
+  throw SceneError(
+    where + " is " + Brief(value) + ", not an integer in [0, " + std::to_string(INT_MAX) + "]");
 }
 
 const json& Required(const json& object, const char* key, const std::string& where)
@@ -470,7 +536,7 @@ std::vector<bool> ClosedFlags(const json& scene, std::size_t polygons)
     }
     else
     {
-      throw SceneError(Where("are_closed", i) + " is " + c.dump() + ", not a bool");
+      throw SceneError(Where("are_closed", i) + " is " + Brief(c) + ", not a bool");
     }
   }
   return closed;
@@ -500,7 +566,7 @@ std::vector<int> PolygonShapes(const json& scene, std::size_t polygons, int& num
     const json& shape = (*it)[s];
     if (!shape.is_array())
     {
-      throw SceneError(Where("shapes", s) + " is " + shape.dump() + ", not a list of polygons");
+      throw SceneError(Where("shapes", s) + " is " + Brief(shape) + ", not a list of polygons");
     }
     for (std::size_t k = 0; k < shape.size(); ++k)
     {
@@ -540,7 +606,7 @@ void ReadOperations(const json& scene, vtkFieldData* fd)
     const std::string where = Where("operations", i);
     if (!op.is_object())
     {
-      throw SceneError(where + " is " + op.dump() + ", not an object {a, b, type}");
+      throw SceneError(where + " is " + Brief(op) + ", not an object {a, b, type}");
     }
     a.push_back(static_cast<int>(AsIndex(Required(op, "a", where), where + ".a")));
     b.push_back(static_cast<int>(AsIndex(Required(op, "b", where), where + ".b")));
@@ -584,7 +650,7 @@ void ReadScreenSpace(const json& scene, int resolution, Scene& out)
       const std::string where = Where("polygons", i) + "[" + std::to_string(k) + "]";
       if (!p.is_array() || p.size() < 2 || !p[0].is_number() || !p[1].is_number())
       {
-        throw SceneError(where + " is " + p.dump() + ", not an [x, y] point");
+        throw SceneError(where + " is " + Brief(p) + ", not an [x, y] point");
       }
       // Screen coordinates grow downwards: flip y so that the drawing is upright.
       const std::array<double, 2> xy = { p[0].get<double>(), -p[1].get<double>() };
@@ -680,7 +746,7 @@ void ReadSurfaceScene(const json& scene,
     const json& m = Required(scene, "model", "the scene (and MeshFileName is not set)");
     if (!m.is_string())
     {
-      throw SceneError("'model' is " + m.dump() + ", not a file name");
+      throw SceneError("'model' is " + Brief(m) + ", not a file name");
     }
     model = m.get<std::string>();
   }
@@ -694,11 +760,11 @@ void ReadSurfaceScene(const json& scene,
     const json& poly = polygons[i];
     if (!poly.is_array())
     {
-      throw SceneError(Where("polygons", i) + " is " + poly.dump() + ", not a list of points");
+      throw SceneError(Where("polygons", i) + " is " + Brief(poly) + ", not a list of points");
     }
     if (poly.size() == 1)
     {
-      throw SceneError(Where("polygons", i) + " has a single point (" + poly[0].dump() +
+      throw SceneError(Where("polygons", i) + " has a single point (" + Brief(poly[0]) +
         "); a curve needs at least 2 (only empty polygons are skipped)");
     }
     for (std::size_t k = 0; k < poly.size(); ++k)
@@ -755,7 +821,7 @@ void ReadSurfaceScene(const json& scene,
     const std::string where = Where("points", k);
     if (!p.is_object())
     {
-      throw SceneError(where + " is " + p.dump() + ", not {\"face\": f, \"uv\": [u, v]}");
+      throw SceneError(where + " is " + Brief(p) + ", not {\"face\": f, \"uv\": [u, v]}");
     }
     const long long face = AsIndex(Required(p, "face", where), where + ".face");
     if (face < 0 || face >= numberOfTriangles)
@@ -766,13 +832,13 @@ void ReadSurfaceScene(const json& scene,
     const json& uv = Required(p, "uv", where);
     if (!uv.is_array() || uv.size() != 2 || !uv[0].is_number() || !uv[1].is_number())
     {
-      throw SceneError(where + ".uv is " + uv.dump() + ", not two numbers [u, v]");
+      throw SceneError(where + ".uv is " + Brief(uv) + ", not two numbers [u, v]");
     }
     double u = uv[0].get<double>(), v = uv[1].get<double>();
     if (!std::isfinite(u) || !std::isfinite(v) || u < -UVTolerance || v < -UVTolerance ||
       u + v > 1 + UVTolerance)
     {
-      throw SceneError(where + ".uv = " + uv.dump() +
+      throw SceneError(where + ".uv = " + Brief(uv) +
         " is outside the triangle (needs u >= 0, v >= 0, u + v <= 1)");
     }
     u = std::max(u, 0.0);

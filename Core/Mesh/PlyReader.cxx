@@ -1,8 +1,11 @@
 #include "Mesh/PlyReader.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -140,13 +143,22 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
     {
       std::string f;
       words >> f;
+      if (f != "ascii" && f != "binary_little_endian" && f != "binary_big_endian")
+      {
+        error = "'" + path + "': unknown format '" + f + "'";
+        return false;
+      }
       format = f == "ascii" ? Format::Ascii
                             : (f == "binary_big_endian" ? Format::BinaryBig : Format::BinaryLittle);
     }
     else if (keyword == "element")
     {
       Element e;
-      words >> e.Name >> e.Count;
+      if (!(words >> e.Name >> e.Count) || e.Count < 0)
+      {
+        error = "'" + path + "': bad element line '" + line + "'";
+        return false;
+      }
       elements.push_back(e);
     }
     else if (keyword == "property" && !elements.empty())
@@ -163,12 +175,59 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
         p.Type = type;
         words >> p.Name;
       }
+      if (TypeSize(p.Type) == 0 || (!p.CountType.empty() && TypeSize(p.CountType) == 0))
+      {
+        error = "'" + path + "': unknown property type in '" + line + "'";
+        return false;
+      }
       elements.back().Properties.push_back(p);
     }
     else if (keyword == "end_header")
     {
       break;
     }
+  }
+  if (!in)
+  {
+    error = "'" + path + "': no end_header line";
+    return false;
+  }
+  // A binary file must hold at least the fixed-size part of every element: checked up front, so
+  // a header announcing billions of elements fails at once instead of looping.
+  if (format != Format::Ascii)
+  {
+    const std::streampos body = in.tellg();
+    in.seekg(0, std::ios::end);
+    const long double remaining = static_cast<long double>(in.tellg() - body);
+    in.seekg(body);
+    long double needed = 0;
+    for (const Element& e : elements)
+    {
+      long double size = 0;
+      for (const Property& prop : e.Properties)
+      {
+        size += TypeSize(prop.CountType.empty() ? prop.Type : prop.CountType);
+      }
+      needed += size * e.Count;
+    }
+    if (needed > remaining)
+    {
+      error = "'" + path + "': truncated (the header announces more data than the file holds)";
+      return false;
+    }
+  }
+  long long vertexCount = 0;
+  for (const Element& e : elements)
+  {
+    if (e.Name == "vertex")
+    {
+      vertexCount = e.Count;
+    }
+  }
+  if (vertexCount > std::numeric_limits<int>::max())
+  {
+    error = "'" + path + "': " + std::to_string(vertexCount) + " vertices, more than supported";
+    return false;
   }
   const bool swap = (format == Format::BinaryBig) == HostIsLittleEndian();
   auto readValue = [&](const std::string& type, double& v) -> bool
@@ -193,7 +252,16 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
               "'" + path + "': truncated list in element '" + e.Name + "' " + std::to_string(i);
             return false;
           }
+          // Lists longer than this are garbage, not polygons.
+          if (!(count >= 0 && count <= 65536) || count != std::floor(count))
+          {
+            error = "'" + path + "': element '" + e.Name + "' " + std::to_string(i) +
+              " has a list of " + std::to_string(count) + " items";
+            return false;
+          }
           std::vector<int> ids(static_cast<size_t>(count));
+          const bool isFace =
+            e.Name == "face" && (prop.Name == "vertex_indices" || prop.Name == "vertex_index");
           for (int& id : ids)
           {
             double v = 0;
@@ -202,9 +270,16 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
               error = "'" + path + "': truncated face " + std::to_string(i);
               return false;
             }
+            if (isFace && !(v >= 0 && v < static_cast<double>(vertexCount)))
+            {
+              error = "'" + path + "': face " + std::to_string(i) + " uses vertex index " +
+                std::to_string(static_cast<long long>(std::max(-1e18, std::min(1e18, v)))) +
+                ", outside [0, " + std::to_string(vertexCount) + ")";
+              return false;
+            }
             id = static_cast<int>(v);
           }
-          if (e.Name == "face" && (prop.Name == "vertex_indices" || prop.Name == "vertex_index"))
+          if (isFace)
           {
             for (size_t k = 2; k < ids.size(); ++k)
               out.Triangles.push_back({ ids[0], ids[k - 1], ids[k] });

@@ -2,7 +2,10 @@
 // without VTK. Reads ascii and binary (little/big endian) files with `element vertex`
 // (x, y, z of any numeric type, other properties skipped) and `element face` with a
 // `list <count type> <index type> vertex_indices` (polygons fanned into triangles).
-// VTK pipelines use vtkPLYReader instead.
+// Every value is checked (format and types, element counts against the file size, list
+// lengths, vertex indices of faces), so a truncated or garbage file is an error naming the
+// problem: the scene reader validates PLY files with it before vtkPLYReader (which crashes on
+// such files) reads them with their colors and normals.
 #ifndef boolsurf_PlyReader_h
 #define boolsurf_PlyReader_h
 

@@ -337,3 +337,77 @@ TEST(SceneReader, CanReadFileWantsPolygons)
   EXPECT_EQ(vtkBoolSurfSceneReader::CanReadFile(nullptr), 0);
 }
 } // namespace
+
+// Adversarial scene files: JSON nested 10^5 deep, operation indices beyond int, and PLY meshes
+// that are truncated, garbage or name absent vertices get named errors, never a crash or a
+// silently changed value.
+TEST(SceneReader, AdversarialFilesAreNamedErrors)
+{
+  WriteQuadMesh(Scratch() / "meshes" / "quads.ply");
+  const std::string points = R"("points": [{"face": 0, "uv": [0.1, 0.1]},
+    {"face": 1, "uv": [0.1, 0.1]}], "polygons": [[], [0, 1]])";
+  struct Case
+  {
+    std::string Name, Text;
+    std::vector<std::string> Expected;
+  };
+  const std::string deep(100000, '[');
+  const std::vector<Case> cases = {
+    { "deep.json",
+      R"({"model": "quads.ply", )" + points + R"(, "are_closed": [)" + deep + "1" +
+        std::string(100000, ']') + "]}",
+      { "'are_closed'[0] is an array of 1 item(s), not a bool" } },
+    { "opsbig.json",
+      R"({"model": "quads.ply", )" + points +
+        R"(, "operations": [{"a": 4294967297, "b": 1, "type": 0}]})",
+      { "'operations'[0].a is 4294967297, not an integer in [0, 2147483647]" } },
+    { "opsint.json",
+      R"({"model": "quads.ply", )" + points +
+        R"(, "operations": [{"a": 1, "b": 2147483648, "type": 0}]})",
+      { "'operations'[0].b is 2147483648, not an integer" } },
+    { "opshuge.json",
+      R"({"model": "quads.ply", )" + points +
+        R"(, "operations": [{"a": 1e300, "b": 1, "type": 0}]})",
+      { "'operations'[0].a is 1e+300, not an integer" } },
+  };
+  // PLY files a scene may name: truncated ASCII, garbage binary, an absent vertex.
+  const std::string header =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  std::ofstream(Scratch() / "meshes" / "truncated.ply")
+    << header << "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0";
+  std::ofstream(Scratch() / "meshes" / "farindex.ply")
+    << header << "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 100000000\n";
+  {
+    std::ofstream garbage(Scratch() / "meshes" / "garbage.ply", std::ios::binary);
+    garbage << "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000\n"
+               "property float x\nproperty float y\nproperty float z\nelement face 7\n"
+               "property list uchar int vertex_indices\nend_header\n";
+    for (int i = 0; i < 4096; ++i)
+      garbage.put(static_cast<char>((i * 7919) & 0xff));
+  }
+  const std::vector<Case> meshes = {
+    { "truncatedply.json",
+      R"({"model": "truncated.ply", )" + points + "}",
+      { "truncated.ply is not a valid PLY file", "truncated face 1" } },
+    { "farindexply.json",
+      R"({"model": "farindex.ply", )" + points + "}",
+      { "face 1 uses vertex index 100000000, outside [0, 4)" } },
+    { "garbageply.json",
+      R"({"model": "garbage.ply", )" + points + "}",
+      { "garbage.ply is not a valid PLY file", "truncated" } },
+  };
+  for (const std::vector<Case>* list : { &cases, &meshes })
+  {
+    for (const Case& bad : *list)
+    {
+      Read r(WriteScene(bad.Name, bad.Text));
+      for (const std::string& expected : bad.Expected)
+      {
+        EXPECT_NE(r.Errors.find(expected), std::string::npos)
+          << bad.Name << ": expected '" << expected << "' in: " << r.Errors.substr(0, 400);
+      }
+      EXPECT_EQ(r.Curves()->GetNumberOfCells(), 0) << bad.Name;
+    }
+  }
+}
