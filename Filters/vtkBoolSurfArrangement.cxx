@@ -51,6 +51,10 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* curvesInput = vtkPolyData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* patches = vtkPolyData::GetData(outputVector, 1);
+  // A failed update leaves empty outputs: downstream filters and views never show the last
+  // successful result as if it were this one.
+  output->Initialize();
+  patches->Initialize();
 
   this->UpdateProgress(0.0);
   std::vector<std::string> warnings, problems;

@@ -28,6 +28,9 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
+  // A failed update leaves empty outputs, not the previous region.
+  region->Initialize();
+  boundary->Initialize();
   this->UpdateProgress(0.0);
 
   boolsurf::ArrangementFields fields;

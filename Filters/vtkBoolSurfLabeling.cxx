@@ -19,6 +19,7 @@ int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize(); // a failed update leaves an empty output, not the previous one
   this->UpdateProgress(0.0);
   boolsurf::ArrangementFields fields;
   boolsurf::LabelingResult labels;

@@ -42,6 +42,7 @@ int vtkBoolSurfTraceCurves::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* surfaceInput = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* curvesInput = vtkPolyData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize(); // a failed update leaves an empty output, not the previous one
 
   std::vector<std::string> warnings, problems, notes;
   std::string error;

@@ -3,11 +3,59 @@
 #include <algorithm>
 #include <cctype>
 #include <climits>
+#include <cstdio>
 
 namespace boolsurf
 {
 namespace
 {
+
+// Length of the UTF-8 sequence starting at byte `at` of s, or 1 for a byte that starts none.
+size_t Utf8Length(const std::string& s, size_t at)
+{
+  const unsigned char c = static_cast<unsigned char>(s[at]);
+  const size_t length = c < 0x80 ? 1
+    : (c >> 5) == 0x6            ? 2
+    : (c >> 4) == 0xE            ? 3
+    : (c >> 3) == 0x1E           ? 4
+                                 : 0;
+  if (length == 0 || at + length > s.size())
+  {
+    return 1;
+  }
+  for (size_t k = 1; k < length; ++k)
+  {
+    if ((static_cast<unsigned char>(s[at + k]) & 0xC0) != 0x80)
+    {
+      return 1;
+    }
+  }
+  return length;
+}
+
+// s with every byte that is not part of valid UTF-8 written as \xNN: messages stay valid UTF-8
+// (Python observers receive None otherwise).
+std::string Utf8Safe(const std::string& s)
+{
+  std::string out;
+  for (size_t at = 0; at < s.size();)
+  {
+    const size_t length = Utf8Length(s, at);
+    const unsigned char c = static_cast<unsigned char>(s[at]);
+    if (length == 1 && c >= 0x80)
+    {
+      char hex[8];
+      std::snprintf(hex, sizeof(hex), "\\x%02X", c);
+      out += hex;
+    }
+    else
+    {
+      out.append(s, at, length);
+    }
+    at += length;
+  }
+  return out;
+}
 
 // Recursive-descent parser emitting postfix code.
 class Parser
@@ -37,7 +85,7 @@ public:
     this->SkipSpace();
     if (this->Pos != this->Text.size())
     {
-      error = this->Message("unexpected '" + std::string(1, this->Text[this->Pos]) +
+      error = this->Message("unexpected '" + this->CharacterAt(this->Pos) +
         "' (expected an operator & | ^ - or the end)");
       return false;
     }
@@ -55,6 +103,12 @@ public:
   };
 
 private:
+  // The character at byte `at` for a message: a whole UTF-8 sequence, not one byte of it.
+  std::string CharacterAt(size_t at) const
+  {
+    return Utf8Safe(this->Text.substr(at, Utf8Length(this->Text, at)));
+  }
+
   void SkipSpace()
   {
     while (this->Pos < this->Text.size() &&
@@ -65,8 +119,8 @@ private:
   }
   std::string Message(const std::string& what) const
   {
-    return "expression \"" + this->Text + "\", position " + std::to_string(this->Pos + 1) + ": " +
-      what;
+    return "expression \"" + Utf8Safe(this->Text) + "\", position " +
+      std::to_string(this->Pos + 1) + ": " + what;
   }
   bool Fail(const std::string& what)
   {
@@ -165,7 +219,7 @@ private:
       return true;
     }
     return this->Fail(
-      "unexpected '" + std::string(1, c) + "' (expected a shape S<id>, '~' or '(')");
+      "unexpected '" + this->CharacterAt(this->Pos) + "' (expected a shape S<id>, '~' or '(')");
   }
 
   bool AndLevel()

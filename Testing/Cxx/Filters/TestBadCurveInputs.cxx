@@ -2,6 +2,9 @@
 // value as given: never a wrapped or clamped value, never a read past an array's end.
 #include "FilterTestUtils.h"
 #include "vtkBoolSurf.h"
+#include "vtkBoolSurfArrangement.h"
+#include "vtkBoolSurfBoolean.h"
+#include "vtkBoolSurfLabeling.h"
 #include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkCallbackCommand.h>
@@ -135,4 +138,47 @@ TEST(BadCurveInputs, ShapeBelowMinusOneIsNamedNotClamped)
   const std::string errors = ErrorsOf(one);
   EXPECT_NE(errors.find("ShapeA = -5 is not a shape of the input"), std::string::npos) << errors;
   EXPECT_EQ(one->GetOutput()->GetNumberOfCells(), 0);
+}
+
+// Every stage filter empties its outputs when an update fails, so nothing downstream shows the
+// previous result as if it were this one.
+TEST(BadCurveInputs, FailedStageUpdatesLeaveEmptyOutputs)
+{
+  Scene s;
+  vtkNew<vtkBoolSurfTraceCurves> trace;
+  trace->SetInputData(0, s.Mesh);
+  trace->SetInputData(1, s.Curves);
+  vtkNew<vtkBoolSurfArrangement> arrangement;
+  arrangement->SetInputData(0, s.Mesh);
+  arrangement->SetInputConnection(1, trace->GetOutputPort());
+  vtkNew<vtkBoolSurfLabeling> labeling;
+  labeling->SetInputConnection(arrangement->GetOutputPort(0));
+  vtkNew<vtkBoolSurfBoolean> boolean;
+  boolean->SetInputConnection(labeling->GetOutputPort());
+  boolean->SetOperationToExpression();
+  boolean->SetExpression("S0");
+  boolean->Update();
+  ASSERT_GT(boolean->GetOutput()->GetNumberOfCells(), 0);
+  ASSERT_GT(arrangement->GetOutput()->GetNumberOfCells(), 0);
+
+  // A malformed expression: the Boolean's outputs are emptied.
+  boolean->SetExpression("S0 &");
+  EXPECT_NE(ErrorsOf(boolean).find("position"), std::string::npos);
+  EXPECT_EQ(boolean->GetOutput(0)->GetNumberOfCells(), 0);
+  EXPECT_EQ(boolean->GetOutput(1)->GetNumberOfCells(), 0);
+
+  // Bad curves: tracing fails, and every stage below it ends empty.
+  boolean->SetExpression("S0");
+  s.SetExact({ { 0.2, 0.2 }, { 3.0, 3.0 }, { 0.1, 0.6 } });
+  s.Curves->Modified();
+  for (vtkAlgorithm* f : std::initializer_list<vtkAlgorithm*>{ trace, arrangement, labeling })
+  {
+    ErrorsOf(f);
+  }
+  ErrorsOf(boolean);
+  EXPECT_EQ(trace->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(arrangement->GetOutput(0)->GetNumberOfCells(), 0);
+  EXPECT_EQ(arrangement->GetOutput(1)->GetNumberOfCells(), 0);
+  EXPECT_EQ(labeling->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(boolean->GetOutput(0)->GetNumberOfCells(), 0);
 }

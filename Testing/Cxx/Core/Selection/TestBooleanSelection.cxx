@@ -160,3 +160,50 @@ TEST(RegionBoundary, LoopsKeepTheRegionOnTheLeft)
   EXPECT_EQ(lines[0].Reversed, (std::vector<char>{ 0, 1 }));
   EXPECT_TRUE(ExtractRegionBoundary(patches, { 0, 0, 0, 0 }).empty());
 }
+
+// Valid UTF-8 in every message: a non-ASCII character is quoted whole, invalid bytes as \xNN.
+TEST(BooleanExpression, MessagesStayValidUtf8)
+{
+  auto isValidUtf8 = [](const std::string& s)
+  {
+    for (size_t i = 0; i < s.size();)
+    {
+      const unsigned char c = static_cast<unsigned char>(s[i]);
+      const size_t n = c < 0x80 ? 1
+        : (c >> 5) == 6         ? 2
+        : (c >> 4) == 14        ? 3
+        : (c >> 3) == 30        ? 4
+                                : 0;
+      if (n == 0 || i + n > s.size())
+        return false;
+      for (size_t k = 1; k < n; ++k)
+        if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80)
+          return false;
+      i += n;
+    }
+    return true;
+  };
+  BooleanExpression e;
+  std::string error;
+  EXPECT_FALSE(e.Parse("S0 & \xC3\xA9", 2, error)); // "é"
+  EXPECT_TRUE(isValidUtf8(error)) << error;
+  EXPECT_NE(error.find("unexpected '\xC3\xA9'"), std::string::npos) << error;
+  EXPECT_FALSE(e.Parse("S0 | \xFF\xC3", 2, error)); // not UTF-8 at all
+  EXPECT_TRUE(isValidUtf8(error)) << error;
+  EXPECT_NE(error.find("unexpected '\\xFF'"), std::string::npos) << error;
+}
+
+// Deep nesting is refused by name instead of overflowing the stack; runs of '~' are fine.
+TEST(BooleanExpression, DeepNestingIsRefusedNotOverflowed)
+{
+  BooleanExpression e;
+  std::string error;
+  EXPECT_FALSE(e.Parse(std::string(100000, '(') + "S0", 1, error));
+  EXPECT_NE(error.find("parentheses nested deeper than 256"), std::string::npos) << error;
+  EXPECT_FALSE(e.Parse(std::string(100000, '(') + "S0" + std::string(100000, ')'), 1, error));
+  EXPECT_NE(error.find("nested deeper"), std::string::npos) << error;
+  ASSERT_TRUE(e.Parse(std::string(1000001, '~') + "S0", 1, error)) << error;
+  EXPECT_FALSE(e.Evaluate({ 1 })); // an odd number of nots
+  ASSERT_TRUE(e.Parse(std::string(200, '(') + "S0" + std::string(200, ')'), 1, error)) << error;
+  EXPECT_TRUE(e.Evaluate({ 1 }));
+}
