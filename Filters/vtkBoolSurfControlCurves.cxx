@@ -243,10 +243,20 @@ void ReadControlCurves(vtkPolyData* curves,
         return;
       }
       const int count = static_cast<int>(curve.Points.size());
-      if (count < 2)
+      bool allSame = true;
+      for (int i = 1; i < count && allSame; ++i)
       {
-        problems.push_back(CurveLabel(curve.CurveId) + " has " + std::to_string(count) +
-          " control point(s); a curve needs at least 2");
+        const SurfacePoint& a = curve.Points[0];
+        const SurfacePoint& b = curve.Points[i];
+        allSame = a.Triangle == b.Triangle && a.U == b.U && a.V == b.V;
+      }
+      if (count < 2 || allSame)
+      {
+        // A curve of one point (or of one point repeated) has zero length and bounds nothing:
+        // skipped with a note rather than failing the other curves.
+        notes.push_back(CurveLabel(curve.CurveId) + " has " + std::to_string(count) +
+          " control point(s)" + (count >= 2 ? ", all at the same surface point" : "") +
+          ": skipped, a curve needs two distinct points");
         return;
       }
       if (curve.Type == CurveType::CubicBezier)

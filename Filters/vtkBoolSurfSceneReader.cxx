@@ -764,8 +764,9 @@ void ReadSurfaceScene(const json& scene,
     }
     if (poly.size() == 1)
     {
-      throw SceneError(Where("polygons", i) + " has a single point (" + Brief(poly[0]) +
-        "); a curve needs at least 2 (only empty polygons are skipped)");
+      // A one-point polygon bounds nothing: skipped, as the authors' tool does.
+      out.Notes.push_back(Where("polygons", i) + " has a single point (" + Brief(poly[0]) +
+        "): skipped, a curve needs at least 2");
     }
     for (std::size_t k = 0; k < poly.size(); ++k)
     {
@@ -867,9 +868,11 @@ void ReadSurfaceScene(const json& scene,
   for (std::size_t i = 0; i < polygons.size(); ++i)
   {
     const json& poly = polygons[i];
-    if (poly.empty())
+    if (poly.size() < 2)
     {
-      continue; // polygon 0 is reserved by BoolSurf; its editor also leaves trailing empty ones
+      // Polygon 0 is reserved by BoolSurf; its editor also leaves trailing empty ones; one-point
+      // polygons were named in a note above.
+      continue;
     }
     std::vector<vtkIdType> ids;
     for (const json& p : poly)

@@ -5,6 +5,7 @@
 #include "vtkBoolSurfArrangement.h"
 #include "vtkBoolSurfTraceCurves.h"
 
+#include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -194,10 +195,29 @@ TEST(TraceCurvesFilter, ControlPointsRoundTripExactly)
 TEST(TraceCurvesFilter, BadInputsAreNamed)
 {
   auto mesh = testutils::ToPolyData(boolsurf::MakeFlatSquare(8));
+  // Zero-length curves (one point, or one point repeated) are skipped with a warning; the other
+  // curves are traced.
   ControlPolygon single{ { { 0.5, 0.5, 0 } }, 0, false };
-  EXPECT_NE(TraceErrors(Trace(mesh, testutils::ToCurves({ single })))
-              .find("curve 0 has 1 control point(s); a curve needs at least 2"),
-    std::string::npos);
+  ControlPolygon repeated{ { { 0.3, 0.5, 0 }, { 0.3, 0.5, 0 }, { 0.3, 0.5, 0 } }, 1, true };
+  ControlPolygon fine{ { { 0.2, 0.2, 0 }, { 0.8, 0.3, 0 }, { 0.5, 0.8, 0 } }, 2, true };
+  {
+    vtkNew<vtkBoolSurfTraceCurves> trace;
+    trace->SetInputData(0, mesh);
+    trace->SetInputData(1, testutils::ToCurves({ single, repeated, fine }));
+    std::string warnings;
+    vtkNew<vtkCallbackCommand> onWarning;
+    onWarning->SetClientData(&warnings);
+    onWarning->SetCallback([](vtkObject*, unsigned long, void* text, void* data)
+      { *static_cast<std::string*>(text) += static_cast<const char*>(data); });
+    trace->AddObserver(vtkCommand::WarningEvent, onWarning);
+    trace->Update();
+    EXPECT_EQ(trace->GetOutput()->GetNumberOfLines(), 1);
+    EXPECT_NE(warnings.find("curve 0 has 1 control point(s): skipped"), std::string::npos)
+      << warnings;
+    EXPECT_NE(warnings.find("has 3 control point(s), all at the same surface point: skipped"),
+      std::string::npos)
+      << warnings;
+  }
 
   ControlPolygon bezier{
     { { 0.1, 0.1, 0 }, { 0.2, 0.3, 0 }, { 0.4, 0.4, 0 }, { 0.6, 0.6, 0 }, { 0.7, 0.7, 0 } },
