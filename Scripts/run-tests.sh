@@ -3,5 +3,18 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash Scripts/setup.sh
-cd build
-ctest -j"$(nproc)" --output-on-failure --timeout 900
+(cd build && ctest -j"$(nproc)" --output-on-failure --timeout 900)
+
+# The C++ tests again under AddressSanitizer and UndefinedBehaviorSanitizer (a second build in
+# build-sanitize/: Core, the filters module and the two test executables).
+echo "== sanitizer pass: Core and filter tests with -fsanitize=address,undefined"
+# Leak checks off (VTK keeps singletons alive until exit); test discovery runs the executables
+# at build time, so this holds for the build too.
+export ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1
+cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBOOLSURF_SANITIZE=ON \
+  -DBOOLSURF_BUILD_BENCHMARKS=OFF -DPython3_EXECUTABLE=/usr/bin/python3 \
+  > build-sanitize.log 2>&1 || { cat build-sanitize.log; exit 1; }
+cmake --build build-sanitize --target BoolSurfCoreTests BoolSurfFilterTests -- -j"$(nproc)" \
+  >> build-sanitize.log 2>&1 || { tail -50 build-sanitize.log; exit 1; }
+cd build-sanitize
+ctest -j"$(nproc)" --output-on-failure --timeout 1800
