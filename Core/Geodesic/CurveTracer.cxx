@@ -6,6 +6,11 @@ namespace boolsurf
 {
 namespace
 {
+// Barycentric weights at most this are zero for control points (about 64 ulps of 1).
+constexpr double ControlPointSnap = 1.5e-14;
+} // namespace
+namespace
+{
 std::string CurveLabel(int curveId)
 {
   return "curve " + std::to_string(curveId);
@@ -241,7 +246,11 @@ TraceStatus CurveTracer::Trace(const std::vector<SurfacePoint>& points,
       return TraceStatus::Failure(
         CurveLabel(curveId) + ", control point " + std::to_string(i) + ": " + problem);
     }
-    canonical[i] = Canonicalize(mesh, points[i], 0.0);
+    // A weight within rounding of zero puts the point on the edge (or vertex): a point 1e-16
+    // inside a triangle would make its paths cross that edge and come straight back, a
+    // zero-length excursion that the arrangement cannot orient. The snap is far below any
+    // distance a user means (weights are fractions of the triangle).
+    canonical[i] = Canonicalize(mesh, points[i], ControlPointSnap);
   }
   switch (type)
   {

@@ -8,10 +8,14 @@
 #include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdTypeArray.h>
+#include <vtkPlaneSource.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkTriangleFilter.h>
 
 #include <gtest/gtest.h>
 
@@ -181,4 +185,103 @@ TEST(BadCurveInputs, FailedStageUpdatesLeaveEmptyOutputs)
   EXPECT_EQ(arrangement->GetOutput(1)->GetNumberOfCells(), 0);
   EXPECT_EQ(labeling->GetOutput()->GetNumberOfCells(), 0);
   EXPECT_EQ(boolean->GetOutput(0)->GetNumberOfCells(), 0);
+}
+
+// A control point given exactly a rounding error inside a triangle (u or v of 1e-16) is on the
+// edge for all purposes: the polygon bounds its area (shoelace), instead of a zero-length
+// excursion across the edge making the shape look inconsistent.
+TEST(BadCurveInputs, ControlPointsWithinRoundingOfAnEdgeBoundTheirPolygon)
+{
+  // A 10 x 10 plane cut into triangles by vtkTriangleFilter, on [-0.5, 0.5]^2.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(10, 10);
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputConnection(plane->GetOutputPort());
+  triangulate->Update();
+  vtkPolyData* mesh = triangulate->GetOutput();
+  // Exact surface point of (x, y) on the flat mesh: the triangle containing it.
+  auto locate = [&](double x, double y, vtkIdType& triangle, double& u, double& v)
+  {
+    double p[3][3];
+    for (vtkIdType t = 0; t < mesh->GetNumberOfCells(); ++t)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      mesh->GetCellPoints(t, n, ids);
+      for (int k = 0; k < 3; ++k)
+        mesh->GetPoint(ids[k], p[k]);
+      const double a = p[1][0] - p[0][0], b = p[2][0] - p[0][0];
+      const double c = p[1][1] - p[0][1], d = p[2][1] - p[0][1];
+      const double det = a * d - b * c;
+      u = ((x - p[0][0]) * d - b * (y - p[0][1])) / det;
+      v = (a * (y - p[0][1]) - c * (x - p[0][0])) / det;
+      if (u >= 0 && v >= 0 && u + v <= 1)
+      {
+        triangle = t;
+        return;
+      }
+    }
+    triangle = -1;
+  };
+  int checked = 0;
+  for (vtkIdType t = 0; t < mesh->GetNumberOfCells(); t += 7)
+  {
+    for (double eps : { 3e-17, 1.3e-16, 1e-15 })
+    {
+      for (int side = 0; side < 2; ++side)
+      {
+        const double u0 = side ? 0.4 : eps, v0 = side ? eps : 0.4;
+        vtkIdType n;
+        const vtkIdType* ids;
+        mesh->GetCellPoints(t, n, ids);
+        double p[3][3];
+        for (int k = 0; k < 3; ++k)
+          mesh->GetPoint(ids[k], p[k]);
+        const double x = p[0][0] + u0 * (p[1][0] - p[0][0]) + v0 * (p[2][0] - p[0][0]);
+        const double y = p[0][1] + u0 * (p[1][1] - p[0][1]) + v0 * (p[2][1] - p[0][1]);
+        const double polygon[4][2] = {
+          { x, y }, { x + 0.2, y + 0.05 }, { x + 0.1, y + 0.25 }, { x - 0.15, y + 0.1 }
+        };
+        if (x - 0.15 < -0.49 || x + 0.2 > 0.49 || y + 0.25 > 0.49)
+          continue;
+        vtkNew<vtkPoints> points;
+        vtkNew<vtkIdTypeArray> tid;
+        tid->SetName("TriangleId");
+        vtkNew<vtkDoubleArray> bary;
+        bary->SetName("Barycentric");
+        bary->SetNumberOfComponents(2);
+        double area = 0;
+        for (int i = 0; i < 4; ++i)
+        {
+          vtkIdType triangle = t;
+          double u = u0, v = v0;
+          if (i > 0)
+            locate(polygon[i][0], polygon[i][1], triangle, u, v);
+          ASSERT_GE(triangle, 0);
+          points->InsertNextPoint(polygon[i][0], polygon[i][1], 0);
+          tid->InsertNextValue(triangle);
+          bary->InsertNextTuple2(u, v);
+          const int j = (i + 1) % 4;
+          area += 0.5 * (polygon[i][0] * polygon[j][1] - polygon[j][0] * polygon[i][1]);
+        }
+        vtkNew<vtkPolyData> curves;
+        curves->SetPoints(points);
+        vtkNew<vtkCellArray> polys;
+        polys->InsertNextCell({ 0, 1, 2, 3 });
+        curves->SetPolys(polys);
+        curves->GetPointData()->AddArray(tid);
+        curves->GetPointData()->AddArray(bary);
+        vtkNew<vtkBoolSurf> one;
+        one->SetInputData(0, mesh);
+        one->SetInputData(1, curves);
+        one->SetOperationToExpression();
+        one->SetExpression("S0");
+        EXPECT_EQ(ErrorsOf(one), "") << "triangle " << t << " eps " << eps << " side " << side;
+        EXPECT_NEAR(testutils::Area(one->GetOutput()), area, 1e-12)
+          << "triangle " << t << " eps " << eps << " side " << side;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 20);
 }
