@@ -47,7 +47,6 @@ struct vtkBoolSurf::Internals
   std::vector<boolsurf::TracedCurve> Curves;
   boolsurf::Arrangement Arrangement;
   boolsurf::LabelingResult Labels;
-  std::vector<boolsurf::BoundaryPatch> Patches;
   // Selection buffers.
   std::vector<char> Selected;
   std::vector<int> RegionTriangles;
@@ -190,7 +189,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   const Clock::time_point selected = Clock::now();
   boolsurf::WriteRegion(*surface, arr, in.Region, region);
   boolsurf::WriteBoundary(
-    boolsurf::ExtractRegionBoundary(in.Patches, in.Selected),
+    boolsurf::ExtractRegionBoundary(arr.Patches, in.Selected),
     [&](int p, double x[3])
     {
       x[0] = arr.Positions[p].x;
@@ -282,13 +281,6 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   {
     vtkWarningMacro(<< warning);
   }
-  in.Patches.resize(arr.Patches.size());
-  for (size_t p = 0; p < arr.Patches.size(); ++p)
-  {
-    in.Patches[p].Points = arr.Patches[p].Points;
-    in.Patches[p].LeftCell = arr.Patches[p].LeftCell;
-    in.Patches[p].RightCell = arr.Patches[p].RightCell;
-  }
   in.LabelingTime = Milliseconds(labelStart, Clock::now());
   return true;
 }
@@ -341,32 +333,9 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
   boolsurf::AddExpressionField(region, expression);
   boolsurf::AddExpressionField(boundary, expression);
   vtkFieldData* fd = region->GetFieldData();
-  const boolsurf::LabelingResult& labels = in.Labels;
-  const int ns = labels.NumberOfShapes;
-  const int nc = in.Arrangement.NumberOfCells;
-  if (ns > 0 && nc > 0)
-  {
-    // The labels of the arrangement's cells (rows: ArrangementCell), for coloring the region
-    // by a shape without per-triangle label arrays.
-    vtkNew<vtkIntArray> ids, consistent, cellLabels;
-    ids->SetName("ShapeIds");
-    consistent->SetName("ShapeConsistent");
-    ids->SetNumberOfTuples(ns);
-    consistent->SetNumberOfTuples(ns);
-    cellLabels->SetName("CellLabels");
-    cellLabels->SetNumberOfComponents(ns);
-    for (int s = 0; s < ns; ++s)
-    {
-      ids->SetValue(s, labels.ShapeIdOf(s));
-      consistent->SetValue(s, labels.ShapeConsistent[s]);
-      cellLabels->SetComponentName(s, ("S" + std::to_string(labels.ShapeIdOf(s))).c_str());
-    }
-    cellLabels->SetNumberOfTuples(nc);
-    std::copy(labels.Labels.begin(), labels.Labels.end(), cellLabels->GetPointer(0));
-    fd->AddArray(ids);
-    fd->AddArray(consistent);
-    fd->AddArray(cellLabels);
-  }
+  // The labels of the arrangement's cells (rows: ArrangementCell), for coloring the region by a
+  // shape without per-triangle label arrays.
+  boolsurf::AddLabelTable(in.Labels, fd);
   // Milliseconds per stage of this update (0 for the stages reused from the previous one).
   const boolsurf::ArrangementStageTimes& t = in.Arrangement.Times;
   const char* names[] = { "Trace",

@@ -66,6 +66,23 @@ std::vector<int> ReadInts(vtkFieldData* fd, const char* name, int comps = 1)
 } // namespace
 
 //------------------------------------------------------------------------------
+void SetTriangles(const int* corners, vtkIdType count, vtkPolyData* output)
+{
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfTuples(count + 1);
+  connectivity->SetNumberOfTuples(3 * count);
+  vtkIdType* offset = offsets->GetPointer(0);
+  for (vtkIdType t = 0; t <= count; ++t)
+  {
+    offset[t] = 3 * t;
+  }
+  std::copy_n(corners, 3 * count, connectivity->GetPointer(0));
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->SetPolys(polys);
+}
+
+//------------------------------------------------------------------------------
 void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData* pointData)
 {
   const vtkIdType np = static_cast<vtkIdType>(points.size());
@@ -134,22 +151,8 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   output->SetPoints(points);
 
   const vtkIdType nt = static_cast<vtkIdType>(arr.Triangles.size());
-  vtkNew<vtkIdTypeArray> cellOffsets, connectivity;
-  cellOffsets->SetNumberOfTuples(nt + 1);
-  connectivity->SetNumberOfTuples(3 * nt);
-  vtkIdType* offset = cellOffsets->GetPointer(0);
-  vtkIdType* conn = connectivity->GetPointer(0);
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    offset[t] = 3 * t;
-    conn[3 * t] = arr.Triangles[t][0];
-    conn[3 * t + 1] = arr.Triangles[t][1];
-    conn[3 * t + 2] = arr.Triangles[t][2];
-  }
-  offset[nt] = 3 * nt;
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(cellOffsets, connectivity);
-  output->SetPolys(polys);
+  static_assert(sizeof(std::array<int, 3>) == 3 * sizeof(int), "triangles must be packed ints");
+  SetTriangles(reinterpret_cast<const int*>(arr.Triangles.data()), nt, output);
 
   TransferSurfaceAttributes(
     surface.Triangles, *surface.Mesh, arr.PointSurface, arr.SourceTriangle, output);
@@ -259,6 +262,25 @@ void WriteArrangementPatches(const Arrangement& arr,
   cd->AddArray(IntArray("LeftCell", left));
   cd->AddArray(IntArray("RightCell", right));
   cd->AddArray(length);
+}
+
+//------------------------------------------------------------------------------
+std::vector<int> ReadTriangleCells(vtkDataArray* arrangementCell)
+{
+  const vtkIdType n = arrangementCell->GetNumberOfTuples();
+  std::vector<int> cells(n);
+  if (auto* ints = vtkArrayDownCast<vtkIntArray>(arrangementCell))
+  {
+    std::copy_n(ints->GetPointer(0), n, cells.data());
+  }
+  else
+  {
+    for (vtkIdType t = 0; t < n; ++t)
+    {
+      cells[t] = static_cast<int>(arrangementCell->GetComponent(t, 0));
+    }
+  }
+  return cells;
 }
 
 //------------------------------------------------------------------------------

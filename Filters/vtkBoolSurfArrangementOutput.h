@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+class vtkDataArray;
 class vtkPointData;
 class vtkPolyData;
 
@@ -28,6 +29,10 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
   vtkPolyData* refined,
   vtkPolyData* patches,
   std::string& error);
+
+/// Polys of `output`: `count` triangles, corner k of triangle t at corners[3 t + k] (a bulk
+/// copy into the connectivity array, offsets 0, 3, 6, ...).
+void SetTriangles(const int* corners, vtkIdType count, vtkPolyData* output);
 
 /// Point data TriangleId/Barycentric: each point as a point of the input surface.
 void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData* pointData);
@@ -56,6 +61,10 @@ struct ArrangementFields
   std::vector<BoundaryPatch> Patches;
   std::vector<int> PatchShape, PatchCurve;
 };
+
+/// Cell data `ArrangementCell` as ints (the arrangement writes a vtkIntArray; any other type is
+/// converted).
+std::vector<int> ReadTriangleCells(vtkDataArray* arrangementCell);
 
 /// Reads the field data and cell data `ArrangementCell`; false with a message naming the
 /// missing array when `input` is not an arrangement output.

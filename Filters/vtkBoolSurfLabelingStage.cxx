@@ -19,27 +19,49 @@ namespace boolsurf
 namespace
 {
 
-// ArrangementCell per triangle as ints (the arrangement writes a vtkIntArray; anything else
-// is converted once).
-std::vector<int> CellOfTriangles(vtkDataArray* cellOf)
+// Components named after the shapes: S<id>, in the order of the labels' shapes.
+void NameShapeComponents(vtkDataArray* a, const LabelingResult& labels)
 {
-  const vtkIdType n = cellOf->GetNumberOfTuples();
-  std::vector<int> cells(n);
-  if (auto* ints = vtkArrayDownCast<vtkIntArray>(cellOf))
+  a->SetNumberOfComponents(labels.NumberOfShapes);
+  for (int s = 0; s < labels.NumberOfShapes; ++s)
   {
-    std::copy_n(ints->GetPointer(0), n, cells.data());
+    a->SetComponentName(s, ("S" + std::to_string(labels.ShapeIdOf(s))).c_str());
   }
-  else
-  {
-    for (vtkIdType t = 0; t < n; ++t)
-    {
-      cells[t] = static_cast<int>(cellOf->GetComponent(t, 0));
-    }
-  }
-  return cells;
 }
 
 } // namespace
+
+//------------------------------------------------------------------------------
+void AddLabelTable(const LabelingResult& labels, vtkFieldData* fd)
+{
+  const int ns = labels.NumberOfShapes;
+  if (ns == 0)
+  {
+    return; // no empty arrays: VTK's XML writer cannot read them back
+  }
+  vtkNew<vtkIntArray> ids, consistent;
+  ids->SetName("ShapeIds");
+  consistent->SetName("ShapeConsistent");
+  ids->SetNumberOfTuples(ns);
+  consistent->SetNumberOfTuples(ns);
+  for (int s = 0; s < ns; ++s)
+  {
+    ids->SetValue(s, labels.ShapeIdOf(s));
+    consistent->SetValue(s, labels.ShapeConsistent[s]);
+  }
+  fd->AddArray(ids);
+  fd->AddArray(consistent);
+  const vtkIdType cells = static_cast<vtkIdType>(labels.Labels.size()) / ns;
+  if (cells > 0)
+  {
+    vtkNew<vtkIntArray> cellLabels;
+    cellLabels->SetName("CellLabels");
+    NameShapeComponents(cellLabels, labels);
+    cellLabels->SetNumberOfTuples(cells);
+    std::copy(labels.Labels.begin(), labels.Labels.end(), cellLabels->GetPointer(0));
+    fd->AddArray(cellLabels);
+  }
+}
 
 //------------------------------------------------------------------------------
 std::string InconsistencyWarning(const LabelingResult& labels)
@@ -108,30 +130,7 @@ bool LabelArrangement(vtkPolyData* input,
   output->ShallowCopy(input);
   const int ns = fields.NumberOfShapes;
   warning = InconsistencyWarning(labels);
-  if (ns > 0)
-  {
-    vtkNew<vtkIntArray> consistent;
-    consistent->SetName("ShapeConsistent");
-    consistent->SetNumberOfTuples(ns);
-    for (int s = 0; s < ns; ++s)
-    {
-      consistent->SetValue(s, labels.ShapeConsistent[s]);
-    }
-    output->GetFieldData()->AddArray(consistent);
-    if (fields.NumberOfCells > 0)
-    {
-      vtkNew<vtkIntArray> cellLabels;
-      cellLabels->SetName("CellLabels");
-      cellLabels->SetNumberOfComponents(ns);
-      for (int s = 0; s < ns; ++s)
-      {
-        cellLabels->SetComponentName(s, ("S" + std::to_string(labels.ShapeIdOf(s))).c_str());
-      }
-      cellLabels->SetNumberOfTuples(fields.NumberOfCells);
-      std::copy(labels.Labels.begin(), labels.Labels.end(), cellLabels->GetPointer(0));
-      output->GetFieldData()->AddArray(cellLabels);
-    }
-  }
+  AddLabelTable(labels, output->GetFieldData());
 
   // Per-triangle arrays only on request: the table above is what the labels are.
   const bool color = options.ColorShape >= 0;
@@ -139,7 +138,7 @@ bool LabelArrangement(vtkPolyData* input,
   {
     return true;
   }
-  const std::vector<int> cells = CellOfTriangles(cellOf);
+  const std::vector<int> cells = ReadTriangleCells(cellOf);
   const vtkIdType nt = static_cast<vtkIdType>(cells.size());
   if (color)
   {
@@ -168,11 +167,7 @@ bool LabelArrangement(vtkPolyData* input,
   {
     vtkNew<vtkIntArray> perTriangle;
     perTriangle->SetName("Labels");
-    perTriangle->SetNumberOfComponents(ns);
-    for (int s = 0; s < ns; ++s)
-    {
-      perTriangle->SetComponentName(s, ("S" + std::to_string(labels.ShapeIdOf(s))).c_str());
-    }
+    NameShapeComponents(perTriangle, labels);
     perTriangle->SetNumberOfTuples(nt);
     int* out = perTriangle->GetPointer(0);
     for (vtkIdType t = 0; t < nt; ++t)

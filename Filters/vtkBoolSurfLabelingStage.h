@@ -8,6 +8,7 @@
 
 #include <string>
 
+class vtkFieldData;
 class vtkPolyData;
 
 namespace boolsurf
@@ -37,6 +38,11 @@ bool LabelArrangement(vtkPolyData* input,
   LabelingResult& labels,
   std::string& error,
   std::string& warning);
+
+/// Field data `ShapeIds`, `ShapeConsistent` (per shape) and `CellLabels` (cells x shapes,
+/// components named S<id>): the labels as a table, written by the labeling and the one-step
+/// filters alike.
+void AddLabelTable(const LabelingResult& labels, vtkFieldData* fd);
 
 /// "shape S7 is inconsistent: cell 3 is reached with labels 0 and 1; ..." for the conflicts
 /// of `labels` (empty when every shape is consistent).

@@ -13,24 +13,6 @@ namespace boolsurf
 namespace
 {
 
-// Connectivity of triangles 0..n-1 as a cell array (offsets 0, 3, 6, ...).
-void SetTriangles(const std::vector<int>& connectivity, vtkPolyData* output)
-{
-  const vtkIdType nt = static_cast<vtkIdType>(connectivity.size() / 3);
-  vtkNew<vtkIdTypeArray> offsets, conn;
-  offsets->SetNumberOfTuples(nt + 1);
-  conn->SetNumberOfTuples(3 * nt);
-  vtkIdType* o = offsets->GetPointer(0);
-  for (vtkIdType t = 0; t <= nt; ++t)
-  {
-    o[t] = 3 * t;
-  }
-  std::copy(connectivity.begin(), connectivity.end(), conn->GetPointer(0));
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, conn);
-  output->SetPolys(polys);
-}
-
 vtkSmartPointer<vtkIdList> IdList(const std::vector<int>& ids)
 {
   auto list = vtkSmartPointer<vtkIdList>::New();
@@ -58,15 +40,16 @@ void GatherArrays(vtkDataSetAttributes* from, vtkIdList* ids, vtkDataSetAttribut
 //------------------------------------------------------------------------------
 void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPolyData* region)
 {
-  vtkDataArray* cellOf = input->GetCellData()->GetArray("ArrangementCell");
-  const vtkIdType nt = input->GetNumberOfCells();
-  const vtkIntArray* ints = vtkArrayDownCast<vtkIntArray>(cellOf);
+  const std::vector<int> cellOf =
+    ReadTriangleCells(input->GetCellData()->GetArray("ArrangementCell"));
+  const vtkIdType nt =
+    std::min<vtkIdType>(input->GetNumberOfCells(), static_cast<vtkIdType>(cellOf.size()));
   const int cells = static_cast<int>(selected.size());
   // One pass over the triangles' cell ids.
   std::vector<int> triangles;
   for (vtkIdType t = 0; t < nt; ++t)
   {
-    const int c = ints ? ints->GetValue(t) : static_cast<int>(cellOf->GetComponent(t, 0));
+    const int c = cellOf[t];
     if (c >= 0 && c < cells && selected[c])
     {
       triangles.push_back(static_cast<int>(t));
@@ -75,6 +58,7 @@ void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPol
   vtkCellArray* polys = input->GetPolys();
   const bool onlyPolys = input->GetNumberOfPolys() == nt;
   vtkNew<vtkIdList> pts;
+  int fetched = -1; // the triangle whose points `pts` holds (asked for corner by corner)
   RegionExtractor extractor;
   RegionMesh mesh;
   extractor.Extract(
@@ -82,13 +66,17 @@ void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPol
     static_cast<int>(input->GetNumberOfPoints()),
     [&](int t, int k)
     {
-      if (onlyPolys)
+      if (t != fetched)
       {
-        polys->GetCellAtId(t, pts);
-      }
-      else
-      {
-        input->GetCellPoints(t, pts);
+        if (onlyPolys)
+        {
+          polys->GetCellAtId(t, pts);
+        }
+        else
+        {
+          input->GetCellPoints(t, pts);
+        }
+        fetched = t;
       }
       return static_cast<int>(pts->GetId(k));
     },
@@ -100,7 +88,7 @@ void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPol
   points->SetNumberOfPoints(pointIds->GetNumberOfIds());
   input->GetPoints()->GetData()->GetTuples(pointIds, points->GetData());
   region->SetPoints(points);
-  SetTriangles(mesh.Connectivity, region);
+  SetTriangles(mesh.Connectivity.data(), static_cast<vtkIdType>(mesh.Triangles.size()), region);
   GatherArrays(input->GetPointData(), pointIds, region->GetPointData());
   GatherArrays(input->GetCellData(), IdList(mesh.Triangles), region->GetCellData());
 }
@@ -130,7 +118,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
   region->SetPoints(points);
-  SetTriangles(mesh.Connectivity, region);
+  SetTriangles(mesh.Connectivity.data(), static_cast<vtkIdType>(mesh.Triangles.size()), region);
 
   std::vector<int> sourceTriangle(nt);
   vtkNew<vtkIntArray> cell;

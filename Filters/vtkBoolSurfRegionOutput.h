@@ -9,6 +9,7 @@
 #include "Arrangement/Arrangement.h"
 #include "Selection/RegionBoundary.h"
 #include "Selection/RegionExtraction.h"
+#include "vtkBoolSurfArrangementOutput.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
 
 #include <vtkCellArray.h>
@@ -58,16 +59,7 @@ void WriteBoundary(const std::vector<BoundaryPolyline>& lines,
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(total);
   double* xyz = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
-  vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName("TriangleId");
-  vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName("Barycentric");
-  barycentric->SetNumberOfComponents(2);
-  if (withSurfacePoints)
-  {
-    triangleId->SetNumberOfTuples(total);
-    barycentric->SetNumberOfTuples(total);
-  }
+  std::vector<SurfacePoint> surfacePoints(withSurfacePoints ? total : 0);
   vtkNew<vtkIdTypeArray> offsets, connectivity;
   offsets->SetNumberOfTuples(static_cast<vtkIdType>(lines.size()) + 1);
   connectivity->SetNumberOfTuples(cellSize);
@@ -85,10 +77,7 @@ void WriteBoundary(const std::vector<BoundaryPolyline>& lines,
       positionOf(p, xyz + 3 * next);
       if (withSurfacePoints)
       {
-        const SurfacePoint sp = surfacePointOf(p);
-        triangleId->SetValue(next, sp.Triangle);
-        barycentric->SetTypedComponent(next, 0, sp.U);
-        barycentric->SetTypedComponent(next, 1, sp.V);
+        surfacePoints[next] = surfacePointOf(p);
       }
       connectivity->SetValue(slot++, next++);
     }
@@ -105,8 +94,7 @@ void WriteBoundary(const std::vector<BoundaryPolyline>& lines,
   boundary->SetLines(cells);
   if (withSurfacePoints)
   {
-    boundary->GetPointData()->AddArray(triangleId);
-    boundary->GetPointData()->AddArray(barycentric);
+    AddSurfacePointArrays(surfacePoints, boundary->GetPointData());
   }
   boundary->GetCellData()->AddArray(closed);
 }

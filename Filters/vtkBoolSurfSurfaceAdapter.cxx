@@ -17,6 +17,38 @@ namespace boolsurf
 namespace
 {
 
+// Calls visit(cells, cellId, n, ids) for every polygon, then every strip, of `input`, with
+// its polydata cell id (polygons come after vertices and lines, strips after polygons).
+template <class Visit>
+void ForEachPolygonOrStrip(vtkPolyData* input, const Visit& visit)
+{
+  vtkIdType cellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      visit(cells, cellId, n, ids);
+    }
+  }
+}
+
+// Index of the first id outside [0, points), or -1.
+vtkIdType FirstInvalidId(vtkIdType n, const vtkIdType* ids, vtkIdType points)
+{
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    if (ids[k] < 0 || ids[k] >= points)
+    {
+      return k;
+    }
+  }
+  return -1;
+}
+
 // Polygon and strip cells naming a point id outside [0, points): (cell id, first bad id). They
 // are checked before anything reads them (vtkTriangleFilter would crash on them or drop the
 // cell silently, and a conversion to int would wrap ids of 2^32 and more).
@@ -24,56 +56,35 @@ std::vector<std::pair<vtkIdType, vtkIdType>> CellsWithInvalidIds(vtkPolyData* in
 {
   std::vector<std::pair<vtkIdType, vtkIdType>> bad;
   const vtkIdType np = input->GetNumberOfPoints();
-  // Polygons come after vertices and lines in polydata cell ids, strips after polygons.
-  vtkIdType cellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
-  {
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+  ForEachPolygonOrStrip(input,
+    [&](vtkCellArray*, vtkIdType cellId, vtkIdType n, const vtkIdType* ids)
     {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
-      for (vtkIdType k = 0; k < n; ++k)
+      const vtkIdType k = FirstInvalidId(n, ids, np);
+      if (k >= 0)
       {
-        if (ids[k] < 0 || ids[k] >= np)
-        {
-          bad.emplace_back(cellId, ids[k]);
-          break;
-        }
+        bad.emplace_back(cellId, ids[k]);
       }
-    }
-  }
+    });
   return bad;
 }
 
-// A copy of `input` without the cells listed in `bad` (sorted by cell id).
-vtkSmartPointer<vtkPolyData> WithoutCells(vtkPolyData* input,
-  const std::vector<std::pair<vtkIdType, vtkIdType>>& bad)
+// A copy of `input`'s points and polygons/strips without the cells naming invalid point ids.
+vtkSmartPointer<vtkPolyData> WithoutInvalidCells(vtkPolyData* input)
 {
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->SetPoints(input->GetPoints());
   copy->GetPointData()->ShallowCopy(input->GetPointData());
   vtkNew<vtkCellArray> polys, strips;
-  size_t next = 0;
-  vtkIdType cellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  for (vtkCellArray* cells : { input->GetPolys(), input->GetStrips() })
-  {
-    vtkCellArray* out = cells == input->GetPolys() ? polys.GetPointer() : strips.GetPointer();
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+  const vtkIdType np = input->GetNumberOfPoints();
+  ForEachPolygonOrStrip(input,
+    [&](vtkCellArray* cells, vtkIdType, vtkIdType n, const vtkIdType* ids)
     {
-      if (next < bad.size() && bad[next].first == cellId)
+      if (FirstInvalidId(n, ids, np) < 0)
       {
-        ++next;
-        continue;
+        (cells == input->GetPolys() ? polys.GetPointer() : strips.GetPointer())
+          ->InsertNextCell(n, ids);
       }
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
-      out->InsertNextCell(n, ids);
-    }
-  }
+    });
   copy->SetPolys(polys);
   copy->SetStrips(strips);
   return copy;
@@ -133,7 +144,7 @@ void ConvertSurface(vtkPolyData* input, vtkSurfaceInput& out, const SurfaceCheck
         invalidIds.Ids.push_back(cell.first);
       }
       // The rest of the surface is still converted, so Check Surface can describe it.
-      filtered = WithoutCells(input, bad);
+      filtered = WithoutInvalidCells(input);
       input = filtered;
     }
   }

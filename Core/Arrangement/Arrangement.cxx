@@ -27,26 +27,9 @@ double Milliseconds(Clock::time_point from, Clock::time_point to)
   return std::chrono::duration<double, std::milli>(to - from).count();
 }
 
-// Runs body(i) for i in [0, n) on the arena's threads. Every body writes only its own slot,
-// so results never depend on scheduling.
-template <class Body>
-void ParallelFor(tbb::task_arena& arena, int n, const Body& body)
-{
-  arena.execute(
-    [&]
-    {
-      tbb::parallel_for(tbb::blocked_range<int>(0, n),
-        [&](const tbb::blocked_range<int>& range)
-        {
-          for (int i = range.begin(); i != range.end(); ++i)
-          {
-            body(i);
-          }
-        });
-    });
-}
-
-// The same over [0, n) in chunks of at least `grain` (for cheap bodies over the whole mesh).
+// Runs body(i) for i in [0, n) on the arena's threads, in chunks of at least `grain` (the
+// default suits cheap bodies over the whole mesh). Every body writes only its own slot, so
+// results never depend on scheduling.
 template <class Body>
 void ParallelRange(tbb::task_arena& arena, int n, const Body& body, int grain = 4096)
 {
@@ -64,6 +47,13 @@ void ParallelRange(tbb::task_arena& arena, int n, const Body& body, int grain = 
     });
 }
 
+// ParallelRange for bodies that do real work per index (triangles, segments, blocks).
+template <class Body>
+void ParallelFor(tbb::task_arena& arena, int n, const Body& body)
+{
+  ParallelRange(arena, n, body, 1);
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -71,7 +61,6 @@ struct Arrangement::WorkBuffers
 {
   /// The mesh whose vertices fill the first NumberOfMeshVertices refined points (0: none yet).
   std::uint64_t MeshSerial = 0;
-  int NumberOfMeshTriangles = -1;
   TriangleSegmentMap Map;
   std::vector<LocalArrangement> Local;
   std::vector<std::vector<int>> EdgeSegmentPoints;
@@ -102,9 +91,10 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   Arrangement::WorkBuffers& work = *out.Work;
   const int nv = mesh.GetNumberOfVertices();
   const int nt = mesh.GetNumberOfTriangles();
-  // Results are cleared, keeping their capacity (the next edit needs about as much).
+  // The last call's buffers belong to this mesh when it wrote the mesh's vertices into them.
   const bool sameMesh = work.MeshSerial != 0 && work.MeshSerial == mesh.GetSerial() &&
     static_cast<int>(out.Positions.size()) >= nv;
+  // Results are cleared, keeping their capacity (the next edit needs about as much).
   // Triangles, SourceTriangle, TriangleCell and the points keep their contents until
   // overwritten: every entry is written again, and clearing first would zero them all once more.
   out.NumberOfCells = 0;
@@ -114,12 +104,11 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   out.NumberOfPatchGraphVertices = 0;
   out.CurvePoints.clear();
   out.Times = ArrangementStageTimes();
-  if (work.NumberOfMeshTriangles != nt || !sameMesh)
+  if (!sameMesh)
   {
     work.State.assign(nt, 0);
     work.SlotOfTriangle.assign(nt, -1);
     work.MeshEdgeHasBlocked.assign(mesh.GetNumberOfEdges(), 0);
-    work.NumberOfMeshTriangles = nt;
   }
   else
   {

@@ -76,10 +76,7 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
     {
       return -1;
     }
-    if ((*this->MeshEdgeHasBlocked)[mesh.GetEdgeId(t, j)])
-    {
-      blocked = this->BlockedMeshSubEdges->count(UndirectedPointPair(x, y)) > 0;
-    }
+    blocked = this->IsMeshSubEdgeBlocked(t, j, x, y);
     return ((*this->Refined)[n] & RefinedBit) ? this->FindDirected(n, y, x) : (*this->Offset)[n];
   }
   else
@@ -97,10 +94,7 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
   {
     return -1;
   }
-  if ((*this->MeshEdgeHasBlocked)[mesh.GetEdgeId(t, k)])
-  {
-    blocked = this->BlockedMeshSubEdges->count(UndirectedPointPair(x, y)) > 0;
-  }
+  blocked = this->IsMeshSubEdgeBlocked(t, k, x, y);
   return this->FindDirected(n, y, x);
 }
 
@@ -323,8 +317,7 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
             {
               continue;
             }
-            if ((*surface.MeshEdgeHasBlocked)[mesh.GetEdgeId(t, j)] &&
-              surface.BlockedMeshSubEdges->count(UndirectedPointPair(tri[j], tri[(j + 1) % 3])))
+            if (surface.IsMeshSubEdgeBlocked(t, j, tri[j], tri[(j + 1) % 3]))
             {
               continue;
             }
@@ -440,10 +433,7 @@ inline void Unite(int* parent, int a, int b)
     parent[std::max(a, b)] = std::min(a, b);
   }
 }
-} // namespace
 
-namespace
-{
 //------------------------------------------------------------------------------
 int FloodFillTiles(const RefinedSurfaceView& surface,
   const MeshTiles& tiles,
@@ -505,9 +495,9 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
       Unite(parent, rep(ab.first), rep(ab.second));
     }
   }
-  // Arcs from the triangles of dirty tiles, as in FloodFillCells; an arc between two unrefined
-  // triangles of dirty tiles is united from the lower one, an arc into a clean tile from the
-  // dirty side, an arc touching a refined triangle from each refined side.
+  // Arcs from the triangles of dirty tiles, as in FloodFillAllTriangles; an arc between two
+  // unrefined triangles of dirty tiles is united from the lower one, an arc into a clean tile from
+  // the dirty side, an arc touching a refined triangle from each refined side.
   for (int k : dirtyTiles)
   {
     for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
@@ -530,8 +520,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
           {
             continue;
           }
-          if (st != 0 && (*surface.MeshEdgeHasBlocked)[mesh.GetEdgeId(t, j)] &&
-            surface.BlockedMeshSubEdges->count(UndirectedPointPair(tri[j], tri[(j + 1) % 3])))
+          if (st != 0 && surface.IsMeshSubEdgeBlocked(t, j, tri[j], tri[(j + 1) % 3]))
           {
             continue;
           }
@@ -611,78 +600,69 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   return static_cast<int>(roots.size());
 }
 
+// Groups items by cell, stably (a counting sort): items of cell c end up in
+// out[offsets[c] .. offsets[c + 1]). forEach(f) must call f(cell, item) for every item, in the
+// same order each time (it is called twice: count, then place).
+template <class ForEach>
+void GroupByCell(int cells,
+  const ForEach& forEach,
+  std::vector<int>& offsets,
+  std::vector<int>& out)
+{
+  offsets.assign(cells + 1, 0);
+  forEach([&](int cell, int) { ++offsets[cell + 1]; });
+  for (int c = 0; c < cells; ++c)
+  {
+    offsets[c + 1] += offsets[c];
+  }
+  out.resize(offsets[cells]);
+  std::vector<int> cursor(offsets.begin(), offsets.end() - 1);
+  forEach([&](int cell, int item) { out[cursor[cell]++] = item; });
+}
+
 //------------------------------------------------------------------------------
+// Each cell's clean tiles (in tile order) and loose triangles (those of dirty tiles, in tile
+// order). buffers.TileNode holds the cell of each clean tile, -1 for dirty ones.
 void ListCellContents(const MeshTiles& tiles,
   const int* offset,
   const std::vector<int>& cellOfTriangle,
   int cells,
-  TileFloodBuffers& buffers,
-  CellContents* contents)
+  const TileFloodBuffers& buffers,
+  CellContents& contents)
 {
-  const int numberOfTiles = tiles.GetNumberOfTiles();
-  const std::vector<int>& tileNode = buffers.TileNode; // cell of each clean tile, -1: dirty
-  const std::vector<int>& dirtyTiles = buffers.DirtyTiles;
-  const int* cell = cellOfTriangle.data();
-  if (contents)
-  {
-    // Counting sorts by cell: clean tiles in tile order, loose triangles in the order of their
-    // (dirty) tiles.
-    std::vector<int>& tileOffset = contents->TileOffset;
-    tileOffset.assign(cells + 1, 0);
-    for (int k = 0; k < numberOfTiles; ++k)
+  const std::vector<int>& tileNode = buffers.TileNode;
+  GroupByCell(
+    cells,
+    [&](const auto& f)
     {
-      if (tileNode[k] >= 0)
+      for (int k = 0; k < tiles.GetNumberOfTiles(); ++k)
       {
-        ++tileOffset[tileNode[k] + 1];
-      }
-    }
-    for (int c = 0; c < cells; ++c)
-    {
-      tileOffset[c + 1] += tileOffset[c];
-    }
-    contents->Tiles.resize(tileOffset[cells]);
-    for (int k = 0; k < numberOfTiles; ++k)
-    {
-      if (tileNode[k] >= 0)
-      {
-        contents->Tiles[tileOffset[tileNode[k]]++] = k;
-      }
-    }
-    std::vector<int>& triangleOffset = contents->TriangleOffset;
-    triangleOffset.assign(cells + 1, 0);
-    std::vector<int>& loose = buffers.Loose;
-    loose.clear();
-    for (int k : dirtyTiles)
-    {
-      for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
-      {
-        const int t = tiles.Members[i];
-        for (int r = offset[t]; r < offset[t + 1]; ++r)
+        if (tileNode[k] >= 0)
         {
-          loose.push_back(r);
-          ++triangleOffset[cell[r] + 1];
+          f(tileNode[k], k);
         }
       }
-    }
-    for (int c = 0; c < cells; ++c)
+    },
+    contents.TileOffset,
+    contents.Tiles);
+  GroupByCell(
+    cells,
+    [&](const auto& f)
     {
-      triangleOffset[c + 1] += triangleOffset[c];
-    }
-    contents->Triangles.resize(triangleOffset[cells]);
-    for (int r : loose)
-    {
-      contents->Triangles[triangleOffset[cell[r]]++] = r;
-    }
-    // The cursors ran to the next cell's start: shift back by one cell.
-    for (std::vector<int>* o : { &tileOffset, &triangleOffset })
-    {
-      for (int c = cells; c > 0; --c)
+      for (int k : buffers.DirtyTiles)
       {
-        (*o)[c] = (*o)[c - 1];
+        for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
+        {
+          const int t = tiles.Members[i];
+          for (int r = offset[t]; r < offset[t + 1]; ++r)
+          {
+            f(cellOfTriangle[r], r);
+          }
+        }
       }
-      (*o)[0] = 0;
-    }
-  }
+    },
+    contents.TriangleOffset,
+    contents.Triangles);
 }
 } // namespace
 
@@ -746,7 +726,10 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   {
     cellCount = FloodFillTiles(surface, tiles, cellOfTriangle, cellFirstTriangle, buffers);
   }
-  ListCellContents(tiles, offset, cellOfTriangle, cellCount, buffers, contents);
+  if (contents)
+  {
+    ListCellContents(tiles, offset, cellOfTriangle, cellCount, buffers, *contents);
+  }
   for (int k : dirtyTiles)
   {
     dirty[k] = 0;

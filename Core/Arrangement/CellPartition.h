@@ -32,6 +32,13 @@
 namespace boolsurf
 {
 
+inline std::uint64_t UndirectedPointPair(int a, int b)
+{
+  const std::uint32_t lo = static_cast<std::uint32_t>(a < b ? a : b);
+  const std::uint32_t hi = static_cast<std::uint32_t>(a < b ? b : a);
+  return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
 /// The refined surface as the flood fill sees it.
 struct RefinedSurfaceView
 {
@@ -62,14 +69,14 @@ struct RefinedSurfaceView
   /// Neighbour across edge j of refined triangle r (-1 on the boundary); `blocked` tells
   /// whether a closed curve runs along that edge.
   int Neighbor(int r, int j, bool& blocked) const;
+  /// Whether a closed curve covers the sub-edge x-y (refined point ids) of local edge k of mesh
+  /// triangle t.
+  bool IsMeshSubEdgeBlocked(int t, int k, int x, int y) const
+  {
+    return (*this->MeshEdgeHasBlocked)[this->Mesh->GetEdgeId(t, k)] &&
+      this->BlockedMeshSubEdges->count(UndirectedPointPair(x, y)) > 0;
+  }
 };
-
-inline std::uint64_t UndirectedPointPair(int a, int b)
-{
-  const std::uint32_t lo = static_cast<std::uint32_t>(a < b ? a : b);
-  const std::uint32_t hi = static_cast<std::uint32_t>(a < b ? b : a);
-  return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
 
 /// The base mesh cut into tiles: connected groups of about `size` triangles (grown breadth-first
 /// from the lowest unassigned triangle across manifold edges), built once per mesh. A tile with
@@ -119,7 +126,6 @@ struct TileFloodBuffers
   std::vector<int> DirtyTiles;
   std::vector<int> Nodes; ///< union-find nodes of this call
   std::vector<int> CellOfRoot;
-  std::vector<int> Loose;
   // Whole-surface flood fill.
   std::unique_ptr<std::atomic<int>[]> AtomicParent;
   size_t AtomicCapacity = 0;

@@ -1,12 +1,15 @@
 #include "Selection/RegionBoundary.h"
 
+#include "Arrangement/CellPartition.h"
+
 #include <unordered_map>
 
 namespace boolsurf
 {
 
 //------------------------------------------------------------------------------
-std::vector<BoundaryPolyline> ExtractRegionBoundary(const std::vector<BoundaryPatch>& patches,
+template <class PatchType>
+std::vector<BoundaryPolyline> ExtractRegionBoundary(const std::vector<PatchType>& patches,
   const std::vector<char>& selected)
 {
   struct Piece
@@ -20,7 +23,7 @@ std::vector<BoundaryPolyline> ExtractRegionBoundary(const std::vector<BoundaryPa
   { return cell >= 0 && cell < static_cast<int>(selected.size()) && selected[cell] != 0; };
   for (int p = 0; p < static_cast<int>(patches.size()); ++p)
   {
-    const BoundaryPatch& patch = patches[p];
+    const PatchType& patch = patches[p];
     const bool left = isSelected(patch.LeftCell), right = isSelected(patch.RightCell);
     if (left == right || patch.Points.size() < 2)
     {
@@ -95,5 +98,12 @@ std::vector<BoundaryPolyline> ExtractRegionBoundary(const std::vector<BoundaryPa
   }
   return result;
 }
+
+// The patch types the project passes: read back from field data, or straight from the Core
+// arrangement (the one-step filter, without copying them).
+template std::vector<BoundaryPolyline> ExtractRegionBoundary(const std::vector<BoundaryPatch>&,
+  const std::vector<char>&);
+template std::vector<BoundaryPolyline> ExtractRegionBoundary(const std::vector<ArrangementPatch>&,
+  const std::vector<char>&);
 
 } // namespace boolsurf

@@ -28,8 +28,10 @@ struct BoundaryPolyline
   bool Closed = false;
 };
 
-/// Loops bounding the cells with selected[cell] != 0.
-std::vector<BoundaryPolyline> ExtractRegionBoundary(const std::vector<BoundaryPatch>& patches,
+/// Loops bounding the cells with selected[cell] != 0. Patch is BoundaryPatch or the
+/// arrangement's ArrangementPatch (any type with Points, LeftCell and RightCell).
+template <class Patch>
+std::vector<BoundaryPolyline> ExtractRegionBoundary(const std::vector<Patch>& patches,
   const std::vector<char>& selected);
 
 } // namespace boolsurf

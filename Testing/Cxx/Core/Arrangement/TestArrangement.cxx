@@ -19,6 +19,38 @@ int LeftCellOfCurve(const Arrangement& arr, int curve)
   return -1;
 }
 
+// Two arrangements of the same curves on the same mesh are identical, bit for bit.
+void ExpectSameArrangement(const Arrangement& a, const Arrangement& b)
+{
+  EXPECT_EQ(a.NumberOfCells, b.NumberOfCells);
+  EXPECT_EQ(a.TriangleCell, b.TriangleCell);
+  EXPECT_EQ(a.CellFirstTriangle, b.CellFirstTriangle);
+  EXPECT_EQ(a.TriangleOffset, b.TriangleOffset);
+  EXPECT_EQ(a.Triangles, b.Triangles);
+  EXPECT_EQ(a.SourceTriangle, b.SourceTriangle);
+  ASSERT_EQ(a.Positions.size(), b.Positions.size());
+  for (size_t i = 0; i < b.Positions.size(); ++i)
+  {
+    ASSERT_EQ(Distance(a.Positions[i], b.Positions[i]), 0.0) << "point " << i;
+    ASSERT_EQ(a.PointSurface[i].Triangle, b.PointSurface[i].Triangle);
+    ASSERT_EQ(a.PointSurface[i].U, b.PointSurface[i].U);
+    ASSERT_EQ(a.PointSurface[i].V, b.PointSurface[i].V);
+  }
+  ASSERT_EQ(a.Patches.size(), b.Patches.size());
+  for (size_t i = 0; i < b.Patches.size(); ++i)
+  {
+    EXPECT_EQ(a.Patches[i].Points, b.Patches[i].Points);
+    EXPECT_EQ(a.Patches[i].LeftCell, b.Patches[i].LeftCell);
+    EXPECT_EQ(a.Patches[i].RightCell, b.Patches[i].RightCell);
+  }
+  ASSERT_EQ(a.CellGraph.size(), b.CellGraph.size());
+  for (size_t i = 0; i < b.CellGraph.size(); ++i)
+  {
+    EXPECT_EQ(a.CellGraph[i].LeftCell, b.CellGraph[i].LeftCell);
+    EXPECT_EQ(a.CellGraph[i].RightCell, b.CellGraph[i].RightCell);
+  }
+}
+
 } // namespace
 
 TEST(Arrangement, SingleSquareOnJitteredMesh)
@@ -126,16 +158,7 @@ TEST(Arrangement, SameResultWithOneAndTwoThreads)
     curves.push_back(TraceOrDie(tracer, RandomPolygon(rng, 7, 0.02, 0.98), true, c % 3, c));
   const Arrangement one = ArrangeOrDie(mesh, curves, 1);
   const Arrangement two = ArrangeOrDie(mesh, curves, 2);
-  EXPECT_EQ(one.NumberOfCells, two.NumberOfCells);
-  EXPECT_EQ(one.TriangleCell, two.TriangleCell);
-  EXPECT_EQ(one.Triangles, two.Triangles);
-  EXPECT_EQ(one.SourceTriangle, two.SourceTriangle);
-  ASSERT_EQ(one.Positions.size(), two.Positions.size());
-  for (size_t i = 0; i < one.Positions.size(); ++i)
-    EXPECT_EQ(Distance(one.Positions[i], two.Positions[i]), 0.0);
-  ASSERT_EQ(one.Patches.size(), two.Patches.size());
-  for (size_t i = 0; i < one.Patches.size(); ++i)
-    EXPECT_EQ(one.Patches[i].Points, two.Patches[i].Points);
+  ExpectSameArrangement(one, two);
 }
 
 TEST(Arrangement, SphereGreatCirclesEuler)
@@ -317,34 +340,7 @@ TEST(Arrangement, EditsIntoTheSameArrangementEqualFreshOnes)
     SCOPED_TRACE("edit " + std::to_string(edit));
     ASSERT_TRUE(ComputeArrangement(mesh, curves, ArrangementOptions(), reused, error)) << error;
     ExpectCellsAreFloodFill(reused);
-    const Arrangement fresh = ArrangeOrDie(mesh, curves);
-    EXPECT_EQ(reused.NumberOfCells, fresh.NumberOfCells);
-    EXPECT_EQ(reused.TriangleCell, fresh.TriangleCell);
-    EXPECT_EQ(reused.CellFirstTriangle, fresh.CellFirstTriangle);
-    EXPECT_EQ(reused.TriangleOffset, fresh.TriangleOffset);
-    EXPECT_EQ(reused.Triangles, fresh.Triangles);
-    EXPECT_EQ(reused.SourceTriangle, fresh.SourceTriangle);
-    ASSERT_EQ(reused.Positions.size(), fresh.Positions.size());
-    for (size_t i = 0; i < fresh.Positions.size(); ++i)
-    {
-      ASSERT_EQ(Distance(reused.Positions[i], fresh.Positions[i]), 0.0) << "point " << i;
-      ASSERT_EQ(reused.PointSurface[i].Triangle, fresh.PointSurface[i].Triangle);
-      ASSERT_EQ(reused.PointSurface[i].U, fresh.PointSurface[i].U);
-      ASSERT_EQ(reused.PointSurface[i].V, fresh.PointSurface[i].V);
-    }
-    ASSERT_EQ(reused.Patches.size(), fresh.Patches.size());
-    for (size_t i = 0; i < fresh.Patches.size(); ++i)
-    {
-      EXPECT_EQ(reused.Patches[i].Points, fresh.Patches[i].Points);
-      EXPECT_EQ(reused.Patches[i].LeftCell, fresh.Patches[i].LeftCell);
-      EXPECT_EQ(reused.Patches[i].RightCell, fresh.Patches[i].RightCell);
-    }
-    ASSERT_EQ(reused.CellGraph.size(), fresh.CellGraph.size());
-    for (size_t i = 0; i < fresh.CellGraph.size(); ++i)
-    {
-      EXPECT_EQ(reused.CellGraph[i].LeftCell, fresh.CellGraph[i].LeftCell);
-      EXPECT_EQ(reused.CellGraph[i].RightCell, fresh.CellGraph[i].RightCell);
-    }
+    ExpectSameArrangement(reused, ArrangeOrDie(mesh, curves));
   }
   // Another mesh into the same Arrangement: nothing of the first mesh may survive.
   const TriangleMesh other = MeshOf(MakeFlatSquare(17, 1.0, 0.2, 9));
@@ -354,12 +350,7 @@ TEST(Arrangement, EditsIntoTheSameArrangementEqualFreshOnes)
     otherTracer, RandomPolygon(rng, 6, 0.05, 0.95), true, 0, 0) };
   ASSERT_TRUE(ComputeArrangement(other, curves, ArrangementOptions(), reused, error)) << error;
   ExpectCellsAreFloodFill(reused);
-  const Arrangement fresh = ArrangeOrDie(other, curves);
-  EXPECT_EQ(reused.TriangleCell, fresh.TriangleCell);
-  EXPECT_EQ(reused.Triangles, fresh.Triangles);
-  ASSERT_EQ(reused.Positions.size(), fresh.Positions.size());
-  for (size_t i = 0; i < fresh.Positions.size(); ++i)
-    ASSERT_EQ(Distance(reused.Positions[i], fresh.Positions[i]), 0.0) << "point " << i;
+  ExpectSameArrangement(reused, ArrangeOrDie(other, curves));
 }
 
 // Tiles partition the usable triangles into connected groups of at most the requested size,
@@ -433,8 +424,8 @@ TEST(Arrangement, TiledAndWholeSurfaceFloodFillsAgree)
       }
     for (size_t i = 1; i < results.size(); ++i)
     {
-      EXPECT_EQ(results[i].TriangleCell, results[0].TriangleCell) << "variant " << i;
-      EXPECT_EQ(results[i].CellFirstTriangle, results[0].CellFirstTriangle) << "variant " << i;
+      SCOPED_TRACE("variant " + std::to_string(i));
+      ExpectSameArrangement(results[i], results[0]);
     }
   }
 }
