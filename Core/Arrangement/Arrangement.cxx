@@ -73,6 +73,7 @@ struct Arrangement::WorkBuffers
   std::vector<unsigned char> Blocked;
   std::shared_ptr<MeshTiles> Tiles;
   TileFloodBuffers Flood;
+  PatchGraphBuffers PatchGraph;
   std::vector<RefinedCurve> RefinedCurves;
 };
 
@@ -455,7 +456,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     out.PointSurface,
     out.TriangleCell,
     out.Patches,
-    out.CellGraph);
+    out.CellGraph,
+    &work.PatchGraph);
   const Clock::time_point done = Clock::now();
 
   out.Times.Hash = Milliseconds(start, hashed);

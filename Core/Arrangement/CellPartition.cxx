@@ -745,15 +745,25 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   const std::vector<SurfacePoint>& pointSurface,
   const std::vector<int>& cellOfTriangle,
   std::vector<ArrangementPatch>& patches,
-  std::vector<CellGraphArc>& arcs)
+  std::vector<CellGraphArc>& arcs,
+  PatchGraphBuffers* buffers)
 {
   const TriangleMesh& mesh = *surface.Mesh;
   patches.clear();
   arcs.clear();
 
+  // Per-point marks, zero between calls; only curve points are ever marked, so they are reset
+  // at the end instead of filling arrays over every refined point on each edit.
+  PatchGraphBuffers localBuffers;
+  PatchGraphBuffers& marks = buffers ? *buffers : localBuffers;
+  if (marks.Visits.size() < positions.size())
+  {
+    marks.Visits.resize(positions.size(), 0);
+    marks.IsEnd.resize(positions.size(), 0);
+  }
   // Visits per point over all curves: a point visited twice is where curves meet (crossing,
   // touching, overlap end, or a curve meeting itself).
-  std::vector<int> visits(positions.size(), 0);
+  std::vector<int>& visits = marks.Visits;
   for (const RefinedCurve& c : refinedCurves)
   {
     for (int p : c.Points)
@@ -761,7 +771,7 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
       ++visits[p];
     }
   }
-  std::vector<char> isEnd(positions.size(), 0);
+  std::vector<char>& isEnd = marks.IsEnd;
   int graphVertices = 0;
   auto markEnd = [&](int p)
   {
@@ -873,6 +883,14 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
       }
     }
     finish();
+  }
+  for (const RefinedCurve& c : refinedCurves)
+  {
+    for (int p : c.Points)
+    {
+      visits[p] = 0;
+      isEnd[p] = 0;
+    }
   }
   return graphVertices;
 }

@@ -181,6 +181,14 @@ struct CellGraphArc
   int Patch = -1;
 };
 
+/// Scratch memory of BuildPatchesAndCellGraph (per refined point, zero between calls), kept by
+/// callers that arrange repeatedly.
+struct PatchGraphBuffers
+{
+  std::vector<int> Visits;
+  std::vector<char> IsEnd;
+};
+
 /// Cuts the curves into patches and builds the cell graph (one arc per patch of a closed
 /// curve whose two sides are cells). Returns the number of patch-graph vertices (distinct
 /// patch end points).
@@ -191,7 +199,8 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   const std::vector<SurfacePoint>& pointSurface,
   const std::vector<int>& cellOfTriangle,
   std::vector<ArrangementPatch>& patches,
-  std::vector<CellGraphArc>& arcs);
+  std::vector<CellGraphArc>& arcs,
+  PatchGraphBuffers* buffers = nullptr);
 
 } // namespace boolsurf
 
