@@ -174,20 +174,23 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   fd->AddArray(IntArray("NumberOfShapes", { static_cast<int>(shapeIds.size()) }));
   AddField(fd, IntArray("ShapeIds", shapeIds));
 
-  const std::vector<int> location = PatchLocations(arr.Patches);
-  std::vector<int> arcs, arcShape, arcPatch, arcLocation;
+  const std::vector<PatchPlace> places = PatchPlaces(arr.Patches);
+  std::vector<int> arcs, arcShape, arcPatch, arcLocation, arcDirection;
   for (const CellGraphArc& a : arr.CellGraph)
   {
     arcs.push_back(a.RightCell);
     arcs.push_back(a.LeftCell);
     arcShape.push_back(a.Shape);
     arcPatch.push_back(a.Patch);
-    arcLocation.push_back(a.Patch >= 0 ? location[a.Patch] : -1);
+    const PatchPlace place = a.Patch >= 0 ? places[a.Patch] : PatchPlace{};
+    arcLocation.push_back(place.Location);
+    arcDirection.push_back(place.Direction);
   }
   AddField(fd, IntArray("CellGraphArcs", arcs, 2));
   AddField(fd, IntArray("CellGraphShape", arcShape));
   AddField(fd, IntArray("CellGraphPatch", arcPatch));
   AddField(fd, IntArray("CellGraphLocation", arcLocation));
+  AddField(fd, IntArray("CellGraphDirection", arcDirection));
 
   AddField(fd, IntArray("CellComponent", CellComponents(*surface.Topology, arr)));
   AddField(
@@ -328,9 +331,17 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
   const std::vector<int> arcs = ReadInts(fd, "CellGraphArcs", 2);
   const std::vector<int> shape = ReadInts(fd, "CellGraphShape");
   const std::vector<int> location = ReadInts(fd, "CellGraphLocation");
-  if (shape.size() * 2 != arcs.size() || location.size() != shape.size())
+  // Optional (arrangements written before it existed): every arc along its place.
+  std::vector<int> direction = ReadInts(fd, "CellGraphDirection");
+  if (direction.empty())
   {
-    error = "the cell graph arrays CellGraphArcs/CellGraphShape/CellGraphLocation disagree in size";
+    direction.assign(shape.size(), 1);
+  }
+  if (shape.size() * 2 != arcs.size() || location.size() != shape.size() ||
+    direction.size() != shape.size())
+  {
+    error = "the cell graph arrays CellGraphArcs/CellGraphShape/CellGraphLocation/"
+            "CellGraphDirection disagree in size";
     return false;
   }
   for (size_t i = 0; i < shape.size(); ++i)
@@ -342,7 +353,7 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
         std::to_string(i) + "), which is not in ShapeIds";
       return false;
     }
-    out.Arcs.push_back({ arcs[2 * i], arcs[2 * i + 1], index, location[i] });
+    out.Arcs.push_back({ arcs[2 * i], arcs[2 * i + 1], index, location[i], direction[i] });
   }
   out.CellComponent = ReadInts(fd, "CellComponent");
   out.ZeroCellCandidates = ReadInts(fd, "ZeroCellCandidates");

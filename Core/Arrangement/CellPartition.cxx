@@ -764,11 +764,25 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   // Visits per point over all curves: a point visited twice is where curves meet (crossing,
   // touching, overlap end, or a curve meeting itself).
   std::vector<int>& visits = marks.Visits;
-  for (const RefinedCurve& c : refinedCurves)
+  for (size_t ci = 0; ci < refinedCurves.size(); ++ci)
   {
-    for (int p : c.Points)
+    const std::vector<int>& pts = refinedCurves[ci].Points;
+    const int n = static_cast<int>(pts.size());
+    for (int p : pts)
     {
       ++visits[p];
+    }
+    // A curve that turns back on itself (the tip of a spike, the end of a keyhole bridge, a
+    // zero-area A -> B -> A) leaves its tip along the sub-edge it came by: the tip is a meeting
+    // point too, so the way out and the way back are separate patches on one place, whose
+    // label changes cancel.
+    const bool cyclic = curves[ci].Closed;
+    for (int i = cyclic ? 0 : 1; i < (cyclic ? n : n - 1) && n >= (cyclic ? 2 : 3); ++i)
+    {
+      if (pts[(i + n - 1) % n] == pts[(i + 1) % n])
+      {
+        ++visits[pts[i]];
+      }
     }
   }
   std::vector<char>& isEnd = marks.IsEnd;

@@ -269,7 +269,9 @@ public:
     const size_t guardLimit = 4 * this->Arr.Points.size() + 64;
     for (size_t guard = 0; a != b; ++guard)
     {
-      if (guard > guardLimit)
+      // Every step of every insertion counts against one budget: detours around rounded
+      // crossings call this recursively, and must end.
+      if (guard > guardLimit || ++this->Steps > this->StepBudget)
       {
         return this->Fail("constraint insertion does not converge");
       }
@@ -326,16 +328,44 @@ public:
       }
       if (blocking)
       {
-        // Rounded crossings made two pieces cross after all: split both at a new point.
+        // Rounded crossings made two pieces cross after all. Such a crossing lies within
+        // rounding of a point already there (an end of the other piece, usually a rounded
+        // crossing itself): the piece goes through that point. Otherwise both pieces go
+        // through a new point at the crossing; its rounded coordinates may put it beside the
+        // other piece rather than on it, so it is inserted like any point and the other piece
+        // is bent through it.
+        const int x = blocking->X, y = blocking->Y;
+        const Vec2 at = pa + blocking->S * (pb - pa);
+        const int near = Length(this->P(x) - at) <= Length(this->P(y) - at) ? x : y;
+        if (near != a && Length(this->P(near) - at) <= SnapDistance)
+        {
+          if (!this->InsertConstraint(a, near, pi))
+          {
+            return false;
+          }
+          a = near;
+          continue;
+        }
         const int np = static_cast<int>(this->Arr.Points.size());
         this->Arr.Points.push_back({ pa + blocking->S * (pb - pa), -1, -1 });
         this->Arr.Alias.push_back(np);
-        this->IsInserted.push_back(1);
-        if (!this->SplitEdge(blocking->X, blocking->Y, np) || !this->InsertConstraint(a, np, pi))
+        this->IsInserted.push_back(0);
+        if (!this->InsertPoint(np))
         {
           return false;
         }
-        a = np;
+        this->IsInserted[np] = 1;
+        const int q = this->Arr.Alias[np];
+        if (q != x && q != y && this->Constrained.count(Undirected(x, y)) > 0 &&
+          !this->RerouteConstraint(x, y, q))
+        {
+          return false;
+        }
+        if (q != a && !this->InsertConstraint(a, q, pi))
+        {
+          return false;
+        }
+        a = q;
         continue;
       }
       if (!this->CavityInsert(a, b, crossings))
@@ -345,6 +375,39 @@ public:
       this->Constrained.insert(Undirected(a, b));
       this->Paths[pi].push_back(b);
       return true;
+    }
+    return true;
+  }
+
+  /// Replaces constrained edge (x, y) by constrained pieces x -> q -> y, in the triangulation
+  /// and in every path that runs along it (either way).
+  bool RerouteConstraint(int x, int y, int q)
+  {
+    this->Constrained.erase(Undirected(x, y));
+    const int tmp = static_cast<int>(this->Paths.size());
+    this->Paths.push_back({ x });
+    if (!this->InsertConstraint(x, q, tmp) || !this->InsertConstraint(q, y, tmp))
+    {
+      return false;
+    }
+    const std::vector<int> chain = std::move(this->Paths[tmp]);
+    this->Paths.pop_back();
+    for (std::vector<int>& path : this->Paths)
+    {
+      for (size_t i = 0; i + 1 < path.size(); ++i)
+      {
+        const bool along = path[i] == x && path[i + 1] == y;
+        if (along || (path[i] == y && path[i + 1] == x))
+        {
+          std::vector<int> inner(chain.begin() + 1, chain.end() - 1);
+          if (!along)
+          {
+            std::reverse(inner.begin(), inner.end());
+          }
+          path.insert(path.begin() + i + 1, inner.begin(), inner.end());
+          i += inner.size();
+        }
+      }
     }
     return true;
   }
@@ -458,6 +521,12 @@ public:
   std::unordered_set<EdgeKey> Constrained;
   std::vector<std::vector<int>> Paths;
   std::vector<char> IsInserted;
+  /// Distance (unit-triangle coordinates) within which a rounded crossing is taken to be an
+  /// existing point: far above the rounding of crossings (~1e-16), far below any feature
+  /// the curves can resolve.
+  static constexpr double SnapDistance = 1e-12;
+  size_t Steps = 0;
+  size_t StepBudget = 0;
 };
 
 // Fast path: chords only. Each chord splits the one convex polygon that holds both of its
@@ -526,6 +595,7 @@ bool RefineTriangle(LocalArrangement& arr)
     arr.Alias[i] = i;
   }
   LocalTriangulation tri(arr);
+  tri.StepBudget = 64 * static_cast<size_t>(n) * static_cast<size_t>(n) + 1024;
   tri.Tris.reserve(4 * n);
   tri.Alive.reserve(4 * n);
   tri.IsInserted.assign(n, 0);

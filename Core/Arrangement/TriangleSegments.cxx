@@ -98,6 +98,12 @@ bool NormalizePoint(const TriangleMesh& mesh, CanonicalPoint& p, std::string& wh
         why = "non-finite edge parameter";
         return false;
       }
+      // Edge points live on the grid of multiples of 2^-53, where both T and 1 - T are exact:
+      // then two distinct points of an edge keep distinct coordinates in the frames of both of
+      // its triangles, whichever way each runs along the edge. Parameters closer than that
+      // (one point traced twice with different rounding, a vertex on another curve's segment)
+      // become one point: the curves touch there, which the arrangement handles exactly.
+      p.T = std::nearbyint(p.T * 0x1p53) * 0x1p-53;
       if (p.T <= 0.0 || p.T >= 1.0)
       {
         const int v = mesh.GetEdgeVertices(p.Id)[p.T <= 0.0 ? 0 : 1];

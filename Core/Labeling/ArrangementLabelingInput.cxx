@@ -29,19 +29,21 @@ int ShapeIndexOf(const std::vector<int>& shapeIds, int shapeId)
 }
 
 //------------------------------------------------------------------------------
-std::vector<int> PatchLocations(const std::vector<ArrangementPatch>& patches)
+std::vector<PatchPlace> PatchPlaces(const std::vector<ArrangementPatch>& patches)
 {
   // Overlapping patches have the same point sequence, maybe reversed: the key is the ordered
-  // end points and the points next to them.
+  // end points and the points next to them. A patch runs along its place's orientation when
+  // its first point is the key's first (for closed patches, when it leaves towards the lower
+  // neighbour).
   std::map<std::tuple<int, int, int, int>, int> ids;
-  std::vector<int> location(patches.size(), -1);
+  std::vector<PatchPlace> places(patches.size());
   for (size_t p = 0; p < patches.size(); ++p)
   {
     const std::vector<int>& pts = patches[p].Points;
     if (pts.size() < 2)
     {
       // Degenerate patch: a place of its own.
-      location[p] =
+      places[p].Location =
         ids
           .emplace(std::make_tuple(-1 - static_cast<int>(p), 0, 0, 0), static_cast<int>(ids.size()))
           .first->second;
@@ -50,13 +52,16 @@ std::vector<int> PatchLocations(const std::vector<ArrangementPatch>& patches)
     const int a = pts.front(), b = pts.back();
     const int c = pts[1], d = pts[pts.size() - 2];
     auto key = std::make_tuple(std::min(a, b), std::max(a, b), a <= b ? c : d, a <= b ? d : c);
+    bool forward = a <= b;
     if (a == b) // a closed patch: its two directions give (c, d) and (d, c)
     {
       key = std::make_tuple(a, b, std::min(c, d), std::max(c, d));
+      forward = c <= d;
     }
-    location[p] = ids.emplace(key, static_cast<int>(ids.size())).first->second;
+    places[p].Location = ids.emplace(key, static_cast<int>(ids.size())).first->second;
+    places[p].Direction = forward ? 1 : -1;
   }
-  return location;
+  return places;
 }
 
 //------------------------------------------------------------------------------
@@ -130,14 +135,13 @@ LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
   in.ShapeIds = DistinctShapeIds(curves);
   in.NumberOfCells = arr.NumberOfCells;
   in.NumberOfShapes = static_cast<int>(in.ShapeIds.size());
-  const std::vector<int> location = PatchLocations(arr.Patches);
+  const std::vector<PatchPlace> places = PatchPlaces(arr.Patches);
   in.Arcs.reserve(arr.CellGraph.size());
   for (const CellGraphArc& a : arr.CellGraph)
   {
-    in.Arcs.push_back({ a.RightCell,
-      a.LeftCell,
-      ShapeIndexOf(in.ShapeIds, a.Shape),
-      a.Patch >= 0 ? location[a.Patch] : -1 });
+    const PatchPlace place = a.Patch >= 0 ? places[a.Patch] : PatchPlace{};
+    in.Arcs.push_back(
+      { a.RightCell, a.LeftCell, ShapeIndexOf(in.ShapeIds, a.Shape), place.Location, place.Direction });
   }
   in.CellComponent = CellComponents(topology, arr);
   in.ZeroCells = ZeroCellCandidates(mesh, topology, arr);

@@ -21,9 +21,18 @@ std::vector<int> DistinctShapeIds(const std::vector<TracedCurve>& curves);
 /// Index of `shapeId` in the sorted `shapeIds`, or -1.
 int ShapeIndexOf(const std::vector<int>& shapeIds, int shapeId);
 
-/// Per patch, a place id: patches on the same refined sub-edges (overlapping curves, maybe
-/// reversed) share it and are crossed together.
-std::vector<int> PatchLocations(const std::vector<ArrangementPatch>& patches);
+/// Where a patch runs: patches on the same refined sub-edges (overlapping curves, maybe
+/// reversed, or a curve retracing itself) share a Location and are crossed together.
+struct PatchPlace
+{
+  int Location = -1;
+  /// +1 when the patch runs along the place's own orientation, -1 against it: the sign of its
+  /// label change when both sides are one cell (a retraced piece: +1 - 1 = 0).
+  int Direction = 1;
+};
+
+/// The place of every patch.
+std::vector<PatchPlace> PatchPlaces(const std::vector<ArrangementPatch>& patches);
 
 /// Surface component of each cell (that of its lowest triangle).
 std::vector<int> CellComponents(const MeshTopology& topology, const Arrangement& arrangement);

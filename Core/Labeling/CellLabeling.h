@@ -27,6 +27,10 @@ struct CellArc
   /// Arcs between the same two cells with the same Location are one crossing (overlapping
   /// curves). Distinct places must have distinct values (e.g. a patch or refined edge id).
   long long Location = 0;
+  /// +1 or -1: the arc's direction relative to its place's orientation. It decides the sign
+  /// only when RightCell == LeftCell, where the cells cannot: a curve retracing itself (a
+  /// spike, a keyhole bridge) crosses one place twice in opposite directions, which cancels.
+  int Direction = 1;
 };
 
 struct LabelingInput
