@@ -98,12 +98,6 @@ bool NormalizePoint(const TriangleMesh& mesh, CanonicalPoint& p, std::string& wh
         why = "non-finite edge parameter";
         return false;
       }
-      // Edge points live on the grid of multiples of 2^-53, where both T and 1 - T are exact:
-      // then two distinct points of an edge keep distinct coordinates in the frames of both of
-      // its triangles, whichever way each runs along the edge. Parameters closer than that
-      // (one point traced twice with different rounding, a vertex on another curve's segment)
-      // become one point: the curves touch there, which the arrangement handles exactly.
-      p.T = std::nearbyint(p.T * 0x1p53) * 0x1p-53;
       if (p.T <= 0.0 || p.T >= 1.0)
       {
         const int v = mesh.GetEdgeVertices(p.Id)[p.T <= 0.0 ? 0 : 1];
@@ -362,10 +356,12 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
     TriangleSegment Segment;
   };
   std::vector<Pending> pending;
-  std::vector<CanonicalPoint> points;
   // Per curve: segment order as (along edge?, index into pending or EdgeSegments).
   std::vector<std::vector<SegmentLocation>> order(curves.size());
 
+  // 1. Every point in canonical form; the points on edges collected.
+  std::vector<std::vector<CanonicalPoint>> normalized(curves.size());
+  std::vector<EdgePoint> raw;
   for (size_t ci = 0; ci < curves.size(); ++ci)
   {
     const TracedCurve& curve = curves[ci];
@@ -381,6 +377,7 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
       error = PointName(curve, curveIndex, 0) + ": a curve needs at least two points";
       return false;
     }
+    std::vector<CanonicalPoint>& points = normalized[ci];
     points = curve.Points;
     for (int i = 0; i < n; ++i)
     {
@@ -392,9 +389,47 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
       }
       if (points[i].Location == PointLocation::Edge)
       {
-        map.EdgePoints.push_back({ points[i].Id, points[i].T });
+        raw.push_back({ points[i].Id, points[i].T });
       }
     }
+  }
+
+  // 2. Points of one edge closer than EdgePointMergeDistance (in edge parameter) are one point:
+  // the same crossing traced twice with different rounding (two curves sharing a leg, a curve
+  // and its reverse), or a curve point on another curve. Kept apart, they would be distinct
+  // points a few ulps apart, which the triangles on both sides of the edge cannot tell apart
+  // in their own coordinates. Decided once per edge, so both triangles agree.
+  const auto byEdgeAndT = [](const EdgePoint& x, const EdgePoint& y)
+  { return x.Edge != y.Edge ? x.Edge < y.Edge : x.T < y.T; };
+  std::sort(raw.begin(), raw.end(), byEdgeAndT);
+  std::vector<double> representative(raw.size());
+  for (size_t i = 0; i < raw.size(); ++i)
+  {
+    const bool joins = i > 0 && raw[i].Edge == raw[i - 1].Edge &&
+      raw[i].T - raw[i - 1].T <= EdgePointMergeDistance;
+    representative[i] = joins ? representative[i - 1] : raw[i].T;
+  }
+  for (size_t ci = 0; ci < curves.size(); ++ci)
+  {
+    for (CanonicalPoint& p : normalized[ci])
+    {
+      if (p.Location == PointLocation::Edge)
+      {
+        const EdgePoint key{ p.Id, p.T };
+        const size_t i = std::lower_bound(raw.begin(), raw.end(), key, byEdgeAndT) - raw.begin();
+        p.T = representative[i];
+        map.EdgePoints.push_back({ p.Id, p.T });
+      }
+    }
+  }
+
+  // 3. Segments, by triangle or along an edge.
+  for (size_t ci = 0; ci < curves.size(); ++ci)
+  {
+    const TracedCurve& curve = curves[ci];
+    const int curveIndex = static_cast<int>(ci);
+    const std::vector<CanonicalPoint>& points = normalized[ci];
+    const int n = static_cast<int>(points.size());
     const int segments = curve.Closed ? n : n - 1;
     for (int i = 0; i < segments; ++i)
     {

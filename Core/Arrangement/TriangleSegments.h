@@ -88,6 +88,11 @@ struct TriangleSegmentMap
     std::vector<int>& out) const;
 };
 
+/// Curve points on one mesh edge whose parameters differ by at most this much are taken to be
+/// one point (2^-40 of the edge's length: far above the rounding of traced crossings, far
+/// below anything a drawing can resolve).
+constexpr double EdgePointMergeDistance = 0x1p-40;
+
 /// Coordinates in the unit triangle of the point at canonical parameter T on local edge k of
 /// a triangle whose edge runs along (forward) or against the canonical direction. The result
 /// lies EXACTLY on the edge's line: on the hypotenuse u + v = 1 the larger coordinate is

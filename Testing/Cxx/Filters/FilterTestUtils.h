@@ -4,6 +4,8 @@
 
 #include "Mesh/ProceduralMeshes.h"
 
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkIntArray.h>
@@ -13,6 +15,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <string>
 #include <vector>
 
 namespace testutils
@@ -81,6 +84,20 @@ inline vtkSmartPointer<vtkPolyData> ToCurves(const std::vector<ControlPolygon>& 
   pd->GetCellData()->AddArray(shape);
   pd->GetCellData()->AddArray(type);
   return pd;
+}
+
+/// Errors reported by one update of `filter` (empty when it succeeded).
+inline std::string ErrorsOf(vtkAlgorithm* filter)
+{
+  std::string errors;
+  vtkNew<vtkCallbackCommand> catcher;
+  catcher->SetClientData(&errors);
+  catcher->SetCallback([](vtkObject*, unsigned long, void* text, void* data)
+    { *static_cast<std::string*>(text) += static_cast<const char*>(data); });
+  const unsigned long tag = filter->AddObserver(vtkCommand::ErrorEvent, catcher);
+  filter->Update();
+  filter->RemoveObserver(tag);
+  return errors;
 }
 
 /// Total area of the triangles of pd.

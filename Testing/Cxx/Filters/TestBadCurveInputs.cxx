@@ -27,19 +27,7 @@ namespace
 {
 using testutils::ControlPolygon;
 
-// Errors of one update of `filter`.
-std::string ErrorsOf(vtkAlgorithm* filter)
-{
-  std::string errors;
-  vtkNew<vtkCallbackCommand> catcher;
-  catcher->SetClientData(&errors);
-  catcher->SetCallback([](vtkObject*, unsigned long, void* text, void* data)
-    { *static_cast<std::string*>(text) += static_cast<const char*>(data); });
-  const unsigned long tag = filter->AddObserver(vtkCommand::ErrorEvent, catcher);
-  filter->Update();
-  filter->RemoveObserver(tag);
-  return errors;
-}
+using testutils::ErrorsOf;
 
 struct Scene
 {

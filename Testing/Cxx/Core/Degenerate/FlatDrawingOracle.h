@@ -11,6 +11,7 @@
 #include "Mesh/ProceduralMeshes.h"
 #include "Mesh/TriangleMesh.h"
 #include "Selection/BooleanSelection.h"
+#include "Support/PlanarWinding.h"
 #include "Support/SyntheticCurves.h"
 
 #include <polyclipping/clipper.hpp>
@@ -24,13 +25,6 @@ namespace boolsurf
 {
 namespace testing
 {
-
-/// A closed polygon with integer vertices, of one shape.
-struct LatticePolygon
-{
-  int Shape = 0;
-  std::vector<std::array<long long, 2>> Points;
-};
 
 /// A flat square mesh [lo, hi]^2 (z = 0): either aligned with the integer lattice (a grid of
 /// unit cells, every vertex on a lattice point) or irregular (jittered vertices, random
@@ -64,6 +58,11 @@ inline FlatDrawingAnswer AnswerDrawing(const TriangleMesh& mesh,
   std::vector<TracedCurve> curves;
   for (size_t i = 0; i < polygons.size(); ++i)
   {
+    // A polygon whose points are all equal has no length: the filters skip it with a warning.
+    const auto& first = polygons[i].Points.front();
+    if (std::all_of(polygons[i].Points.begin(), polygons[i].Points.end(),
+          [&](const std::array<long long, 2>& p) { return p == first; }))
+      continue;
     std::vector<Vec2> pts;
     for (const auto& p : polygons[i].Points)
       pts.push_back({ static_cast<double>(p[0]), static_cast<double>(p[1]) });
@@ -121,81 +120,6 @@ double SelectedArea(const FlatDrawingAnswer& answer, Inside inside)
       labels[s] = answer.Labels.GetLabel(c, s);
     if (inside(labels))
       area += answer.CellArea[c];
-  }
-  return area;
-}
-
-/// Exact planar area of {p : inside(winding numbers of the shapes at p)}, by vertical slabs:
-/// between consecutive x coordinates of polygon vertices and crossings no side starts, ends or
-/// crosses another, so the selected length of a vertical line is linear in x and the slab's
-/// area is that length at the slab's middle times its width. Independent of the arrangement
-/// and of Clipper (which, on overlapping edges, is sometimes wrong); exact up to rounding.
-template <class Inside>
-double SweepArea(const std::vector<LatticePolygon>& polygons, int numberOfShapes, Inside inside)
-{
-  struct Side
-  {
-    double X0, Y0, X1, Y1;
-    int Shape;
-  };
-  std::vector<Side> sides;
-  std::vector<double> xs;
-  for (const auto& p : polygons)
-  {
-    const size_t n = p.Points.size();
-    for (size_t i = 0; i < n; ++i)
-    {
-      const auto &a = p.Points[i], &b = p.Points[(i + 1) % n];
-      xs.push_back(static_cast<double>(a[0]));
-      if (a[0] != b[0])
-        sides.push_back({ double(a[0]), double(a[1]), double(b[0]), double(b[1]), p.Shape });
-    }
-  }
-  for (size_t i = 0; i < sides.size(); ++i)
-  {
-    for (size_t j = i + 1; j < sides.size(); ++j)
-    {
-      const Side &s = sides[i], &r = sides[j];
-      const double dx1 = s.X1 - s.X0, dy1 = s.Y1 - s.Y0, dx2 = r.X1 - r.X0, dy2 = r.Y1 - r.Y0;
-      const double den = dx1 * dy2 - dy1 * dx2;
-      if (den == 0)
-        continue;
-      const double t = ((r.X0 - s.X0) * dy2 - (r.Y0 - s.Y0) * dx2) / den;
-      const double u = ((r.X0 - s.X0) * dy1 - (r.Y0 - s.Y0) * dx1) / den;
-      if (t > 0 && t < 1 && u > 0 && u < 1)
-        xs.push_back(s.X0 + t * dx1);
-    }
-  }
-  std::sort(xs.begin(), xs.end());
-  double area = 0;
-  std::vector<std::pair<double, const Side*>> hits;
-  std::vector<int> winding(numberOfShapes);
-  for (size_t k = 0; k + 1 < xs.size(); ++k)
-  {
-    const double x0 = xs[k], x1 = xs[k + 1];
-    if (x1 - x0 <= 0)
-      continue;
-    const double xm = 0.5 * (x0 + x1);
-    hits.clear();
-    for (const Side& s : sides)
-    {
-      if ((s.X0 < xm && xm < s.X1) || (s.X1 < xm && xm < s.X0))
-        hits.emplace_back(s.Y0 + (xm - s.X0) / (s.X1 - s.X0) * (s.Y1 - s.Y0), &s);
-    }
-    std::sort(hits.begin(), hits.end(),
-      [](const auto& a, const auto& b) { return a.first < b.first; });
-    // Going up across a side that runs left -> right enters its left side: +1.
-    std::fill(winding.begin(), winding.end(), 0);
-    double length = 0;
-    for (size_t h = 0; h < hits.size(); ++h)
-    {
-      const Side& s = *hits[h].second;
-      if (s.Shape >= 0 && s.Shape < numberOfShapes)
-        winding[s.Shape] += s.X1 > s.X0 ? 1 : -1;
-      if (h + 1 < hits.size() && inside(winding))
-        length += hits[h + 1].first - hits[h].first;
-    }
-    area += length * (x1 - x0);
   }
   return area;
 }

@@ -20,54 +20,7 @@ using namespace boolsurf::testing;
 namespace
 {
 
-using Point = std::array<long long, 2>;
-
 int ClipperComparisons = 0, ClipperDisagreements = 0;
-
-/// A random closed polygon on the lattice [0, n]^2, with the degeneracies drawn on purpose:
-/// repeated points, spikes, runs copied (maybe reversed) from polygons drawn before.
-std::vector<Point> LatticePolygonPoints(std::mt19937& rng, int n,
-  const std::vector<LatticePolygon>& before)
-{
-  std::uniform_int_distribution<int> coord(0, n), count(3, 7), pattern(0, 9);
-  std::vector<Point> pts;
-  const int k = count(rng);
-  for (int i = 0; i < k; ++i)
-  {
-    const Point p{ coord(rng), coord(rng) };
-    pts.push_back(p);
-    switch (pattern(rng))
-    {
-      case 0: // repeated point
-        pts.push_back(p);
-        break;
-      case 1: // spike out and back
-      {
-        const Point q{ coord(rng), coord(rng) };
-        pts.push_back(q);
-        pts.push_back(p);
-        break;
-      }
-      case 2: // a run of an earlier polygon, forwards or backwards (shared / overlapping edges)
-        if (!before.empty())
-        {
-          const auto& other = before[rng() % before.size()].Points;
-          const size_t start = rng() % other.size(), len = 2 + rng() % 2;
-          const bool reverse = rng() % 2;
-          for (size_t j = 0; j < len; ++j)
-          {
-            const size_t idx = reverse ? (start + other.size() * 4 - j) % other.size()
-                                       : (start + j) % other.size();
-            pts.push_back(other[idx]);
-          }
-        }
-        break;
-      default:
-        break;
-    }
-  }
-  return pts;
-}
 
 std::string Describe(const std::vector<LatticePolygon>& drawing)
 {
@@ -248,10 +201,7 @@ void RunLatticeCases(int cases, int lattice, std::uint32_t seed)
   int failures = 0;
   for (int k = 0; k < cases && failures < 5; ++k)
   {
-    std::vector<LatticePolygon> drawing;
-    const int polygons = 2 + static_cast<int>(rng() % 2);
-    for (int p = 0; p < polygons; ++p)
-      drawing.push_back({ p % 2, LatticePolygonPoints(rng, lattice, drawing) });
+    const std::vector<LatticePolygon> drawing = RandomLatticeDrawing(rng, lattice);
     const int cells = lattice + 2 + static_cast<int>(rng() % 5);
     const std::uint32_t meshSeed = rng();
     const TriangleMesh irregular = FlatMeshFor(-1, lattice + 1, cells, false, meshSeed);
