@@ -1,6 +1,7 @@
 #include "Geodesic/CurveTracer.h"
 
 #include <algorithm>
+#include <tuple>
 
 namespace boolsurf
 {
@@ -127,7 +128,7 @@ TraceStatus CurveTracer::TraceGeodesicPolygon(const std::vector<CanonicalPoint>&
   for (int i = 0; i < segments; ++i)
   {
     const int j = (i + 1) % n;
-    const TraceStatus status = this->Solver.Compute(points[i], points[j], this->Path);
+    const TraceStatus status = this->ComputeLeg(points[i], points[j], this->Path);
     if (!status)
     {
       out.Clear();
@@ -143,6 +144,22 @@ TraceStatus CurveTracer::TraceGeodesicPolygon(const std::vector<CanonicalPoint>&
     out.DropRepeatedClosingPoint();
   }
   return TraceStatus::Success();
+}
+
+//------------------------------------------------------------------------------
+TraceStatus CurveTracer::ComputeLeg(const CanonicalPoint& a,
+  const CanonicalPoint& b,
+  GeodesicPath& path)
+{
+  const auto key = [](const CanonicalPoint& p)
+  { return std::make_tuple(static_cast<int>(p.Location), p.Id, p.T, p.U, p.V); };
+  if (!(key(b) < key(a)))
+  {
+    return this->Solver.Compute(a, b, path);
+  }
+  const TraceStatus status = this->Solver.Compute(b, a, path);
+  std::reverse(path.Points.begin(), path.Points.end());
+  return status;
 }
 
 //------------------------------------------------------------------------------
@@ -181,8 +198,8 @@ TraceStatus CurveTracer::TraceBezierSpline(const std::vector<CanonicalPoint>& po
       GeodesicPath legs[3];
       for (int leg = 0; leg < 3 && status; ++leg)
       {
-        status = this->Solver.Compute(
-          this->Refined[3 * k + leg], this->Refined[3 * k + leg + 1], legs[leg]);
+        status =
+          this->ComputeLeg(this->Refined[3 * k + leg], this->Refined[3 * k + leg + 1], legs[leg]);
         legLength[leg] = legs[leg].Length;
       }
       if (!status)

@@ -79,6 +79,11 @@ public:
   GeodesicPathSolver& GetPathSolver() { return this->Solver; }
 
 private:
+  /// The geodesic between a and b, computed from whichever of the two comes first in a fixed
+  /// order of surface points and reversed if needed: a leg traced both ways (two polygons
+  /// sharing an edge, a spike, a curve and its reverse) is the same polyline bit for bit, so
+  /// the arrangement sees the curves overlap exactly rather than run side by side.
+  TraceStatus ComputeLeg(const CanonicalPoint& a, const CanonicalPoint& b, GeodesicPath& path);
   /// Appends a traced path, mapping arc length onto parameters [t0, t1] of `segment`.
   void AppendPath(const GeodesicPath& path,
     int segment,
