@@ -405,8 +405,8 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
   std::vector<double> representative(raw.size());
   for (size_t i = 0; i < raw.size(); ++i)
   {
-    const bool joins = i > 0 && raw[i].Edge == raw[i - 1].Edge &&
-      raw[i].T - raw[i - 1].T <= EdgePointMergeDistance;
+    const bool joins =
+      i > 0 && raw[i].Edge == raw[i - 1].Edge && raw[i].T - raw[i - 1].T <= EdgePointMergeDistance;
     representative[i] = joins ? representative[i - 1] : raw[i].T;
   }
   for (size_t ci = 0; ci < curves.size(); ++ci)

@@ -140,8 +140,11 @@ LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
   for (const CellGraphArc& a : arr.CellGraph)
   {
     const PatchPlace place = a.Patch >= 0 ? places[a.Patch] : PatchPlace{};
-    in.Arcs.push_back(
-      { a.RightCell, a.LeftCell, ShapeIndexOf(in.ShapeIds, a.Shape), place.Location, place.Direction });
+    in.Arcs.push_back({ a.RightCell,
+      a.LeftCell,
+      ShapeIndexOf(in.ShapeIds, a.Shape),
+      place.Location,
+      place.Direction });
   }
   in.CellComponent = CellComponents(topology, arr);
   in.ZeroCells = ZeroCellCandidates(mesh, topology, arr);

@@ -79,8 +79,8 @@ double SweepArea(const std::vector<LatticePolygon>& polygons, int numberOfShapes
       if ((s.X0 < xm && xm < s.X1) || (s.X1 < xm && xm < s.X0))
         hits.emplace_back(s.Y0 + (xm - s.X0) / (s.X1 - s.X0) * (s.Y1 - s.Y0), &s);
     }
-    std::sort(hits.begin(), hits.end(),
-      [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::sort(
+      hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     // Going up across a side that runs left -> right enters its left side: +1.
     std::fill(winding.begin(), winding.end(), 0);
     double length = 0;
@@ -99,7 +99,8 @@ double SweepArea(const std::vector<LatticePolygon>& polygons, int numberOfShapes
 
 /// A random closed polygon on the lattice [0, n]^2, with the degeneracies drawn on purpose:
 /// repeated points, spikes, runs copied (maybe reversed) from polygons drawn before.
-inline std::vector<std::array<long long, 2>> LatticePolygonPoints(std::mt19937& rng, int n,
+inline std::vector<std::array<long long, 2>> LatticePolygonPoints(std::mt19937& rng,
+  int n,
   const std::vector<LatticePolygon>& before)
 {
   std::uniform_int_distribution<int> coord(0, n), count(3, 7), pattern(0, 9);
@@ -129,8 +130,8 @@ inline std::vector<std::array<long long, 2>> LatticePolygonPoints(std::mt19937& 
           const bool reverse = rng() % 2;
           for (size_t j = 0; j < len; ++j)
           {
-            const size_t idx = reverse ? (start + other.size() * 4 - j) % other.size()
-                                       : (start + j) % other.size();
+            const size_t idx =
+              reverse ? (start + other.size() * 4 - j) % other.size() : (start + j) % other.size();
             pts.push_back(other[idx]);
           }
         }

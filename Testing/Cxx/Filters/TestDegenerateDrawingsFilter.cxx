@@ -112,7 +112,11 @@ std::string Describe(const std::vector<LatticePolygon>& drawing)
 }
 
 /// Area of the one-step result, or -1 (with the error as a test failure) when refused.
-double BooleanArea(vtkPolyData* mesh, vtkPolyData* curves, int op, int rule, const char* expr,
+double BooleanArea(vtkPolyData* mesh,
+  vtkPolyData* curves,
+  int op,
+  int rule,
+  const char* expr,
   const std::string& what)
 {
   vtkNew<vtkBoolSurf> f;
@@ -159,9 +163,18 @@ void ExpectAnswered(const Points& polygon, double expected, double lo, double hi
 
 TEST(DegenerateDrawingsFilter, VertexOnItsOwnSegmentSelfCrossing)
 {
-  ExpectAnswered({ { 390, 200 }, { 10, 510 }, { 360, 460 }, { 780, 490 }, { 20, 90 }, { 360, 400 },
-                   { 720, 320 }, { 500, 470 } },
-    95942.65, 0, 800, 10);
+  ExpectAnswered({ { 390, 200 },
+                   { 10, 510 },
+                   { 360, 460 },
+                   { 780, 490 },
+                   { 20, 90 },
+                   { 360, 400 },
+                   { 720, 320 },
+                   { 500, 470 } },
+    95942.65,
+    0,
+    800,
+    10);
 }
 
 TEST(DegenerateDrawingsFilter, VertexOnItsOwnEdge)
@@ -171,9 +184,21 @@ TEST(DegenerateDrawingsFilter, VertexOnItsOwnEdge)
 
 TEST(DegenerateDrawingsFilter, Keyhole)
 {
-  ExpectAnswered({ { 0, 0 }, { 20, 0 }, { 20, 20 }, { 0, 20 }, { 0, 10 }, { 5, 10 }, { 5, 15 },
-                   { 15, 15 }, { 15, 5 }, { 5, 5 }, { 5, 10 }, { 0, 10 } },
-    300, -2, 22);
+  ExpectAnswered({ { 0, 0 },
+                   { 20, 0 },
+                   { 20, 20 },
+                   { 0, 20 },
+                   { 0, 10 },
+                   { 5, 10 },
+                   { 5, 15 },
+                   { 15, 15 },
+                   { 15, 5 },
+                   { 5, 5 },
+                   { 5, 10 },
+                   { 0, 10 } },
+    300,
+    -2,
+    22);
 }
 
 TEST(DegenerateDrawingsFilter, SpikeOutAndBack)
@@ -185,8 +210,7 @@ TEST(DegenerateDrawingsFilter, SquaresOverlappingAlongPartOfAnEdgeUnion)
 {
   // Two 10 x 10 squares, the second shifted by (10, 5): their vertical edges overlap along
   // half their length. Union 200, intersection 0.
-  const std::vector<LatticePolygon> drawing{
-    { 0, { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 } } },
+  const std::vector<LatticePolygon> drawing{ { 0, { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 } } },
     { 1, { { 10, 5 }, { 20, 5 }, { 20, 15 }, { 10, 15 } } } };
   vtkSmartPointer<vtkPolyData> curves = CurvesOf(drawing);
   for (int m = 0; m <= 10; ++m)
@@ -230,7 +254,8 @@ TEST(DegenerateDrawingsFilter, RandomLatticeDrawingsMatchExactAreas)
               return w != 0;
           }
         };
-        const double swept = SweepArea(drawing, 2,
+        const double swept = SweepArea(drawing,
+          2,
           [&](const std::vector<int>& w)
           {
             const bool a = in(w[0]), b = in(w[1]);
@@ -239,8 +264,7 @@ TEST(DegenerateDrawingsFilter, RandomLatticeDrawingsMatchExactAreas)
         for (vtkPolyData* mesh : { delaunay.GetPointer(), aligned.GetPointer() })
         {
           const std::string what = std::string(mesh == aligned ? "aligned grid" : "Delaunay") +
-            " op " + std::to_string(op) + " rule " + std::to_string(rule) + " " +
-            Describe(drawing);
+            " op " + std::to_string(op) + " rule " + std::to_string(rule) + " " + Describe(drawing);
           const double area = BooleanArea(mesh, curves, op, rule, nullptr, what);
           ASSERT_NEAR(area, swept, 1e-9 * (lattice + 2) * (lattice + 2)) << what;
           ++compared;

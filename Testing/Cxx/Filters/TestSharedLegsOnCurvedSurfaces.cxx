@@ -77,9 +77,11 @@ Window MakeWindow(vtkPolyData* mesh, const Point3& center, double size)
 {
   double bounds[6];
   mesh->GetBounds(bounds);
-  const Point3 mid{ (bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
-    (bounds[4] + bounds[5]) / 2 };
-  const double reach = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  const Point3 mid{
+    (bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2
+  };
+  const double reach =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
   // Two tangent directions.
   Point3 t1{ -center[1], center[0], 0 };
   if (std::abs(center[2]) > 0.9)
@@ -140,8 +142,9 @@ void RunWindowCases(vtkPolyData* mesh, const Point3& center, double size)
   }
   {
     SCOPED_TRACE("shape 1 holds a curve and its exact reverse next to B");
-    vtkSmartPointer<vtkPolyData> curves = testutils::ToCurves(
-      { poly({ w.A[0], w.A[1], w.A[2], w.A[3] }, 0), poly({ w.B[0], w.B[1], w.B[2], w.B[3] }, 1),
+    vtkSmartPointer<vtkPolyData> curves =
+      testutils::ToCurves({ poly({ w.A[0], w.A[1], w.A[2], w.A[3] }, 0),
+        poly({ w.B[0], w.B[1], w.B[2], w.B[3] }, 1),
         poly({ w.B[3], w.B[2], w.B[1], w.B[0] }, 1) });
     EXPECT_NEAR(AreaOf(mesh, curves, "S1"), 0.0, 1e-12);
     const double a = AreaOf(mesh, curves, "S0");

@@ -60,7 +60,8 @@ inline FlatDrawingAnswer AnswerDrawing(const TriangleMesh& mesh,
   {
     // A polygon whose points are all equal has no length: the filters skip it with a warning.
     const auto& first = polygons[i].Points.front();
-    if (std::all_of(polygons[i].Points.begin(), polygons[i].Points.end(),
+    if (std::all_of(polygons[i].Points.begin(),
+          polygons[i].Points.end(),
           [&](const std::array<long long, 2>& p) { return p == first; }))
       continue;
     std::vector<Vec2> pts;

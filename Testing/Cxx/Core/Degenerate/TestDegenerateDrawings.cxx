@@ -10,8 +10,11 @@ using namespace boolsurf::testing;
 namespace
 {
 
-void ExpectNonZeroArea(const std::vector<std::array<long long, 2>>& pts, double expected, double lo,
-  double hi, double step = 1)
+void ExpectNonZeroArea(const std::vector<std::array<long long, 2>>& pts,
+  double expected,
+  double lo,
+  double hi,
+  double step = 1)
 {
   const std::vector<LatticePolygon> drawing{ { 0, pts } };
   for (int m = 0; m < 11; ++m)
@@ -33,9 +36,18 @@ void ExpectNonZeroArea(const std::vector<std::array<long long, 2>>& pts, double 
 
 TEST(DegenerateDrawings, VertexOnItsOwnSegmentSelfCrossing)
 {
-  ExpectNonZeroArea({ { 390, 200 }, { 10, 510 }, { 360, 460 }, { 780, 490 }, { 20, 90 },
-                      { 360, 400 }, { 720, 320 }, { 500, 470 } },
-    95942.65, 0, 800, 10);
+  ExpectNonZeroArea({ { 390, 200 },
+                      { 10, 510 },
+                      { 360, 460 },
+                      { 780, 490 },
+                      { 20, 90 },
+                      { 360, 400 },
+                      { 720, 320 },
+                      { 500, 470 } },
+    95942.65,
+    0,
+    800,
+    10);
 }
 
 TEST(DegenerateDrawings, VertexOnItsOwnEdge)
@@ -45,9 +57,21 @@ TEST(DegenerateDrawings, VertexOnItsOwnEdge)
 
 TEST(DegenerateDrawings, Keyhole)
 {
-  ExpectNonZeroArea({ { 0, 0 }, { 20, 0 }, { 20, 20 }, { 0, 20 }, { 0, 10 }, { 5, 10 }, { 5, 15 },
-                      { 15, 15 }, { 15, 5 }, { 5, 5 }, { 5, 10 }, { 0, 10 } },
-    300, -2, 22);
+  ExpectNonZeroArea({ { 0, 0 },
+                      { 20, 0 },
+                      { 20, 20 },
+                      { 0, 20 },
+                      { 0, 10 },
+                      { 5, 10 },
+                      { 5, 15 },
+                      { 15, 15 },
+                      { 15, 5 },
+                      { 5, 5 },
+                      { 5, 10 },
+                      { 0, 10 } },
+    300,
+    -2,
+    22);
 }
 
 TEST(DegenerateDrawings, SpikeOutAndBack)

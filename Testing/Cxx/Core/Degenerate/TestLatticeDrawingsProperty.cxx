@@ -84,7 +84,9 @@ int WindingNumber(const std::vector<LatticePolygon>& drawing, int shape, Vec2 q)
 /// Independent of Clipper: every cell's labels are the winding numbers of the input polygons
 /// at the centroid of the cell's largest refined triangle.
 void ExpectLabelsAreWindingNumbers(const FlatDrawingAnswer& a,
-  const std::vector<LatticePolygon>& drawing, const std::string& meshName, int& failures)
+  const std::vector<LatticePolygon>& drawing,
+  const std::string& meshName,
+  int& failures)
 {
   std::vector<int> best(a.Arr.NumberOfCells, -1);
   std::vector<double> bestArea(a.Arr.NumberOfCells, 0.0);
@@ -105,7 +107,8 @@ void ExpectLabelsAreWindingNumbers(const FlatDrawingAnswer& a,
     if (best[c] < 0 || bestArea[c] < 1e-6)
       continue; // a sliver: its centroid is too close to the curves to decide
     const auto& t = a.Arr.Triangles[best[c]];
-    const Vec3 &p0 = a.Arr.Positions[t[0]], &p1 = a.Arr.Positions[t[1]], &p2 = a.Arr.Positions[t[2]];
+    const Vec3 &p0 = a.Arr.Positions[t[0]], &p1 = a.Arr.Positions[t[1]],
+               &p2 = a.Arr.Positions[t[2]];
     const Vec2 g{ (p0.x + p1.x + p2.x) / 3.0, (p0.y + p1.y + p2.y) / 3.0 };
     for (int s = 0; s < a.Labels.NumberOfShapes; ++s)
     {
@@ -113,8 +116,8 @@ void ExpectLabelsAreWindingNumbers(const FlatDrawingAnswer& a,
       if (a.Labels.GetLabel(c, s) != expected)
       {
         ADD_FAILURE() << meshName << ": cell " << c << " has label " << a.Labels.GetLabel(c, s)
-                      << " for shape " << a.Labels.ShapeIdOf(s) << ", winding number "
-                      << expected << ", in " << Describe(drawing);
+                      << " for shape " << a.Labels.ShapeIdOf(s) << ", winding number " << expected
+                      << ", in " << Describe(drawing);
         ++failures;
         return;
       }
@@ -122,8 +125,10 @@ void ExpectLabelsAreWindingNumbers(const FlatDrawingAnswer& a,
   }
 }
 
-void CheckDrawing(const TriangleMesh& mesh, const std::vector<LatticePolygon>& drawing,
-  const std::string& meshName, int& failures)
+void CheckDrawing(const TriangleMesh& mesh,
+  const std::vector<LatticePolygon>& drawing,
+  const std::string& meshName,
+  int& failures)
 {
   const FlatDrawingAnswer a = AnswerDrawing(mesh, drawing);
   if (!a.Ok)
@@ -137,10 +142,12 @@ void CheckDrawing(const TriangleMesh& mesh, const std::vector<LatticePolygon>& d
   auto indexOf = [&](int shape) { return ShapeIndexOf(a.Labels.ShapeIds, shape); };
   const int i0 = indexOf(0), i1 = indexOf(1);
   const ClipperLib::Paths pa = ClipperPathsOf(drawing, 0), pb = ClipperPathsOf(drawing, 1);
-  const ClipperLib::ClipType ops[] = { ClipperLib::ctUnion, ClipperLib::ctIntersection,
-    ClipperLib::ctDifference, ClipperLib::ctXor };
-  const ClipperLib::PolyFillType rules[] = { ClipperLib::pftNonZero, ClipperLib::pftEvenOdd,
-    ClipperLib::pftPositive, ClipperLib::pftNegative };
+  const ClipperLib::ClipType ops[] = {
+    ClipperLib::ctUnion, ClipperLib::ctIntersection, ClipperLib::ctDifference, ClipperLib::ctXor
+  };
+  const ClipperLib::PolyFillType rules[] = {
+    ClipperLib::pftNonZero, ClipperLib::pftEvenOdd, ClipperLib::pftPositive, ClipperLib::pftNegative
+  };
   double total = 0;
   for (double c : a.CellArea)
     total += c;
@@ -167,7 +174,8 @@ void CheckDrawing(const TriangleMesh& mesh, const std::vector<LatticePolygon>& d
       areas[op] = SelectedArea(
         a, [&](const std::vector<int>& l) { return Evaluate(op, in(l, i0), in(l, i1)); });
       // Winding numbers of user shapes 0 and 1 (the sweep names shapes by user id).
-      const double swept = SweepArea(drawing, 2,
+      const double swept = SweepArea(drawing,
+        2,
         [&](const std::vector<int>& w)
         { return Evaluate(op, IsInside(w[0], fill), IsInside(w[1], fill)); });
       if (std::abs(areas[op] - swept) > 1e-9 * total)
@@ -206,7 +214,8 @@ void RunLatticeCases(int cases, int lattice, std::uint32_t seed)
     const std::uint32_t meshSeed = rng();
     const TriangleMesh irregular = FlatMeshFor(-1, lattice + 1, cells, false, meshSeed);
     const TriangleMesh aligned = FlatMeshFor(-1, lattice + 1, lattice + 2, true, 0);
-    CheckDrawing(irregular, drawing,
+    CheckDrawing(irregular,
+      drawing,
       "irregular mesh (" + std::to_string(cells) + " cells, seed " + std::to_string(meshSeed) + ")",
       failures);
     CheckDrawing(aligned, drawing, "aligned mesh", failures);
