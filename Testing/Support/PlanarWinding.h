@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -151,6 +152,82 @@ inline std::vector<LatticePolygon> RandomLatticeDrawing(std::mt19937& rng, int n
   for (int p = 0; p < polygons; ++p)
     drawing.push_back({ p % 2, LatticePolygonPoints(rng, n, drawing) });
   return drawing;
+}
+
+/// One drawing of the degenerate-curves issue: a single polygon of shape 0, its non-zero
+/// area as the issue quotes it (two decimals), and the square [Lo, Hi]^2 to draw it on, with
+/// the lattice step of a mesh aligned with it.
+struct DegenerateCase
+{
+  const char* Name;
+  std::vector<std::array<long long, 2>> Points;
+  double Area;
+  double Lo, Hi, Step;
+};
+
+/// The issue's small cases: a self-crossing polygon with a vertex on its own segment, a vertex
+/// on its own edge, a keyhole (outer square and hole joined by a doubled bridge), a spike out
+/// and back inside a square.
+inline std::vector<DegenerateCase> DegenerateIssueCases()
+{
+  return {
+    { "vertex on its own segment (self-crossing)",
+      { { 390, 200 },
+        { 10, 510 },
+        { 360, 460 },
+        { 780, 490 },
+        { 20, 90 },
+        { 360, 400 },
+        { 720, 320 },
+        { 500, 470 } },
+      95942.65,
+      0,
+      800,
+      10 },
+    { "vertex on its own edge",
+      { { 0, 0 }, { 20, 0 }, { 20, 10 }, { 10, 0 }, { 0, 10 } },
+      100,
+      -2,
+      22,
+      1 },
+    { "keyhole",
+      { { 0, 0 },
+        { 20, 0 },
+        { 20, 20 },
+        { 0, 20 },
+        { 0, 10 },
+        { 5, 10 },
+        { 5, 15 },
+        { 15, 15 },
+        { 15, 5 },
+        { 5, 5 },
+        { 5, 10 },
+        { 0, 10 } },
+      300,
+      -2,
+      22,
+      1 },
+    { "spike out and back",
+      { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 5, 5 }, { 10, 10 }, { 0, 10 } },
+      100,
+      -2,
+      12,
+      1 },
+  };
+}
+
+/// "S0: (0,0) (1,0) ...; S1: ..." for failure messages.
+inline std::string DescribeDrawing(const std::vector<LatticePolygon>& drawing)
+{
+  std::string text;
+  for (const auto& p : drawing)
+  {
+    text += "S" + std::to_string(p.Shape) + ":";
+    for (const auto& x : p.Points)
+      text += " (" + std::to_string(x[0]) + "," + std::to_string(x[1]) + ")";
+    text += "; ";
+  }
+  return text;
 }
 
 } // namespace testing

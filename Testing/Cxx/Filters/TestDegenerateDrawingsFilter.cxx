@@ -14,7 +14,6 @@
 #include <gtest/gtest.h>
 
 #include <random>
-#include <sstream>
 
 using namespace boolsurf::testing;
 
@@ -98,19 +97,6 @@ vtkSmartPointer<vtkPolyData> CurvesOf(const std::vector<LatticePolygon>& drawing
   return testutils::ToCurves(polygons);
 }
 
-std::string Describe(const std::vector<LatticePolygon>& drawing)
-{
-  std::ostringstream os;
-  for (const auto& p : drawing)
-  {
-    os << "S" << p.Shape << ":";
-    for (const auto& x : p.Points)
-      os << " (" << x[0] << "," << x[1] << ")";
-    os << "; ";
-  }
-  return os.str();
-}
-
 /// Area of the one-step result, or -1 (with the error as a test failure) when refused.
 double BooleanArea(vtkPolyData* mesh,
   vtkPolyData* curves,
@@ -161,49 +147,13 @@ void ExpectAnswered(const Points& polygon, double expected, double lo, double hi
 
 } // namespace
 
-TEST(DegenerateDrawingsFilter, VertexOnItsOwnSegmentSelfCrossing)
+TEST(DegenerateDrawingsFilter, IssueCasesOnTenDelaunayMeshesAndAnAlignedGrid)
 {
-  ExpectAnswered({ { 390, 200 },
-                   { 10, 510 },
-                   { 360, 460 },
-                   { 780, 490 },
-                   { 20, 90 },
-                   { 360, 400 },
-                   { 720, 320 },
-                   { 500, 470 } },
-    95942.65,
-    0,
-    800,
-    10);
-}
-
-TEST(DegenerateDrawingsFilter, VertexOnItsOwnEdge)
-{
-  ExpectAnswered({ { 0, 0 }, { 20, 0 }, { 20, 10 }, { 10, 0 }, { 0, 10 } }, 100, -2, 22);
-}
-
-TEST(DegenerateDrawingsFilter, Keyhole)
-{
-  ExpectAnswered({ { 0, 0 },
-                   { 20, 0 },
-                   { 20, 20 },
-                   { 0, 20 },
-                   { 0, 10 },
-                   { 5, 10 },
-                   { 5, 15 },
-                   { 15, 15 },
-                   { 15, 5 },
-                   { 5, 5 },
-                   { 5, 10 },
-                   { 0, 10 } },
-    300,
-    -2,
-    22);
-}
-
-TEST(DegenerateDrawingsFilter, SpikeOutAndBack)
-{
-  ExpectAnswered({ { 0, 0 }, { 10, 0 }, { 10, 10 }, { 5, 5 }, { 10, 10 }, { 0, 10 } }, 100, -2, 12);
+  for (const DegenerateCase& c : DegenerateIssueCases())
+  {
+    SCOPED_TRACE(c.Name);
+    ExpectAnswered(c.Points, c.Area, c.Lo, c.Hi, c.Step);
+  }
 }
 
 TEST(DegenerateDrawingsFilter, SquaresOverlappingAlongPartOfAnEdgeUnion)
@@ -264,7 +214,8 @@ TEST(DegenerateDrawingsFilter, RandomLatticeDrawingsMatchExactAreas)
         for (vtkPolyData* mesh : { delaunay.GetPointer(), aligned.GetPointer() })
         {
           const std::string what = std::string(mesh == aligned ? "aligned grid" : "Delaunay") +
-            " op " + std::to_string(op) + " rule " + std::to_string(rule) + " " + Describe(drawing);
+            " op " + std::to_string(op) + " rule " + std::to_string(rule) + " " +
+            DescribeDrawing(drawing);
           const double area = BooleanArea(mesh, curves, op, rule, nullptr, what);
           ASSERT_NEAR(area, swept, 1e-9 * (lattice + 2) * (lattice + 2)) << what;
           ++compared;

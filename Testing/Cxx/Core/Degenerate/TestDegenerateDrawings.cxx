@@ -34,48 +34,11 @@ void ExpectNonZeroArea(const std::vector<std::array<long long, 2>>& pts,
 
 } // namespace
 
-TEST(DegenerateDrawings, VertexOnItsOwnSegmentSelfCrossing)
+TEST(DegenerateDrawings, IssueCasesOnTenIrregularMeshesAndAnAlignedOne)
 {
-  ExpectNonZeroArea({ { 390, 200 },
-                      { 10, 510 },
-                      { 360, 460 },
-                      { 780, 490 },
-                      { 20, 90 },
-                      { 360, 400 },
-                      { 720, 320 },
-                      { 500, 470 } },
-    95942.65,
-    0,
-    800,
-    10);
-}
-
-TEST(DegenerateDrawings, VertexOnItsOwnEdge)
-{
-  ExpectNonZeroArea({ { 0, 0 }, { 20, 0 }, { 20, 10 }, { 10, 0 }, { 0, 10 } }, 100, -2, 22);
-}
-
-TEST(DegenerateDrawings, Keyhole)
-{
-  ExpectNonZeroArea({ { 0, 0 },
-                      { 20, 0 },
-                      { 20, 20 },
-                      { 0, 20 },
-                      { 0, 10 },
-                      { 5, 10 },
-                      { 5, 15 },
-                      { 15, 15 },
-                      { 15, 5 },
-                      { 5, 5 },
-                      { 5, 10 },
-                      { 0, 10 } },
-    300,
-    -2,
-    22);
-}
-
-TEST(DegenerateDrawings, SpikeOutAndBack)
-{
-  ExpectNonZeroArea(
-    { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 5, 5 }, { 10, 10 }, { 0, 10 } }, 100, -2, 12);
+  for (const DegenerateCase& c : DegenerateIssueCases())
+  {
+    SCOPED_TRACE(c.Name);
+    ExpectNonZeroArea(c.Points, c.Area, c.Lo, c.Hi, c.Step);
+  }
 }
