@@ -71,7 +71,30 @@ void ExpectInclusionExclusion(vtkPolyData* mesh, const std::vector<testutils::Co
 struct Window
 {
   Point3 A[4], B[4];
+  Point3 EdgeMidpoint; ///< the midpoint of a mesh edge at A[0] (a control point on an edge)
+  Point3 Below;        ///< a vertex beyond A's leg (0, 1)
 };
+
+/// The midpoint of a mesh edge from vertex p (the first triangle holding p).
+Point3 EdgeMidpointAt(vtkPolyData* mesh, const Point3& p)
+{
+  vtkIdType n;
+  const vtkIdType* ids;
+  vtkCellArray* polys = mesh->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    for (int k = 0; k < n; ++k)
+    {
+      double x[3], y[3];
+      mesh->GetPoint(ids[k], x);
+      if (x[0] != p[0] || x[1] != p[1] || x[2] != p[2])
+        continue;
+      mesh->GetPoint(ids[(k + 1) % n], y);
+      return { (x[0] + y[0]) / 2, (x[1] + y[1]) / 2, (x[2] + y[2]) / 2 };
+    }
+  }
+  return p;
+}
 
 Window MakeWindow(vtkPolyData* mesh, const Point3& center, double size)
 {
@@ -109,6 +132,8 @@ Window MakeWindow(vtkPolyData* mesh, const Point3& center, double size)
   w.B[1] = at(3, -1);
   w.B[2] = at(3, 1);
   w.B[3] = at(1, 1);
+  w.EdgeMidpoint = EdgeMidpointAt(mesh, w.A[0]);
+  w.Below = at(0, -3);
   return w;
 }
 
@@ -139,6 +164,12 @@ void RunWindowCases(vtkPolyData* mesh, const Point3& center, double size)
     ExpectInclusionExclusion(mesh,
       { poly({ w.A[0], w.A[1], w.B[1], w.A[1], w.A[2], w.A[3] }, 0),
         poly({ w.A[0], w.A[1], w.A[2], w.A[3] }, 1) });
+  }
+  {
+    SCOPED_TRACE("a control point on a mesh edge, on a leg both shapes share");
+    ExpectInclusionExclusion(mesh,
+      { poly({ w.EdgeMidpoint, w.A[1], w.A[2], w.A[3] }, 0),
+        poly({ w.A[1], w.EdgeMidpoint, w.Below }, 1) });
   }
   {
     SCOPED_TRACE("shape 1 holds a curve and its exact reverse next to B");
