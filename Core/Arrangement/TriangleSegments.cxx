@@ -359,9 +359,15 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
   // Per curve: segment order as (along edge?, index into pending or EdgeSegments).
   std::vector<std::vector<SegmentLocation>> order(curves.size());
 
-  // 1. Every point in canonical form; the points on edges collected.
+  // 1. Every point in canonical form; the points on edges collected, with where they came from.
+  struct RawEdgePoint
+  {
+    int Edge;
+    double T;
+    int Curve, Index;
+  };
   std::vector<std::vector<CanonicalPoint>> normalized(curves.size());
-  std::vector<EdgePoint> raw;
+  std::vector<RawEdgePoint> raw;
   for (size_t ci = 0; ci < curves.size(); ++ci)
   {
     const TracedCurve& curve = curves[ci];
@@ -389,7 +395,7 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
       }
       if (points[i].Location == PointLocation::Edge)
       {
-        raw.push_back({ points[i].Id, points[i].T });
+        raw.push_back({ points[i].Id, points[i].T, curveIndex, i });
       }
     }
   }
@@ -399,28 +405,21 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
   // and its reverse), or a curve point on another curve. Kept apart, they would be distinct
   // points a few ulps apart, which the triangles on both sides of the edge cannot tell apart
   // in their own coordinates. Decided once per edge, so both triangles agree.
-  const auto byEdgeAndT = [](const EdgePoint& x, const EdgePoint& y)
-  { return x.Edge != y.Edge ? x.Edge < y.Edge : x.T < y.T; };
-  std::sort(raw.begin(), raw.end(), byEdgeAndT);
-  std::vector<double> representative(raw.size());
+  std::sort(raw.begin(),
+    raw.end(),
+    [](const RawEdgePoint& x, const RawEdgePoint& y)
+    { return x.Edge != y.Edge ? x.Edge < y.Edge : x.T < y.T; });
+  map.EdgePoints.reserve(raw.size());
   for (size_t i = 0; i < raw.size(); ++i)
   {
     const bool joins =
       i > 0 && raw[i].Edge == raw[i - 1].Edge && raw[i].T - raw[i - 1].T <= EdgePointMergeDistance;
-    representative[i] = joins ? representative[i - 1] : raw[i].T;
-  }
-  for (size_t ci = 0; ci < curves.size(); ++ci)
-  {
-    for (CanonicalPoint& p : normalized[ci])
+    const double t = joins ? map.EdgePoints.back().T : raw[i].T;
+    if (!joins)
     {
-      if (p.Location == PointLocation::Edge)
-      {
-        const EdgePoint key{ p.Id, p.T };
-        const size_t i = std::lower_bound(raw.begin(), raw.end(), key, byEdgeAndT) - raw.begin();
-        p.T = representative[i];
-        map.EdgePoints.push_back({ p.Id, p.T });
-      }
+      map.EdgePoints.push_back({ raw[i].Edge, t });
     }
+    normalized[raw[i].Curve][raw[i].Index].T = t;
   }
 
   // 3. Segments, by triangle or along an edge.
@@ -474,16 +473,7 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
     }
   }
 
-  // Edge points: sorted and unique, so that each has one id for both triangles of its edge.
-  std::sort(map.EdgePoints.begin(),
-    map.EdgePoints.end(),
-    [](const EdgePoint& x, const EdgePoint& y)
-    { return x.Edge != y.Edge ? x.Edge < y.Edge : x.T < y.T; });
-  map.EdgePoints.erase(
-    std::unique(map.EdgePoints.begin(),
-      map.EdgePoints.end(),
-      [](const EdgePoint& x, const EdgePoint& y) { return x.Edge == y.Edge && x.T == y.T; }),
-    map.EdgePoints.end());
+  // Edge points are sorted and unique (step 2): each has one id for both triangles of its edge.
   for (int i = 0; i < static_cast<int>(map.EdgePoints.size());)
   {
     int j = i;
