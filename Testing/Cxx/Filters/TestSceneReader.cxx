@@ -386,7 +386,16 @@ TEST(SceneReader, AdversarialFilesAreNamedErrors)
     for (int i = 0; i < 4096; ++i)
       garbage.put(static_cast<char>((i * 7919) & 0xff));
   }
+  // Found by fuzzing (Testing/Fuzz): a face list under another name crashed vtkPLYReader.
+  std::ofstream(Scratch() / "meshes" / "nofacelist.ply")
+    << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+       "property float z\nelement face 2\nproperty list uchar int vertex_indexes\nend_header\n"
+    << "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
   const std::vector<Case> meshes = {
+    { "nofacelistply.json",
+      R"({"model": "nofacelist.ply", )" + points + "}",
+      { "nofacelist.ply is not a valid PLY file",
+        "element 'face' has no list property vertex_indices" } },
     { "truncatedply.json",
       R"({"model": "truncated.ply", )" + points + "}",
       { "truncated.ply is not a valid PLY file", "truncated face 1" } },
