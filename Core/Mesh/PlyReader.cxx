@@ -161,8 +161,15 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
       }
       elements.push_back(e);
     }
-    else if (keyword == "property" && !elements.empty())
+    else if (keyword == "property")
     {
+      // A property belongs to the element above it: one before any element, or without a
+      // name, is not a PLY header (vtkPLYReader crashes on both).
+      if (elements.empty())
+      {
+        error = "'" + path + "': property line before any element: '" + line + "'";
+        return false;
+      }
       Property p;
       std::string type;
       words >> type;
@@ -178,6 +185,11 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
       if (TypeSize(p.Type) == 0 || (!p.CountType.empty() && TypeSize(p.CountType) == 0))
       {
         error = "'" + path + "': unknown property type in '" + line + "'";
+        return false;
+      }
+      if (p.Name.empty())
+      {
+        error = "'" + path + "': property without a name: '" + line + "'";
         return false;
       }
       elements.back().Properties.push_back(p);
@@ -216,6 +228,17 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
     if (needed > remaining + (format == Format::Ascii ? 1 : 0))
     {
       error = "'" + path + "': truncated (the header announces more data than the file holds)";
+      return false;
+    }
+  }
+  // A triangle mesh has both (vtkPLYReader, run next by the scene reader, crashes without them).
+  for (const char* required : { "vertex", "face" })
+  {
+    if (std::none_of(elements.begin(),
+          elements.end(),
+          [required](const Element& e) { return e.Name == required; }))
+    {
+      error = "'" + path + "': no element '" + required + "'";
       return false;
     }
   }

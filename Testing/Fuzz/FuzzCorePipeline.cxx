@@ -30,6 +30,8 @@
 #include "Selection/RegionExtraction.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <vector>
@@ -38,6 +40,17 @@ namespace
 {
 using namespace boolsurf;
 using fuzz::ByteReader;
+
+/// With BOOLSURF_FUZZ_STAGES set, each input prints the last stage it reached (to tune the
+/// decoding: a run over a corpus shows how many inputs get past tracing, arrangement, ...).
+void Reached(const char* stage)
+{
+  static const bool print = std::getenv("BOOLSURF_FUZZ_STAGES") != nullptr;
+  if (print)
+  {
+    std::fprintf(stderr, "stage: %s\n", stage);
+  }
+}
 
 double TriangleArea(const Vec3& a, const Vec3& b, const Vec3& c)
 {
@@ -235,6 +248,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const MeshTopology topology = MeshTopology::Compute(mesh);
   if (CheckSurface(mesh, topology).HasErrors())
   {
+    Reached("surface refused");
     return 0; // refused before any stage, as the filters do
   }
   double surfaceArea = 0;
@@ -261,6 +275,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!status)
     {
       BOOLSURF_FUZZ_CHECK(!status.Message.empty(), "a failed trace must say why");
+      Reached("trace refused");
       return 0;
     }
     trace.Curve.ShapeId = decoded[c].ShapeId;
@@ -277,6 +292,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!ComputeArrangement(mesh, curves, options, arr, error))
   {
     BOOLSURF_FUZZ_CHECK(!error.empty(), "a failed arrangement must say why");
+    Reached(("arrangement refused: " + error).c_str());
     return 0;
   }
   CheckArrangement(mesh, arr, surfaceArea);
@@ -315,6 +331,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!SelectCells(labels, expression, rule, selected, error))
   {
     BOOLSURF_FUZZ_CHECK(!error.empty(), "a refused selection must say why");
+    Reached("selection refused");
     return 0; // an inconsistent shape
   }
   BOOLSURF_FUZZ_CHECK(SelectCells(labels, complement, rule, rest, error), error);
@@ -349,5 +366,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       BOOLSURF_FUZZ_CHECK(p >= 0 && p < static_cast<int>(arr.Positions.size()), "boundary point");
     }
   }
+  Reached(arr.NumberOfCells > 1 ? "region (several cells)" : "region (one cell)");
   return 0;
 }

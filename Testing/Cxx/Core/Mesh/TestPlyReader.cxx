@@ -70,13 +70,15 @@ TEST(PlyReader, ElementsWithoutPropertiesAreSkippedWhateverTheirCount)
 TEST(PlyReader, VerticesWithoutCoordinatesAreAnError)
 {
   // Two billion vertices of no property took no byte of the file but 48 GB of made-up points.
-  PlyResult r = ReadText(
-    "no-xyz", "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nend_header\n");
+  PlyResult r = ReadText("no-xyz",
+    "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\n"
+    "element face 0\nproperty list uchar int vertex_indices\n"
+    "end_header\n");
   EXPECT_FALSE(r.Ok);
   EXPECT_NE(r.Error.find("element 'vertex' has no property x"), std::string::npos) << r.Error;
   r = ReadText("no-z",
-    "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n"
-    "0 0\n");
+    "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n" + Faces +
+      "end_header\n0 0\n3 0 0 0\n");
   EXPECT_FALSE(r.Ok);
   EXPECT_NE(r.Error.find("element 'vertex' has no property z"), std::string::npos) << r.Error;
 }
@@ -106,4 +108,39 @@ TEST(PlyReader, FacesWithoutAVertexListAreAnError)
     Triangle + "element face 1\nproperty list uchar int vertex_index\n" + TriangleBody);
   ASSERT_TRUE(r.Ok) << r.Error;
   EXPECT_EQ(r.Mesh.Triangles.size(), 1u);
+}
+
+TEST(PlyReader, PropertiesOutsideAnElementOrWithoutANameAreAnError)
+{
+  // Found by fuzzing: a garbled element line left its properties before any element; they were
+  // ignored here, and vtkPLYReader (run next by the scene reader) crashed on them.
+  PlyResult r = ReadText("property-first",
+    "ply\nformat ascii 1.0\nelem\xef\xbft vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\n" +
+      Faces + TriangleBody);
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("property line before any element: 'property float x'"), std::string::npos)
+    << r.Error;
+  r = ReadText("property-no-name",
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nproperty float\n" +
+      Faces + TriangleBody);
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("property without a name: 'property float'"), std::string::npos)
+    << r.Error;
+}
+
+TEST(PlyReader, FilesWithoutVertexOrFaceElementsAreAnError)
+{
+  // Found by fuzzing: a misspelled vertex element gave an empty mesh here, then vtkPLYReader
+  // crashed on the file.
+  PlyResult r = ReadText("no-vertex",
+    "ply\nformat ascii 1.0\nelement vetexr 3\nproperty float x\nproperty float y\n"
+    "property float z\n" +
+      Faces + TriangleBody);
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("no element 'vertex'"), std::string::npos) << r.Error;
+  r = ReadText("no-face", Triangle + "end_header\n0 0 0\n1 0 0\n0 1 0\n");
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("no element 'face'"), std::string::npos) << r.Error;
 }
