@@ -18,8 +18,8 @@ cmake --build build-sanitize --target BoolSurfCoreTests BoolSurfFilterTests -- -
   >> build-sanitize.log 2>&1 || { tail -50 build-sanitize.log; exit 1; }
 (cd build-sanitize && ctest -j"$(nproc)" --output-on-failure --timeout 1800)
 
-# Fuzzing (a third build in build-fuzz/, clang with libFuzzer, ASan and UBSan: Core, the filters
-# module and the four targets of Testing/Fuzz/): each target runs from its checked-in seeds for
+# Fuzzing (a third build in build-fuzz/, clang with libFuzzer, ASan and UBSan: Core, the scene
+# reader and the four targets of Testing/Fuzz/): each target runs from its checked-in seeds for
 # a bounded number of inputs (BOOLSURF_FUZZ_RUNS, at most BOOLSURF_FUZZ_SECONDS each).
 echo "== fuzz pass: libFuzzer targets from their seed corpora"
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \

@@ -25,6 +25,10 @@ bool CheckObjIndices(const std::string& path, std::string& error)
   while (std::getline(in, line))
   {
     ++lineNumber;
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back(); // Windows line ends
+    }
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;

@@ -34,6 +34,7 @@ TEST(ObjCheck, ValidIndicesPass)
               Square + "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\nf 1/1/1 2/2/1 3/3/1\nf 1//1 3//1 4//1\n"),
     "ok");
   EXPECT_EQ(Check("lines", Square + "# comment\nl 1 2 3\np 4\nusemtl x\n"), "ok");
+  EXPECT_EQ(Check("crlf", "v 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nf 1 2 3\r\n"), "ok");
 }
 
 TEST(ObjCheck, IndicesNamingNothingAreNamed)
