@@ -1,5 +1,6 @@
 #include "vtkBoolSurfSceneReader.h"
 
+#include "Mesh/ObjCheck.h"
 #include "Mesh/PlyReader.h"
 
 #include "vtkCellArray.h"
@@ -215,6 +216,12 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const fs::path& file, std::string& note)
   }
   else if (ext == ".obj")
   {
+    // vtkOBJReader crashes on an index that names nothing: the indices are checked first.
+    std::string why;
+    if (!boolsurf::CheckObjIndices(file.string(), why))
+    {
+      throw SceneError("mesh " + file.string() + " is not a valid OBJ file: " + why);
+    }
     vtkNew<vtkOBJReader> reader;
     reader->SetFileName(file.string().c_str());
     reader->Update();

@@ -16,5 +16,15 @@ cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBOOLSU
   > build-sanitize.log 2>&1 || { cat build-sanitize.log; exit 1; }
 cmake --build build-sanitize --target BoolSurfCoreTests BoolSurfFilterTests -- -j"$(nproc)" \
   >> build-sanitize.log 2>&1 || { tail -50 build-sanitize.log; exit 1; }
-cd build-sanitize
-ctest -j"$(nproc)" --output-on-failure --timeout 1800
+(cd build-sanitize && ctest -j"$(nproc)" --output-on-failure --timeout 1800)
+
+# Fuzzing (a third build in build-fuzz/, clang with libFuzzer, ASan and UBSan: Core, the scene
+# reader and the four targets of Testing/Fuzz/): each target runs from its checked-in seeds for
+# a bounded number of inputs (BOOLSURF_FUZZ_RUNS, at most BOOLSURF_FUZZ_SECONDS each).
+echo "== fuzz pass: libFuzzer targets from their seed corpora"
+cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
+  -DCMAKE_CXX_COMPILER=clang++ -DBOOLSURF_FUZZ=ON -DBOOLSURF_BUILD_BENCHMARKS=OFF \
+  -DPython3_EXECUTABLE=/usr/bin/python3 > build-fuzz.log 2>&1 || { cat build-fuzz.log; exit 1; }
+cmake --build build-fuzz --target BoolSurfFuzzTargets -- -j"$(nproc)" >> build-fuzz.log 2>&1 ||
+  { tail -50 build-fuzz.log; exit 1; }
+(cd build-fuzz && ctest -L fuzz -j"$(nproc)" --output-on-failure)

@@ -17,6 +17,8 @@ packages=(
   libx11-dev libgl1-mesa-dev libxt-dev python3-dev python3-mpi4py libeigen3-dev
   # build tools and test/benchmark frameworks
   cmake ninja-build g++ googletest libgtest-dev libbenchmark-dev clang-format
+  # clang (with libFuzzer) for the fuzz targets, built in build-fuzz/ by run-tests.sh
+  clang
   # libraries used by BoolSurf: parallel loops, max-flow (BSC), Clipper (2D test oracle),
   # JSON (scene files, test manifests)
   libtbb-dev libboost-graph-dev libpolyclipping-dev nlohmann-json3-dev

@@ -161,8 +161,15 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
       }
       elements.push_back(e);
     }
-    else if (keyword == "property" && !elements.empty())
+    else if (keyword == "property")
     {
+      // A property belongs to the element above it: one before any element, or without a
+      // name, is not a PLY header (vtkPLYReader crashes on both).
+      if (elements.empty())
+      {
+        error = "'" + path + "': property line before any element: '" + line + "'";
+        return false;
+      }
       Property p;
       std::string type;
       words >> type;
@@ -180,6 +187,11 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
         error = "'" + path + "': unknown property type in '" + line + "'";
         return false;
       }
+      if (p.Name.empty())
+      {
+        error = "'" + path + "': property without a name: '" + line + "'";
+        return false;
+      }
       elements.back().Properties.push_back(p);
     }
     else if (keyword == "end_header")
@@ -192,9 +204,9 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
     error = "'" + path + "': no end_header line";
     return false;
   }
-  // A binary file must hold at least the fixed-size part of every element: checked up front, so
-  // a header announcing billions of elements fails at once instead of looping.
-  if (format != Format::Ascii)
+  // The file must hold at least the fixed-size part of every element (in ascii, a digit and a
+  // separator per value): checked up front, so a header announcing billions of elements fails
+  // at once instead of looping or allocating for them.
   {
     const std::streampos body = in.tellg();
     in.seekg(0, std::ios::end);
@@ -206,22 +218,59 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
       long double size = 0;
       for (const Property& prop : e.Properties)
       {
-        size += TypeSize(prop.CountType.empty() ? prop.Type : prop.CountType);
+        size += format == Format::Ascii
+          ? 2
+          : TypeSize(prop.CountType.empty() ? prop.Type : prop.CountType);
       }
       needed += size * e.Count;
     }
-    if (needed > remaining)
+    // The last ascii value may end the file without a separator.
+    if (needed > remaining + (format == Format::Ascii ? 1 : 0))
     {
       error = "'" + path + "': truncated (the header announces more data than the file holds)";
+      return false;
+    }
+  }
+  // A triangle mesh has both (vtkPLYReader, run next by the scene reader, crashes without them).
+  for (const char* required : { "vertex", "face" })
+  {
+    if (std::none_of(elements.begin(),
+          elements.end(),
+          [required](const Element& e) { return e.Name == required; }))
+    {
+      error = "'" + path + "': no element '" + required + "'";
       return false;
     }
   }
   long long vertexCount = 0;
   for (const Element& e : elements)
   {
+    if (e.Name == "face" && e.Count > 0 &&
+      std::none_of(e.Properties.begin(),
+        e.Properties.end(),
+        [](const Property& p) {
+          return !p.CountType.empty() && (p.Name == "vertex_indices" || p.Name == "vertex_index");
+        }))
+    {
+      // Faces of no vertex list are not a mesh (and crash vtkPLYReader, which the scene reader
+      // runs after this check).
+      error = "'" + path + "': element 'face' has no list property vertex_indices";
+      return false;
+    }
     if (e.Name == "vertex")
     {
       vertexCount = e.Count;
+      // Vertices without coordinates would be made up (and take no bytes of the file).
+      for (const char* axis : { "x", "y", "z" })
+      {
+        if (std::none_of(e.Properties.begin(),
+              e.Properties.end(),
+              [axis](const Property& p) { return p.Name == axis && p.CountType.empty(); }))
+        {
+          error = "'" + path + "': element 'vertex' has no property " + axis;
+          return false;
+        }
+      }
     }
   }
   if (vertexCount > std::numeric_limits<int>::max())
@@ -238,6 +287,10 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
   };
   for (const Element& e : elements)
   {
+    if (e.Properties.empty())
+    {
+      continue; // no data to read, however many it announces
+    }
     for (long long i = 0; i < e.Count; ++i)
     {
       Vec3 p;
@@ -277,7 +330,8 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
                 ", outside [0, " + std::to_string(vertexCount) + ")";
               return false;
             }
-            id = static_cast<int>(v);
+            // Only face indices are kept (and were checked to fit); other lists are skipped.
+            id = isFace ? static_cast<int>(v) : 0;
           }
           if (isFace)
           {

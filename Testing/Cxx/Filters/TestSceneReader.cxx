@@ -339,7 +339,8 @@ TEST(SceneReader, CanReadFileWantsPolygons)
 } // namespace
 
 // Adversarial scene files: JSON nested 10^5 deep, operation indices beyond int, and PLY meshes
-// that are truncated, garbage or name absent vertices get named errors, never a crash or a
+// that are truncated, garbage or name absent vertices, and OBJ meshes naming absent texture
+// coordinates get named errors, never a crash or a
 // silently changed value.
 TEST(SceneReader, AdversarialFilesAreNamedErrors)
 {
@@ -386,7 +387,38 @@ TEST(SceneReader, AdversarialFilesAreNamedErrors)
     for (int i = 0; i < 4096; ++i)
       garbage.put(static_cast<char>((i * 7919) & 0xff));
   }
+  // Found by fuzzing (Testing/Fuzz): a face list under another name crashed vtkPLYReader.
+  std::ofstream(Scratch() / "meshes" / "nofacelist.ply")
+    << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+       "property float z\nelement face 2\nproperty list uchar int vertex_indexes\nend_header\n"
+    << "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+  std::ofstream(Scratch() / "meshes" / "propertyfirst.ply")
+    << "ply\nformat ascii 1.0\nproperty float x\nelement vertex 4\nproperty float x\n"
+       "property float y\nproperty float z\nelement face 2\n"
+       "property list uchar int vertex_indices\nend_header\n"
+    << "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+  std::ofstream(Scratch() / "meshes" / "novertex.ply")
+    << "ply\nformat ascii 1.0\nelement vetexr 4\nproperty float x\n"
+       "property float y\nproperty float z\nelement face 2\n"
+       "property list uchar int vertex_indices\nend_header\n"
+    << "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+  std::ofstream(Scratch() / "meshes" / "badtexture.obj")
+    << "v 0 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nf 1 2 3\nf 4/5 3 1\n";
   const std::vector<Case> meshes = {
+    { "badtextureobj.json",
+      R"({"model": "badtexture.obj", )" + points + "}",
+      { "badtexture.obj is not a valid OBJ file",
+        "'4/5' names texture coordinate 5, but 0 texture coordinate(s) precede it" } },
+    { "novertexply.json",
+      R"({"model": "novertex.ply", )" + points + "}",
+      { "novertex.ply is not a valid PLY file", "no element 'vertex'" } },
+    { "propertyfirstply.json",
+      R"({"model": "propertyfirst.ply", )" + points + "}",
+      { "propertyfirst.ply is not a valid PLY file", "property line before any element" } },
+    { "nofacelistply.json",
+      R"({"model": "nofacelist.ply", )" + points + "}",
+      { "nofacelist.ply is not a valid PLY file",
+        "element 'face' has no list property vertex_indices" } },
     { "truncatedply.json",
       R"({"model": "truncated.ply", )" + points + "}",
       { "truncated.ply is not a valid PLY file", "truncated face 1" } },
