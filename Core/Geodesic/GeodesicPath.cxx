@@ -89,6 +89,7 @@ CanonicalPoint FromWeights(const TriangleMesh& mesh, int t, const std::array<dou
 GeodesicPathSolver::GeodesicPathSolver(const TriangleMesh& mesh)
   : Search(mesh)
   , EdgeSearch(mesh)
+  , Exact(mesh)
   , StripPosition(mesh.GetNumberOfTriangles(), 0)
   , StripPositionStamp(mesh.GetNumberOfTriangles(), 0u)
 {
@@ -165,11 +166,20 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   }
 
   const int common = SharedTriangle(mesh, start, end);
+  bool haveStrip = false;
   if (common >= 0)
   {
-    this->Strip.assign(1, common);
+    this->Strip.assign(1, common); // a triangle is convex: the segment is the shortest path
+    haveStrip = true;
   }
-  else if (!(this->UseEdgePathStrip && this->StripFromEdgePath(start, end)))
+  if (!haveStrip && this->UseExactStrip)
+  {
+    this->Statistics.ExactLength =
+      this->Exact.FindStrip(start, this->StartTriangles, end, this->EndTriangles, this->Strip);
+    this->Statistics.Windows = this->Exact.GetLastWindowCount();
+    haveStrip = this->Statistics.ExactLength >= 0.0;
+  }
+  if (!haveStrip && !(this->UseEdgePathStrip && this->StripFromEdgePath(start, end)))
   {
     if (!this->Search.FindStrip(this->StartTriangles,
           PositionOf(mesh, start),
