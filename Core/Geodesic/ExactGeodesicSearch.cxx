@@ -151,6 +151,19 @@ void ExactGeodesicSearch::Relax(int v, double d, int kind, int parent, int arriv
 }
 
 //------------------------------------------------------------------------------
+// Filtering: a window is useless when a known path through one of its edge's vertices reaches
+// every point of it sooner (the difference is monotone along the edge, so one end decides).
+bool ExactGeodesicSearch::Dominated(const Window& w,
+  const std::array<int, 2>& ev,
+  double length) const
+{
+  auto distanceAt = [&](double b) { return w.Sigma + Hypot(w.Sx - b, w.Sy); };
+  const double d0 = this->Stamp[ev[0]] == this->CurrentStamp ? this->Distance[ev[0]] : Infinity;
+  const double d1 = this->Stamp[ev[1]] == this->CurrentStamp ? this->Distance[ev[1]] : Infinity;
+  return d0 + w.B1 < distanceAt(w.B1) || d1 + (length - w.B0) < distanceAt(w.B0);
+}
+
+//------------------------------------------------------------------------------
 void ExactGeodesicSearch::AddWindow(const Window& w)
 {
   const TriangleMesh& mesh = this->Mesh;
@@ -161,15 +174,11 @@ void ExactGeodesicSearch::AddWindow(const Window& w)
   {
     return;
   }
-  auto distanceAt = [&](double b) { return w.Sigma + Hypot(w.Sx - b, w.Sy); };
-  // Filtering: drop the window when a known path through one of the edge's vertices reaches
-  // every point of it sooner (the difference is monotone along the edge, so one end decides).
-  const double d0 = this->Stamp[ev[0]] == this->CurrentStamp ? this->Distance[ev[0]] : Infinity;
-  const double d1 = this->Stamp[ev[1]] == this->CurrentStamp ? this->Distance[ev[1]] : Infinity;
-  if (d0 + w.B1 < distanceAt(w.B1) || d1 + (length - w.B0) < distanceAt(w.B0))
+  if (this->Dominated(w, ev, length))
   {
     return;
   }
+  auto distanceAt = [&](double b) { return w.Sigma + Hypot(w.Sx - b, w.Sy); };
   double nearest = w.Sx;
   nearest = std::min(w.B1, std::max(w.B0, nearest));
   const double lower = distanceAt(nearest);
@@ -208,6 +217,10 @@ void ExactGeodesicSearch::Propagate(int id)
   const Vec3 p0 = mesh.GetPosition(ev[0]), p1 = mesh.GetPosition(ev[1]);
   const Vec3 pc = mesh.GetPosition(c);
   const double length = ::boolsurf::Distance(p0, p1);
+  if (this->Dominated(w, ev, length))
+  {
+    return; // vertex distances improved since the window was queued
+  }
   const double l0 = ::boolsurf::Distance(p0, pc), l1 = ::boolsurf::Distance(p1, pc);
   const double cx = (length * length + l0 * l0 - l1 * l1) / (2.0 * length);
   const Vec2 C{ cx, std::sqrt(std::max(0.0, l0 * l0 - cx * cx)) };
@@ -240,9 +253,27 @@ void ExactGeodesicSearch::Propagate(int id)
   }
 
   const double xc = CrossingOf(S, C);
+  const double throughC = w.Sigma + Length(C - S);
   if (xc >= w.B0 && xc <= w.B1)
   {
-    this->Relax(c, w.Sigma + Length(C - S), FromWindow, id, face);
+    this->Relax(c, throughC, FromWindow, id, face);
+  }
+  // One angle, one split (Xin-Wang), in the form that only needs c's current label: when c is
+  // reached sooner by a path P whose last segment crosses this same edge into this triangle
+  // (at x = cross), P cuts the triangle in two. A ray of this window reaching the part beyond
+  // P would cross P at some y, and there P is strictly shorter (|S - c| <= |S - y| + |y - c|),
+  // so that child holds no shortest path.
+  bool blocked[2] = { false, false };
+  if (this->Stamp[c] == this->CurrentStamp && this->VertexKind[c] == FromWindow &&
+    this->VertexParent[c] != id && this->Distance[c] < throughC)
+  {
+    const Window& other = this->Windows[this->VertexParent[c]];
+    if (other.Edge == w.Edge && other.Face == face)
+    {
+      const double cross = CrossingOf(Vec2{ other.Sx, other.Sy }, C);
+      blocked[0] = w.B0 >= cross;
+      blocked[1] = w.B1 <= cross;
+    }
   }
   if (w.B0 <= 0.0)
   {
@@ -256,6 +287,10 @@ void ExactGeodesicSearch::Propagate(int id)
   // Children on the edges (vertex 0, c) and (vertex 1, c).
   for (int side = 0; side < 2; ++side)
   {
+    if (blocked[side])
+    {
+      continue;
+    }
     const Vec2 X = side == 0 ? E0 : E1;
     const int xv = ev[side];
     double u0, u1;
@@ -397,6 +432,7 @@ double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
   this->BestKind = this->BestId = -1;
   this->ForcedVertex = -1;
   this->LastVertexCount = 0;
+  this->BudgetExceeded = false;
   strip.clear();
   for (int t : endTriangles)
   {
@@ -464,6 +500,7 @@ double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
       this->Propagate(e.Id);
       if (static_cast<int>(this->Windows.size()) > this->MaximumWindows)
       {
+        this->BudgetExceeded = true;
         return -1.0;
       }
       continue;

@@ -45,8 +45,13 @@ public:
   int GetLastWindowCount() const { return static_cast<int>(this->Windows.size()); }
   /// Vertex events settled by the last search.
   int GetLastVertexCount() const { return this->LastVertexCount; }
-  /// Give up (FindStrip returns -1) beyond this many windows; default 2^26 (~5 GB).
+  /// Give up (FindStrip returns -1) beyond this many windows (72 bytes each); default 2^21
+  /// (~150 MB, one to three seconds): enough for any pair on meshes up to ~30k triangles
+  /// and for short paths on any mesh.
   void SetMaximumWindows(int n) { this->MaximumWindows = n; }
+  int GetMaximumWindows() const { return this->MaximumWindows; }
+  /// True when the last FindStrip stopped at the window budget.
+  bool GetLastBudgetExceeded() const { return this->BudgetExceeded; }
 
 private:
   enum ParentKind : int
@@ -78,6 +83,7 @@ private:
   void Prepare();
   void ResetMarks();
   void Relax(int v, double d, int kind, int parent, int arrival);
+  bool Dominated(const Window& w, const std::array<int, 2>& ev, double length) const;
   void AddWindow(const Window& w);
   void Propagate(int id);
   void EmitFromVertex(int v);
@@ -88,7 +94,8 @@ private:
   const TriangleMesh& Mesh;
   bool Prepared = false;
   std::vector<char> PseudoSource; // saddle or boundary vertex
-  int MaximumWindows = 1 << 26;
+  int MaximumWindows = 1 << 21;
+  bool BudgetExceeded = false;
 
   // Per-vertex labels, valid where Stamp == CurrentStamp.
   std::vector<double> Distance;

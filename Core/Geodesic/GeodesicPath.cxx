@@ -140,6 +140,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   const CanonicalPoint end = Normalize(mesh, endIn);
   if (start == end)
   {
+    this->Statistics.Exact = true;
     path.Points.push_back(start);
     return TraceStatus::Success();
   }
@@ -171,6 +172,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   {
     this->Strip.assign(1, common); // a triangle is convex: the segment is the shortest path
     haveStrip = true;
+    this->Statistics.Exact = true;
   }
   if (!haveStrip && this->UseExactStrip)
   {
@@ -178,6 +180,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
       this->Exact.FindStrip(start, this->StartTriangles, end, this->EndTriangles, this->Strip);
     this->Statistics.Windows = this->Exact.GetLastWindowCount();
     haveStrip = this->Statistics.ExactLength >= 0.0;
+    this->Statistics.Exact = haveStrip;
   }
   if (!haveStrip && !(this->UseEdgePathStrip && this->StripFromEdgePath(start, end)))
   {

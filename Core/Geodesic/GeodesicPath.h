@@ -71,6 +71,10 @@ struct GeodesicPathStatistics
   int StraighteningRounds = 0; ///< funnel runs
   int Windows = 0;             ///< exact search work (windows created)
   double ExactLength = -1;     ///< exact shortest length found by the window search
+  /// True when the path is the exact shortest one (window search done, or the end points
+  /// share a triangle); false when the window budget ran out and the locally shortest
+  /// straightened edge path was returned instead.
+  bool Exact = false;
 };
 
 /// Computes geodesic paths on one mesh. Holds the reusable search state (mesh-sized arrays
@@ -119,6 +123,9 @@ public:
   void SetUseExactStrip(bool on) { this->UseExactStrip = on; }
   bool GetUseExactStrip() const { return this->UseExactStrip; }
   const ExactGeodesicSearch& GetExactSearch() const { return this->Exact; }
+  /// Window budget of the exact search (see ExactGeodesicSearch::SetMaximumWindows); past it
+  /// the path falls back to the locally shortest one and GetLastStatistics().Exact is false.
+  void SetMaximumWindows(int n) { this->Exact.SetMaximumWindows(n); }
 
 private:
   struct Portal
