@@ -45,9 +45,9 @@ public:
   int GetLastWindowCount() const { return static_cast<int>(this->Windows.size()); }
   /// Vertex events settled by the last search.
   int GetLastVertexCount() const { return this->LastVertexCount; }
-  /// Give up (FindStrip returns -1) beyond this many windows (72 bytes each); default 2^21
-  /// (~150 MB, one to three seconds): enough for any pair on meshes up to ~30k triangles
-  /// and for short paths on any mesh.
+  /// Give up (FindStrip returns -1) beyond this many windows (72 bytes each); default 2^20
+  /// (~75 MB, about a second): enough for any pair on meshes up to ~30k triangles (kitten's
+  /// far pairs need up to 0.8M) and for short paths on any mesh.
   void SetMaximumWindows(int n) { this->MaximumWindows = n; }
   int GetMaximumWindows() const { return this->MaximumWindows; }
   /// True when the last FindStrip stopped at the window budget.
@@ -94,7 +94,7 @@ private:
   const TriangleMesh& Mesh;
   bool Prepared = false;
   std::vector<char> PseudoSource; // saddle or boundary vertex
-  int MaximumWindows = 1 << 21;
+  int MaximumWindows = 1 << 20;
   bool BudgetExceeded = false;
 
   // Per-vertex labels, valid where Stamp == CurrentStamp.

@@ -334,7 +334,7 @@ TEST(GeodesicExactOracle, SharedScans)
     }
     ++meshes;
     const TriangleMesh mesh = ToMesh(std::move(data));
-    const OracleRun run = CompareWithOracle(mesh, 2, 8, 19, file);
+    const OracleRun run = CompareWithOracle(mesh, 2, 6, 19, file);
     EXPECT_EQ(run.Exact, run.Compared) << file << " worst relative " << run.WorstRelative;
   }
   if (meshes == 0)
