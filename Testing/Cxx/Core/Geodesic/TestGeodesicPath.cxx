@@ -877,9 +877,11 @@ namespace
 void ExpectNeverLongerThanEdgePaths(const TriangleMesh& mesh,
   int pairs,
   std::uint32_t seed,
-  int landmarks = 8)
+  int landmarks = 8,
+  bool exact = true)
 {
   GeodesicPathSolver solver(mesh);
+  solver.SetUseExactStrip(exact);
   solver.SetNumberOfLandmarks(landmarks);
   solver.SetLandmarkBuildThreshold(0.0);
   std::mt19937 rng(seed);
@@ -980,7 +982,9 @@ TEST(GeodesicPath, NeverLongerThanEdgePathOnSharedGenusThreeMesh)
     GTEST_SKIP() << "shared mesh 3torus_200k.ply not found (set BOOLSURF_SHARED_DATA): " << error;
   }
   const TriangleMesh mesh(std::move(data.Positions), std::move(data.Triangles));
-  ExpectNeverLongerThanEdgePaths(mesh, 40, 6);
+  // The locally shortest method (the exact search's fallback) on a large mesh: far pairs
+  // there mostly exceed the window budget anyway, and the oracle tests cover exactness.
+  ExpectNeverLongerThanEdgePaths(mesh, 40, 6, 8, false);
 }
 
 TEST(GeodesicPath, StaysOnSurfaceAroundBoundaryCorner)
