@@ -10,6 +10,10 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
 #include <map>
 #include <memory>
 #include <random>
@@ -123,7 +127,8 @@ void BenchmarkPaths(benchmark::State& state,
   const std::string& name,
   bool longPaths,
   bool edgePathStrip = true,
-  bool landmarks = true)
+  bool landmarks = true,
+  bool exact = true)
 {
   LoadedMesh& m = Load(name);
   if (!m.Mesh)
@@ -134,13 +139,18 @@ void BenchmarkPaths(benchmark::State& state,
   const auto& pairs = longPaths ? m.LongPairs : m.ShortPairs;
   GeodesicPathSolver& solver = landmarks ? *m.Solver : *m.PlainSolver;
   solver.SetUseEdgePathStrip(edgePathStrip);
+  solver.SetUseExactStrip(exact);
   GeodesicPath path;
   size_t i = 0;
-  double settled = 0, expanded = 0, strip = 0, rounds = 0, length = 0, ratio = 0;
+  double settled = 0, expanded = 0, strip = 0, rounds = 0, length = 0, ratio = 0, windows = 0;
+  std::vector<double> times;
   for (auto _ : state)
   {
     const auto& pair = pairs[i++ % pairs.size()];
+    const auto begin = std::chrono::steady_clock::now();
     const TraceStatus status = solver.Compute(pair.first, pair.second, path);
+    times.push_back(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count());
     if (!status)
     {
       state.SkipWithError(status.Message.c_str());
@@ -149,6 +159,7 @@ void BenchmarkPaths(benchmark::State& state,
     benchmark::DoNotOptimize(path.Points.data());
     const GeodesicPathStatistics& s = solver.GetLastStatistics();
     settled += s.SettledVertices;
+    windows += s.Windows;
     expanded += s.ExpandedTriangles;
     ratio += s.EdgePathLength > 0 ? path.Length / s.EdgePathLength : 0.0;
     strip += s.StripTriangles;
@@ -156,6 +167,10 @@ void BenchmarkPaths(benchmark::State& state,
     length += path.Points.size();
   }
   const double n = static_cast<double>(state.iterations());
+  std::sort(times.begin(), times.end());
+  state.counters["median_ms"] = times.empty() ? 0.0 : times[times.size() / 2];
+  state.counters["max_ms"] = times.empty() ? 0.0 : times.back();
+  state.counters["windows"] = windows / n;
   state.counters["triangles"] = m.Mesh->GetNumberOfTriangles();
   state.counters["settled"] = settled / n;
   state.counters["expanded"] = expanded / n;
@@ -166,6 +181,7 @@ void BenchmarkPaths(benchmark::State& state,
   state.counters["landmark_setup_s"] = solver.GetEdgeSearch().GetLandmarkBuildSeconds();
   state.counters["landmark_MB"] = solver.GetEdgeSearch().GetLandmarkMemory() / 1048576.0;
   solver.SetUseEdgePathStrip(true);
+  solver.SetUseExactStrip(true);
 }
 } // namespace
 
@@ -179,6 +195,26 @@ BENCHMARK_CAPTURE(BenchmarkPaths, torus3_800k_short, std::string("3torus_800k.pl
   ->Iterations(320)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BenchmarkPaths, torus3_800k_long, std::string("3torus_800k.ply"), true)
+  ->Iterations(24)
+  ->Unit(benchmark::kMillisecond);
+// Locally shortest only (the straightened shortest edge path, the method before the exact
+// window search), for comparison.
+BENCHMARK_CAPTURE(BenchmarkPaths,
+  igea_1m_short_local,
+  std::string("igea_1m.ply"),
+  false,
+  true,
+  true,
+  false)
+  ->Iterations(320)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BenchmarkPaths,
+  igea_1m_long_local,
+  std::string("igea_1m.ply"),
+  true,
+  true,
+  true,
+  false)
   ->Iterations(24)
   ->Unit(benchmark::kMillisecond);
 // Straight-line bound only (no landmarks), for comparison.

@@ -22,6 +22,9 @@ packages=(
   # libraries used by BoolSurf: parallel loops, max-flow (BSC), Clipper (2D test oracle),
   # JSON (scene files, test manifests)
   libtbb-dev libboost-graph-dev libpolyclipping-dev nlohmann-json3-dev
+  # CGAL (header-only) and its number types: the exact polyhedral shortest-path oracle
+  # (Surface_mesh_shortest_path) of the geodesic tests and benchmark; never in the product
+  libcgal-dev libgmp-dev libmpfr-dev
   # headless rendering: Debian's ParaView renders only through X
   xvfb xauth
 )

@@ -89,6 +89,7 @@ CanonicalPoint FromWeights(const TriangleMesh& mesh, int t, const std::array<dou
 GeodesicPathSolver::GeodesicPathSolver(const TriangleMesh& mesh)
   : Search(mesh)
   , EdgeSearch(mesh)
+  , Exact(mesh)
   , StripPosition(mesh.GetNumberOfTriangles(), 0)
   , StripPositionStamp(mesh.GetNumberOfTriangles(), 0u)
 {
@@ -139,6 +140,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   const CanonicalPoint end = Normalize(mesh, endIn);
   if (start == end)
   {
+    this->Statistics.Exact = true;
     path.Points.push_back(start);
     return TraceStatus::Success();
   }
@@ -165,11 +167,22 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   }
 
   const int common = SharedTriangle(mesh, start, end);
+  bool haveStrip = false;
   if (common >= 0)
   {
-    this->Strip.assign(1, common);
+    this->Strip.assign(1, common); // a triangle is convex: the segment is the shortest path
+    haveStrip = true;
+    this->Statistics.Exact = true;
   }
-  else if (!(this->UseEdgePathStrip && this->StripFromEdgePath(start, end)))
+  if (!haveStrip && this->UseExactStrip)
+  {
+    this->Statistics.ExactLength =
+      this->Exact.FindStrip(start, this->StartTriangles, end, this->EndTriangles, this->Strip);
+    this->Statistics.Windows = this->Exact.GetLastWindowCount();
+    haveStrip = this->Statistics.ExactLength >= 0.0;
+    this->Statistics.Exact = haveStrip;
+  }
+  if (!haveStrip && !(this->UseEdgePathStrip && this->StripFromEdgePath(start, end)))
   {
     if (!this->Search.FindStrip(this->StartTriangles,
           PositionOf(mesh, start),

@@ -1,6 +1,10 @@
-// Shortest (locally shortest) geodesic path between two surface points.
+// Shortest geodesic path between two surface points.
 //
-// Three stages, after Lee-Preparata and the strip straightening used by BoolSurf/b-Surf:
+// By default the strip comes from ExactGeodesicSearch (window propagation): the triangles
+// the exact polyhedral shortest path crosses, so the funnel below returns the shortest path
+// itself, not only a locally shortest one. Without it (SetUseExactStrip(false), or if that
+// search gives up), three stages, after Lee-Preparata and the strip straightening used by
+// BoolSurf/b-Surf:
 //  1. EdgeGraphSearch finds the shortest path along mesh edges (start -> corners of its
 //     triangle -> ... -> corners of the end's triangle -> end; exact bidirectional A*). The
 //     initial strip is the chain of triangles along one side of it, turning around each path
@@ -26,6 +30,7 @@
 
 #include "Geodesic/DualGraphSearch.h"
 #include "Geodesic/EdgeGraphSearch.h"
+#include "Geodesic/ExactGeodesicSearch.h"
 #include "Mesh/SurfacePoint.h"
 
 #include <array>
@@ -64,6 +69,12 @@ struct GeodesicPathStatistics
   double EdgePathLength = -1;  ///< shortest edge path (an upper bound of the result)
   int StripTriangles = 0;      ///< final strip length
   int StraighteningRounds = 0; ///< funnel runs
+  int Windows = 0;             ///< exact search work (windows created)
+  double ExactLength = -1;     ///< exact shortest length found by the window search
+  /// True when the path is the exact shortest one (window search done, or the end points
+  /// share a triangle); false when the window budget ran out and the locally shortest
+  /// straightened edge path was returned instead.
+  bool Exact = false;
 };
 
 /// Computes geodesic paths on one mesh. Holds the reusable search state (mesh-sized arrays
@@ -107,6 +118,15 @@ public:
   /// Seed with the dual-graph strip only (no edge-path bound); for benchmarks and tests.
   void SetUseEdgePathStrip(bool on) { this->UseEdgePathStrip = on; }
 
+  /// Seed with the strip of the exact shortest path (ExactGeodesicSearch; default on). Off,
+  /// the result is only locally shortest (the straightened shortest edge path), but faster.
+  void SetUseExactStrip(bool on) { this->UseExactStrip = on; }
+  bool GetUseExactStrip() const { return this->UseExactStrip; }
+  const ExactGeodesicSearch& GetExactSearch() const { return this->Exact; }
+  /// Window budget of the exact search (see ExactGeodesicSearch::SetMaximumWindows); past it
+  /// the path falls back to the locally shortest one and GetLastStatistics().Exact is false.
+  void SetMaximumWindows(int n) { this->Exact.SetMaximumWindows(n); }
+
 private:
   struct Portal
   {
@@ -146,7 +166,9 @@ private:
 
   DualGraphSearch Search;
   EdgeGraphSearch EdgeSearch;
+  ExactGeodesicSearch Exact;
   bool UseEdgePathStrip = true;
+  bool UseExactStrip = true;
   std::vector<EdgeGraphSearch::Terminal> Sources, Targets;
   std::vector<int> VertexPath;
   GeodesicPathStatistics Statistics;

@@ -1,0 +1,669 @@
+#include "Geodesic/ExactGeodesicSearch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace boolsurf
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+
+// Vertices whose angle sum is within this of 2 pi count as saddles: flat vertices of planar
+// meshes then stay sources, so ties through them are never lost to rounding.
+constexpr double SaddleTolerance = 1e-9;
+
+// Windows narrower than this fraction of their edge are dropped: the rays they carry pass
+// within rounding of a vertex, whose own distance (and, for saddles, windows) covers them.
+constexpr double MinimumWidth = 1e-12;
+
+int CornerOf(const Triangle& tri, int v)
+{
+  return tri[0] == v ? 0 : (tri[1] == v ? 1 : (tri[2] == v ? 2 : -1));
+}
+
+double Hypot(double x, double y)
+{
+  return std::sqrt(x * x + y * y);
+}
+
+// Parameter u along a -> c where the line through p and q meets it.
+double LineHit(Vec2 p, Vec2 q, Vec2 a, Vec2 c)
+{
+  const double den = Cross(q - p, c - a);
+  return den != 0.0 ? Cross(q - p, p - a) / den : 0.0;
+}
+
+// Where the segment from source s (y <= 0) to point x (y > 0) crosses the line y = 0.
+double CrossingOf(Vec2 s, Vec2 x)
+{
+  const double den = x.y - s.y;
+  return den > 0.0 ? s.x + (x.x - s.x) * (-s.y) / den : x.x;
+}
+
+double SegmentPointDistance(const Vec3& a, const Vec3& b, const Vec3& p)
+{
+  const Vec3 ab = b - a;
+  const double l2 = Dot(ab, ab);
+  double t = l2 > 0.0 ? Dot(p - a, ab) / l2 : 0.0;
+  t = std::min(1.0, std::max(0.0, t));
+  return Distance(a + t * ab, p);
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+ExactGeodesicSearch::ExactGeodesicSearch(const TriangleMesh& mesh)
+  : Mesh(mesh)
+{
+}
+
+//------------------------------------------------------------------------------
+void ExactGeodesicSearch::Prepare()
+{
+  if (this->Prepared)
+  {
+    return;
+  }
+  const TriangleMesh& mesh = this->Mesh;
+  const int nv = mesh.GetNumberOfVertices();
+  const int nt = mesh.GetNumberOfTriangles();
+  std::vector<double> angle(nv, 0.0);
+  this->PseudoSource.assign(nv, 0);
+  for (int t = 0; t < nt; ++t)
+  {
+    if (!mesh.IsUsable(t))
+    {
+      continue;
+    }
+    const Triangle& tri = mesh.GetTriangle(t);
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vec3 p = mesh.GetPosition(tri[k]);
+      const Vec3 a = mesh.GetPosition(tri[(k + 1) % 3]) - p;
+      const Vec3 b = mesh.GetPosition(tri[(k + 2) % 3]) - p;
+      angle[tri[k]] += std::atan2(Length(Cross(a, b)), Dot(a, b));
+      if (mesh.GetNeighbor(t, k) < 0)
+      {
+        this->PseudoSource[tri[k]] = 1;
+        this->PseudoSource[tri[(k + 1) % 3]] = 1;
+      }
+    }
+  }
+  for (int v = 0; v < nv; ++v)
+  {
+    if (angle[v] >= 2.0 * Pi - SaddleTolerance)
+    {
+      this->PseudoSource[v] = 1;
+    }
+  }
+  this->Distance.assign(nv, Infinity);
+  this->VertexKind.assign(nv, -1);
+  this->VertexParent.assign(nv, -1);
+  this->VertexArrival.assign(nv, -1);
+  this->Stamp.assign(nv, 0u);
+  this->EndMark.assign(nt, 0u);
+  this->Prepared = true;
+}
+
+//------------------------------------------------------------------------------
+void ExactGeodesicSearch::ResetMarks()
+{
+  if (++this->CurrentStamp == 0)
+  {
+    std::fill(this->Stamp.begin(), this->Stamp.end(), 0u);
+    std::fill(this->EndMark.begin(), this->EndMark.end(), 0u);
+    this->CurrentStamp = 1;
+  }
+}
+
+//------------------------------------------------------------------------------
+void ExactGeodesicSearch::OfferTarget(double length, int kind, int id)
+{
+  if (length < this->Best)
+  {
+    this->Best = length;
+    this->BestKind = kind;
+    this->BestId = id;
+  }
+}
+
+//------------------------------------------------------------------------------
+void ExactGeodesicSearch::Relax(int v, double d, int kind, int parent, int arrival)
+{
+  if (this->Stamp[v] != this->CurrentStamp)
+  {
+    this->Stamp[v] = this->CurrentStamp;
+    this->Distance[v] = Infinity;
+  }
+  if (!(d < this->Distance[v]))
+  {
+    return;
+  }
+  this->Distance[v] = d;
+  this->VertexKind[v] = kind;
+  this->VertexParent[v] = parent;
+  this->VertexArrival[v] = arrival;
+  const double toTarget = ::boolsurf::Distance(this->Mesh.GetPosition(v), this->Target);
+  this->Heap.push_back({ d + toTarget, -(v + 1), d });
+  std::push_heap(this->Heap.begin(), this->Heap.end());
+}
+
+//------------------------------------------------------------------------------
+// Filtering: a window is useless when a known path through one of its edge's vertices reaches
+// every point of it sooner (the difference is monotone along the edge, so one end decides).
+bool ExactGeodesicSearch::Dominated(const Window& w,
+  const std::array<int, 2>& ev,
+  double length) const
+{
+  auto distanceAt = [&](double b) { return w.Sigma + Hypot(w.Sx - b, w.Sy); };
+  const double d0 = this->Stamp[ev[0]] == this->CurrentStamp ? this->Distance[ev[0]] : Infinity;
+  const double d1 = this->Stamp[ev[1]] == this->CurrentStamp ? this->Distance[ev[1]] : Infinity;
+  return d0 + w.B1 < distanceAt(w.B1) || d1 + (length - w.B0) < distanceAt(w.B0);
+}
+
+//------------------------------------------------------------------------------
+void ExactGeodesicSearch::AddWindow(const Window& w)
+{
+  const TriangleMesh& mesh = this->Mesh;
+  const std::array<int, 2> ev = mesh.GetEdgeVertices(w.Edge);
+  const Vec3 p0 = mesh.GetPosition(ev[0]), p1 = mesh.GetPosition(ev[1]);
+  const double length = ::boolsurf::Distance(p0, p1);
+  if (!(w.B1 - w.B0 > MinimumWidth * length))
+  {
+    return;
+  }
+  if (this->Dominated(w, ev, length))
+  {
+    return;
+  }
+  auto distanceAt = [&](double b) { return w.Sigma + Hypot(w.Sx - b, w.Sy); };
+  double nearest = w.Sx;
+  nearest = std::min(w.B1, std::max(w.B0, nearest));
+  const double lower = distanceAt(nearest);
+  const double scale = 1.0 / length;
+  const Vec3 a = p0 + (w.B0 * scale) * (p1 - p0);
+  const Vec3 b = p0 + (w.B1 * scale) * (p1 - p0);
+  const double key = lower + SegmentPointDistance(a, b, this->Target);
+  if (key >= this->Best)
+  {
+    return;
+  }
+  const int id = static_cast<int>(this->Windows.size());
+  this->Windows.push_back(w);
+  this->Heap.push_back({ key, id, 0.0 });
+  std::push_heap(this->Heap.begin(), this->Heap.end());
+}
+
+//------------------------------------------------------------------------------
+void ExactGeodesicSearch::Propagate(int id)
+{
+  const TriangleMesh& mesh = this->Mesh;
+  const Window w = this->Windows[id];
+  const int face = w.Face;
+  const Triangle& tri = mesh.GetTriangle(face);
+  int k = 0;
+  while (k < 3 && mesh.GetEdgeId(face, k) != w.Edge)
+  {
+    ++k;
+  }
+  if (k == 3)
+  {
+    return;
+  }
+  const std::array<int, 2> ev = mesh.GetEdgeVertices(w.Edge);
+  const int c = tri[(k + 2) % 3];
+  const Vec3 p0 = mesh.GetPosition(ev[0]), p1 = mesh.GetPosition(ev[1]);
+  const Vec3 pc = mesh.GetPosition(c);
+  const double length = ::boolsurf::Distance(p0, p1);
+  if (this->Dominated(w, ev, length))
+  {
+    return; // vertex distances improved since the window was queued
+  }
+  const double l0 = ::boolsurf::Distance(p0, pc), l1 = ::boolsurf::Distance(p1, pc);
+  const double cx = (length * length + l0 * l0 - l1 * l1) / (2.0 * length);
+  const Vec2 C{ cx, std::sqrt(std::max(0.0, l0 * l0 - cx * cx)) };
+  const Vec2 E0{ 0.0, 0.0 }, E1{ length, 0.0 };
+  const Vec2 S{ w.Sx, w.Sy };
+
+  // The end point inside this triangle: straight through the window when visible, else
+  // around a window end (a real path, so an upper bound; the visible case is exact).
+  if (this->EndMark[face] == this->CurrentStamp)
+  {
+    const std::array<double, 3> wt = WeightsInTriangle(mesh, this->End, face);
+    Vec2 t{ 0.0, 0.0 };
+    for (int j = 0; j < 3; ++j)
+    {
+      const Vec2 q = tri[j] == ev[0] ? E0 : (tri[j] == ev[1] ? E1 : C);
+      t = t + wt[j] * q;
+    }
+    const double x = CrossingOf(S, t);
+    double length2;
+    if (x >= w.B0 && x <= w.B1)
+    {
+      length2 = w.Sigma + Length(t - S);
+    }
+    else
+    {
+      const Vec2 a{ w.B0, 0.0 }, b{ w.B1, 0.0 };
+      length2 = w.Sigma + std::min(Length(a - S) + Length(t - a), Length(b - S) + Length(t - b));
+    }
+    this->OfferTarget(length2, FromWindow, id);
+  }
+
+  const double xc = CrossingOf(S, C);
+  const double throughC = w.Sigma + Length(C - S);
+  if (xc >= w.B0 && xc <= w.B1)
+  {
+    this->Relax(c, throughC, FromWindow, id, face);
+  }
+  // One angle, one split (Xin-Wang), in the form that only needs c's current label: when c is
+  // reached sooner by a path P whose last segment crosses this same edge into this triangle
+  // (at x = cross), P cuts the triangle in two. A ray of this window reaching the part beyond
+  // P would cross P at some y, and there P is strictly shorter (|S - c| <= |S - y| + |y - c|),
+  // so that child holds no shortest path.
+  bool blocked[2] = { false, false };
+  if (this->Stamp[c] == this->CurrentStamp && this->VertexKind[c] == FromWindow &&
+    this->VertexParent[c] != id && this->Distance[c] < throughC)
+  {
+    const Window& other = this->Windows[this->VertexParent[c]];
+    if (other.Edge == w.Edge && other.Face == face)
+    {
+      const double cross = CrossingOf(Vec2{ other.Sx, other.Sy }, C);
+      blocked[0] = w.B0 >= cross;
+      blocked[1] = w.B1 <= cross;
+    }
+  }
+  if (w.B0 <= 0.0)
+  {
+    this->Relax(ev[0], w.Sigma + Length(S), FromWindow, id, face);
+  }
+  if (w.B1 >= length)
+  {
+    this->Relax(ev[1], w.Sigma + Length(E1 - S), FromWindow, id, face);
+  }
+
+  // Children on the edges (vertex 0, c) and (vertex 1, c).
+  for (int side = 0; side < 2; ++side)
+  {
+    if (blocked[side])
+    {
+      continue;
+    }
+    const Vec2 X = side == 0 ? E0 : E1;
+    const int xv = ev[side];
+    double u0, u1;
+    if (side == 0)
+    {
+      if (!(xc > w.B0))
+      {
+        continue;
+      }
+      u0 = w.B0 <= 0.0 ? 0.0 : LineHit(S, Vec2{ w.B0, 0.0 }, X, C);
+      u1 = w.B1 >= xc ? 1.0 : LineHit(S, Vec2{ w.B1, 0.0 }, X, C);
+    }
+    else
+    {
+      if (!(xc < w.B1))
+      {
+        continue;
+      }
+      u0 = w.B1 >= length ? 0.0 : LineHit(S, Vec2{ w.B1, 0.0 }, X, C);
+      u1 = w.B0 <= xc ? 1.0 : LineHit(S, Vec2{ w.B0, 0.0 }, X, C);
+    }
+    u0 = std::min(1.0, std::max(0.0, u0));
+    u1 = std::min(1.0, std::max(0.0, u1));
+    if (!(u1 > u0))
+    {
+      continue;
+    }
+    // Local edge of `face` joining xv and c.
+    int local = -1;
+    for (int j = 0; j < 3; ++j)
+    {
+      const int a = tri[j], b = tri[(j + 1) % 3];
+      if ((a == xv && b == c) || (a == c && b == xv))
+      {
+        local = j;
+      }
+    }
+    const int next = mesh.GetNeighbor(face, local);
+    if (next < 0)
+    {
+      continue;
+    }
+    const int edge = mesh.GetEdgeId(face, local);
+    const std::array<int, 2> nv = mesh.GetEdgeVertices(edge);
+    const Vec2 F0 = nv[0] == c ? C : X, F1 = nv[0] == c ? X : C;
+    const Vec2 axis = F1 - F0;
+    const double newLength = Length(axis);
+    if (!(newLength > 0.0))
+    {
+      continue;
+    }
+    const Vec2 ex = (1.0 / newLength) * axis;
+    Vec2 ey{ -ex.y, ex.x };
+    const Vec2 other = side == 0 ? E1 : E0; // the third vertex of `face`: must get y < 0
+    if (Dot(other - F0, ey) > 0.0)
+    {
+      ey = -1.0 * ey;
+    }
+    Window child;
+    child.Edge = edge;
+    child.Face = next;
+    child.Origin = face;
+    child.Parent = id;
+    child.Kind = FromWindow;
+    child.Sigma = w.Sigma;
+    child.Sx = Dot(S - F0, ex);
+    child.Sy = std::min(0.0, Dot(S - F0, ey));
+    // u runs from X to C; the new edge parameter runs from F0 to F1.
+    const double t0 = (nv[0] == c ? 1.0 - u1 : u0) * newLength;
+    const double t1 = (nv[0] == c ? 1.0 - u0 : u1) * newLength;
+    child.B0 = t0;
+    child.B1 = t1;
+    this->AddWindow(child);
+  }
+}
+
+//------------------------------------------------------------------------------
+void ExactGeodesicSearch::EmitFromVertex(int v)
+{
+  const TriangleMesh& mesh = this->Mesh;
+  const double d = this->Distance[v];
+  const Vec3 pv = mesh.GetPosition(v);
+  for (int corner : mesh.GetVertexCorners(v))
+  {
+    const int t = corner / 3, k = corner % 3;
+    const Triangle& tri = mesh.GetTriangle(t);
+    for (int j = 1; j <= 2; ++j)
+    {
+      const int u = tri[(k + j) % 3];
+      this->Relax(u, d + ::boolsurf::Distance(pv, mesh.GetPosition(u)), FromVertex, v, t);
+    }
+    if (!this->PseudoSource[v] && v != this->ForcedVertex)
+    {
+      continue;
+    }
+    const int local = (k + 1) % 3; // the edge opposite v
+    const int next = mesh.GetNeighbor(t, local);
+    if (next < 0)
+    {
+      continue;
+    }
+    const int edge = mesh.GetEdgeId(t, local);
+    const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
+    const Vec3 p0 = mesh.GetPosition(ev[0]);
+    const Vec3 axis = mesh.GetPosition(ev[1]) - p0;
+    const double length = Length(axis);
+    const Vec3 ex = (1.0 / length) * axis;
+    const double x = Dot(pv - p0, ex);
+    Window w;
+    w.Edge = edge;
+    w.Face = next;
+    w.Origin = t;
+    w.Parent = v;
+    w.Kind = FromVertex;
+    w.Sigma = d;
+    w.Sx = x;
+    w.Sy = -Length(pv - p0 - x * ex);
+    w.B0 = 0.0;
+    w.B1 = length;
+    this->AddWindow(w);
+  }
+}
+
+//------------------------------------------------------------------------------
+double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
+  const std::vector<int>& startTriangles,
+  const CanonicalPoint& end,
+  const std::vector<int>& endTriangles,
+  std::vector<int>& strip)
+{
+  const TriangleMesh& mesh = this->Mesh;
+  this->Prepare();
+  this->ResetMarks();
+  this->Windows.clear();
+  this->Heap.clear();
+  this->Target = PositionOf(mesh, end);
+  this->End = end;
+  this->Best = Infinity;
+  this->BestKind = this->BestId = -1;
+  this->ForcedVertex = -1;
+  this->LastVertexCount = 0;
+  this->BudgetExceeded = false;
+  strip.clear();
+  for (int t : endTriangles)
+  {
+    this->EndMark[t] = this->CurrentStamp;
+  }
+
+  const Vec3 source = PositionOf(mesh, start);
+  if (start.Location == PointLocation::Vertex)
+  {
+    this->ForcedVertex = start.Id;
+    this->Relax(start.Id, 0.0, FromSource, -1, startTriangles.front());
+  }
+  else
+  {
+    for (int t : startTriangles)
+    {
+      const Triangle& tri = mesh.GetTriangle(t);
+      const std::array<double, 3> weights = WeightsInTriangle(mesh, start, t);
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Relax(
+          tri[k], ::boolsurf::Distance(source, mesh.GetPosition(tri[k])), FromSource, -1, t);
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const int next = mesh.GetNeighbor(t, k);
+        if (next < 0 || weights[(k + 2) % 3] <= 0.0)
+        {
+          continue; // boundary, or the start lies on this edge
+        }
+        const int edge = mesh.GetEdgeId(t, k);
+        const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
+        const Vec3 p0 = mesh.GetPosition(ev[0]);
+        const Vec3 axis = mesh.GetPosition(ev[1]) - p0;
+        const double length = Length(axis);
+        const Vec3 ex = (1.0 / length) * axis;
+        const double x = Dot(source - p0, ex);
+        Window w;
+        w.Edge = edge;
+        w.Face = next;
+        w.Origin = t;
+        w.Parent = t;
+        w.Kind = FromSource;
+        w.Sigma = 0.0;
+        w.Sx = x;
+        w.Sy = -Length(source - p0 - x * ex);
+        w.B0 = 0.0;
+        w.B1 = length;
+        this->AddWindow(w);
+      }
+    }
+  }
+
+  while (!this->Heap.empty())
+  {
+    std::pop_heap(this->Heap.begin(), this->Heap.end());
+    const Event e = this->Heap.back();
+    this->Heap.pop_back();
+    if (e.Key >= this->Best)
+    {
+      break;
+    }
+    if (e.Id >= 0)
+    {
+      this->Propagate(e.Id);
+      if (static_cast<int>(this->Windows.size()) > this->MaximumWindows)
+      {
+        this->BudgetExceeded = true;
+        return -1.0;
+      }
+      continue;
+    }
+    const int v = -e.Id - 1;
+    if (e.D != this->Distance[v])
+    {
+      continue; // stale
+    }
+    ++this->LastVertexCount;
+    for (int t : endTriangles)
+    {
+      if (CornerOf(mesh.GetTriangle(t), v) >= 0)
+      {
+        this->OfferTarget(
+          e.D + ::boolsurf::Distance(mesh.GetPosition(v), this->Target), FromVertex, v);
+        break;
+      }
+    }
+    this->EmitFromVertex(v);
+  }
+  if (this->BestKind < 0 || !this->Backtrack(strip))
+  {
+    return -1.0;
+  }
+  return this->Best;
+}
+
+//------------------------------------------------------------------------------
+// Triangles around v from `from` (excluded) to `to` (included), the shorter way round.
+bool ExactGeodesicSearch::FanWalk(int v, int from, int to, std::vector<int>& out) const
+{
+  if (from == to)
+  {
+    return true;
+  }
+  const TriangleMesh& mesh = this->Mesh;
+  const Triangle& tri = mesh.GetTriangle(from);
+  const int kv = CornerOf(tri, v);
+  if (kv < 0)
+  {
+    return false;
+  }
+  const int limit = mesh.GetVertexCorners(v).size();
+  thread_local std::vector<int> ways[2];
+  int bestWay = -1;
+  for (int way = 0; way < 2; ++way)
+  {
+    ways[way].clear();
+    int t = from, edge = way == 0 ? kv : (kv + 2) % 3;
+    bool reached = false;
+    for (int steps = 0; steps <= limit; ++steps)
+    {
+      const int next = mesh.GetNeighbor(t, edge);
+      if (next < 0)
+      {
+        break;
+      }
+      const int entry = mesh.GetNeighborEdge(t, edge);
+      const int kn = CornerOf(mesh.GetTriangle(next), v);
+      if (kn < 0)
+      {
+        break;
+      }
+      ways[way].push_back(next);
+      if (next == to)
+      {
+        reached = true;
+        break;
+      }
+      edge = entry == kn ? (kn + 2) % 3 : kn;
+      t = next;
+    }
+    if (reached && (bestWay < 0 || ways[way].size() < ways[bestWay].size()))
+    {
+      bestWay = way;
+    }
+  }
+  if (bestWay < 0)
+  {
+    return false;
+  }
+  out.insert(out.end(), ways[bestWay].begin(), ways[bestWay].end());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Walks the parents back from the end to the start, collecting the triangles crossed (in
+// reverse), then reverses them.
+bool ExactGeodesicSearch::Backtrack(std::vector<int>& strip)
+{
+  const TriangleMesh& mesh = this->Mesh;
+  std::vector<int>& r = strip;
+  r.clear();
+  int vertex = -1, next = -1; // vertex state: at `vertex`, the strip continues in `next`
+  int window = -1;
+  if (this->BestKind == FromWindow)
+  {
+    window = this->BestId;
+  }
+  else
+  {
+    vertex = this->BestId;
+    for (int corner : mesh.GetVertexCorners(vertex))
+    {
+      if (this->EndMark[corner / 3] == this->CurrentStamp)
+      {
+        next = corner / 3;
+        break;
+      }
+    }
+    if (next < 0)
+    {
+      return false;
+    }
+    r.push_back(next);
+  }
+  const size_t guard = 4 * this->Windows.size() + 4 * mesh.GetNumberOfVertices() + 16;
+  while (r.size() < guard)
+  {
+    if (window >= 0)
+    {
+      const Window& w = this->Windows[window];
+      if (r.empty() || r.back() != w.Face)
+      {
+        r.push_back(w.Face);
+      }
+      if (w.Kind == FromWindow)
+      {
+        window = w.Parent;
+        continue;
+      }
+      r.push_back(w.Origin);
+      if (w.Kind == FromSource)
+      {
+        break;
+      }
+      vertex = w.Parent;
+      next = w.Origin;
+      window = -1;
+      continue;
+    }
+    // Vertex state.
+    const int arrival = this->VertexArrival[vertex];
+    if (!this->FanWalk(vertex, next, arrival, r))
+    {
+      return false;
+    }
+    const int kind = this->VertexKind[vertex];
+    if (kind == FromSource)
+    {
+      break;
+    }
+    if (kind == FromWindow)
+    {
+      window = this->VertexParent[vertex]; // its Face is `arrival`, already in r
+      continue;
+    }
+    next = arrival;
+    vertex = this->VertexParent[vertex];
+  }
+  std::reverse(r.begin(), r.end());
+  return true;
+}
+
+} // namespace boolsurf

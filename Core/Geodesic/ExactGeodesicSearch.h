@@ -1,0 +1,119 @@
+// Exact polyhedral shortest path between two surface points, by window propagation.
+//
+// Chen-Han's continuous Dijkstra with the filtering of Xin and Wang ("ICH"): a window is an
+// interval of a mesh edge lit by one (pseudo-)source unfolded into the plane of the edge's
+// next triangle; windows cross triangles and split at the opposite vertex. Saddle vertices
+// (angle sum >= 2 pi) and boundary vertices become new sources. A window is dropped when a
+// known path through one of its edge's end vertices already reaches every point of it
+// sooner (sound: only provably longer paths are dropped).
+//
+// Output-sensitive: events are ordered A*-style by a lower bound of any path through them
+// (the event's own shortest distance plus the straight 3D distance to the target), and the
+// search stops when that bound reaches the best path to the target found so far, so a short
+// edge only lights the triangles around it. The result is the sequence of triangles the
+// exact shortest path crosses (a strip, turning around the saddle vertices it passes); the
+// caller straightens it with the funnel algorithm, which gives the exact length.
+#ifndef boolsurf_ExactGeodesicSearch_h
+#define boolsurf_ExactGeodesicSearch_h
+
+#include "Mesh/SurfacePoint.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace boolsurf
+{
+
+class ExactGeodesicSearch
+{
+public:
+  /// `mesh` must outlive the search. Per-vertex angle sums are computed on first use.
+  explicit ExactGeodesicSearch(const TriangleMesh& mesh);
+
+  /// Exact shortest distance from `start` to `end` (normalized canonical points whose
+  /// triangles are `startTriangles` / `endTriangles`, sharing no triangle), and in `strip` a
+  /// chain of edge-adjacent triangles from a start triangle to an end triangle that holds a
+  /// shortest path. Returns -1 when no path was found (different components, non-manifold
+  /// fan on the way, or the window budget exhausted).
+  double FindStrip(const CanonicalPoint& start,
+    const std::vector<int>& startTriangles,
+    const CanonicalPoint& end,
+    const std::vector<int>& endTriangles,
+    std::vector<int>& strip);
+
+  /// Windows created by the last search (work measure for benchmarks).
+  int GetLastWindowCount() const { return static_cast<int>(this->Windows.size()); }
+  /// Vertex events settled by the last search.
+  int GetLastVertexCount() const { return this->LastVertexCount; }
+  /// Give up (FindStrip returns -1) beyond this many windows (72 bytes each); default 2^20
+  /// (~75 MB, about a second): enough for any pair on meshes up to ~30k triangles (kitten's
+  /// far pairs need up to 0.8M) and for short paths on any mesh.
+  void SetMaximumWindows(int n) { this->MaximumWindows = n; }
+  int GetMaximumWindows() const { return this->MaximumWindows; }
+  /// True when the last FindStrip stopped at the window budget.
+  bool GetLastBudgetExceeded() const { return this->BudgetExceeded; }
+
+private:
+  enum ParentKind : int
+  {
+    FromSource = 0,
+    FromVertex = 1,
+    FromWindow = 2,
+  };
+  struct Window
+  {
+    int Edge;      // mesh edge
+    int Face;      // triangle the window lights (across Edge from Origin)
+    int Origin;    // triangle on the source side
+    int Parent;    // window or vertex id (see Kind)
+    int Kind;      // ParentKind
+    double B0, B1; // lit interval, distances from the edge's canonical vertex 0
+    double Sx, Sy; // source in the edge frame: vertex 0 at (0,0), vertex 1 at (L,0),
+                   // Face on y > 0, so Sy <= 0
+    double Sigma;  // distance from the start to the source
+  };
+  struct Event
+  {
+    double Key;
+    int Id;   // window id, or -(vertex + 1)
+    double D; // vertex events: distance when pushed (stale check)
+    bool operator<(const Event& o) const { return this->Key > o.Key; }
+  };
+
+  void Prepare();
+  void ResetMarks();
+  void Relax(int v, double d, int kind, int parent, int arrival);
+  bool Dominated(const Window& w, const std::array<int, 2>& ev, double length) const;
+  void AddWindow(const Window& w);
+  void Propagate(int id);
+  void EmitFromVertex(int v);
+  bool Backtrack(std::vector<int>& strip);
+  bool FanWalk(int v, int from, int to, std::vector<int>& out) const;
+  void OfferTarget(double length, int kind, int id);
+
+  const TriangleMesh& Mesh;
+  bool Prepared = false;
+  std::vector<char> PseudoSource; // saddle or boundary vertex
+  int MaximumWindows = 1 << 20;
+  bool BudgetExceeded = false;
+
+  // Per-vertex labels, valid where Stamp == CurrentStamp.
+  std::vector<double> Distance;
+  std::vector<int> VertexKind, VertexParent, VertexArrival;
+  std::vector<std::uint32_t> Stamp;
+  std::vector<std::uint32_t> EndMark; // == CurrentStamp: triangle holds the end point
+  std::uint32_t CurrentStamp = 0;
+
+  std::vector<Window> Windows;
+  std::vector<Event> Heap;
+  Vec3 Target;
+  CanonicalPoint End;
+  int ForcedVertex = -1; // the start, when it is a vertex: a source whatever its angle
+  double Best = 0;
+  int BestKind = -1, BestId = -1;
+  int LastVertexCount = 0;
+};
+
+} // namespace boolsurf
+
+#endif
