@@ -64,6 +64,7 @@ struct vtkBoolSurf::Internals
     vtkPolyData* Curves = nullptr;
     vtkMTimeType CurvesTime = 0;
     int Resolution = 0;
+    vtkTypeBool ExactGeodesics = 1;
     double ProjectionTolerance = 0;
     int ZeroCellMode = 0;
     std::array<double, 3> ZeroCellPoint{};
@@ -76,6 +77,7 @@ struct vtkBoolSurf::Internals
                this->Curves,
                this->CurvesTime,
                this->Resolution,
+               this->ExactGeodesics,
                this->ProjectionTolerance,
                this->ZeroCellMode,
                this->ZeroCellPoint,
@@ -85,6 +87,7 @@ struct vtkBoolSurf::Internals
           o.Curves,
           o.CurvesTime,
           o.Resolution,
+          o.ExactGeodesics,
           o.ProjectionTolerance,
           o.ZeroCellMode,
           o.ZeroCellPoint,
@@ -151,6 +154,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
     curvesInput,
     curvesInput ? curvesInput->GetMTime() : 0,
     this->Resolution,
+    this->ExactGeodesics,
     this->ProjectionTolerance,
     this->ZeroCellMode,
     { this->ZeroCellPoint[0], this->ZeroCellPoint[1], this->ZeroCellPoint[2] },
@@ -221,6 +225,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   boolsurf::TraceOptions traceOptions;
   traceOptions.Resolution = this->Resolution;
   traceOptions.ProjectionTolerance = this->ProjectionTolerance;
+  traceOptions.ExactGeodesics = this->ExactGeodesics != 0;
   std::vector<std::string> notes;
   const bool ok = boolsurf::TraceControlCurves(
     in.Surface, curvesInput, traceOptions, nullptr, in.Curves, nullptr, problems, notes);
@@ -382,6 +387,7 @@ void vtkBoolSurf::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "ExactGeodesics: " << this->ExactGeodesics << "\n";
   os << indent << "Operation: " << this->Operation << "\n";
   os << indent << "ShapeA: " << this->ShapeA << " ShapeB: " << this->ShapeB << "\n";
   os << indent << "Expression: " << this->Expression << "\n";

@@ -61,6 +61,9 @@ public:
   vtkGetMacro(Resolution, int);
   vtkSetClampMacro(ProjectionTolerance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(ProjectionTolerance, double);
+  vtkSetMacro(ExactGeodesics, vtkTypeBool);
+  vtkGetMacro(ExactGeodesics, vtkTypeBool);
+  vtkBooleanMacro(ExactGeodesics, vtkTypeBool);
   ///@}
 
   ///@{
@@ -111,6 +114,7 @@ protected:
     vtkInformationVector* outputVector) override;
 
   int Resolution = 4;
+  vtkTypeBool ExactGeodesics = 1;
   double ProjectionTolerance = 0.01;
   int ZeroCellMode = 0;
   double ZeroCellPoint[3] = { 0, 0, 0 };

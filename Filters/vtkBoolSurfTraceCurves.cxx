@@ -58,6 +58,7 @@ int vtkBoolSurfTraceCurves::RequestData(vtkInformation* vtkNotUsed(request),
   boolsurf::TraceOptions options;
   options.Resolution = this->Resolution;
   options.ProjectionTolerance = this->ProjectionTolerance;
+  options.ExactGeodesics = this->ExactGeodesics != 0;
   if (problems.empty())
   {
     boolsurf::TraceControlCurves(
@@ -89,5 +90,6 @@ void vtkBoolSurfTraceCurves::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "ExactGeodesics: " << this->ExactGeodesics << "\n";
   os << indent << "ProjectionTolerance: " << this->ProjectionTolerance << "\n";
 }

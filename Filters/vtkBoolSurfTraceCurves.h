@@ -73,6 +73,15 @@ public:
   vtkGetMacro(ProjectionTolerance, double);
   ///@}
 
+  ///@{
+  /// Trace each geodesic leg as the exact shortest path between its two points (default on).
+  /// Off, a leg is locally shortest (the straightened shortest edge path): faster on long
+  /// legs of large meshes, but it may pass on the wrong side of a bump, saddle or handle.
+  vtkSetMacro(ExactGeodesics, vtkTypeBool);
+  vtkGetMacro(ExactGeodesics, vtkTypeBool);
+  vtkBooleanMacro(ExactGeodesics, vtkTypeBool);
+  ///@}
+
 protected:
   vtkBoolSurfTraceCurves();
   ~vtkBoolSurfTraceCurves() override;
@@ -84,6 +93,7 @@ protected:
 
   int Resolution = 4;
   double ProjectionTolerance = 0.01;
+  vtkTypeBool ExactGeodesics = 1;
 
 private:
   vtkBoolSurfTraceCurves(const vtkBoolSurfTraceCurves&) = delete;

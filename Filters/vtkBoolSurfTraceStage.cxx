@@ -141,6 +141,7 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
     notes);
   CurveTracer& tracer = cache.GetTracer();
   tracer.SetResolution(options.Resolution);
+  tracer.GetPathSolver().SetUseExactStrip(options.ExactGeodesics);
   std::vector<CurveTrace> traces(controls.size());
   for (size_t c = 0; c < controls.size(); ++c)
   {
