@@ -1,0 +1,534 @@
+#include "Selection/BoundarySampledCurves.h"
+
+#include "Arrangement/Arrangement.h"
+
+// GCC 12 reports a false "may be used uninitialized" inside Boost's edge iterator (its
+// boost::optional end marker) wherever the max flow is instantiated.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <queue>
+#include <set>
+#include <unordered_map>
+
+namespace boolsurf
+{
+namespace
+{
+
+using GraphTraits = boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS>;
+
+struct FlowEdge
+{
+  double Capacity = 0;
+  double Residual = 0;
+  GraphTraits::edge_descriptor Reverse;
+};
+
+using FlowGraph = boost::adjacency_list<boost::vecS,
+  boost::vecS,
+  boost::directedS,
+  boost::no_property,
+  FlowEdge>;
+
+/// Per patch, how the samples on it constrain the cut.
+struct PatchSamples
+{
+  int Left = 0, Right = 0; ///< samples asking for the left / right cell inside
+};
+
+/// The (a, c, d) energy of BSC as a graph: vertex c is cell c, then source (inside) and sink.
+class CutProblem
+{
+public:
+  CutProblem(const BscInput& input, const std::vector<PatchSamples>& samples)
+    : Input(input)
+    , Samples(samples)
+  {
+    double lengths = 0, penalties = 0;
+    for (const BscPatch& p : input.Patches)
+    {
+      lengths += IsSeparatingPatch(p) ? std::max(0.0, p.Length) : 0.0;
+    }
+    // A sample off the boundary costs more than all boundary length together, so the cut keeps
+    // as many samples as it can before it minimizes length.
+    this->Penalty = lengths + 1;
+    for (std::size_t i = 0; i < input.Patches.size(); ++i)
+    {
+      penalties += this->Penalty * (samples[i].Left + samples[i].Right) + 2 * lengths;
+    }
+    // Larger than any finite cut: every finite capacity together.
+    this->Infinity = 4 * (penalties + lengths) + 1;
+  }
+
+  /// Minimum cut with the patches in `forbidden` (sorted) kept off the boundary: selected cells
+  /// and the cut's energy.
+  double Cut(const std::vector<int>& forbidden, std::vector<char>& selected) const
+  {
+    const BscInput& in = this->Input;
+    const int n = in.NumberOfCells;
+    FlowGraph g(n + 2);
+    const int source = n, sink = n + 1;
+    auto addPair = [&](int u, int v, double uv, double vu)
+    {
+      const auto e1 = boost::add_edge(u, v, g).first;
+      const auto e2 = boost::add_edge(v, u, g).first;
+      g[e1].Capacity = uv;
+      g[e2].Capacity = vu;
+      g[e1].Reverse = e2;
+      g[e2].Reverse = e1;
+    };
+    for (int i = 0; i < static_cast<int>(in.Patches.size()); ++i)
+    {
+      const BscPatch& p = in.Patches[i];
+      if (!IsSeparatingPatch(p))
+      {
+        continue;
+      }
+      const double w = std::max(0.0, p.Length);
+      const PatchSamples& s = this->Samples[i];
+      if (std::binary_search(forbidden.begin(), forbidden.end(), i) || (s.Left > 0 && s.Right > 0))
+      {
+        // Both sides must agree: forbidden pieces, and patches sampled both ways.
+        addPair(p.LeftCell, p.RightCell, this->Infinity, this->Infinity);
+      }
+      else if (s.Left + s.Right > 0)
+      {
+        // E(in, out) over (inside, outside) cells: E(1,0) = w, E(0,0) = E(1,1) = n * Penalty,
+        // E(0,1) = infinite; as unary terms plus one infinite arc outside -> inside.
+        const int inside = s.Left > 0 ? p.LeftCell : p.RightCell;
+        const int outside = s.Left > 0 ? p.RightCell : p.LeftCell;
+        const double keep = this->Penalty * (s.Left + s.Right) - w;
+        addPair(source, inside, keep, 0);
+        addPair(outside, sink, keep, 0);
+        addPair(outside, inside, this->Infinity, 0);
+      }
+      else
+      {
+        addPair(p.LeftCell, p.RightCell, w, w);
+      }
+    }
+    std::vector<boost::default_color_type> color(n + 2);
+    std::vector<GraphTraits::edge_descriptor> predecessor(n + 2);
+    std::vector<long> distance(n + 2);
+    const auto index = boost::get(boost::vertex_index, g);
+    const double flow = boost::boykov_kolmogorov_max_flow(g,
+      boost::get(&FlowEdge::Capacity, g),
+      boost::get(&FlowEdge::Residual, g),
+      boost::get(&FlowEdge::Reverse, g),
+      boost::make_iterator_property_map(predecessor.begin(), index),
+      boost::make_iterator_property_map(color.begin(), index),
+      boost::make_iterator_property_map(distance.begin(), index),
+      index,
+      source,
+      sink);
+    // The source tree at the end is the set reachable from the source in the residual graph:
+    // the smallest minimum-cut side (free cells stay outside).
+    selected.assign(n, 0);
+    for (int c = 0; c < n; ++c)
+    {
+      selected[c] = color[c] == boost::color_traits<boost::default_color_type>::black() ? 1 : 0;
+    }
+    return flow;
+  }
+
+private:
+  const BscInput& Input;
+  const std::vector<PatchSamples>& Samples;
+  double Penalty = 1, Infinity = 1;
+};
+
+bool OnBoundary(const BscPatch& p, const std::vector<char>& selected)
+{
+  return IsSeparatingPatch(p) && selected[p.LeftCell] != selected[p.RightCell];
+}
+
+/// The connected pieces (patches of one curve sharing end points) of the boundary of
+/// `selected` that hold no sample, each as sorted patch ids, ordered by their lowest patch.
+std::vector<std::vector<int>> UnsampledPieces(const BscInput& in,
+  const std::vector<PatchSamples>& samples,
+  const std::vector<char>& selected)
+{
+  const int np = static_cast<int>(in.Patches.size());
+  std::vector<int> parent(np, -1);
+  auto find = [&](int x)
+  {
+    while (parent[x] != x)
+    {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  };
+  std::unordered_map<long long, int> endOwner;
+  for (int i = 0; i < np; ++i)
+  {
+    const BscPatch& p = in.Patches[i];
+    if (!OnBoundary(p, selected))
+    {
+      continue;
+    }
+    parent[i] = i;
+    for (int end : { p.FirstPoint, p.LastPoint })
+    {
+      const long long key = (static_cast<long long>(p.Curve) << 32) ^ static_cast<unsigned>(end);
+      auto it = endOwner.emplace(key, i).first;
+      const int a = find(it->second), b = find(i);
+      if (a != b)
+      {
+        parent[std::max(a, b)] = std::min(a, b);
+      }
+    }
+  }
+  std::vector<char> sampled(np, 0);
+  for (int i = 0; i < np; ++i)
+  {
+    if (parent[i] >= 0 && samples[i].Left + samples[i].Right > 0)
+    {
+      sampled[find(i)] = 1;
+    }
+  }
+  std::vector<std::vector<int>> pieces;
+  std::vector<int> pieceOf(np, -1);
+  for (int i = 0; i < np; ++i)
+  {
+    if (parent[i] < 0)
+    {
+      continue;
+    }
+    const int root = find(i);
+    if (sampled[root])
+    {
+      continue;
+    }
+    if (pieceOf[root] < 0)
+    {
+      pieceOf[root] = static_cast<int>(pieces.size());
+      pieces.emplace_back();
+    }
+    pieces[pieceOf[root]].push_back(i);
+  }
+  return pieces;
+}
+
+std::vector<int> Merged(const std::vector<int>& a, const std::vector<int>& b)
+{
+  std::vector<int> out;
+  std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+  return out;
+}
+
+struct SearchState
+{
+  double Energy = 0;
+  int Order = 0;
+  std::vector<int> Forbidden;
+  std::vector<char> Selected;
+};
+
+struct WorseState
+{
+  bool operator()(const SearchState& a, const SearchState& b) const
+  {
+    if (a.Energy != b.Energy)
+    {
+      return a.Energy > b.Energy;
+    }
+    if (a.Forbidden.size() != b.Forbidden.size())
+    {
+      return a.Forbidden.size() > b.Forbidden.size();
+    }
+    return a.Order > b.Order;
+  }
+};
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool SelectBoundarySampledCells(const BscInput& in, BscResult& result, std::string& error)
+{
+  result = BscResult();
+  const int np = static_cast<int>(in.Patches.size());
+  for (const BscPatch& p : in.Patches)
+  {
+    if (p.LeftCell >= in.NumberOfCells || p.RightCell >= in.NumberOfCells)
+    {
+      error = "a patch names cell " + std::to_string(std::max(p.LeftCell, p.RightCell)) +
+        " of an arrangement of " + std::to_string(in.NumberOfCells) + " cells";
+      return false;
+    }
+  }
+  std::vector<PatchSamples> samples(np);
+  for (std::size_t k = 0; k < in.Samples.size(); ++k)
+  {
+    const BscSample& s = in.Samples[k];
+    if (s.Patch < 0 || s.Patch >= np)
+    {
+      error = "sample " + std::to_string(k) + " names patch " + std::to_string(s.Patch) +
+        " of " + std::to_string(np);
+      return false;
+    }
+    if (IsSeparatingPatch(in.Patches[s.Patch]))
+    {
+      (s.LeftInside ? samples[s.Patch].Left : samples[s.Patch].Right)++;
+    }
+  }
+
+  const CutProblem problem(in, samples);
+  std::priority_queue<SearchState, std::vector<SearchState>, WorseState> open;
+  std::set<std::vector<int>> seen;
+  int order = 0;
+  auto push = [&](std::vector<int> forbidden)
+  {
+    if (!seen.insert(forbidden).second)
+    {
+      return;
+    }
+    SearchState s;
+    s.Energy = problem.Cut(forbidden, s.Selected);
+    s.Order = order++;
+    s.Forbidden = std::move(forbidden);
+    ++result.Cuts;
+    open.push(std::move(s));
+  };
+  push({});
+  SearchState best;
+  while (true)
+  {
+    best = open.top();
+    open.pop();
+    std::vector<std::vector<int>> pieces = UnsampledPieces(in, samples, best.Selected);
+    if (pieces.empty())
+    {
+      break;
+    }
+    if (result.Cuts >= in.MaxSearchStates)
+    {
+      // Greedy end: forbid every unsampled piece at once until none is left. Each round
+      // forbids at least one more patch, so this ends.
+      result.Greedy = true;
+      while (!pieces.empty())
+      {
+        for (const std::vector<int>& piece : pieces)
+        {
+          best.Forbidden = Merged(best.Forbidden, piece);
+        }
+        best.Energy = problem.Cut(best.Forbidden, best.Selected);
+        ++result.Cuts;
+        pieces = UnsampledPieces(in, samples, best.Selected);
+      }
+      break;
+    }
+    for (const std::vector<int>& piece : pieces)
+    {
+      push(Merged(best.Forbidden, piece));
+    }
+  }
+
+  result.Selected = std::move(best.Selected);
+  result.ForbiddenPatches = std::move(best.Forbidden);
+  result.SampleOnBoundary.assign(in.Samples.size(), 0);
+  for (std::size_t k = 0; k < in.Samples.size(); ++k)
+  {
+    const BscSample& s = in.Samples[k];
+    const BscPatch& p = in.Patches[s.Patch];
+    const int inside = s.LeftInside ? p.LeftCell : p.RightCell;
+    result.SampleOnBoundary[k] = OnBoundary(p, result.Selected) && result.Selected[inside];
+  }
+  for (const BscPatch& p : in.Patches)
+  {
+    result.BoundaryLength += OnBoundary(p, result.Selected) ? p.Length : 0.0;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+PatchSnapper::PatchSnapper(const std::vector<Vec3>& positions,
+  const std::vector<const std::vector<int>*>& patchPoints)
+  : Positions(positions)
+  , Points(patchPoints)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  this->BoxMin.assign(patchPoints.size(), Vec3{ inf, inf, inf });
+  this->BoxMax.assign(patchPoints.size(), Vec3{ -inf, -inf, -inf });
+  for (std::size_t i = 0; i < patchPoints.size(); ++i)
+  {
+    for (int p : *patchPoints[i])
+    {
+      const Vec3 x = positions[p];
+      Vec3& lo = this->BoxMin[i];
+      Vec3& hi = this->BoxMax[i];
+      lo = { std::min(lo.x, x.x), std::min(lo.y, x.y), std::min(lo.z, x.z) };
+      hi = { std::max(hi.x, x.x), std::max(hi.y, x.y), std::max(hi.z, x.z) };
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+PatchSnap PatchSnapper::Snap(Vec3 query, double tolerance) const
+{
+  PatchSnap best;
+  double bestD2 = tolerance * tolerance;
+  for (std::size_t i = 0; i < this->Points.size(); ++i)
+  {
+    // Distance to the patch's box: a lower bound of its segments' distances.
+    const Vec3 lo = this->BoxMin[i], hi = this->BoxMax[i];
+    const double dx = std::max({ lo.x - query.x, 0.0, query.x - hi.x });
+    const double dy = std::max({ lo.y - query.y, 0.0, query.y - hi.y });
+    const double dz = std::max({ lo.z - query.z, 0.0, query.z - hi.z });
+    if (dx * dx + dy * dy + dz * dz > bestD2)
+    {
+      continue;
+    }
+    const std::vector<int>& pts = *this->Points[i];
+    for (std::size_t s = 0; s + 1 < pts.size(); ++s)
+    {
+      const Vec3 a = this->Positions[pts[s]], b = this->Positions[pts[s + 1]];
+      const Vec3 ab = b - a;
+      const double len2 = Dot(ab, ab);
+      double t = len2 > 0 ? Dot(query - a, ab) / len2 : 0;
+      t = std::min(1.0, std::max(0.0, t));
+      const Vec3 d = query - (a + t * ab);
+      const double d2 = Dot(d, d);
+      // Strictly closer wins: ties keep the lower patch and segment.
+      if (d2 < bestD2 || (best.Patch < 0 && d2 == bestD2))
+      {
+        bestD2 = d2;
+        best.Patch = static_cast<int>(i);
+        best.Segment = static_cast<int>(s);
+      }
+    }
+  }
+  best.Distance = best.Patch >= 0 ? std::sqrt(bestD2) : 0;
+  return best;
+}
+
+//------------------------------------------------------------------------------
+int SideOfDirection(Vec3 direction, Vec3 tangent, Vec3 normal)
+{
+  const Vec3 left = Cross(normal, tangent);
+  const double scale = Length(direction) * Length(left);
+  const double s = Dot(direction, left);
+  if (!(scale > 0) || !std::isfinite(s) || std::abs(s) <= 1e-9 * scale)
+  {
+    return 0;
+  }
+  return s > 0 ? 1 : -1;
+}
+
+//------------------------------------------------------------------------------
+bool SnapSamples(const PatchSnapper& snapper,
+  const std::vector<SampleQuery>& queries,
+  double tolerance,
+  std::vector<PatchSnap>& snaps,
+  std::string& error)
+{
+  snaps.assign(queries.size(), PatchSnap());
+  for (std::size_t k = 0; k < queries.size(); ++k)
+  {
+    const SampleQuery& q = queries[k];
+    const std::string name = "sample " + std::to_string(k);
+    if (!IsFinite(q.Position))
+    {
+      error = name + ": its position is not a finite number (NaN or infinite)";
+      return false;
+    }
+    if (!IsFinite(q.Direction))
+    {
+      error = name + ": its Direction is not a finite number (NaN or infinite)";
+      return false;
+    }
+    if (!(Length(q.Direction) > 0))
+    {
+      error = name + ": its Direction has zero length, so it names no side";
+      return false;
+    }
+    snaps[k] = snapper.Snap(q.Position, tolerance);
+    if (snaps[k].Patch < 0)
+    {
+      error = name + " at (" + std::to_string(q.Position.x) + ", " +
+        std::to_string(q.Position.y) + ", " + std::to_string(q.Position.z) +
+        ") is farther than the tolerance " + std::to_string(tolerance) + " from every patch";
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<BscPatch> BscPatchesOf(const Arrangement& arrangement)
+{
+  std::vector<BscPatch> out(arrangement.Patches.size());
+  for (std::size_t i = 0; i < out.size(); ++i)
+  {
+    const ArrangementPatch& p = arrangement.Patches[i];
+    BscPatch& b = out[i];
+    b.LeftCell = p.Closed ? p.LeftCell : -1; // open curves clip, they bound nothing
+    b.RightCell = p.Closed ? p.RightCell : -1;
+    b.Curve = p.Curve;
+    b.Length = p.Length;
+    if (!p.Points.empty())
+    {
+      b.FirstPoint = p.Points.front();
+      b.LastPoint = p.Points.back();
+    }
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+bool SelectBySamples(const Arrangement& arr,
+  const std::vector<SampleQuery>& queries,
+  double tolerance,
+  int maxSearchStates,
+  std::vector<PatchSnap>& snaps,
+  BscResult& result,
+  std::string& error)
+{
+  std::vector<const std::vector<int>*> points;
+  for (const ArrangementPatch& p : arr.Patches)
+  {
+    points.push_back(&p.Points);
+  }
+  const PatchSnapper snapper(arr.Positions, points);
+  if (!SnapSamples(snapper, queries, tolerance, snaps, error))
+  {
+    return false;
+  }
+  std::vector<char> wanted(arr.Positions.size(), 0);
+  for (const PatchSnap& s : snaps)
+  {
+    wanted[(*points[s.Patch])[s.Segment]] = 1;
+    wanted[(*points[s.Patch])[s.Segment + 1]] = 1;
+  }
+  std::vector<Vec3> normals;
+  if (!queries.empty())
+  {
+    WantedPointNormals(
+      arr.Triangles.size(),
+      [&](std::size_t t, int k) { return arr.Triangles[t][k]; },
+      arr.Positions,
+      wanted,
+      normals);
+  }
+  BscInput input;
+  input.NumberOfCells = arr.NumberOfCells;
+  input.Patches = BscPatchesOf(arr);
+  input.MaxSearchStates = maxSearchStates;
+  if (!OrientSamples(
+        arr.Positions, points, queries, snaps, [&](int p) { return normals[p]; }, input.Samples,
+        error))
+  {
+    return false;
+  }
+  return SelectBoundarySampledCells(input, result, error);
+}
+
+} // namespace boolsurf
