@@ -50,8 +50,8 @@ bool ReadSampleQueries(vtkPolyData* samples,
     {
       const double t = tid->GetComponent(k, 0);
       const double u = uv->GetComponent(k, 0), v = uv->GetComponent(k, 1);
-      if (!(t >= 0 && t < mesh->GetNumberOfTriangles()) || !std::isfinite(u) ||
-        !std::isfinite(v) || !mesh->IsUsable(static_cast<int>(t)))
+      if (!(t >= 0 && t < mesh->GetNumberOfTriangles()) || !std::isfinite(u) || !std::isfinite(v) ||
+        !mesh->IsUsable(static_cast<int>(t)))
       {
         error = "sample " + std::to_string(k) + ": TriangleId " + std::to_string(t) +
           " / Barycentric is not a point of the surface";

@@ -32,11 +32,8 @@ struct FlowEdge
   GraphTraits::edge_descriptor Reverse;
 };
 
-using FlowGraph = boost::adjacency_list<boost::vecS,
-  boost::vecS,
-  boost::directedS,
-  boost::no_property,
-  FlowEdge>;
+using FlowGraph =
+  boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, boost::no_property, FlowEdge>;
 
 /// Per patch, how the samples on it constrain the cut.
 struct PatchSamples
@@ -271,8 +268,8 @@ bool SelectBoundarySampledCells(const BscInput& in, BscResult& result, std::stri
     const BscSample& s = in.Samples[k];
     if (s.Patch < 0 || s.Patch >= np)
     {
-      error = "sample " + std::to_string(k) + " names patch " + std::to_string(s.Patch) +
-        " of " + std::to_string(np);
+      error = "sample " + std::to_string(k) + " names patch " + std::to_string(s.Patch) + " of " +
+        std::to_string(np);
       return false;
     }
     if (IsSeparatingPatch(in.Patches[s.Patch]))
@@ -453,9 +450,9 @@ bool SnapSamples(const PatchSnapper& snapper,
     snaps[k] = snapper.Snap(q.Position, tolerance);
     if (snaps[k].Patch < 0)
     {
-      error = name + " at (" + std::to_string(q.Position.x) + ", " +
-        std::to_string(q.Position.y) + ", " + std::to_string(q.Position.z) +
-        ") is farther than the tolerance " + std::to_string(tolerance) + " from every patch";
+      error = name + " at (" + std::to_string(q.Position.x) + ", " + std::to_string(q.Position.y) +
+        ", " + std::to_string(q.Position.z) + ") is farther than the tolerance " +
+        std::to_string(tolerance) + " from every patch";
       return false;
     }
   }
@@ -523,7 +520,12 @@ bool SelectBySamples(const Arrangement& arr,
   input.Patches = BscPatchesOf(arr);
   input.MaxSearchStates = maxSearchStates;
   if (!OrientSamples(
-        arr.Positions, points, queries, snaps, [&](int p) { return normals[p]; }, input.Samples,
+        arr.Positions,
+        points,
+        queries,
+        snaps,
+        [&](int p) { return normals[p]; },
+        input.Samples,
         error))
   {
     return false;

@@ -65,8 +65,8 @@ struct BscResult
   std::vector<char> SampleOnBoundary; ///< per sample: 1 kept (on the boundary, right side)
   std::vector<int> ForbiddenPatches;  ///< unsampled patches the search kept off the boundary
   double BoundaryLength = 0;
-  int Cuts = 0;           ///< minimum cuts computed
-  bool Greedy = false;    ///< the search hit MaxSearchStates and finished greedily
+  int Cuts = 0;        ///< minimum cuts computed
+  bool Greedy = false; ///< the search hit MaxSearchStates and finished greedily
 };
 
 /// Selects the cells; false with a message naming the sample whose patch is out of range.
@@ -82,7 +82,7 @@ inline bool IsSeparatingPatch(const BscPatch& p)
 struct PatchSnap
 {
   int Patch = -1;
-  int Segment = -1;   ///< segment index along the patch (points Segment, Segment + 1)
+  int Segment = -1; ///< segment index along the patch (points Segment, Segment + 1)
   double Distance = 0;
 };
 
@@ -144,8 +144,8 @@ bool OrientSamples(const std::vector<Vec3>& positions,
   {
     const std::vector<int>& pts = *patchPoints[snaps[k].Patch];
     const int a = pts[snaps[k].Segment], b = pts[snaps[k].Segment + 1];
-    const int side = SideOfDirection(
-      queries[k].Direction, positions[b] - positions[a], normalOf(a) + normalOf(b));
+    const int side =
+      SideOfDirection(queries[k].Direction, positions[b] - positions[a], normalOf(a) + normalOf(b));
     if (side == 0)
     {
       error = "sample " + std::to_string(k) + ": its Direction runs along patch " +
