@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <queue>
 #include <set>
@@ -47,7 +48,6 @@ class CutProblem
 public:
   CutProblem(const BscInput& input, const std::vector<PatchSamples>& samples)
     : Input(input)
-    , Samples(samples)
   {
     double lengths = 0, penalties = 0;
     for (const BscPatch& p : input.Patches)
@@ -57,20 +57,79 @@ public:
     // A sample off the boundary costs more than all boundary length together, so the cut keeps
     // as many samples as it can before it minimizes length.
     this->Penalty = lengths + 1;
-    for (std::size_t i = 0; i < input.Patches.size(); ++i)
+    for (const PatchSamples& s : samples)
     {
-      penalties += this->Penalty * (samples[i].Left + samples[i].Right) + 2 * lengths;
+      penalties += this->Penalty * (s.Left + s.Right);
     }
     // Larger than any finite cut: every finite capacity together.
-    this->Infinity = 4 * (penalties + lengths) + 1;
+    this->Infinity = 4 * (penalties + 2 * lengths) + 1;
+
+    // Terms are summed per cell (source and sink arcs) and per pair of cells once: many patches
+    // separate the same two cells, so the graph is as small as the cell adjacency, and a cut
+    // with forbidden patches only adds infinite capacity to their pairs. Pairs are numbered in
+    // sorted order: the same input always builds the same graph.
+    const int n = input.NumberOfCells;
+    this->FromSource.assign(n, 0.0);
+    this->ToSink.assign(n, 0.0);
+    std::map<std::pair<int, int>, std::pair<double, double>> between; // (u < v) -> (uv, vu)
+    auto addBetween = [&](int u, int v, double uv, double vu)
+    {
+      auto& c = u < v ? between[{ u, v }] : between[{ v, u }];
+      c.first += u < v ? uv : vu;
+      c.second += u < v ? vu : uv;
+    };
+    for (std::size_t i = 0; i < input.Patches.size(); ++i)
+    {
+      const BscPatch& p = input.Patches[i];
+      if (!IsSeparatingPatch(p))
+      {
+        continue;
+      }
+      const double w = std::max(0.0, p.Length);
+      const PatchSamples& s = samples[i];
+      if (s.Left > 0 && s.Right > 0)
+      {
+        // Sampled both ways: the two sides must agree.
+        addBetween(p.LeftCell, p.RightCell, this->Infinity, this->Infinity);
+      }
+      else if (s.Left + s.Right > 0)
+      {
+        // E(in, out) over (inside, outside) cells: E(1,0) = w, E(0,0) = E(1,1) = n * Penalty,
+        // E(0,1) = infinite; as unary terms plus one infinite arc outside -> inside.
+        const int inside = s.Left > 0 ? p.LeftCell : p.RightCell;
+        const int outside = s.Left > 0 ? p.RightCell : p.LeftCell;
+        const double keep = this->Penalty * (s.Left + s.Right) - w;
+        this->FromSource[inside] += keep;
+        this->ToSink[outside] += keep;
+        addBetween(outside, inside, this->Infinity, 0);
+      }
+      else
+      {
+        addBetween(p.LeftCell, p.RightCell, w, w);
+      }
+    }
+    for (const auto& [cells, caps] : between)
+    {
+      this->Pairs.push_back({ cells.first, cells.second, caps.first, caps.second });
+    }
+    this->PairOf.assign(input.Patches.size(), -1);
+    for (std::size_t i = 0; i < input.Patches.size(); ++i)
+    {
+      const BscPatch& p = input.Patches[i];
+      if (IsSeparatingPatch(p))
+      {
+        const std::pair<int, int> key{ std::min(p.LeftCell, p.RightCell),
+          std::max(p.LeftCell, p.RightCell) };
+        this->PairOf[i] = static_cast<int>(std::distance(between.begin(), between.find(key)));
+      }
+    }
   }
 
   /// Minimum cut with the patches in `forbidden` (sorted) kept off the boundary: selected cells
   /// and the cut's energy.
   double Cut(const std::vector<int>& forbidden, std::vector<char>& selected) const
   {
-    const BscInput& in = this->Input;
-    const int n = in.NumberOfCells;
+    const int n = this->Input.NumberOfCells;
     FlowGraph g(n + 2);
     const int source = n, sink = n + 1;
     auto addPair = [&](int u, int v, double uv, double vu)
@@ -82,35 +141,29 @@ public:
       g[e1].Reverse = e2;
       g[e2].Reverse = e1;
     };
-    for (int i = 0; i < static_cast<int>(in.Patches.size()); ++i)
+    for (int c = 0; c < n; ++c)
     {
-      const BscPatch& p = in.Patches[i];
-      if (!IsSeparatingPatch(p))
+      if (this->FromSource[c] > 0)
       {
-        continue;
+        addPair(source, c, this->FromSource[c], 0);
       }
-      const double w = std::max(0.0, p.Length);
-      const PatchSamples& s = this->Samples[i];
-      if (std::binary_search(forbidden.begin(), forbidden.end(), i) || (s.Left > 0 && s.Right > 0))
+      if (this->ToSink[c] > 0)
       {
-        // Both sides must agree: forbidden pieces, and patches sampled both ways.
-        addPair(p.LeftCell, p.RightCell, this->Infinity, this->Infinity);
+        addPair(c, sink, this->ToSink[c], 0);
       }
-      else if (s.Left + s.Right > 0)
+    }
+    std::vector<char> merged(this->Pairs.size(), 0);
+    for (int f : forbidden)
+    {
+      if (this->PairOf[f] >= 0)
       {
-        // E(in, out) over (inside, outside) cells: E(1,0) = w, E(0,0) = E(1,1) = n * Penalty,
-        // E(0,1) = infinite; as unary terms plus one infinite arc outside -> inside.
-        const int inside = s.Left > 0 ? p.LeftCell : p.RightCell;
-        const int outside = s.Left > 0 ? p.RightCell : p.LeftCell;
-        const double keep = this->Penalty * (s.Left + s.Right) - w;
-        addPair(source, inside, keep, 0);
-        addPair(outside, sink, keep, 0);
-        addPair(outside, inside, this->Infinity, 0);
+        merged[this->PairOf[f]] = 1;
       }
-      else
-      {
-        addPair(p.LeftCell, p.RightCell, w, w);
-      }
+    }
+    for (std::size_t k = 0; k < this->Pairs.size(); ++k)
+    {
+      const PairTerm& t = this->Pairs[k];
+      addPair(t.U, t.V, merged[k] ? this->Infinity : t.UV, merged[k] ? this->Infinity : t.VU);
     }
     std::vector<boost::default_color_type> color(n + 2);
     std::vector<GraphTraits::edge_descriptor> predecessor(n + 2);
@@ -137,9 +190,16 @@ public:
   }
 
 private:
+  struct PairTerm
+  {
+    int U, V;
+    double UV, VU;
+  };
   const BscInput& Input;
-  const std::vector<PatchSamples>& Samples;
   double Penalty = 1, Infinity = 1;
+  std::vector<double> FromSource, ToSink;
+  std::vector<PairTerm> Pairs;
+  std::vector<int> PairOf; ///< per patch, its pair of cells (-1: separates nothing)
 };
 
 bool OnBoundary(const BscPatch& p, const std::vector<char>& selected)
@@ -147,73 +207,101 @@ bool OnBoundary(const BscPatch& p, const std::vector<char>& selected)
   return IsSeparatingPatch(p) && selected[p.LeftCell] != selected[p.RightCell];
 }
 
-/// The connected pieces (patches of one curve sharing end points) of the boundary of
-/// `selected` that hold no sample, each as sorted patch ids, ordered by their lowest patch.
-std::vector<std::vector<int>> UnsampledPieces(const BscInput& in,
-  const std::vector<PatchSamples>& samples,
-  const std::vector<char>& selected)
+/// The connected pieces (patches of one curve sharing end points) of a region's boundary that
+/// hold no sample. The patches' neighbours along their curves are found once; each query walks
+/// only the boundary.
+class PieceFinder
 {
-  const int np = static_cast<int>(in.Patches.size());
-  std::vector<int> parent(np, -1);
-  auto find = [&](int x)
+public:
+  PieceFinder(const BscInput& in, const std::vector<PatchSamples>& samples)
+    : Input(in)
+    , Samples(samples)
   {
-    while (parent[x] != x)
+    const int np = static_cast<int>(in.Patches.size());
+    std::unordered_map<long long, std::vector<int>> atEnd; // (curve, point) -> patches
+    for (int i = 0; i < np; ++i)
     {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
-  std::unordered_map<long long, int> endOwner;
-  for (int i = 0; i < np; ++i)
-  {
-    const BscPatch& p = in.Patches[i];
-    if (!OnBoundary(p, selected))
-    {
-      continue;
-    }
-    parent[i] = i;
-    for (int end : { p.FirstPoint, p.LastPoint })
-    {
-      const long long key = (static_cast<long long>(p.Curve) << 32) ^ static_cast<unsigned>(end);
-      auto it = endOwner.emplace(key, i).first;
-      const int a = find(it->second), b = find(i);
-      if (a != b)
+      const BscPatch& p = in.Patches[i];
+      if (!IsSeparatingPatch(p))
       {
-        parent[std::max(a, b)] = std::min(a, b);
+        continue;
+      }
+      for (int end : { p.FirstPoint, p.LastPoint })
+      {
+        atEnd[(static_cast<long long>(p.Curve) << 32) ^ static_cast<unsigned>(end)].push_back(i);
       }
     }
+    std::vector<std::vector<int>> neighbours(np);
+    for (const auto& entry : atEnd)
+    {
+      for (int i : entry.second)
+      {
+        for (int j : entry.second)
+        {
+          if (i != j)
+          {
+            neighbours[i].push_back(j);
+          }
+        }
+      }
+    }
+    this->Offset.assign(np + 1, 0);
+    for (int i = 0; i < np; ++i)
+    {
+      std::sort(neighbours[i].begin(), neighbours[i].end());
+      this->Offset[i + 1] = this->Offset[i] + static_cast<int>(neighbours[i].size());
+      this->Neighbours.insert(this->Neighbours.end(), neighbours[i].begin(), neighbours[i].end());
+    }
   }
-  std::vector<char> sampled(np, 0);
-  for (int i = 0; i < np; ++i)
+
+  /// Unsampled pieces of the boundary of `selected`, each as sorted patch ids, ordered by their
+  /// lowest patch.
+  std::vector<std::vector<int>> Unsampled(const std::vector<char>& selected) const
   {
-    if (parent[i] >= 0 && samples[i].Left + samples[i].Right > 0)
+    const int np = static_cast<int>(this->Input.Patches.size());
+    std::vector<char> visited(np, 0);
+    std::vector<std::vector<int>> pieces;
+    std::vector<int> stack, piece;
+    for (int i = 0; i < np; ++i)
     {
-      sampled[find(i)] = 1;
+      if (visited[i] || !OnBoundary(this->Input.Patches[i], selected))
+      {
+        continue;
+      }
+      piece.clear();
+      bool sampled = false;
+      visited[i] = 1;
+      stack.assign(1, i);
+      while (!stack.empty())
+      {
+        const int p = stack.back();
+        stack.pop_back();
+        piece.push_back(p);
+        sampled = sampled || this->Samples[p].Left + this->Samples[p].Right > 0;
+        for (int k = this->Offset[p]; k < this->Offset[p + 1]; ++k)
+        {
+          const int q = this->Neighbours[k];
+          if (!visited[q] && OnBoundary(this->Input.Patches[q], selected))
+          {
+            visited[q] = 1;
+            stack.push_back(q);
+          }
+        }
+      }
+      if (!sampled)
+      {
+        std::sort(piece.begin(), piece.end());
+        pieces.push_back(piece);
+      }
     }
+    return pieces;
   }
-  std::vector<std::vector<int>> pieces;
-  std::vector<int> pieceOf(np, -1);
-  for (int i = 0; i < np; ++i)
-  {
-    if (parent[i] < 0)
-    {
-      continue;
-    }
-    const int root = find(i);
-    if (sampled[root])
-    {
-      continue;
-    }
-    if (pieceOf[root] < 0)
-    {
-      pieceOf[root] = static_cast<int>(pieces.size());
-      pieces.emplace_back();
-    }
-    pieces[pieceOf[root]].push_back(i);
-  }
-  return pieces;
-}
+
+private:
+  const BscInput& Input;
+  const std::vector<PatchSamples>& Samples;
+  std::vector<int> Offset, Neighbours; ///< patches of the same curve sharing an end point
+};
 
 std::vector<int> Merged(const std::vector<int>& a, const std::vector<int>& b)
 {
@@ -279,6 +367,7 @@ bool SelectBoundarySampledCells(const BscInput& in, BscResult& result, std::stri
   }
 
   const CutProblem problem(in, samples);
+  const PieceFinder pieceFinder(in, samples);
   std::priority_queue<SearchState, std::vector<SearchState>, WorseState> open;
   std::set<std::vector<int>> seen;
   int order = 0;
@@ -301,7 +390,7 @@ bool SelectBoundarySampledCells(const BscInput& in, BscResult& result, std::stri
   {
     best = open.top();
     open.pop();
-    std::vector<std::vector<int>> pieces = UnsampledPieces(in, samples, best.Selected);
+    std::vector<std::vector<int>> pieces = pieceFinder.Unsampled(best.Selected);
     if (pieces.empty())
     {
       break;
@@ -319,7 +408,7 @@ bool SelectBoundarySampledCells(const BscInput& in, BscResult& result, std::stri
         }
         best.Energy = problem.Cut(best.Forbidden, best.Selected);
         ++result.Cuts;
-        pieces = UnsampledPieces(in, samples, best.Selected);
+        pieces = pieceFinder.Unsampled(best.Selected);
       }
       break;
     }
@@ -499,34 +588,28 @@ bool SelectBySamples(const Arrangement& arr,
   {
     return false;
   }
-  std::vector<char> wanted(arr.Positions.size(), 0);
-  for (const PatchSnap& s : snaps)
+  // The surface normal at a refined point: that of the mesh triangle its surface point names
+  // (read from one of the triangle's refined triangles, which keep its orientation), so the
+  // cost is per sample, not per triangle.
+  auto normalOf = [&](int p)
   {
-    wanted[(*points[s.Patch])[s.Segment]] = 1;
-    wanted[(*points[s.Patch])[s.Segment + 1]] = 1;
-  }
-  std::vector<Vec3> normals;
-  if (!queries.empty())
-  {
-    WantedPointNormals(
-      arr.Triangles.size(),
-      [&](std::size_t t, int k) { return arr.Triangles[t][k]; },
-      arr.Positions,
-      wanted,
-      normals);
-  }
+    const int t = arr.PointSurface[p].Triangle;
+    if (t < 0 || t + 1 >= static_cast<int>(arr.TriangleOffset.size()) ||
+      arr.TriangleOffset[t] == arr.TriangleOffset[t + 1])
+    {
+      return Vec3();
+    }
+    const std::array<int, 3>& r = arr.Triangles[arr.TriangleOffset[t]];
+    const Vec3 n =
+      Cross(arr.Positions[r[1]] - arr.Positions[r[0]], arr.Positions[r[2]] - arr.Positions[r[0]]);
+    const double length = Length(n);
+    return length > 0 ? (1 / length) * n : Vec3();
+  };
   BscInput input;
   input.NumberOfCells = arr.NumberOfCells;
   input.Patches = BscPatchesOf(arr);
   input.MaxSearchStates = maxSearchStates;
-  if (!OrientSamples(
-        arr.Positions,
-        points,
-        queries,
-        snaps,
-        [&](int p) { return normals[p]; },
-        input.Samples,
-        error))
+  if (!OrientSamples(arr.Positions, points, queries, snaps, normalOf, input.Samples, error))
   {
     return false;
   }
