@@ -70,12 +70,14 @@ struct PatchSite
   double X[2];
   double Left[2];
   int Shape;
+  double Length;
 };
 
 std::vector<PatchSite> PatchSites(vtkPolyData* patches)
 {
   std::vector<PatchSite> sites;
   vtkDataArray* shape = patches->GetCellData()->GetArray("ShapeId");
+  vtkDataArray* length = patches->GetCellData()->GetArray("Length");
   for (vtkIdType c = 0; c < patches->GetNumberOfCells(); ++c)
   {
     vtkIdType n;
@@ -89,7 +91,8 @@ std::vector<PatchSite> PatchSites(vtkPolyData* patches)
     const double tx = b[0] - a[0], ty = b[1] - a[1], len = std::hypot(tx, ty);
     sites.push_back({ { 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]) },
       { -ty / len, tx / len },
-      static_cast<int>(shape->GetComponent(c, 0)) });
+      static_cast<int>(shape->GetComponent(c, 0)),
+      length->GetComponent(c, 0) });
   }
   return sites;
 }
@@ -243,12 +246,14 @@ TEST(BoundarySampledCurvesFilter, RandomPolygonsMatchClipper)
 {
   auto mesh = testutils::ToPolyData(boolsurf::MakeFlatSquare(40, 1.0, 0.3, 9));
   std::mt19937 rng(77);
-  int nonEmptyDifferences = 0;
-  for (int trial = 0; trial < 8; ++trial)
+  int nonEmptyDifferences = 0, oneArcTrials = 0, shorterB = 0;
+  for (int trial = 0; trial < 12; ++trial)
   {
     const ControlPolygon a = RandomStar(rng, 0), b = RandomStar(rng, 1);
     FlatScene scene(mesh, { a, b });
-    std::vector<Sample> allOfA, difference;
+    std::vector<Sample> allOfA, difference, bInsideA;
+    int aPatchesInB = 0;
+    double aLengthInB = 0, bLengthInA = 0;
     for (const PatchSite& s : scene.Sites())
     {
       const bool inOther = testutils::InsidePolygon(s.Shape == 0 ? b : a, s.X[0], s.X[1]);
@@ -259,10 +264,14 @@ TEST(BoundarySampledCurvesFilter, RandomPolygonsMatchClipper)
         {
           difference.push_back(At(s, 1));
         }
+        aPatchesInB += inOther ? 1 : 0;
+        aLengthInB += inOther ? s.Length : 0;
       }
       else if (inOther)
       {
         difference.push_back(At(s, -1)); // B is counter-clockwise: its outside is on the right
+        bInsideA.push_back(At(s, -1));
+        bLengthInA += s.Length;
       }
     }
     const double areaA = std::abs(ClipperLib::Area(testutils::ToClipper(a))) /
@@ -273,8 +282,24 @@ TEST(BoundarySampledCurvesFilter, RandomPolygonsMatchClipper)
     EXPECT_NEAR(scene.Run(difference), expected, 1e-9) << "trial " << trial;
     EXPECT_TRUE(scene.Field("DroppedSamples").empty()) << "trial " << trial;
     nonEmptyDifferences += (expected > 1e-3 && expected < areaA - 1e-3) ? 1 : 0;
+    // Every patch of A sampled, plus one sample on B's single arc inside A pointing out of B:
+    // A keeps A's samples and drops B's; A - B keeps B's and drops A's single arc inside B.
+    // One sample dropped either way, so the shorter boundary wins: A - B exactly when B's arc
+    // inside A is shorter than A's arc inside B.
+    if (aPatchesInB == 1 && bInsideA.size() == 1)
+    {
+      std::vector<Sample> samples = allOfA;
+      samples.push_back(bInsideA.front());
+      const double area = scene.Run(samples);
+      EXPECT_NEAR(area, bLengthInA < aLengthInB ? expected : areaA, 1e-9) << "trial " << trial;
+      EXPECT_EQ(scene.Field("DroppedSamples").size(), 1u) << "trial " << trial;
+      ++oneArcTrials;
+      shorterB += bLengthInA < aLengthInB ? 1 : 0;
+    }
   }
   EXPECT_GE(nonEmptyDifferences, 3); // B really cuts A in several trials
+  EXPECT_GE(oneArcTrials, 2);
+  EXPECT_GE(shorterB, 1); // A - B was the answer at least once
 }
 
 TEST(BoundarySampledCurvesFilter, BadSamplesAreNamedErrors)
