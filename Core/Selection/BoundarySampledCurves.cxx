@@ -108,8 +108,10 @@ public:
         addBetween(p.LeftCell, p.RightCell, w, w);
       }
     }
+    std::map<std::pair<int, int>, int> pairIndex;
     for (const auto& [cells, caps] : between)
     {
+      pairIndex.emplace(cells, static_cast<int>(this->Pairs.size()));
       this->Pairs.push_back({ cells.first, cells.second, caps.first, caps.second });
     }
     this->PairOf.assign(input.Patches.size(), -1);
@@ -118,9 +120,8 @@ public:
       const BscPatch& p = input.Patches[i];
       if (IsSeparatingPatch(p))
       {
-        const std::pair<int, int> key{ std::min(p.LeftCell, p.RightCell),
-          std::max(p.LeftCell, p.RightCell) };
-        this->PairOf[i] = static_cast<int>(std::distance(between.begin(), between.find(key)));
+        this->PairOf[i] =
+          pairIndex.at({ std::min(p.LeftCell, p.RightCell), std::max(p.LeftCell, p.RightCell) });
       }
     }
   }
