@@ -247,7 +247,8 @@ bool vtkBoolSurf::SelectBySamples(const boolsurf::vtkSurfaceInput& surface,
       this->MaxSearchStates,
       in.Snaps,
       in.Bsc,
-      error))
+      error,
+      [this] { return this->CheckAbort(); }))
   {
     error = "BSC: " + error;
     return false;

@@ -60,7 +60,8 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
         this->MaxSearchStates,
         snaps,
         result,
-        error))
+        error,
+        [this] { return this->CheckAbort(); }))
   {
     vtkErrorMacro(<< error);
     return 0;

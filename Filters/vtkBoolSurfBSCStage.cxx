@@ -77,7 +77,8 @@ bool SelectSampledCells(vtkPolyData* refined,
   int maxSearchStates,
   std::vector<PatchSnap>& snaps,
   BscResult& result,
-  std::string& error)
+  std::string& error,
+  const std::function<bool()>& abort)
 {
   // The patch points only, in a compact array: the cost is the curves', not the surface's.
   const int np = static_cast<int>(fields.Patches.size());
@@ -89,6 +90,7 @@ bool SelectSampledCells(vtkPolyData* refined,
   BscInput input;
   input.NumberOfCells = fields.NumberOfCells;
   input.MaxSearchStates = maxSearchStates;
+  input.Abort = abort;
   input.Patches.resize(np);
   std::map<std::pair<int, int>, int> curveIndex; // (shape, curve id) -> dense curve
   for (int i = 0; i < np; ++i)

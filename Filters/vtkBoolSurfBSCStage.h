@@ -37,7 +37,8 @@ bool SelectSampledCells(vtkPolyData* refined,
   int maxSearchStates,
   std::vector<PatchSnap>& snaps,
   BscResult& result,
-  std::string& error);
+  std::string& error,
+  const std::function<bool()>& abort = {});
 
 /// Field data on `output`: `SamplePatch` (patch each sample snapped to), `SampleDistance`,
 /// `SampleOnBoundary` (1 kept on the boundary, 0 dropped), `DroppedSamples` (ids),

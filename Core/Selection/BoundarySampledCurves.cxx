@@ -372,6 +372,7 @@ bool SelectBoundarySampledCells(const BscInput& in, BscResult& result, std::stri
   std::priority_queue<SearchState, std::vector<SearchState>, WorseState> open;
   std::set<std::vector<int>> seen;
   int order = 0;
+  auto aborted = [&] { return in.Abort && in.Abort(); };
   auto push = [&](std::vector<int> forbidden)
   {
     if (!seen.insert(forbidden).second)
@@ -412,6 +413,11 @@ bool SelectBoundarySampledCells(const BscInput& in, BscResult& result, std::stri
         pieces = pieceFinder.Unsampled(best.Selected);
       }
       break;
+    }
+    if (aborted())
+    {
+      error = "aborted";
+      return false;
     }
     for (const std::vector<int>& piece : pieces)
     {
@@ -577,7 +583,8 @@ bool SelectBySamples(const Arrangement& arr,
   int maxSearchStates,
   std::vector<PatchSnap>& snaps,
   BscResult& result,
-  std::string& error)
+  std::string& error,
+  const std::function<bool()>& abort)
 {
   std::vector<const std::vector<int>*> points;
   for (const ArrangementPatch& p : arr.Patches)
@@ -610,6 +617,7 @@ bool SelectBySamples(const Arrangement& arr,
   input.NumberOfCells = arr.NumberOfCells;
   input.Patches = BscPatchesOf(arr);
   input.MaxSearchStates = maxSearchStates;
+  input.Abort = abort;
   if (!OrientSamples(arr.Positions, points, queries, snaps, normalOf, input.Samples, error))
   {
     return false;

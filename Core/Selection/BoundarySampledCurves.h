@@ -28,6 +28,7 @@
 
 #include "Mesh/Vec3.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,8 @@ struct BscInput
   std::vector<BscSample> Samples;
   /// Minimum cuts the best-first search computes before it turns greedy.
   int MaxSearchStates = 64;
+  /// Asked between cuts: true stops the search (the selection then fails with "aborted").
+  std::function<bool()> Abort;
 };
 
 struct BscResult
@@ -201,7 +204,8 @@ bool SelectBySamples(const Arrangement& arrangement,
   int maxSearchStates,
   std::vector<PatchSnap>& snaps,
   BscResult& result,
-  std::string& error);
+  std::string& error,
+  const std::function<bool()>& abort = {});
 
 } // namespace boolsurf
 

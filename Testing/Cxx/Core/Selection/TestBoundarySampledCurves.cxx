@@ -134,6 +134,13 @@ TEST(BoundarySampledCurves, GreedyEndIsSampleConnectedAndDeterministic)
   EXPECT_EQ(a.Selected, Cells({ RedOnly, Both }));
   EXPECT_EQ(a.Selected, b.Selected);
   EXPECT_EQ(a.ForbiddenPatches, b.ForbiddenPatches);
+  // An abort asked for between cuts stops the search with a message.
+  in.MaxSearchStates = 64;
+  in.Abort = [] { return true; };
+  BscResult r;
+  std::string error;
+  EXPECT_FALSE(SelectBoundarySampledCells(in, r, error));
+  EXPECT_EQ(error, "aborted");
 }
 
 TEST(BoundarySampledCurves, OverlappingSquaresOnAFlatMesh)
