@@ -97,5 +97,12 @@ one.Selection = "BSC"
 one.Samples = union_samples
 one.UpdatePipeline()
 assert abs(area(one) - 0.28) < 1e-12, area(one)
+# The GUI way (Docs/Filters/BoundarySampledCurves.md): a Line source's end points on A's left
+# edge, a Calculator making the Direction array.
+line = Line(Point1=[0.2, 0.3, 0], Point2=[0.2, 0.5, 0], Resolution=1)
+directions = Calculator(Input=line, ResultArrayName="Direction", Function="iHat")
+bsc.Samples = directions
+bsc.UpdatePipeline()
+assert abs(area(bsc) - 0.16) < 1e-12, area(bsc)
 print("BSC_OK")
 print("PIPELINE_OK")
