@@ -5,7 +5,7 @@
 #define vtkBoolSurfBSCStage_h
 
 #include "Mesh/TriangleMesh.h"
-#include "Selection/BoundarySampledCurves.h"
+#include "Selection/BoundarySamples.h"
 #include "vtkBoolSurfArrangementOutput.h"
 
 #include <string>

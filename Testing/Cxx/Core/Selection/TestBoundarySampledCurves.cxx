@@ -2,7 +2,7 @@
 // cell graphs (exact cell sets), then on real arrangements: two overlapping squares on a flat
 // mesh (exact areas) and torus meridians (inconsistent curves; areas by symmetry).
 #include "../Arrangement/ArrangementTestUtils.h"
-#include "Selection/BoundarySampledCurves.h"
+#include "Selection/BoundarySamples.h"
 
 #include <gtest/gtest.h>
 
