@@ -6,6 +6,7 @@
 #include "vtkBoolSurf.h"
 #include "vtkBoolSurfArrangement.h"
 #include "vtkBoolSurfBSC.h"
+#include "vtkBoolSurfLabeling.h"
 #include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkCommand.h>
@@ -208,6 +209,14 @@ TEST(BoundarySampledCurvesFilter, FigureSixThreeSampleSets)
   EXPECT_NEAR(scene.Run(samples), ClipperResultArea(red, green, ClipperLib::ctUnion), 1e-9);
   EXPECT_EQ(scene.Messages->Errors, "");
   EXPECT_TRUE(scene.Field("DroppedSamples").empty());
+  // The labeled arrangement is accepted as well, with the same answer; the labels table travels
+  // with the region.
+  vtkNew<vtkBoolSurfLabeling> labeling;
+  labeling->SetInputConnection(scene.Arrangement->GetOutputPort(0));
+  scene.Bsc->SetInputConnection(0, labeling->GetOutputPort());
+  EXPECT_NEAR(scene.Run(samples), ClipperResultArea(red, green, ClipperLib::ctUnion), 1e-9);
+  EXPECT_NE(scene.Bsc->GetOutput()->GetFieldData()->GetArray("CellLabels"), nullptr);
+  scene.Bsc->SetInputConnection(0, scene.Arrangement->GetOutputPort(0));
   // 2. Red's outer arcs into red, green's arcs inside red out of green: red minus green.
   samples = redOuter;
   samples.insert(samples.end(), greenInnerOut.begin(), greenInnerOut.end());
