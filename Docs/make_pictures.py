@@ -13,7 +13,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(here)
 sys.path.insert(0, os.path.join(root, "Examples"))
 from boolsurf_example_utils import (SurfaceRays, curves_source, first_hit,  # noqa: E402
-                                    load_plugin, render_result, surface_circle)
+                                    load_plugin, render_result, sample_source, surface_circle)
 from paraview.simple import *  # noqa: E402,F401,F403
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -57,6 +57,15 @@ render_result(out("SurfaceArrangement"), eight, arrangement, boundary=OutputPort
 render_result(out("LabelArrangementCells"), eight, labels, boundary=OutputPort(arrangement, 1),
               color_by="ShapeLabel", **view)
 render_result(out("SurfaceBoolean"), eight, boolean, boundary=OutputPort(boolean, 1),
+              curves=traced, **view)
+
+# Boundary Sampled Curves on the same arrangement: the two tube loops sampled towards the band
+# between them, and disc S0 sampled towards its center (its first control point, outside S1).
+samples = sample_source([(tube_loop(0.22, False)[0], (0, 0, 1)),
+                         (tube_loop(0.30, True)[-1], (0, 0, -1)),
+                         (surface_circle(front, (0.0, -0.035), 0.06)[0], (0, 0, -1))])
+bsc = BoundarySampledCurves(Input=arrangement, Samples=samples)
+render_result(out("BoundarySampledCurves"), eight, bsc, boundary=OutputPort(bsc, 1),
               curves=traced, **view)
 
 nefertiti = PLYReader(FileNames=[os.path.join(root, "Data", "nefertiti_small.ply")])

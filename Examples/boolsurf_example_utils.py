@@ -4,6 +4,7 @@
 - surface_circle(): control points of a circle drawn on a surface, found by casting rays
   along one axis onto the mesh (the way a user would draw on a view of the surface).
 - curves_source(): a pipeline source holding control polygons with a ShapeId per curve.
+- sample_source(): a pipeline source holding BSC samples (points with a Direction vector).
 - save_result() / render_result(): the .vtp (inline binary) and the .png with the region colored.
 """
 import math
@@ -91,6 +92,27 @@ def curves_source(curves):
     pd.SetPoints(pts)
     pd.SetLines(lines)
     pd.GetCellData().AddArray(shape)
+    source = PVTrivialProducer()
+    source.GetClientSideObject().SetOutput(pd)
+    source.UpdatePipeline()
+    return source
+
+
+def sample_source(samples):
+    """samples: list of (point, direction): BSC samples, each on or near a curve, its
+    Direction pointing to the side that must be inside."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    pd = vtkPolyData()
+    pts = vtkPoints()
+    pts.SetDataTypeToDouble()
+    direction = vtkDoubleArray()
+    direction.SetName("Direction")
+    direction.SetNumberOfComponents(3)
+    for point, d in samples:
+        pts.InsertNextPoint(point)
+        direction.InsertNextTuple3(*d)
+    pd.SetPoints(pts)
+    pd.GetPointData().AddArray(direction)
     source = PVTrivialProducer()
     source.GetClientSideObject().SetOutput(pd)
     source.UpdatePipeline()

@@ -2,6 +2,7 @@
 
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Selection/RegionExtraction.h"
+#include "vtkBoolSurfBSCStage.h"
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfRegionOutput.h"
@@ -52,6 +53,9 @@ struct vtkBoolSurf::Internals
   std::vector<int> RegionTriangles;
   boolsurf::RegionExtractor Extractor;
   boolsurf::RegionMesh Region;
+  // BSC: where each sample landed and what became of it.
+  std::vector<boolsurf::PatchSnap> Snaps;
+  boolsurf::BscResult Bsc;
   /// Milliseconds of the stages of the last labeled arrangement (tracing, labeling).
   double TraceTime = 0, LabelingTime = 0;
 
@@ -101,7 +105,7 @@ struct vtkBoolSurf::Internals
 vtkBoolSurf::vtkBoolSurf()
   : Internal(new Internals)
 {
-  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(2);
 }
 
@@ -109,9 +113,13 @@ vtkBoolSurf::vtkBoolSurf()
 vtkBoolSurf::~vtkBoolSurf() = default;
 
 //------------------------------------------------------------------------------
-int vtkBoolSurf::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
+int vtkBoolSurf::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port == 2)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1); // BSC samples
+  }
   return 1;
 }
 
@@ -178,7 +186,17 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   const boolsurf::BooleanRequest request = boolsurf::MakeBooleanRequest(
     this->Operation, this->ShapeA, this->ShapeB, this->Expression, this->FillRule);
   std::string text;
-  if (!boolsurf::SelectRequestedCells(in.Labels, request, in.Selected, text, error))
+  const bool bsc = this->Selection == BSC_SELECTION;
+  if (bsc)
+  {
+    if (!this->SelectBySamples(
+          *surface, vtkPolyData::GetData(inputVector[2], 0), surfaceInput, error))
+    {
+      vtkErrorMacro(<< error);
+      return 0;
+    }
+  }
+  else if (!boolsurf::SelectRequestedCells(in.Labels, request, in.Selected, text, error))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -209,8 +227,38 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
     Milliseconds(selected, Clock::now()),
     region,
     boundary);
+  if (bsc)
+  {
+    boolsurf::AddSampleFields(in.Snaps, in.Bsc, region);
+    boolsurf::AddSampleFields(in.Snaps, in.Bsc, boundary);
+  }
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurf::SelectBySamples(const boolsurf::vtkSurfaceInput& surface,
+  vtkPolyData* samples,
+  vtkPolyData* surfaceInput,
+  std::string& error)
+{
+  Internals& in = *this->Internal;
+  std::vector<boolsurf::SampleQuery> queries;
+  if (!boolsurf::ReadSampleQueries(samples, surface.Mesh.get(), queries, error) ||
+    !boolsurf::SelectBySamples(in.Arrangement,
+      queries,
+      boolsurf::SnapDistance(surfaceInput, this->SnapTolerance),
+      this->MaxSearchStates,
+      in.Snaps,
+      in.Bsc,
+      error,
+      [this] { return this->CheckAbort(); }))
+  {
+    error = "BSC: " + error;
+    return false;
+  }
+  in.Selected = in.Bsc.Selected;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -392,4 +440,6 @@ void vtkBoolSurf::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShapeA: " << this->ShapeA << " ShapeB: " << this->ShapeB << "\n";
   os << indent << "Expression: " << this->Expression << "\n";
   os << indent << "FillRule: " << this->FillRule << "\n";
+  os << indent << "Selection: " << (this->Selection == BSC_SELECTION ? "BSC" : "Boolean") << "\n";
+  os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
 }

@@ -26,7 +26,14 @@
  * the Boolean properties change, the labeled arrangement is reused and the update costs the
  * selection (once per cell) and the region.
  *
+ * Selection = BSC (Boundary-Sampled Curves, see vtkBoolSurfBSC) replaces the Boolean by the
+ * region chosen by oriented samples: port 2 (optional) holds points with point data
+ * `Direction` (and optionally exact `TriangleId`/`Barycentric`); the outputs then carry the
+ * BSC field data (`SampleOnBoundary`, `DroppedSamples`, ...) instead of `Expression`. Changing
+ * only the samples reuses the labeled arrangement, like a change of the Boolean properties.
+ *
  * @sa vtkBoolSurfTraceCurves vtkBoolSurfArrangement vtkBoolSurfLabeling vtkBoolSurfBoolean
+ * vtkBoolSurfBSC
  */
 #ifndef vtkBoolSurf_h
 #define vtkBoolSurf_h
@@ -53,6 +60,28 @@ public:
   /// The surface (port 0) and the control polygons (port 1).
   void SetSurfaceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
   void SetCurvesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  /// BSC samples (port 2, optional; read when Selection is BSC).
+  void SetSamplesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
+  ///@}
+
+  ///@{
+  /// How the region is chosen: 0 Boolean (Operation, ShapeA, ...), 1 BSC (samples on port 2,
+  /// see vtkBoolSurfBSC).
+  enum Selections
+  {
+    BOOLEAN_SELECTION = 0,
+    BSC_SELECTION = 1,
+  };
+  vtkSetClampMacro(Selection, int, BOOLEAN_SELECTION, BSC_SELECTION);
+  vtkGetMacro(Selection, int);
+  void SetSelectionToBoolean() { this->SetSelection(BOOLEAN_SELECTION); }
+  void SetSelectionToBSC() { this->SetSelection(BSC_SELECTION); }
+  /// BSC: snap distance as a fraction of the surface's bounding-box diagonal (default 0.01),
+  /// and the cuts of the search for a sample-connected region before it turns greedy.
+  vtkSetClampMacro(SnapTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SnapTolerance, double);
+  vtkSetClampMacro(MaxSearchStates, int, 1, 1000000);
+  vtkGetMacro(MaxSearchStates, int);
   ///@}
 
   ///@{
@@ -124,6 +153,9 @@ protected:
   std::string Expression = "S0 | S1";
   int FillRule = 0;
   int NumberOfThreads = 0;
+  int Selection = BOOLEAN_SELECTION;
+  double SnapTolerance = 0.01;
+  int MaxSearchStates = 64;
 
 private:
   vtkBoolSurf(const vtkBoolSurf&) = delete;
@@ -132,6 +164,11 @@ private:
   /// Trace, arrange and label the curves on the (valid) surface, into Internal.
   bool LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     vtkPolyData* curves,
+    std::string& error);
+  /// Selected cells from the samples (BSC); false with a named error.
+  bool SelectBySamples(const boolsurf::vtkSurfaceInput& surface,
+    vtkPolyData* samples,
+    vtkPolyData* surfaceInput,
     std::string& error);
   /// The arrangement cell at ZeroCellPoint, or -1 and a message.
   int FindZeroCell(const boolsurf::vtkSurfaceInput& surface, std::string& error);

@@ -105,22 +105,12 @@ void AddExpressionField(vtkPolyData* output, const std::string& text)
 }
 
 //------------------------------------------------------------------------------
-bool ComputeBoolean(vtkPolyData* labeled,
+void WriteSelection(vtkPolyData* labeled,
   const ArrangementFields& fields,
-  const LabelingResult& labels,
-  const BooleanRequest& request,
+  const std::vector<char>& selected,
   vtkPolyData* region,
-  vtkPolyData* boundary,
-  std::string& error)
+  vtkPolyData* boundary)
 {
-  region->Initialize();
-  boundary->Initialize();
-  std::string text;
-  std::vector<char> selected;
-  if (!SelectRequestedCells(labels, request, selected, text, error))
-  {
-    return false;
-  }
   ExtractRegion(labeled, selected, region);
   // The labels table travels with the region (shared, not copied): row ArrangementCell of
   // CellLabels gives a region triangle's labels.
@@ -149,6 +139,26 @@ bool ComputeBoolean(vtkPolyData* labeled,
     },
     tid && uv,
     boundary);
+}
+
+//------------------------------------------------------------------------------
+bool ComputeBoolean(vtkPolyData* labeled,
+  const ArrangementFields& fields,
+  const LabelingResult& labels,
+  const BooleanRequest& request,
+  vtkPolyData* region,
+  vtkPolyData* boundary,
+  std::string& error)
+{
+  region->Initialize();
+  boundary->Initialize();
+  std::string text;
+  std::vector<char> selected;
+  if (!SelectRequestedCells(labels, request, selected, text, error))
+  {
+    return false;
+  }
+  WriteSelection(labeled, fields, selected, region, boundary);
   AddExpressionField(region, text);
   AddExpressionField(boundary, text);
   return true;

@@ -65,6 +65,15 @@ bool SelectRequestedCells(const LabelingResult& labels,
 /// The field data `Expression` (the expression a result was selected with).
 void AddExpressionField(vtkPolyData* output, const std::string& text);
 
+/// Writes the cells with selected[cell] != 0 of a refined surface (its triangles with all their
+/// arrays, and the labels table when present) and their boundary (oriented loops, region on
+/// the left, with point data TriangleId/Barycentric). Shared by the Boolean and BSC filters.
+void WriteSelection(vtkPolyData* labeled,
+  const ArrangementFields& fields,
+  const std::vector<char>& selected,
+  vtkPolyData* region,
+  vtkPolyData* boundary);
+
 /// Selects the cells of a labeled refined surface and writes the region (its triangles with
 /// all their arrays) and its boundary (oriented loops, region on the left, with point data
 /// TriangleId/Barycentric). False with a named error: malformed expression, unknown shape,

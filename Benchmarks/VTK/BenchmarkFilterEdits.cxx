@@ -12,6 +12,8 @@
 //   SymmetricDifference (the labeled arrangement is reused, only the Boolean reruns).
 // - BM_OneStepPaperScaleXor/threads:N: 112 circles x 32 control points (the scale of the paper's
 //   largest scenes) in clusters of 4, symmetric difference of all shapes, curve edits as above.
+// - BM_OneStepPaperScaleSelection/bsc:B: the paper-scale scene with the labeled arrangement
+//   reused, only the selection reruns: the Boolean (B = 0) or BSC with 112 samples (B = 1).
 // - BM_OneStepHugeShapeId: two overlapping circles with ShapeIds 0 and 1000000 on a small mesh
 //   (bunny_npm), union of all shapes, curve edits: what a sparse, huge ShapeId costs.
 //
@@ -457,6 +459,7 @@ struct Scene
   const Surface* Mesh = nullptr;
   std::vector<vtkSmartPointer<vtkPolyData>> Curves; // one per version
   int Circles = 0;
+  std::vector<Circle> Placed;    // the circles of version 0
   vtkIdType TracedVertices = -1; // computed on demand
   std::string Error;
 };
@@ -502,6 +505,7 @@ const Scene& GetScene(const std::string& key,
     scene.Curves.push_back(CurvesInput(s, circles, ids, controlPoints, v));
   }
   scene.Circles = number;
+  scene.Placed = circles;
   return scene;
 }
 
@@ -691,6 +695,97 @@ void BM_OneStepPaperScaleXor(benchmark::State& state)
   state.counters["TracedVertices"] = static_cast<double>(tracedVertices);
 }
 
+/// BSC samples on the scene's circles (version 0): control point `index` of each circle,
+/// pointing to the circle's center (its inside), as exact surface points.
+vtkSmartPointer<vtkPolyData> CircleSamples(const Scene& scene, int controlPoints, int index)
+{
+  auto samples = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> direction;
+  direction->SetName("Direction");
+  direction->SetNumberOfComponents(3);
+  vtkNew<vtkIdTypeArray> triangleIds;
+  triangleIds->SetName("TriangleId");
+  vtkNew<vtkDoubleArray> barycentric;
+  barycentric->SetName("Barycentric");
+  barycentric->SetNumberOfComponents(2);
+  vtkNew<vtkGenericCell> cell;
+  std::vector<ControlPoint> cps;
+  for (const Circle& c : scene.Placed)
+  {
+    CirclePoints(*scene.Mesh, c, controlPoints, 0, 0, cell, cps);
+    const ControlPoint& cp = cps[index];
+    points->InsertNextPoint(cp.Position.data());
+    direction->InsertNextTuple(Sub(c.Center, cp.Position).data());
+    triangleIds->InsertNextValue(cp.Triangle);
+    const double uv[2] = { cp.U, cp.V };
+    barycentric->InsertNextTuple(uv);
+  }
+  samples->SetPoints(points);
+  samples->GetPointData()->AddArray(direction);
+  samples->GetPointData()->AddArray(triangleIds);
+  samples->GetPointData()->AddArray(barycentric);
+  return samples;
+}
+
+// What choosing the region costs at paper scale (112 circles, igea_1m, 2 threads), with the
+// labeled arrangement reused: bsc:0 toggles the Boolean between Union and SymmetricDifference,
+// bsc:1 switches between two BSC sample sets (one sample per circle, pointing inside, at two
+// different control points). Selection_ms and Output_ms are the filter's own stage times.
+void BM_OneStepPaperScaleSelection(benchmark::State& state)
+{
+  const Scene& scene = PaperScale();
+  if (!scene.Error.empty())
+  {
+    state.SkipWithError(scene.Error.c_str());
+    return;
+  }
+  const bool bsc = state.range(0) != 0;
+  const double startRss = ResetPeakRss();
+  vtkSmartPointer<vtkBoolSurf> filter = WarmFilter(scene, 3, 2);
+  const vtkSmartPointer<vtkPolyData> samples[2] = { CircleSamples(scene, 32, 0),
+    CircleSamples(scene, 32, 16) };
+  filter->SetInputData(2, samples[0]);
+  filter->SetSelection(bsc ? 1 : 0);
+  filter->Update();
+  StageSums stages;
+  double updateMs = 0;
+  int k = 0;
+  for (auto _ : state)
+  {
+    k = 1 - k;
+    if (bsc)
+    {
+      filter->SetInputData(2, samples[k]);
+    }
+    else
+    {
+      filter->SetOperation(k == 1 ? 0 : 3);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    filter->Update();
+    updateMs += Milliseconds(t0, std::chrono::steady_clock::now());
+    stages.Add(filter->GetOutput(0));
+  }
+  if (filter->GetOutput(0)->GetNumberOfCells() == 0)
+  {
+    state.SkipWithError("the selection produced no region");
+    return;
+  }
+  stages.Report(state);
+  ReportRegion(state, filter, startRss);
+  state.counters["Update_ms"] = updateMs / static_cast<double>(state.iterations());
+  if (bsc)
+  {
+    vtkFieldData* fd = filter->GetOutput(0)->GetFieldData();
+    state.counters["Samples"] = static_cast<double>(samples[0]->GetNumberOfPoints());
+    state.counters["DroppedSamples"] =
+      static_cast<double>(fd->GetArray("DroppedSamples")->GetNumberOfTuples());
+    state.counters["Cuts"] = fd->GetArray("BSCCuts")->GetComponent(0, 0);
+  }
+}
+
 // One thread: the scene is two circles, there is nothing to share out. Few iterations: with
 // per-shape costs an update takes seconds.
 void BM_OneStepHugeShapeId(benchmark::State& state)
@@ -719,6 +814,13 @@ BENCHMARK(BM_OneStepPaperScaleXor)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime()
   ->Iterations(6);
+BENCHMARK(BM_OneStepPaperScaleSelection)
+  ->ArgName("bsc")
+  ->Arg(0)
+  ->Arg(1)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime()
+  ->Iterations(10);
 BENCHMARK(BM_OneStepHugeShapeId)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 
 } // namespace

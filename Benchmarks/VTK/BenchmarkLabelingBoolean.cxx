@@ -1,18 +1,27 @@
 // The reference scenes whose meshes are present, through the VTK filters: labeling and Boolean
 // selection on an arrangement made once outside the timed loop (BM_Labeling, BM_Boolean), and
 // whole edits of the one-step filter with per-stage times (BM_OneStepScene/<scene>/<threads>).
-// Run: BoolSurfVTKBenchmarks --benchmark_filter='Labeling|Boolean|OneStepScene'
+// BM_BSC/<scene>: Boundary Sampled Curves on the same arrangement, one sample per patch of the
+// first curve of every shape, pointing to the patch's left (a shape's inside): against
+// BM_Boolean, what choosing the region by samples costs instead of by labels.
+// Run: BoolSurfVTKBenchmarks --benchmark_filter='Labeling|Boolean|OneStepScene|BSC'
 #include "../SharedScenes.h"
 #include "vtkBoolSurf.h"
 #include "vtkBoolSurfArrangement.h"
+#include "vtkBoolSurfBSC.h"
 #include "vtkBoolSurfBoolean.h"
 #include "vtkBoolSurfLabeling.h"
 #include "vtkBoolSurfSceneReader.h"
 #include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkIdList.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 
 #include <benchmark/benchmark.h>
@@ -30,7 +39,88 @@ struct PreparedScene
   vtkSmartPointer<vtkPolyData> Mesh, Curves; // the scene's inputs
   std::string Error;
   int Cells = 0;
+  vtkSmartPointer<vtkPolyData> Samples; // BSC samples (built on first use)
 };
+
+/// One sample per patch of the first curve of every shape: the middle of the patch's middle
+/// segment, pointing to its left (normal x tangent, normal of a refined triangle on the
+/// segment).
+vtkSmartPointer<vtkPolyData> PatchSamples(vtkPolyData* arranged)
+{
+  auto samples = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> direction;
+  direction->SetName("Direction");
+  direction->SetNumberOfComponents(3);
+  vtkFieldData* fd = arranged->GetFieldData();
+  vtkDataArray* offsets = fd->GetArray("PatchOffsets");
+  vtkDataArray* ids = fd->GetArray("PatchPoints");
+  vtkDataArray* shape = fd->GetArray("PatchShape");
+  vtkDataArray* curve = fd->GetArray("PatchCurve");
+  if (!offsets || !ids || !shape || !curve)
+  {
+    return samples;
+  }
+  arranged->BuildLinks();
+  std::map<int, int> firstCurve; // shape -> its first curve id
+  vtkNew<vtkIdList> cells;
+  for (vtkIdType p = 0; p + 1 < offsets->GetNumberOfTuples(); ++p)
+  {
+    const int s = static_cast<int>(shape->GetComponent(p, 0));
+    const int c = static_cast<int>(curve->GetComponent(p, 0));
+    if (firstCurve.emplace(s, c).first->second != c)
+    {
+      continue;
+    }
+    const vtkIdType begin = static_cast<vtkIdType>(offsets->GetComponent(p, 0));
+    const vtkIdType end = static_cast<vtkIdType>(offsets->GetComponent(p + 1, 0));
+    if (end - begin < 2)
+    {
+      continue;
+    }
+    const vtkIdType k = begin + (end - begin - 2) / 2;
+    const vtkIdType a = static_cast<vtkIdType>(ids->GetComponent(k, 0));
+    const vtkIdType b = static_cast<vtkIdType>(ids->GetComponent(k + 1, 0));
+    arranged->GetPointCells(a, cells);
+    double normal[3] = { 0, 0, 0 };
+    for (vtkIdType i = 0; i < cells->GetNumberOfIds(); ++i)
+    {
+      vtkIdType n;
+      const vtkIdType* corners;
+      arranged->GetCellPoints(cells->GetId(i), n, corners);
+      if (n == 3 && (corners[0] == b || corners[1] == b || corners[2] == b))
+      {
+        double x0[3], x1[3], x2[3], e1[3], e2[3];
+        arranged->GetPoint(corners[0], x0);
+        arranged->GetPoint(corners[1], x1);
+        arranged->GetPoint(corners[2], x2);
+        vtkMath::Subtract(x1, x0, e1);
+        vtkMath::Subtract(x2, x0, e2);
+        vtkMath::Cross(e1, e2, normal);
+        break;
+      }
+    }
+    double xa[3], xb[3], tangent[3], left[3], mid[3];
+    arranged->GetPoint(a, xa);
+    arranged->GetPoint(b, xb);
+    vtkMath::Subtract(xb, xa, tangent);
+    vtkMath::Cross(normal, tangent, left);
+    if (vtkMath::Norm(left) == 0)
+    {
+      continue;
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      mid[i] = 0.5 * (xa[i] + xb[i]);
+    }
+    points->InsertNextPoint(mid);
+    direction->InsertNextTuple(left);
+  }
+  samples->SetPoints(points);
+  samples->GetPointData()->AddArray(direction);
+  return samples;
+}
 
 const PreparedScene& Prepare(const benchutil::SceneFile& file)
 {
@@ -130,6 +220,42 @@ void BM_Boolean(benchmark::State& state, benchutil::SceneFile file)
   state.counters["cells"] = scene.Cells;
 }
 
+void BM_BSC(benchmark::State& state, benchutil::SceneFile file)
+{
+  const PreparedScene& scene = Prepare(file);
+  if (!scene.Error.empty())
+  {
+    state.SkipWithError(scene.Error.c_str());
+    return;
+  }
+  if (!scene.Samples)
+  {
+    const_cast<PreparedScene&>(scene).Samples = PatchSamples(scene.Arranged);
+  }
+  vtkNew<vtkBoolSurfBSC> bsc;
+  bsc->SetInputData(0, scene.Arranged);
+  bsc->SetInputData(1, scene.Samples);
+  bsc->SetSnapTolerance(1e-6);
+  for (auto _ : state)
+  {
+    bsc->Modified();
+    bsc->Update();
+  }
+  vtkFieldData* fd = bsc->GetOutput()->GetFieldData();
+  vtkDataArray* dropped = fd->GetArray("DroppedSamples");
+  vtkDataArray* cuts = fd->GetArray("BSCCuts");
+  if (!dropped || !cuts)
+  {
+    state.SkipWithError("BSC failed");
+    return;
+  }
+  state.counters["cells"] = scene.Cells;
+  state.counters["samples"] = static_cast<double>(scene.Samples->GetNumberOfPoints());
+  state.counters["dropped"] = static_cast<double>(dropped->GetNumberOfTuples());
+  state.counters["cuts"] = cuts->GetComponent(0, 0);
+  state.counters["regionTriangles"] = static_cast<double>(bsc->GetOutput()->GetNumberOfCells());
+}
+
 // What an edit of a reference scene costs through the one-step filter: the curves are marked
 // modified every iteration, so tracing, arrangement, labeling and the Boolean all rerun on the
 // cached surface (arrange + label is what the authors' tool times for its scenes).
@@ -181,6 +307,8 @@ const bool registered = []
     benchmark::RegisterBenchmark(("BM_Labeling/" + file.Scene).c_str(), BM_Labeling, file)
       ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("BM_Boolean/" + file.Scene).c_str(), BM_Boolean, file)
+      ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("BM_BSC/" + file.Scene).c_str(), BM_BSC, file)
       ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("BM_OneStepScene/" + file.Scene).c_str(), BM_OneStepScene, file)
       ->Arg(1)

@@ -1,5 +1,6 @@
-"""pvbatch under Xvfb: the examples a new user runs first (Examples/boolean_genus2.py and
-Examples/variadic_xor.py) write a readable .vtp region and a non-trivial .png."""
+"""pvbatch under Xvfb: the examples a new user runs first (Examples/boolean_genus2.py,
+Examples/variadic_xor.py and Examples/bsc_flower.py) write a readable .vtp region and a
+non-trivial .png."""
 import os
 import shutil
 import subprocess
@@ -15,6 +16,7 @@ pvbatch = shutil.which("pvbatch") or "pvbatch"
 expected = {
     "boolean_genus2.py": ("genus2_boolean", 0.03, 0.08),  # (S0 ^ S1) | band: 0.0516
     "variadic_xor.py": ("bunny_xor", 3.0, 10.0),  # odd coverage of six discs: 6.23
+    "bsc_flower.py": ("bsc_flower", 8.3, 9.5),  # BSC: half the torus (7.89) + 3 petals: 8.88
 }
 for script, (name, low, high) in expected.items():
     subprocess.check_call([pvbatch, os.path.join(source_dir, "Examples", script), "--output", out])

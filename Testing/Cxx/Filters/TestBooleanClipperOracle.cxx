@@ -1,10 +1,9 @@
 // On a flat mesh geodesics are straight lines, so BoolSurf's Booleans of polygons must equal
 // Clipper's (an independent 2D implementation), for every operation and fill rule, with
 // random self-intersecting polygons on an irregular triangulation.
+#include "ClipperOracle.h"
 #include "FilterTestUtils.h"
 #include "vtkBoolSurf.h"
-
-#include <polyclipping/clipper.hpp>
 
 #include <gtest/gtest.h>
 
@@ -13,30 +12,8 @@
 
 namespace
 {
-// Polygon vertices lie on a dyadic grid so Clipper's integer input is exact; 2^40 keeps its
-// rounded intersection points within ~1e-12 of the true ones.
-constexpr double Scale = 1099511627776.0; // 2^40
-
-ClipperLib::Path ToClipper(const testutils::ControlPolygon& p)
-{
-  ClipperLib::Path path;
-  for (const auto& x : p.Points)
-  {
-    path.emplace_back(static_cast<ClipperLib::cInt>(std::llround(x[0] * Scale)),
-      static_cast<ClipperLib::cInt>(std::llround(x[1] * Scale)));
-  }
-  return path;
-}
-
-double ClipperArea(const ClipperLib::Paths& paths)
-{
-  double area = 0;
-  for (const auto& p : paths)
-  {
-    area += ClipperLib::Area(p);
-  }
-  return area / (Scale * Scale);
-}
+using testutils::ClipperArea;
+using testutils::ToClipper;
 
 testutils::ControlPolygon RandomPolygon(std::mt19937& rng, int shape)
 {

@@ -1,0 +1,83 @@
+#include "vtkBoolSurfBSC.h"
+
+#include "vtkBoolSurfBSCStage.h"
+#include "vtkBoolSurfBooleanStage.h"
+
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+
+vtkStandardNewMacro(vtkBoolSurfBSC);
+
+//------------------------------------------------------------------------------
+vtkBoolSurfBSC::vtkBoolSurfBSC()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfBSC::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* samples = vtkPolyData::GetData(inputVector[1], 0);
+  vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
+  // A failed update leaves empty outputs, not the previous region.
+  region->Initialize();
+  boundary->Initialize();
+  this->UpdateProgress(0.0);
+
+  boolsurf::ArrangementFields fields;
+  std::string error;
+  if (!boolsurf::ReadArrangementFields(input, fields, error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  std::vector<boolsurf::SampleQuery> queries;
+  if (!boolsurf::ReadSampleQueries(samples, nullptr, queries, error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  std::vector<boolsurf::PatchSnap> snaps;
+  boolsurf::BscResult result;
+  if (!boolsurf::SelectSampledCells(input,
+        fields,
+        queries,
+        boolsurf::SnapDistance(input, this->SnapTolerance),
+        this->MaxSearchStates,
+        snaps,
+        result,
+        error,
+        [this] { return this->CheckAbort(); }))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  this->UpdateProgress(0.5);
+  boolsurf::WriteSelection(input, fields, result.Selected, region, boundary);
+  boolsurf::AddSampleFields(snaps, result, region);
+  boolsurf::AddSampleFields(snaps, result, boundary);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfBSC::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
+  os << indent << "MaxSearchStates: " << this->MaxSearchStates << "\n";
+}

@@ -1,0 +1,85 @@
+/**
+ * @class   vtkBoolSurfBSC
+ * @brief   Boundary-Sampled Curves: the region chosen by oriented samples on the curves
+ *
+ * vtkBoolSurfBSC selects arrangement cells from samples placed on the curves instead of a
+ * Boolean expression (BoolSurf §3.2; Du et al. 2021, "Boundary-Sampled Halfspaces"). Each
+ * sample is a point on or near a curve with a point-data vector `Direction` pointing to the
+ * side that must be inside. The result is the region that keeps every sampled patch on its
+ * boundary with the sample's side inside (samples that cannot all be kept are dropped, as few
+ * as possible), has the least boundary length among those, and whose every connected piece of
+ * a curve on the boundary holds a sample. Labels are not read: inconsistent arrangements
+ * (non-contractible curves) work too. A curve that separates nothing (the same cell on both
+ * sides, e.g. a lone torus meridian) is ignored and its samples are dropped.
+ *
+ * Inputs: port 0 the refined surface (port 0 of vtkBoolSurfArrangement, or the output of
+ * vtkBoolSurfLabeling); port 1 the samples: points with point data `Direction` (3
+ * components). Each sample snaps to the nearest patch within SnapTolerance (a fraction of the
+ * surface's bounding-box diagonal).
+ *
+ * Outputs as vtkBoolSurfBoolean: port 0 the region (triangles with every array of the refined
+ * surface), port 1 its boundary as oriented polylines (region on the left, point data
+ * `TriangleId`/`Barycentric`, cell data `Closed`). Both carry field data `SamplePatch`,
+ * `SampleDistance`, `SampleOnBoundary` (1 when the sample ended on the boundary, 0 dropped),
+ * `DroppedSamples` (sample ids), `BoundaryLength`, `BSCCuts` and `Selection` = "BSC".
+ *
+ * Errors name the sample: no `Direction` array, NaN coordinates or direction, zero-length
+ * direction, a direction along the curve, no patch within the tolerance. The output is then
+ * empty.
+ *
+ * @sa vtkBoolSurfBoolean vtkBoolSurfArrangement vtkBoolSurf
+ */
+#ifndef vtkBoolSurfBSC_h
+#define vtkBoolSurfBSC_h
+
+#include "BoolSurfFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfBSC : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkBoolSurfBSC* New();
+  vtkTypeMacro(vtkBoolSurfBSC, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The refined surface (port 0) and the samples (port 1).
+  void SetSurfaceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+  void SetSamplesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  ///@}
+
+  ///@{
+  /// How far a sample may be from its patch, as a fraction of the surface's bounding-box
+  /// diagonal (default 0.01).
+  vtkSetClampMacro(SnapTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SnapTolerance, double);
+  ///@}
+
+  ///@{
+  /// Minimum cuts the best-first search for a sample-connected region may compute before it
+  /// finishes greedily (default 64).
+  vtkSetClampMacro(MaxSearchStates, int, 1, 1000000);
+  vtkGetMacro(MaxSearchStates, int);
+  ///@}
+
+  /// The boundary output (port 1).
+  vtkPolyData* GetBoundaryOutput() { return this->GetOutput(1); }
+
+protected:
+  vtkBoolSurfBSC();
+  ~vtkBoolSurfBSC() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  double SnapTolerance = 0.01;
+  int MaxSearchStates = 64;
+
+private:
+  vtkBoolSurfBSC(const vtkBoolSurfBSC&) = delete;
+  void operator=(const vtkBoolSurfBSC&) = delete;
+};
+
+#endif
