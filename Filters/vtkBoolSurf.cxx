@@ -3,6 +3,7 @@
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Selection/RegionExtraction.h"
 #include "vtkBoolSurfBooleanStage.h"
+#include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfRegionOutput.h"
 #include "vtkBoolSurfTraceStage.h"
@@ -276,9 +277,17 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     labeling.ZeroCells[component] = zero;
   }
   in.Labels = boolsurf::LabelCells(labeling);
-  const std::string warning = boolsurf::InconsistencyWarning(in.Labels);
+  std::string warning = boolsurf::InconsistencyWarning(in.Labels);
   if (!warning.empty())
   {
+    // Explain with the generators in excess (computed once per surface, only when needed).
+    boolsurf::HomologyFields homology;
+    std::string homologyError;
+    const boolsurf::HomologyBasis* basis = this->Internal->Surface.GetHomology(homologyError);
+    if (basis && boolsurf::ComputeCurveClasses(*basis, in.Curves, homology, homologyError))
+    {
+      warning += "\n" + boolsurf::ExplainInconsistency(in.Labels, homology);
+    }
     vtkWarningMacro(<< warning);
   }
   in.LabelingTime = Milliseconds(labelStart, Clock::now());

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSurfaceCache.h"
 
+#include "Homology/HomologyBasis.h"
+
 #include "Geodesic/CurveTracer.h"
 
 #include <vtkPolyData.h>
@@ -70,6 +72,34 @@ CurveTracer& vtkSurfaceCache::GetTracer()
     this->Tracer = std::make_unique<CurveTracer>(*this->Surface.Mesh);
   }
   return *this->Tracer;
+}
+
+//------------------------------------------------------------------------------
+const HomologyBasis* vtkSurfaceCache::GetHomology(std::string& error)
+{
+  const TriangleMesh* mesh = this->Surface.Mesh.get();
+  if (!mesh || !this->Surface.Topology)
+  {
+    error = "no surface to compute homology generators on";
+    return nullptr;
+  }
+  if (!this->Homology || this->Homology->GetMeshSerial() != mesh->GetSerial())
+  {
+    this->Homology = std::make_unique<HomologyBasis>();
+    this->HomologyError.clear();
+    if (!this->Homology->Compute(
+          *mesh, *this->Surface.Topology, HomologyOptions(), this->HomologyError))
+    {
+      // Keep the failed basis (its serial marks the mesh) so the error is not recomputed.
+      this->HomologyError = "homology generators: " + this->HomologyError;
+    }
+  }
+  if (!this->HomologyError.empty())
+  {
+    error = this->HomologyError;
+    return nullptr;
+  }
+  return this->Homology.get();
 }
 
 } // namespace boolsurf

@@ -20,6 +20,7 @@ namespace boolsurf
 {
 
 class CurveTracer;
+class HomologyBasis;
 
 class vtkSurfaceCache
 {
@@ -47,7 +48,13 @@ public:
   /// state is reused by every path).
   CurveTracer& GetTracer();
 
+  /// Homology generators of the mesh of the last Get(), computed on first use and kept while
+  /// the surface is the same (null with the reason in `error` when they cannot be computed).
+  const HomologyBasis* GetHomology(std::string& error);
+
 private:
+  std::unique_ptr<HomologyBasis> Homology;
+  std::string HomologyError;
   vtkPolyData* Input = nullptr; // identity only, never dereferenced
   vtkMTimeType InputTime = 0;
   double Tolerance = -1;
