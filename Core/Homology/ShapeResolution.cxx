@@ -354,16 +354,40 @@ ResolveResult ResolveShapes(const TriangleMesh& mesh,
           {
             const SurfacePoint& p = c.Points[j];
             const Vec3 x = mesh.Evaluate(p.Triangle, p.U, p.V);
-            const SurfacePoint& prev = c.Points[c.Closed ? (j + n - 1) % n : std::max(j - 1, 0)];
-            const SurfacePoint& next = c.Points[c.Closed ? (j + 1) % n : std::min(j + 1, n - 1)];
-            const Vec3 tangent = mesh.Evaluate(next.Triangle, next.U, next.V) -
-              mesh.Evaluate(prev.Triangle, prev.U, prev.V);
+            // Neighbours along the polygon, skipping control points (almost) on this one.
+            auto neighbour = [&](int step)
+            {
+              Vec3 y = x;
+              for (int k = 1; k < n && Distance(x, y) <= 1e-3 * offset; ++k)
+              {
+                const int at = c.Closed ? ((j + step * k) % n + n) % n
+                                        : std::min(std::max(j + step * k, 0), n - 1);
+                const SurfacePoint& q = c.Points[at];
+                y = mesh.Evaluate(q.Triangle, q.U, q.V);
+              }
+              return y;
+            };
+            const Vec3 before = x - neighbour(-1);
+            const Vec3 after = neighbour(+1) - x;
+            // Bisector of the two sides: the offset stays on the left of both.
+            const Vec3 tangent = Normalized(before) + Normalized(after);
             const Vec3 a = mesh.GetCornerPosition(p.Triangle, 0);
             const Vec3 normal = Normalized(Cross(mesh.GetCornerPosition(p.Triangle, 1) - a,
               mesh.GetCornerPosition(p.Triangle, 2) - a));
-            // Left of the curve seen from where the normal points: normal x tangent.
+            // Left of the curve seen from where the normal points: normal x tangent. Near
+            // control points closer than the offset, a third of their distance, so the copy
+            // cannot reach across a tight turn.
             const Vec3 left = Normalized(Cross(normal, tangent));
-            moved[j] = ClosestSurfacePointNear(mesh, x + offset * left, p.Triangle, 3 * offset);
+            double distance = offset;
+            for (double side : { Length(before), Length(after) })
+            {
+              if (side > 0)
+              {
+                distance = std::min(distance, side / 3);
+              }
+            }
+            const double d = distance;
+            moved[j] = ClosestSurfacePointNear(mesh, x + d * left, p.Triangle, 3 * d);
           }
           ResolvedCurve r;
           r.Curve = c;
