@@ -2,6 +2,7 @@
 // component (Euler characteristic of the complement), their intersection matrix is unimodular,
 // each generator's class is its own unit vector; on a parametrized torus the class of a traced
 // curve is its pair of analytic winding numbers up to one fixed unimodular change of basis.
+#include "Homology/GeneratorShortening.h"
 #include "Homology/HomologyBasis.h"
 
 #include "Geodesic/CurveTracer.h"
@@ -325,5 +326,56 @@ TEST(HomologyBasis, SharedMeshesHaveTwoGPerComponentAndCutToDiscs)
     Surface s;
     Build(data, s);
     CheckGenerators(s, 2 * genus);
+    // Shortened loops: fewer when a loop cannot be shortened within its class.
+    CurveTracer tracer(s.Mesh);
+    int shortened = 0;
+    double before = 0, after = 0;
+    for (int g = 0; g < s.Basis.GetNumberOfGenerators(); ++g)
+    {
+      TracedCurve loop, original;
+      original.Points = s.Basis.GetGenerator(g).Points;
+      if (ShortenGenerator(s.Mesh, s.Basis, g, tracer, loop))
+      {
+        ++shortened;
+        before += TracedLength(s.Mesh, original);
+        after += TracedLength(s.Mesh, loop);
+      }
+    }
+    std::printf("%s: %d of %d generators shortened, length %.3g -> %.3g\n",
+      file.c_str(),
+      shortened,
+      s.Basis.GetNumberOfGenerators(),
+      before,
+      after);
+    EXPECT_GT(shortened, 0);
+    EXPECT_LE(after, before);
   }
+}
+
+// Shortened generators keep their class and are no longer than the tree-cotree loops.
+TEST(HomologyBasis, ShortenedGeneratorsKeepTheirClassAndShrink)
+{
+  Surface s;
+  Build(MakeTorus(3.0, 1.0, 48, 24), s);
+  CurveTracer tracer(s.Mesh);
+  int shortened = 0;
+  for (int g = 0; g < s.Basis.GetNumberOfGenerators(); ++g)
+  {
+    TracedCurve loop;
+    if (!ShortenGenerator(s.Mesh, s.Basis, g, tracer, loop))
+    {
+      continue;
+    }
+    ++shortened;
+    std::vector<int> h;
+    std::string error;
+    ASSERT_TRUE(s.Basis.ClassOf(loop, h, error)) << error;
+    std::vector<int> unit(2, 0);
+    unit[g] = 1;
+    EXPECT_EQ(h, unit);
+    TracedCurve original;
+    original.Points = s.Basis.GetGenerator(g).Points;
+    EXPECT_LE(TracedLength(s.Mesh, loop), TracedLength(s.Mesh, original) + 1e-9);
+  }
+  EXPECT_EQ(shortened, 2);
 }
