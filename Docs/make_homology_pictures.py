@@ -87,7 +87,7 @@ for g in in_excess:
         t.LowerThreshold, t.UpperThreshold = g, g
     except AttributeError:
         t.ThresholdRange = [g, g]
-    generators.append((t, red, 4, False))
+    generators.append((t, red, 3, False))  # the tree-cotree loop and its shortened loop
 show(os.path.join(args.output, "Homology-inconsistent.png"),
      [(eight, gray, None, False), (traced, black, 2, False)] + generators)
 

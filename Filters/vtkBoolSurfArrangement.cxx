@@ -98,8 +98,12 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   std::string homologyError;
   const boolsurf::HomologyBasis* basis = this->Internal->Surface.GetHomology(homologyError);
   if (!basis ||
-    !boolsurf::AddHomologyFields(
-      *surface->Mesh, *basis, curves, output->GetFieldData(), homologyError))
+    !boolsurf::AddHomologyFields(*surface->Mesh,
+      *basis,
+      curves,
+      this->Internal->Surface.GetShortenedGenerators(),
+      output->GetFieldData(),
+      homologyError))
   {
     vtkWarningMacro(<< homologyError << " (no CurveHomology)");
   }

@@ -55,6 +55,68 @@ std::vector<int> ReadInts(vtkFieldData* fd, const char* name)
   return out;
 }
 
+// Closed loops of edge points as field data <prefix>Offsets, <prefix>Points (xyz),
+// <prefix>TriangleId, <prefix>Barycentric, <prefix>Id.
+void WriteLoops(const TriangleMesh& mesh,
+  const std::string& prefix,
+  const std::vector<std::vector<CanonicalPoint>>& loops,
+  const std::vector<int>& ids,
+  vtkFieldData* fd)
+{
+  std::vector<int> offsets{ 0 }, triangles;
+  vtkNew<vtkDoubleArray> positions, barycentric;
+  positions->SetName((prefix + "Points").c_str());
+  positions->SetNumberOfComponents(3);
+  barycentric->SetName((prefix + "Barycentric").c_str());
+  barycentric->SetNumberOfComponents(2);
+  for (const std::vector<CanonicalPoint>& loop : loops)
+  {
+    for (const CanonicalPoint& p : loop)
+    {
+      const Vec3 x = PositionOf(mesh, p);
+      positions->InsertNextTuple3(x.x, x.y, x.z);
+      const SurfacePoint sp = ToSurfacePoint(mesh, p);
+      triangles.push_back(sp.Triangle);
+      barycentric->InsertNextTuple2(sp.U, sp.V);
+    }
+    offsets.push_back(static_cast<int>(triangles.size()));
+  }
+  fd->AddArray(Ints((prefix + "Offsets").c_str(), offsets));
+  fd->AddArray(Ints((prefix + "TriangleId").c_str(), triangles));
+  fd->AddArray(Ints((prefix + "Id").c_str(), ids));
+  fd->AddArray(positions);
+  fd->AddArray(barycentric);
+}
+
+// Reads what WriteLoops wrote; false when absent or inconsistent.
+bool ReadLoops(vtkFieldData* fd, const std::string& prefix, HomologyLoops& out)
+{
+  out = HomologyLoops();
+  out.Offsets = ReadInts(fd, (prefix + "Offsets").c_str());
+  out.Ids = ReadInts(fd, (prefix + "Id").c_str());
+  const std::vector<int> triangles = ReadInts(fd, (prefix + "TriangleId").c_str());
+  vtkDataArray* positions = fd->GetArray((prefix + "Points").c_str());
+  vtkDataArray* barycentric = fd->GetArray((prefix + "Barycentric").c_str());
+  const vtkIdType np = static_cast<vtkIdType>(triangles.size());
+  if (out.Offsets.empty() || out.Ids.size() + 1 != out.Offsets.size() || out.Offsets.back() != np ||
+    !positions || !barycentric || positions->GetNumberOfTuples() != np ||
+    barycentric->GetNumberOfTuples() != np || positions->GetNumberOfComponents() != 3 ||
+    barycentric->GetNumberOfComponents() != 2)
+  {
+    out = HomologyLoops();
+    return false;
+  }
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double x[3];
+    positions->GetTuple(i, x);
+    out.Positions.insert(out.Positions.end(), x, x + 3);
+    out.Points.push_back(
+      { triangles[i], barycentric->GetComponent(i, 0), barycentric->GetComponent(i, 1) });
+  }
+  return true;
+}
+
 std::string Signed(int x)
 {
   return (x > 0 ? "+" : "") + std::to_string(x);
@@ -66,6 +128,7 @@ std::string Signed(int x)
 bool AddHomologyFields(const TriangleMesh& mesh,
   const HomologyBasis& basis,
   const std::vector<TracedCurve>& curves,
+  const std::vector<TracedCurve>* shortened,
   vtkFieldData* fd,
   std::string& error)
 {
@@ -98,28 +161,31 @@ bool AddHomologyFields(const TriangleMesh& mesh,
     fd->AddArray(Ints("CurveHomologyCurveId", ids));
     fd->AddArray(Ints("CurveHomologyShapeId", shapes));
   }
-  std::vector<int> offsets{ 0 }, triangles;
-  vtkNew<vtkDoubleArray> positions, barycentric;
-  positions->SetName("HomologyGeneratorPoints");
-  positions->SetNumberOfComponents(3);
-  barycentric->SetName("HomologyGeneratorBarycentric");
-  barycentric->SetNumberOfComponents(2);
-  for (const HomologyGenerator& g : basis.GetGenerators())
+  std::vector<std::vector<CanonicalPoint>> loops;
+  std::vector<int> loopIds;
+  for (int g = 0; g < ng; ++g)
   {
-    for (const CanonicalPoint& p : g.Points)
-    {
-      const Vec3 x = PositionOf(mesh, p);
-      positions->InsertNextTuple3(x.x, x.y, x.z);
-      const SurfacePoint s = ToSurfacePoint(mesh, p);
-      triangles.push_back(s.Triangle);
-      barycentric->InsertNextTuple2(s.U, s.V);
-    }
-    offsets.push_back(static_cast<int>(triangles.size()));
+    loops.push_back(basis.GetGenerator(g).Points);
+    loopIds.push_back(g);
   }
-  fd->AddArray(Ints("HomologyGeneratorOffsets", offsets));
-  fd->AddArray(Ints("HomologyGeneratorTriangleId", triangles));
-  fd->AddArray(positions);
-  fd->AddArray(barycentric);
+  WriteLoops(mesh, "HomologyGenerator", loops, loopIds, fd);
+  if (shortened)
+  {
+    loops.clear();
+    loopIds.clear();
+    for (size_t g = 0; g < shortened->size(); ++g)
+    {
+      if (!(*shortened)[g].Points.empty())
+      {
+        loops.push_back((*shortened)[g].Points);
+        loopIds.push_back(static_cast<int>(g));
+      }
+    }
+    if (!loops.empty())
+    {
+      WriteLoops(mesh, "HomologyShortGenerator", loops, loopIds, fd);
+    }
+  }
   return true;
 }
 
@@ -178,27 +244,8 @@ HomologyFields ReadHomologyFields(vtkFieldData* fd)
       h.CurveClasses.emplace_back(table.begin() + r * ng, table.begin() + (r + 1) * ng);
     }
   }
-  h.GeneratorOffsets = ReadInts(fd, "HomologyGeneratorOffsets");
-  const std::vector<int> triangles = ReadInts(fd, "HomologyGeneratorTriangleId");
-  vtkDataArray* positions = fd->GetArray("HomologyGeneratorPoints");
-  vtkDataArray* barycentric = fd->GetArray("HomologyGeneratorBarycentric");
-  const vtkIdType np = static_cast<vtkIdType>(triangles.size());
-  if (static_cast<int>(h.GeneratorOffsets.size()) != ng + 1 || h.GeneratorOffsets.back() != np ||
-    !positions || !barycentric || positions->GetNumberOfTuples() != np ||
-    barycentric->GetNumberOfTuples() != np || positions->GetNumberOfComponents() != 3 ||
-    barycentric->GetNumberOfComponents() != 2)
-  {
-    h.GeneratorOffsets.clear();
-    return h;
-  }
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    double x[3];
-    positions->GetTuple(i, x);
-    h.GeneratorPositions.insert(h.GeneratorPositions.end(), x, x + 3);
-    h.GeneratorPoints.push_back(
-      { triangles[i], barycentric->GetComponent(i, 0), barycentric->GetComponent(i, 1) });
-  }
+  ReadLoops(fd, "HomologyGenerator", h.Generators);
+  ReadLoops(fd, "HomologyShortGenerator", h.ShortGenerators);
   return h;
 }
 
@@ -318,43 +365,48 @@ std::string ExplainInconsistency(const LabelingResult& labels, const HomologyFie
 void WriteGeneratorPolylines(const HomologyFields& h, vtkPolyData* out)
 {
   out->Initialize();
-  const int ng = static_cast<int>(h.GeneratorOffsets.size()) - 1;
-  if (ng <= 0)
+  if (h.Generators.Ids.empty())
   {
     return;
   }
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  vtkNew<vtkIntArray> triangleId, generatorId;
+  vtkNew<vtkIntArray> triangleId, generatorId, shortened;
   vtkNew<vtkDoubleArray> barycentric;
   triangleId->SetName("TriangleId");
   barycentric->SetName("Barycentric");
   barycentric->SetNumberOfComponents(2);
   generatorId->SetName("GeneratorId");
+  shortened->SetName("Shortened");
   vtkNew<vtkCellArray> lines;
-  const vtkIdType np = static_cast<vtkIdType>(h.GeneratorPoints.size());
-  for (vtkIdType i = 0; i < np; ++i)
+  for (const HomologyLoops* loops : { &h.Generators, &h.ShortGenerators })
   {
-    points->InsertNextPoint(&h.GeneratorPositions[3 * i]);
-    triangleId->InsertNextValue(h.GeneratorPoints[i].Triangle);
-    barycentric->InsertNextTuple2(h.GeneratorPoints[i].U, h.GeneratorPoints[i].V);
-  }
-  for (int g = 0; g < ng; ++g)
-  {
-    const int first = h.GeneratorOffsets[g], last = h.GeneratorOffsets[g + 1];
-    lines->InsertNextCell(last - first + 1);
-    for (int i = first; i < last; ++i)
+    const vtkIdType base = points->GetNumberOfPoints();
+    for (size_t i = 0; i < loops->Points.size(); ++i)
     {
-      lines->InsertCellPoint(i);
+      points->InsertNextPoint(&loops->Positions[3 * i]);
+      triangleId->InsertNextValue(loops->Points[i].Triangle);
+      barycentric->InsertNextTuple2(loops->Points[i].U, loops->Points[i].V);
     }
-    lines->InsertCellPoint(first); // closed loop
-    generatorId->InsertNextValue(g);
+    for (size_t g = 0; g < loops->Ids.size(); ++g)
+    {
+      const int first = loops->Offsets[g], last = loops->Offsets[g + 1];
+      lines->InsertNextCell(last - first + 1);
+      for (int i = first; i < last; ++i)
+      {
+        lines->InsertCellPoint(base + i);
+      }
+      lines->InsertCellPoint(base + first); // closed loop
+      generatorId->InsertNextValue(loops->Ids[g]);
+      shortened->InsertNextValue(loops == &h.ShortGenerators ? 1 : 0);
+    }
   }
   out->SetPoints(points);
   out->SetLines(lines);
   out->GetPointData()->AddArray(triangleId);
   out->GetPointData()->AddArray(barycentric);
   out->GetCellData()->AddArray(generatorId);
+  out->GetCellData()->AddArray(shortened);
 }
 
 } // namespace boolsurf

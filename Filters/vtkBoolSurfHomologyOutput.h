@@ -10,7 +10,8 @@
 //   CurveHomologyCurveId, CurveHomologyShapeId   per row
 //   HomologyGeneratorOffsets    generators + 1 offsets into the generator point arrays
 //   HomologyGeneratorPoints     3 components (positions), HomologyGeneratorTriangleId,
-//   HomologyGeneratorBarycentric (2 components): the generators' edge crossings
+//   HomologyGeneratorBarycentric (2 components), HomologyGeneratorId: the generators' edge
+//   crossings; HomologyShortGenerator* the same for their locally shortest loops
 //   HomologyExcess              (labeling) shapes x generators, rows in the order of ShapeIds
 #ifndef vtkBoolSurfHomologyOutput_h
 #define vtkBoolSurfHomologyOutput_h
@@ -30,6 +31,15 @@ namespace boolsurf
 class HomologyBasis;
 class TriangleMesh;
 
+/// Closed loops on the surface (the generators, or their shortened versions).
+struct HomologyLoops
+{
+  std::vector<int> Ids;          ///< generator id of each loop
+  std::vector<int> Offsets;      ///< loops + 1 offsets into the points
+  std::vector<double> Positions; ///< xyz per point
+  std::vector<SurfacePoint> Points;
+};
+
 /// The homology fields as read back from field data.
 struct HomologyFields
 {
@@ -37,16 +47,17 @@ struct HomologyFields
   int NumberOfGenerators = 0;
   std::vector<int> CurveIds, CurveShapeIds;
   std::vector<std::vector<int>> CurveClasses; ///< per row
-  std::vector<int> GeneratorOffsets;
-  std::vector<double> GeneratorPositions; ///< xyz per point
-  std::vector<SurfacePoint> GeneratorPoints;
+  HomologyLoops Generators;
+  HomologyLoops ShortGenerators; ///< locally shortest loops, for the generators that have one
 };
 
-/// Computes each curve's class and writes the homology field data to `fd`. False with a message
-/// when a curve cannot be walked (consecutive points sharing no triangle).
+/// Computes each curve's class and writes the homology field data to `fd`; `shortened` (may
+/// be null; per generator, empty when none) adds the HomologyShortGenerator* arrays. False with a
+/// message when a curve cannot be walked (consecutive points sharing no triangle).
 bool AddHomologyFields(const TriangleMesh& mesh,
   const HomologyBasis& basis,
   const std::vector<TracedCurve>& curves,
+  const std::vector<TracedCurve>* shortened,
   vtkFieldData* fd,
   std::string& error);
 
@@ -78,7 +89,8 @@ std::string ExplainInconsistency(const LabelingResult& labels, const HomologyFie
 std::string DescribeClass(const std::vector<int>& homology);
 
 /// The generators as closed polylines (point data TriangleId, Barycentric; cell data
-/// GeneratorId) into `out`.
+/// GeneratorId, Shortened: 0 for the tree-cotree loops, 1 for their shortened versions) into
+/// `out`.
 void WriteGeneratorPolylines(const HomologyFields& h, vtkPolyData* out);
 
 } // namespace boolsurf

@@ -1,5 +1,6 @@
 #include "vtkBoolSurfSurfaceCache.h"
 
+#include "Homology/GeneratorShortening.h"
 #include "Homology/HomologyBasis.h"
 
 #include "Geodesic/CurveTracer.h"
@@ -87,6 +88,8 @@ const HomologyBasis* vtkSurfaceCache::GetHomology(std::string& error)
   {
     this->Homology = std::make_unique<HomologyBasis>();
     this->HomologyError.clear();
+    this->ShortGenerators.clear();
+    this->HasShortGenerators = false;
     if (!this->Homology->Compute(
           *mesh, *this->Surface.Topology, HomologyOptions(), this->HomologyError))
     {
@@ -100,6 +103,31 @@ const HomologyBasis* vtkSurfaceCache::GetHomology(std::string& error)
     return nullptr;
   }
   return this->Homology.get();
+}
+
+//------------------------------------------------------------------------------
+const std::vector<TracedCurve>* vtkSurfaceCache::GetShortenedGenerators()
+{
+  std::string error;
+  const HomologyBasis* basis = this->GetHomology(error);
+  if (!basis || basis->GetNumberOfGenerators() == 0)
+  {
+    return nullptr;
+  }
+  if (!this->HasShortGenerators)
+  {
+    this->ShortGenerators.assign(basis->GetNumberOfGenerators(), TracedCurve());
+    for (int g = 0; g < basis->GetNumberOfGenerators(); ++g)
+    {
+      if (!ShortenGenerator(
+            *this->Surface.Mesh, *basis, g, this->GetTracer(), this->ShortGenerators[g]))
+      {
+        this->ShortGenerators[g] = TracedCurve();
+      }
+    }
+    this->HasShortGenerators = true;
+  }
+  return &this->ShortGenerators;
 }
 
 } // namespace boolsurf
