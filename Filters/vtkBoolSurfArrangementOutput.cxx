@@ -175,7 +175,8 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   AddField(fd, IntArray("ShapeIds", shapeIds));
 
   const std::vector<int> location = PatchLocations(arr.Patches);
-  std::vector<int> arcs, arcShape, arcPatch, arcLocation;
+  const std::vector<int> direction = PatchDirections(arr.Patches);
+  std::vector<int> arcs, arcShape, arcPatch, arcLocation, arcDirection;
   for (const CellGraphArc& a : arr.CellGraph)
   {
     arcs.push_back(a.RightCell);
@@ -183,11 +184,13 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
     arcShape.push_back(a.Shape);
     arcPatch.push_back(a.Patch);
     arcLocation.push_back(a.Patch >= 0 ? location[a.Patch] : -1);
+    arcDirection.push_back(a.Patch >= 0 ? direction[a.Patch] : 1);
   }
   AddField(fd, IntArray("CellGraphArcs", arcs, 2));
   AddField(fd, IntArray("CellGraphShape", arcShape));
   AddField(fd, IntArray("CellGraphPatch", arcPatch));
   AddField(fd, IntArray("CellGraphLocation", arcLocation));
+  AddField(fd, IntArray("CellGraphDirection", arcDirection));
 
   AddField(fd, IntArray("CellComponent", CellComponents(*surface.Topology, arr)));
   AddField(
@@ -328,6 +331,7 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
   const std::vector<int> arcs = ReadInts(fd, "CellGraphArcs", 2);
   const std::vector<int> shape = ReadInts(fd, "CellGraphShape");
   const std::vector<int> location = ReadInts(fd, "CellGraphLocation");
+  const std::vector<int> direction = ReadInts(fd, "CellGraphDirection");
   if (shape.size() * 2 != arcs.size() || location.size() != shape.size())
   {
     error = "the cell graph arrays CellGraphArcs/CellGraphShape/CellGraphLocation disagree in size";
@@ -342,7 +346,12 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
         std::to_string(i) + "), which is not in ShapeIds";
       return false;
     }
-    out.Arcs.push_back({ arcs[2 * i], arcs[2 * i + 1], index, location[i] });
+    // CellGraphDirection is optional (older outputs): +1.
+    out.Arcs.push_back({ arcs[2 * i],
+      arcs[2 * i + 1],
+      index,
+      location[i],
+      direction.size() == shape.size() ? direction[i] : 1 });
   }
   out.CellComponent = ReadInts(fd, "CellComponent");
   out.ZeroCellCandidates = ReadInts(fd, "ZeroCellCandidates");

@@ -60,6 +60,26 @@ std::vector<int> PatchLocations(const std::vector<ArrangementPatch>& patches)
 }
 
 //------------------------------------------------------------------------------
+std::vector<int> PatchDirections(const std::vector<ArrangementPatch>& patches)
+{
+  // The same canonical order as the keys of PatchLocations: ends in increasing order, or for a
+  // closed patch the neighbours of its end in increasing order.
+  std::vector<int> direction(patches.size(), 1);
+  for (size_t p = 0; p < patches.size(); ++p)
+  {
+    const std::vector<int>& pts = patches[p].Points;
+    if (pts.size() < 2)
+    {
+      continue;
+    }
+    const int a = pts.front(), b = pts.back();
+    const int c = pts[1], d = pts[pts.size() - 2];
+    direction[p] = (a != b ? a < b : c <= d) ? 1 : -1;
+  }
+  return direction;
+}
+
+//------------------------------------------------------------------------------
 std::vector<int> CellComponents(const MeshTopology& topology, const Arrangement& arr)
 {
   std::vector<int> component(arr.NumberOfCells, 0);
@@ -131,13 +151,15 @@ LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
   in.NumberOfCells = arr.NumberOfCells;
   in.NumberOfShapes = static_cast<int>(in.ShapeIds.size());
   const std::vector<int> location = PatchLocations(arr.Patches);
+  const std::vector<int> direction = PatchDirections(arr.Patches);
   in.Arcs.reserve(arr.CellGraph.size());
   for (const CellGraphArc& a : arr.CellGraph)
   {
     in.Arcs.push_back({ a.RightCell,
       a.LeftCell,
       ShapeIndexOf(in.ShapeIds, a.Shape),
-      a.Patch >= 0 ? location[a.Patch] : -1 });
+      a.Patch >= 0 ? location[a.Patch] : -1,
+      a.Patch >= 0 ? direction[a.Patch] : 1 });
   }
   in.CellComponent = CellComponents(topology, arr);
   in.ZeroCells = ZeroCellCandidates(mesh, topology, arr);

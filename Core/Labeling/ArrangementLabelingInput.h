@@ -25,6 +25,10 @@ int ShapeIndexOf(const std::vector<int>& shapeIds, int shapeId);
 /// reversed) share it and are crossed together.
 std::vector<int> PatchLocations(const std::vector<ArrangementPatch>& patches);
 
+/// Per patch, +1 when it runs along the canonical direction of its place (PatchLocations), -1
+/// when reversed: the CellArc::Direction of its arcs.
+std::vector<int> PatchDirections(const std::vector<ArrangementPatch>& patches);
+
 /// Surface component of each cell (that of its lowest triangle).
 std::vector<int> CellComponents(const MeshTopology& topology, const Arrangement& arrangement);
 

@@ -35,8 +35,13 @@ std::vector<Crossing> GroupCrossings(const LabelingInput& input)
     {
       continue;
     }
-    // Stepping right -> left adds 1; store with the lower cell first.
-    if (a.RightCell <= a.LeftCell)
+    // Stepping right -> left adds 1; store with the lower cell first. An arc from a cell to
+    // itself keeps its direction along its place (reversed overlapping copies cancel).
+    if (a.RightCell == a.LeftCell)
+    {
+      keys.push_back({ a.RightCell, a.LeftCell, a.Location, a.Shape, a.Direction < 0 ? -1 : +1 });
+    }
+    else if (a.RightCell < a.LeftCell)
     {
       keys.push_back({ a.RightCell, a.LeftCell, a.Location, a.Shape, +1 });
     }

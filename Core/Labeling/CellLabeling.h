@@ -27,6 +27,11 @@ struct CellArc
   /// Arcs between the same two cells with the same Location are one crossing (overlapping
   /// curves). Distinct places must have distinct values (e.g. a patch or refined edge id).
   long long Location = 0;
+  /// For an arc from a cell to itself (a curve that does not separate its cell, e.g. one
+  /// meridian of a torus): +1 when its patch runs along the canonical direction of its
+  /// Location, -1 when reversed, so an exactly overlapping reversed curve of the same shape
+  /// cancels it. Ignored for arcs between two cells (their cells give the side).
+  int Direction = 1;
 };
 
 struct LabelingInput

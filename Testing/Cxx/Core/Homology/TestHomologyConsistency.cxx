@@ -112,8 +112,7 @@ void RandomShapes(const TriangleMesh& mesh,
     }
     // A curve and a reversed copy through nearby points of the same triangles: usually the
     // same class, so the shape is consistent although each curve may wind around the surface.
-    // (Not the exact reverse: a non-separating curve and its exact overlapping reverse give
-    // self-arcs whose directions the cell graph does not record.)
+    // (The exact reverse is ExactReverseOfAWindingCurveCancels.)
     std::vector<SurfacePoint> poly = randomPolygon();
     if (TraceThrough(tracer, poly, 1, id, c))
     {
@@ -187,4 +186,35 @@ TEST(HomologyConsistency, SharedMeshShapesConsistentExactlyWithoutExcess)
     EXPECT_GT(inconsistent, 0);
     EXPECT_LT(inconsistent, shapes);
   }
+}
+
+// A winding curve and its exact reverse (the same points) in one shape: their classes cancel,
+// and the labeling agrees although the curve does not separate its cell (the self-arcs keep
+// their direction along their place). In two shapes, both are inconsistent.
+TEST(HomologyConsistency, ExactReverseOfAWindingCurveCancels)
+{
+  const MeshData d = MakeTorus(3.0, 1.0, 36, 18);
+  TriangleMesh mesh(d.Positions, d.Triangles);
+  MeshTopology topo = MeshTopology::Compute(mesh);
+  HomologyBasis basis;
+  std::string error;
+  ASSERT_TRUE(basis.Compute(mesh, topo, HomologyOptions(), error)) << error;
+  CurveTracer tracer(mesh);
+  // Around the tube through points strictly inside triangles of one column of quads.
+  std::vector<SurfacePoint> control;
+  for (int j = 0; j < 18; j += 3)
+  {
+    control.push_back({ 2 * (5 * 18 + j), 0.3, 0.2 });
+  }
+  TracedCurve meridian;
+  ASSERT_TRUE(TraceThrough(tracer, control, 0, 0, meridian));
+  TracedCurve reversed = meridian;
+  std::reverse(reversed.Points.begin(), reversed.Points.end());
+  reversed.CurveId = 1;
+  std::vector<int> h;
+  ASSERT_TRUE(basis.ClassOf(meridian, h, error)) << error;
+  ASSERT_NE(h, std::vector<int>(2, 0)) << "the test curve must wind around the tube";
+  EXPECT_EQ(CheckTheorem1(mesh, topo, basis, { meridian, reversed }), 0);
+  reversed.ShapeId = 1;
+  EXPECT_EQ(CheckTheorem1(mesh, topo, basis, { meridian, reversed }), 2);
 }
