@@ -379,3 +379,43 @@ TEST(HomologyBasis, ShortenedGeneratorsKeepTheirClassAndShrink)
   }
   EXPECT_EQ(shortened, 2);
 }
+
+// A torus with a hole: still 2 generators (the boundary loop is capped, the virtual shape A0);
+// a loop around the hole has class zero, a loop around the tube does not.
+TEST(HomologyBasis, BoundaryLoopsAreCappedOnATorusWithAHole)
+{
+  const int nu = 24, nv = 12;
+  MeshData d = MakeTorus(3.0, 1.0, nu, nv);
+  auto quad = [&](int i, int j) { return 2 * (i * nv + j); }; // first triangle of quad (i, j)
+  d.Triangles.erase(d.Triangles.begin() + quad(5, 5), d.Triangles.begin() + quad(5, 5) + 2);
+  auto shifted = [&](int t) { return t > quad(5, 5) ? t - 2 : t; }; // ids after the erase
+  Surface s;
+  Build(d, s);
+  ASSERT_EQ(s.Topology.BoundaryLoops.size(), 1u);
+  ASSERT_EQ(s.Topology.Components[0].Genus, 1);
+  CheckGenerators(s, 2);
+  CurveTracer tracer(s.Mesh);
+  auto classOf = [&](const std::vector<std::pair<int, int>>& quads)
+  {
+    std::vector<SurfacePoint> control;
+    for (const auto& [i, j] : quads)
+    {
+      control.push_back({ shifted(quad(i, j)), 0.3, 0.3 });
+    }
+    CurveTrace trace;
+    EXPECT_TRUE(tracer.Trace(control, CurveType::GeodesicPolygon, true, trace).Ok);
+    std::vector<int> h;
+    std::string error;
+    EXPECT_TRUE(s.Basis.ClassOf(trace.Curve, h, error)) << error;
+    return h;
+  };
+  EXPECT_EQ(
+    classOf({ { 4, 4 }, { 5, 4 }, { 6, 4 }, { 6, 5 }, { 6, 6 }, { 5, 6 }, { 4, 6 }, { 4, 5 } }),
+    std::vector<int>(2, 0));
+  std::vector<std::pair<int, int>> tube;
+  for (int j = 0; j < nv; j += 2)
+  {
+    tube.push_back({ 12, j });
+  }
+  EXPECT_NE(classOf(tube), std::vector<int>(2, 0));
+}
