@@ -4,8 +4,10 @@
 #include "Selection/RegionExtraction.h"
 #include "vtkBoolSurfBSCStage.h"
 #include "vtkBoolSurfBooleanStage.h"
+#include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfRegionOutput.h"
+#include "vtkBoolSurfResolveStage.h"
 #include "vtkBoolSurfTraceStage.h"
 
 #include <vtkCellData.h>
@@ -19,6 +21,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkStaticCellLocator.h>
+#include <vtkStringArray.h>
 
 #include <array>
 #include <chrono>
@@ -58,6 +61,8 @@ struct vtkBoolSurf::Internals
   boolsurf::BscResult Bsc;
   /// Milliseconds of the stages of the last labeled arrangement (tracing, labeling).
   double TraceTime = 0, LabelingTime = 0;
+  /// What the resolution of inconsistent shapes did (ResolveStrategy >= 0), one note per shape.
+  std::vector<std::string> ResolutionNotes;
 
   /// What the labeled arrangement was computed from (the inputs by identity and time, and the
   /// tracing and labeling properties).
@@ -73,9 +78,15 @@ struct vtkBoolSurf::Internals
     int ZeroCellMode = 0;
     std::array<double, 3> ZeroCellPoint{};
     int NumberOfThreads = 0;
+    int ResolveStrategy = -1;
+    double ResolveOffset = 0;
 
     bool operator==(const Key& o) const
     {
+      if (this->ResolveStrategy != o.ResolveStrategy || this->ResolveOffset != o.ResolveOffset)
+      {
+        return false;
+      }
       return std::tie(this->Surface,
                this->SurfaceTime,
                this->Curves,
@@ -166,7 +177,9 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
     this->ProjectionTolerance,
     this->ZeroCellMode,
     { this->ZeroCellPoint[0], this->ZeroCellPoint[1], this->ZeroCellPoint[2] },
-    this->NumberOfThreads };
+    this->NumberOfThreads,
+    this->ResolveStrategy,
+    this->ResolveOffset };
   const bool reuse = in.HasLabels && key == in.LabeledKey;
   if (!reuse)
   {
@@ -275,6 +288,31 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   traceOptions.ProjectionTolerance = this->ProjectionTolerance;
   traceOptions.ExactGeodesics = this->ExactGeodesics != 0;
   std::vector<std::string> notes;
+  // Optional first step: resolve inconsistent shapes, then trace the resolved curves.
+  in.ResolutionNotes.clear();
+  vtkNew<vtkPolyData> resolved;
+  if (this->ResolveStrategy >= 0 && curvesInput)
+  {
+    boolsurf::ResolveStageOptions resolve;
+    resolve.Strategy = static_cast<boolsurf::ResolveStrategy>(this->ResolveStrategy);
+    resolve.Offset = this->ResolveOffset;
+    resolve.Resolution = this->Resolution;
+    resolve.ProjectionTolerance = this->ProjectionTolerance;
+    if (!boolsurf::ResolveControlCurves(in.Surface, curvesInput, resolve, resolved, notes, error))
+    {
+      error = "Cannot resolve inconsistent shapes: " + error;
+      return false;
+    }
+    if (auto* list = vtkStringArray::SafeDownCast(
+          resolved->GetFieldData()->GetAbstractArray("ResolutionNotes")))
+    {
+      for (vtkIdType i = 0; i < list->GetNumberOfValues(); ++i)
+      {
+        in.ResolutionNotes.push_back(list->GetValue(i));
+      }
+    }
+    curvesInput = resolved;
+  }
   const bool ok = boolsurf::TraceControlCurves(
     in.Surface, curvesInput, traceOptions, nullptr, in.Curves, nullptr, problems, notes);
   for (const std::string& n : notes)
@@ -329,9 +367,17 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     labeling.ZeroCells[component] = zero;
   }
   in.Labels = boolsurf::LabelCells(labeling);
-  const std::string warning = boolsurf::InconsistencyWarning(in.Labels);
+  std::string warning = boolsurf::InconsistencyWarning(in.Labels);
   if (!warning.empty())
   {
+    // Explain with the generators in excess (computed once per surface, only when needed).
+    boolsurf::HomologyFields homology;
+    std::string homologyError;
+    const boolsurf::HomologyBasis* basis = this->Internal->Surface.GetHomology(homologyError);
+    if (basis && boolsurf::ComputeCurveClasses(*basis, in.Curves, homology, homologyError))
+    {
+      warning += "\n" + boolsurf::ExplainInconsistency(in.Labels, homology);
+    }
     vtkWarningMacro(<< warning);
   }
   in.LabelingTime = Milliseconds(labelStart, Clock::now());
@@ -389,6 +435,16 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
   // The labels of the arrangement's cells (rows: ArrangementCell), for coloring the region by a
   // shape without per-triangle label arrays.
   boolsurf::AddLabelTable(in.Labels, fd);
+  if (!in.ResolutionNotes.empty())
+  {
+    vtkNew<vtkStringArray> notes;
+    notes->SetName("ResolutionNotes");
+    for (const std::string& n : in.ResolutionNotes)
+    {
+      notes->InsertNextValue(n);
+    }
+    fd->AddArray(notes);
+  }
   // Milliseconds per stage of this update (0 for the stages reused from the previous one).
   const boolsurf::ArrangementStageTimes& t = in.Arrangement.Times;
   const char* names[] = { "Trace",

@@ -130,6 +130,18 @@ public:
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 
+  ///@{
+  /// Inconsistent shapes (curves not null-homologous): -1 (default) labels them as they are,
+  /// and Booleans refuse them; 0 AddGenerators, 1 DuplicateReversed, 2 RemoveCurves first
+  /// resolve every such shape with that strategy (see vtkBoolSurfResolve), with
+  /// ResolveOffset for DuplicateReversed (0: automatic). The region's field data
+  /// `ResolutionNotes` then says what was done per shape.
+  vtkSetClampMacro(ResolveStrategy, int, -1, 2);
+  vtkGetMacro(ResolveStrategy, int);
+  vtkSetClampMacro(ResolveOffset, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ResolveOffset, double);
+  ///@}
+
   /// The boundary output (port 1).
   vtkPolyData* GetBoundaryOutput() { return this->GetOutput(1); }
 
@@ -156,6 +168,8 @@ protected:
   int Selection = BOOLEAN_SELECTION;
   double SnapTolerance = 0.01;
   int MaxSearchStates = 64;
+  int ResolveStrategy = -1;
+  double ResolveOffset = 0;
 
 private:
   vtkBoolSurf(const vtkBoolSurf&) = delete;

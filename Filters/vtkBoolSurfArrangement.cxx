@@ -1,6 +1,7 @@
 #include "vtkBoolSurfArrangement.h"
 
 #include "vtkBoolSurfArrangementOutput.h"
+#include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfSurfaceCache.h"
 #include "vtkBoolSurfTracedCurves.h"
 
@@ -91,6 +92,20 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkErrorMacro(<< error);
     return 0;
+  }
+  // Each curve's homology class and the surface's generators (computed once per surface), for
+  // the labeling's explanation of inconsistent shapes.
+  std::string homologyError;
+  const boolsurf::HomologyBasis* basis = this->Internal->Surface.GetHomology(homologyError);
+  if (!basis ||
+    !boolsurf::AddHomologyFields(*surface->Mesh,
+      *basis,
+      curves,
+      this->Internal->Surface.GetShortenedGenerators(),
+      output->GetFieldData(),
+      homologyError))
+  {
+    vtkWarningMacro(<< homologyError << " (no CurveHomology)");
   }
   this->UpdateProgress(1.0);
   return 1;

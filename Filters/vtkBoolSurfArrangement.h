@@ -29,11 +29,17 @@
  * the cell graph `CellGraphArcs` (2 components: right cell, left cell), `CellGraphShape`
  * (the ShapeId of each arc),
  * `CellGraphPatch`, `CellGraphLocation` (arcs of overlapping patches share a location),
+ * `CellGraphDirection` (+1/-1: the patch along or against its location's direction; it gives
+ * the side of arcs from a cell to itself, so exactly overlapping reversed curves cancel),
  * `CellComponent` (surface component of each cell), `ZeroCellCandidates` (per component, the
  * cell at its longest boundary loop, -1 for closed components), the patches (`PatchOffsets`,
  * `PatchPoints`, `PatchLeftCell`, `PatchRightCell`, `PatchShape`, `PatchCurve`) and
  * `StageTimes` (milliseconds: hash, intersections, refinement, flood fill, cell graph,
- * total). Downstream filters (labeling, Booleans) need only this port.
+ * total), and the homology of the curves (`NumberOfHomologyGenerators`, `CurveHomology`,
+ * `CurveHomologyCurveId`, `CurveHomologyShapeId`: each curve's class in the surface's
+ * generators, computed once per surface; `HomologyGenerator*` and `HomologyShortGenerator*`:
+ * the generators and their shortened loops; see vtkBoolSurfLabeling and Docs/Homology.md).
+ * Downstream filters (labeling, Booleans) need only this port.
  *
  * Output port 1, the patches as polylines on the refined surface's points, cell data
  * `PatchId`, `ShapeId`, `CurveId`, `LeftCell`, `RightCell`, `Length`.

@@ -1,5 +1,6 @@
 #include "vtkBoolSurfLabeling.h"
 
+#include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
 
 #include <vtkInformation.h>
@@ -10,7 +11,10 @@
 vtkStandardNewMacro(vtkBoolSurfLabeling);
 
 //------------------------------------------------------------------------------
-vtkBoolSurfLabeling::vtkBoolSurfLabeling() = default;
+vtkBoolSurfLabeling::vtkBoolSurfLabeling()
+{
+  this->SetNumberOfOutputPorts(2);
+}
 
 //------------------------------------------------------------------------------
 int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
@@ -19,7 +23,9 @@ int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* generators = vtkPolyData::GetData(outputVector, 1);
   output->Initialize(); // a failed update leaves an empty output, not the previous one
+  generators->Initialize();
   this->UpdateProgress(0.0);
   boolsurf::ArrangementFields fields;
   boolsurf::LabelingResult labels;
@@ -37,6 +43,9 @@ int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkWarningMacro(<< warning);
   }
+  // Port 1: the homology generators the arrangement found on the surface.
+  boolsurf::WriteGeneratorPolylines(
+    boolsurf::ReadHomologyFields(input->GetFieldData()), generators);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -28,6 +28,16 @@
  * labels are row ArrangementCell of CellLabels. A warning names the inconsistent shapes and
  * the cells where the conflict was found.
  *
+ * Homology (BoolSurf §4.4): when the input comes from vtkBoolSurfArrangement it carries each
+ * curve's class in the surface's homology generators (field data `CurveHomology`, curves x 2g,
+ * components G0.., rows named by `CurveHomologyCurveId` and `CurveHomologyShapeId`; the
+ * arrangement writes it). The labeling adds `HomologyExcess` (shapes x 2g, rows in the order of
+ * `ShapeIds`): the sum over each shape's curves, the generators in excess. A shape is
+ * consistent exactly when its excess is zero; the warning for an inconsistent shape names, per
+ * curve, the generators it winds around (sign and multiplicity) and the three fixes of
+ * vtkBoolSurfResolve. Output port 1: the generators as closed polylines on the surface (point
+ * data `TriangleId`/`Barycentric`, cell data `GeneratorId`); empty on genus 0.
+ *
  * @sa vtkBoolSurfArrangement vtkBoolSurfBoolean
  */
 #ifndef vtkBoolSurfLabeling_h

@@ -2,6 +2,7 @@
 
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Selection/BooleanExpression.h"
+#include "vtkBoolSurfHomologyOutput.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -131,6 +132,15 @@ bool LabelArrangement(vtkPolyData* input,
   const int ns = fields.NumberOfShapes;
   warning = InconsistencyWarning(labels);
   AddLabelTable(labels, output->GetFieldData());
+  // Generators in excess per shape, and what they mean for the inconsistent ones.
+  const HomologyFields homology = ReadHomologyFields(input->GetFieldData());
+  if (homology.Present)
+  {
+    AddHomologyExcess(
+      ShapeExcess(homology, fields.ShapeIds), fields.ShapeIds, output->GetFieldData());
+    const std::string why = ExplainInconsistency(labels, homology);
+    warning += why.empty() ? "" : "\n" + why;
+  }
 
   // Per-triangle arrays only on request: the table above is what the labels are.
   const bool color = options.ColorShape >= 0;

@@ -1,5 +1,8 @@
 #include "vtkBoolSurfSurfaceCache.h"
 
+#include "Homology/GeneratorShortening.h"
+#include "Homology/HomologyBasis.h"
+
 #include "Geodesic/CurveTracer.h"
 
 #include <vtkPolyData.h>
@@ -70,6 +73,61 @@ CurveTracer& vtkSurfaceCache::GetTracer()
     this->Tracer = std::make_unique<CurveTracer>(*this->Surface.Mesh);
   }
   return *this->Tracer;
+}
+
+//------------------------------------------------------------------------------
+const HomologyBasis* vtkSurfaceCache::GetHomology(std::string& error)
+{
+  const TriangleMesh* mesh = this->Surface.Mesh.get();
+  if (!mesh || !this->Surface.Topology)
+  {
+    error = "no surface to compute homology generators on";
+    return nullptr;
+  }
+  if (!this->Homology || this->Homology->GetMeshSerial() != mesh->GetSerial())
+  {
+    this->Homology = std::make_unique<HomologyBasis>();
+    this->HomologyError.clear();
+    this->ShortGenerators.clear();
+    this->HasShortGenerators = false;
+    if (!this->Homology->Compute(
+          *mesh, *this->Surface.Topology, HomologyOptions(), this->HomologyError))
+    {
+      // Keep the failed basis (its serial marks the mesh) so the error is not recomputed.
+      this->HomologyError = "homology generators: " + this->HomologyError;
+    }
+  }
+  if (!this->HomologyError.empty())
+  {
+    error = this->HomologyError;
+    return nullptr;
+  }
+  return this->Homology.get();
+}
+
+//------------------------------------------------------------------------------
+const std::vector<TracedCurve>* vtkSurfaceCache::GetShortenedGenerators()
+{
+  std::string error;
+  const HomologyBasis* basis = this->GetHomology(error);
+  if (!basis || basis->GetNumberOfGenerators() == 0)
+  {
+    return nullptr;
+  }
+  if (!this->HasShortGenerators)
+  {
+    this->ShortGenerators.assign(basis->GetNumberOfGenerators(), TracedCurve());
+    for (int g = 0; g < basis->GetNumberOfGenerators(); ++g)
+    {
+      if (!ShortenGenerator(
+            *this->Surface.Mesh, *basis, g, this->GetTracer(), this->ShortGenerators[g]))
+      {
+        this->ShortGenerators[g] = TracedCurve();
+      }
+    }
+    this->HasShortGenerators = true;
+  }
+  return &this->ShortGenerators;
 }
 
 } // namespace boolsurf

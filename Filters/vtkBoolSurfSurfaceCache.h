@@ -7,6 +7,7 @@
 #ifndef vtkBoolSurfSurfaceCache_h
 #define vtkBoolSurfSurfaceCache_h
 
+#include "Geodesic/TracedCurve.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
 
 #include <vtkSmartPointer.h>
@@ -20,6 +21,7 @@ namespace boolsurf
 {
 
 class CurveTracer;
+class HomologyBasis;
 
 class vtkSurfaceCache
 {
@@ -47,7 +49,20 @@ public:
   /// state is reused by every path).
   CurveTracer& GetTracer();
 
+  /// Homology generators of the mesh of the last Get(), computed on first use and kept while
+  /// the surface is the same (null with the reason in `error` when they cannot be computed).
+  const HomologyBasis* GetHomology(std::string& error);
+
+  /// Per generator of GetHomology(), its locally shortest loop for display (empty Points when
+  /// it could not be shortened within its class); computed on first use. Null when there are
+  /// no generators.
+  const std::vector<TracedCurve>* GetShortenedGenerators();
+
 private:
+  std::unique_ptr<HomologyBasis> Homology;
+  std::vector<TracedCurve> ShortGenerators;
+  bool HasShortGenerators = false;
+  std::string HomologyError;
   vtkPolyData* Input = nullptr; // identity only, never dereferenced
   vtkMTimeType InputTime = 0;
   double Tolerance = -1;

@@ -44,7 +44,7 @@ std::vector<int> ZeroCellCandidates(const TriangleMesh& mesh,
   const Arrangement& arrangement);
 
 /// The labeling input of an arrangement of `curves` (the curves it was computed from):
-/// shapes as indices into DistinctShapeIds(curves), arcs located by PatchLocations, cell
+/// shapes as indices into DistinctShapeIds(curves), arcs located by PatchPlaces, cell
 /// components and automatic zero cells.
 LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
   const MeshTopology& topology,

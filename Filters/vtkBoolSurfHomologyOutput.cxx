@@ -1,0 +1,412 @@
+#include "vtkBoolSurfHomologyOutput.h"
+
+#include "Homology/HomologyBasis.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+
+namespace boolsurf
+{
+namespace
+{
+
+void NameGeneratorComponents(vtkDataArray* a, int generators)
+{
+  a->SetNumberOfComponents(generators);
+  for (int g = 0; g < generators; ++g)
+  {
+    a->SetComponentName(g, ("G" + std::to_string(g)).c_str());
+  }
+}
+
+vtkSmartPointer<vtkIntArray> Ints(const char* name, const std::vector<int>& values)
+{
+  auto a = vtkSmartPointer<vtkIntArray>::New();
+  a->SetName(name);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  std::copy(values.begin(), values.end(), a->GetPointer(0));
+  return a;
+}
+
+std::vector<int> ReadInts(vtkFieldData* fd, const char* name)
+{
+  std::vector<int> out;
+  vtkDataArray* a = fd ? fd->GetArray(name) : nullptr;
+  if (!a)
+  {
+    return out;
+  }
+  const vtkIdType n = a->GetNumberOfTuples() * a->GetNumberOfComponents();
+  out.resize(static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    out[i] = static_cast<int>(a->GetComponent(
+      i / a->GetNumberOfComponents(), static_cast<int>(i % a->GetNumberOfComponents())));
+  }
+  return out;
+}
+
+// Closed loops of edge points as field data <prefix>Offsets, <prefix>Points (xyz),
+// <prefix>TriangleId, <prefix>Barycentric, <prefix>Id.
+void WriteLoops(const TriangleMesh& mesh,
+  const std::string& prefix,
+  const std::vector<std::vector<CanonicalPoint>>& loops,
+  const std::vector<int>& ids,
+  vtkFieldData* fd)
+{
+  std::vector<int> offsets{ 0 }, triangles;
+  vtkNew<vtkDoubleArray> positions, barycentric;
+  positions->SetName((prefix + "Points").c_str());
+  positions->SetNumberOfComponents(3);
+  barycentric->SetName((prefix + "Barycentric").c_str());
+  barycentric->SetNumberOfComponents(2);
+  for (const std::vector<CanonicalPoint>& loop : loops)
+  {
+    for (const CanonicalPoint& p : loop)
+    {
+      const Vec3 x = PositionOf(mesh, p);
+      positions->InsertNextTuple3(x.x, x.y, x.z);
+      const SurfacePoint sp = ToSurfacePoint(mesh, p);
+      triangles.push_back(sp.Triangle);
+      barycentric->InsertNextTuple2(sp.U, sp.V);
+    }
+    offsets.push_back(static_cast<int>(triangles.size()));
+  }
+  fd->AddArray(Ints((prefix + "Offsets").c_str(), offsets));
+  fd->AddArray(Ints((prefix + "TriangleId").c_str(), triangles));
+  fd->AddArray(Ints((prefix + "Id").c_str(), ids));
+  fd->AddArray(positions);
+  fd->AddArray(barycentric);
+}
+
+// Reads what WriteLoops wrote; false when absent or inconsistent.
+bool ReadLoops(vtkFieldData* fd, const std::string& prefix, HomologyLoops& out)
+{
+  out = HomologyLoops();
+  out.Offsets = ReadInts(fd, (prefix + "Offsets").c_str());
+  out.Ids = ReadInts(fd, (prefix + "Id").c_str());
+  const std::vector<int> triangles = ReadInts(fd, (prefix + "TriangleId").c_str());
+  vtkDataArray* positions = fd->GetArray((prefix + "Points").c_str());
+  vtkDataArray* barycentric = fd->GetArray((prefix + "Barycentric").c_str());
+  const vtkIdType np = static_cast<vtkIdType>(triangles.size());
+  if (out.Offsets.empty() || out.Ids.size() + 1 != out.Offsets.size() || out.Offsets.back() != np ||
+    !positions || !barycentric || positions->GetNumberOfTuples() != np ||
+    barycentric->GetNumberOfTuples() != np || positions->GetNumberOfComponents() != 3 ||
+    barycentric->GetNumberOfComponents() != 2)
+  {
+    out = HomologyLoops();
+    return false;
+  }
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double x[3];
+    positions->GetTuple(i, x);
+    out.Positions.insert(out.Positions.end(), x, x + 3);
+    out.Points.push_back(
+      { triangles[i], barycentric->GetComponent(i, 0), barycentric->GetComponent(i, 1) });
+  }
+  return true;
+}
+
+std::string Signed(int x)
+{
+  return (x > 0 ? "+" : "") + std::to_string(x);
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool AddHomologyFields(const TriangleMesh& mesh,
+  const HomologyBasis& basis,
+  const std::vector<TracedCurve>& curves,
+  const std::vector<TracedCurve>* shortened,
+  vtkFieldData* fd,
+  std::string& error)
+{
+  const int ng = basis.GetNumberOfGenerators();
+  fd->AddArray(Ints("NumberOfHomologyGenerators", { ng }));
+  if (ng == 0)
+  {
+    return true; // genus 0: no generators, every class is zero (no empty arrays written)
+  }
+  std::vector<int> ids, shapes, classes;
+  std::vector<int> h;
+  for (const TracedCurve& c : curves)
+  {
+    if (!basis.ClassOf(c, h, error))
+    {
+      return false;
+    }
+    ids.push_back(c.CurveId);
+    shapes.push_back(c.ShapeId);
+    classes.insert(classes.end(), h.begin(), h.end());
+  }
+  if (!curves.empty())
+  {
+    vtkNew<vtkIntArray> table;
+    table->SetName("CurveHomology");
+    NameGeneratorComponents(table, ng);
+    table->SetNumberOfTuples(static_cast<vtkIdType>(curves.size()));
+    std::copy(classes.begin(), classes.end(), table->GetPointer(0));
+    fd->AddArray(table);
+    fd->AddArray(Ints("CurveHomologyCurveId", ids));
+    fd->AddArray(Ints("CurveHomologyShapeId", shapes));
+  }
+  std::vector<std::vector<CanonicalPoint>> loops;
+  std::vector<int> loopIds;
+  for (int g = 0; g < ng; ++g)
+  {
+    loops.push_back(basis.GetGenerator(g).Points);
+    loopIds.push_back(g);
+  }
+  WriteLoops(mesh, "HomologyGenerator", loops, loopIds, fd);
+  if (shortened)
+  {
+    loops.clear();
+    loopIds.clear();
+    for (size_t g = 0; g < shortened->size(); ++g)
+    {
+      if (!(*shortened)[g].Points.empty())
+      {
+        loops.push_back((*shortened)[g].Points);
+        loopIds.push_back(static_cast<int>(g));
+      }
+    }
+    if (!loops.empty())
+    {
+      WriteLoops(mesh, "HomologyShortGenerator", loops, loopIds, fd);
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool ComputeCurveClasses(const HomologyBasis& basis,
+  const std::vector<TracedCurve>& curves,
+  HomologyFields& out,
+  std::string& error)
+{
+  out = HomologyFields();
+  out.Present = true;
+  out.NumberOfGenerators = basis.GetNumberOfGenerators();
+  std::vector<int> h;
+  for (const TracedCurve& c : curves)
+  {
+    if (!basis.ClassOf(c, h, error))
+    {
+      return false;
+    }
+    out.CurveIds.push_back(c.CurveId);
+    out.CurveShapeIds.push_back(c.ShapeId);
+    out.CurveClasses.push_back(h);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+HomologyFields ReadHomologyFields(vtkFieldData* fd)
+{
+  HomologyFields h;
+  const std::vector<int> count = ReadInts(fd, "NumberOfHomologyGenerators");
+  if (count.size() != 1)
+  {
+    return h;
+  }
+  h.Present = true;
+  h.NumberOfGenerators = std::max(0, count[0]);
+  const int ng = h.NumberOfGenerators;
+  if (ng == 0)
+  {
+    return h;
+  }
+  h.CurveIds = ReadInts(fd, "CurveHomologyCurveId");
+  h.CurveShapeIds = ReadInts(fd, "CurveHomologyShapeId");
+  const std::vector<int> table = ReadInts(fd, "CurveHomology");
+  const size_t rows = h.CurveIds.size();
+  if (h.CurveShapeIds.size() != rows || table.size() != rows * ng)
+  {
+    h.CurveIds.clear();
+    h.CurveShapeIds.clear();
+  }
+  else
+  {
+    for (size_t r = 0; r < rows; ++r)
+    {
+      h.CurveClasses.emplace_back(table.begin() + r * ng, table.begin() + (r + 1) * ng);
+    }
+  }
+  ReadLoops(fd, "HomologyGenerator", h.Generators);
+  ReadLoops(fd, "HomologyShortGenerator", h.ShortGenerators);
+  return h;
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::vector<int>> ShapeExcess(const HomologyFields& h, const std::vector<int>& shapeIds)
+{
+  std::vector<std::vector<int>> excess(shapeIds.size(), std::vector<int>(h.NumberOfGenerators, 0));
+  for (size_t r = 0; r < h.CurveClasses.size(); ++r)
+  {
+    const auto it = std::lower_bound(shapeIds.begin(), shapeIds.end(), h.CurveShapeIds[r]);
+    if (it != shapeIds.end() && *it == h.CurveShapeIds[r])
+    {
+      std::vector<int>& sum = excess[it - shapeIds.begin()];
+      for (int g = 0; g < h.NumberOfGenerators; ++g)
+      {
+        sum[g] += h.CurveClasses[r][g];
+      }
+    }
+  }
+  return excess;
+}
+
+//------------------------------------------------------------------------------
+void AddHomologyExcess(const std::vector<std::vector<int>>& excess,
+  const std::vector<int>& shapeIds,
+  vtkFieldData* fd)
+{
+  if (excess.empty() || excess[0].empty())
+  {
+    return;
+  }
+  const int ng = static_cast<int>(excess[0].size());
+  vtkNew<vtkIntArray> table;
+  table->SetName("HomologyExcess");
+  NameGeneratorComponents(table, ng);
+  table->SetNumberOfTuples(static_cast<vtkIdType>(excess.size()));
+  for (size_t s = 0; s < excess.size(); ++s)
+  {
+    std::copy(
+      excess[s].begin(), excess[s].end(), table->GetPointer(static_cast<vtkIdType>(s) * ng));
+  }
+  (void)shapeIds; // rows follow ShapeIds, written by the labeling next to this table
+  fd->AddArray(table);
+}
+
+//------------------------------------------------------------------------------
+std::string DescribeClass(const std::vector<int>& homology)
+{
+  std::string text;
+  for (size_t g = 0; g < homology.size(); ++g)
+  {
+    if (homology[g] != 0)
+    {
+      text += (text.empty() ? "" : ", ") + Signed(homology[g]) + " x G" + std::to_string(g);
+    }
+  }
+  return text.empty() ? "no generator" : text;
+}
+
+//------------------------------------------------------------------------------
+std::string ExplainInconsistency(const LabelingResult& labels, const HomologyFields& h)
+{
+  std::string text;
+  for (int s = 0; s < labels.NumberOfShapes; ++s)
+  {
+    if (labels.ShapeConsistent[s])
+    {
+      continue;
+    }
+    const int shapeId = labels.ShapeIdOf(s);
+    std::string curves;
+    std::vector<int> excess(h.NumberOfGenerators, 0);
+    std::vector<int> offending;
+    for (size_t r = 0; r < h.CurveClasses.size(); ++r)
+    {
+      if (h.CurveShapeIds[r] != shapeId)
+      {
+        continue;
+      }
+      const std::vector<int>& c = h.CurveClasses[r];
+      for (int g = 0; g < h.NumberOfGenerators; ++g)
+      {
+        excess[g] += c[g];
+      }
+      if (std::any_of(c.begin(), c.end(), [](int x) { return x != 0; }))
+      {
+        offending.push_back(h.CurveIds[r]);
+        curves += (curves.empty() ? "" : "; ") + std::string("curve ") +
+          std::to_string(h.CurveIds[r]) + " winds " + DescribeClass(c);
+      }
+    }
+    text += (text.empty() ? "" : "\n") + std::string("Shape S") + std::to_string(shapeId) + ": ";
+    if (offending.empty())
+    {
+      text += "no curve winds around a handle of the surface (an open curve, or curves meeting "
+              "within rounding, keep the labels from agreeing).";
+      continue;
+    }
+    std::string ids;
+    for (int id : offending)
+    {
+      ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+    }
+    text += curves + ". Generators in excess: " + DescribeClass(excess) +
+      " (drawn by the second output of Label Arrangement Cells). Its curves do not bound a "
+      "region. Fixes (Resolve Inconsistent Shapes, Strategy): AddGenerators adds a reversed "
+      "copy of each generator in excess so the shape closes across the handles; "
+      "DuplicateReversed turns each offending curve (" +
+      ids +
+      ") into a thin solid strip with a reversed copy beside it; RemoveCurves drops (or flips) "
+      "curves whose windings add up to the excess.";
+  }
+  return text;
+}
+
+//------------------------------------------------------------------------------
+void WriteGeneratorPolylines(const HomologyFields& h, vtkPolyData* out)
+{
+  out->Initialize();
+  if (h.Generators.Ids.empty())
+  {
+    return;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkIntArray> triangleId, generatorId, shortened;
+  vtkNew<vtkDoubleArray> barycentric;
+  triangleId->SetName("TriangleId");
+  barycentric->SetName("Barycentric");
+  barycentric->SetNumberOfComponents(2);
+  generatorId->SetName("GeneratorId");
+  shortened->SetName("Shortened");
+  vtkNew<vtkCellArray> lines;
+  for (const HomologyLoops* loops : { &h.Generators, &h.ShortGenerators })
+  {
+    const vtkIdType base = points->GetNumberOfPoints();
+    for (size_t i = 0; i < loops->Points.size(); ++i)
+    {
+      points->InsertNextPoint(&loops->Positions[3 * i]);
+      triangleId->InsertNextValue(loops->Points[i].Triangle);
+      barycentric->InsertNextTuple2(loops->Points[i].U, loops->Points[i].V);
+    }
+    for (size_t g = 0; g < loops->Ids.size(); ++g)
+    {
+      const int first = loops->Offsets[g], last = loops->Offsets[g + 1];
+      lines->InsertNextCell(last - first + 1);
+      for (int i = first; i < last; ++i)
+      {
+        lines->InsertCellPoint(base + i);
+      }
+      lines->InsertCellPoint(base + first); // closed loop
+      generatorId->InsertNextValue(loops->Ids[g]);
+      shortened->InsertNextValue(loops == &h.ShortGenerators ? 1 : 0);
+    }
+  }
+  out->SetPoints(points);
+  out->SetLines(lines);
+  out->GetPointData()->AddArray(triangleId);
+  out->GetPointData()->AddArray(barycentric);
+  out->GetCellData()->AddArray(generatorId);
+  out->GetCellData()->AddArray(shortened);
+}
+
+} // namespace boolsurf

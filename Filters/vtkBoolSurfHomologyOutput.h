@@ -1,0 +1,98 @@
+// Homology in VTK form (a private header of the module): the arrangement writes each traced
+// curve's class and the surface's generators as field data of its refined surface; the
+// labeling sums them per shape (the generators in excess), explains inconsistent shapes with
+// them and draws the generators on its second output.
+//
+// Field data (array names are API, see vtkBoolSurfLabeling.h):
+//   NumberOfHomologyGenerators  1 value: 2g summed over the surface's components
+//   CurveHomology               curves x generators (components G0, G1, ...), row i for the
+//                               curve whose id is CurveHomologyCurveId[i]
+//   CurveHomologyCurveId, CurveHomologyShapeId   per row
+//   HomologyGeneratorOffsets    generators + 1 offsets into the generator point arrays
+//   HomologyGeneratorPoints     3 components (positions), HomologyGeneratorTriangleId,
+//   HomologyGeneratorBarycentric (2 components), HomologyGeneratorId: the generators' edge
+//   crossings; HomologyShortGenerator* the same for their locally shortest loops
+//   HomologyExcess              (labeling) shapes x generators, rows in the order of ShapeIds
+#ifndef vtkBoolSurfHomologyOutput_h
+#define vtkBoolSurfHomologyOutput_h
+
+#include "Geodesic/TracedCurve.h"
+#include "Labeling/CellLabeling.h"
+
+#include <string>
+#include <vector>
+
+class vtkFieldData;
+class vtkPolyData;
+
+namespace boolsurf
+{
+
+class HomologyBasis;
+class TriangleMesh;
+
+/// Closed loops on the surface (the generators, or their shortened versions).
+struct HomologyLoops
+{
+  std::vector<int> Ids;          ///< generator id of each loop
+  std::vector<int> Offsets;      ///< loops + 1 offsets into the points
+  std::vector<double> Positions; ///< xyz per point
+  std::vector<SurfacePoint> Points;
+};
+
+/// The homology fields as read back from field data.
+struct HomologyFields
+{
+  bool Present = false;
+  int NumberOfGenerators = 0;
+  std::vector<int> CurveIds, CurveShapeIds;
+  std::vector<std::vector<int>> CurveClasses; ///< per row
+  HomologyLoops Generators;
+  HomologyLoops ShortGenerators; ///< locally shortest loops, for the generators that have one
+};
+
+/// Computes each curve's class and writes the homology field data to `fd`; `shortened` (may
+/// be null; per generator, empty when none) adds the HomologyShortGenerator* arrays. False with a
+/// message when a curve cannot be walked (consecutive points sharing no triangle).
+bool AddHomologyFields(const TriangleMesh& mesh,
+  const HomologyBasis& basis,
+  const std::vector<TracedCurve>& curves,
+  const std::vector<TracedCurve>* shortened,
+  vtkFieldData* fd,
+  std::string& error);
+
+/// The curve rows of HomologyFields (classes, ids, shapes) computed in memory, without the
+/// generators' points: what the one-step filter needs to explain inconsistent shapes.
+bool ComputeCurveClasses(const HomologyBasis& basis,
+  const std::vector<TracedCurve>& curves,
+  HomologyFields& out,
+  std::string& error);
+
+/// Reads the homology field data; Present is false when there is none.
+HomologyFields ReadHomologyFields(vtkFieldData* fd);
+
+/// Per shape index (of `shapeIds`, sorted), the sum of its curves' classes.
+std::vector<std::vector<int>> ShapeExcess(const HomologyFields& h,
+  const std::vector<int>& shapeIds);
+
+/// Field data HomologyExcess (shapes x generators, components G0...).
+void AddHomologyExcess(const std::vector<std::vector<int>>& excess,
+  const std::vector<int>& shapeIds,
+  vtkFieldData* fd);
+
+/// For every inconsistent shape of `labels`: the curves that wind around generators (with
+/// sign and multiplicity), the generators in excess and the three fixes, in words. Empty when
+/// every shape is consistent.
+std::string ExplainInconsistency(const LabelingResult& labels, const HomologyFields& h);
+
+/// "+1 x G0, -2 x G3" for a class vector ("no generator" when zero).
+std::string DescribeClass(const std::vector<int>& homology);
+
+/// The generators as closed polylines (point data TriangleId, Barycentric; cell data
+/// GeneratorId, Shortened: 0 for the tree-cotree loops, 1 for their shortened versions) into
+/// `out`.
+void WriteGeneratorPolylines(const HomologyFields& h, vtkPolyData* out);
+
+} // namespace boolsurf
+
+#endif
