@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <random>
 #include <string>
@@ -114,10 +116,11 @@ TEST(SurfaceBooleans, SphereInclusionExclusionIsExact)
 TEST(SurfaceBooleans, GeodesicTriangleAreaApproachesAngleExcess)
 {
   // The octant triangle: three right angles, excess pi/2 on the unit sphere. On coarse
-  // icospheres the locally shortest paths wander around the great circles (which way depends
-  // on the triangulation), so the error is compared between the coarsest and the finest
-  // levels rather than level by level; at the finest it must be small, also relative to the
-  // inscribed mesh's own area (which removes its shortfall from 4 pi).
+  // icospheres the polyhedral shortest paths wander around the great circles (which way, and
+  // so the sign of the error, depends on the triangulation: a coarse level can land close by
+  // chance), so the finest error is compared with the worse of the two coarsest rather than
+  // level by level; at the finest it must be small, also relative to the inscribed mesh's own
+  // area (which removes its shortfall from 4 pi).
   ControlPolygon octant;
   octant.Points = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
   std::vector<double> errors;
@@ -134,7 +137,7 @@ TEST(SurfaceBooleans, GeodesicTriangleAreaApproachesAngleExcess)
     errors.push_back(std::abs(area - Pi / 2));
     relative = std::abs(area / testutils::Area(sphere) - 0.125);
   }
-  EXPECT_LT(errors.back(), 0.5 * errors.front());
+  EXPECT_LT(errors.back(), 0.5 * std::max(errors[0], errors[1]));
   EXPECT_LT(errors.back(), 0.01); // well under 1% of pi/2 at 81920 triangles
   EXPECT_LT(relative, 1e-3);
 }
