@@ -6,6 +6,7 @@
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkIntArray.h>
@@ -85,6 +86,20 @@ inline vtkSmartPointer<vtkPolyData> ToCurves(const std::vector<ControlPolygon>& 
   pd->GetCellData()->AddArray(type);
   return pd;
 }
+
+/// Collects the error and warning messages a filter emits (AddObserver for ErrorEvent and/or
+/// WarningEvent).
+class MessageCatcher : public vtkCommand
+{
+public:
+  static MessageCatcher* New() { return new MessageCatcher; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings) +=
+      static_cast<const char*>(data) + std::string("\n");
+  }
+  std::string Errors, Warnings;
+};
 
 /// Errors reported by one update of `filter` (empty when it succeeded).
 inline std::string ErrorsOf(vtkAlgorithm* filter)

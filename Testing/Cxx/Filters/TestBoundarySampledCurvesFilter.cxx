@@ -24,21 +24,11 @@
 
 using testutils::ControlPolygon;
 
+using testutils::MessageCatcher;
+
 namespace
 {
 constexpr double Pi = 3.14159265358979323846;
-
-class MessageCatcher : public vtkCommand
-{
-public:
-  static MessageCatcher* New() { return new MessageCatcher; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings) +=
-      static_cast<const char*>(data) + std::string("\n");
-  }
-  std::string Errors, Warnings;
-};
 
 struct Sample
 {
