@@ -3,6 +3,7 @@
 // between near-opposite points are exactly that long when it is on; off, some come out
 // longer (the locally shortest path around the wrong side), none shorter.
 #include "FilterTestUtils.h"
+#include "Support/UnrolledPrism.h"
 #include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkCellData.h>
@@ -41,13 +42,11 @@ TEST(ExactGeodesicsProperty, PrismNearOppositePointsAreJoinedByTheUnrolledLine)
   const double radius = 1, height = 3, pi = std::acos(-1.0);
   vtkSmartPointer<vtkPolyData> prism =
     testutils::ToPolyData(boolsurf::MakeOpenCylinder(radius, height, around, along));
-  const double facet = 2 * radius * std::sin(pi / around), width = around * facet;
-  // A point on facet j at fraction f between its corners, at height z; x is its abscissa on
-  // the unrolled prism.
-  auto onFacet = [&](int j, double f, double z, double& x)
+  const boolsurf::testing::UnrolledPrism unrolledPrism{ around, radius };
+  // A point on facet j at fraction f between its corners, at height z.
+  auto onFacet = [&](int j, double f, double z)
   {
     const double a0 = 2 * pi * j / around, a1 = 2 * pi * (j + 1) / around;
-    x = (j + f) * facet;
     return std::array<double, 3>{ radius * ((1 - f) * std::cos(a0) + f * std::cos(a1)),
       radius * ((1 - f) * std::sin(a0) + f * std::sin(a1)),
       z };
@@ -60,13 +59,12 @@ TEST(ExactGeodesicsProperty, PrismNearOppositePointsAreJoinedByTheUnrolledLine)
   {
     const int j0 = static_cast<int>(rng() % around);
     const int j1 = (j0 + 23 + static_cast<int>(rng() % 3)) % around;
-    double x0, x1;
     testutils::ControlPolygon c;
     c.Closed = false;
-    c.Points = { onFacet(j0, unit(rng), height * unit(rng), x0),
-      onFacet(j1, unit(rng), height * unit(rng), x1) };
-    const double dx = std::abs(x1 - x0);
-    unrolled.push_back(std::hypot(std::min(dx, width - dx), c.Points[1][2] - c.Points[0][2]));
+    c.Points = { onFacet(j0, unit(rng), height * unit(rng)),
+      onFacet(j1, unit(rng), height * unit(rng)) };
+    auto vec = [](const std::array<double, 3>& p) { return boolsurf::Vec3{ p[0], p[1], p[2] }; };
+    unrolled.push_back(unrolledPrism.ShortestLength(vec(c.Points[0]), vec(c.Points[1])));
     legs.push_back(c);
   }
   vtkSmartPointer<vtkPolyData> curves = testutils::ToCurves(legs);

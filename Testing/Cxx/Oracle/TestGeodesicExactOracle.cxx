@@ -10,6 +10,7 @@
 #include "Geodesic/GeodesicPath.h"
 #include "Mesh/PlyReader.h"
 #include "Mesh/ProceduralMeshes.h"
+#include "Support/UnrolledPrism.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -33,7 +34,6 @@ using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using Traits = CGAL::Surface_mesh_shortest_path_traits<Kernel, CgalMesh>;
 using ShortestPaths = CGAL::Surface_mesh_shortest_path<Traits>;
 
-constexpr double Pi = 3.14159265358979323846;
 
 /// The same surface as `mesh`, vertex i and face t kept as vertex i and face t.
 std::unique_ptr<CgalMesh> ToCgal(const TriangleMesh& mesh)
@@ -270,20 +270,8 @@ TEST(GeodesicExactOracle, PrismNearOppositePairs)
   const TriangleMesh mesh = ToMesh(MakeOpenCylinder(radius, height, around, along));
   std::unique_ptr<CgalMesh> cgal = ToCgal(mesh);
   ASSERT_TRUE(cgal);
-  const double sector = 2 * Pi / around;
-  const double facet = 2 * radius * std::sin(sector / 2);
-  const double width = around * facet;
-  auto unrolled = [&](const Vec3& p)
-  {
-    double phi = std::atan2(p.y, p.x);
-    if (phi < 0)
-    {
-      phi += 2 * Pi;
-    }
-    const int j = static_cast<int>(std::floor(phi / sector + 1e-12)) % around;
-    const Vec3 corner{ radius * std::cos(j * sector), radius * std::sin(j * sector), 0 };
-    return Vec2{ j * facet + Distance(Vec3{ p.x, p.y, 0 }, corner), p.z };
-  };
+  const boolsurf::testing::UnrolledPrism prism{ around, radius };
+  const double width = prism.Width();
   GeodesicPathSolver solver(mesh);
   std::mt19937 rng(48);
   GeodesicPath path;
@@ -291,14 +279,12 @@ TEST(GeodesicExactOracle, PrismNearOppositePairs)
   for (int i = 0; i < 4000 && tested < 60; ++i)
   {
     const CanonicalPoint a = RandomPoint(mesh, rng), b = RandomPoint(mesh, rng);
-    const Vec2 ua = unrolled(PositionOf(mesh, a)), ub = unrolled(PositionOf(mesh, b));
-    const double dx = std::abs(ua.x - ub.x);
-    if (std::abs(dx - 0.5 * width) > 0.1 * width)
+    const Vec3 pa = PositionOf(mesh, a), pb = PositionOf(mesh, b);
+    if (std::abs(prism.AroundDistance(pa, pb) - 0.5 * width) > 0.1 * width)
     {
       continue; // only near-opposite pairs
     }
-    const double dy = ub.y - ua.y;
-    const double expected = std::hypot(std::min(dx, width - dx), dy);
+    const double expected = prism.ShortestLength(pa, pb);
     ASSERT_TRUE(solver.Compute(a, b, path).Ok);
     EXPECT_NEAR(path.Length, expected, 1e-9 * expected) << Describe(a) << " -> " << Describe(b);
     if (tested < 15) // the oracle agrees (one tree per pair: keep it to a few)

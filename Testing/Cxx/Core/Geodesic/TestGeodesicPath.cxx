@@ -3,6 +3,7 @@
 #include "Geodesic/GeodesicPath.h"
 #include "Mesh/PlyReader.h"
 #include "Mesh/ProceduralMeshes.h"
+#include "Support/UnrolledPrism.h"
 
 #include <gtest/gtest.h>
 
@@ -638,43 +639,23 @@ TEST(GeodesicPath, CylinderMatchesUnfoldedLine)
   const double radius = 1.0, height = 3.0;
   const TriangleMesh mesh = ToMesh(MakeOpenCylinder(radius, height, around, along));
   GeodesicPathSolver solver(mesh);
-  const double sector = 2 * Pi / around;
-  const double facet = 2 * radius * std::sin(sector / 2);
-  auto unrolled = [&](const Vec3& p)
-  {
-    double phi = std::atan2(p.y, p.x);
-    if (phi < 0)
-    {
-      phi += 2 * Pi;
-    }
-    int j = static_cast<int>(std::floor(phi / sector + 1e-12)) % around;
-    const Vec3 corner{ radius * std::cos(j * sector), radius * std::sin(j * sector), 0 };
-    const double inFacet = Distance(Vec3{ p.x, p.y, 0 }, corner);
-    return Vec2{ j * facet + inFacet, p.z };
-  };
+  const boolsurf::testing::UnrolledPrism prism{ around, radius };
+  const double width = prism.Width();
   std::mt19937 rng(4);
   GeodesicPath path;
   int tested = 0;
   for (int i = 0; i < 600 && tested < 150; ++i)
   {
     const CanonicalPoint a = RandomPoint(mesh, rng), b = RandomPoint(mesh, rng);
-    const Vec2 ua = unrolled(PositionOf(mesh, a)), ub = unrolled(PositionOf(mesh, b));
-    const double width = around * facet;
-    if (std::abs(ua.x - ub.x) > 0.25 * width && std::abs(ua.x - ub.x) < 0.75 * width)
+    const Vec3 pa = PositionOf(mesh, a), pb = PositionOf(mesh, b);
+    const double around1 = prism.AroundDistance(pa, pb);
+    if (around1 > 0.25 * width && around1 < 0.75 * width)
     {
       continue;
     }
-    Vec2 d = ub - ua;
-    if (d.x > 0.5 * width)
-    {
-      d.x -= width;
-    }
-    else if (d.x < -0.5 * width)
-    {
-      d.x += width;
-    }
+    const double expected = prism.ShortestLength(pa, pb);
     ASSERT_TRUE(solver.Compute(a, b, path).Ok);
-    EXPECT_NEAR(path.Length, Length(d), 1e-9 * std::max(1.0, Length(d)))
+    EXPECT_NEAR(path.Length, expected, 1e-9 * std::max(1.0, expected))
       << Describe(a) << " -> " << Describe(b);
     ExpectConsecutivePointsShareATriangle(mesh, path);
     ++tested;
@@ -692,33 +673,20 @@ TEST(GeodesicPath, PrismNearOppositePairsAreShortest)
   const double radius = 1.0;
   const TriangleMesh mesh = ToMesh(MakeOpenCylinder(radius, 3.0, around, along));
   GeodesicPathSolver solver(mesh);
-  const double sector = 2 * Pi / around;
-  const double facet = 2 * radius * std::sin(sector / 2);
-  const double width = around * facet;
-  auto unrolled = [&](const Vec3& p)
-  {
-    double phi = std::atan2(p.y, p.x);
-    if (phi < 0)
-    {
-      phi += 2 * Pi;
-    }
-    const int j = static_cast<int>(std::floor(phi / sector + 1e-12)) % around;
-    const Vec3 corner{ radius * std::cos(j * sector), radius * std::sin(j * sector), 0 };
-    return Vec2{ j * facet + Distance(Vec3{ p.x, p.y, 0 }, corner), p.z };
-  };
+  const boolsurf::testing::UnrolledPrism prism{ around, radius };
+  const double width = prism.Width();
   std::mt19937 rng(12);
   GeodesicPath path;
   int tested = 0;
   for (int i = 0; i < 6000 && tested < 100; ++i)
   {
     const CanonicalPoint a = RandomPoint(mesh, rng), b = RandomPoint(mesh, rng);
-    const Vec2 ua = unrolled(PositionOf(mesh, a)), ub = unrolled(PositionOf(mesh, b));
-    const double dx = std::abs(ua.x - ub.x);
-    if (std::abs(dx - 0.5 * width) > 0.08 * width)
+    const Vec3 pa = PositionOf(mesh, a), pb = PositionOf(mesh, b);
+    if (std::abs(prism.AroundDistance(pa, pb) - 0.5 * width) > 0.08 * width)
     {
       continue;
     }
-    const double expected = std::hypot(std::min(dx, width - dx), ub.y - ua.y);
+    const double expected = prism.ShortestLength(pa, pb);
     ASSERT_TRUE(solver.Compute(a, b, path).Ok);
     EXPECT_TRUE(solver.GetLastStatistics().Exact);
     EXPECT_NEAR(path.Length, expected, 1e-9 * expected) << Describe(a) << " -> " << Describe(b);
