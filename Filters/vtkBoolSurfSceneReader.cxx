@@ -449,6 +449,7 @@ struct Scene
   vtkSmartPointer<vtkPolyData> Mesh;
   vtkSmartPointer<vtkPolyData> Curves;
   std::string MeshFile;
+  std::string Model; ///< the scene's `model`, as written
   std::vector<std::string> Notes;
 };
 
@@ -484,7 +485,11 @@ struct CurveArrays
     this->ControlPointId->InsertNextValue(controlPoint);
   }
 
-  void AddCurve(const std::vector<vtkIdType>& ids, bool closed, int curveId, int shapeId)
+  void AddCurve(const std::vector<vtkIdType>& ids,
+    bool closed,
+    int curveId,
+    int shapeId,
+    int curveType = 0)
   {
     this->Lines->InsertNextCell(static_cast<vtkIdType>(ids.size() + (closed ? 1 : 0)));
     for (vtkIdType id : ids)
@@ -497,7 +502,7 @@ struct CurveArrays
     }
     this->CurveId->InsertNextValue(curveId);
     this->ShapeId->InsertNextValue(shapeId);
-    this->CurveType->InsertNextValue(0);
+    this->CurveType->InsertNextValue(curveType);
     this->Closed->InsertNextValue(closed ? 1 : 0);
   }
 
@@ -547,6 +552,33 @@ std::vector<bool> ClosedFlags(const json& scene, std::size_t polygons)
     }
   }
   return closed;
+}
+
+/// `curve_types` (a key of ours, written by vtkBoolSurfSceneWriter for Bezier curves): one
+/// CurveType per polygon, 0 geodesic polygon (the default) or 1 cubic Bezier spline.
+std::vector<int> CurveTypes(const json& scene, std::size_t polygons)
+{
+  std::vector<int> types(polygons, 0);
+  auto it = scene.find("curve_types");
+  if (it == scene.end() || it->is_null())
+  {
+    return types;
+  }
+  if (!it->is_array())
+  {
+    throw SceneError("'curve_types' is not an array");
+  }
+  for (std::size_t i = 0; i < it->size() && i < polygons; ++i)
+  {
+    const long long t = AsIndex((*it)[i], Where("curve_types", i));
+    if (t > 1)
+    {
+      throw SceneError(Where("curve_types", i) + " is " + std::to_string(t) +
+        ": 0 geodesic polygon, 1 cubic Bezier spline");
+    }
+    types[i] = static_cast<int>(t);
+  }
+  return types;
 }
 
 /// Scene shape id of every polygon (-1 for none yet), from `shapes`.
@@ -758,6 +790,7 @@ void ReadSurfaceScene(const json& scene,
     model = m.get<std::string>();
   }
   const std::vector<bool> closed = ClosedFlags(scene, polygons.size());
+  const std::vector<int> types = CurveTypes(scene, polygons.size());
   int numberOfShapes = 0;
   const std::vector<int> shapeOf = PolygonShapes(scene, polygons.size(), numberOfShapes);
 
@@ -887,13 +920,14 @@ void ReadSurfaceScene(const json& scene,
       ids.push_back(static_cast<vtkIdType>(AsIndex(p, "")));
     }
     const int shape = shapeOf[i] >= 0 ? shapeOf[i] : nextShape++;
-    arrays.AddCurve(ids, closed[i], static_cast<int>(i), shape);
+    arrays.AddCurve(ids, closed[i], static_cast<int>(i), shape, types[i]);
   }
   if (arrays.Lines->GetNumberOfCells() == 0)
   {
     throw SceneError("'polygons' are all empty: the scene has no curve");
   }
   out.Curves = arrays.Make();
+  out.Model = model;
 }
 } // namespace
 
@@ -993,6 +1027,10 @@ int vtkBoolSurfSceneReader::RequestData(vtkInformation*,
     if (!scene.MeshFile.empty())
     {
       AddString(pd->GetFieldData(), "MeshFileName", scene.MeshFile);
+    }
+    if (!scene.Model.empty())
+    {
+      AddString(pd->GetFieldData(), "SceneModel", scene.Model);
     }
   }
   this->UpdateProgress(1.0);

@@ -1,0 +1,394 @@
+#include "vtkBoolSurfSceneWriter.h"
+
+#include "vtkBoolSurfTracedCurves.h" // for ForEachCurveCell
+
+#include "vtkAbstractArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkErrorCode.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+vtkStandardNewMacro(vtkBoolSurfSceneWriter);
+
+namespace
+{
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+/// A problem with the input, already worded for the user.
+struct WriteError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// The reader's tolerance on barycentric coordinates (vtkBoolSurfSceneReader): a point written
+/// outside it could not be read back.
+constexpr double UVTolerance = 1e-6;
+
+/// Polygon and shape indices become list positions in the file: an id far beyond the number
+/// of curves would write millions of empty entries, so it is refused.
+constexpr double LargestListIndex = 1 << 24;
+
+bool IsIndex(double value, double largest = std::numeric_limits<int>::max())
+{
+  return value >= 0 && value <= largest && value == std::floor(value);
+}
+
+std::string CurveName(vtkIdType cellId)
+{
+  return "curve (cell) " + std::to_string(cellId);
+}
+
+std::string FieldString(vtkFieldData* fd, const char* name)
+{
+  auto* a = vtkStringArray::SafeDownCast(fd ? fd->GetAbstractArray(name) : nullptr);
+  return a && a->GetNumberOfValues() > 0 ? a->GetValue(0) : std::string();
+}
+
+/// `mesh` relative to the scene's folder when it lies below it (the reader looks there first),
+/// else as given.
+std::string RelativeToScene(const std::string& mesh, const fs::path& scene)
+{
+  std::error_code ec;
+  const fs::path folder = fs::absolute(scene, ec).parent_path();
+  const fs::path target = fs::absolute(mesh, ec);
+  if (ec)
+  {
+    return mesh;
+  }
+  const fs::path relative = target.lexically_relative(folder);
+  if (relative.empty() || *relative.begin() == "..")
+  {
+    return mesh;
+  }
+  return relative.generic_string();
+}
+
+struct Curve
+{
+  vtkIdType CellId;
+  std::vector<vtkIdType> Points;
+  bool Closed;
+  int Shape;
+  int Type;
+};
+
+/// The `points` list, checked: every point must be a valid surface point for the reader.
+json PointsOf(vtkPolyData* input)
+{
+  vtkDataArray* triangleIds = input->GetPointData()->GetArray("TriangleId");
+  vtkDataArray* barycentric = input->GetPointData()->GetArray("Barycentric");
+  if (!triangleIds || !barycentric || barycentric->GetNumberOfComponents() != 2)
+  {
+    throw WriteError("the curves have no surface points: point data TriangleId and Barycentric "
+                     "(2 components) are needed (the control points read from a scene, or the "
+                     "curves of Trace Surface Curves, carry them)");
+  }
+  const vtkIdType n = input->GetNumberOfPoints();
+  if (triangleIds->GetNumberOfTuples() < n || barycentric->GetNumberOfTuples() < n)
+  {
+    throw WriteError("point data TriangleId/Barycentric has fewer tuples than the " +
+      std::to_string(n) + " points");
+  }
+  json points = json::array();
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    const double t = triangleIds->GetComponent(p, 0);
+    if (!IsIndex(t))
+    {
+      throw WriteError("point " + std::to_string(p) + ": TriangleId " + std::to_string(t) +
+        " is not a triangle index");
+    }
+    const double u = barycentric->GetComponent(p, 0), v = barycentric->GetComponent(p, 1);
+    if (!std::isfinite(u) || !std::isfinite(v) || u < -UVTolerance || v < -UVTolerance ||
+      u + v > 1 + UVTolerance)
+    {
+      throw WriteError("point " + std::to_string(p) + ": Barycentric (" + std::to_string(u) + ", " +
+        std::to_string(v) + ") is outside its triangle (needs u, v >= 0, u + v <= 1)");
+    }
+    points.push_back({ { "face", static_cast<long long>(t) }, { "uv", { u, v } } });
+  }
+  return points;
+}
+
+/// Every line and polygon cell as a curve, closed the way the tracer reads it.
+std::vector<Curve> CurvesOf(vtkPolyData* input)
+{
+  vtkDataArray* shapeIds = input->GetCellData()->GetArray("ShapeId");
+  vtkDataArray* types = input->GetCellData()->GetArray("CurveType");
+  vtkDataArray* triangleIds = input->GetPointData()->GetArray("TriangleId");
+  vtkDataArray* barycentric = input->GetPointData()->GetArray("Barycentric");
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  std::vector<Curve> curves;
+  boolsurf::ForEachCurveCell(input,
+    [&](vtkIdType cellId, vtkIdType n, const vtkIdType* ids, bool polygon)
+    {
+      Curve c{ cellId, {}, polygon, static_cast<int>(cellId), 0 };
+      if (shapeIds)
+      {
+        const double s = shapeIds->GetComponent(cellId, 0);
+        if (!IsIndex(s, LargestListIndex))
+        {
+          throw WriteError(CurveName(cellId) + ": ShapeId " + std::to_string(s) +
+            " is not an integer in [0, " + std::to_string(static_cast<long>(LargestListIndex)) +
+            "]");
+        }
+        c.Shape = static_cast<int>(s);
+      }
+      if (types)
+      {
+        const double t = types->GetComponent(cellId, 0);
+        if (t != 0 && t != 1)
+        {
+          throw WriteError(CurveName(cellId) + ": CurveType " + std::to_string(t) +
+            " is neither 0 (geodesic polygon) nor 1 (cubic Bezier)");
+        }
+        c.Type = static_cast<int>(t);
+      }
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        if (ids[i] < 0 || ids[i] >= numberOfPoints)
+        {
+          throw WriteError(CurveName(cellId) + " names point id " + std::to_string(ids[i]) +
+            ", outside [0, " + std::to_string(numberOfPoints) + ")");
+        }
+      }
+      // The tracer's rule (vtkBoolSurfControlCurves): a polyline whose last point is its first
+      // (same id or same surface point) is closed.
+      if (!polygon && n >= 3)
+      {
+        const vtkIdType a = ids[0], b = ids[n - 1];
+        if (a == b ||
+          (triangleIds->GetComponent(a, 0) == triangleIds->GetComponent(b, 0) &&
+            barycentric->GetComponent(a, 0) == barycentric->GetComponent(b, 0) &&
+            barycentric->GetComponent(a, 1) == barycentric->GetComponent(b, 1)))
+        {
+          c.Closed = true;
+          --n;
+        }
+      }
+      if (n < 2)
+      {
+        throw WriteError(
+          CurveName(cellId) + " has " + std::to_string(n) + " point(s): a curve needs at least 2");
+      }
+      c.Points.assign(ids, ids + n);
+      curves.push_back(std::move(c));
+    });
+  if (curves.empty())
+  {
+    throw WriteError("the input holds no line or polygon cell: there is no curve to write");
+  }
+  return curves;
+}
+
+/// Polygon index of every curve: its CurveId when the input has distinct ones, else k + 1.
+std::vector<int> PolygonIndices(vtkPolyData* input, const std::vector<Curve>& curves)
+{
+  std::vector<int> index(curves.size());
+  vtkDataArray* curveIds = input->GetCellData()->GetArray("CurveId");
+  if (curveIds)
+  {
+    std::map<int, vtkIdType> seen;
+    bool usable = true;
+    for (std::size_t k = 0; k < curves.size() && usable; ++k)
+    {
+      const double id = curveIds->GetComponent(curves[k].CellId, 0);
+      usable = IsIndex(id, LargestListIndex) && seen.emplace(static_cast<int>(id), k).second;
+      index[k] = usable ? static_cast<int>(id) : 0;
+    }
+    if (usable)
+    {
+      return index;
+    }
+  }
+  for (std::size_t k = 0; k < curves.size(); ++k)
+  {
+    index[k] = static_cast<int>(k) + 1;
+  }
+  return index;
+}
+
+/// `operations` from field data OperationA/B/Type (as the reader puts them), or null.
+json OperationsOf(vtkFieldData* fd)
+{
+  vtkDataArray* a = fd ? fd->GetArray("OperationA") : nullptr;
+  vtkDataArray* b = fd ? fd->GetArray("OperationB") : nullptr;
+  vtkDataArray* type = fd ? fd->GetArray("OperationType") : nullptr;
+  if (!a || !b || !type)
+  {
+    return nullptr;
+  }
+  const vtkIdType n = a->GetNumberOfTuples();
+  if (b->GetNumberOfTuples() != n || type->GetNumberOfTuples() != n)
+  {
+    throw WriteError("field data OperationA, OperationB and OperationType differ in length");
+  }
+  json operations = json::array();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double va = a->GetComponent(i, 0), vb = b->GetComponent(i, 0),
+                 vt = type->GetComponent(i, 0);
+    if (!IsIndex(va) || !IsIndex(vb) || !IsIndex(vt, 3))
+    {
+      throw WriteError("operation " + std::to_string(i) +
+        " is not {shape a, shape b, type 0..3}: " + std::to_string(va) + ", " + std::to_string(vb) +
+        ", " + std::to_string(vt));
+    }
+    operations.push_back({ { "a", static_cast<int>(va) },
+      { "b", static_cast<int>(vb) },
+      { "type", static_cast<int>(vt) } });
+  }
+  return operations;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkBoolSurfSceneWriter::vtkBoolSurfSceneWriter() = default;
+
+//------------------------------------------------------------------------------
+vtkBoolSurfSceneWriter::~vtkBoolSurfSceneWriter() = default;
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfSceneWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfSceneWriter::WriteData()
+{
+  this->WrittenMeshReference.clear();
+  vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
+  if (this->FileName.empty())
+  {
+    vtkErrorMacro("No FileName: set the scene file (.json) to write.");
+    return;
+  }
+  json scene;
+  try
+  {
+    if (!input)
+    {
+      throw WriteError("no curves input (a vtkPolyData of control curves)");
+    }
+    // The file actually read resolves wherever the scene is saved; the original scene's
+    // `model` only relative to the BoolSurf repository layout, so it comes last.
+    std::string model = this->MeshReference;
+    if (model.empty())
+    {
+      const std::string mesh = FieldString(input->GetFieldData(), "MeshFileName");
+      model = mesh.empty() ? mesh : RelativeToScene(mesh, this->FileName);
+    }
+    if (model.empty())
+    {
+      model = FieldString(input->GetFieldData(), "SceneModel");
+    }
+    if (model.empty())
+    {
+      throw WriteError("no mesh reference: set MeshReference to the mesh file the curves lie on "
+                       "(the input has no field data SceneModel or MeshFileName to take it from)");
+    }
+    json points = PointsOf(input);
+    this->UpdateProgress(0.5);
+    const std::vector<Curve> curves = CurvesOf(input);
+    const std::vector<int> polygonOf = PolygonIndices(input, curves);
+    const int numberOfPolygons = *std::max_element(polygonOf.begin(), polygonOf.end()) + 1;
+    int numberOfShapes = 0;
+    bool bezier = false;
+    for (const Curve& c : curves)
+    {
+      numberOfShapes = std::max(numberOfShapes, c.Shape + 1);
+      bezier = bezier || c.Type == 1;
+    }
+    json polygons(numberOfPolygons, json::array());
+    json closed(numberOfPolygons, true);
+    json types(numberOfPolygons, 0);
+    json shapes(numberOfShapes, json::array());
+    for (std::size_t k = 0; k < curves.size(); ++k)
+    {
+      const int p = polygonOf[k];
+      for (vtkIdType id : curves[k].Points)
+      {
+        polygons[p].push_back(static_cast<long long>(id));
+      }
+      closed[p] = curves[k].Closed;
+      types[p] = curves[k].Type;
+      shapes[curves[k].Shape].push_back(p);
+    }
+    scene["model"] = model;
+    scene["points"] = std::move(points);
+    scene["polygons"] = std::move(polygons);
+    scene["are_closed"] = std::move(closed);
+    scene["shapes"] = std::move(shapes);
+    if (bezier)
+    {
+      scene["curve_types"] = std::move(types);
+    }
+    json operations = OperationsOf(input->GetFieldData());
+    if (!operations.is_null())
+    {
+      scene["operations"] = std::move(operations);
+    }
+  }
+  catch (const WriteError& e)
+  {
+    vtkErrorMacro("BoolSurf scene " << this->FileName << ": " << e.what() << "; nothing written");
+    this->SetErrorCode(vtkErrorCode::UserError);
+    return;
+  }
+  // Written to a temporary file first: a failed write never leaves half a scene.
+  const fs::path target(this->FileName);
+  const fs::path temporary = target.string() + ".part";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << scene.dump(this->Indent) << '\n';
+    if (!out)
+    {
+      vtkErrorMacro("BoolSurf scene " << this->FileName << ": cannot write the file");
+      this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
+      std::error_code ec;
+      fs::remove(temporary, ec);
+      return;
+    }
+  }
+  std::error_code ec;
+  fs::rename(temporary, target, ec);
+  if (ec)
+  {
+    vtkErrorMacro(
+      "BoolSurf scene " << this->FileName << ": cannot write the file (" << ec.message() << ")");
+    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
+    fs::remove(temporary, ec);
+    return;
+  }
+  this->WrittenMeshReference = scene["model"].get<std::string>();
+  this->UpdateProgress(1.0);
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfSceneWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << this->FileName << "\n";
+  os << indent << "MeshReference: " << this->MeshReference << "\n";
+  os << indent << "Indent: " << this->Indent << "\n";
+}
