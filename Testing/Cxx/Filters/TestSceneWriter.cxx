@@ -3,6 +3,7 @@
 // Boolean region; bad input is a named error and writes no file. The round trip of every
 // reference scene reads ../shared (BOOLSURF_SHARED_DATA) and skips with a message without it.
 #include "vtkBoolSurf.h"
+#include "vtkBoolSurfResolve.h"
 #include "vtkBoolSurfSceneReader.h"
 #include "vtkBoolSurfSceneWriter.h"
 
@@ -17,6 +18,7 @@
 #include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
+#include <vtkPLYReader.h>
 #include <vtkPLYWriter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -25,6 +27,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -386,6 +389,75 @@ TEST(SceneWriter, SavedCurvesGiveTheSameRegion)
     EXPECT_NEAR(testutils::Area(after->GetOutput(0)), area, 1e-12) << "operation " << operation;
     EXPECT_EQ(after->GetOutput(0)->GetNumberOfCells(), before->GetOutput(0)->GetNumberOfCells());
   }
+}
+
+TEST(SceneWriter, ResolvedShapeSetSavedAndReopened)
+{
+  // A meridian of a torus (inconsistent: it bounds nothing) made a thin strip by Resolve
+  // Inconsistent Shapes, a small loop beside it; the resolved set saved with its mesh reference,
+  // reopened, gives the same curves and the same union.
+  const double R = 2, r = 0.7, pi = std::acos(-1.0);
+  auto torus = testutils::ToPolyData(boolsurf::MakeTorus(R, r, 48, 24));
+  const fs::path mesh = Scratch() / "torus.ply";
+  {
+    vtkNew<vtkPLYWriter> ply;
+    ply->SetInputData(torus);
+    ply->SetFileName(mesh.string().c_str());
+    ply->Write();
+  }
+  auto at = [&](double u, double v) -> std::array<double, 3>
+  {
+    return {
+      (R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)
+    };
+  };
+  testutils::ControlPolygon meridian, blob;
+  for (int k = 0; k < 8; ++k)
+  {
+    meridian.Points.push_back(at(0.0, 2 * pi * k / 8));
+    blob.Points.push_back(at(0.15 + 0.2 * std::cos(pi / 4 * k), 0.3 * std::sin(pi / 4 * k)));
+  }
+  blob.ShapeId = 1;
+  vtkNew<vtkPLYReader> surface; // the mesh as the scene reader will read it (float coordinates)
+  surface->SetFileName(mesh.string().c_str());
+  vtkNew<vtkBoolSurfResolve> resolve;
+  resolve->SetInputConnection(0, surface->GetOutputPort());
+  resolve->SetInputData(1, testutils::ToCurves({ meridian, blob }));
+  ASSERT_EQ(testutils::ErrorsOf(resolve), "");
+  vtkPolyData* resolved = resolve->GetOutput();
+  ASSERT_EQ(resolved->GetNumberOfCells(), 3) << "the meridian, its reversed copy, the loop";
+
+  const fs::path file = Scratch() / "resolved.json";
+  ASSERT_NE(WriteScene(resolved, file).find("no mesh reference"), std::string::npos);
+  ASSERT_EQ(WriteScene(resolved, file, mesh.filename().string()), "");
+  std::string errors;
+  auto reader = ReadScene(file, errors);
+  ASSERT_EQ(errors, "");
+  vtkPolyData* back = reader->GetCurvesOutput();
+  ASSERT_EQ(back->GetNumberOfCells(), 3);
+  vtkDataArray* b0 = resolved->GetPointData()->GetArray("Barycentric");
+  vtkDataArray* b1 = back->GetPointData()->GetArray("Barycentric");
+  for (vtkIdType p = 0; p < resolved->GetNumberOfPoints(); ++p)
+  {
+    ASSERT_TRUE(SameBits(b0->GetComponent(p, 0), b1->GetComponent(p, 0)));
+    ASSERT_TRUE(SameBits(b0->GetComponent(p, 1), b1->GetComponent(p, 1)));
+  }
+
+  vtkNew<vtkBoolSurf> before, after;
+  before->SetInputConnection(0, surface->GetOutputPort());
+  before->SetInputConnection(1, resolve->GetOutputPort());
+  after->SetInputConnection(0, reader->GetOutputPort(0));
+  after->SetInputConnection(1, reader->GetOutputPort(1));
+  for (vtkBoolSurf* f : { before.GetPointer(), after.GetPointer() })
+  {
+    f->SetOperationToUnion();
+    f->SetShapeA(0);
+    f->SetShapeB(1);
+    ASSERT_EQ(testutils::ErrorsOf(f), "");
+  }
+  const double area = testutils::Area(before->GetOutput(0));
+  EXPECT_GT(area, 0.0);
+  EXPECT_EQ(testutils::Area(after->GetOutput(0)), area);
 }
 
 TEST(SceneWriter, BadInputIsANamedErrorAndWritesNothing)
