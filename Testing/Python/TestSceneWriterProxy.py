@@ -1,6 +1,6 @@
 """pvpython: File > Save Data of a curve output picks BoolSurfSceneWriter for .json; the saved
 scene opens again with the same surface points, curves, shapes and operations, and gives the
-same one-step Boolean region. Bad input (curves without surface points) writes nothing."""
+same one-step Boolean region, also after Subdivide Surface With Curves. Bad input (curves without surface points) writes nothing."""
 import json
 import os
 import tempfile
@@ -60,6 +60,22 @@ for src in (reader, again):
     areas.append((sm.Fetch(integrated).GetCellData().GetArray("Area").GetValue(0),
                   region.GetNumberOfCells()))
 assert areas[0][1] > 0 and areas[0] == areas[1], areas
+
+# Subdivide Surface With Curves: the curves moved onto a linear subdivision give the same area
+# (the surface does not move; the region's triangles are finer).
+sub = SubdivideSurfaceWithCurves(Surface=OutputPort(reader, 0), Curves=OutputPort(reader, 1))
+sub.Scheme = "Linear"
+sub.NumberOfSubdivisions = 1
+sub.UpdatePipeline()
+assert sm.Fetch(sub, idx=0).GetNumberOfCells() == 4 * 634
+fine = BoolSurf(Surface=OutputPort(sub, 0), Curves=OutputPort(sub, 1))
+fine.Operation = "Union"
+fine.ShapeA = 1
+fine.ShapeB = 2
+integrated = IntegrateVariables(Input=fine)
+integrated.UpdatePipeline()
+fine_area = sm.Fetch(integrated).GetCellData().GetArray("Area").GetValue(0)
+assert abs(fine_area - areas[0][0]) <= 1e-6 * areas[0][0], (fine_area, areas[0][0])
 
 # A polydata without surface points: a named error, no file.
 sphere = Sphere()
