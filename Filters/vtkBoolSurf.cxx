@@ -4,6 +4,7 @@
 #include "Selection/RegionExtraction.h"
 #include "vtkBoolSurfBSCStage.h"
 #include "vtkBoolSurfBooleanStage.h"
+#include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfRegionOutput.h"
@@ -49,6 +50,7 @@ struct vtkBoolSurf::Internals
   // (operation, operands, expression, fill rule) change.
   bool HasLabels = false;
   std::vector<boolsurf::TracedCurve> Curves;
+  std::vector<boolsurf::CurveSource> Sources; ///< control points and parameters of Curves
   boolsurf::Arrangement Arrangement;
   boolsurf::LabelingResult Labels;
   // Selection buffers.
@@ -59,6 +61,8 @@ struct vtkBoolSurf::Internals
   // BSC: where each sample landed and what became of it.
   std::vector<boolsurf::PatchSnap> Snaps;
   boolsurf::BscResult Bsc;
+  std::vector<boolsurf::ControlSubCurve> SubCurves;
+  double ControlCurvesTime = 0;
   /// Milliseconds of the stages of the last labeled arrangement (tracing, labeling).
   double TraceTime = 0, LabelingTime = 0;
   /// What the resolution of inconsistent shapes did (ResolveStrategy >= 0), one note per shape.
@@ -117,7 +121,7 @@ vtkBoolSurf::vtkBoolSurf()
   : Internal(new Internals)
 {
   this->SetNumberOfInputPorts(3);
-  this->SetNumberOfOutputPorts(2);
+  this->SetNumberOfOutputPorts(4);
 }
 
 //------------------------------------------------------------------------------
@@ -143,10 +147,14 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* curvesInput = vtkPolyData::GetData(inputVector[1], 0);
   vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
+  vtkPolyData* boundaryControls = vtkPolyData::GetData(outputVector, 2);
+  vtkPolyData* clipped = vtkPolyData::GetData(outputVector, 3);
 
   // A failed update leaves empty outputs, never the previous region.
   region->Initialize();
   boundary->Initialize();
+  boundaryControls->Initialize();
+  clipped->Initialize();
 
   // 1. surface (cached)
   std::vector<std::string> warnings;
@@ -223,8 +231,10 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
     in.Region);
   const Clock::time_point selected = Clock::now();
   boolsurf::WriteRegion(*surface, arr, in.Region, region);
+  const std::vector<boolsurf::BoundaryPolyline> loops =
+    boolsurf::ExtractRegionBoundary(arr.Patches, in.Selected);
   boolsurf::WriteBoundary(
-    boolsurf::ExtractRegionBoundary(arr.Patches, in.Selected),
+    loops,
     [&](int p, double x[3])
     {
       x[0] = arr.Positions[p].x;
@@ -234,6 +244,31 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
     [&](int p) { return arr.PointSurface[p]; },
     true,
     boundary);
+  // The boundary and the clipped open curves as control points of the input curves.
+  const Clock::time_point vectorStart = Clock::now();
+  if (this->ComputeControlCurves)
+  {
+    boolsurf::GeodesicPathSolver& solver = in.Surface.GetTracer().GetPathSolver();
+    boolsurf::TraceStatus status =
+      boolsurf::BoundaryControlCurves(solver, arr, in.Sources, loops, in.SubCurves);
+    if (status)
+    {
+      boolsurf::WriteControlSubCurves(
+        *surface->Mesh, in.Sources, in.SubCurves, "BoundaryLoop", true, boundaryControls);
+      status = boolsurf::ClippedControlCurves(solver, arr, in.Sources, in.Selected, in.SubCurves);
+    }
+    if (!status)
+    {
+      vtkErrorMacro("Control points of the result: " << status.Message);
+      region->Initialize();
+      boundary->Initialize();
+      boundaryControls->Initialize();
+      return 0;
+    }
+    boolsurf::WriteControlSubCurves(
+      *surface->Mesh, in.Sources, in.SubCurves, "ClippedPiece", false, clipped);
+  }
+  in.ControlCurvesTime = Milliseconds(vectorStart, Clock::now());
   this->WriteFieldData(text,
     reuse,
     Milliseconds(selectStart, selected),
@@ -313,8 +348,15 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     }
     curvesInput = resolved;
   }
-  const bool ok = boolsurf::TraceControlCurves(
-    in.Surface, curvesInput, traceOptions, nullptr, in.Curves, nullptr, problems, notes);
+  const bool ok = boolsurf::TraceControlCurves(in.Surface,
+    curvesInput,
+    traceOptions,
+    nullptr,
+    in.Curves,
+    nullptr,
+    problems,
+    notes,
+    &in.Sources);
   for (const std::string& n : notes)
   {
     vtkWarningMacro(<< n);

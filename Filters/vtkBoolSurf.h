@@ -26,6 +26,14 @@
  * the Boolean properties change, the labeled arrangement is reused and the update costs the
  * selection (once per cell) and the region.
  *
+ * Vector output (paper §3.5, §4.5): port 2 gives the region's boundary as control points of
+ * sub-curves of the input curves (one polyline per piece of a curve between two intersection
+ * points: polygon vertices plus the intersection points, Bezier pieces split by geodesic de
+ * Casteljau insertion; cell data BoundaryLoop, SourceCurveId, SourceShapeId, Reversed,
+ * ParameterRange, CurveType), so tracing them again gives the boundary; port 3 gives the
+ * pieces of open input curves (Closed 0) inside the region, the same way (cell data
+ * ClippedPiece). Open curves never bound cells: they are clipped by the region.
+ *
  * Selection = BSC (Boundary-Sampled Curves, see vtkBoolSurfBSC) replaces the Boolean by the
  * region chosen by oriented samples: port 2 (optional) holds points with point data
  * `Direction` (and optionally exact `TriangleId`/`Barycentric`); the outputs then carry the
@@ -142,8 +150,21 @@ public:
   vtkGetMacro(ResolveOffset, double);
   ///@}
 
+  ///@{
+  /// Whether ports 2 and 3 are computed (default on): the result's boundary and the clipped
+  /// open curves as control points of the input curves (see Docs/VectorOutput.md). Off leaves
+  /// them empty and saves their cost (geodesic de Casteljau splits of Bezier curves).
+  vtkSetMacro(ComputeControlCurves, vtkTypeBool);
+  vtkGetMacro(ComputeControlCurves, vtkTypeBool);
+  vtkBooleanMacro(ComputeControlCurves, vtkTypeBool);
+  ///@}
+
   /// The boundary output (port 1).
   vtkPolyData* GetBoundaryOutput() { return this->GetOutput(1); }
+  /// The boundary as control points of sub-curves of the input curves (port 2).
+  vtkPolyData* GetBoundaryControlCurvesOutput() { return this->GetOutput(2); }
+  /// The pieces of open input curves inside the region, as control points (port 3).
+  vtkPolyData* GetClippedCurvesOutput() { return this->GetOutput(3); }
 
 protected:
   vtkBoolSurf();
@@ -170,6 +191,7 @@ protected:
   int MaxSearchStates = 64;
   int ResolveStrategy = -1;
   double ResolveOffset = 0;
+  vtkTypeBool ComputeControlCurves = 1;
 
 private:
   vtkBoolSurf(const vtkBoolSurf&) = delete;

@@ -123,7 +123,8 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   std::vector<TracedCurve>& traced,
   vtkPolyData* output,
   std::vector<std::string>& problems,
-  std::vector<std::string>& notes)
+  std::vector<std::string>& notes,
+  std::vector<CurveSource>* sources)
 {
   traced.clear();
   const vtkSurfaceInput& surface = cache.GetCurrent();
@@ -171,6 +172,20 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   for (const CurveTrace& t : traces)
   {
     traced.push_back(t.Curve);
+  }
+  if (sources)
+  {
+    sources->resize(controls.size());
+    for (size_t c = 0; c < controls.size(); ++c)
+    {
+      CurveSource& s = (*sources)[c];
+      s.Controls = controls[c].Points;
+      s.Parameter = traces[c].Parameter;
+      s.Type = controls[c].Type;
+      s.Closed = controls[c].Closed;
+      s.ShapeId = controls[c].ShapeId;
+      s.CurveId = controls[c].CurveId;
+    }
   }
   if (output)
   {

@@ -4,6 +4,7 @@
 #define vtkBoolSurfTraceStage_h
 
 #include "Geodesic/CurveTracer.h"
+#include "Selection/BoundaryControlPoints.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
 #include <string>
@@ -27,6 +28,8 @@ struct TraceOptions
 /// Traces every curve of `controlCurves` on the cached surface. On success fills `traced`
 /// (for the arrangement) and, when `output` is not null, writes the traced polylines. On
 /// failure returns false with every problem in `problems` (curve and point ids named).
+/// `sources` (may be null) receives each curve's control points and the curve parameter of
+/// each traced point, for results given back as control points.
 /// `progress` (may be null) receives progress updates in [0, 1] and is checked for aborts.
 bool TraceControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* controlCurves,
@@ -35,7 +38,8 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   std::vector<TracedCurve>& traced,
   vtkPolyData* output,
   std::vector<std::string>& problems,
-  std::vector<std::string>& notes);
+  std::vector<std::string>& notes,
+  std::vector<CurveSource>* sources = nullptr);
 
 } // namespace boolsurf
 

@@ -104,6 +104,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   out.CellGraph.clear();
   out.NumberOfPatchGraphVertices = 0;
   out.CurvePoints.clear();
+  out.CurveStations.clear();
   out.Times = ArrangementStageTimes();
   if (!sameMesh)
   {
@@ -403,19 +404,22 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   std::vector<RefinedCurve>& refinedCurves = work.RefinedCurves;
   refinedCurves.resize(curves.size());
   std::vector<int> ids;
+  std::vector<double> stations;
   for (size_t ci = 0; ci < curves.size(); ++ci)
   {
     RefinedCurve& rc = refinedCurves[ci];
     rc.Points.clear();
     rc.SubEdgeSource.clear();
+    stations.clear();
     for (const SegmentLocation& loc : map.CurveSegments[ci])
     {
-      int source;
+      int source, traced;
       ids.clear();
       if (loc.AlongEdge)
       {
         ids = edgeSegmentPoints[loc.Index];
         source = -map.EdgeSegments[loc.Index].Edge - 1;
+        traced = map.EdgeSegments[loc.Index].Segment;
       }
       else
       {
@@ -426,6 +430,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
           ids.push_back(a.Points[p].Global);
         }
         source = a.Triangle;
+        traced = map.Segments[loc.Index].Segment;
       }
       size_t from = 0;
       if (!rc.Points.empty())
@@ -437,17 +442,27 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         }
         from = 1;
       }
+      // The traced segment is straight on its triangle or edge: the fraction of its length is
+      // the fraction of the way between its two traced points.
+      const Vec3& first = out.Positions[ids.front()];
+      const double whole = Distance(first, out.Positions[ids.back()]);
       for (size_t k = from; k < ids.size(); ++k)
       {
         rc.Points.push_back(ids[k]);
+        const double f = k + 1 == ids.size()
+          ? 1.0
+          : (whole > 0 ? std::min(1.0, Distance(first, out.Positions[ids[k]]) / whole) : 0.0);
+        stations.push_back(k == 0 ? traced : traced + f);
       }
       rc.SubEdgeSource.insert(rc.SubEdgeSource.end(), ids.size() - 1, source);
     }
     if (curves[ci].Closed && rc.Points.size() > 1 && rc.Points.front() == rc.Points.back())
     {
       rc.Points.pop_back();
+      stations.pop_back();
     }
     out.CurvePoints.push_back(rc.Points);
+    out.CurveStations.push_back(stations);
   }
   out.NumberOfPatchGraphVertices = BuildPatchesAndCellGraph(view,
     curves,

@@ -69,6 +69,10 @@ struct Arrangement
   int NumberOfPatchGraphVertices = 0;
   /// Each input curve on the refined surface (refined point ids in order).
   std::vector<std::vector<int>> CurvePoints;
+  /// Where each point of CurvePoints lies on its traced curve: traced point index i plus the
+  /// fraction of the way (by length) to traced point i + 1. Intersection points get fractions
+  /// in between; this is how results are given back in the curves' own parameters.
+  std::vector<std::vector<double>> CurveStations;
 
   ArrangementStageTimes Times;
 

@@ -857,6 +857,7 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
       patch.ShapeId = curve.ShapeId;
       patch.CurveId = curve.CurveId;
       patch.Closed = curve.Closed;
+      patch.FirstIndex = i % n;
       patch.Points.push_back(rc.Points[i % n]);
       markEnd(rc.Points[i % n]);
       sides(rc.Points[i % n],

@@ -167,6 +167,7 @@ struct ArrangementPatch
   int CurveId = -1;
   bool Closed = true;                ///< of a closed curve (bounds cells)
   int LeftCell = -1, RightCell = -1; ///< -1 beyond an open mesh boundary
+  int FirstIndex = -1;               ///< index of the first point in the curve's refined points
   double Length = 0;
   /// Refined point ids; a closed curve met by no other curve is one patch whose last point
   /// repeats the first.

@@ -21,6 +21,55 @@ TraceStatus GeodesicMidpoint(GeodesicPathSolver& solver,
 }
 
 //------------------------------------------------------------------------------
+TraceStatus GeodesicLerp(GeodesicPathSolver& solver,
+  const CanonicalPoint& a,
+  const CanonicalPoint& b,
+  double t,
+  CanonicalPoint& out)
+{
+  if (t <= 0 || a == b)
+  {
+    out = a;
+    return TraceStatus::Success();
+  }
+  if (t >= 1)
+  {
+    out = b;
+    return TraceStatus::Success();
+  }
+  thread_local GeodesicPath path;
+  TraceStatus status = solver.Compute(a, b, path);
+  if (status)
+  {
+    out = PointAlongPath(solver.GetMesh(), path, t);
+  }
+  return status;
+}
+
+//------------------------------------------------------------------------------
+TraceStatus SplitGeodesicBezier(GeodesicPathSolver& solver,
+  const std::array<CanonicalPoint, 4>& p,
+  double t,
+  std::array<CanonicalPoint, 4>& left,
+  std::array<CanonicalPoint, 4>& right)
+{
+  CanonicalPoint q0, q1, q2, r0, r1, s;
+  TraceStatus status;
+  if (!(status = GeodesicLerp(solver, p[0], p[1], t, q0)) ||
+    !(status = GeodesicLerp(solver, p[1], p[2], t, q1)) ||
+    !(status = GeodesicLerp(solver, p[2], p[3], t, q2)) ||
+    !(status = GeodesicLerp(solver, q0, q1, t, r0)) ||
+    !(status = GeodesicLerp(solver, q1, q2, t, r1)) ||
+    !(status = GeodesicLerp(solver, r0, r1, t, s)))
+  {
+    return status;
+  }
+  left = { p[0], q0, r0, s };
+  right = { s, r1, q2, p[3] };
+  return TraceStatus::Success();
+}
+
+//------------------------------------------------------------------------------
 TraceStatus SubdivideGeodesicBezier(GeodesicPathSolver& solver,
   const std::array<CanonicalPoint, 4>& segment,
   int levels,

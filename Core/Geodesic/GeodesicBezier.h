@@ -26,6 +26,23 @@ TraceStatus GeodesicMidpoint(GeodesicPathSolver& solver,
   const CanonicalPoint& b,
   CanonicalPoint& mid);
 
+/// The point at fraction t of the shortest path from a to b (the geodesic lerp).
+TraceStatus GeodesicLerp(GeodesicPathSolver& solver,
+  const CanonicalPoint& a,
+  const CanonicalPoint& b,
+  double t,
+  CanonicalPoint& out);
+
+/// One de Casteljau step at parameter t in (0, 1) with geodesic lerps (b/Surf's point
+/// insertion): the segment becomes `left` = (p0, q0, r0, s) and `right` = (s, r1, q2, p3), two
+/// cubic segments whose union is the curve, s on it at t. On a flat mesh this is the planar
+/// split, exactly.
+TraceStatus SplitGeodesicBezier(GeodesicPathSolver& solver,
+  const std::array<CanonicalPoint, 4>& segment,
+  double t,
+  std::array<CanonicalPoint, 4>& left,
+  std::array<CanonicalPoint, 4>& right);
+
 /// Refined control polygon of one cubic segment after `levels` de Casteljau subdivisions:
 /// 3 * 2^levels + 1 points; point 3k is on the curve at parameter t = k / 2^levels, the two
 /// points between consecutive anchors are handles. levels = 0 returns the segment itself.

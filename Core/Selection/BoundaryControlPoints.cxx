@@ -1,0 +1,330 @@
+#include "Selection/BoundaryControlPoints.h"
+
+#include "Geodesic/GeodesicBezier.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace boolsurf
+{
+
+namespace
+{
+
+/// Parameters this close to a control point's are that control point (the stations of
+/// intersection points are fractions of traced segments, rounded).
+constexpr double SameParameter = 1e-9;
+
+int NumberOfSegments(const CurveSource& source)
+{
+  const int n = static_cast<int>(source.Controls.size());
+  if (source.Type == CurveType::CubicBezier)
+  {
+    return source.Closed ? n / 3 : (n - 1) / 3;
+  }
+  return source.Closed ? n : n - 1;
+}
+
+/// The control points of curve `c` from parameter t0 to t1 (t1 > t0; past the end of a closed
+/// curve when it wraps), between the arranged points `first` and `last`.
+TraceStatus SubCurve(GeodesicPathSolver& solver,
+  const Arrangement& arrangement,
+  const CurveSource& source,
+  int first,
+  int last,
+  double t0,
+  double t1,
+  bool whole,
+  std::vector<SurfacePoint>& points)
+{
+  const TriangleMesh& mesh = solver.GetMesh();
+  const int controls = static_cast<int>(source.Controls.size());
+  const int segments = NumberOfSegments(source);
+  points.clear();
+  const double k0 = std::round(t0), k1 = std::round(t1);
+  const bool startsAtControl = std::abs(t0 - k0) <= SameParameter;
+  const bool endsAtControl = std::abs(t1 - k1) <= SameParameter;
+  if (source.Type == CurveType::GeodesicPolygon)
+  {
+    auto control = [&](long long k)
+    { return source.Controls[static_cast<std::size_t>(((k % controls) + controls) % controls)]; };
+    points.push_back(
+      startsAtControl ? control(static_cast<long long>(k0)) : arrangement.PointSurface[first]);
+    const long long from = static_cast<long long>(std::floor(t0 + SameParameter)) + 1;
+    const long long to = static_cast<long long>(std::ceil(t1 - SameParameter)) - 1;
+    for (long long k = from; k <= to; ++k)
+    {
+      points.push_back(control(k));
+    }
+    if (!whole)
+    {
+      points.push_back(
+        endsAtControl ? control(static_cast<long long>(k1)) : arrangement.PointSurface[last]);
+    }
+    return TraceStatus::Success();
+  }
+
+  // Cubic Bezier: each segment over [t0, t1], cut at the range's ends.
+  auto canonical = [&](int k) { return Canonicalize(mesh, source.Controls[k % controls]); };
+  std::vector<CanonicalPoint> out;
+  const int s0 = static_cast<int>(std::floor(t0 + SameParameter));
+  const int s1 = static_cast<int>(std::ceil(t1 - SameParameter));
+  for (int s = s0; s < s1; ++s)
+  {
+    const int seg = ((s % segments) + segments) % segments;
+    std::array<CanonicalPoint, 4> piece = {
+      canonical(3 * seg), canonical(3 * seg + 1), canonical(3 * seg + 2), canonical(3 * seg + 3)
+    };
+    const double a = std::max(t0 - s, 0.0), b = std::min(t1 - s, 1.0);
+    std::array<CanonicalPoint, 4> left, right;
+    TraceStatus status;
+    if (a > SameParameter)
+    {
+      if (!(status = SplitGeodesicBezier(solver, piece, a, left, right)))
+      {
+        return status;
+      }
+      piece = right;
+    }
+    if (b < 1 - SameParameter)
+    {
+      const double local = a > SameParameter ? (b - a) / (1 - a) : b;
+      if (!(status = SplitGeodesicBezier(solver, piece, local, left, right)))
+      {
+        return status;
+      }
+      piece = left;
+    }
+    out.insert(out.end(), out.empty() ? piece.begin() : piece.begin() + 1, piece.end());
+  }
+  if (whole && out.size() > 1)
+  {
+    out.pop_back(); // a closed spline does not repeat its first anchor
+  }
+  for (std::size_t i = 0; i < out.size(); ++i)
+  {
+    // Anchors that are the user's own keep the user's bits.
+    const double t = s0 + static_cast<double>(i) / 3.0;
+    const bool anchor = i % 3 == 0;
+    const bool own = anchor &&
+      ((i == 0 && startsAtControl) || (i + 1 == out.size() && endsAtControl) ||
+        (i > 0 && i + 1 < out.size()));
+    if (own)
+    {
+      points.push_back(
+        source.Controls[(3 * static_cast<long long>(std::llround(t)) % controls + controls) %
+          controls]);
+    }
+    else
+    {
+      points.push_back(ToSurfacePoint(mesh, out[i]));
+    }
+  }
+  return TraceStatus::Success();
+}
+
+/// The sub-curve of curve `c` made of the arranged points from index `first` on, `count` of
+/// them.
+TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
+  const Arrangement& arrangement,
+  const std::vector<CurveSource>& sources,
+  int c,
+  int first,
+  int count,
+  ControlSubCurve& out)
+{
+  const CurveSource& source = sources[c];
+  const int n = static_cast<int>(arrangement.CurvePoints[c].size());
+  const int last = (first + count - 1) % n;
+  out.Curve = c;
+  out.Type = source.Type;
+  out.Whole = source.Closed && count == n + 1;
+  out.T0 = ArrangedPointParameter(arrangement, sources, c, first);
+  out.T1 = ArrangedPointParameter(arrangement, sources, c, last);
+  if (source.Closed && (out.Whole || out.T1 <= out.T0))
+  {
+    out.T1 += NumberOfSegments(source);
+  }
+  return SubCurve(solver,
+    arrangement,
+    source,
+    arrangement.CurvePoints[c][first],
+    arrangement.CurvePoints[c][last],
+    out.T0,
+    out.T1,
+    out.Whole,
+    out.Points);
+}
+
+/// Appends `next` to `into` when both are pieces of one curve walked the same way and `next`
+/// starts where `into` ends; false (nothing changed) otherwise.
+bool Join(ControlSubCurve& into, ControlSubCurve& next)
+{
+  if (into.Curve != next.Curve || into.Reversed != next.Reversed || into.Type != next.Type ||
+    into.Whole || next.Whole || into.Points.empty() || next.Points.empty())
+  {
+    return false;
+  }
+  // Forward pieces run T0 -> T1; reversed ones T1 -> T0 (parameters of a closed curve may
+  // differ by whole turns).
+  const double gap = into.Reversed ? into.T0 - next.T1 : next.T0 - into.T1;
+  if (std::abs(gap - std::round(gap)) > SameParameter || std::abs(gap) > 1e6)
+  {
+    return false;
+  }
+  // A polygon's junction inside one of its legs is no control point (the leg is one
+  // geodesic); a spline keeps it as the anchor between its two split pieces.
+  const double junction = into.Reversed ? into.T0 : into.T1;
+  if (into.Type == CurveType::GeodesicPolygon &&
+    std::abs(junction - std::round(junction)) > SameParameter)
+  {
+    into.Points.pop_back();
+  }
+  if (!into.Reversed)
+  {
+    into.T1 = next.T1 + (into.T1 - next.T0);
+  }
+  else
+  {
+    into.T0 = next.T0 + (into.T0 - next.T1);
+  }
+  into.Points.insert(into.Points.end(), next.Points.begin() + 1, next.Points.end());
+  return true;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+double ArrangedPointParameter(const Arrangement& arrangement,
+  const std::vector<CurveSource>& sources,
+  int curve,
+  int index)
+{
+  const CurveSource& source = sources[curve];
+  const double station = arrangement.CurveStations[curve][index];
+  const std::vector<double>& parameter = source.Parameter;
+  const int n = static_cast<int>(parameter.size());
+  const int i = std::min(static_cast<int>(station), n - 1);
+  const double f = station - i;
+  if (f <= 0)
+  {
+    return parameter[i];
+  }
+  const double next = i + 1 < n ? parameter[i + 1] : NumberOfSegments(source);
+  return parameter[i] + f * (next - parameter[i]);
+}
+
+//------------------------------------------------------------------------------
+TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
+  const Arrangement& arrangement,
+  const std::vector<CurveSource>& sources,
+  const std::vector<BoundaryPolyline>& loops,
+  std::vector<ControlSubCurve>& out)
+{
+  out.clear();
+  for (std::size_t l = 0; l < loops.size(); ++l)
+  {
+    const BoundaryPolyline& loop = loops[l];
+    const int firstOfLoop = static_cast<int>(out.size());
+    for (std::size_t k = 0; k < loop.Patches.size(); ++k)
+    {
+      const ArrangementPatch& patch = arrangement.Patches[loop.Patches[k]];
+      if (patch.Curve < 0 || patch.FirstIndex < 0)
+      {
+        continue;
+      }
+      ControlSubCurve sub;
+      sub.Group = static_cast<int>(l);
+      TraceStatus status = MakeSubCurve(solver,
+        arrangement,
+        sources,
+        patch.Curve,
+        patch.FirstIndex,
+        static_cast<int>(patch.Points.size()),
+        sub);
+      if (!status)
+      {
+        return status;
+      }
+      sub.Reversed = loop.Reversed[k] != 0;
+      if (sub.Reversed)
+      {
+        std::reverse(sub.Points.begin(), sub.Points.end());
+      }
+      // Patches also end where an open curve or a curve of no consequence crosses: pieces of
+      // one curve that follow each other are one sub-curve.
+      if (static_cast<int>(out.size()) > firstOfLoop && Join(out.back(), sub))
+      {
+        continue;
+      }
+      out.push_back(std::move(sub));
+    }
+    // The loop's last piece may continue into its first.
+    if (static_cast<int>(out.size()) > firstOfLoop + 1 && Join(out.back(), out[firstOfLoop]))
+    {
+      out[firstOfLoop] = std::move(out.back());
+      out.pop_back();
+    }
+    // One piece that goes all around its closed curve is the whole curve.
+    if (static_cast<int>(out.size()) == firstOfLoop + 1)
+    {
+      ControlSubCurve& only = out.back();
+      const CurveSource& source = sources[only.Curve];
+      if (source.Closed && !only.Whole &&
+        std::abs(only.T1 - only.T0 - NumberOfSegments(source)) <= SameParameter &&
+        only.Points.size() > 1)
+      {
+        only.Whole = true;
+        only.Points.pop_back();
+      }
+    }
+  }
+  return TraceStatus::Success();
+}
+
+//------------------------------------------------------------------------------
+TraceStatus ClippedControlCurves(GeodesicPathSolver& solver,
+  const Arrangement& arrangement,
+  const std::vector<CurveSource>& sources,
+  const std::vector<char>& selected,
+  std::vector<ControlSubCurve>& out)
+{
+  out.clear();
+  auto inside = [&](int cell)
+  { return cell >= 0 && cell < static_cast<int>(selected.size()) && selected[cell]; };
+  int group = 0;
+  // Patches of one curve are consecutive and in curve order.
+  const std::vector<ArrangementPatch>& patches = arrangement.Patches;
+  for (std::size_t p = 0; p < patches.size();)
+  {
+    const ArrangementPatch& patch = patches[p];
+    if (patch.Closed || patch.Curve < 0 || patch.FirstIndex < 0 ||
+      !(inside(patch.LeftCell) || inside(patch.RightCell)))
+    {
+      ++p;
+      continue;
+    }
+    // Join the following patches of the same curve that are inside too.
+    int count = static_cast<int>(patch.Points.size());
+    std::size_t q = p + 1;
+    while (q < patches.size() && patches[q].Curve == patch.Curve &&
+      (inside(patches[q].LeftCell) || inside(patches[q].RightCell)))
+    {
+      count += static_cast<int>(patches[q].Points.size()) - 1;
+      ++q;
+    }
+    ControlSubCurve sub;
+    sub.Group = group++;
+    TraceStatus status =
+      MakeSubCurve(solver, arrangement, sources, patch.Curve, patch.FirstIndex, count, sub);
+    if (!status)
+    {
+      return status;
+    }
+    out.push_back(std::move(sub));
+    p = q;
+  }
+  return TraceStatus::Success();
+}
+
+} // namespace boolsurf

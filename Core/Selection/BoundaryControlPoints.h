@@ -1,0 +1,83 @@
+// The result as vector curves (paper §3.5 and §4.5, Fig. 9 and 21): the boundary of a selected
+// region and the clipped pieces of open curves, given back as control points of sub-curves of
+// the input curves rather than as dense polylines.
+//
+// A boundary patch is a piece of one input curve between two parameters (the arrangement
+// knows where each of its points lies on the traced curve, Arrangement::CurveStations, and the
+// tracer where each traced point lies on the input curve, CurveTrace::Parameter). Its control
+// points are:
+// - geodesic polygon: the patch's first point (an intersection, or a vertex), the polygon's
+//   vertices strictly inside the parameter range, the patch's last point. A piece of a
+//   shortest geodesic is the shortest geodesic between its ends, so tracing these points again
+//   gives the patch back.
+// - cubic Bezier spline: the spline's segments over the range, the first and last split at the
+//   range's ends by geodesic de Casteljau insertion (SplitGeodesicBezier), so each piece is
+//   again a cubic spline (anchor, handle, handle, anchor, ...) whose control polygon gives the
+//   piece. Its end anchors are on the spline at the range's ends; the patch ends are where the
+//   traced polyline (the spline at the tracing resolution) meets other curves, so they agree to
+//   the tracing tolerance, exactly on flat meshes only at the spline's own anchors.
+#ifndef boolsurf_BoundaryControlPoints_h
+#define boolsurf_BoundaryControlPoints_h
+
+#include "Arrangement/Arrangement.h"
+#include "Geodesic/CurveTracer.h"
+#include "Selection/RegionBoundary.h"
+
+#include <string>
+#include <vector>
+
+namespace boolsurf
+{
+
+/// What is known of one input curve (same index as the arranged curves).
+struct CurveSource
+{
+  std::vector<SurfacePoint> Controls; ///< the user's control points (closing one not repeated)
+  std::vector<double> Parameter;      ///< per traced point: CurveTrace::Parameter
+  CurveType Type = CurveType::GeodesicPolygon;
+  bool Closed = true;
+  int ShapeId = 0;
+  int CurveId = 0;
+};
+
+/// One sub-curve of an input curve, as control points.
+struct ControlSubCurve
+{
+  int Group = -1;        ///< the boundary loop, or the clipped piece's curve's piece number
+  int Curve = -1;        ///< index of the source curve
+  bool Reversed = false; ///< walked against the source curve (region on the left)
+  bool Whole = false;    ///< the whole closed source curve (a loop that meets no other curve)
+  double T0 = 0, T1 = 0; ///< parameter range on the source curve (T1 > T0; may pass its end)
+  CurveType Type = CurveType::GeodesicPolygon;
+  /// Control points in walking order: the user's own surface points where they are the input's
+  /// control points, the arrangement's where the sub-curve starts or ends at an intersection.
+  std::vector<SurfacePoint> Points;
+};
+
+/// Parameter on source curve `curve` of the point at index `index` of the arrangement's
+/// CurvePoints[curve].
+double ArrangedPointParameter(const Arrangement& arrangement,
+  const std::vector<CurveSource>& sources,
+  int curve,
+  int index);
+
+/// Sub-curves of the boundary loops `loops` (from ExtractRegionBoundary on the arrangement's
+/// patches), each oriented with the region on its left; Group is the loop index.
+TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
+  const Arrangement& arrangement,
+  const std::vector<CurveSource>& sources,
+  const std::vector<BoundaryPolyline>& loops,
+  std::vector<ControlSubCurve>& out);
+
+/// The pieces of open curves inside the cells with selected[cell] != 0 (a piece along the
+/// region's boundary counts as inside), consecutive patches joined; Group numbers the pieces
+/// of each curve in curve order.
+TraceStatus ClippedControlCurves(GeodesicPathSolver& solver,
+  const Arrangement& arrangement,
+  const std::vector<CurveSource>& sources,
+  const std::vector<char>& selected,
+  std::vector<ControlSubCurve>& out);
+
+} // namespace boolsurf
+
+#endif
