@@ -1,0 +1,570 @@
+// The result as vector curves (vtkBoolSurf ports 2 and 3), against independent oracles:
+// - flat meshes: the control points of each boundary loop are exactly the vertices of a
+//   Clipper result polygon (intersection points included), for every operation;
+// - tracing the boundary control curves again gives the boundary polyline, point for point on a
+//   flat mesh, within 1e-6 of the diagonal on a shared scan;
+// - open curves are clipped like Clipper clips open paths (same total length), each piece
+//   starting and ending on the region's boundary or at the curve's own end;
+// - Bezier pieces split by geodesic de Casteljau insertion are, on a flat mesh, exactly the
+//   pieces of the planar Bezier curve; on a sphere their traces stay on the original trace.
+#include "ClipperOracle.h"
+#include "FilterTestUtils.h"
+#include "vtkBoolSurf.h"
+#include "vtkBoolSurfTraceCurves.h"
+
+#include <vtkCellArrayIterator.h>
+#include <vtkLine.h>
+#include <vtkMath.h>
+#include <vtkPLYReader.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <random>
+#include <sstream>
+
+namespace
+{
+using testutils::ControlPolygon;
+using Point2 = std::array<double, 2>;
+
+ControlPolygon RandomPolygon(std::mt19937& rng, int shape, bool closed = true)
+{
+  std::uniform_int_distribution<int> count(3, 7);
+  std::uniform_int_distribution<int> grid(205, 3891); // [0.05, 0.95] in 1/4096 steps
+  ControlPolygon p;
+  p.ShapeId = shape;
+  p.Closed = closed;
+  const int n = count(rng);
+  for (int i = 0; i < n; ++i)
+  {
+    p.Points.push_back({ grid(rng) / 4096.0, grid(rng) / 4096.0, 0.0 });
+  }
+  return p;
+}
+
+/// Points of each cell of `pd`, grouped by the cell data `group`, without repeats (1e-9).
+std::map<int, std::vector<Point2>> PointsByGroup(vtkPolyData* pd, const char* group)
+{
+  std::map<int, std::vector<Point2>> out;
+  vtkDataArray* g = pd->GetCellData()->GetArray(group);
+  auto it = vtk::TakeSmartPointer(pd->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    std::vector<Point2>& points = out[static_cast<int>(g->GetComponent(it->GetCurrentCellId(), 0))];
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      pd->GetPoint(ids[i], x);
+      bool known = false;
+      for (const Point2& p : points)
+      {
+        known = known || (std::abs(p[0] - x[0]) <= 1e-9 && std::abs(p[1] - x[1]) <= 1e-9);
+      }
+      if (!known)
+      {
+        points.push_back({ x[0], x[1] });
+      }
+    }
+  }
+  return out;
+}
+
+/// Whether every point of `a` has one of `b` within `tolerance` and the other way round.
+bool SameSets(const std::vector<Point2>& a, const std::vector<Point2>& b, double tolerance)
+{
+  auto covered = [tolerance](const std::vector<Point2>& from, const std::vector<Point2>& to)
+  {
+    for (const Point2& p : from)
+    {
+      bool found = false;
+      for (const Point2& q : to)
+      {
+        found = found || (std::abs(p[0] - q[0]) <= tolerance && std::abs(p[1] - q[1]) <= tolerance);
+      }
+      if (!found)
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  return covered(a, b) && covered(b, a);
+}
+
+/// Loops that share a vertex merged into one point set. Where a region touches itself at a
+/// point, Clipper may give one polygon passing the point twice where we give two loops (or the
+/// other way round): both describe the same boundary, so they are compared merged.
+std::vector<std::vector<Point2>> MergeTouching(std::vector<std::vector<Point2>> sets)
+{
+  bool merged = true;
+  while (merged)
+  {
+    merged = false;
+    for (std::size_t i = 0; i < sets.size() && !merged; ++i)
+    {
+      for (std::size_t j = i + 1; j < sets.size() && !merged; ++j)
+      {
+        bool touch = false;
+        for (const Point2& p : sets[i])
+        {
+          for (const Point2& q : sets[j])
+          {
+            touch = touch || (std::abs(p[0] - q[0]) <= 1e-9 && std::abs(p[1] - q[1]) <= 1e-9);
+          }
+        }
+        if (touch)
+        {
+          for (const Point2& q : sets[j])
+          {
+            bool known = false;
+            for (const Point2& p : sets[i])
+            {
+              known = known || (std::abs(p[0] - q[0]) <= 1e-9 && std::abs(p[1] - q[1]) <= 1e-9);
+            }
+            if (!known)
+            {
+              sets[i].push_back(q);
+            }
+          }
+          sets.erase(sets.begin() + static_cast<long>(j));
+          merged = true;
+        }
+      }
+    }
+  }
+  return sets;
+}
+
+double PolylineLength(vtkPolyData* pd)
+{
+  double length = 0;
+  auto it = vtk::TakeSmartPointer(pd->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType i = 0; i + 1 < n; ++i)
+    {
+      double a[3], b[3];
+      pd->GetPoint(ids[i], a);
+      pd->GetPoint(ids[i + 1], b);
+      length += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+    }
+  }
+  return length;
+}
+
+/// Distance from x to the nearest segment of the lines of `pd`.
+double DistanceToLines(vtkPolyData* pd, const double x[3])
+{
+  double best = VTK_DOUBLE_MAX;
+  auto it = vtk::TakeSmartPointer(pd->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType i = 0; i + 1 < n; ++i)
+    {
+      double a[3], b[3], t, closest[3];
+      pd->GetPoint(ids[i], a);
+      pd->GetPoint(ids[i + 1], b);
+      best = std::min(best, std::sqrt(vtkLine::DistanceToLine(x, a, b, t, closest)));
+    }
+  }
+  return best;
+}
+
+/// Largest distance from a point of `from` to the lines of `to`.
+double OneSidedHausdorff(vtkPolyData* from, vtkPolyData* to)
+{
+  double worst = 0;
+  for (vtkIdType p = 0; p < from->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    from->GetPoint(p, x);
+    worst = std::max(worst, DistanceToLines(to, x));
+  }
+  return worst;
+}
+
+vtkSmartPointer<vtkPolyData> Retrace(vtkPolyData* surface, vtkPolyData* controls, int resolution)
+{
+  vtkNew<vtkBoolSurfTraceCurves> trace;
+  trace->SetInputData(0, surface);
+  trace->SetInputData(1, controls);
+  trace->SetResolution(resolution);
+  EXPECT_EQ(testutils::ErrorsOf(trace), "");
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(trace->GetOutput());
+  return out;
+}
+
+/// Planar cubic Bezier spline point: segment s of `control` (3n+1 or closed 3n) at t.
+Point2 Bezier(const std::vector<Point2>& c, bool closed, double parameter)
+{
+  const int n = static_cast<int>(c.size());
+  const int segments = closed ? n / 3 : (n - 1) / 3;
+  // Closed splines wrap (a parameter past the end is the next turn); open ones end at their
+  // last anchor.
+  int s = static_cast<int>(std::floor(parameter));
+  if (!closed)
+  {
+    s = std::min(s, segments - 1);
+  }
+  const double t = parameter - s;
+  s = ((s % segments) + segments) % segments;
+  const Point2& p0 = c[3 * s];
+  const Point2& p1 = c[3 * s + 1];
+  const Point2& p2 = c[3 * s + 2];
+  const Point2& p3 = c[(3 * s + 3) % n];
+  const double u = 1 - t;
+  Point2 x;
+  for (int k = 0; k < 2; ++k)
+  {
+    x[k] = u * u * u * p0[k] + 3 * u * u * t * p1[k] + 3 * u * t * t * p2[k] + t * t * t * p3[k];
+  }
+  return x;
+}
+
+} // namespace
+
+TEST(BoundaryControlCurves, LoopsAreClipperPolygonsOnAFlatMesh)
+{
+  vtkSmartPointer<vtkPolyData> mesh =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(32, 1.0, 0.3, 17));
+  std::mt19937 rng(77);
+  const ClipperLib::ClipType clipperOps[] = {
+    ClipperLib::ctUnion, ClipperLib::ctIntersection, ClipperLib::ctDifference, ClipperLib::ctXor
+  };
+  int loops = 0, intersections = 0;
+  for (int trial = 0; trial < 10; ++trial)
+  {
+    const auto a = RandomPolygon(rng, 0), b = RandomPolygon(rng, 1);
+    vtkNew<vtkBoolSurf> f;
+    f->SetInputData(0, mesh);
+    f->SetInputData(1, testutils::ToCurves({ a, b }));
+    for (int op = 0; op < 4; ++op)
+    {
+      SCOPED_TRACE("trial " + std::to_string(trial) + " operation " + std::to_string(op));
+      f->SetOperation(op);
+      f->SetFillRule(0); // non-zero
+      ASSERT_EQ(testutils::ErrorsOf(f), "");
+      ClipperLib::Clipper clipper;
+      clipper.AddPath(testutils::ToClipper(a), ClipperLib::ptSubject, true);
+      clipper.AddPath(testutils::ToClipper(b), ClipperLib::ptClip, true);
+      ClipperLib::Paths solution;
+      ASSERT_TRUE(
+        clipper.Execute(clipperOps[op], solution, ClipperLib::pftNonZero, ClipperLib::pftNonZero));
+      std::vector<std::vector<Point2>> ours, theirs;
+      for (auto& loop : PointsByGroup(f->GetBoundaryControlCurvesOutput(), "BoundaryLoop"))
+      {
+        ours.push_back(loop.second);
+      }
+      for (const ClipperLib::Path& path : solution)
+      {
+        std::vector<Point2> points;
+        for (const ClipperLib::IntPoint& q : path)
+        {
+          points.push_back({ q.X / testutils::ClipperScale, q.Y / testutils::ClipperScale });
+        }
+        theirs.push_back(points);
+      }
+      ours = MergeTouching(ours);
+      theirs = MergeTouching(theirs);
+      EXPECT_EQ(ours.size(), theirs.size());
+      // Every Clipper polygon is one of our loops, vertex for vertex.
+      for (const std::vector<Point2>& expected : theirs)
+      {
+        bool matched = false;
+        for (const auto& loop : ours)
+        {
+          matched = matched || SameSets(loop, expected, 1e-9);
+        }
+        EXPECT_TRUE(matched) << "a Clipper polygon of " << expected.size()
+                             << " vertices has no loop with the same control points";
+        ++loops;
+        // Intersection points are vertices of neither input polygon.
+        for (const Point2& p : expected)
+        {
+          bool input = false;
+          for (const auto* polygon : { &a, &b })
+          {
+            for (const auto& v : polygon->Points)
+            {
+              input = input || (std::abs(v[0] - p[0]) < 1e-9 && std::abs(v[1] - p[1]) < 1e-9);
+            }
+          }
+          intersections += input ? 0 : 1;
+        }
+      }
+    }
+  }
+  EXPECT_GT(loops, 30);
+  EXPECT_GT(intersections, 50) << "the loops hardly meet: the test would not see intersections";
+}
+
+TEST(BoundaryControlCurves, TracingThemAgainGivesTheBoundary)
+{
+  vtkSmartPointer<vtkPolyData> mesh =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(24, 1.0, 0.3, 5));
+  std::mt19937 rng(5);
+  for (int trial = 0; trial < 6; ++trial)
+  {
+    vtkNew<vtkBoolSurf> f;
+    f->SetInputData(0, mesh);
+    f->SetInputData(1, testutils::ToCurves({ RandomPolygon(rng, 0), RandomPolygon(rng, 1) }));
+    f->SetOperation(trial % 4);
+    f->SetFillRule(0); // non-zero
+    ASSERT_EQ(testutils::ErrorsOf(f), "");
+    vtkPolyData* boundary = f->GetBoundaryOutput();
+    auto again = Retrace(mesh, f->GetBoundaryControlCurvesOutput(), 4);
+    // Point for point: the retraced pieces' points are the boundary's points (as sets).
+    std::vector<Point2> a, b;
+    for (vtkIdType p = 0; p < boundary->GetNumberOfPoints(); ++p)
+    {
+      a.push_back({ boundary->GetPoint(p)[0], boundary->GetPoint(p)[1] });
+    }
+    for (vtkIdType p = 0; p < again->GetNumberOfPoints(); ++p)
+    {
+      b.push_back({ again->GetPoint(p)[0], again->GetPoint(p)[1] });
+    }
+    EXPECT_TRUE(SameSets(a, b, 1e-9)) << "trial " << trial;
+    EXPECT_NEAR(PolylineLength(again), PolylineLength(boundary), 1e-9);
+  }
+}
+
+TEST(BoundaryControlCurves, OpenCurvesAreClippedLikeClipperClipsOpenPaths)
+{
+  vtkSmartPointer<vtkPolyData> mesh =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(32, 1.0, 0.3, 3));
+  std::mt19937 rng(31);
+  int pieces = 0;
+  for (int trial = 0; trial < 8; ++trial)
+  {
+    const auto a = RandomPolygon(rng, 0), b = RandomPolygon(rng, 1);
+    const auto line = RandomPolygon(rng, 2, false);
+    vtkNew<vtkBoolSurf> f;
+    f->SetInputData(0, mesh);
+    f->SetInputData(1, testutils::ToCurves({ a, b, line }));
+    f->SetOperation(trial % 4);
+    f->SetFillRule(0); // non-zero
+    ASSERT_EQ(testutils::ErrorsOf(f), "");
+    // Clipper: the region's polygons, then the open path clipped by them.
+    ClipperLib::Clipper region;
+    region.AddPath(testutils::ToClipper(a), ClipperLib::ptSubject, true);
+    region.AddPath(testutils::ToClipper(b), ClipperLib::ptClip, true);
+    const ClipperLib::ClipType ops[] = {
+      ClipperLib::ctUnion, ClipperLib::ctIntersection, ClipperLib::ctDifference, ClipperLib::ctXor
+    };
+    ClipperLib::Paths solution;
+    region.Execute(ops[trial % 4], solution, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    ClipperLib::Clipper clip;
+    clip.AddPath(testutils::ToClipper(line), ClipperLib::ptSubject, false);
+    clip.AddPaths(solution, ClipperLib::ptClip, true);
+    ClipperLib::PolyTree tree;
+    clip.Execute(ClipperLib::ctIntersection, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    ClipperLib::Paths open;
+    ClipperLib::OpenPathsFromPolyTree(tree, open);
+    double expected = 0;
+    for (const auto& path : open)
+    {
+      for (std::size_t i = 0; i + 1 < path.size(); ++i)
+      {
+        expected += std::hypot(static_cast<double>(path[i + 1].X - path[i].X),
+                      static_cast<double>(path[i + 1].Y - path[i].Y)) /
+          testutils::ClipperScale;
+      }
+    }
+    vtkPolyData* clipped = f->GetClippedCurvesOutput();
+    // On a flat mesh a polygon's legs are straight: its control polyline is the curve.
+    EXPECT_NEAR(PolylineLength(clipped), expected, 1e-9) << "trial " << trial;
+    EXPECT_EQ(clipped->GetNumberOfCells(), static_cast<vtkIdType>(open.size()))
+      << "trial " << trial;
+    // Every piece starts and ends on the region's boundary, or at an end of the line.
+    vtkPolyData* boundary = f->GetBoundaryOutput();
+    auto it = vtk::TakeSmartPointer(clipped->GetLines()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      for (vtkIdType end : { ids[0], ids[n - 1] })
+      {
+        double x[3];
+        clipped->GetPoint(end, x);
+        const auto& first = line.Points.front();
+        const auto& last = line.Points.back();
+        const bool lineEnd = (std::abs(x[0] - first[0]) + std::abs(x[1] - first[1]) < 1e-12) ||
+          (std::abs(x[0] - last[0]) + std::abs(x[1] - last[1]) < 1e-12);
+        EXPECT_TRUE(lineEnd || DistanceToLines(boundary, x) < 1e-9)
+          << "trial " << trial << ": a piece ends off the boundary";
+      }
+      ++pieces;
+    }
+  }
+  EXPECT_GT(pieces, 4);
+}
+
+TEST(BoundaryControlCurves, BezierPiecesArePiecesOfThePlanarCurve)
+{
+  // A closed cubic spline (two segments) crossed by a square; on a flat mesh geodesic
+  // de Casteljau is the planar one, so each piece's control points give exactly the original
+  // curve between the piece's parameters.
+  vtkSmartPointer<vtkPolyData> mesh =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(32, 1.0, 0.3, 8));
+  ControlPolygon spline;
+  spline.ShapeId = 0;
+  spline.Type = 1;
+  const std::vector<Point2> c = {
+    { 0.2, 0.5 }, { 0.2, 0.9 }, { 0.8, 0.9 }, { 0.8, 0.5 }, { 0.8, 0.1 }, { 0.2, 0.1 }
+  };
+  for (const Point2& p : c)
+  {
+    spline.Points.push_back({ p[0], p[1], 0.0 });
+  }
+  ControlPolygon square;
+  square.ShapeId = 1;
+  square.Points = { { 0.45, 0.3, 0 }, { 0.95, 0.3, 0 }, { 0.95, 0.95, 0 }, { 0.45, 0.95, 0 } };
+  int checked = 0;
+  for (int op = 0; op < 4; ++op)
+  {
+    vtkNew<vtkBoolSurf> f;
+    f->SetInputData(0, mesh);
+    f->SetInputData(1, testutils::ToCurves({ spline, square }));
+    f->SetOperation(op);
+    ASSERT_EQ(testutils::ErrorsOf(f), "");
+    vtkPolyData* out = f->GetBoundaryControlCurvesOutput();
+    vtkDataArray* type = out->GetCellData()->GetArray("CurveType");
+    vtkDataArray* range = out->GetCellData()->GetArray("ParameterRange");
+    vtkDataArray* reversed = out->GetCellData()->GetArray("Reversed");
+    auto it = vtk::TakeSmartPointer(out->GetLines()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      const vtkIdType cell = it->GetCurrentCellId();
+      if (type->GetComponent(cell, 0) != 1)
+      {
+        continue;
+      }
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      std::vector<Point2> piece;
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        piece.push_back({ out->GetPoint(ids[i])[0], out->GetPoint(ids[i])[1] });
+      }
+      if (reversed->GetComponent(cell, 0) != 0)
+      {
+        std::reverse(piece.begin(), piece.end());
+      }
+      ASSERT_EQ(piece.size() % 3, 1u) << "an open spline piece has 3k + 1 control points";
+      // Breakpoints of the piece's segments: T0, the integers between, T1.
+      const double t0 = range->GetComponent(cell, 0), t1 = range->GetComponent(cell, 1);
+      std::vector<double> breaks = { t0 };
+      for (double k = std::floor(t0 + 1e-9) + 1; k < t1 - 1e-9; ++k)
+      {
+        breaks.push_back(k);
+      }
+      breaks.push_back(t1);
+      ASSERT_EQ(breaks.size() - 1, (piece.size() - 1) / 3);
+      for (std::size_t s = 0; s + 1 < breaks.size(); ++s)
+      {
+        for (double u : { 0.0, 0.1, 0.37, 0.5, 0.81, 1.0 })
+        {
+          const Point2 x = Bezier(piece, false, s + u);
+          const Point2 y = Bezier(c, true, breaks[s] + u * (breaks[s + 1] - breaks[s]));
+          EXPECT_NEAR(x[0], y[0], 1e-9);
+          EXPECT_NEAR(x[1], y[1], 1e-9);
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 20);
+}
+
+TEST(BoundaryControlCurves, RetracedOnASharedScan)
+{
+  const char* data = std::getenv("BOOLSURF_SHARED_DATA");
+  const std::filesystem::path file =
+    data ? std::filesystem::path(data) / "meshes" / "spot.ply" : std::filesystem::path();
+  if (!data || !std::filesystem::exists(file))
+  {
+    GTEST_SKIP() << "BOOLSURF_SHARED_DATA is not set or has no meshes/spot.ply: the shared-scan "
+                    "check needs ../shared/data";
+  }
+  vtkNew<vtkPLYReader> reader;
+  reader->SetFileName(file.string().c_str());
+  reader->Update();
+  vtkPolyData* spot = reader->GetOutput();
+  double b[6];
+  spot->GetBounds(b);
+  const double diagonal = std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  // Two overlapping pentagons: vertices at a fixed rank of distance from a seed vertex, in
+  // angular order around the seed (in the plane across the direction from the centre).
+  double centre[3];
+  spot->GetCenter(centre);
+  auto ringAround = [&](vtkIdType seed, std::size_t rank, int shape)
+  {
+    double s[3];
+    spot->GetPoint(seed, s);
+    double n[3] = { s[0] - centre[0], s[1] - centre[1], s[2] - centre[2] };
+    vtkMath::Normalize(n);
+    double u[3], w[3];
+    vtkMath::Perpendiculars(n, u, w, 0);
+    std::vector<std::pair<double, vtkIdType>> near;
+    for (vtkIdType v = 0; v < spot->GetNumberOfPoints(); ++v)
+    {
+      double x[3];
+      spot->GetPoint(v, x);
+      near.push_back({ vtkMath::Distance2BetweenPoints(x, s), v });
+    }
+    std::sort(near.begin(), near.end());
+    std::vector<std::pair<double, vtkIdType>> ring; // (angle, vertex) of the rank-th band
+    for (std::size_t k = rank; k < rank + 40 && k < near.size(); ++k)
+    {
+      double x[3];
+      spot->GetPoint(near[k].second, x);
+      const double d[3] = { x[0] - s[0], x[1] - s[1], x[2] - s[2] };
+      ring.push_back({ std::atan2(vtkMath::Dot(d, w), vtkMath::Dot(d, u)), near[k].second });
+    }
+    std::sort(ring.begin(), ring.end());
+    ControlPolygon p;
+    p.ShapeId = shape;
+    for (int k = 0; k < 5; ++k)
+    {
+      double x[3];
+      spot->GetPoint(ring[k * ring.size() / 5].second, x);
+      p.Points.push_back({ x[0], x[1], x[2] });
+    }
+    return std::make_pair(p, near);
+  };
+  const vtkIdType seed = spot->GetNumberOfPoints() / 3;
+  auto [a, near] = ringAround(seed, 120, 0);
+  ControlPolygon c = ringAround(near[60].second, 120, 1).first;
+  vtkNew<vtkBoolSurf> f;
+  f->SetInputData(0, spot);
+  f->SetInputData(1, testutils::ToCurves({ a, c }));
+  f->SetOperation(0);
+  f->SetFillRule(0); // non-zero
+  const std::string errors = testutils::ErrorsOf(f);
+  ASSERT_EQ(errors, "");
+  vtkPolyData* boundary = f->GetBoundaryOutput();
+  ASSERT_GT(boundary->GetNumberOfPoints(), 0);
+  auto again = Retrace(spot, f->GetBoundaryControlCurvesOutput(), 4);
+  const double d = std::max(OneSidedHausdorff(again, boundary), OneSidedHausdorff(boundary, again));
+  EXPECT_LE(d, 1e-6 * diagonal) << "Hausdorff distance " << d << " of diagonal " << diagonal;
+  std::ostringstream ratio;
+  ratio << std::scientific << d / diagonal;
+  RecordProperty("HausdorffOverDiagonal", ratio.str());
+}
