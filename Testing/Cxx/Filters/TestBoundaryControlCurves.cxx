@@ -492,6 +492,70 @@ TEST(BoundaryControlCurves, BezierPiecesArePiecesOfThePlanarCurve)
   EXPECT_GT(checked, 20);
 }
 
+TEST(BoundaryControlCurves, BezierPiecesStayOnTheCurveOnASphere)
+{
+  // On a curved surface geodesic de Casteljau at another parameter is another curve, close to
+  // the original: the retraced pieces stay within the tracing tolerance of its trace.
+  auto sphere = testutils::ToPolyData(boolsurf::MakeIcosphere(4));
+  auto at = [](double theta, double phi) -> std::array<double, 3> {
+    return { std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta) };
+  };
+  ControlPolygon spline, polygon;
+  spline.Type = 1;
+  spline.ShapeId = 0;
+  for (int k = 0; k < 6; ++k)
+  {
+    spline.Points.push_back(at(0.6 + 0.25 * (k % 2), 2 * 3.14159265358979 * k / 6));
+  }
+  polygon.ShapeId = 1;
+  for (int k = 0; k < 4; ++k)
+  {
+    polygon.Points.push_back(at(0.45 + 0.45 * (k == 1 || k == 2), 0.3 + 0.9 * (k >= 2)));
+  }
+  vtkNew<vtkBoolSurf> f;
+  f->SetInputData(0, sphere);
+  f->SetInputData(1, testutils::ToCurves({ spline, polygon }));
+  f->SetOperation(0);
+  ASSERT_EQ(testutils::ErrorsOf(f), "");
+  vtkPolyData* pieces = f->GetBoundaryControlCurvesOutput();
+  vtkDataArray* type = pieces->GetCellData()->GetArray("CurveType");
+  int bezierPieces = 0;
+  for (vtkIdType c = 0; c < pieces->GetNumberOfCells(); ++c)
+  {
+    // Pieces, not the whole spline: the polygon crosses it.
+    bezierPieces += type->GetComponent(c, 0) == 1 &&
+        pieces->GetCellData()->GetArray("Closed")->GetComponent(c, 0) == 0
+      ? 1
+      : 0;
+  }
+  ASSERT_GE(bezierPieces, 1);
+  auto original = Retrace(sphere, testutils::ToCurves({ spline }), 4);
+  auto retraced = Retrace(sphere, pieces, 4);
+  // Only the Bezier pieces: the polygon's legs are checked by the other tests.
+  double worst = 0;
+  vtkDataArray* tracedType = retraced->GetCellData()->GetArray("CurveType");
+  auto it = vtk::TakeSmartPointer(retraced->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    if (tracedType->GetComponent(it->GetCurrentCellId(), 0) != 1)
+    {
+      continue;
+    }
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      worst = std::max(worst, DistanceToLines(original, retraced->GetPoint(ids[i])));
+    }
+  }
+  // The tracing tolerance: 5% of the mean edge (0.055); measured 1.5e-3 (Resolution 4).
+  EXPECT_LT(worst, 3e-3) << "retraced Bezier pieces leave the original trace by " << worst;
+  std::ostringstream text;
+  text << std::scientific << worst;
+  RecordProperty("BezierPieceDistance", text.str());
+}
+
 TEST(BoundaryControlCurves, RetracedOnASharedScan)
 {
   const char* data = std::getenv("BOOLSURF_SHARED_DATA");
