@@ -498,8 +498,9 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
     "Labeling",
     "Selection",
     "Output",
+    "ControlCurves",
     "Total" };
-  std::array<double, 10> times{ in.TraceTime,
+  std::array<double, 11> times{ in.TraceTime,
     t.Hash,
     t.Intersections,
     t.Refinement,
@@ -507,20 +508,21 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
     t.CellGraph,
     in.LabelingTime,
     selectionTime,
-    outputTime,
+    outputTime - in.ControlCurvesTime,
+    in.ControlCurvesTime,
     0 };
   if (reused)
   {
     std::fill(times.begin(), times.begin() + 7, 0.0);
   }
-  for (int k = 0; k < 9; ++k)
+  for (int k = 0; k < 10; ++k)
   {
-    times[9] += times[k];
+    times[10] += times[k];
   }
   vtkNew<vtkDoubleArray> stageTimes;
   stageTimes->SetName("StageTimes");
-  stageTimes->SetNumberOfComponents(10);
-  for (int k = 0; k < 10; ++k)
+  stageTimes->SetNumberOfComponents(11);
+  for (int k = 0; k < 11; ++k)
   {
     stageTimes->SetComponentName(k, names[k]);
   }
