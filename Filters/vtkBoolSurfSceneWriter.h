@@ -4,7 +4,7 @@
  *
  * vtkBoolSurfSceneWriter writes the curves of a BoolSurf pipeline in the scene format that
  * vtkBoolSurfSceneReader reads (the format of the original BoolSurf code's test scenes,
- * documented in Docs/Scenes.md), so that a user's curves, a shape set made by Resolve
+ * documented in Docs/VectorOutput.md), so that a user's curves, a shape set made by Resolve
  * Inconsistent Shapes or any other control-curves polydata can be saved and opened again:
  *
  * - `model`: the mesh the face indices refer to: MeshReference when set; else the input's
