@@ -198,6 +198,56 @@ std::vector<Curve> CurvesOf(vtkPolyData* input)
   return curves;
 }
 
+/// The pieces of each boundary loop (cell data BoundaryLoop, as BoolSurf's Boundary Control
+/// Curves give them: consecutive cells, each starting where the previous one ends) joined into
+/// one closed curve, so that the saved boundary bounds its region again. A loop mixing polygon
+/// and Bezier pieces cannot be one curve: its pieces stay as they are, with a note.
+std::vector<Curve> JoinLoops(vtkPolyData* input,
+  std::vector<Curve> curves,
+  std::vector<std::string>& notes)
+{
+  vtkDataArray* loopIds = input->GetCellData()->GetArray("BoundaryLoop");
+  if (!loopIds)
+  {
+    return curves;
+  }
+  std::vector<Curve> out;
+  for (std::size_t first = 0; first < curves.size();)
+  {
+    const double loop = loopIds->GetComponent(curves[first].CellId, 0);
+    std::size_t end = first + 1;
+    bool sameType = true;
+    while (end < curves.size() && loopIds->GetComponent(curves[end].CellId, 0) == loop)
+    {
+      sameType = sameType && curves[end].Type == curves[first].Type;
+      ++end;
+    }
+    if (!sameType || curves[first].Closed)
+    {
+      if (!sameType)
+      {
+        notes.push_back("boundary loop " + std::to_string(static_cast<long long>(loop)) +
+          " mixes polygon and Bezier pieces: written as its " + std::to_string(end - first) +
+          " open pieces");
+      }
+      out.insert(out.end(), curves.begin() + first, curves.begin() + end);
+      first = end;
+      continue;
+    }
+    Curve joined = curves[first];
+    for (std::size_t k = first + 1; k < end; ++k)
+    {
+      joined.Points.insert(
+        joined.Points.end(), curves[k].Points.begin() + 1, curves[k].Points.end());
+    }
+    joined.Points.pop_back(); // back where the loop started
+    joined.Closed = true;
+    out.push_back(std::move(joined));
+    first = end;
+  }
+  return out;
+}
+
 /// Polygon index of every curve: its CurveId when the input has distinct ones, else k + 1.
 std::vector<int> PolygonIndices(vtkPolyData* input, const std::vector<Curve>& curves)
 {
@@ -309,7 +359,13 @@ void vtkBoolSurfSceneWriter::WriteData()
     }
     json points = PointsOf(input);
     this->UpdateProgress(0.5);
-    const std::vector<Curve> curves = CurvesOf(input);
+    std::vector<std::string> notes;
+    const std::vector<Curve> curves =
+      this->JoinBoundaryLoops ? JoinLoops(input, CurvesOf(input), notes) : CurvesOf(input);
+    for (const std::string& note : notes)
+    {
+      vtkWarningMacro("BoolSurf scene " << this->FileName << ": " << note);
+    }
     const std::vector<int> polygonOf = PolygonIndices(input, curves);
     const int numberOfPolygons = *std::max_element(polygonOf.begin(), polygonOf.end()) + 1;
     int numberOfShapes = 0;
@@ -391,4 +447,5 @@ void vtkBoolSurfSceneWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileName: " << this->FileName << "\n";
   os << indent << "MeshReference: " << this->MeshReference << "\n";
   os << indent << "Indent: " << this->Indent << "\n";
+  os << indent << "JoinBoundaryLoops: " << this->JoinBoundaryLoops << "\n";
 }

@@ -71,6 +71,16 @@ public:
   vtkGetMacro(Indent, int);
   ///@}
 
+  ///@{
+  /// When the input has cell data `BoundaryLoop` (BoolSurf's Boundary Control Curves), write
+  /// each loop's pieces as one closed curve (default on), so the saved boundary bounds the
+  /// region again when reopened: every loop is shape 0, oriented with the region on its left,
+  /// so the region is shape 0 under the non-zero fill rule. Off writes the pieces as they are.
+  vtkSetMacro(JoinBoundaryLoops, vtkTypeBool);
+  vtkGetMacro(JoinBoundaryLoops, vtkTypeBool);
+  vtkBooleanMacro(JoinBoundaryLoops, vtkTypeBool);
+  ///@}
+
   /// The `model` written by the last successful write.
   const char* GetWrittenMeshReference() { return this->WrittenMeshReference.c_str(); }
 
@@ -84,6 +94,7 @@ protected:
   std::string FileName;
   std::string MeshReference;
   int Indent = 1;
+  vtkTypeBool JoinBoundaryLoops = 1;
   std::string WrittenMeshReference;
 
 private:

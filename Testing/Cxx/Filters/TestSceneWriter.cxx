@@ -460,6 +460,54 @@ TEST(SceneWriter, ResolvedShapeSetSavedAndReopened)
   EXPECT_EQ(testutils::Area(after->GetOutput(0)), area);
 }
 
+TEST(SceneWriter, SavedBoundaryBoundsTheSameRegion)
+{
+  // A result's boundary (BoolSurf's Boundary Control Curves) saved as a scene, reopened and
+  // taken as one shape under the non-zero rule is the same region, for every operation.
+  auto grid = testutils::ToPolyData(boolsurf::MakeFlatSquare(12, 4.0, 0.3, 7));
+  auto curves = ExactCurves(grid,
+    { { { 0.5, 0.5 }, { 2.5, 0.7 }, { 2.4, 2.5 }, { 0.6, 2.3 } },
+      { { 1.3, 1.1 }, { 3.7, 1.2 }, { 3.5, 3.3 }, { 1.6, 3.1 }, { 2.9, 2.2 } } },
+    { 0, 1 },
+    { 0, 0 },
+    { true, true });
+  const fs::path mesh = Scratch() / "jittered.ply";
+  {
+    vtkNew<vtkPLYWriter> ply;
+    ply->SetInputData(grid);
+    ply->SetFileName(mesh.string().c_str());
+    ply->Write();
+  }
+  vtkNew<vtkPLYReader> surface; // the surface exactly as the reopened scene will have it
+  surface->SetFileName(mesh.string().c_str());
+  surface->Update();
+  for (int operation = 0; operation < 4; ++operation)
+  {
+    SCOPED_TRACE("operation " + std::to_string(operation));
+    vtkNew<vtkBoolSurf> first;
+    first->SetInputConnection(0, surface->GetOutputPort());
+    first->SetInputData(1, curves);
+    first->SetOperation(operation);
+    ASSERT_EQ(testutils::ErrorsOf(first), "");
+    const double area = testutils::Area(first->GetOutput(0));
+    ASSERT_GT(area, 0.1);
+    const fs::path file = Scratch() / ("boundary" + std::to_string(operation) + ".json");
+    ASSERT_EQ(
+      WriteScene(first->GetBoundaryControlCurvesOutput(), file, mesh.filename().string()), "");
+    std::string errors;
+    auto reader = ReadScene(file, errors);
+    ASSERT_EQ(errors, "");
+    vtkNew<vtkBoolSurf> again;
+    again->SetInputConnection(0, reader->GetOutputPort(0));
+    again->SetInputConnection(1, reader->GetOutputPort(1));
+    again->SetOperationToExpression();
+    again->SetExpression("S0");
+    again->SetFillRule(0); // non-zero: holes are loops turning the other way
+    ASSERT_EQ(testutils::ErrorsOf(again), "");
+    EXPECT_NEAR(testutils::Area(again->GetOutput(0)), area, 1e-9 * area);
+  }
+}
+
 TEST(SceneWriter, BadInputIsANamedErrorAndWritesNothing)
 {
   auto grid = FlatGrid();
