@@ -249,12 +249,15 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   if (this->ComputeControlCurves)
   {
     boolsurf::GeodesicPathSolver& solver = in.Surface.GetTracer().GetPathSolver();
+    const boolsurf::TriangleMesh& mesh = *surface->Mesh;
+    auto evaluate = [&mesh](const boolsurf::SurfacePoint& p)
+    { return mesh.Evaluate(p.Triangle, p.U, p.V); };
     boolsurf::TraceStatus status =
       boolsurf::BoundaryControlCurves(solver, arr, in.Sources, loops, in.SubCurves);
     if (status)
     {
       boolsurf::WriteControlSubCurves(
-        *surface->Mesh, in.Sources, in.SubCurves, "BoundaryLoop", true, boundaryControls);
+        evaluate, in.SubCurves, "BoundaryLoop", true, boundaryControls);
       status = boolsurf::ClippedControlCurves(solver, arr, in.Sources, in.Selected, in.SubCurves);
     }
     if (!status)
@@ -265,8 +268,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
       boundaryControls->Initialize();
       return 0;
     }
-    boolsurf::WriteControlSubCurves(
-      *surface->Mesh, in.Sources, in.SubCurves, "ClippedPiece", false, clipped);
+    boolsurf::WriteControlSubCurves(evaluate, in.SubCurves, "ClippedPiece", false, clipped);
   }
   in.ControlCurvesTime = Milliseconds(vectorStart, Clock::now());
   this->WriteFieldData(text,

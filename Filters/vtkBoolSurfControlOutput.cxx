@@ -14,8 +14,7 @@ namespace boolsurf
 {
 
 //------------------------------------------------------------------------------
-void WriteControlSubCurves(const TriangleMesh& mesh,
-  const std::vector<CurveSource>& sources,
+void WriteControlSubCurves(const std::function<Vec3(const SurfacePoint&)>& position,
   const std::vector<ControlSubCurve>& curves,
   const char* groupName,
   bool boundary,
@@ -46,7 +45,7 @@ void WriteControlSubCurves(const TriangleMesh& mesh,
     const vtkIdType first = points->GetNumberOfPoints();
     for (const SurfacePoint& p : c.Points)
     {
-      const Vec3 x = mesh.Evaluate(p.Triangle, p.U, p.V);
+      const Vec3 x = position(p);
       points->InsertNextPoint(x.x, x.y, x.z);
       triangleId->InsertNextValue(p.Triangle);
       barycentric->InsertNextTuple2(p.U, p.V);
@@ -61,12 +60,11 @@ void WriteControlSubCurves(const TriangleMesh& mesh,
     {
       lines->InsertCellPoint(first);
     }
-    const CurveSource& source = sources[c.Curve];
-    shape->InsertNextValue(boundary ? 0 : source.ShapeId);
+    shape->InsertNextValue(boundary ? 0 : c.SourceShapeId);
     type->InsertNextValue(static_cast<int>(c.Type));
     closed->InsertNextValue(c.Whole ? 1 : 0);
-    sourceCurve->InsertNextValue(source.CurveId);
-    sourceShape->InsertNextValue(source.ShapeId);
+    sourceCurve->InsertNextValue(c.SourceCurveId);
+    sourceShape->InsertNextValue(c.SourceShapeId);
     reversed->InsertNextValue(c.Reversed ? 1 : 0);
     group->InsertNextValue(c.Group);
     range->InsertNextTuple2(c.T0, c.T1);

@@ -6,6 +6,7 @@
 
 #include "Selection/BoundaryControlPoints.h"
 
+#include <functional>
 #include <vector>
 
 class vtkPolyData;
@@ -19,8 +20,7 @@ namespace boolsurf
 /// CurveType, Closed, SourceCurveId, SourceShapeId, Reversed, ParameterRange (the source
 /// curve's parameters, segment index + fraction) and `groupName` (BoundaryLoop or
 /// ClippedPiece) holding each sub-curve's Group.
-void WriteControlSubCurves(const TriangleMesh& mesh,
-  const std::vector<CurveSource>& sources,
+void WriteControlSubCurves(const std::function<Vec3(const SurfacePoint&)>& position,
   const std::vector<ControlSubCurve>& curves,
   const char* groupName,
   bool boundary,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace boolsurf
 {
@@ -138,6 +139,10 @@ TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
   const int last = (first + count - 1) % n;
   out.Curve = c;
   out.Type = source.Type;
+  out.Segments = NumberOfSegments(source);
+  out.CurveClosed = source.Closed;
+  out.SourceShapeId = source.ShapeId;
+  out.SourceCurveId = source.CurveId;
   out.Whole = source.Closed && count == n + 1;
   out.T0 = ArrangedPointParameter(arrangement, sources, c, first);
   out.T1 = ArrangedPointParameter(arrangement, sources, c, last);
@@ -215,9 +220,29 @@ double ArrangedPointParameter(const Arrangement& arrangement,
 }
 
 //------------------------------------------------------------------------------
-TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
+TraceStatus PatchControlCurve(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
+  int patch,
+  ControlSubCurve& out)
+{
+  const ArrangementPatch& p = arrangement.Patches[patch];
+  out = ControlSubCurve();
+  if (p.Curve < 0 || p.FirstIndex < 0)
+  {
+    return TraceStatus::Success();
+  }
+  return MakeSubCurve(solver,
+    arrangement,
+    sources,
+    p.Curve,
+    p.FirstIndex,
+    static_cast<int>(p.Points.size()),
+    out);
+}
+
+//------------------------------------------------------------------------------
+void AssembleBoundaryLoops(const std::function<const ControlSubCurve*(int)>& patchCurve,
   const std::vector<BoundaryPolyline>& loops,
   std::vector<ControlSubCurve>& out)
 {
@@ -228,24 +253,13 @@ TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
     const int firstOfLoop = static_cast<int>(out.size());
     for (std::size_t k = 0; k < loop.Patches.size(); ++k)
     {
-      const ArrangementPatch& patch = arrangement.Patches[loop.Patches[k]];
-      if (patch.Curve < 0 || patch.FirstIndex < 0)
+      const ControlSubCurve* piece = patchCurve(loop.Patches[k]);
+      if (!piece || piece->Curve < 0 || piece->Points.empty())
       {
         continue;
       }
-      ControlSubCurve sub;
+      ControlSubCurve sub = *piece;
       sub.Group = static_cast<int>(l);
-      TraceStatus status = MakeSubCurve(solver,
-        arrangement,
-        sources,
-        patch.Curve,
-        patch.FirstIndex,
-        static_cast<int>(patch.Points.size()),
-        sub);
-      if (!status)
-      {
-        return status;
-      }
       sub.Reversed = loop.Reversed[k] != 0;
       if (sub.Reversed)
       {
@@ -269,16 +283,81 @@ TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
     if (static_cast<int>(out.size()) == firstOfLoop + 1)
     {
       ControlSubCurve& only = out.back();
-      const CurveSource& source = sources[only.Curve];
-      if (source.Closed && !only.Whole &&
-        std::abs(only.T1 - only.T0 - NumberOfSegments(source)) <= SameParameter &&
-        only.Points.size() > 1)
+      if (only.CurveClosed && !only.Whole &&
+        std::abs(only.T1 - only.T0 - only.Segments) <= SameParameter && only.Points.size() > 1)
       {
         only.Whole = true;
         only.Points.pop_back();
       }
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void AssembleClippedPieces(const std::function<const ControlSubCurve*(int)>& patchCurve,
+  const std::vector<PatchInfo>& patches,
+  const std::vector<char>& selected,
+  std::vector<ControlSubCurve>& out)
+{
+  out.clear();
+  auto inside = [&](const PatchInfo& p)
+  {
+    auto in = [&](int cell)
+    { return cell >= 0 && cell < static_cast<int>(selected.size()) && selected[cell]; };
+    return !p.Closed && p.Curve >= 0 && (in(p.LeftCell) || in(p.RightCell));
+  };
+  int group = 0;
+  // Patches of one curve are consecutive and in curve order.
+  for (std::size_t p = 0; p < patches.size(); ++p)
+  {
+    const ControlSubCurve* piece = patchCurve(static_cast<int>(p));
+    if (!inside(patches[p]) || !piece || piece->Points.empty())
+    {
+      continue;
+    }
+    const bool continues = p > 0 && !out.empty() && inside(patches[p - 1]) &&
+      patches[p - 1].Curve == patches[p].Curve;
+    ControlSubCurve sub = *piece;
+    if (continues && Join(out.back(), sub))
+    {
+      continue;
+    }
+    sub.Group = group++;
+    out.push_back(std::move(sub));
+  }
+}
+
+//------------------------------------------------------------------------------
+TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
+  const Arrangement& arrangement,
+  const std::vector<CurveSource>& sources,
+  const std::vector<BoundaryPolyline>& loops,
+  std::vector<ControlSubCurve>& out)
+{
+  // Only the boundary's patches are computed (a Bezier piece costs geodesic splits).
+  std::unordered_map<int, ControlSubCurve> pieces;
+  for (const BoundaryPolyline& loop : loops)
+  {
+    for (int p : loop.Patches)
+    {
+      if (pieces.count(p) == 0)
+      {
+        TraceStatus status = PatchControlCurve(solver, arrangement, sources, p, pieces[p]);
+        if (!status)
+        {
+          return status;
+        }
+      }
+    }
+  }
+  AssembleBoundaryLoops(
+    [&](int p)
+    {
+      auto it = pieces.find(p);
+      return it == pieces.end() ? nullptr : &it->second;
+    },
+    loops,
+    out);
   return TraceStatus::Success();
 }
 
@@ -289,41 +368,37 @@ TraceStatus ClippedControlCurves(GeodesicPathSolver& solver,
   const std::vector<char>& selected,
   std::vector<ControlSubCurve>& out)
 {
-  out.clear();
-  auto inside = [&](int cell)
-  { return cell >= 0 && cell < static_cast<int>(selected.size()) && selected[cell]; };
-  int group = 0;
-  // Patches of one curve are consecutive and in curve order.
-  const std::vector<ArrangementPatch>& patches = arrangement.Patches;
-  for (std::size_t p = 0; p < patches.size();)
+  std::vector<PatchInfo> info(arrangement.Patches.size());
+  std::unordered_map<int, ControlSubCurve> pieces;
+  for (std::size_t p = 0; p < info.size(); ++p)
   {
-    const ArrangementPatch& patch = patches[p];
-    if (patch.Closed || patch.Curve < 0 || patch.FirstIndex < 0 ||
-      !(inside(patch.LeftCell) || inside(patch.RightCell)))
+    const ArrangementPatch& patch = arrangement.Patches[p];
+    info[p] = { patch.Curve, patch.Closed, patch.LeftCell, patch.RightCell };
+    const bool inside = [&](int a, int b)
     {
-      ++p;
-      continue;
-    }
-    // Join the following patches of the same curve that are inside too.
-    int count = static_cast<int>(patch.Points.size());
-    std::size_t q = p + 1;
-    while (q < patches.size() && patches[q].Curve == patch.Curve &&
-      (inside(patches[q].LeftCell) || inside(patches[q].RightCell)))
+      auto in = [&](int cell)
+      { return cell >= 0 && cell < static_cast<int>(selected.size()) && selected[cell]; };
+      return in(a) || in(b);
+    }(patch.LeftCell, patch.RightCell);
+    if (!patch.Closed && inside)
     {
-      count += static_cast<int>(patches[q].Points.size()) - 1;
-      ++q;
+      TraceStatus status =
+        PatchControlCurve(solver, arrangement, sources, static_cast<int>(p), pieces[p]);
+      if (!status)
+      {
+        return status;
+      }
     }
-    ControlSubCurve sub;
-    sub.Group = group++;
-    TraceStatus status =
-      MakeSubCurve(solver, arrangement, sources, patch.Curve, patch.FirstIndex, count, sub);
-    if (!status)
-    {
-      return status;
-    }
-    out.push_back(std::move(sub));
-    p = q;
   }
+  AssembleClippedPieces(
+    [&](int p)
+    {
+      auto it = pieces.find(p);
+      return it == pieces.end() ? nullptr : &it->second;
+    },
+    info,
+    selected,
+    out);
   return TraceStatus::Success();
 }
 

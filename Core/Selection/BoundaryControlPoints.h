@@ -23,6 +23,7 @@
 #include "Geodesic/CurveTracer.h"
 #include "Selection/RegionBoundary.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,18 @@ struct ControlSubCurve
   /// Control points in walking order: the user's own surface points where they are the input's
   /// control points, the arrangement's where the sub-curve starts or ends at an intersection.
   std::vector<SurfacePoint> Points;
+  // Of the source curve, so that pieces can be joined without it.
+  int Segments = 0;         ///< its number of segments (legs, or cubic segments)
+  bool CurveClosed = false; ///< whether it is closed
+  int SourceShapeId = 0, SourceCurveId = 0;
+};
+
+/// What the pieces of a patch need to know of it to be assembled.
+struct PatchInfo
+{
+  int Curve = -1;
+  bool Closed = true; ///< of a closed curve
+  int LeftCell = -1, RightCell = -1;
 };
 
 /// Parameter on source curve `curve` of the point at index `index` of the arrangement's
@@ -60,6 +73,28 @@ double ArrangedPointParameter(const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   int curve,
   int index);
+
+/// The sub-curve of patch `patch` of the arrangement, forward along its curve (Group -1).
+TraceStatus PatchControlCurve(GeodesicPathSolver& solver,
+  const Arrangement& arrangement,
+  const std::vector<CurveSource>& sources,
+  int patch,
+  ControlSubCurve& out);
+
+/// Boundary loops from per-patch sub-curves (`patchCurve(p)`, forward, or null for a patch
+/// without one): each loop's pieces oriented with the region on the left, pieces of one curve
+/// that follow each other joined (a polygon's junction inside a leg dropped), a piece going all
+/// around its closed curve marked Whole. Group is the loop index.
+void AssembleBoundaryLoops(const std::function<const ControlSubCurve*(int)>& patchCurve,
+  const std::vector<BoundaryPolyline>& loops,
+  std::vector<ControlSubCurve>& out);
+
+/// Pieces of open curves inside the cells with selected[cell] != 0 (a piece along the region's
+/// boundary counts as inside), from per-patch sub-curves; consecutive patches of a curve joined.
+void AssembleClippedPieces(const std::function<const ControlSubCurve*(int)>& patchCurve,
+  const std::vector<PatchInfo>& patches,
+  const std::vector<char>& selected,
+  std::vector<ControlSubCurve>& out);
 
 /// Sub-curves of the boundary loops `loops` (from ExtractRegionBoundary on the arrangement's
 /// patches), each oriented with the region on its left; Group is the loop index.
