@@ -249,15 +249,11 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   if (this->ComputeControlCurves)
   {
     boolsurf::GeodesicPathSolver& solver = in.Surface.GetTracer().GetPathSolver();
-    const boolsurf::TriangleMesh& mesh = *surface->Mesh;
-    auto evaluate = [&mesh](const boolsurf::SurfacePoint& p)
-    { return mesh.Evaluate(p.Triangle, p.U, p.V); };
     boolsurf::TraceStatus status =
       boolsurf::BoundaryControlCurves(solver, arr, in.Sources, loops, in.SubCurves);
     if (status)
     {
-      boolsurf::WriteControlSubCurves(
-        evaluate, in.SubCurves, "BoundaryLoop", true, boundaryControls);
+      boolsurf::WriteControlSubCurves(in.SubCurves, "BoundaryLoop", true, boundaryControls);
       status = boolsurf::ClippedControlCurves(solver, arr, in.Sources, in.Selected, in.SubCurves);
     }
     if (!status)
@@ -268,7 +264,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
       boundaryControls->Initialize();
       return 0;
     }
-    boolsurf::WriteControlSubCurves(evaluate, in.SubCurves, "ClippedPiece", false, clipped);
+    boolsurf::WriteControlSubCurves(in.SubCurves, "ClippedPiece", false, clipped);
   }
   in.ControlCurvesTime = Milliseconds(vectorStart, Clock::now());
   this->WriteFieldData(text,

@@ -1,6 +1,7 @@
 #include "vtkBoolSurfArrangement.h"
 
 #include "vtkBoolSurfArrangementOutput.h"
+#include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfSurfaceCache.h"
 #include "vtkBoolSurfTracedCurves.h"
@@ -92,6 +93,26 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkErrorMacro(<< error);
     return 0;
+  }
+  // Each patch as control points of its input curve (when the curves came from Trace Surface
+  // Curves, which records them), for the Boolean's vector output.
+  std::vector<boolsurf::CurveSource> sources;
+  if (boolsurf::ReadCurveSources(curvesInput, curves, sources))
+  {
+    const boolsurf::Arrangement& arr = this->Internal->Arrangement;
+    boolsurf::GeodesicPathSolver& solver = this->Internal->Surface.GetTracer().GetPathSolver();
+    std::vector<boolsurf::ControlSubCurve> perPatch(arr.Patches.size());
+    for (std::size_t p = 0; p < perPatch.size(); ++p)
+    {
+      const boolsurf::TraceStatus status =
+        boolsurf::PatchControlCurve(solver, arr, sources, static_cast<int>(p), perPatch[p]);
+      if (!status)
+      {
+        vtkWarningMacro("patch " << p << " has no control points (" << status.Message << ")");
+        perPatch[p] = boolsurf::ControlSubCurve();
+      }
+    }
+    boolsurf::WritePatchControlCurves(perPatch, output->GetFieldData());
   }
   // Each curve's homology class and the surface's generators (computed once per surface), for
   // the labeling's explanation of inconsistent shapes.

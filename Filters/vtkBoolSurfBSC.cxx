@@ -14,7 +14,7 @@ vtkStandardNewMacro(vtkBoolSurfBSC);
 vtkBoolSurfBSC::vtkBoolSurfBSC()
 {
   this->SetNumberOfInputPorts(2);
-  this->SetNumberOfOutputPorts(2);
+  this->SetNumberOfOutputPorts(4);
 }
 
 //------------------------------------------------------------------------------
@@ -33,9 +33,14 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* samples = vtkPolyData::GetData(inputVector[1], 0);
   vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
+  vtkPolyData* controls = vtkPolyData::GetData(outputVector, 2);
+  vtkPolyData* clipped = vtkPolyData::GetData(outputVector, 3);
   // A failed update leaves empty outputs, not the previous region.
   region->Initialize();
   boundary->Initialize();
+  controls->Initialize();
+  clipped->Initialize();
+  std::string note;
   this->UpdateProgress(0.0);
 
   boolsurf::ArrangementFields fields;
@@ -67,7 +72,12 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
     return 0;
   }
   this->UpdateProgress(0.5);
-  boolsurf::WriteSelection(input, fields, result.Selected, region, boundary);
+  boolsurf::WriteSelection(
+    input, fields, result.Selected, region, boundary, controls, clipped, &note);
+  if (!note.empty())
+  {
+    vtkWarningMacro(<< note);
+  }
   boolsurf::AddSampleFields(snaps, result, region);
   boolsurf::AddSampleFields(snaps, result, boundary);
   this->UpdateProgress(1.0);

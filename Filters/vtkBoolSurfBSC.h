@@ -64,6 +64,11 @@ public:
 
   /// The boundary output (port 1).
   vtkPolyData* GetBoundaryOutput() { return this->GetOutput(1); }
+  /// The boundary as control points of sub-curves of the input curves (port 2) and the open
+  /// curves clipped by the region (port 3), as vtkBoolSurf's ports 2 and 3; empty, with a
+  /// warning, when the arrangement's curves were not traced by vtkBoolSurfTraceCurves.
+  vtkPolyData* GetBoundaryControlCurvesOutput() { return this->GetOutput(2); }
+  vtkPolyData* GetClippedCurvesOutput() { return this->GetOutput(3); }
 
 protected:
   vtkBoolSurfBSC();

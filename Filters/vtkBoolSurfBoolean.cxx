@@ -17,7 +17,7 @@ vtkStandardNewMacro(vtkBoolSurfBoolean);
 //------------------------------------------------------------------------------
 vtkBoolSurfBoolean::vtkBoolSurfBoolean()
 {
-  this->SetNumberOfOutputPorts(2);
+  this->SetNumberOfOutputPorts(4);
 }
 
 //------------------------------------------------------------------------------
@@ -28,9 +28,14 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
+  vtkPolyData* controls = vtkPolyData::GetData(outputVector, 2);
+  vtkPolyData* clipped = vtkPolyData::GetData(outputVector, 3);
   // A failed update leaves empty outputs, not the previous region.
   region->Initialize();
   boundary->Initialize();
+  controls->Initialize();
+  clipped->Initialize();
+  std::string note;
   this->UpdateProgress(0.0);
 
   boolsurf::ArrangementFields fields;
@@ -94,10 +99,15 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
   this->UpdateProgress(0.5);
   const boolsurf::BooleanRequest request = boolsurf::MakeBooleanRequest(
     this->Operation, this->ShapeA, this->ShapeB, this->Expression, this->FillRule);
-  if (!boolsurf::ComputeBoolean(labeled, fields, labels, request, region, boundary, error))
+  if (!boolsurf::ComputeBoolean(
+        labeled, fields, labels, request, region, boundary, error, controls, clipped, &note))
   {
     vtkErrorMacro(<< error);
     return 0;
+  }
+  if (!note.empty())
+  {
+    vtkWarningMacro(<< note);
   }
   this->UpdateProgress(1.0);
   return 1;

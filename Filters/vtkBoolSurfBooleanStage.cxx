@@ -1,6 +1,7 @@
 #include "vtkBoolSurfBooleanStage.h"
 
 #include "Selection/RegionBoundary.h"
+#include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfRegionOutput.h"
 
 #include <vtkDataArray.h>
@@ -105,11 +106,49 @@ void AddExpressionField(vtkPolyData* output, const std::string& text)
 }
 
 //------------------------------------------------------------------------------
+void WriteSelectionControlCurves(vtkPolyData* labeled,
+  const ArrangementFields& fields,
+  const std::vector<char>& selected,
+  const std::vector<BoundaryPolyline>& loops,
+  vtkPolyData* controls,
+  vtkPolyData* clipped,
+  std::string* note)
+{
+  std::vector<ControlSubCurve> perPatch, out;
+  if (!ReadPatchControlCurves(labeled->GetFieldData(), perPatch) ||
+    perPatch.size() != fields.Patches.size())
+  {
+    if (note)
+    {
+      *note = "the arrangement does not carry its curves' control points (they were not traced "
+              "by Trace Surface Curves): the control-point outputs are empty";
+    }
+    return;
+  }
+  auto patchCurve = [&](int p) { return &perPatch[p]; };
+  AssembleBoundaryLoops(patchCurve, loops, out);
+  WriteControlSubCurves(out, "BoundaryLoop", true, controls);
+  std::vector<PatchInfo> info(perPatch.size());
+  for (std::size_t p = 0; p < info.size(); ++p)
+  {
+    info[p] = { perPatch[p].Curve,
+      perPatch[p].CurveClosed,
+      fields.Patches[p].LeftCell,
+      fields.Patches[p].RightCell };
+  }
+  AssembleClippedPieces(patchCurve, info, selected, out);
+  WriteControlSubCurves(out, "ClippedPiece", false, clipped);
+}
+
+//------------------------------------------------------------------------------
 void WriteSelection(vtkPolyData* labeled,
   const ArrangementFields& fields,
   const std::vector<char>& selected,
   vtkPolyData* region,
-  vtkPolyData* boundary)
+  vtkPolyData* boundary,
+  vtkPolyData* controls,
+  vtkPolyData* clipped,
+  std::string* note)
 {
   ExtractRegion(labeled, selected, region);
   // The labels table travels with the region (shared, not copied): row ArrangementCell of
@@ -123,8 +162,13 @@ void WriteSelection(vtkPolyData* labeled,
   }
   vtkDataArray* tid = labeled->GetPointData()->GetArray("TriangleId");
   vtkDataArray* uv = labeled->GetPointData()->GetArray("Barycentric");
+  const std::vector<BoundaryPolyline> loops = ExtractRegionBoundary(fields.Patches, selected);
+  if (controls && clipped)
+  {
+    WriteSelectionControlCurves(labeled, fields, selected, loops, controls, clipped, note);
+  }
   WriteBoundary(
-    ExtractRegionBoundary(fields.Patches, selected),
+    loops,
     [&](int p, double x[3]) { labeled->GetPoint(p, x); },
     [&](int p)
     {
@@ -148,7 +192,10 @@ bool ComputeBoolean(vtkPolyData* labeled,
   const BooleanRequest& request,
   vtkPolyData* region,
   vtkPolyData* boundary,
-  std::string& error)
+  std::string& error,
+  vtkPolyData* controls,
+  vtkPolyData* clipped,
+  std::string* note)
 {
   region->Initialize();
   boundary->Initialize();
@@ -158,7 +205,7 @@ bool ComputeBoolean(vtkPolyData* labeled,
   {
     return false;
   }
-  WriteSelection(labeled, fields, selected, region, boundary);
+  WriteSelection(labeled, fields, selected, region, boundary, controls, clipped, note);
   AddExpressionField(region, text);
   AddExpressionField(boundary, text);
   return true;

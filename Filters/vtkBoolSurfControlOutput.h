@@ -6,9 +6,9 @@
 
 #include "Selection/BoundaryControlPoints.h"
 
-#include <functional>
 #include <vector>
 
+class vtkFieldData;
 class vtkPolyData;
 
 namespace boolsurf
@@ -20,11 +20,27 @@ namespace boolsurf
 /// CurveType, Closed, SourceCurveId, SourceShapeId, Reversed, ParameterRange (the source
 /// curve's parameters, segment index + fraction) and `groupName` (BoundaryLoop or
 /// ClippedPiece) holding each sub-curve's Group.
-void WriteControlSubCurves(const std::function<Vec3(const SurfacePoint&)>& position,
-  const std::vector<ControlSubCurve>& curves,
+void WriteControlSubCurves(const std::vector<ControlSubCurve>& curves,
   const char* groupName,
   bool boundary,
   vtkPolyData* output);
+
+/// What the traced curves polydata of vtkBoolSurfTraceCurves says of each curve's control points
+/// (field data ControlOffsets/ControlTriangleId/ControlBarycentric, point data CurveParameter,
+/// cell data CurveType, Closed, ShapeId, CurveId), in the order of ReadTracedCurves. False when it
+/// does not say it (curves traced elsewhere, or an older file).
+bool ReadCurveSources(vtkPolyData* traced,
+  const std::vector<TracedCurve>& curves,
+  std::vector<CurveSource>& out);
+
+/// The sub-curve of every patch (forward along its curve) as field data of `fd`:
+/// PatchControlOffsets, PatchControlTriangleId, PatchControlBarycentric, PatchControlPosition,
+/// PatchParameterRange and PatchControlInfo (components CurveIndex, CurveType, Segments,
+/// CurveClosed, SourceShapeId, SourceCurveId, Whole).
+void WritePatchControlCurves(const std::vector<ControlSubCurve>& perPatch, vtkFieldData* fd);
+
+/// Reads what WritePatchControlCurves wrote; false when `fd` does not hold it.
+bool ReadPatchControlCurves(vtkFieldData* fd, std::vector<ControlSubCurve>& perPatch);
 
 } // namespace boolsurf
 

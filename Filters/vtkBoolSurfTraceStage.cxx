@@ -6,6 +6,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
@@ -105,6 +106,32 @@ void WriteTraces(const TriangleMesh& mesh,
   pd->AddArray(parameter);
   pd->AddArray(segment);
   pd->AddArray(controlPoint);
+  // The control points themselves (Bezier handles are not on the traced curve), so that the
+  // arrangement and the Boolean can give results back as control points (field data:
+  // ControlOffsets[c]..ControlOffsets[c + 1] index curve c's points).
+  vtkNew<vtkIntArray> controlOffsets;
+  controlOffsets->SetName("ControlOffsets");
+  vtkNew<vtkIdTypeArray> controlTriangle;
+  controlTriangle->SetName("ControlTriangleId");
+  vtkNew<vtkDoubleArray> controlUV;
+  controlUV->SetName("ControlBarycentric");
+  controlUV->SetNumberOfComponents(2);
+  controlOffsets->InsertNextValue(0);
+  for (const ControlCurve& control : controls)
+  {
+    for (const SurfacePoint& p : control.Points)
+    {
+      controlTriangle->InsertNextValue(p.Triangle);
+      controlUV->InsertNextTuple2(p.U, p.V);
+    }
+    controlOffsets->InsertNextValue(static_cast<int>(controlTriangle->GetNumberOfTuples()));
+  }
+  output->GetFieldData()->AddArray(controlOffsets);
+  if (controlTriangle->GetNumberOfTuples() > 0) // never an empty numeric field array
+  {
+    output->GetFieldData()->AddArray(controlTriangle);
+    output->GetFieldData()->AddArray(controlUV);
+  }
   vtkCellData* cd = output->GetCellData();
   cd->AddArray(shape);
   cd->AddArray(curveId);

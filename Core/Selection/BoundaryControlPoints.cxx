@@ -150,7 +150,7 @@ TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
   {
     out.T1 += NumberOfSegments(source);
   }
-  return SubCurve(solver,
+  TraceStatus status = SubCurve(solver,
     arrangement,
     source,
     arrangement.CurvePoints[c][first],
@@ -159,6 +159,12 @@ TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
     out.T1,
     out.Whole,
     out.Points);
+  out.Positions.clear();
+  for (const SurfacePoint& p : out.Points)
+  {
+    out.Positions.push_back(solver.GetMesh().Evaluate(p.Triangle, p.U, p.V));
+  }
+  return status;
 }
 
 /// Appends `next` to `into` when both are pieces of one curve walked the same way and `next`
@@ -184,6 +190,7 @@ bool Join(ControlSubCurve& into, ControlSubCurve& next)
     std::abs(junction - std::round(junction)) > SameParameter)
   {
     into.Points.pop_back();
+    into.Positions.pop_back();
   }
   if (!into.Reversed)
   {
@@ -194,6 +201,7 @@ bool Join(ControlSubCurve& into, ControlSubCurve& next)
     into.T0 = next.T0 + (into.T0 - next.T1);
   }
   into.Points.insert(into.Points.end(), next.Points.begin() + 1, next.Points.end());
+  into.Positions.insert(into.Positions.end(), next.Positions.begin() + 1, next.Positions.end());
   return true;
 }
 
@@ -264,6 +272,7 @@ void AssembleBoundaryLoops(const std::function<const ControlSubCurve*(int)>& pat
       if (sub.Reversed)
       {
         std::reverse(sub.Points.begin(), sub.Points.end());
+        std::reverse(sub.Positions.begin(), sub.Positions.end());
       }
       // Patches also end where an open curve or a curve of no consequence crosses: pieces of
       // one curve that follow each other are one sub-curve.
@@ -288,6 +297,7 @@ void AssembleBoundaryLoops(const std::function<const ControlSubCurve*(int)>& pat
       {
         only.Whole = true;
         only.Points.pop_back();
+        only.Positions.pop_back();
       }
     }
   }

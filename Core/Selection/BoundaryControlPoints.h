@@ -53,6 +53,7 @@ struct ControlSubCurve
   /// Control points in walking order: the user's own surface points where they are the input's
   /// control points, the arrangement's where the sub-curve starts or ends at an intersection.
   std::vector<SurfacePoint> Points;
+  std::vector<Vec3> Positions; ///< the 3D point of each of Points
   // Of the source curve, so that pieces can be joined without it.
   int Segments = 0;         ///< its number of segments (legs, or cubic segments)
   bool CurveClosed = false; ///< whether it is closed

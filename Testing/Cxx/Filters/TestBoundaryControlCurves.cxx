@@ -10,12 +10,18 @@
 #include "ClipperOracle.h"
 #include "FilterTestUtils.h"
 #include "vtkBoolSurf.h"
+#include "vtkBoolSurfArrangement.h"
+#include "vtkBoolSurfBSC.h"
+#include "vtkBoolSurfBoolean.h"
+#include "vtkBoolSurfLabeling.h"
 #include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkCellArrayIterator.h>
+#include <vtkDoubleArray.h>
 #include <vtkLine.h>
 #include <vtkMath.h>
 #include <vtkPLYReader.h>
+#include <vtkPointData.h>
 
 #include <gtest/gtest.h>
 
@@ -631,4 +637,102 @@ TEST(BoundaryControlCurves, RetracedOnASharedScan)
   std::ostringstream ratio;
   ratio << std::scientific << d / diagonal;
   RecordProperty("HausdorffOverDiagonal", ratio.str());
+}
+
+namespace
+{
+/// Cells of `a` and `b` hold the same points in the same order (to 1e-12), cell by cell.
+void ExpectSameCurves(vtkPolyData* a, vtkPolyData* b)
+{
+  ASSERT_EQ(a->GetNumberOfCells(), b->GetNumberOfCells());
+  auto ia = vtk::TakeSmartPointer(a->GetLines()->NewIterator());
+  auto ib = vtk::TakeSmartPointer(b->GetLines()->NewIterator());
+  for (ia->GoToFirstCell(), ib->GoToFirstCell(); !ia->IsDoneWithTraversal();
+       ia->GoToNextCell(), ib->GoToNextCell())
+  {
+    vtkIdType na, nb;
+    const vtkIdType *pa, *pb;
+    ia->GetCurrentCell(na, pa);
+    ib->GetCurrentCell(nb, pb);
+    ASSERT_EQ(na, nb);
+    for (vtkIdType i = 0; i < na; ++i)
+    {
+      EXPECT_LT(vtkMath::Distance2BetweenPoints(a->GetPoint(pa[i]), b->GetPoint(pb[i])), 1e-24);
+    }
+  }
+}
+} // namespace
+
+TEST(BoundaryControlCurves, StageFiltersGiveTheOneStepAnswer)
+{
+  // Trace -> Arrangement -> Label -> Surface Boolean (and Boundary Sampled Curves) give the
+  // control-point outputs of the one-step filter, piece for piece.
+  vtkSmartPointer<vtkPolyData> mesh =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(24, 1.0, 0.3, 9));
+  std::mt19937 rng(12);
+  for (int trial = 0; trial < 4; ++trial)
+  {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    auto curves = testutils::ToCurves(
+      { RandomPolygon(rng, 0), RandomPolygon(rng, 1), RandomPolygon(rng, 2, false) });
+    vtkNew<vtkBoolSurfTraceCurves> trace;
+    trace->SetInputData(0, mesh);
+    trace->SetInputData(1, curves);
+    vtkNew<vtkBoolSurfArrangement> arrangement;
+    arrangement->SetInputData(0, mesh);
+    arrangement->SetInputConnection(1, trace->GetOutputPort());
+    vtkNew<vtkBoolSurfLabeling> labeling;
+    labeling->SetInputConnection(arrangement->GetOutputPort(0));
+    vtkNew<vtkBoolSurfBoolean> boolean;
+    boolean->SetInputConnection(labeling->GetOutputPort());
+    boolean->SetOperation(trial);
+    boolean->SetShapeA(0);
+    boolean->SetShapeB(1);
+    vtkNew<vtkBoolSurf> oneStep;
+    oneStep->SetInputData(0, mesh);
+    oneStep->SetInputData(1, curves);
+    oneStep->SetOperation(trial);
+    ASSERT_EQ(testutils::ErrorsOf(boolean), "");
+    ASSERT_EQ(testutils::ErrorsOf(oneStep), "");
+    ASSERT_GT(oneStep->GetBoundaryControlCurvesOutput()->GetNumberOfCells(), 0);
+    ExpectSameCurves(
+      boolean->GetBoundaryControlCurvesOutput(), oneStep->GetBoundaryControlCurvesOutput());
+    ExpectSameCurves(boolean->GetClippedCurvesOutput(), oneStep->GetClippedCurvesOutput());
+  }
+
+  // BSC: one sample inside the bottom edge of a square, pointing into it, selects the square.
+  testutils::ControlPolygon square, other;
+  square.ShapeId = 0;
+  square.Points = { { 0.2, 0.2, 0 }, { 0.6, 0.2, 0 }, { 0.6, 0.6, 0 }, { 0.2, 0.6, 0 } };
+  other.ShapeId = 1;
+  other.Points = { { 0.4, 0.4, 0 }, { 0.8, 0.4, 0 }, { 0.8, 0.8, 0 }, { 0.4, 0.8, 0 } };
+  auto curves = testutils::ToCurves({ square, other });
+  vtkNew<vtkPolyData> samples;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0.3, 0.2, 0);
+  vtkNew<vtkDoubleArray> direction;
+  direction->SetName("Direction");
+  direction->SetNumberOfComponents(3);
+  direction->InsertNextTuple3(0, 1, 0);
+  samples->SetPoints(points);
+  samples->GetPointData()->AddArray(direction);
+  vtkNew<vtkBoolSurfTraceCurves> trace;
+  trace->SetInputData(0, mesh);
+  trace->SetInputData(1, curves);
+  vtkNew<vtkBoolSurfArrangement> arrangement;
+  arrangement->SetInputData(0, mesh);
+  arrangement->SetInputConnection(1, trace->GetOutputPort());
+  vtkNew<vtkBoolSurfBSC> bsc;
+  bsc->SetInputConnection(0, arrangement->GetOutputPort(0));
+  bsc->SetInputData(1, samples);
+  vtkNew<vtkBoolSurf> oneStep;
+  oneStep->SetInputData(0, mesh);
+  oneStep->SetInputData(1, curves);
+  oneStep->SetInputData(2, samples);
+  oneStep->SetSelectionToBSC();
+  ASSERT_EQ(testutils::ErrorsOf(bsc), "");
+  ASSERT_EQ(testutils::ErrorsOf(oneStep), "");
+  ASSERT_GT(bsc->GetBoundaryControlCurvesOutput()->GetNumberOfCells(), 0);
+  ExpectSameCurves(
+    bsc->GetBoundaryControlCurvesOutput(), oneStep->GetBoundaryControlCurvesOutput());
 }
