@@ -25,6 +25,8 @@ packages=(
   # CGAL (header-only) and its number types: the exact polyhedral shortest-path oracle
   # (Surface_mesh_shortest_path) of the geodesic tests and benchmark; never in the product
   libcgal-dev libgmp-dev libmpfr-dev
+  # shapely (GEOS): the exact oracle of the clipping test (length of line ∩ polygon)
+  python3-shapely
   # headless rendering: Debian's ParaView renders only through X
   xvfb xauth
 )
