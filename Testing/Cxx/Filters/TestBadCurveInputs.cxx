@@ -158,6 +158,24 @@ TEST(BadCurveInputs, FailedStageUpdatesLeaveEmptyOutputs)
   EXPECT_NE(ErrorsOf(boolean).find("position"), std::string::npos);
   EXPECT_EQ(boolean->GetOutput(0)->GetNumberOfCells(), 0);
   EXPECT_EQ(boolean->GetOutput(1)->GetNumberOfCells(), 0);
+  EXPECT_EQ(boolean->GetOutput(2)->GetNumberOfCells(), 0);
+  EXPECT_EQ(boolean->GetOutput(3)->GetNumberOfCells(), 0);
+
+  // The one-step filter too, all four outputs.
+  vtkNew<vtkBoolSurf> one;
+  one->SetInputData(0, s.Mesh);
+  one->SetInputData(1, s.Curves);
+  one->SetOperationToExpression();
+  one->SetExpression("S0");
+  one->Update();
+  ASSERT_GT(one->GetOutput(0)->GetNumberOfCells(), 0);
+  ASSERT_GT(one->GetOutput(2)->GetNumberOfCells(), 0);
+  one->SetExpression("S0 &");
+  EXPECT_NE(ErrorsOf(one).find("position"), std::string::npos);
+  for (int port = 0; port < 4; ++port)
+  {
+    EXPECT_EQ(one->GetOutput(port)->GetNumberOfCells(), 0) << "port " << port;
+  }
 
   // Bad curves: tracing fails, and every stage below it ends empty.
   boolean->SetExpression("S0");
