@@ -2,6 +2,7 @@
 
 #include "Mesh/ObjCheck.h"
 #include "Mesh/PlyReader.h"
+#include "Mesh/SurfacePoint.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -882,14 +883,7 @@ void ReadSurfaceScene(const json& scene,
       throw SceneError(where + ".uv = " + Brief(uv) +
         " is outside the triangle (needs u >= 0, v >= 0, u + v <= 1)");
     }
-    u = std::max(u, 0.0);
-    v = std::max(v, 0.0);
-    if (u + v > 1)
-    {
-      const double s = u + v;
-      u /= s;
-      v /= s;
-    }
+    boolsurf::ClampBarycentric(u, v);
     vtkIdType n;
     const vtkIdType* ids;
     triangles->GetCellAtId(face, n, ids);

@@ -238,14 +238,7 @@ SurfacePoint SubdivisionMap::Map(const SurfacePoint& p) const
     }
   }
   // Rounding may leave a weight a few ulps below zero or the pair a few ulps above one.
-  u = std::max(u, 0.0);
-  v = std::max(v, 0.0);
-  if (u + v > 1)
-  {
-    const double s = u + v;
-    u /= s;
-    v /= s;
-  }
+  ClampBarycentric(u, v);
   return { child, u, v };
 }
 

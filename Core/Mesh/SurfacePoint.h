@@ -26,6 +26,20 @@ struct SurfacePoint
   double U = 0, V = 0;
 };
 
+/// (u, v) moved into the triangle: negative weights to 0, then scaled so u + v <= 1. For values a
+/// rounding error outside it (callers decide how far outside is an error).
+inline void ClampBarycentric(double& u, double& v)
+{
+  u = u > 0 ? u : 0.0;
+  v = v > 0 ? v : 0.0;
+  if (u + v > 1)
+  {
+    const double s = u + v;
+    u /= s;
+    v /= s;
+  }
+}
+
 enum class PointLocation : unsigned char
 {
   Face,   ///< strictly inside Triangle: Id = triangle, (U, V)

@@ -17,16 +17,7 @@ using testutils::ToClipper;
 
 testutils::ControlPolygon RandomPolygon(std::mt19937& rng, int shape)
 {
-  std::uniform_int_distribution<int> count(3, 7);
-  std::uniform_int_distribution<int> grid(205, 3891); // [0.05, 0.95] in 1/4096 steps
-  testutils::ControlPolygon p;
-  p.ShapeId = shape;
-  const int n = count(rng);
-  for (int i = 0; i < n; ++i)
-  {
-    p.Points.push_back({ grid(rng) / 4096.0, grid(rng) / 4096.0, 0.0 });
-  }
-  return p;
+  return testutils::RandomGridPolygon(rng, shape);
 }
 } // namespace
 

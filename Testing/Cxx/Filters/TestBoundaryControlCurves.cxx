@@ -39,17 +39,7 @@ using Point2 = std::array<double, 2>;
 
 ControlPolygon RandomPolygon(std::mt19937& rng, int shape, bool closed = true)
 {
-  std::uniform_int_distribution<int> count(3, 7);
-  std::uniform_int_distribution<int> grid(205, 3891); // [0.05, 0.95] in 1/4096 steps
-  ControlPolygon p;
-  p.ShapeId = shape;
-  p.Closed = closed;
-  const int n = count(rng);
-  for (int i = 0; i < n; ++i)
-  {
-    p.Points.push_back({ grid(rng) / 4096.0, grid(rng) / 4096.0, 0.0 });
-  }
-  return p;
+  return testutils::RandomGridPolygon(rng, shape, closed);
 }
 
 /// Points of each cell of `pd`, grouped by the cell data `group`, without repeats (1e-9).
@@ -148,9 +138,10 @@ std::vector<std::vector<Point2>> MergeTouching(std::vector<std::vector<Point2>> 
   return sets;
 }
 
-double PolylineLength(vtkPolyData* pd)
+/// Calls visit(a, b) for every segment of the lines of `pd`.
+template <class Visit>
+void ForEachSegment(vtkPolyData* pd, Visit visit)
 {
-  double length = 0;
   auto it = vtk::TakeSmartPointer(pd->GetLines()->NewIterator());
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
   {
@@ -162,9 +153,17 @@ double PolylineLength(vtkPolyData* pd)
       double a[3], b[3];
       pd->GetPoint(ids[i], a);
       pd->GetPoint(ids[i + 1], b);
-      length += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+      visit(a, b);
     }
   }
+}
+
+double PolylineLength(vtkPolyData* pd)
+{
+  double length = 0;
+  ForEachSegment(pd,
+    [&](const double a[3], const double b[3])
+    { length += std::sqrt(vtkMath::Distance2BetweenPoints(a, b)); });
   return length;
 }
 
@@ -172,20 +171,12 @@ double PolylineLength(vtkPolyData* pd)
 double DistanceToLines(vtkPolyData* pd, const double x[3])
 {
   double best = VTK_DOUBLE_MAX;
-  auto it = vtk::TakeSmartPointer(pd->GetLines()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    for (vtkIdType i = 0; i + 1 < n; ++i)
+  ForEachSegment(pd,
+    [&](const double a[3], const double b[3])
     {
-      double a[3], b[3], t, closest[3];
-      pd->GetPoint(ids[i], a);
-      pd->GetPoint(ids[i + 1], b);
+      double t, closest[3];
       best = std::min(best, std::sqrt(vtkLine::DistanceToLine(x, a, b, t, closest)));
-    }
-  }
+    });
   return best;
 }
 
