@@ -146,9 +146,15 @@ TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
   out.Whole = source.Closed && count == n + 1;
   out.T0 = ArrangedPointParameter(arrangement, sources, c, first);
   out.T1 = ArrangedPointParameter(arrangement, sources, c, last);
-  if (source.Closed && (out.Whole || out.T1 <= out.T0))
+  // A closed curve's piece that passes the curve's start ends on the next turn; a piece too
+  // short for its two parameters to differ stays where it is.
+  if (source.Closed && (out.Whole || out.T1 < out.T0 - SameParameter))
   {
     out.T1 += NumberOfSegments(source);
+  }
+  else if (out.T1 < out.T0)
+  {
+    out.T1 = out.T0;
   }
   TraceStatus status = SubCurve(solver,
     arrangement,
