@@ -1,6 +1,6 @@
 """pvbatch under Xvfb: the examples a new user runs first (Examples/boolean_genus2.py,
-Examples/variadic_xor.py and Examples/bsc_flower.py) write a readable .vtp region and a
-non-trivial .png."""
+Examples/variadic_xor.py, Examples/bsc_flower.py and Examples/svg_on_bunny.py) write a
+readable .vtp region and a non-trivial .png."""
 import os
 import shutil
 import subprocess
@@ -17,9 +17,13 @@ expected = {
     "boolean_genus2.py": ("genus2_boolean", 0.03, 0.08),  # (S0 ^ S1) | band: 0.0516
     "variadic_xor.py": ("bunny_xor", 3.0, 10.0),  # odd coverage of six discs: 6.23
     "bsc_flower.py": ("bsc_flower", 8.3, 9.5),  # BSC: half the torus (7.89) + 3 petals: 8.88
+    # Data/star.svg (a star with a hole) mapped on the bunny, minus a disc: 1.152
+    "svg_on_bunny.py": ("svg_on_bunny", 0.9, 1.4),
 }
+extra = {"svg_on_bunny.py": ["--svg", os.path.join(source_dir, "Data", "star.svg")]}
 for script, (name, low, high) in expected.items():
-    subprocess.check_call([pvbatch, os.path.join(source_dir, "Examples", script), "--output", out])
+    subprocess.check_call([pvbatch, os.path.join(source_dir, "Examples", script), "--output", out]
+                          + extra.get(script, []))
     vtp, png = os.path.join(out, name + ".vtp"), os.path.join(out, name + ".png")
     reader = XMLPolyDataReader(FileName=[vtp])
     reader.UpdatePipeline()

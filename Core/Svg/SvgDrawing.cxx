@@ -1,0 +1,344 @@
+// libxml2's declarations first: svgpp's libxml2 adapter uses them without including them.
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+
+#include "Svg/SvgDrawing.h"
+
+#include <svgpp/policy/xml/libxml2.hpp>
+#include <svgpp/svgpp.hpp>
+
+#include <boost/mpl/set.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <set>
+#include <sstream>
+
+namespace boolsurf
+{
+namespace
+{
+
+/// x' = a x + c y + e, y' = b x + d y + f, as (a, b, c, d, e, f) like SVG's matrix().
+using Matrix = std::array<double, 6>;
+
+Matrix Multiply(const Matrix& m, const Matrix& n)
+{
+  return { m[0] * n[0] + m[2] * n[1],
+    m[1] * n[0] + m[3] * n[1],
+    m[0] * n[2] + m[2] * n[3],
+    m[1] * n[2] + m[3] * n[3],
+    m[0] * n[4] + m[2] * n[5] + m[4],
+    m[1] * n[4] + m[3] * n[5] + m[5] };
+}
+
+Vec2 Apply(const Matrix& m, double x, double y)
+{
+  return { m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5] };
+}
+
+/// Receives svgpp's events for the whole document (one context: element state on stacks).
+class Collector
+{
+public:
+  explicit Collector(SvgDrawing& out)
+    : Out(out)
+  {
+  }
+
+  void on_enter_element(svgpp::tag::element::any)
+  {
+    this->Transforms.push_back(this->Transforms.back());
+    this->EvenOdd.push_back(this->EvenOdd.back());
+    ++this->Elements;
+  }
+  void on_exit_element()
+  {
+    this->Transforms.pop_back();
+    this->EvenOdd.pop_back();
+  }
+  void transform_matrix(const boost::array<double, 6>& m)
+  {
+    this->Transforms.back() =
+      Multiply(this->Transforms.back(), { m[0], m[1], m[2], m[3], m[4], m[5] });
+  }
+  void set(svgpp::tag::attribute::fill_rule, svgpp::tag::value::nonzero)
+  {
+    this->EvenOdd.back() = false;
+  }
+  void set(svgpp::tag::attribute::fill_rule, svgpp::tag::value::evenodd)
+  {
+    this->EvenOdd.back() = true;
+  }
+  template <class Value>
+  void set(svgpp::tag::attribute::fill_rule, Value)
+  {
+  }
+
+  void path_move_to(double x, double y, svgpp::tag::coordinate::absolute)
+  {
+    this->EndSubpath(false);
+    this->Current.Points = { this->Map(x, y) };
+  }
+  void path_line_to(double x, double y, svgpp::tag::coordinate::absolute)
+  {
+    const Vec2 a = this->Current.Points.back(), b = this->Map(x, y);
+    this->Current.Points.push_back(a + (1.0 / 3.0) * (b - a));
+    this->Current.Points.push_back(a + (2.0 / 3.0) * (b - a));
+    this->Current.Points.push_back(b);
+  }
+  void path_cubic_bezier_to(double x1,
+    double y1,
+    double x2,
+    double y2,
+    double x,
+    double y,
+    svgpp::tag::coordinate::absolute)
+  {
+    this->Current.Points.push_back(this->Map(x1, y1));
+    this->Current.Points.push_back(this->Map(x2, y2));
+    this->Current.Points.push_back(this->Map(x, y));
+  }
+  void path_close_subpath() { this->EndSubpath(true); }
+  void path_exit()
+  {
+    this->EndSubpath(false);
+    if (!this->Path.Subpaths.empty())
+    {
+      this->Path.EvenOdd = this->EvenOdd.back();
+      this->Path.Element = static_cast<int>(this->Out.Paths.size());
+      this->Out.Paths.push_back(std::move(this->Path));
+    }
+    this->Path = SvgPath();
+  }
+
+  /// Names svgpp did not know (attributes, CSS properties), each once.
+  std::set<std::string> Ignored;
+
+private:
+  Vec2 Map(double x, double y) const { return Apply(this->Transforms.back(), x, y); }
+
+  void EndSubpath(bool close)
+  {
+    std::vector<Vec2>& p = this->Current.Points;
+    if (p.size() >= 4)
+    {
+      if (close)
+      {
+        // Back to the start by a straight piece if not there, then the start is not repeated.
+        const Vec2 a = p.back(), b = p.front();
+        if (a.x != b.x || a.y != b.y)
+        {
+          this->path_line_to_mapped(b);
+        }
+        p.pop_back();
+        this->Current.Closed = true;
+      }
+      this->Path.Subpaths.push_back(this->Current);
+    }
+    const Vec2 start = p.empty() ? Vec2{} : p.front();
+    this->Current = SvgSubpath();
+    if (close)
+    {
+      this->Current.Points = { start }; // a path may go on from where it closed
+    }
+  }
+  void path_line_to_mapped(Vec2 b)
+  {
+    const Vec2 a = this->Current.Points.back();
+    this->Current.Points.push_back(a + (1.0 / 3.0) * (b - a));
+    this->Current.Points.push_back(a + (2.0 / 3.0) * (b - a));
+    this->Current.Points.push_back(b);
+  }
+
+  SvgDrawing& Out;
+  std::vector<Matrix> Transforms{ Matrix{ 1, 0, 0, 1, 0, 0 } };
+  std::vector<char> EvenOdd{ 0 };
+  int Elements = 0;
+  SvgPath Path;
+  SvgSubpath Current;
+};
+
+template <class Name>
+std::string Text(const Name& name)
+{
+  return std::string(boost::begin(name), boost::end(name));
+}
+
+/// svgpp's errors, except that attributes and CSS properties it does not know (editors write
+/// data-name, serif:id, ...) are noted and skipped.
+struct LenientErrors : svgpp::policy::error::raise_exception<Collector>
+{
+  template <class XMLAttribute, class AttributeName>
+  static bool unknown_attribute(Collector const& c,
+    XMLAttribute const&,
+    AttributeName const& name,
+    BOOST_SCOPED_ENUM(svgpp::detail::namespace_id),
+    svgpp::tag::source::attribute,
+    typename boost::enable_if<typename svgpp::detail::is_char_range<AttributeName>::type>::type* =
+      nullptr)
+  {
+    const_cast<Collector&>(c).Ignored.insert("attribute " + Text(name));
+    return true;
+  }
+  template <class XMLAttribute, class AttributeName>
+  static bool unknown_attribute(Collector const&,
+    XMLAttribute const&,
+    AttributeName const&,
+    BOOST_SCOPED_ENUM(svgpp::detail::namespace_id),
+    svgpp::tag::source::attribute,
+    typename boost::disable_if<typename svgpp::detail::is_char_range<AttributeName>::type>::type* =
+      nullptr)
+  {
+    return true;
+  }
+  template <class XMLAttribute, class AttributeName>
+  static bool unknown_attribute(Collector const& c,
+    XMLAttribute const&,
+    AttributeName const& name,
+    svgpp::tag::source::css,
+    typename boost::enable_if<typename svgpp::detail::is_char_range<AttributeName>::type>::type* =
+      nullptr)
+  {
+    const_cast<Collector&>(c).Ignored.insert("CSS property " + Text(name));
+    return true;
+  }
+  template <class XMLAttribute, class AttributeName>
+  static bool unknown_attribute(Collector const&,
+    XMLAttribute const&,
+    AttributeName const&,
+    svgpp::tag::source::css,
+    typename boost::disable_if<typename svgpp::detail::is_char_range<AttributeName>::type>::type* =
+      nullptr)
+  {
+    return true;
+  }
+};
+
+using ProcessedElements = boost::mpl::set<svgpp::tag::element::svg,
+  svgpp::tag::element::g,
+  svgpp::tag::element::path,
+  svgpp::tag::element::rect,
+  svgpp::tag::element::circle,
+  svgpp::tag::element::ellipse,
+  svgpp::tag::element::line,
+  svgpp::tag::element::polyline,
+  svgpp::tag::element::polygon>::type;
+
+using ProcessedAttributes =
+  boost::mpl::insert<boost::mpl::insert<svgpp::traits::shapes_attributes_by_element,
+                       svgpp::tag::attribute::transform>::type,
+    svgpp::tag::attribute::fill_rule>::type;
+
+bool Traverse(xmlDocPtr doc, SvgDrawing& out, std::string& error)
+{
+  xmlNodePtr root = doc ? xmlDocGetRootElement(doc) : nullptr;
+  if (!root)
+  {
+    error = "not an XML document";
+    return false;
+  }
+  Collector collector(out);
+  try
+  {
+    svgpp::document_traversal<svgpp::processed_elements<ProcessedElements>,
+      svgpp::processed_attributes<ProcessedAttributes>,
+      svgpp::path_policy<svgpp::policy::path::minimal>,
+      svgpp::basic_shapes_policy<svgpp::policy::basic_shapes::all_to_path>,
+      svgpp::error_policy<LenientErrors>>::load_document(root, collector);
+  }
+  catch (const std::exception& e)
+  {
+    error = std::string("SVG error: ") + e.what();
+    return false;
+  }
+  for (const std::string& name : collector.Ignored)
+  {
+    out.Warnings.push_back("ignored unknown " + name);
+  }
+  bool first = true;
+  for (const SvgPath& path : out.Paths)
+  {
+    for (const SvgSubpath& s : path.Subpaths)
+    {
+      for (const Vec2& p : s.Points)
+      {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        {
+          error = "shape element " + std::to_string(path.Element) + " has a non-finite point";
+          return false;
+        }
+        out.Min[0] = first ? p.x : std::min(out.Min[0], p.x);
+        out.Min[1] = first ? p.y : std::min(out.Min[1], p.y);
+        out.Max[0] = first ? p.x : std::max(out.Max[0], p.x);
+        out.Max[1] = first ? p.y : std::max(out.Max[1], p.y);
+        first = false;
+      }
+    }
+  }
+  if (out.Paths.empty())
+  {
+    error = "the drawing has no path or shape with at least one segment";
+    return false;
+  }
+  return true;
+}
+
+struct DocumentDeleter
+{
+  void operator()(xmlDoc* doc) const { xmlFreeDoc(doc); }
+};
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool ParseSvg(const std::string& text, SvgDrawing& out, std::string& error)
+{
+  out = SvgDrawing();
+  std::unique_ptr<xmlDoc, DocumentDeleter> doc(xmlReadMemory(text.data(),
+    static_cast<int>(text.size()),
+    "drawing.svg",
+    nullptr,
+    XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING));
+  if (!doc)
+  {
+    const xmlError* e = xmlGetLastError();
+    error = std::string("malformed XML") +
+      (e && e->message ? std::string(" (line ") + std::to_string(e->line) + ": " + e->message : "");
+    while (!error.empty() && (error.back() == '\n' || error.back() == ' '))
+    {
+      error.pop_back();
+    }
+    if (e && e->message)
+    {
+      error += ")";
+    }
+    return false;
+  }
+  return Traverse(doc.get(), out, error);
+}
+
+//------------------------------------------------------------------------------
+bool LoadSvg(const std::string& fileName, SvgDrawing& out, std::string& error)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  if (!in)
+  {
+    out = SvgDrawing();
+    error = "cannot open " + fileName;
+    return false;
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!ParseSvg(text.str(), out, error))
+  {
+    error = fileName + ": " + error;
+    return false;
+  }
+  return true;
+}
+
+} // namespace boolsurf

@@ -1,0 +1,244 @@
+#include "vtkBoolSurfSVGMapper.h"
+
+#include "Svg/SvgSurfaceMap.h"
+#include "vtkBoolSurfSurfaceCache.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkGenericCell.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStaticCellLocator.h"
+#include "vtkStringArray.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkBoolSurfSVGMapper);
+
+struct vtkBoolSurfSVGMapper::Internals
+{
+  boolsurf::vtkSurfaceCache Surface;
+};
+
+//------------------------------------------------------------------------------
+vtkBoolSurfSVGMapper::vtkBoolSurfSVGMapper()
+  : Internal(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkBoolSurfSVGMapper::~vtkBoolSurfSVGMapper() = default;
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfSVGMapper::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize(); // a failed update leaves an empty output
+  if (this->FileName.empty())
+  {
+    vtkErrorMacro("No FileName: set the SVG file to map.");
+    return 0;
+  }
+  std::vector<std::string> warnings;
+  std::string error;
+  const boolsurf::vtkSurfaceInput* surface =
+    this->Internal->Surface.GetUsable(input, warnings, error);
+  if (!surface)
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  const boolsurf::TriangleMesh& mesh = *surface->Mesh;
+  boolsurf::SvgDrawing drawing;
+  if (!boolsurf::LoadSvg(this->FileName, drawing, error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  this->UpdateProgress(0.2);
+
+  boolsurf::SvgMapOptions options;
+  if (this->CenterTriangleId >= 0)
+  {
+    if (this->CenterTriangleId >= mesh.GetNumberOfTriangles())
+    {
+      vtkErrorMacro("CenterTriangleId " << this->CenterTriangleId << " is not a triangle of the "
+                                        << mesh.GetNumberOfTriangles() << "-triangle surface");
+      return 0;
+    }
+    double u = this->CenterBarycentric[0], v = this->CenterBarycentric[1];
+    if (!std::isfinite(u) || !std::isfinite(v) || u < -1e-6 || v < -1e-6 || u + v > 1 + 1e-6)
+    {
+      vtkErrorMacro("CenterBarycentric (" << u << ", " << v << ") is outside the triangle");
+      return 0;
+    }
+    boolsurf::ClampBarycentric(u, v);
+    options.Center = { static_cast<int>(this->CenterTriangleId), u, v };
+  }
+  else
+  {
+    double closest[3], dist2;
+    vtkIdType cell = -1;
+    int sub;
+    vtkNew<vtkGenericCell> scratch;
+    this->Internal->Surface.GetLocator()->FindClosestPoint(
+      this->Center, closest, scratch, cell, sub, dist2);
+    if (cell < 0)
+    {
+      vtkErrorMacro("no surface point near Center");
+      return 0;
+    }
+    const int t = static_cast<int>(cell);
+    const boolsurf::Vec3 a = mesh.GetCornerPosition(t, 0);
+    const boolsurf::Vec3 e1 = mesh.GetCornerPosition(t, 1) - a;
+    const boolsurf::Vec3 e2 = mesh.GetCornerPosition(t, 2) - a;
+    const boolsurf::Vec3 d = boolsurf::Vec3{ closest[0], closest[1], closest[2] } - a;
+    const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
+    const double b1 = Dot(d, e1), b2 = Dot(d, e2), det = d11 * d22 - d12 * d12;
+    double u = det != 0 ? (d22 * b1 - d12 * b2) / det : 0,
+           v = det != 0 ? (d11 * b2 - d12 * b1) / det : 0;
+    boolsurf::ClampBarycentric(u, v);
+    options.Center = { t, u, v };
+  }
+  // Size: the drawing's farthest bounding-box corner at Radius from the center.
+  const double halfW = 0.5 * (drawing.Max[0] - drawing.Min[0]);
+  const double halfH = 0.5 * (drawing.Max[1] - drawing.Min[1]);
+  const double extent = std::sqrt(halfW * halfW + halfH * halfH);
+  if (this->Scale > 0)
+  {
+    options.Scale = this->Scale;
+  }
+  else
+  {
+    double radius = this->Radius;
+    if (radius <= 0)
+    {
+      double b[6];
+      input->GetBounds(b);
+      radius = 0.1 *
+        std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+          (b[5] - b[4]) * (b[5] - b[4]));
+    }
+    options.Scale = extent > 0 ? radius / extent : 1.0;
+  }
+  options.Rotation = this->Rotation;
+
+  std::vector<boolsurf::MappedSvgCurve> curves;
+  if (!boolsurf::MapSvgOntoSurface(mesh, drawing, options, curves, drawing.Warnings, error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  this->UpdateProgress(0.9);
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkIdTypeArray> triangleId;
+  triangleId->SetName("TriangleId");
+  vtkNew<vtkDoubleArray> barycentric;
+  barycentric->SetName("Barycentric");
+  barycentric->SetNumberOfComponents(2);
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIntArray> shape, type, closed;
+  shape->SetName("ShapeId");
+  type->SetName("CurveType");
+  closed->SetName("Closed");
+  std::vector<int> evenOdd;
+  bool allEvenOdd = true;
+  for (const boolsurf::MappedSvgCurve& c : curves)
+  {
+    const vtkIdType first = points->GetNumberOfPoints();
+    for (const boolsurf::SurfacePoint& p : c.Points)
+    {
+      const boolsurf::Vec3 x = mesh.Evaluate(p.Triangle, p.U, p.V);
+      points->InsertNextPoint(x.x, x.y, x.z);
+      triangleId->InsertNextValue(p.Triangle);
+      barycentric->InsertNextTuple2(p.U, p.V);
+    }
+    const vtkIdType n = static_cast<vtkIdType>(c.Points.size());
+    lines->InsertNextCell(n + (c.Closed ? 1 : 0));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      lines->InsertCellPoint(first + i);
+    }
+    if (c.Closed)
+    {
+      lines->InsertCellPoint(first);
+    }
+    shape->InsertNextValue(this->ShapeIdOffset + c.Shape);
+    type->InsertNextValue(1);
+    closed->InsertNextValue(c.Closed ? 1 : 0);
+    if (static_cast<int>(evenOdd.size()) <= c.Shape)
+    {
+      evenOdd.resize(c.Shape + 1, 0);
+    }
+    evenOdd[c.Shape] = c.EvenOdd ? 1 : 0;
+    allEvenOdd = allEvenOdd && c.EvenOdd;
+  }
+  output->SetPoints(points);
+  output->SetLines(lines);
+  output->GetPointData()->AddArray(triangleId);
+  output->GetPointData()->AddArray(barycentric);
+  output->GetCellData()->AddArray(shape);
+  output->GetCellData()->AddArray(type);
+  output->GetCellData()->AddArray(closed);
+  vtkNew<vtkStringArray> rule;
+  rule->SetName("SuggestedFillRule");
+  rule->InsertNextValue(allEvenOdd ? "EvenOdd" : "NonZero");
+  output->GetFieldData()->AddArray(rule);
+  vtkNew<vtkIntArray> perShape;
+  perShape->SetName("ShapeEvenOdd");
+  for (int e : evenOdd)
+  {
+    perShape->InsertNextValue(e);
+  }
+  output->GetFieldData()->AddArray(perShape);
+  warnings.insert(warnings.end(), drawing.Warnings.begin(), drawing.Warnings.end());
+  if (!warnings.empty())
+  {
+    vtkNew<vtkStringArray> notes;
+    notes->SetName("SvgWarnings");
+    for (const std::string& w : warnings)
+    {
+      notes->InsertNextValue(w);
+      vtkWarningMacro(<< this->FileName << ": " << w);
+    }
+    output->GetFieldData()->AddArray(notes);
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfSVGMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << this->FileName << "\n";
+  os << indent << "Center: " << this->Center[0] << " " << this->Center[1] << " " << this->Center[2]
+     << "\n";
+  os << indent << "CenterTriangleId: " << this->CenterTriangleId << "\n";
+  os << indent << "Scale: " << this->Scale << "\n";
+  os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "Rotation: " << this->Rotation << "\n";
+  os << indent << "ShapeIdOffset: " << this->ShapeIdOffset << "\n";
+}
