@@ -51,7 +51,7 @@ curves = [
     (tube_loop(0.22, False), 2),
     (tube_loop(0.30, True), 2),
 ]
-control = curves_source(curves)
+control = curves_source(curves, mesh)
 traced = TraceSurfaceCurves(Surface=mesh, Curves=control)
 arrangement = SurfaceArrangement(Surface=mesh, Curves=traced)
 labels = LabelArrangementCells(Input=arrangement)

@@ -3,7 +3,7 @@
 - load_plugin(): loads the BoolSurf plugin ($BOOLSURF_PLUGIN, else build/ beside Examples/).
 - surface_circle(): control points of a circle drawn on a surface, found by casting rays
   along one axis onto the mesh (the way a user would draw on a view of the surface).
-- curves_source(): a pipeline source holding control polygons with a ShapeId per curve.
+- curves_source(): a Surface Curves source holding control polygons with a ShapeId per curve.
 - sample_source(): a pipeline source holding BSC samples (points with a Direction vector).
 - save_result() / render_result(): the .vtp (inline binary) and the .png with the region colored.
 """
@@ -12,6 +12,7 @@ import os
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager as sm
+from paraview import simple
 from vtkmodules.vtkCommonCore import mutable, vtkIntArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkCellLocator, vtkPolyData
 
@@ -75,25 +76,18 @@ def surface_circle(rays, center, radius, n=24, clockwise=False):
     return points
 
 
-def curves_source(curves):
-    """curves: list of (points, shape_id); each a closed geodesic polygon."""
-    pd = vtkPolyData()
-    pts = vtkPoints()
-    pts.SetDataTypeToDouble()
-    lines = vtkCellArray()
-    shape = vtkIntArray()
-    shape.SetName("ShapeId")
-    for points, shape_id in curves:
-        ids = [pts.InsertNextPoint(p) for p in points]
-        lines.InsertNextCell(len(ids) + 1)
-        for i in ids + ids[:1]:  # first point repeated: a closed curve
-            lines.InsertCellPoint(i)
-        shape.InsertNextValue(shape_id)
-    pd.SetPoints(pts)
-    pd.SetLines(lines)
-    pd.GetCellData().AddArray(shape)
-    source = PVTrivialProducer()
-    source.GetClientSideObject().SetOutput(pd)
+def curves_source(curves, surface):
+    """curves: list of (points, shape_id), each a closed geodesic polygon drawn on the surface
+    proxy `surface`. A Surface Curves source: the points are properties (saved in state files,
+    sent to a pvserver, produced once under MPI), snapped to the surface as exact surface
+    points."""
+    points = [x for pts, _ in curves for p in pts for x in p]
+    # load_plugin() adds the plugin's constructors to the script's namespace, not to this
+    # module's: build the same constructor paraview.simple gives the script.
+    surface_curves = simple._create_func("SurfaceCurves", sm.filters)
+    source = surface_curves(Surface=surface, Points=points,
+                            CurveSizes=[len(pts) for pts, _ in curves],
+                            ShapeIds=[shape for _, shape in curves])
     source.UpdatePipeline()
     return source
 

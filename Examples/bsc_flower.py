@@ -85,7 +85,7 @@ for k in range(1, n, 2):
     p = torus_point(u0 + 0.3, 0.5 * math.pi)
     c = torus_point(u0, 0.5 * math.pi)
     samples.append((p, tuple(c[i] - p[i] for i in range(3))))
-control = curves_source(curves)
+control = curves_source(curves, mesh)
 
 sample_points = sample_source(samples)
 

@@ -53,7 +53,7 @@ radius, shift = 0.12 * size, 0.07 * size
 shift_along_b = extent[b_axis] <= extent[a_axis]  # shift the discs along the shorter side
 offsets = [(0, -shift), (0, shift)] if shift_along_b else [(-shift, 0), (shift, 0)]
 discs = [surface_circle(rays, (center[0] + da, center[1] + db), radius) for da, db in offsets]
-control = curves_source([(discs[0], 0), (discs[1], 1)])
+control = curves_source([(discs[0], 0), (discs[1], 1)], mesh)
 
 traced = TraceSurfaceCurves(Surface=mesh, Curves=control)
 arrangement = SurfaceArrangement(Surface=mesh, Curves=traced)

@@ -42,7 +42,7 @@ shapes = sorted({int(v) for v in sm.Fetch(drawing).GetCellData().GetArray("Shape
                  .GetValueRange()})
 # A disc drawn by hand (projected control points of a geodesic polygon), shape 100.
 disc = curves_source([(surface_circle(rays, (center[0] + 0.12 * size, center[1]),
-                                      0.09 * size, n=24), 100)])
+                                      0.09 * size, n=24), 100)], mesh)
 traced_drawing = TraceSurfaceCurves(Surface=mesh, Curves=drawing)
 both = AppendDatasets(Input=[drawing, disc])
 both = ExtractSurface(Input=both)

@@ -37,7 +37,7 @@ for k in range(args.shapes):
     angle = 2 * math.pi * k / args.shapes
     c = (center[0] + 0.08 * size * math.cos(angle), center[1] + 0.08 * size * math.sin(angle))
     curves.append((surface_circle(rays, c, 0.11 * size, n=32), k))
-control = curves_source(curves)
+control = curves_source(curves, mesh)
 
 # The one-step filter: trace, arrange, label and select in one go.
 xor = BoolSurf(Surface=mesh, Curves=control, Operation="SymmetricDifference", ShapeA=-1,

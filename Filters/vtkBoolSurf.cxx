@@ -1,5 +1,7 @@
 #include "vtkBoolSurf.h"
 
+#include "vtkBoolSurfRankGather.h"
+
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Selection/RegionExtraction.h"
 #include "vtkBoolSurfBSCStage.h"
@@ -143,8 +145,10 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* surfaceInput = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* curvesInput = vtkPolyData::GetData(inputVector[1], 0);
+  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
+  vtkBoolSurfRankGather gather(this, inputVector, 3);
+  vtkPolyData* surfaceInput = gather.Input(0);
+  vtkPolyData* curvesInput = gather.Input(1);
   vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData* boundaryControls = vtkPolyData::GetData(outputVector, 2);
@@ -155,6 +159,10 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   boundary->Initialize();
   boundaryControls->Initialize();
   clipped->Initialize();
+  if (!gather.ComputesHere())
+  {
+    return 1; // other MPI ranks: empty outputs
+  }
 
   // 1. surface (cached)
   std::vector<std::string> warnings;

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfArrangement.h"
 
+#include "vtkBoolSurfRankGather.h"
+
 #include "vtkBoolSurfArrangementOutput.h"
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfHomologyOutput.h"
@@ -49,14 +51,20 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* surfaceInput = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* curvesInput = vtkPolyData::GetData(inputVector[1], 0);
+  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
+  vtkBoolSurfRankGather gather(this, inputVector, 2);
+  vtkPolyData* surfaceInput = gather.Input(0);
+  vtkPolyData* curvesInput = gather.Input(1);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* patches = vtkPolyData::GetData(outputVector, 1);
   // A failed update leaves empty outputs: downstream filters and views never show the last
   // successful result as if it were this one.
   output->Initialize();
   patches->Initialize();
+  if (!gather.ComputesHere())
+  {
+    return 1; // other MPI ranks: empty outputs
+  }
 
   this->UpdateProgress(0.0);
   std::vector<std::string> warnings, problems;
@@ -102,10 +110,11 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
     const boolsurf::Arrangement& arr = this->Internal->Arrangement;
     boolsurf::GeodesicPathSolver& solver = this->Internal->Surface.GetTracer().GetPathSolver();
     std::vector<boolsurf::ControlSubCurve> perPatch(arr.Patches.size());
+    boolsurf::BezierPieces bezier(arr, sources); // each Bezier segment split once per cut
     for (std::size_t p = 0; p < perPatch.size(); ++p)
     {
-      const boolsurf::TraceStatus status =
-        boolsurf::PatchControlCurve(solver, arr, sources, static_cast<int>(p), perPatch[p]);
+      const boolsurf::TraceStatus status = boolsurf::PatchControlCurve(
+        solver, arr, sources, static_cast<int>(p), perPatch[p], &bezier);
       if (!status)
       {
         vtkWarningMacro("patch " << p << " has no control points (" << status.Message << ")");

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfBSC.h"
 
+#include "vtkBoolSurfRankGather.h"
+
 #include "vtkBoolSurfBSCStage.h"
 #include "vtkBoolSurfBooleanStage.h"
 
@@ -29,8 +31,10 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* samples = vtkPolyData::GetData(inputVector[1], 0);
+  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
+  vtkBoolSurfRankGather gather(this, inputVector, 2);
+  vtkPolyData* input = gather.Input(0);
+  vtkPolyData* samples = gather.Input(1);
   vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData* controls = vtkPolyData::GetData(outputVector, 2);
@@ -40,6 +44,10 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
   boundary->Initialize();
   controls->Initialize();
   clipped->Initialize();
+  if (!gather.ComputesHere())
+  {
+    return 1; // other MPI ranks: empty outputs
+  }
   std::string note;
   this->UpdateProgress(0.0);
 

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfBoolean.h"
 
+#include "vtkBoolSurfRankGather.h"
+
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
 
@@ -25,7 +27,9 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
+  vtkBoolSurfRankGather gather(this, inputVector, 1);
+  vtkPolyData* input = gather.Input(0);
   vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData* controls = vtkPolyData::GetData(outputVector, 2);
@@ -35,6 +39,10 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
   boundary->Initialize();
   controls->Initialize();
   clipped->Initialize();
+  if (!gather.ComputesHere())
+  {
+    return 1; // other MPI ranks: empty outputs
+  }
   std::string note;
   this->UpdateProgress(0.0);
 

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfCheckSurface.h"
 
+#include "vtkBoolSurfRankGather.h"
+
 #include "vtkBoolSurfSurfaceAdapter.h"
 
 #include <vtkCellData.h>
@@ -36,8 +38,15 @@ int vtkBoolSurfCheckSurface::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
+  vtkBoolSurfRankGather gather(this, inputVector, 1);
+  vtkPolyData* input = gather.Input(0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize();
+  if (!gather.ComputesHere())
+  {
+    return 1; // other MPI ranks: empty outputs
+  }
 
   this->UpdateProgress(0.0);
   boolsurf::SurfaceCheckOptions options;

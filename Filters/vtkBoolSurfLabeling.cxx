@@ -1,5 +1,7 @@
 #include "vtkBoolSurfLabeling.h"
 
+#include "vtkBoolSurfRankGather.h"
+
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
 
@@ -21,11 +23,17 @@ int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
+  vtkBoolSurfRankGather gather(this, inputVector, 1);
+  vtkPolyData* input = gather.Input(0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* generators = vtkPolyData::GetData(outputVector, 1);
   output->Initialize(); // a failed update leaves an empty output, not the previous one
   generators->Initialize();
+  if (!gather.ComputesHere())
+  {
+    return 1; // other MPI ranks: empty outputs
+  }
   this->UpdateProgress(0.0);
   boolsurf::ArrangementFields fields;
   boolsurf::LabelingResult labels;

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfResolve.h"
 
+#include "vtkBoolSurfRankGather.h"
+
 #include "vtkBoolSurfResolveStage.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
@@ -38,10 +40,16 @@ int vtkBoolSurfResolve::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* surfaceInput = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* curvesInput = vtkPolyData::GetData(inputVector[1], 0);
+  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
+  vtkBoolSurfRankGather gather(this, inputVector, 2);
+  vtkPolyData* surfaceInput = gather.Input(0);
+  vtkPolyData* curvesInput = gather.Input(1);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize(); // a failed update leaves an empty output
+  if (!gather.ComputesHere())
+  {
+    return 1; // other MPI ranks: empty outputs
+  }
   this->UpdateProgress(0.0);
   std::vector<std::string> warnings;
   std::string error;

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSVGMapper.h"
 
+#include "vtkBoolSurfRankGather.h"
+
 #include "Svg/SvgSurfaceMap.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
@@ -51,9 +53,15 @@ int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
+  vtkBoolSurfRankGather gather(this, inputVector, 1);
+  vtkPolyData* input = gather.Input(0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize(); // a failed update leaves an empty output
+  if (!gather.ComputesHere())
+  {
+    return 1; // other MPI ranks: empty outputs
+  }
   if (this->FileName.empty())
   {
     vtkErrorMacro("No FileName: set the SVG file to map.");

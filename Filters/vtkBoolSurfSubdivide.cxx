@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSubdivide.h"
 
+#include "vtkBoolSurfRankGather.h"
+
 #include "Mesh/SubdivisionMap.h"
 
 #include "vtkCallbackCommand.h"
@@ -105,12 +107,18 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* surface = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* curves = vtkPolyData::GetData(inputVector[1], 0);
+  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
+  vtkBoolSurfRankGather gather(this, inputVector, 2);
+  vtkPolyData* surface = gather.Input(0);
+  vtkPolyData* curves = gather.Input(1);
   vtkPolyData* surfaceOut = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* curvesOut = vtkPolyData::GetData(outputVector, 1);
   surfaceOut->Initialize();
   curvesOut->Initialize();
+  if (!gather.ComputesHere())
+  {
+    return 1; // other MPI ranks: empty outputs
+  }
   if (!surface || !curves)
   {
     vtkErrorMacro("Both inputs are needed: the surface (port 0) and the curves (port 1).");

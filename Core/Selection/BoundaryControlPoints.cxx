@@ -36,6 +36,8 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
   double t0,
   double t1,
   bool whole,
+  BezierPieces* pieces,
+  int curve,
   std::vector<SurfacePoint>& points)
 {
   const TriangleMesh& mesh = solver.GetMesh();
@@ -79,7 +81,16 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
     const double a = std::max(t0 - s, 0.0), b = std::min(t1 - s, 1.0);
     std::array<CanonicalPoint, 4> left, right;
     TraceStatus status;
-    if (a > SameParameter)
+    bool found = false;
+    if (pieces && !(status = pieces->Get(solver, curve, seg, a, b, left, found)))
+    {
+      return status;
+    }
+    if (found)
+    {
+      piece = left;
+    }
+    else if (a > SameParameter)
     {
       if (!(status = SplitGeodesicBezier(solver, piece, a, left, right)))
       {
@@ -87,7 +98,7 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
       }
       piece = right;
     }
-    if (b < 1 - SameParameter)
+    if (!found && b < 1 - SameParameter)
     {
       const double local = a > SameParameter ? (b - a) / (1 - a) : b;
       if (!(status = SplitGeodesicBezier(solver, piece, local, left, right)))
@@ -126,12 +137,42 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
 
 /// The sub-curve of curve `c` made of the arranged points from index `first` on, `count` of
 /// them.
+/// The parameter range [t0, t1] on curve `c` of its arranged points from index `first` on,
+/// `count` of them (t1 past the curve's end when a closed curve's piece passes its start).
+void SubCurveRange(const Arrangement& arrangement,
+  const std::vector<CurveSource>& sources,
+  int c,
+  int first,
+  int count,
+  double& t0,
+  double& t1,
+  bool& whole)
+{
+  const CurveSource& source = sources[c];
+  const int n = static_cast<int>(arrangement.CurvePoints[c].size());
+  const int last = (first + count - 1) % n;
+  whole = source.Closed && count == n + 1;
+  t0 = ArrangedPointParameter(arrangement, sources, c, first);
+  t1 = ArrangedPointParameter(arrangement, sources, c, last);
+  // A closed curve's piece that passes the curve's start ends on the next turn; a piece too
+  // short for its two parameters to differ stays where it is.
+  if (source.Closed && (whole || t1 < t0 - SameParameter))
+  {
+    t1 += NumberOfSegments(source);
+  }
+  else if (t1 < t0)
+  {
+    t1 = t0;
+  }
+}
+
 TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   int c,
   int first,
   int count,
+  BezierPieces* pieces,
   ControlSubCurve& out)
 {
   const CurveSource& source = sources[c];
@@ -143,19 +184,7 @@ TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
   out.CurveClosed = source.Closed;
   out.SourceShapeId = source.ShapeId;
   out.SourceCurveId = source.CurveId;
-  out.Whole = source.Closed && count == n + 1;
-  out.T0 = ArrangedPointParameter(arrangement, sources, c, first);
-  out.T1 = ArrangedPointParameter(arrangement, sources, c, last);
-  // A closed curve's piece that passes the curve's start ends on the next turn; a piece too
-  // short for its two parameters to differ stays where it is.
-  if (source.Closed && (out.Whole || out.T1 < out.T0 - SameParameter))
-  {
-    out.T1 += NumberOfSegments(source);
-  }
-  else if (out.T1 < out.T0)
-  {
-    out.T1 = out.T0;
-  }
+  SubCurveRange(arrangement, sources, c, first, count, out.T0, out.T1, out.Whole);
   TraceStatus status = SubCurve(solver,
     arrangement,
     source,
@@ -164,6 +193,8 @@ TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
     out.T0,
     out.T1,
     out.Whole,
+    pieces,
+    c,
     out.Points);
   out.Positions.clear();
   for (const SurfacePoint& p : out.Points)
@@ -234,11 +265,140 @@ double ArrangedPointParameter(const Arrangement& arrangement,
 }
 
 //------------------------------------------------------------------------------
+BezierPieces::BezierPieces(const Arrangement& arrangement, const std::vector<CurveSource>& sources)
+  : Arranged(arrangement)
+  , Sources(sources)
+  , PatchesOfCurve(sources.size())
+  , CurveCut(sources.size(), 0)
+{
+  for (std::size_t p = 0; p < arrangement.Patches.size(); ++p)
+  {
+    const ArrangementPatch& patch = arrangement.Patches[p];
+    if (patch.Curve >= 0 && patch.Curve < static_cast<int>(sources.size()) && patch.FirstIndex >= 0)
+    {
+      this->PatchesOfCurve[patch.Curve].push_back(static_cast<int>(p));
+    }
+  }
+}
+
+TraceStatus BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve)
+{
+  this->CurveCut[curve] = 1;
+  const CurveSource& source = this->Sources[curve];
+  if (source.Type != CurveType::CubicBezier || source.Controls.empty())
+  {
+    return TraceStatus::Success();
+  }
+  const int segments = NumberOfSegments(source);
+  const int controls = static_cast<int>(source.Controls.size());
+  // Every patch end inside a segment (not at its anchors) is a cut of that segment.
+  std::vector<std::vector<double>> cuts(segments);
+  for (int p : this->PatchesOfCurve[curve])
+  {
+    const ArrangementPatch& patch = this->Arranged.Patches[p];
+    double t0, t1;
+    bool whole;
+    SubCurveRange(this->Arranged,
+      this->Sources,
+      curve,
+      patch.FirstIndex,
+      static_cast<int>(patch.Points.size()),
+      t0,
+      t1,
+      whole);
+    for (double t : { t0, t1 })
+    {
+      const double s = std::floor(t + SameParameter);
+      const double local = t - s;
+      if (local > SameParameter && local < 1 - SameParameter)
+      {
+        const int seg = ((static_cast<int>(s) % segments) + segments) % segments;
+        cuts[seg].push_back(local);
+      }
+    }
+  }
+  const TriangleMesh& mesh = solver.GetMesh();
+  for (int seg = 0; seg < segments; ++seg)
+  {
+    std::vector<double>& at = cuts[seg];
+    if (at.empty())
+    {
+      continue;
+    }
+    std::sort(at.begin(), at.end());
+    std::vector<Piece>& pieces = this->Segments[(static_cast<long long>(curve) << 32) | seg];
+    std::array<CanonicalPoint, 4> rest;
+    for (int k = 0; k < 4; ++k)
+    {
+      rest[k] = Canonicalize(mesh, source.Controls[(3 * seg + k) % controls]);
+    }
+    double from = 0;
+    for (double t : at)
+    {
+      if (t - from <= SameParameter)
+      {
+        continue; // the same cut twice (the end of one patch is the start of the next)
+      }
+      std::array<CanonicalPoint, 4> left, right;
+      TraceStatus status = SplitGeodesicBezier(solver, rest, (t - from) / (1 - from), left, right);
+      if (!status)
+      {
+        return status;
+      }
+      pieces.push_back({ from, t, left });
+      rest = right;
+      from = t;
+    }
+    pieces.push_back({ from, 1.0, rest });
+  }
+  return TraceStatus::Success();
+}
+
+TraceStatus BezierPieces::Get(GeodesicPathSolver& solver,
+  int curve,
+  int segment,
+  double a,
+  double b,
+  std::array<CanonicalPoint, 4>& out,
+  bool& found)
+{
+  found = false;
+  if (curve < 0 || curve >= static_cast<int>(this->Sources.size()))
+  {
+    return TraceStatus::Success();
+  }
+  if (!this->CurveCut[curve])
+  {
+    TraceStatus status = this->CutCurve(solver, curve);
+    if (!status)
+    {
+      return status;
+    }
+  }
+  auto it = this->Segments.find((static_cast<long long>(curve) << 32) | segment);
+  if (it == this->Segments.end())
+  {
+    return TraceStatus::Success();
+  }
+  for (const Piece& piece : it->second)
+  {
+    if (std::abs(piece.A - a) <= SameParameter && std::abs(piece.B - b) <= SameParameter)
+    {
+      out = piece.Controls;
+      found = true;
+      break;
+    }
+  }
+  return TraceStatus::Success();
+}
+
+//------------------------------------------------------------------------------
 TraceStatus PatchControlCurve(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   int patch,
-  ControlSubCurve& out)
+  ControlSubCurve& out,
+  BezierPieces* pieces)
 {
   const ArrangementPatch& p = arrangement.Patches[patch];
   out = ControlSubCurve();
@@ -252,6 +412,7 @@ TraceStatus PatchControlCurve(GeodesicPathSolver& solver,
     p.Curve,
     p.FirstIndex,
     static_cast<int>(p.Points.size()),
+    pieces,
     out);
 }
 
@@ -331,8 +492,8 @@ void AssembleClippedPieces(const std::function<const ControlSubCurve*(int)>& pat
     {
       continue;
     }
-    const bool continues = p > 0 && !out.empty() && inside(patches[p - 1]) &&
-      patches[p - 1].Curve == patches[p].Curve;
+    const bool continues =
+      p > 0 && !out.empty() && inside(patches[p - 1]) && patches[p - 1].Curve == patches[p].Curve;
     ControlSubCurve sub = *piece;
     if (continues && Join(out.back(), sub))
     {
@@ -351,6 +512,7 @@ TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
   std::vector<ControlSubCurve>& out)
 {
   // Only the boundary's patches are computed (a Bezier piece costs geodesic splits).
+  BezierPieces bezier(arrangement, sources);
   std::unordered_map<int, ControlSubCurve> pieces;
   for (const BoundaryPolyline& loop : loops)
   {
@@ -358,7 +520,7 @@ TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
     {
       if (pieces.count(p) == 0)
       {
-        TraceStatus status = PatchControlCurve(solver, arrangement, sources, p, pieces[p]);
+        TraceStatus status = PatchControlCurve(solver, arrangement, sources, p, pieces[p], &bezier);
         if (!status)
         {
           return status;
@@ -385,6 +547,7 @@ TraceStatus ClippedControlCurves(GeodesicPathSolver& solver,
   std::vector<ControlSubCurve>& out)
 {
   std::vector<PatchInfo> info(arrangement.Patches.size());
+  BezierPieces bezier(arrangement, sources);
   std::unordered_map<int, ControlSubCurve> pieces;
   for (std::size_t p = 0; p < info.size(); ++p)
   {
@@ -399,7 +562,7 @@ TraceStatus ClippedControlCurves(GeodesicPathSolver& solver,
     if (!patch.Closed && inside)
     {
       TraceStatus status =
-        PatchControlCurve(solver, arrangement, sources, static_cast<int>(p), pieces[p]);
+        PatchControlCurve(solver, arrangement, sources, static_cast<int>(p), pieces[p], &bezier);
       if (!status)
       {
         return status;

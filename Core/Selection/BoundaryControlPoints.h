@@ -23,8 +23,10 @@
 #include "Geodesic/CurveTracer.h"
 #include "Selection/RegionBoundary.h"
 
+#include <array>
 #include <functional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace boolsurf
@@ -75,12 +77,51 @@ double ArrangedPointParameter(const Arrangement& arrangement,
   int curve,
   int index);
 
+/// The cubic Bezier pieces of the source curves between every two consecutive patch ends.
+/// A curve's segments are cut at all its patches' ends the first time one of its pieces is
+/// asked for, each segment split once per cut, left to right: later splits work on ever
+/// smaller control polygons (shorter geodesics, the costly part), no parameter is split
+/// twice, and a piece is the same whichever patches are asked for and in whichever order (the
+/// one-step filter asks for the boundary's, the arrangement stage for all).
+class BezierPieces
+{
+public:
+  BezierPieces(const Arrangement& arrangement, const std::vector<CurveSource>& sources);
+
+  /// The control points of the part [a, b] (0 <= a < b <= 1) of segment `segment` of curve
+  /// `curve`; `found` is false when [a, b] is not one of the pieces (the caller then splits
+  /// the segment itself).
+  TraceStatus Get(GeodesicPathSolver& solver,
+    int curve,
+    int segment,
+    double a,
+    double b,
+    std::array<CanonicalPoint, 4>& out,
+    bool& found);
+
+private:
+  struct Piece
+  {
+    double A, B;
+    std::array<CanonicalPoint, 4> Controls;
+  };
+  TraceStatus CutCurve(GeodesicPathSolver& solver, int curve);
+
+  const Arrangement& Arranged;
+  const std::vector<CurveSource>& Sources;
+  std::vector<std::vector<int>> PatchesOfCurve;
+  std::vector<char> CurveCut;
+  std::unordered_map<long long, std::vector<Piece>> Segments; ///< key: curve << 32 | segment
+};
+
 /// The sub-curve of patch `patch` of the arrangement, forward along its curve (Group -1).
+/// `pieces` (optional) shares the Bezier splits between the patches of one update.
 TraceStatus PatchControlCurve(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   int patch,
-  ControlSubCurve& out);
+  ControlSubCurve& out,
+  BezierPieces* pieces = nullptr);
 
 /// Boundary loops from per-patch sub-curves (`patchCurve(p)`, forward, or null for a patch
 /// without one): each loop's pieces oriented with the region on the left, pieces of one curve

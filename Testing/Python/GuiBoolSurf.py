@@ -33,7 +33,7 @@ def main():
     mesh = PLYReader(FileNames=[os.path.join(source_dir, "Data", "eight.ply")])
     rays = SurfaceRays(mesh, axis=1)
     control = curves_source([(surface_circle(rays, (0.0, -0.035), 0.06), 0),
-                             (surface_circle(rays, (0.0, 0.035), 0.06), 1)])
+                             (surface_circle(rays, (0.0, 0.035), 0.06), 1)], mesh)
     one = globals()["BoolSurf"](Surface=mesh, Curves=control, Operation="Union")
     one.UpdatePipeline()
     assert sm.Fetch(one).GetNumberOfCells() > 20

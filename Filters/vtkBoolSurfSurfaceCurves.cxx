@@ -1,0 +1,384 @@
+#include "vtkBoolSurfSurfaceCurves.h"
+
+#include "vtkBoolSurfRankGather.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStaticCellLocator.h>
+#include <vtkTriangle.h>
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <string>
+
+vtkStandardNewMacro(vtkBoolSurfSurfaceCurves);
+
+/// The closest-point locator of the last surface, rebuilt when the surface changes.
+struct vtkBoolSurfSurfaceCurves::Internals
+{
+  vtkSmartPointer<vtkStaticCellLocator> Locator;
+  vtkPolyData* Surface = nullptr;
+  vtkMTimeType SurfaceTime = 0;
+
+  vtkStaticCellLocator* For(vtkPolyData* surface)
+  {
+    if (!this->Locator || surface != this->Surface || surface->GetMTime() != this->SurfaceTime)
+    {
+      this->Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+      this->Locator->SetDataSet(surface);
+      this->Locator->BuildLocator();
+      this->Surface = surface;
+      this->SurfaceTime = surface->GetMTime();
+    }
+    return this->Locator;
+  }
+};
+
+namespace
+{
+/// Sets element i of a property vector (ParaView sets the size first, then each element).
+template <typename T>
+bool SetElement(std::vector<T>& values, size_t i, T value)
+{
+  if (i >= values.size() || values[i] == value)
+  {
+    return false;
+  }
+  values[i] = value;
+  return true;
+}
+
+template <typename T>
+bool Resize(std::vector<T>& values, size_t n, T fill = T())
+{
+  if (values.size() == n)
+  {
+    return false;
+  }
+  values.resize(n, fill);
+  return true;
+}
+
+/// The value of a per-curve property, or its default past the property's end.
+int PerCurve(const std::vector<int>& values, size_t curve, int fallback)
+{
+  return curve < values.size() ? values[curve] : fallback;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkBoolSurfSurfaceCurves::vtkBoolSurfSurfaceCurves()
+  : Internal(new Internals)
+{
+  this->SetNumberOfInputPorts(1);
+}
+
+vtkBoolSurfSurfaceCurves::~vtkBoolSurfSurfaceCurves() = default;
+
+// Property setters: each marks the filter modified only when a value changes.
+void vtkBoolSurfSurfaceCurves::SetNumberOfPoints(int n)
+{
+  if (Resize(this->Points, 3 * static_cast<size_t>(std::max(0, n)), 0.0))
+  {
+    this->Modified();
+  }
+}
+
+void vtkBoolSurfSurfaceCurves::SetPoint(int i, double x, double y, double z)
+{
+  const size_t at = 3 * static_cast<size_t>(std::max(0, i));
+  bool changed = SetElement(this->Points, at, x);
+  changed |= SetElement(this->Points, at + 1, y);
+  changed |= SetElement(this->Points, at + 2, z);
+  if (changed)
+  {
+    this->Modified();
+  }
+}
+
+void vtkBoolSurfSurfaceCurves::SetNumberOfTriangleIds(int n)
+{
+  if (Resize(this->TriangleIds, static_cast<size_t>(std::max(0, n)), vtkIdType(-1)))
+  {
+    this->Modified();
+  }
+}
+
+void vtkBoolSurfSurfaceCurves::SetTriangleId(int i, vtkIdType triangle)
+{
+  if (SetElement(this->TriangleIds, static_cast<size_t>(std::max(0, i)), triangle))
+  {
+    this->Modified();
+  }
+}
+
+void vtkBoolSurfSurfaceCurves::SetNumberOfBarycentrics(int n)
+{
+  if (Resize(this->Barycentrics, 2 * static_cast<size_t>(std::max(0, n)), 0.0))
+  {
+    this->Modified();
+  }
+}
+
+void vtkBoolSurfSurfaceCurves::SetBarycentric(int i, double u, double v)
+{
+  const size_t at = 2 * static_cast<size_t>(std::max(0, i));
+  bool changed = SetElement(this->Barycentrics, at, u);
+  changed |= SetElement(this->Barycentrics, at + 1, v);
+  if (changed)
+  {
+    this->Modified();
+  }
+}
+
+#define BOOLSURF_PER_CURVE_PROPERTY(Count, Element, Vector, Fill)                                  \
+  void vtkBoolSurfSurfaceCurves::Count(int n)                                                      \
+  {                                                                                                \
+    if (Resize(this->Vector, static_cast<size_t>(std::max(0, n)), Fill))                           \
+    {                                                                                              \
+      this->Modified();                                                                            \
+    }                                                                                              \
+  }                                                                                                \
+  void vtkBoolSurfSurfaceCurves::Element(int i, int value)                                         \
+  {                                                                                                \
+    if (SetElement(this->Vector, static_cast<size_t>(std::max(0, i)), value))                      \
+    {                                                                                              \
+      this->Modified();                                                                            \
+    }                                                                                              \
+  }
+BOOLSURF_PER_CURVE_PROPERTY(SetNumberOfCurveSizes, SetCurveSize, CurveSizes, 0)
+BOOLSURF_PER_CURVE_PROPERTY(SetNumberOfShapeIds, SetShapeId, ShapeIds, 0)
+BOOLSURF_PER_CURVE_PROPERTY(SetNumberOfCurveTypes, SetCurveType, CurveTypes, 0)
+BOOLSURF_PER_CURVE_PROPERTY(SetNumberOfClosedCurves, SetClosedCurve, ClosedCurves, 1)
+#undef BOOLSURF_PER_CURVE_PROPERTY
+
+void vtkBoolSurfSurfaceCurves::RemoveAllCurves()
+{
+  this->Points.clear();
+  this->TriangleIds.clear();
+  this->Barycentrics.clear();
+  this->CurveSizes.clear();
+  this->ShapeIds.clear();
+  this->CurveTypes.clear();
+  this->ClosedCurves.clear();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfSurfaceCurves::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
+  vtkBoolSurfRankGather gather(this, inputVector, 1);
+  vtkPolyData* surface = gather.Input(0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize(); // a failed update leaves an empty output
+  if (!gather.ComputesHere())
+  {
+    return 1; // other MPI ranks: empty outputs
+  }
+  if (!surface || surface->GetNumberOfCells() == 0)
+  {
+    vtkErrorMacro("The surface is empty: curves are drawn on a triangle surface.");
+    return 0;
+  }
+
+  const vtkIdType points = this->GetNumberOfPoints();
+  std::vector<int> sizes = this->CurveSizes;
+  if (sizes.empty() && points > 0)
+  {
+    sizes.push_back(static_cast<int>(points));
+  }
+  for (size_t c = 0; c < sizes.size(); ++c)
+  {
+    if (sizes[c] < 1)
+    {
+      vtkErrorMacro("Curve " << c << " has " << sizes[c] << " control points (CurveSizes).");
+      return 0;
+    }
+  }
+  const long long total = std::accumulate(sizes.begin(), sizes.end(), 0LL);
+  if (total != points)
+  {
+    vtkErrorMacro("CurveSizes add up to " << total << " control points, but " << points
+                                          << " Points are given.");
+    return 0;
+  }
+  const bool exact = !this->TriangleIds.empty();
+  if (exact &&
+    (static_cast<vtkIdType>(this->TriangleIds.size()) != points ||
+      static_cast<vtkIdType>(this->Barycentrics.size()) != 2 * points))
+  {
+    vtkErrorMacro("Exact surface points need a TriangleId and a Barycentric pair for each of the "
+      << points << " Points; got " << this->TriangleIds.size() << " TriangleIds and "
+      << this->Barycentrics.size() / 2 << " Barycentrics.");
+    return 0;
+  }
+
+  // Surface points: given exactly, or the closest surface point of each position.
+  vtkNew<vtkPoints> positions;
+  positions->SetDataTypeToDouble();
+  positions->SetNumberOfPoints(points);
+  vtkNew<vtkIdTypeArray> triangleIds;
+  triangleIds->SetName("TriangleId");
+  triangleIds->SetNumberOfTuples(points);
+  vtkNew<vtkDoubleArray> barycentric;
+  barycentric->SetName("Barycentric");
+  barycentric->SetNumberOfComponents(2);
+  barycentric->SetNumberOfTuples(points);
+  vtkStaticCellLocator* locator = exact ? nullptr : this->Internal->For(surface);
+  const vtkIdType triangles = surface->GetNumberOfCells();
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    vtkIdType triangle = -1;
+    double u = 0, v = 0;
+    if (exact)
+    {
+      triangle = this->TriangleIds[i];
+      u = this->Barycentrics[2 * i];
+      v = this->Barycentrics[2 * i + 1];
+      if (triangle < 0 || triangle >= triangles)
+      {
+        vtkErrorMacro("Point " << i << ": TriangleId " << triangle
+                               << " is not a triangle of the surface (it has " << triangles
+                               << ").");
+        return 0;
+      }
+      const double slack = 1e-12;
+      if (!(u >= -slack && v >= -slack && u + v <= 1 + slack))
+      {
+        vtkErrorMacro("Point " << i << ": Barycentric (" << u << ", " << v
+                               << ") is outside triangle " << triangle << ".");
+        return 0;
+      }
+    }
+    else
+    {
+      const double* x = &this->Points[3 * i];
+      double closest[3], distance2;
+      int subId;
+      locator->FindClosestPoint(x, closest, triangle, subId, distance2);
+    }
+    vtkIdType n;
+    const vtkIdType* corners;
+    surface->GetCellPoints(triangle, n, corners);
+    if (n != 3)
+    {
+      vtkErrorMacro("Point " << i << ": cell " << triangle << " of the surface has " << n
+                             << " points, not 3: triangulate the surface first.");
+      return 0;
+    }
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      surface->GetPoint(corners[k], p[k]);
+    }
+    if (!exact)
+    {
+      double weights[3];
+      vtkTriangle::BarycentricCoords(&this->Points[3 * i], p[0], p[1], p[2], weights);
+      // The closest point is on the triangle: clamp rounding, then renormalise.
+      for (double& w : weights)
+      {
+        w = std::max(0.0, w);
+      }
+      const double sum = weights[0] + weights[1] + weights[2];
+      u = sum > 0 ? weights[1] / sum : 0;
+      v = sum > 0 ? weights[2] / sum : 0;
+    }
+    double x[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      x[k] = (1 - u - v) * p[0][k] + u * p[1][k] + v * p[2][k];
+    }
+    positions->SetPoint(i, x);
+    triangleIds->SetValue(i, triangle);
+    barycentric->SetTypedTuple(i, std::array<double, 2>{ u, v }.data());
+  }
+
+  // One polyline per curve; a closed curve repeats its first point.
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIntArray> shapeIds, curveTypes, closed;
+  shapeIds->SetName("ShapeId");
+  curveTypes->SetName("CurveType");
+  closed->SetName("Closed");
+  vtkIdType first = 0;
+  for (size_t c = 0; c < sizes.size(); ++c)
+  {
+    const int type = PerCurve(this->CurveTypes, c, 0);
+    const bool isClosed = PerCurve(this->ClosedCurves, c, 1) != 0;
+    const int shape = PerCurve(this->ShapeIds, c, static_cast<int>(c));
+    if (type != 0 && type != 1)
+    {
+      vtkErrorMacro("Curve " << c << ": CurveType " << type
+                             << " is neither 0 (geodesic polygon) nor 1 (cubic Bezier).");
+      return 0;
+    }
+    if (shape < 0)
+    {
+      vtkErrorMacro("Curve " << c << ": ShapeId " << shape << " is negative.");
+      return 0;
+    }
+    const int size = sizes[c];
+    if (type == 1 && (isClosed ? size % 3 != 0 : size % 3 != 1))
+    {
+      vtkErrorMacro("Curve " << c << ": a " << (isClosed ? "closed" : "open")
+                             << " cubic Bezier spline needs " << (isClosed ? "3n" : "3n+1")
+                             << " control points (anchor, handle, handle, ...); it has " << size
+                             << ".");
+      return 0;
+    }
+    lines->InsertNextCell(size + (isClosed ? 1 : 0));
+    for (int k = 0; k < size; ++k)
+    {
+      lines->InsertCellPoint(first + k);
+    }
+    if (isClosed)
+    {
+      lines->InsertCellPoint(first);
+    }
+    shapeIds->InsertNextValue(shape);
+    curveTypes->InsertNextValue(type);
+    closed->InsertNextValue(isClosed ? 1 : 0);
+    first += size;
+  }
+  output->SetPoints(positions);
+  output->SetLines(lines);
+  output->GetPointData()->AddArray(triangleIds);
+  output->GetPointData()->AddArray(barycentric);
+  output->GetCellData()->AddArray(shapeIds);
+  output->GetCellData()->AddArray(curveTypes);
+  output->GetCellData()->AddArray(closed);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfSurfaceCurves::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Points: " << this->GetNumberOfPoints()
+     << (this->TriangleIds.empty() ? " (snapped)" : " (exact)") << "\n";
+  os << indent
+     << "Curves: " << std::max<size_t>(this->CurveSizes.size(), this->GetNumberOfPoints() > 0)
+     << "\n";
+}
