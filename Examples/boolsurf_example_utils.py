@@ -122,9 +122,24 @@ def area(proxy, port=0):
     return sum(a.GetValue(i) for i in range(a.GetNumberOfTuples())) if a else 0.0
 
 
+def ranks():
+    """The number of MPI ranks running the pipeline (1 unless under mpiexec)."""
+    return sm.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+
+
 def save_result(proxy, path):
-    # Inline binary: VTK 9.2 on Debian 12 cannot read back appended-mode XML files.
-    SaveData(path, proxy=proxy, DataMode="Binary")
+    if ranks() > 1:
+        # Under MPI ParaView offers only the partitioned .pvtp writer for .vtp; BoolSurf's
+        # results live on the first rank, so fetch them and write one plain .vtp file.
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+        writer = vtkXMLPolyDataWriter()
+        writer.SetInputData(sm.Fetch(proxy))
+        writer.SetDataModeToBinary()
+        writer.SetFileName(path)
+        writer.Write()
+    else:
+        # Inline binary: VTK 9.2 on Debian 12 cannot read back appended-mode XML files.
+        SaveData(path, proxy=proxy, DataMode="Binary")
     print("wrote %s" % path)
 
 

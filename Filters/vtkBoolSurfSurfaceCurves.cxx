@@ -252,6 +252,7 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
   {
     vtkIdType triangle = -1;
     double u = 0, v = 0;
+    double closest[3] = { 0, 0, 0 };
     if (exact)
     {
       triangle = this->TriangleIds[i];
@@ -275,7 +276,7 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
     else
     {
       const double* x = &this->Points[3 * i];
-      double closest[3], distance2;
+      double distance2;
       int subId;
       locator->FindClosestPoint(x, closest, triangle, subId, distance2);
     }
@@ -296,7 +297,7 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
     if (!exact)
     {
       double weights[3];
-      vtkTriangle::BarycentricCoords(&this->Points[3 * i], p[0], p[1], p[2], weights);
+      vtkTriangle::BarycentricCoords(closest, p[0], p[1], p[2], weights);
       // The closest point is on the triangle: clamp rounding, then renormalise.
       for (double& w : weights)
       {

@@ -18,6 +18,9 @@
 //
 // Usage: BoolSurfRandomSvgBenchmark [--trials N] [--seed S] [--csv FILE] [--mesh NAME]...
 //        [--only-trial K] (replays trial K of each mesh: each mesh has its own generator)
+//        [--verbose] (each trial named before it runs) [--locally-shortest] (ExactGeodesics
+//        off) [--no-control-curves] (ComputeControlCurves off: no vector output, as the
+//        paper's timings)
 // (shared data from BOOLSURF_SHARED_DATA or the build's configured path; a missing collection
 // ends the program with a message and exit code 0, nothing measured).
 #include "vtkBoolSurf.h"
@@ -29,6 +32,7 @@
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkPLYReader.h>
 #include <vtkPolyData.h>
@@ -101,7 +105,10 @@ struct Options
   unsigned Seed = 22;
   std::string Csv = "random_svg_booleans.csv";
   std::vector<std::string> Meshes; // empty: every shared mesh of >= 100k triangles
-  int OnlyTrial = -1;               // >= 0: run only this trial (and the cold update)
+  int OnlyTrial = -1;              // >= 0: run only this trial (and the cold update)
+  bool Verbose = false;            // print each trial before it runs
+  bool LocallyShortest = false;    // ExactGeodesics off (locally shortest legs)
+  bool ControlCurves = true;       // ComputeControlCurves (the vector output, ports 2-3)
 };
 
 Options ParseOptions(int argc, char** argv)
@@ -123,6 +130,18 @@ Options ParseOptions(int argc, char** argv)
     {
       options.Csv = argv[++i];
     }
+    else if (arg == "--locally-shortest")
+    {
+      options.LocallyShortest = true;
+    }
+    else if (arg == "--no-control-curves")
+    {
+      options.ControlCurves = false;
+    }
+    else if (arg == "--verbose")
+    {
+      options.Verbose = true;
+    }
     else if (arg == "--only-trial" && hasValue)
     {
       options.OnlyTrial = std::atoi(argv[++i]);
@@ -134,7 +153,8 @@ Options ParseOptions(int argc, char** argv)
     else
     {
       std::cerr << "usage: " << argv[0]
-                << " [--trials N] [--seed S] [--csv FILE] [--mesh NAME.ply]... [--only-trial K]\n";
+                << " [--trials N] [--seed S] [--csv FILE] [--mesh NAME.ply]... [--only-trial K] "
+                   "[--verbose] [--locally-shortest] [--no-control-curves]\n";
       std::exit(2);
     }
   }
@@ -286,7 +306,9 @@ int main(int argc, char** argv)
   }
   const std::vector<fs::path> svgs = SharedSvgs(data);
   const unsigned cores = std::thread::hardware_concurrency();
-  vtkObject::GlobalWarningDisplayOff(); // counted per trial instead (SVG attributes, boundaries)
+  // Warnings and errors are counted per trial (observers); the executive's own reports of a
+  // failed filter are not printed.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   std::cout << "Random SVG Booleans (paper Fig. 22): " << meshes.size() << " meshes, "
             << svgs.size() << " SVGs, " << options.Trials << " trials per mesh, seed "
             << options.Seed << ", " << cores << " cores\n";
@@ -314,6 +336,8 @@ int main(int argc, char** argv)
     const double diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
       std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
     Pipeline pipeline(surface);
+    pipeline.Boolean->SetExactGeodesics(!options.LocallyShortest);
+    pipeline.Boolean->SetComputeControlCurves(options.ControlCurves);
     // One generator per mesh, seeded by the seed and the mesh's name, so a run on a subset of
     // the meshes (--mesh) repeats the same trials.
     std::seed_seq seeds{ options.Seed, static_cast<unsigned>(std::hash<std::string>()(name)) };
@@ -358,6 +382,11 @@ int main(int argc, char** argv)
       }
       pipeline.Errors.Text.clear();
       pipeline.Errors.Warnings = 0;
+      if (options.Verbose)
+      {
+        std::cout << "  trial " << trial << ": " << a.filename().string() << " "
+                  << OperationNames[operation] << " " << b.filename().string() << std::endl;
+      }
 
       // The expression needs each drawing's shape ids, and the fill rule what the SVGs say:
       // both come from the mappers' outputs, so the mappers run first (timed as part of it).
@@ -434,10 +463,10 @@ int main(int argc, char** argv)
     }
     std::cout << std::setw(22) << std::left << name << std::right << std::setw(9) << triangles
               << " triangles: " << times.size() << " ok, "
-              << options.Trials - static_cast<int>(times.size()) << " failed; cold update "
-              << std::fixed << std::setprecision(1) << cold << " ms; full update " << Summary(times)
-              << "\n    median per stage (ms): map " << std::setprecision(2)
-              << Percentile(mapTimes, 0.5);
+              << (options.OnlyTrial >= 0 ? 1 : options.Trials) - static_cast<int>(times.size())
+              << " failed; cold update " << std::fixed << std::setprecision(1) << cold
+              << " ms; full update " << Summary(times) << "\n    median per stage (ms): map "
+              << std::setprecision(2) << Percentile(mapTimes, 0.5);
     for (size_t k = 0; k < stageTimes.size() && k < stageNames.size(); ++k)
     {
       std::cout << ", " << stageNames[k] << " " << Percentile(stageTimes[k], 0.5);

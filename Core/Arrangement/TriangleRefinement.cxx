@@ -595,7 +595,7 @@ bool RefineTriangle(LocalArrangement& arr)
     arr.Alias[i] = i;
   }
   LocalTriangulation tri(arr);
-  tri.StepBudget = 64 * static_cast<size_t>(n) * static_cast<size_t>(n) + 1024;
+  tri.StepBudget = 32 * static_cast<size_t>(n) + 1024;
   tri.Tris.reserve(4 * n);
   tri.Alive.reserve(4 * n);
   tri.IsInserted.assign(n, 0);
