@@ -7,7 +7,12 @@
 // - BM_OneStepCurveEdit/threads:N: 10 circles x 12 control points in two clusters of
 //   overlapping ones, union of all shapes; each iteration moves the curves (switches between two
 //   prepared curve sets: the same circles moved by 5 % of their radius and rotated by half a
-//   control-point step) and updates: tracing, arrangement, labeling and Boolean all rerun.
+//   control-point step; every control point also moved by ~1e-12 so that no geodesic comes
+//   from the solver's memory of earlier iterations) and updates: tracing, arrangement,
+//   labeling and Boolean all rerun.
+// - BM_OneStepDragOneCurve/threads:N: same scene; each iteration moves one circle (the next
+//   one each time) and the other nine stay: a user dragging one curve among many (their
+//   geodesics come from the solver's memory).
 // - BM_OneStepOperationChange/threads:N: same scene; each iteration only toggles Union and
 //   SymmetricDifference (the labeled arrangement is reused, only the Boolean reruns).
 // - BM_OneStepPaperScaleXor/threads:N: 112 circles x 32 control points (the scale of the paper's
@@ -603,9 +608,41 @@ void ReportRegion(benchmark::State& state, vtkBoolSurf* filter, double startRssM
   state.counters["PeakRSSGrowth_MB"] = PeakRssMB() - startRssMB;
 }
 
-/// Each iteration switches the curves to the other prepared version (a new input object: the
-/// filter retraces, rearranges, relabels) and updates.
-void CurveEdits(benchmark::State& state, const Scene& scene, int operation, int threads)
+/// A copy of `curves` whose control points of cells `first` to `last` moved by about 1e-12 of
+/// their triangle (barycentric weights shifted by `step` ulps-scale amounts): the same shapes,
+/// but end points never traced before, so no geodesic comes from the solver's memory of
+/// earlier iterations, as after a real edit (the two prepared versions alone would be
+/// remembered after two iterations).
+vtkSmartPointer<vtkPolyData> Moved(vtkPolyData* curves, vtkIdType first, vtkIdType last, int step)
+{
+  auto moved = vtkSmartPointer<vtkPolyData>::New();
+  moved->DeepCopy(curves);
+  vtkDataArray* uv = moved->GetPointData()->GetArray("Barycentric");
+  const double shift = 1e-12 * (1 + step % 4096);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = first; c <= last && c < moved->GetNumberOfCells(); ++c)
+  {
+    moved->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      double w[2];
+      uv->GetTuple(ids->GetId(k), w);
+      w[0] += w[0] + w[1] + shift < 1 ? shift : -shift;
+      uv->SetTuple(ids->GetId(k), w);
+    }
+  }
+  return moved;
+}
+
+/// Each iteration switches the curves to the other prepared version, every control point
+/// moved slightly (see Moved: a new input object, the filter retraces, rearranges, relabels),
+/// and updates. With `dragOne`, only one circle moves per iteration (the next one each time)
+/// and the others stay where they were: a user dragging one curve among many.
+void CurveEdits(benchmark::State& state,
+  const Scene& scene,
+  int operation,
+  int threads,
+  bool dragOne = false)
 {
   if (!scene.Error.empty())
   {
@@ -622,10 +659,24 @@ void CurveEdits(benchmark::State& state, const Scene& scene, int operation, int 
   StageSums stages;
   double updateMs = 0;
   size_t version = 0;
+  int step = 0;
+  vtkSmartPointer<vtkPolyData> input;
   for (auto _ : state)
   {
-    version = (version + 1) % scene.Curves.size();
-    filter->SetInputData(1, scene.Curves[version]);
+    state.PauseTiming();
+    ++step;
+    if (dragOne)
+    {
+      const vtkIdType circle = step % scene.Circles;
+      input = Moved(scene.Curves[0], circle, circle, step);
+    }
+    else
+    {
+      version = (version + 1) % scene.Curves.size();
+      input = Moved(scene.Curves[version], 0, scene.Circles - 1, step);
+    }
+    filter->SetInputData(1, input);
+    state.ResumeTiming();
     const auto t0 = std::chrono::steady_clock::now();
     filter->Update();
     updateMs += Milliseconds(t0, std::chrono::steady_clock::now());
@@ -647,6 +698,11 @@ void CurveEdits(benchmark::State& state, const Scene& scene, int operation, int 
 void BM_OneStepCurveEdit(benchmark::State& state)
 {
   CurveEdits(state, TenCircles(), 0, static_cast<int>(state.range(0)));
+}
+
+void BM_OneStepDragOneCurve(benchmark::State& state)
+{
+  CurveEdits(state, TenCircles(), 0, static_cast<int>(state.range(0)), true);
 }
 
 void BM_OneStepOperationChange(benchmark::State& state)
@@ -794,6 +850,13 @@ void BM_OneStepHugeShapeId(benchmark::State& state)
 }
 
 BENCHMARK(BM_OneStepCurveEdit)
+  ->ArgName("threads")
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime()
+  ->Iterations(10);
+BENCHMARK(BM_OneStepDragOneCurve)
   ->ArgName("threads")
   ->Arg(1)
   ->Arg(2)

@@ -1043,3 +1043,51 @@ TEST(GeodesicPath, InvalidPointsAreNamedErrors)
   s = solver.Compute(SurfacePoint{ -3, 0.1, 0.1 }, SurfacePoint{ 0, 0.1, 0.1 }, path);
   EXPECT_EQ(s.Message, "start point: triangle id -3 is out of range [0, 18)");
 }
+
+// The solver remembers computed paths: the same ends again give the same path and statistics
+// without a search; other ends, a changed method or a zero limit search again; past the limit
+// the memory empties instead of growing.
+TEST(GeodesicPath, RemembersComputedPaths)
+{
+  const TriangleMesh mesh = ToMesh(MakeIcosphere(3));
+  GeodesicPathSolver solver(mesh);
+  GeodesicPath first, again;
+  const CanonicalPoint a = FacePoint(3, 0.2, 0.3),
+                       b = FacePoint(mesh.GetNumberOfTriangles() / 2, 0.3, 0.3);
+  ASSERT_TRUE(solver.Compute(a, b, first).Ok);
+  const GeodesicPathStatistics searched = solver.GetLastStatistics();
+  EXPECT_GT(searched.Windows, 0); // a real search (exact strip by default)
+  EXPECT_EQ(solver.GetPathMemoryHits(), 0u);
+  ASSERT_TRUE(solver.Compute(a, b, again).Ok);
+  EXPECT_EQ(solver.GetPathMemoryHits(), 1u);
+  EXPECT_TRUE(again.Points == first.Points);
+  EXPECT_EQ(again.Length, first.Length);
+  EXPECT_EQ(solver.GetLastStatistics().Windows, searched.Windows);
+  EXPECT_EQ(solver.GetLastStatistics().Exact, searched.Exact);
+  // The reverse direction is another query (legs are traced one way by the tracer).
+  ASSERT_TRUE(solver.Compute(b, a, again).Ok);
+  EXPECT_EQ(solver.GetPathMemoryHits(), 1u);
+  EXPECT_NEAR(again.Length, first.Length, 1e-12 * first.Length);
+  // A different method forgets: the locally shortest path is searched, not recalled.
+  solver.SetUseExactStrip(false);
+  ASSERT_TRUE(solver.Compute(a, b, again).Ok);
+  EXPECT_EQ(solver.GetPathMemoryHits(), 1u);
+  EXPECT_EQ(solver.GetLastStatistics().Windows, 0);
+  solver.SetUseExactStrip(true);
+  // Limit 0: no memory at all.
+  solver.SetPathMemoryLimit(0);
+  ASSERT_TRUE(solver.Compute(a, b, again).Ok);
+  ASSERT_TRUE(solver.Compute(a, b, again).Ok);
+  EXPECT_EQ(solver.GetPathMemoryHits(), 1u);
+  EXPECT_TRUE(again.Points == first.Points);
+  // A limit smaller than two paths: the second path empties the memory, so the first is
+  // searched again.
+  solver.SetPathMemoryLimit(first.Points.size() + 1);
+  const CanonicalPoint c = FacePoint(mesh.GetNumberOfTriangles() - 5, 0.3, 0.3);
+  ASSERT_TRUE(solver.Compute(a, b, again).Ok);
+  ASSERT_TRUE(solver.Compute(a, c, again).Ok);
+  ASSERT_TRUE(solver.Compute(a, b, again).Ok);
+  EXPECT_EQ(solver.GetPathMemoryHits(), 1u);
+  ASSERT_TRUE(solver.Compute(a, b, again).Ok);
+  EXPECT_EQ(solver.GetPathMemoryHits(), 2u);
+}
