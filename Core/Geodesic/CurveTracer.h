@@ -13,6 +13,8 @@
 #include "Geodesic/GeodesicPath.h"
 #include "Geodesic/TracedCurve.h"
 
+#include <cstddef>
+#include <unordered_map>
 #include <vector>
 
 namespace boolsurf
@@ -78,6 +80,16 @@ public:
 
   GeodesicPathSolver& GetPathSolver() { return this->Solver; }
 
+  /// Trace() remembers the curves it traced: the same control points (bit for bit), type and
+  /// closure, at the same resolution and geodesic method, give the same trace again without
+  /// tracing. An edit retraces every curve, and usually only one moved. Call StartPass() once
+  /// per set of curves (one update): curves neither traced nor recalled during the previous
+  /// pass are then forgotten, so the memory holds about two updates' curves. It never holds
+  /// more than 2^20 traced points (about 60 MB): past that it empties and fills again.
+  void StartPass();
+  /// How many Trace() calls were answered from memory (for tests and benchmarks).
+  std::size_t GetRecalledCurves() const { return this->Recalled; }
+
 private:
   /// The geodesic between a and b, computed from whichever of the two comes first in a fixed
   /// order of surface points and reversed if needed: a leg traced both ways (two polygons
@@ -104,6 +116,29 @@ private:
 
   GeodesicPathSolver Solver;
   int Resolution = 4;
+
+  struct CurveKey
+  {
+    std::vector<CanonicalPoint> Points;
+    CurveType Type = CurveType::GeodesicPolygon;
+    bool Closed = true;
+    int Resolution = 0;
+    bool Exact = true;
+    bool operator==(const CurveKey& o) const;
+  };
+  struct CurveKeyHash
+  {
+    std::size_t operator()(const CurveKey& k) const;
+  };
+  struct RememberedCurve
+  {
+    CurveTrace Trace;
+    unsigned Pass = 0;
+  };
+  std::unordered_map<CurveKey, RememberedCurve, CurveKeyHash> Memory;
+  unsigned Pass = 0;
+  std::size_t Recalled = 0;
+  std::size_t MemoryPoints = 0; ///< traced points held by Memory
   GeodesicPath Path;
   std::vector<CanonicalPoint> Refined;
 };

@@ -144,56 +144,6 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
     path.Points.push_back(start);
     return TraceStatus::Success();
   }
-  if (this->MemoryLimit > 0)
-  {
-    auto known = this->Memory.find({ start, end });
-    if (known != this->Memory.end())
-    {
-      path = known->second.Path;
-      this->Statistics = known->second.Statistics;
-      ++this->MemoryHits;
-      return TraceStatus::Success();
-    }
-  }
-  TraceStatus status = this->FindPath(start, end, path);
-  if (status && this->MemoryLimit > 0)
-  {
-    if (this->MemoryPoints + path.Points.size() > this->MemoryLimit)
-    {
-      this->ClearPathMemory();
-    }
-    if (path.Points.size() <= this->MemoryLimit)
-    {
-      this->Memory[{ start, end }] = { path, this->Statistics };
-      this->MemoryPoints += path.Points.size();
-    }
-  }
-  return status;
-}
-
-//------------------------------------------------------------------------------
-std::size_t GeodesicPathSolver::PathEndsHash::operator()(const PathEnds& e) const
-{
-  std::size_t h = 0;
-  auto mix = [&h](std::size_t v) { h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); };
-  for (const CanonicalPoint* p : { &e.Start, &e.End })
-  {
-    mix(static_cast<std::size_t>(p->Location));
-    mix(std::hash<int>()(p->Id));
-    mix(std::hash<double>()(p->U));
-    mix(std::hash<double>()(p->V));
-    mix(std::hash<double>()(p->T));
-  }
-  return h;
-}
-
-//------------------------------------------------------------------------------
-TraceStatus GeodesicPathSolver::FindPath(const CanonicalPoint& start,
-  const CanonicalPoint& end,
-  GeodesicPath& path)
-{
-  const TriangleMesh& mesh = this->GetMesh();
-  std::string problem;
 
   this->UnfoldedStrip.clear();
   TrianglesOf(mesh, start, this->StartTriangles);

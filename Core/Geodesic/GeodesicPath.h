@@ -36,7 +36,6 @@
 #include <array>
 #include <cstdint>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace boolsurf
@@ -101,19 +100,11 @@ public:
 
   /// Upper bound on funnel runs per path (each run after the first shortens the path, so the
   /// loop ends anyway; the bound only guards against numerical ping-pong).
-  void SetMaximumStraighteningRounds(int n)
-  {
-    this->MaximumRounds = n;
-    this->ClearPathMemory();
-  }
+  void SetMaximumStraighteningRounds(int n) { this->MaximumRounds = n; }
 
   /// See DualGraphSearch::SetHeuristicWeight: the weight of the fallback dual search
   /// (default 2, greedy). The edge-path search is always exact.
-  void SetHeuristicWeight(double w)
-  {
-    this->Search.SetHeuristicWeight(w);
-    this->ClearPathMemory();
-  }
+  void SetHeuristicWeight(double w) { this->Search.SetHeuristicWeight(w); }
 
   /// Landmarks of the exact edge-path search (see EdgeGraphSearch: ALT lower bounds, built
   /// once per mesh; default 16, 0 disables). The edge path found is as short either way.
@@ -125,49 +116,16 @@ public:
   const EdgeGraphSearch& GetEdgeSearch() const { return this->EdgeSearch; }
 
   /// Seed with the dual-graph strip only (no edge-path bound); for benchmarks and tests.
-  void SetUseEdgePathStrip(bool on)
-  {
-    this->UseEdgePathStrip = on;
-    this->ClearPathMemory();
-  }
+  void SetUseEdgePathStrip(bool on) { this->UseEdgePathStrip = on; }
 
   /// Seed with the strip of the exact shortest path (ExactGeodesicSearch; default on). Off,
   /// the result is only locally shortest (the straightened shortest edge path), but faster.
-  void SetUseExactStrip(bool on)
-  {
-    if (on != this->UseExactStrip)
-    {
-      this->ClearPathMemory();
-    }
-    this->UseExactStrip = on;
-  }
+  void SetUseExactStrip(bool on) { this->UseExactStrip = on; }
   bool GetUseExactStrip() const { return this->UseExactStrip; }
   const ExactGeodesicSearch& GetExactSearch() const { return this->Exact; }
   /// Window budget of the exact search (see ExactGeodesicSearch::SetMaximumWindows); past it
   /// the path falls back to the locally shortest one and GetLastStatistics().Exact is false.
-  void SetMaximumWindows(int n)
-  {
-    this->Exact.SetMaximumWindows(n);
-    this->ClearPathMemory();
-  }
-
-  /// Paths already computed are remembered (by their two end points, in order) and given
-  /// again, with their statistics, without a search: an edit retraces every curve, and most
-  /// of them have not moved; the vector output's Bezier splits start with the legs the tracer
-  /// computed. At most `points` path points are kept (default 2^19, about 20 MB); past that
-  /// the memory is emptied and fills again. 0 turns it off (benchmarks of the search itself).
-  void SetPathMemoryLimit(std::size_t points)
-  {
-    this->MemoryLimit = points;
-    this->ClearPathMemory();
-  }
-  void ClearPathMemory()
-  {
-    this->Memory.clear();
-    this->MemoryPoints = 0;
-  }
-  /// How many Compute calls were answered from memory (for tests and benchmarks).
-  std::size_t GetPathMemoryHits() const { return this->MemoryHits; }
+  void SetMaximumWindows(int n) { this->Exact.SetMaximumWindows(n); }
 
 private:
   struct Portal
@@ -188,8 +146,6 @@ private:
     int FirstPortal = -1, LastPortal = -1; // Vertex points: strip portals that contain it
   };
 
-  /// Compute's search, without the memory (start != end, both checked and normalized).
-  TraceStatus FindPath(const CanonicalPoint& start, const CanonicalPoint& end, GeodesicPath& path);
   bool StripFromEdgePath(const CanonicalPoint& start, const CanonicalPoint& end);
   void TrimStrip(const CanonicalPoint& start, const CanonicalPoint& end);
   bool UnfoldStrip(const CanonicalPoint& start, const CanonicalPoint& end);
@@ -207,26 +163,6 @@ private:
     int second,
     int last,
     std::vector<int>& swept) const;
-
-  struct RememberedPath
-  {
-    GeodesicPath Path;
-    GeodesicPathStatistics Statistics;
-  };
-  struct PathEnds
-  {
-    CanonicalPoint Start, End;
-    bool operator==(const PathEnds& o) const
-    {
-      return this->Start == o.Start && this->End == o.End;
-    }
-  };
-  struct PathEndsHash
-  {
-    std::size_t operator()(const PathEnds& e) const;
-  };
-  std::unordered_map<PathEnds, RememberedPath, PathEndsHash> Memory;
-  std::size_t MemoryPoints = 0, MemoryLimit = std::size_t(1) << 19, MemoryHits = 0;
 
   DualGraphSearch Search;
   EdgeGraphSearch EdgeSearch;

@@ -147,3 +147,49 @@ TEST(CurveTracer, DifferentComponentsNamesCurveAndSegment)
     << s.Message;
   EXPECT_NE(s.Message.find("different connected components"), std::string::npos);
 }
+
+// The tracer remembers traced curves: the same control points, type, closure, resolution and
+// method give the same trace without tracing (curve id updated); anything else traces; curves
+// not used during a whole pass are forgotten at the next StartPass.
+TEST(CurveTracer, RemembersTracedCurves)
+{
+  const TriangleMesh mesh = FlatMesh();
+  CurveTracer tracer(mesh);
+  const std::vector<SurfacePoint> polygon{ { 3, 0.2, 0.3 }, { 100, 0.1, 0.1 }, { 250, 0.5, 0.25 } };
+  const std::vector<SurfacePoint> spline{
+    { 3, 0.2, 0.3 }, { 100, 0.1, 0.1 }, { 250, 0.5, 0.25 }, { 40, 0.3, 0.3 }
+  };
+  CurveTrace first, again;
+  tracer.StartPass();
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, first, 1).Ok);
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again, 7).Ok);
+  EXPECT_EQ(tracer.GetRecalledCurves(), 1u);
+  EXPECT_TRUE(again.Curve.Points == first.Curve.Points);
+  EXPECT_EQ(again.Parameter, first.Parameter);
+  EXPECT_EQ(again.Length, first.Length);
+  EXPECT_EQ(again.Curve.CurveId, 7);
+  // Open instead of closed, a Bezier, another resolution, another method: traced.
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, false, again).Ok);
+  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, again).Ok);
+  tracer.SetResolution(2);
+  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, again).Ok);
+  tracer.GetPathSolver().SetUseExactStrip(false);
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again).Ok);
+  EXPECT_EQ(tracer.GetRecalledCurves(), 1u);
+  tracer.GetPathSolver().SetUseExactStrip(true);
+  tracer.SetResolution(4);
+  // A control point moved by one ulp is another curve.
+  std::vector<SurfacePoint> moved = polygon;
+  moved[1].U = std::nextafter(moved[1].U, 1.0);
+  ASSERT_TRUE(tracer.Trace(moved, CurveType::GeodesicPolygon, true, again).Ok);
+  EXPECT_EQ(tracer.GetRecalledCurves(), 1u);
+  // Passes: used in the last pass, kept; unused for a whole pass, forgotten.
+  tracer.StartPass();
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again).Ok);
+  EXPECT_EQ(tracer.GetRecalledCurves(), 2u);
+  tracer.StartPass(); // polygon was used during the pass that ends: kept
+  tracer.StartPass(); // not used during this one: forgotten
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again).Ok);
+  EXPECT_EQ(tracer.GetRecalledCurves(), 2u);
+  EXPECT_TRUE(again.Curve.Points == first.Curve.Points); // traced again: the same result
+}
