@@ -7,12 +7,12 @@
 // - BM_OneStepCurveEdit/threads:N: 10 circles x 12 control points in two clusters of
 //   overlapping ones, union of all shapes; each iteration moves the curves (switches between two
 //   prepared curve sets: the same circles moved by 5 % of their radius and rotated by half a
-//   control-point step; every control point also moved by ~1e-12 so that no geodesic comes
-//   from the tracer's memory of earlier iterations) and updates: tracing, arrangement,
-//   labeling and Boolean all rerun.
+//   control-point step; every control point also moved by ~1e-12 so that no curve is
+//   recalled from the tracer's memory of earlier iterations) and updates: tracing,
+//   arrangement, labeling and Boolean all rerun.
 // - BM_OneStepDragOneCurve/threads:N: same scene; each iteration moves one circle (the next
-//   one each time) and the other nine stay: a user dragging one curve among many (their
-//   geodesics come from the tracer's memory).
+//   one each time) and the other nine stay: a user dragging one curve among many (the tracer
+//   recalls the nine).
 // - BM_OneStepOperationChange/threads:N: same scene; each iteration only toggles Union and
 //   SymmetricDifference (the labeled arrangement is reused, only the Boolean reruns).
 // - BM_OneStepPaperScaleXor/threads:N: 112 circles x 32 control points (the scale of the paper's
@@ -610,8 +610,8 @@ void ReportRegion(benchmark::State& state, vtkBoolSurf* filter, double startRssM
 
 /// A copy of `curves` whose control points of cells `first` to `last` moved by about 1e-12 of
 /// their triangle (barycentric weights shifted by `step` ulps-scale amounts): the same shapes,
-/// but end points never traced before, so no geodesic comes from the tracer's memory of
-/// earlier iterations, as after a real edit (the two prepared versions alone would be
+/// but control points never traced before, so no curve is recalled from the tracer's memory
+/// of earlier iterations, as after a real edit (the two prepared versions alone would be
 /// remembered after two iterations).
 vtkSmartPointer<vtkPolyData> Moved(vtkPolyData* curves, vtkIdType first, vtkIdType last, int step)
 {
