@@ -176,7 +176,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   if (!surface)
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   this->UpdateProgress(0.05);
 
@@ -203,7 +203,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
     if (!this->LabelCurves(*surface, curvesInput, error))
     {
       vtkErrorMacro(<< error);
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     in.HasLabels = true;
     in.LabeledKey = key;
@@ -222,13 +222,13 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
           *surface, vtkPolyData::GetData(inputVector[2], 0), surfaceInput, error))
     {
       vtkErrorMacro(<< error);
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
   }
   else if (!boolsurf::SelectRequestedCells(in.Labels, request, in.Selected, text, error))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   boolsurf::RegionExtractor::SelectedTriangles(in.Selected, in.Arrangement, in.RegionTriangles);
   const boolsurf::Arrangement& arr = in.Arrangement;
@@ -270,7 +270,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
       region->Initialize();
       boundary->Initialize();
       boundaryControls->Initialize();
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     boolsurf::WriteControlSubCurves(in.SubCurves, "ClippedPiece", false, clipped);
   }

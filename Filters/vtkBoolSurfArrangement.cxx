@@ -78,13 +78,13 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   if (!surface)
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   std::vector<boolsurf::TracedCurve> curves;
   if (!boolsurf::ReadTracedCurves(curvesInput, *surface->Mesh, curves, problems))
   {
     vtkErrorMacro(<< "Invalid traced curves:" << boolsurf::JoinLines(problems));
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   this->UpdateProgress(0.1);
   if (this->CheckAbort())
@@ -100,7 +100,7 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
         error))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   // Each patch as control points of its input curve (when the curves came from Trace Surface
   // Curves, which records them), for the Boolean's vector output.

@@ -56,13 +56,13 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
   if (!boolsurf::ReadArrangementFields(input, fields, error))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   std::vector<boolsurf::SampleQuery> queries;
   if (!boolsurf::ReadSampleQueries(samples, nullptr, queries, error))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   std::vector<boolsurf::PatchSnap> snaps;
   boolsurf::BscResult result;
@@ -77,7 +77,7 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
         [this] { return this->CheckAbort(); }))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   this->UpdateProgress(0.5);
   boolsurf::WriteSelection(

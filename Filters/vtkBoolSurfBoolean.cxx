@@ -58,7 +58,7 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
     if (!boolsurf::ReadArrangementFields(input, fields, error))
     {
       vtkErrorMacro(<< error);
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     const int ns = fields.NumberOfShapes;
     if (cellLabels->GetNumberOfComponents() != ns ||
@@ -69,7 +69,7 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
                     << cellLabels->GetNumberOfComponents() << ") or ShapeConsistent ("
                     << consistent->GetNumberOfTuples() << ") does not match the arrangement's "
                     << fields.NumberOfCells << " cells and " << ns << " shapes");
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     labels.NumberOfShapes = ns;
     labels.ShapeIds = fields.ShapeIds;
@@ -101,7 +101,7 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
           input, boolsurf::LabelingOutputOptions(), labeled, fields, labels, error, warning))
     {
       vtkErrorMacro(<< error);
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
   }
   this->UpdateProgress(0.5);
@@ -111,7 +111,7 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
         labeled, fields, labels, request, region, boundary, error, controls, clipped, &note))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   if (!note.empty())
   {

@@ -45,7 +45,7 @@ int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
   if (!boolsurf::LabelArrangement(input, options, output, fields, labels, error, warning))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   if (!warning.empty())
   {

@@ -41,6 +41,12 @@ class vtkAlgorithm;
 class vtkInformationVector;
 class vtkPolyData;
 
+/// What a filter's RequestData returns after reporting an error: success, with its outputs
+/// empty. A failure (0) would stop the pipeline there, and a ParaView representation
+/// downstream that did not update would then ignore every later change upstream (it asks to
+/// re-execute again only once it has updated), so the view would stop following the drawing.
+constexpr int vtkBoolSurfErrorReported = 1;
+
 class vtkBoolSurfRankGather
 {
 public:

@@ -139,6 +139,12 @@ void WriteRegion(const vtkSurfaceInput& surface,
   region->GetCellData()->AddArray(cell);
   region->GetCellData()->AddArray(source);
   AddSurfacePointArrays(pointSurface, region->GetPointData());
+  // ParaView colors a new display by the active scalars: unless the surface brings its own,
+  // the region shows its arrangement cells, distinct from the surface it lies on.
+  if (!region->GetPointData()->GetScalars() && !region->GetCellData()->GetScalars())
+  {
+    region->GetCellData()->SetActiveScalars("ArrangementCell");
+  }
 }
 
 } // namespace boolsurf

@@ -62,12 +62,12 @@ int vtkBoolSurfResolve::RequestData(vtkInformation* vtkNotUsed(request),
   if (!surface)
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   if (!curvesInput)
   {
     vtkErrorMacro(<< "no control curves on input port 1");
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   boolsurf::ResolveStageOptions options;
   options.Strategy = static_cast<boolsurf::ResolveStrategy>(this->Strategy);
@@ -77,7 +77,7 @@ int vtkBoolSurfResolve::RequestData(vtkInformation* vtkNotUsed(request),
   if (!boolsurf::ParseShapeStrategies(this->ShapeStrategies, options.PerShape, error))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   std::vector<std::string> notes;
   const bool ok = boolsurf::ResolveControlCurves(
@@ -90,7 +90,7 @@ int vtkBoolSurfResolve::RequestData(vtkInformation* vtkNotUsed(request),
   {
     output->Initialize();
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   this->UpdateProgress(1.0);
   return 1;

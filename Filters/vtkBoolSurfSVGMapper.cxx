@@ -65,7 +65,7 @@ int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
   if (this->FileName.empty())
   {
     vtkErrorMacro("No FileName: set the SVG file to map.");
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   std::vector<std::string> warnings;
   std::string error;
@@ -74,14 +74,14 @@ int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
   if (!surface)
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   const boolsurf::TriangleMesh& mesh = *surface->Mesh;
   boolsurf::SvgDrawing drawing;
   if (!boolsurf::LoadSvg(this->FileName, drawing, error))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   this->UpdateProgress(0.2);
 
@@ -92,13 +92,13 @@ int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
     {
       vtkErrorMacro("CenterTriangleId " << this->CenterTriangleId << " is not a triangle of the "
                                         << mesh.GetNumberOfTriangles() << "-triangle surface");
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     double u = this->CenterBarycentric[0], v = this->CenterBarycentric[1];
     if (!std::isfinite(u) || !std::isfinite(v) || u < -1e-6 || v < -1e-6 || u + v > 1 + 1e-6)
     {
       vtkErrorMacro("CenterBarycentric (" << u << ", " << v << ") is outside the triangle");
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     boolsurf::ClampBarycentric(u, v);
     options.Center = { static_cast<int>(this->CenterTriangleId), u, v };
@@ -114,7 +114,7 @@ int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
     if (cell < 0)
     {
       vtkErrorMacro("no surface point near Center");
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     const int t = static_cast<int>(cell);
     const boolsurf::Vec3 a = mesh.GetCornerPosition(t, 0);
@@ -155,7 +155,7 @@ int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
   if (!boolsurf::MapSvgOntoSurface(mesh, drawing, options, curves, drawing.Warnings, error))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   this->UpdateProgress(0.9);
 

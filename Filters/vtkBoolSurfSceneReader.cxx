@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSceneReader.h"
 
+#include "vtkBoolSurfRankGather.h"
+
 #include "Mesh/ObjCheck.h"
 #include "Mesh/PlyReader.h"
 #include "Mesh/SurfacePoint.h"
@@ -962,7 +964,7 @@ int vtkBoolSurfSceneReader::RequestData(vtkInformation*,
   if (this->FileName.empty())
   {
     vtkErrorMacro("No FileName: set the BoolSurf scene (.json) to read.");
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   const fs::path file(this->FileName);
   Scene scene;

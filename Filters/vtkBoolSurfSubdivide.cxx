@@ -122,14 +122,14 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
   if (!surface || !curves)
   {
     vtkErrorMacro("Both inputs are needed: the surface (port 0) and the curves (port 1).");
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   std::vector<boolsurf::Triangle> parent;
   std::string error;
   if (!TrianglesOf(surface, parent, error))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   vtkDataArray* triangleIds = curves->GetPointData()->GetArray("TriangleId");
   vtkDataArray* barycentric = curves->GetPointData()->GetArray("Barycentric");
@@ -140,7 +140,7 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
   {
     vtkErrorMacro("The curves have no surface points: point data TriangleId and Barycentric (2 "
                   "components, one per point) are needed.");
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
   std::vector<boolsurf::SurfacePoint> points(static_cast<std::size_t>(numberOfPoints));
   for (vtkIdType p = 0; p < numberOfPoints; ++p)
@@ -151,13 +151,13 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
     {
       vtkErrorMacro("Curve point " << p << ": TriangleId " << t << " is not a triangle of the "
                                    << parent.size() << "-triangle surface.");
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     if (!std::isfinite(u) || !std::isfinite(v) || u < -1e-6 || v < -1e-6 || u + v > 1 + 1e-6)
     {
       vtkErrorMacro(
         "Curve point " << p << ": Barycentric (" << u << ", " << v << ") is outside its triangle.");
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     points[p] = { static_cast<int>(t), std::max(u, 0.0), std::max(v, 0.0) };
   }
@@ -194,14 +194,14 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
                                         << (this->Scheme == LOOP ? "Loop" : "linear")
                                         << ") failed: " << errors.Text);
       surfaceOut->Initialize();
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     boolsurf::SubdivisionMap map;
     if (!TrianglesOf(finer, child, error) ||
       !map.Build(parent, static_cast<int>(current->GetNumberOfPoints()), child, error))
     {
       vtkErrorMacro("Subdivision step " << level + 1 << ": " << error);
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     for (boolsurf::SurfacePoint& p : points)
     {

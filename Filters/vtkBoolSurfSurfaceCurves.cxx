@@ -200,7 +200,7 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
   if (!surface || surface->GetNumberOfCells() == 0)
   {
     vtkErrorMacro("The surface is empty: curves are drawn on a triangle surface.");
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
 
   const vtkIdType points = this->GetNumberOfPoints();
@@ -214,7 +214,7 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
     if (sizes[c] < 1)
     {
       vtkErrorMacro("Curve " << c << " has " << sizes[c] << " control points (CurveSizes).");
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
   }
   const long long total = std::accumulate(sizes.begin(), sizes.end(), 0LL);
@@ -222,8 +222,10 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
   {
     vtkErrorMacro("CurveSizes add up to " << total << " control points, but " << points
                                           << " Points are given.");
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
+  // TriangleIds: none (every point snapped) or one per point, -1 marking a point to snap (the
+  // curve editor stores the points it has placed exactly and snaps the one being dragged).
   const bool exact = !this->TriangleIds.empty();
   if (exact &&
     (static_cast<vtkIdType>(this->TriangleIds.size()) != points ||
@@ -232,7 +234,7 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
     vtkErrorMacro("Exact surface points need a TriangleId and a Barycentric pair for each of the "
       << points << " Points; got " << this->TriangleIds.size() << " TriangleIds and "
       << this->Barycentrics.size() / 2 << " Barycentrics.");
-    return 0;
+    return vtkBoolSurfErrorReported;
   }
 
   // Surface points: given exactly, or the closest surface point of each position.
@@ -246,14 +248,17 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
   barycentric->SetName("Barycentric");
   barycentric->SetNumberOfComponents(2);
   barycentric->SetNumberOfTuples(points);
-  vtkStaticCellLocator* locator = exact ? nullptr : this->Internal->For(surface);
+  const bool snaps = !exact ||
+    std::find(this->TriangleIds.begin(), this->TriangleIds.end(), -1) != this->TriangleIds.end();
+  vtkStaticCellLocator* locator = snaps ? this->Internal->For(surface) : nullptr;
   const vtkIdType triangles = surface->GetNumberOfCells();
   for (vtkIdType i = 0; i < points; ++i)
   {
     vtkIdType triangle = -1;
     double u = 0, v = 0;
     double closest[3] = { 0, 0, 0 };
-    if (exact)
+    const bool given = exact && this->TriangleIds[i] != -1;
+    if (given)
     {
       triangle = this->TriangleIds[i];
       u = this->Barycentrics[2 * i];
@@ -263,14 +268,14 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
         vtkErrorMacro("Point " << i << ": TriangleId " << triangle
                                << " is not a triangle of the surface (it has " << triangles
                                << ").");
-        return 0;
+        return vtkBoolSurfErrorReported;
       }
       const double slack = 1e-12;
       if (!(u >= -slack && v >= -slack && u + v <= 1 + slack))
       {
         vtkErrorMacro("Point " << i << ": Barycentric (" << u << ", " << v
                                << ") is outside triangle " << triangle << ".");
-        return 0;
+        return vtkBoolSurfErrorReported;
       }
     }
     else
@@ -287,14 +292,14 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
     {
       vtkErrorMacro("Point " << i << ": cell " << triangle << " of the surface has " << n
                              << " points, not 3: triangulate the surface first.");
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     double p[3][3];
     for (int k = 0; k < 3; ++k)
     {
       surface->GetPoint(corners[k], p[k]);
     }
-    if (!exact)
+    if (!given)
     {
       double weights[3];
       vtkTriangle::BarycentricCoords(closest, p[0], p[1], p[2], weights);
@@ -333,12 +338,12 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
     {
       vtkErrorMacro("Curve " << c << ": CurveType " << type
                              << " is neither 0 (geodesic polygon) nor 1 (cubic Bezier).");
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     if (shape < 0)
     {
       vtkErrorMacro("Curve " << c << ": ShapeId " << shape << " is negative.");
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     const int size = sizes[c];
     if (type == 1 && (isClosed ? size % 3 != 0 : size % 3 != 1))
@@ -347,7 +352,7 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
                              << " cubic Bezier spline needs " << (isClosed ? "3n" : "3n+1")
                              << " control points (anchor, handle, handle, ...); it has " << size
                              << ".");
-      return 0;
+      return vtkBoolSurfErrorReported;
     }
     lines->InsertNextCell(size + (isClosed ? 1 : 0));
     for (int k = 0; k < size; ++k)

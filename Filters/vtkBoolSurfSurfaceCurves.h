@@ -12,11 +12,12 @@
  *
  * Points: `Points` are 3D positions snapped to the closest point of the input surface,
  * unless `TriangleIds` (and `Barycentrics`, two weights per point: of the triangle's 2nd and
- * 3rd vertex) are given for every point, which place them exactly; the output positions are
- * then computed from the surface points. Curves: `CurveSizes` gives the number of control
- * points of each curve in order (empty: all points are one curve); per curve, `ShapeIds`
- * (default: the curve's index), `CurveTypes` (default 0) and `ClosedCurves` (default 1) may
- * be shorter than the curve list, the defaults filling the rest.
+ * 3rd vertex) are given for every point, which place them exactly (a TriangleId of -1 snaps
+ * that point's position instead: the curve editor keeps the points it placed exact and snaps
+ * the one being dragged); the output positions are then computed from the surface points. Curves:
+ * `CurveSizes` gives the number of control points of each curve in order (empty: all points are one
+ * curve); per curve, `ShapeIds` (default: the curve's index), `CurveTypes` (default 0) and
+ * `ClosedCurves` (default 1) may be shorter than the curve list, the defaults filling the rest.
  *
  * Errors (empty output) name the problem: sizes that do not add up to the number of points,
  * a TriangleId count that is neither 0 nor the number of points, a triangle id that is not a
@@ -53,7 +54,7 @@ public:
 
   ///@{
   /// Exact surface points: a triangle of the surface and the weights of its 2nd and 3rd
-  /// vertex, for every point (or none).
+  /// vertex, for every point (or none); -1 snaps that point's position.
   void SetNumberOfTriangleIds(int n);
   void SetTriangleId(int i, vtkIdType triangle);
   void SetNumberOfBarycentrics(int n);

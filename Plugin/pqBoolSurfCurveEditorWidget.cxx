@@ -1,0 +1,832 @@
+#include "pqBoolSurfCurveEditorWidget.h"
+
+#include "pqBoolSurfDrawing.h"
+
+#include "pqRenderView.h"
+#include "pqUndoStack.h"
+#include "vtkActor.h"
+#include "vtkAlgorithm.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkEventQtSlotConnect.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPVDataInformation.h"
+#include "vtkPVRenderView.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkSMInputProperty.h"
+#include "vtkSMPropertyHelper.h"
+#include "vtkSMRenderViewProxy.h"
+#include "vtkSMSessionProxyManager.h"
+#include "vtkSMSourceProxy.h"
+#include "vtkSMTrace.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+#include "vtkWeakPointer.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPointer>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <limits>
+
+namespace
+{
+// The properties the editor writes, in the order of pqBoolSurfDrawing::Properties.
+const char* const EditedProperties[] = { "Points",
+  "TriangleIds",
+  "Barycentrics",
+  "CurveSizes",
+  "ShapeIds",
+  "CurveTypes",
+  "ClosedCurves" };
+
+// A press and release closer than this (pixels) is a click, not a camera drag.
+constexpr double ClickSlack = 4;
+// A control point is under the mouse within this distance (pixels).
+constexpr double GrabRadius = 10;
+
+template <typename T>
+void SetVector(vtkSMProxy* proxy, const char* name, const std::vector<T>& values)
+{
+  vtkSMPropertyHelper helper(proxy, name);
+  if (values.empty())
+  {
+    helper.SetNumberOfElements(0);
+  }
+  else
+  {
+    helper.Set(values.data(), static_cast<unsigned int>(values.size()));
+  }
+}
+
+// One group of markers: spheres of a color at some control points.
+struct Markers
+{
+  vtkNew<vtkPolyData> Centers;
+  vtkNew<vtkSphereSource> Sphere;
+  vtkNew<vtkGlyph3DMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+
+  Markers(double r, double g, double b)
+  {
+    this->Sphere->SetThetaResolution(16);
+    this->Sphere->SetPhiResolution(12);
+    this->Mapper->SetInputData(this->Centers);
+    this->Mapper->SetSourceConnection(this->Sphere->GetOutputPort());
+    this->Mapper->ScalingOff();
+    this->Mapper->ScalarVisibilityOff();
+    this->Actor->SetMapper(this->Mapper);
+    this->Actor->GetProperty()->SetColor(r, g, b);
+    this->Actor->PickableOff();
+  }
+  void Set(const std::vector<std::array<double, 3>>& centers, double radius)
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (const auto& c : centers)
+    {
+      points->InsertNextPoint(c.data());
+    }
+    this->Centers->SetPoints(points);
+    this->Sphere->SetRadius(radius);
+    this->Actor->SetVisibility(!centers.empty());
+  }
+};
+}
+
+struct pqBoolSurfCurveEditorWidget::Internals
+{
+  pqBoolSurfDrawing Drawing;
+  int Current = -1; // the curve clicks add to (-1: the next click starts a curve)
+  pqBoolSurfDrawing::Handle Selected;
+
+  // Interaction state.
+  bool Dragging = false;
+  bool DragMoved = false;
+  bool ClickPending = false;
+  int PressPosition[2] = { 0, 0 };
+  bool Writing = false; // our own property writes must not reload the drawing
+
+  QPointer<pqRenderView> View;
+  vtkWeakPointer<vtkRenderWindowInteractor> Interactor;
+  vtkWeakPointer<vtkRenderer> MarkerRenderer;
+  vtkNew<vtkCallbackCommand> Observer;
+  std::vector<unsigned long> ObserverTags;
+  Markers Others{ 0.95, 0.85, 0.25 };
+  Markers CurrentCurve{ 1.0, 0.5, 0.05 };
+  Markers SelectedPoint{ 0.85, 0.1, 0.1 };
+  vtkNew<vtkEventQtSlotConnect> PropertyConnections;
+  QTimer LoadTimer;
+
+  QCheckBox* Editing = nullptr;
+  QSpinBox* CurveIndex = nullptr;
+  QLabel* CurveCount = nullptr;
+  QSpinBox* Shape = nullptr;
+  QComboBox* Type = nullptr;
+  QCheckBox* Closed = nullptr;
+  QPushButton* DeletePoint = nullptr;
+  QPushButton* DeleteCurve = nullptr;
+  QLabel* Status = nullptr;
+
+  pqBoolSurfDrawing::Curve* CurrentCurvePtr()
+  {
+    return this->Current >= 0 && this->Current < static_cast<int>(this->Drawing.Curves.size())
+      ? &this->Drawing.Curves[this->Current]
+      : nullptr;
+  }
+};
+
+//------------------------------------------------------------------------------
+pqBoolSurfCurveEditorWidget::pqBoolSurfCurveEditorWidget(vtkSMProxy* smproxy,
+  vtkSMPropertyGroup* group,
+  QWidget* parentWidget)
+  : Superclass(smproxy, parentWidget)
+  , Internal(new Internals())
+{
+  Q_UNUSED(group);
+  Internals& internal = *this->Internal;
+  this->setShowLabel(false);
+  this->setChangeAvailableAsChangeFinished(true);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  internal.Editing = new QCheckBox(tr("Edit curves in the render view"), this);
+  internal.Editing->setObjectName("EditInView");
+  internal.Editing->setChecked(true);
+  internal.Editing->setToolTip(tr("Click the surface to add a control point to the current "
+                                  "curve, drag a point to slide it along the surface, click the "
+                                  "first point of an open curve to close it, Shift+click a point "
+                                  "to delete it. Dragging elsewhere rotates the camera."));
+  layout->addWidget(internal.Editing);
+
+  auto* grid = new QGridLayout();
+  int row = 0;
+  grid->addWidget(new QLabel(tr("Curve"), this), row, 0);
+  internal.CurveIndex = new QSpinBox(this);
+  internal.CurveIndex->setObjectName("CurveIndex");
+  internal.CurveIndex->setToolTip(tr("The current curve: clicks on the surface add to it."));
+  grid->addWidget(internal.CurveIndex, row, 1);
+  internal.CurveCount = new QLabel(this);
+  grid->addWidget(internal.CurveCount, row, 2);
+  ++row;
+  grid->addWidget(new QLabel(tr("Shape"), this), row, 0);
+  internal.Shape = new QSpinBox(this);
+  internal.Shape->setObjectName("Shape");
+  internal.Shape->setRange(0, std::numeric_limits<int>::max());
+  internal.Shape->setToolTip(tr("The shape (ShapeId) the current curve bounds."));
+  grid->addWidget(internal.Shape, row, 1);
+  internal.Closed = new QCheckBox(tr("Closed"), this);
+  internal.Closed->setObjectName("Closed");
+  grid->addWidget(internal.Closed, row, 2);
+  ++row;
+  grid->addWidget(new QLabel(tr("Type"), this), row, 0);
+  internal.Type = new QComboBox(this);
+  internal.Type->setObjectName("CurveType");
+  internal.Type->addItem(tr("Geodesic polygon"));
+  internal.Type->addItem(tr("Cubic Bezier spline"));
+  internal.Type->setToolTip(tr("A Bezier spline's points are anchor, handle, handle, ...: a "
+                               "closed one has 3n points, an open one 3n+1."));
+  grid->addWidget(internal.Type, row, 1, 1, 2);
+  layout->addLayout(grid);
+
+  auto* buttons = new QHBoxLayout();
+  auto* add = new QPushButton(tr("New Curve"), this);
+  add->setObjectName("NewCurve");
+  add->setToolTip(tr("The next click on the surface starts a new curve."));
+  internal.DeletePoint = new QPushButton(tr("Delete Point"), this);
+  internal.DeletePoint->setObjectName("DeletePoint");
+  internal.DeleteCurve = new QPushButton(tr("Delete Curve"), this);
+  internal.DeleteCurve->setObjectName("DeleteCurve");
+  auto* clear = new QPushButton(tr("Clear"), this);
+  clear->setObjectName("ClearAll");
+  clear->setToolTip(tr("Removes every curve."));
+  buttons->addWidget(add);
+  buttons->addWidget(internal.DeletePoint);
+  buttons->addWidget(internal.DeleteCurve);
+  buttons->addWidget(clear);
+  layout->addLayout(buttons);
+  internal.Status = new QLabel(this);
+  internal.Status->setObjectName("Status");
+  internal.Status->setWordWrap(true);
+  layout->addWidget(internal.Status);
+
+  QObject::connect(
+    internal.Editing, &QCheckBox::toggled, this, &pqBoolSurfCurveEditorWidget::setEditing);
+  QObject::connect(internal.CurveIndex,
+    QOverload<int>::of(&QSpinBox::valueChanged),
+    this,
+    &pqBoolSurfCurveEditorWidget::setCurrentCurve);
+  QObject::connect(internal.Shape,
+    QOverload<int>::of(&QSpinBox::valueChanged),
+    this,
+    &pqBoolSurfCurveEditorWidget::setShape);
+  QObject::connect(internal.Type,
+    QOverload<int>::of(&QComboBox::currentIndexChanged),
+    this,
+    &pqBoolSurfCurveEditorWidget::setCurveType);
+  QObject::connect(
+    internal.Closed, &QCheckBox::toggled, this, &pqBoolSurfCurveEditorWidget::setClosed);
+  QObject::connect(add, &QPushButton::clicked, this, &pqBoolSurfCurveEditorWidget::newCurve);
+  QObject::connect(
+    internal.DeletePoint, &QPushButton::clicked, this, &pqBoolSurfCurveEditorWidget::deletePoint);
+  QObject::connect(
+    internal.DeleteCurve, &QPushButton::clicked, this, &pqBoolSurfCurveEditorWidget::deleteCurve);
+  QObject::connect(clear, &QPushButton::clicked, this, &pqBoolSurfCurveEditorWidget::clearAll);
+
+  // Undo, redo, state loading and Python change the properties behind our back: reload (once
+  // per burst of changes).
+  internal.LoadTimer.setSingleShot(true);
+  internal.LoadTimer.setInterval(0);
+  QObject::connect(
+    &internal.LoadTimer, &QTimer::timeout, this, &pqBoolSurfCurveEditorWidget::loadFromProxy);
+  for (const char* name : EditedProperties)
+  {
+    if (vtkSMProperty* property = smproxy->GetProperty(name))
+    {
+      internal.PropertyConnections->Connect(
+        property, vtkCommand::ModifiedEvent, this, SLOT(scheduleLoad()));
+    }
+  }
+
+  internal.Observer->SetClientData(this);
+  internal.Observer->SetCallback(&pqBoolSurfCurveEditorWidget::OnInteractorEvent);
+  this->loadFromProxy();
+}
+
+//------------------------------------------------------------------------------
+pqBoolSurfCurveEditorWidget::~pqBoolSurfCurveEditorWidget()
+{
+  this->Detach();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::reset()
+{
+  this->loadFromProxy();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::select()
+{
+  this->Superclass::select();
+  this->Attach();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::deselect()
+{
+  this->Superclass::deselect();
+  this->Detach();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::setView(pqView* view)
+{
+  this->Superclass::setView(view);
+  this->Detach();
+  this->Attach();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::setEditing(bool editing)
+{
+  if (editing)
+  {
+    this->Attach();
+  }
+  else
+  {
+    this->Detach();
+  }
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::Attach()
+{
+  Internals& internal = *this->Internal;
+  auto* view = qobject_cast<pqRenderView*>(this->view());
+  if (!this->isSelected() || !internal.Editing->isChecked() || !view || internal.View)
+  {
+    return;
+  }
+  vtkSMRenderViewProxy* viewProxy = view->getRenderViewProxy();
+  auto* pvView = vtkPVRenderView::SafeDownCast(viewProxy->GetClientSideObject());
+  vtkRenderWindowInteractor* interactor = viewProxy->GetInteractor();
+  if (!pvView || !interactor)
+  {
+    return;
+  }
+  internal.View = view;
+  internal.Interactor = interactor;
+  // Above the camera's interactor style (priority 0) and ParaView's 3D widgets.
+  const float priority = 2.0f;
+  for (unsigned long event : { vtkCommand::LeftButtonPressEvent,
+         vtkCommand::MouseMoveEvent,
+         vtkCommand::LeftButtonReleaseEvent })
+  {
+    internal.ObserverTags.push_back(interactor->AddObserver(event, internal.Observer, priority));
+  }
+  internal.MarkerRenderer = pvView->GetNonCompositedRenderer();
+  for (Markers* markers : { &internal.Others, &internal.CurrentCurve, &internal.SelectedPoint })
+  {
+    internal.MarkerRenderer->AddActor(markers->Actor);
+  }
+  this->UpdateMarkers();
+  view->render();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::Detach()
+{
+  Internals& internal = *this->Internal;
+  if (internal.Interactor)
+  {
+    for (unsigned long tag : internal.ObserverTags)
+    {
+      internal.Interactor->RemoveObserver(tag);
+    }
+  }
+  internal.ObserverTags.clear();
+  internal.Interactor = nullptr;
+  if (internal.MarkerRenderer)
+  {
+    for (Markers* markers : { &internal.Others, &internal.CurrentCurve, &internal.SelectedPoint })
+    {
+      internal.MarkerRenderer->RemoveActor(markers->Actor);
+    }
+  }
+  internal.MarkerRenderer = nullptr;
+  internal.Dragging = internal.ClickPending = false;
+  if (internal.View)
+  {
+    internal.View->render();
+  }
+  internal.View = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::OnInteractorEvent(vtkObject*,
+  unsigned long event,
+  void* self,
+  void*)
+{
+  auto* widget = static_cast<pqBoolSurfCurveEditorWidget*>(self);
+  widget->Internal->Observer->SetAbortFlag(widget->HandleInteractorEvent(event) ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
+bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
+{
+  Internals& internal = *this->Internal;
+  if (!internal.View || !internal.Interactor)
+  {
+    return false;
+  }
+  vtkSMRenderViewProxy* viewProxy = internal.View->getRenderViewProxy();
+  int position[2];
+  internal.Interactor->GetEventPosition(position);
+  const double moved =
+    std::hypot(position[0] - internal.PressPosition[0], position[1] - internal.PressPosition[1]);
+
+  // The control point under the mouse, if any.
+  auto pointUnderMouse = [&]()
+  {
+    pqBoolSurfDrawing::Handle best;
+    double bestDistance = GrabRadius;
+    vtkRenderer* renderer = viewProxy->GetRenderer();
+    for (int c = 0; c < static_cast<int>(internal.Drawing.Curves.size()); ++c)
+    {
+      const auto& points = internal.Drawing.Curves[c].Points;
+      for (int k = 0; k < static_cast<int>(points.size()); ++k)
+      {
+        const auto& x = points[k].Position;
+        renderer->SetWorldPoint(x[0], x[1], x[2], 1.0);
+        renderer->WorldToDisplay();
+        double display[3];
+        renderer->GetDisplayPoint(display);
+        const double d = std::hypot(display[0] - position[0], display[1] - position[1]);
+        if (d < bestDistance)
+        {
+          bestDistance = d;
+          best = { c, k };
+        }
+      }
+    }
+    return best;
+  };
+  auto pickSurface = [&](std::array<double, 3>& world)
+  {
+    double normal[3];
+    return viewProxy->ConvertDisplayToPointOnSurface(position, world.data(), normal) &&
+      std::isfinite(world[0]) && std::isfinite(world[1]) && std::isfinite(world[2]);
+  };
+
+  switch (event)
+  {
+    case vtkCommand::LeftButtonPressEvent:
+    {
+      internal.PressPosition[0] = position[0];
+      internal.PressPosition[1] = position[1];
+      const pqBoolSurfDrawing::Handle under = pointUnderMouse();
+      if (!under.Valid())
+      {
+        internal.ClickPending = !internal.Interactor->GetShiftKey();
+        return false; // the camera may start a drag
+      }
+      if (internal.Interactor->GetShiftKey())
+      {
+        BEGIN_UNDO_SET(tr("Delete control point"));
+        internal.Drawing.RemovePoint(under);
+        internal.Selected = {};
+        this->Push();
+        END_UNDO_SET();
+        return true;
+      }
+      internal.Selected = under;
+      internal.Current = under.Curve;
+      internal.Dragging = true;
+      internal.DragMoved = false;
+      BEGIN_UNDO_SET(tr("Move control point"));
+      this->UpdateMarkers();
+      this->UpdateControls();
+      internal.View->render();
+      return true;
+    }
+    case vtkCommand::MouseMoveEvent:
+    {
+      if (internal.ClickPending && moved > ClickSlack)
+      {
+        internal.ClickPending = false; // a camera drag
+      }
+      if (!internal.Dragging)
+      {
+        return false;
+      }
+      if (!internal.DragMoved && moved <= ClickSlack)
+      {
+        return true;
+      }
+      internal.DragMoved = true;
+      std::array<double, 3> world;
+      pqBoolSurfDrawing::Point* point = internal.Drawing.Find(internal.Selected);
+      if (point && pickSurface(world))
+      {
+        point->Position = world;
+        point->Triangle = -1; // snapped by the source while dragging
+        this->Push();
+      }
+      return true;
+    }
+    case vtkCommand::LeftButtonReleaseEvent:
+    {
+      if (internal.Dragging)
+      {
+        internal.Dragging = false;
+        pqBoolSurfDrawing::Curve* curve = internal.CurrentCurvePtr();
+        if (!internal.DragMoved && curve && !curve->Closed && internal.Selected.Index == 0 &&
+          curve->Points.size() >= 3)
+        {
+          curve->Closed = true; // a click on the first point closes the curve
+          this->Push();
+        }
+        else if (internal.DragMoved)
+        {
+          this->ReadBackExactPoints();
+        }
+        END_UNDO_SET();
+        return true;
+      }
+      if (!internal.ClickPending)
+      {
+        return false;
+      }
+      internal.ClickPending = false;
+      std::array<double, 3> world;
+      if (!pickSurface(world))
+      {
+        return false;
+      }
+      BEGIN_UNDO_SET(tr("Add control point"));
+      const int after = internal.Selected.Curve == internal.Current ? internal.Selected.Index : -1;
+      internal.Selected = internal.Drawing.InsertPoint(internal.Current, after, world);
+      internal.Current = internal.Selected.Curve;
+      this->Push();
+      this->ReadBackExactPoints();
+      END_UNDO_SET();
+      return false;
+    }
+    default:
+      return false;
+  }
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::Push()
+{
+  Internals& internal = *this->Internal;
+  vtkSMProxy* smproxy = this->proxy();
+  const pqBoolSurfDrawing::Properties values = internal.Drawing.ToProperties();
+  internal.Writing = true;
+  {
+    SM_SCOPED_TRACE(PropertiesModified).arg("proxy", smproxy);
+    SetVector(smproxy, "Points", values.Points);
+    SetVector(smproxy, "TriangleIds", values.TriangleIds);
+    SetVector(smproxy, "Barycentrics", values.Barycentrics);
+    SetVector(smproxy, "CurveSizes", values.CurveSizes);
+    SetVector(smproxy, "ShapeIds", values.ShapeIds);
+    SetVector(smproxy, "CurveTypes", values.CurveTypes);
+    SetVector(smproxy, "ClosedCurves", values.ClosedCurves);
+  }
+  smproxy->UpdateVTKObjects();
+  internal.Writing = false;
+  internal.LoadTimer.stop();
+  this->UpdateMarkers();
+  this->UpdateControls();
+  if (pqView* view = this->view())
+  {
+    view->render(); // the source and everything downstream update now
+  }
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::ReadBackExactPoints()
+{
+  Internals& internal = *this->Internal;
+  vtkSMProxy* smproxy = this->proxy();
+  vtkSMSessionProxyManager* pxm = smproxy->GetSessionProxyManager();
+  // As paraview.servermanager.Fetch does: a reduction filter brings the output to the client
+  // (from the first rank, which alone holds the curves under MPI).
+  vtkSmartPointer<vtkSMSourceProxy> reducer;
+  reducer.TakeReference(
+    vtkSMSourceProxy::SafeDownCast(pxm->NewProxy("filters", "ReductionFilter")));
+  if (!reducer)
+  {
+    return;
+  }
+  vtkSMPropertyHelper(reducer, "Input").Set(smproxy, 0);
+  vtkSMPropertyHelper(reducer, "PostGatherHelperName").Set("vtkAppendPolyData");
+  reducer->UpdateVTKObjects();
+  reducer->UpdatePipeline();
+  auto* algorithm = vtkAlgorithm::SafeDownCast(reducer->GetClientSideObject());
+  vtkPolyData* output =
+    algorithm ? vtkPolyData::SafeDownCast(algorithm->GetOutputDataObject(0)) : nullptr;
+  vtkDataArray* triangles = output ? output->GetPointData()->GetArray("TriangleId") : nullptr;
+  vtkDataArray* weights = output ? output->GetPointData()->GetArray("Barycentric") : nullptr;
+  const int points = internal.Drawing.NumberOfPoints();
+  if (!triangles || !weights || weights->GetNumberOfComponents() != 2 ||
+    output->GetNumberOfPoints() != points)
+  {
+    // The source failed (its message says why, e.g. a Bezier curve with a point count that
+    // does not fit): the points stay positions to snap.
+    return;
+  }
+  vtkIdType next = 0;
+  for (auto& curve : internal.Drawing.Curves)
+  {
+    for (auto& point : curve.Points)
+    {
+      point.Triangle = static_cast<vtkIdType>(triangles->GetComponent(next, 0));
+      point.Weights = { weights->GetComponent(next, 0), weights->GetComponent(next, 1) };
+      output->GetPoint(next, point.Position.data());
+      ++next;
+    }
+  }
+  this->Push();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::scheduleLoad()
+{
+  if (!this->Internal->Writing)
+  {
+    this->Internal->LoadTimer.start();
+  }
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::loadFromProxy()
+{
+  Internals& internal = *this->Internal;
+  vtkSMProxy* smproxy = this->proxy();
+  pqBoolSurfDrawing::Properties values;
+  values.Points = vtkSMPropertyHelper(smproxy, "Points").GetDoubleArray();
+  values.TriangleIds = vtkSMPropertyHelper(smproxy, "TriangleIds").GetIdTypeArray();
+  values.Barycentrics = vtkSMPropertyHelper(smproxy, "Barycentrics").GetDoubleArray();
+  values.CurveSizes = vtkSMPropertyHelper(smproxy, "CurveSizes").GetIntArray();
+  values.ShapeIds = vtkSMPropertyHelper(smproxy, "ShapeIds").GetIntArray();
+  values.CurveTypes = vtkSMPropertyHelper(smproxy, "CurveTypes").GetIntArray();
+  values.ClosedCurves = vtkSMPropertyHelper(smproxy, "ClosedCurves").GetIntArray();
+  internal.Drawing = pqBoolSurfDrawing::FromProperties(values);
+  const int curves = static_cast<int>(internal.Drawing.Curves.size());
+  if (internal.Current >= curves)
+  {
+    internal.Current = curves - 1;
+  }
+  if (!internal.Drawing.Find(internal.Selected))
+  {
+    internal.Selected = {};
+  }
+  this->UpdateMarkers();
+  this->UpdateControls();
+  if (internal.View)
+  {
+    internal.View->render();
+  }
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::UpdateControls()
+{
+  Internals& internal = *this->Internal;
+  const int curves = static_cast<int>(internal.Drawing.Curves.size());
+  const pqBoolSurfDrawing::Curve* curve = internal.CurrentCurvePtr();
+  for (QWidget* w : std::initializer_list<QWidget*>{
+         internal.CurveIndex, internal.Shape, internal.Type, internal.Closed })
+  {
+    w->blockSignals(true);
+  }
+  internal.CurveIndex->setRange(-1, std::max(0, curves - 1));
+  internal.CurveIndex->setSpecialValueText(tr("(new)"));
+  internal.CurveIndex->setValue(internal.Current);
+  internal.CurveCount->setText(tr("of %1").arg(curves));
+  internal.Shape->setEnabled(curve != nullptr);
+  internal.Type->setEnabled(curve != nullptr);
+  internal.Closed->setEnabled(curve != nullptr);
+  internal.DeleteCurve->setEnabled(curve != nullptr);
+  internal.DeletePoint->setEnabled(internal.Drawing.Find(internal.Selected) != nullptr);
+  if (curve)
+  {
+    internal.Shape->setValue(curve->Shape);
+    internal.Type->setCurrentIndex(curve->Type);
+    internal.Closed->setChecked(curve->Closed);
+  }
+  for (QWidget* w : std::initializer_list<QWidget*>{
+         internal.CurveIndex, internal.Shape, internal.Type, internal.Closed })
+  {
+    w->blockSignals(false);
+  }
+  QString status =
+    tr("%1 control points in %2 curves.").arg(internal.Drawing.NumberOfPoints()).arg(curves);
+  if (curve && curve->Type == 1 &&
+    (curve->Closed ? curve->Points.size() % 3 != 0 : curve->Points.size() % 3 != 1))
+  {
+    status += tr(" The current Bezier curve needs %1 control points (anchor, handle, handle, "
+                 "...).")
+                .arg(curve->Closed ? tr("3n") : tr("3n+1"));
+  }
+  internal.Status->setText(status);
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::UpdateMarkers()
+{
+  Internals& internal = *this->Internal;
+  std::vector<std::array<double, 3>> others, current, selected;
+  for (int c = 0; c < static_cast<int>(internal.Drawing.Curves.size()); ++c)
+  {
+    const auto& points = internal.Drawing.Curves[c].Points;
+    for (int k = 0; k < static_cast<int>(points.size()); ++k)
+    {
+      if (internal.Selected == pqBoolSurfDrawing::Handle{ c, k })
+      {
+        selected.push_back(points[k].Position);
+      }
+      else
+      {
+        (c == internal.Current ? current : others).push_back(points[k].Position);
+      }
+    }
+  }
+  // Marker size: a fraction of the surface's size.
+  double diagonal = 1;
+  vtkSMProxy* smproxy = this->proxy();
+  auto* input = vtkSMInputProperty::SafeDownCast(smproxy->GetProperty("Surface"));
+  auto* surface = input && input->GetNumberOfProxies() > 0
+    ? vtkSMSourceProxy::SafeDownCast(input->GetProxy(0))
+    : nullptr;
+  if (surface)
+  {
+    double bounds[6];
+    surface->GetDataInformation(input->GetOutputPortForConnection(0))->GetBounds(bounds);
+    if (bounds[0] <= bounds[1])
+    {
+      diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
+    }
+  }
+  const double radius = 0.006 * diagonal;
+  internal.Others.Set(others, radius);
+  internal.CurrentCurve.Set(current, radius);
+  internal.SelectedPoint.Set(selected, 1.4 * radius);
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::setCurrentCurve(int curve)
+{
+  this->Internal->Current = curve;
+  this->Internal->Selected = {};
+  this->UpdateMarkers();
+  this->UpdateControls();
+  if (this->Internal->View)
+  {
+    this->Internal->View->render();
+  }
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::newCurve()
+{
+  // The next click starts the curve: an empty curve is no valid input.
+  this->setCurrentCurve(-1);
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::deleteCurve()
+{
+  Internals& internal = *this->Internal;
+  BEGIN_UNDO_SET(tr("Delete curve"));
+  if (internal.Drawing.RemoveCurve(internal.Current))
+  {
+    internal.Current = std::min(internal.Current, int(internal.Drawing.Curves.size()) - 1);
+    internal.Selected = {};
+    this->Push();
+  }
+  END_UNDO_SET();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::deletePoint()
+{
+  Internals& internal = *this->Internal;
+  BEGIN_UNDO_SET(tr("Delete control point"));
+  if (internal.Drawing.RemovePoint(internal.Selected))
+  {
+    internal.Current = std::min(internal.Current, int(internal.Drawing.Curves.size()) - 1);
+    internal.Selected = {};
+    this->Push();
+  }
+  END_UNDO_SET();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::clearAll()
+{
+  Internals& internal = *this->Internal;
+  BEGIN_UNDO_SET(tr("Clear curves"));
+  internal.Drawing.Curves.clear();
+  internal.Current = -1;
+  internal.Selected = {};
+  this->Push();
+  END_UNDO_SET();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::setShape(int shape)
+{
+  if (pqBoolSurfDrawing::Curve* curve = this->Internal->CurrentCurvePtr())
+  {
+    BEGIN_UNDO_SET(tr("Set curve shape"));
+    curve->Shape = shape;
+    this->Push();
+    END_UNDO_SET();
+  }
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::setCurveType(int type)
+{
+  if (pqBoolSurfDrawing::Curve* curve = this->Internal->CurrentCurvePtr())
+  {
+    BEGIN_UNDO_SET(tr("Set curve type"));
+    curve->Type = type;
+    this->Push();
+    END_UNDO_SET();
+  }
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::setClosed(bool closed)
+{
+  if (pqBoolSurfDrawing::Curve* curve = this->Internal->CurrentCurvePtr())
+  {
+    BEGIN_UNDO_SET(closed ? tr("Close curve") : tr("Open curve"));
+    curve->Closed = closed;
+    this->Push();
+    END_UNDO_SET();
+  }
+}

@@ -1,0 +1,92 @@
+/**
+ * @class   pqBoolSurfCurveEditorWidget
+ * @brief   draws BoolSurf control curves on the surface, in the render view
+ *
+ * The panel of the "Surface Curves" source (panel_widget="boolsurf_curve_editor" on the
+ * property group holding Points and CurveSizes). While the source's panel is active and "Edit
+ * in view" is on, in the active render view:
+ *
+ * - a click on the surface adds a control point to the current curve (after the selected
+ *   point; a new curve when there is none), snapped to the surface and then stored exactly
+ *   (TriangleIds, Barycentrics);
+ * - dragging a control point slides it along the surface, and the curve and everything
+ *   downstream (Trace Surface Curves, BoolSurf) follow live;
+ * - a click on the first point of an open curve of three or more points closes it;
+ * - Shift+click on a point deletes it.
+ *
+ * Dragging anywhere else rotates the camera as usual. The panel chooses the current curve, its
+ * shape, type (polygon or Bezier) and closure, starts a new curve and deletes points and
+ * curves. Every edit is written to the source's properties at once (no Apply needed) inside an
+ * undo set and a Python trace scope, so undo/redo, state files and traces keep the drawing.
+ *
+ * Points are picked with vtkSMRenderViewProxy::ConvertDisplayToPointOnSurface (a selection
+ * render on the server), so the editor also works connected to a pvserver; the exact surface
+ * points are read back from the source's output once a point is placed (not during a drag).
+ * Markers (control points; the current curve's and the selected point highlighted) are drawn
+ * in the view's non-composited renderer, over the geometry.
+ */
+#ifndef pqBoolSurfCurveEditorWidget_h
+#define pqBoolSurfCurveEditorWidget_h
+
+#include "pqPropertyWidget.h"
+
+#include <memory> // for std::unique_ptr
+
+class vtkObject;
+class vtkSMPropertyGroup;
+
+class pqBoolSurfCurveEditorWidget : public pqPropertyWidget
+{
+  Q_OBJECT
+  typedef pqPropertyWidget Superclass;
+
+public:
+  pqBoolSurfCurveEditorWidget(vtkSMProxy* proxy,
+    vtkSMPropertyGroup* group,
+    QWidget* parent = nullptr);
+  ~pqBoolSurfCurveEditorWidget() override;
+
+  /// Edits are written to the proxy as they happen: nothing is pending at Apply.
+  void apply() override {}
+  /// Reloads the drawing from the proxy's properties.
+  void reset() override;
+  void select() override;
+  void deselect() override;
+
+public Q_SLOTS:
+  void setView(pqView* view) override;
+
+private Q_SLOTS:
+  void loadFromProxy();
+  void scheduleLoad();
+  void newCurve();
+  void deleteCurve();
+  void deletePoint();
+  void clearAll();
+  void setCurrentCurve(int curve);
+  void setShape(int shape);
+  void setCurveType(int type);
+  void setClosed(bool closed);
+  void setEditing(bool editing);
+
+private:
+  Q_DISABLE_COPY(pqBoolSurfCurveEditorWidget)
+
+  static void OnInteractorEvent(vtkObject* caller, unsigned long event, void* self, void*);
+  /// Returns true when the editor consumed the event (the camera must not see it).
+  bool HandleInteractorEvent(unsigned long event);
+  void Attach();
+  void Detach();
+  /// Writes the drawing to the proxy (inside the caller's undo set) and renders.
+  void Push();
+  /// Reads the exact surface points (TriangleId, Barycentric) of the source's output into
+  /// the drawing, then pushes them: the state then holds exact points, not positions to snap.
+  void ReadBackExactPoints();
+  void UpdateMarkers();
+  void UpdateControls();
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

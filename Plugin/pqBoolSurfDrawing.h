@@ -1,0 +1,80 @@
+/**
+ * @class   pqBoolSurfDrawing
+ * @brief   the curve editor's drawing: curves of control points, with the edits a user makes
+ *
+ * pqBoolSurfDrawing is what pqBoolSurfCurveEditorWidget edits, kept apart from Qt and from the
+ * server manager: a list of curves, each with its control points (a position, and the exact
+ * surface point once known: a triangle and the weights of its 2nd and 3rd vertex; triangle -1
+ * while the point still has to be snapped), its shape, type and closure. It converts to and
+ * from the flat property values of the "Surface Curves" source (Points, TriangleIds,
+ * Barycentrics, CurveSizes, ShapeIds, CurveTypes, ClosedCurves).
+ */
+#ifndef pqBoolSurfDrawing_h
+#define pqBoolSurfDrawing_h
+
+#include "vtkType.h" // for vtkIdType
+
+#include <array>  // for std::array
+#include <vector> // for std::vector
+
+struct pqBoolSurfDrawing
+{
+  struct Point
+  {
+    std::array<double, 3> Position{ { 0, 0, 0 } };
+    vtkIdType Triangle = -1; // -1: not placed exactly yet (the source snaps Position)
+    std::array<double, 2> Weights{ { 0, 0 } };
+  };
+  struct Curve
+  {
+    std::vector<Point> Points;
+    int Shape = 0;
+    int Type = 0; // 0 geodesic polygon, 1 cubic Bezier
+    bool Closed = false;
+  };
+  /// A control point: its curve and its index in the curve.
+  struct Handle
+  {
+    int Curve = -1;
+    int Index = -1;
+    bool Valid() const { return this->Curve >= 0 && this->Index >= 0; }
+    bool operator==(const Handle& other) const
+    {
+      return this->Curve == other.Curve && this->Index == other.Index;
+    }
+  };
+
+  std::vector<Curve> Curves;
+
+  /// The property values of the Surface Curves source.
+  struct Properties
+  {
+    std::vector<double> Points;
+    std::vector<vtkIdType> TriangleIds;
+    std::vector<double> Barycentrics;
+    std::vector<int> CurveSizes, ShapeIds, CurveTypes, ClosedCurves;
+  };
+
+  /// Reads the source's properties with its defaults (one curve of all points when CurveSizes
+  /// is empty; shape = curve index, polygon, closed when a per-curve list is short). Sizes that
+  /// do not add up keep the points that fit.
+  static pqBoolSurfDrawing FromProperties(const Properties& values);
+  /// The property values: every per-curve list complete, a TriangleId per point.
+  Properties ToProperties() const;
+
+  int NumberOfPoints() const;
+  /// The smallest shape id no curve uses (a new curve's shape).
+  int UnusedShape() const;
+
+  /// Appends a curve (open, polygon, an unused shape); returns its index.
+  int AddCurve();
+  /// Inserts a point into curve `curve` after `after` (its end when `after` is -1); returns
+  /// the new point.
+  Handle InsertPoint(int curve, int after, const std::array<double, 3>& position);
+  /// Removes a point; an emptied curve is removed too. Returns false for an invalid handle.
+  bool RemovePoint(const Handle& point);
+  bool RemoveCurve(int curve);
+  Point* Find(const Handle& point);
+};
+
+#endif
