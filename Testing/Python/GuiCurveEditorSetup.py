@@ -43,8 +43,7 @@ def main():
     surface_display = Show(square, view)
     surface_display.DiffuseColor = [0.8, 0.8, 0.8]
     Show(curves, view)
-    region_display = Show(region, view)
-    sys.__stderr__.write("REGION %s %s %s\n" % (region_display.Visibility, region_display.Representation, region_display.ColorArrayName))
+    Show(region, view)
     camera = view.GetActiveCamera()
     camera.SetFocalPoint(0, 0, 0)
     camera.SetPosition(0, 0, 1)

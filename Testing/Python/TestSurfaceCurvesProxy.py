@@ -1,6 +1,7 @@
 """pvpython: Surface Curves holds a drawing as properties. Points set by property are snapped
 to the closest surface point (checked against VTK's own cell locator) and given as exact
-surface points; exact TriangleIds/Barycentrics are kept bit for bit; curve sizes, shapes,
+surface points; exact TriangleIds/Barycentrics are kept bit for bit (TriangleId -1 snaps
+that one point, as the curve editor stores a dragged point); curve sizes, shapes,
 types and closure reach the output; a state file saved and loaded again gives the same
 curves; bad properties give an empty output and an error naming the problem."""
 import os
@@ -67,6 +68,23 @@ for i in range(7):
         exact_bary[2 * i:2 * i + 2]
     assert again.GetPoint(i) == out.GetPoint(i)
 
+# Mixed, as the curve editor stores a drawing while a point is dragged: TriangleId -1 snaps
+# that point's position, the other points stay exact bit for bit.
+dragged = [center[0] + 0.01, center[1], center[2] - 0.05]
+mixed = SurfaceCurves(Surface=mesh, Points=[x for p in points for x in p],
+                      TriangleIds=exact_tris[:2] + [-1] + exact_tris[3:],
+                      Barycentrics=exact_bary, CurveSizes=[3, 4], ShapeIds=[5, 7],
+                      CurveTypes=[0, 1], ClosedCurves=[1, 0])
+mixed.Points = [x for i, p in enumerate(points) for x in (dragged if i == 2 else p)]
+moved = sm.Fetch(mixed)
+closest, cell, sub, dist2 = [0.0, 0.0, 0.0], reference(0), reference(0), mutable(0.0)
+locator.FindClosestPoint(dragged, closest, cell, sub, dist2)
+assert moved.GetPointData().GetArray("TriangleId").GetValue(2) == cell.get()
+assert sum((moved.GetPoint(2)[k] - closest[k]) ** 2 for k in range(3)) < 1e-20
+for i in (0, 1, 3, 4, 5, 6):
+    assert moved.GetPointData().GetArray("TriangleId").GetValue(i) == exact_tris[i]
+    assert moved.GetPoint(i) == out.GetPoint(i), i
+
 # The drawing feeds BoolSurf: the polygon alone (shape 5) encloses a region.
 region = BoolSurf(Surface=mesh, Curves=curves, Operation="Expression", Expression="S5")
 assert sm.Fetch(region).GetNumberOfCells() > 0
@@ -78,12 +96,13 @@ ResetSession()
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 LoadState(state)
 reloaded = [s for s in GetSources().values() if s.GetXMLName() == "BoolSurfSurfaceCurves"]
-assert len(reloaded) == 2, reloaded
+assert len(reloaded) == 3, reloaded  # the snapped, the exact and the mixed drawing
 for proxy in reloaded:
     data = sm.Fetch(proxy)
     assert data.GetNumberOfPoints() == 7
+    expected = moved if -1 in list(proxy.TriangleIds) else out
     for i in range(7):
-        assert data.GetPoint(i) == out.GetPoint(i), (i, data.GetPoint(i), out.GetPoint(i))
+        assert data.GetPoint(i) == expected.GetPoint(i), (i, data.GetPoint(i))
 
 # Bad properties: sizes that do not add up, a triangle that is not one, a Bezier of 5 points.
 mesh = PLYReader(FileNames=[os.path.join(source_dir, "Data", "eight.ply")])
