@@ -5,8 +5,8 @@
 Runs `paraview --script=GuiCurveEditorSetup.py --test-script=GuiCurveEditor.xml` under Xvfb:
 the setup builds a flat triangulated square, an empty Surface Curves source (its panel, the
 curve editor, active) and BoolSurf of shape 0; the recorded events click four points on the
-square in the render view, click the first point again (closing the curve) and drag the third
-point. The player compares the final view with Testing/Data/Baseline/curve_editor.png
+square in the render view, click the first point again (closing the curve), drag the third
+point, then undo and redo the drag (Edit menu). The player compares the final view with Testing/Data/Baseline/curve_editor.png
 (BOOLSURF_UPDATE_BASELINE=1 rewrites it: look at the new picture first). Then the drawing and
 BoolSurf's last result, recorded by the setup, must be: one closed polygon of four points of
 shape 0, each stored exactly (a triangle and barycentric weights), on the square, the third
@@ -45,7 +45,8 @@ if not os.path.exists(result_path):
     print(run.stdout[-4000:])
     sys.exit("BoolSurf never produced a result in the GUI: " + result_path)
 with open(result_path) as f:
-    result = json.load(f)
+    history = json.load(f)
+result = history[-1]
 print(json.dumps(result))
 
 
@@ -76,7 +77,15 @@ if len(points) == 4:
                              - points[(i + 1) % 4][0] * points[i][1] for i in range(4)))
     expect(abs(result["region_area"] - shoelace) <= 1e-9 * shoelace,
            "region area %.15g equals the polygon's %.15g" % (result["region_area"], shoelace))
+# Undo (Edit > Undo) put the dragged point back, redo moved it again: the areas BoolSurf
+# produced end with moved, not moved, moved.
+areas = []
+for h in history:
+    if h["region_triangles"] and (not areas or h["region_area"] != areas[-1]):
+        areas.append(h["region_area"])
+expect(len(areas) >= 3 and areas[-1] == areas[-3] and areas[-2] != areas[-1],
+       "undo and redo of the drag: areas %s" % areas)
 if failures:
     print(run.stdout[-4000:])
     sys.exit("FAILED:\n  " + "\n  ".join(failures))
-print("curve editor OK: area %.12g" % result["region_area"])
+print("curve editor OK: area %.12g; areas over the session %s" % (result["region_area"], areas))

@@ -4,8 +4,9 @@
 Builds the pipeline a user would: a flat triangulated square, an empty Surface Curves source
 on it (its panel, the curve editor, active) and the one-step BoolSurf of shape 0 below it.
 The recorded events (GuiCurveEditor.xml) then click four points on the square, close the curve
-by clicking its first point, and drag a point. Every time BoolSurf executes, its result and the
-drawing's properties are written to $BOOLSURF_GUI_RESULT (JSON), which the test checks.
+by clicking its first point, drag a point, undo and redo. Every time BoolSurf executes, its
+result and the drawing's properties are appended to the list in $BOOLSURF_GUI_RESULT (JSON),
+which the test checks.
 """
 import json
 import os
@@ -54,6 +55,7 @@ def main():
 
     result_path = os.environ["BOOLSURF_GUI_RESULT"]
     algorithm = region.GetClientSideObject()
+    history = []  # every result, the last one the final state
 
     def record(caller, event):
         out = algorithm.GetOutputDataObject(0)
@@ -66,8 +68,9 @@ def main():
         for name in ("Points", "TriangleIds", "Barycentrics", "CurveSizes", "ShapeIds",
                      "CurveTypes", "ClosedCurves"):
             result[name] = list(curves.GetPropertyValue(name))
+        history.append(result)
         with open(result_path, "w") as f:
-            json.dump(result, f)
+            json.dump(history, f)
 
     algorithm.AddObserver(vtkCommand.EndEvent, record)
 
