@@ -159,14 +159,9 @@ def render_result(png, surface, region, boundary=None, curves=None, view_axis=1,
     d.ColorArrayName = ["POINTS", ""]
     d.DiffuseColor = [0.8, 0.8, 0.8]
     d.Opacity = 1.0
-    # The region lies on the surface: lift it a little along its normals so that it is not
-    # hidden by the coincident gray surface.
-    b = surface.GetDataInformation().GetBounds()
-    diagonal = math.sqrt((b[1] - b[0]) ** 2 + (b[3] - b[2]) ** 2 + (b[5] - b[4]) ** 2)
-    normals = GenerateSurfaceNormals(Input=region, Splitting=0)
-    lifted = WarpByVector(Input=normals, Vectors=["POINTS", "Normals"],
-                          ScaleFactor=0.002 * diagonal)
-    r = Show(lifted, view)
+    # The region lies on the surface: its default representation ("BoolSurf Region") draws it
+    # over the coincident gray surface without z-fighting.
+    r = Show(region, view)
     if color_by:
         ColorBy(r, ("CELLS", color_by))
         r.RescaleTransferFunctionToDataRange(True, False)

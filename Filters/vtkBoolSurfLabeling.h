@@ -75,8 +75,9 @@ public:
   ///@}
 
   ///@{
-  /// ShapeId whose label is written per triangle as the cell array `ShapeLabel` (to color the
-  /// surface by it); -1 (default) writes none.
+  /// ShapeId whose label is written per triangle as the cell array `ShapeLabel`, the active
+  /// scalars (ParaView colors the output by it, with the plugin's categorical color map);
+  /// -1 (default) writes none.
   vtkSetClampMacro(ColorShape, int, -1, VTK_INT_MAX);
   vtkGetMacro(ColorShape, int);
   ///@}

@@ -171,6 +171,9 @@ bool LabelArrangement(vtkPolyData* input,
         out[t] = table[static_cast<size_t>(cells[t]) * ns + s];
       }
       output->GetCellData()->AddArray(shapeLabel);
+      // ParaView colors a new display by the active scalars (with the plugin's categorical
+      // color map for ShapeLabel).
+      output->GetCellData()->SetActiveScalars("ShapeLabel");
     }
   }
   if (options.PerTriangleLabels && ns > 0)

@@ -1,0 +1,101 @@
+"""pvbatch under Xvfb: BoolSurf's outputs read at a glance with ParaView's defaults.
+
+- The one-step filter's region (port 0) shows as the "BoolSurf Region" representation,
+  colored by its active scalars ArrangementCell with the plugin's default color map (Turbo),
+  in which no cell comes out near-white (the color of the surface).
+- No z-fighting: the region drawn in solid red over the coincident gray surface covers every
+  pixel it covers when drawn alone (with the plain Surface representation, the surface shows
+  through; that count is printed, not asserted: how many pixels lose depends on the driver).
+- The Label filter's ShapeLabel (ColorShape set) is the active scalars, with a categorical
+  color map (0 "outside" and the labels of the shape as annotated categories).
+"""
+import os
+import sys
+import tempfile
+
+source_dir = os.environ["BOOLSURF_SOURCE_DIR"]
+sys.path.insert(0, os.path.join(source_dir, "Examples"))
+from boolsurf_example_utils import SurfaceRays, curves_source, surface_circle  # noqa: E402
+from paraview.simple import *  # noqa: E402,F401,F403
+from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+
+LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
+mesh = PLYReader(FileNames=[os.path.join(source_dir, "Data", "eight.ply")])
+rays = SurfaceRays(mesh, axis=1)
+control = curves_source([(surface_circle(rays, (0.0, -0.035), 0.06), 0),
+                         (surface_circle(rays, (0.0, 0.035), 0.06), 1)], mesh)
+one = BoolSurf(Surface=mesh, Curves=control, Operation="Union")
+
+view = CreateView("RenderView")
+view.ViewSize = [400, 400]
+view.OrientationAxesVisibility = 0
+view.Background = [0, 0, 0]
+try:
+    view.UseColorPaletteForBackground = 0
+except AttributeError:
+    pass
+surface = Show(mesh, view)
+region = Show(one, view)
+assert region.Representation == "BoolSurf Region", region.Representation
+assert region.ColorArrayName[1] == "ArrangementCell", region.ColorArrayName
+lut = GetColorTransferFunction("ArrangementCell")
+cells = one.GetDataInformation().DataInformation.GetArrayInformation(
+    "ArrangementCell", 1).GetComponentRange(0)
+table = lut.GetClientSideObject()
+for value in range(int(cells[0]), int(cells[1]) + 1):
+    rgb = [0.0, 0.0, 0.0]
+    table.GetColor(value, rgb)
+    assert min(rgb) < 0.8, ("cell %d is drawn near-white" % value, rgb)
+# An oblique view, where coincident faces fight most.
+camera = view.GetActiveCamera()
+camera.SetFocalPoint(0, 0, 0)
+camera.SetPosition(0.6, 1, 0.4)
+camera.SetViewUp(0, 0, 1)
+ResetCamera(view)
+
+
+png = os.path.join(tempfile.mkdtemp(prefix="boolsurf-display-"), "view.png")
+
+
+def pixels():
+    Render(view)
+    SaveScreenshot(png, view, ImageResolution=[400, 400], TransparentBackground=0)
+    reader = vtkPNGReader()
+    reader.SetFileName(png)
+    reader.Update()
+    colors = reader.GetOutput().GetPointData().GetScalars()
+    return [colors.GetTuple3(i) for i in range(colors.GetNumberOfTuples())]
+
+
+ColorBy(region, None)
+region.DiffuseColor = region.AmbientColor = [1, 0, 0]
+region.Ambient, region.Diffuse = 1.0, 0.0  # flat red: every region pixel is exactly red
+Hide(mesh, view)
+alone = pixels()
+footprint = [i for i, c in enumerate(alone) if c == (255.0, 0.0, 0.0)]
+assert len(footprint) > 500, len(footprint)
+Show(mesh, view)
+surface.DiffuseColor = [0.5, 0.5, 0.5]
+
+
+def lost(representation):
+    region.Representation = representation
+    together = pixels()
+    return sum(1 for i in footprint if together[i] != (255.0, 0.0, 0.0))
+
+
+plain = lost("Surface")
+ours = lost("BoolSurf Region")
+print("region pixels %d; hidden by the surface: %d with Surface, %d with BoolSurf Region"
+      % (len(footprint), plain, ours))
+assert ours == 0, ours
+
+labels = LabelArrangementCells(Input=SurfaceArrangement(
+    Surface=mesh, Curves=TraceSurfaceCurves(Surface=mesh, Curves=control)), ColorShape=0)
+labeled = Show(labels, view)
+assert labeled.ColorArrayName[1] == "ShapeLabel", labeled.ColorArrayName
+shape_lut = GetColorTransferFunction("ShapeLabel")
+assert shape_lut.InterpretValuesAsCategories == 1
+annotations = list(shape_lut.Annotations)
+assert "0" in annotations[0::2] and "1" in annotations[0::2], annotations
+print("DEFAULT_DISPLAY_OK")
