@@ -570,12 +570,16 @@ void pqBoolSurfCurveEditorWidget::ReadBackExactPoints()
   Internals& internal = *this->Internal;
   vtkSMProxy* smproxy = this->proxy();
   vtkSMSessionProxyManager* pxm = smproxy->GetSessionProxyManager();
-  // As paraview.servermanager.Fetch does: a reduction filter brings the output to the client
-  // (from the first rank, which alone holds the curves under MPI).
+  // As paraview.servermanager.Fetch does: a reduction filter gathers the output on the first
+  // server rank (which alone holds the curves under MPI), a move-data filter brings it to the
+  // client (the same process in a builtin session).
   vtkSmartPointer<vtkSMSourceProxy> reducer;
   reducer.TakeReference(
     vtkSMSourceProxy::SafeDownCast(pxm->NewProxy("filters", "ReductionFilter")));
-  if (!reducer)
+  vtkSmartPointer<vtkSMSourceProxy> mover;
+  mover.TakeReference(
+    vtkSMSourceProxy::SafeDownCast(pxm->NewProxy("filters", "ClientServerMoveData")));
+  if (!reducer || !mover)
   {
     return;
   }
@@ -583,7 +587,11 @@ void pqBoolSurfCurveEditorWidget::ReadBackExactPoints()
   vtkSMPropertyHelper(reducer, "PostGatherHelperName").Set("vtkAppendPolyData");
   reducer->UpdateVTKObjects();
   reducer->UpdatePipeline();
-  auto* algorithm = vtkAlgorithm::SafeDownCast(reducer->GetClientSideObject());
+  vtkSMPropertyHelper(mover, "Input").Set(reducer, 0);
+  vtkSMPropertyHelper(mover, "OutputDataType").Set(VTK_POLY_DATA);
+  mover->UpdateVTKObjects();
+  mover->UpdatePipeline();
+  auto* algorithm = vtkAlgorithm::SafeDownCast(mover->GetClientSideObject());
   vtkPolyData* output =
     algorithm ? vtkPolyData::SafeDownCast(algorithm->GetOutputDataObject(0)) : nullptr;
   vtkDataArray* triangles = output ? output->GetPointData()->GetArray("TriangleId") : nullptr;

@@ -1,59 +1,118 @@
 """GUI test of the curve editor, driven by ParaView's test player with synthetic mouse events.
 
-    python3 GuiCurveEditor.py <run-with-xvfb.sh> <paraview>
+    run-with-xvfb.sh pvpython GuiCurveEditor.py <paraview> [--server-ranks N]
 
-Runs `paraview --script=GuiCurveEditorSetup.py --test-script=GuiCurveEditor.xml` under Xvfb:
-the setup builds a flat triangulated square, an empty Surface Curves source (its panel, the
-curve editor, active) and BoolSurf of shape 0; the recorded events click four points on the
-square in the render view, click the first point again (closing the curve), drag the third
-point, then undo and redo the drag (Edit menu). The player compares the final view with Testing/Data/Baseline/curve_editor.png
-(BOOLSURF_UPDATE_BASELINE=1 rewrites it: look at the new picture first). Then the drawing and
-BoolSurf's last result, recorded by the setup, must be: one closed polygon of four points of
-shape 0, each stored exactly (a triangle and barycentric weights), on the square, the third
-moved by the drag, and a region whose area is the polygon's (shoelace formula: on a flat mesh
-geodesics are straight lines) to 1e-9.
+Runs `paraview --script=GuiCurveEditorSetup.py --test-script=GuiCurveEditor.xml` (with
+--server-ranks, connected to `mpiexec -np N pvserver` on localhost, in the same X server): the
+setup builds a flat triangulated square, an empty Surface Curves source (its panel, the curve
+editor, active) and BoolSurf of shape 0; the recorded events click four points on the square in
+the render view, click the first point again (closing the curve), drag the third point, undo
+and redo the drag (Edit menu) and save the state (File > Save State). The player compares the
+final view with Testing/Data/Baseline/curve_editor.png (BOOLSURF_UPDATE_BASELINE=1 rewrites
+it: look at the new picture first).
+
+Then, from the saved state loaded here: one closed polygon of four points of shape 0, each
+stored exactly (a triangle and barycentric weights), on the square, the third moved by the
+drag, and BoolSurf's region of exactly the polygon's area (shoelace formula: on a flat mesh
+geodesics are straight lines) to 1e-9. Without a server, the results BoolSurf produced in the
+GUI (recorded by the setup) must show the drag undone and redone, and end with that area.
 """
+import argparse
 import json
 import os
+import re
 import shutil
+import signal
+import socket
 import subprocess
 import sys
 import tempfile
 
-runner, paraview = sys.argv[1], sys.argv[2]
+parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+parser.add_argument("paraview")
+parser.add_argument("--server-ranks", type=int, default=0)
+args = parser.parse_args()
 here = os.path.dirname(os.path.abspath(__file__))
 source_dir = os.environ.get("BOOLSURF_SOURCE_DIR", os.path.join(here, "..", ".."))
 baseline = os.path.join(source_dir, "Testing", "Data", "Baseline", "curve_editor.png")
 update = os.environ.get("BOOLSURF_UPDATE_BASELINE") == "1"
 out = tempfile.mkdtemp(prefix="boolsurf-editor-")
 result_path = os.path.join(out, "result.json")
-env = dict(os.environ, BOOLSURF_GUI_RESULT=result_path, BOOLSURF_SOURCE_DIR=source_dir)
+# pvpython started MPI as a singleton: its OMPI_/PMIX_ variables would mislead mpiexec.
+env = {k: v for k, v in os.environ.items() if not re.match(r"(OMPI_|PMIX_|OPAL_)", k)}
+env.update(BOOLSURF_GUI_RESULT=result_path, BOOLSURF_SOURCE_DIR=source_dir,
+           OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
 test_baseline = os.path.join(out, "curve_editor.png") if update else baseline
-command = [runner, paraview, "--dr", "--script=" + os.path.join(here, "GuiCurveEditorSetup.py"),
+command = [args.paraview, "--dr", "--script=" + os.path.join(here, "GuiCurveEditorSetup.py"),
            "--test-script=" + os.path.join(here, "GuiCurveEditor.xml"),
            "--test-directory=" + out, "--test-baseline=" + test_baseline, "--exit"]
-run = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                     timeout=600, universal_newlines=True)
+
+server = None
+if args.server_ranks:
+    tools = {name: shutil.which(name) for name in ("mpiexec", "pvserver")}
+    if not all(tools.values()):
+        print("missing %s: nothing to test" % [k for k, v in tools.items() if not v])
+        sys.exit(0)
+    # Port 0 is not allowed by pvserver: take a free one from the system.
+    with socket.socket() as s:
+        s.bind(("localhost", 0))
+        port = s.getsockname()[1]
+    server = subprocess.Popen([tools["mpiexec"], "-np", str(args.server_ranks), tools["pvserver"],
+                               "--server-port=%d" % port], env=env, stdout=subprocess.PIPE,
+                              stderr=subprocess.STDOUT, universal_newlines=True,
+                              start_new_session=True)
+    for line in server.stdout:
+        if re.search(r"Accepting connection", line):
+            break
+    else:
+        sys.exit("pvserver stopped before accepting connections")
+    command.append("--url=cs://localhost:%d" % port)
+try:
+    run = subprocess.run(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         timeout=600, universal_newlines=True)
+finally:
+    if server:
+        os.killpg(server.pid, signal.SIGKILL)
+        server.wait()
+
 failures = []
-if update:
-    shutil.copyfile(test_baseline, baseline)
-    print("baseline written: %s" % baseline)
-elif run.returncode != 0:
-    failures.append("the test player failed (events or image comparison), exit %d; images in %s"
-                    % (run.returncode, out))
-if not os.path.exists(result_path):
-    print(run.stdout[-4000:])
-    sys.exit("BoolSurf never produced a result in the GUI: " + result_path)
-with open(result_path) as f:
-    history = json.load(f)
-result = history[-1]
-print(json.dumps(result))
 
 
 def expect(condition, what):
     if not condition:
         failures.append(what)
 
+
+if update:
+    shutil.copyfile(test_baseline, baseline)
+    print("baseline written: %s" % baseline)
+else:
+    expect(run.returncode == 0, "the test player failed (events or image comparison), exit %d;"
+           " images in %s" % (run.returncode, out))
+state = os.path.join(out, "drawing.pvsm")
+if not os.path.exists(state):
+    print(run.stdout[-4000:])
+    sys.exit("no state saved by the GUI: " + state)
+
+# The drawing and its region, from the saved state, in a builtin session.
+from paraview.simple import GetSources, LoadPlugin, LoadState  # noqa: E402
+from paraview import servermanager as sm  # noqa: E402
+from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
+
+LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
+LoadState(state)
+sources = {s.GetXMLName(): s for s in GetSources().values()}
+curves, region = sources["BoolSurfSurfaceCurves"], sources["BoolSurf"]
+result = {name: list(curves.GetPropertyValue(name)) for name in (
+    "Points", "TriangleIds", "Barycentrics", "CurveSizes", "ShapeIds", "CurveTypes",
+    "ClosedCurves")}
+sizes = vtkCellSizeFilter()
+sizes.SetInputData(sm.Fetch(region))
+sizes.Update()
+areas = sizes.GetOutput().GetCellData().GetArray("Area")
+area = sum(areas.GetValue(i) for i in range(areas.GetNumberOfTuples()))
+print("saved drawing:", json.dumps(result))
 
 expect(result["CurveSizes"] == [4], "one curve of four points: %s" % result["CurveSizes"])
 expect(result["ClosedCurves"] == [1], "the curve is closed: %s" % result["ClosedCurves"])
@@ -69,23 +128,31 @@ for i in range(len(weights) // 2):
 for i, p in enumerate(points):
     expect(p[2] == 0 and abs(p[0]) < 0.5 and abs(p[1]) < 0.5, "point %d on the square: %s"
            % (i, p))
+shoelace = None
 if len(points) == 4:
     # Clicked at symmetric places (a rectangle), then the third point dragged right and up.
     expect(points[2][0] > points[1][0] + 0.03 and points[2][1] > points[3][1] + 0.02,
            "the dragged point moved: %s" % points)
     shoelace = 0.5 * abs(sum(points[i][0] * points[(i + 1) % 4][1]
                              - points[(i + 1) % 4][0] * points[i][1] for i in range(4)))
-    expect(abs(result["region_area"] - shoelace) <= 1e-9 * shoelace,
-           "region area %.15g equals the polygon's %.15g" % (result["region_area"], shoelace))
-# Undo (Edit > Undo) put the dragged point back, redo moved it again: the areas BoolSurf
-# produced end with moved, not moved, moved.
-areas = []
-for h in history:
-    if h["region_triangles"] and (not areas or h["region_area"] != areas[-1]):
-        areas.append(h["region_area"])
-expect(len(areas) >= 3 and areas[-1] == areas[-3] and areas[-2] != areas[-1],
-       "undo and redo of the drag: areas %s" % areas)
+    expect(abs(area - shoelace) <= 1e-9 * shoelace,
+           "region area %.15g equals the polygon's %.15g" % (area, shoelace))
+
+if not args.server_ranks:
+    # What BoolSurf produced in the GUI, update after update: the drag, its undo, its redo.
+    with open(result_path) as f:
+        history = json.load(f)
+    seen = []
+    for h in history:
+        if h["region_triangles"] and (not seen or h["region_area"] != seen[-1]):
+            seen.append(h["region_area"])
+    expect(len(seen) >= 3 and seen[-1] == seen[-3] and seen[-2] != seen[-1],
+           "undo and redo of the drag: areas %s" % seen)
+    expect(shoelace is not None and abs(history[-1]["region_area"] - shoelace) <= 1e-9 * shoelace,
+           "the GUI's last region has the polygon's area: %s" % history[-1]["region_area"])
 if failures:
     print(run.stdout[-4000:])
     sys.exit("FAILED:\n  " + "\n  ".join(failures))
-print("curve editor OK: area %.12g; areas over the session %s" % (result["region_area"], areas))
+print("curve editor OK%s: area %.12g" % (
+    " (client connected to %d pvserver ranks)" % args.server_ranks if args.server_ranks else "",
+    area))

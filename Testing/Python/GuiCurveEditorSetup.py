@@ -33,7 +33,10 @@ def main():
     log.SetFileName(os.environ["BOOLSURF_GUI_RESULT"] + ".log")
     vtkOutputWindow.SetInstance(log)
 
+    from paraview import servermanager
     LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
+    if servermanager.ActiveConnection.IsRemote():
+        LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=True, ns=globals())
     BoolSurf, SurfaceCurves = globals()["BoolSurf"], globals()["SurfaceCurves"]
     square = Triangulate(Input=Plane(XResolution=24, YResolution=24))
     curves = SurfaceCurves(Surface=square)
@@ -55,6 +58,8 @@ def main():
 
     result_path = os.environ["BOOLSURF_GUI_RESULT"]
     algorithm = region.GetClientSideObject()
+    if algorithm is None:
+        return  # connected to a pvserver: the test checks the saved state instead
     history = []  # every result, the last one the final state
 
     def record(caller, event):
