@@ -94,21 +94,11 @@ def curves_source(curves, surface):
 
 def sample_source(samples):
     """samples: list of (point, direction): BSC samples, each on or near a curve, its
-    Direction pointing to the side that must be inside."""
-    from vtkmodules.vtkCommonCore import vtkDoubleArray
-    pd = vtkPolyData()
-    pts = vtkPoints()
-    pts.SetDataTypeToDouble()
-    direction = vtkDoubleArray()
-    direction.SetName("Direction")
-    direction.SetNumberOfComponents(3)
-    for point, d in samples:
-        pts.InsertNextPoint(point)
-        direction.InsertNextTuple3(*d)
-    pd.SetPoints(pts)
-    pd.GetPointData().AddArray(direction)
-    source = PVTrivialProducer()
-    source.GetClientSideObject().SetOutput(pd)
+    Direction pointing to the side that must be inside. A BSC Samples source: the samples are
+    properties (saved in state files, sent to a pvserver, produced once under MPI)."""
+    bsc_samples = simple._create_func("BSCSamples", sm.sources)
+    source = bsc_samples(Points=[x for p, _ in samples for x in p],
+                         Directions=[x for _, d in samples for x in d])
     source.UpdatePipeline()
     return source
 

@@ -17,7 +17,7 @@ source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
                             os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.join(source_dir, "Examples"))
 from boolsurf_example_utils import (SurfaceRays, area, curves_source, load_plugin,  # noqa: E402
-                                    ranks, surface_circle)
+                                    ranks, sample_source, surface_circle)
 from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager as sm  # noqa: E402
 
@@ -33,8 +33,8 @@ if args.distribute:
     surface = ExtractSurface(Input=RedistributeDataSet(Input=mesh))
 surface.UpdatePipeline()
 rays = SurfaceRays(mesh, axis=1)
-control = curves_source([(surface_circle(rays, (0.0, -0.035), 0.06), 0),
-                         (surface_circle(rays, (0.0, 0.035), 0.06), 1)], surface)
+discs = [surface_circle(rays, (0.0, -0.035), 0.06), surface_circle(rays, (0.0, 0.035), 0.06)]
+control = curves_source([(discs[0], 0), (discs[1], 1)], surface)
 
 
 def cells(proxy, port=0):
@@ -68,6 +68,17 @@ one = BoolSurf(Surface=surface, Curves=control, Operation="SymmetricDifference")
 results["one_step"] = {"triangles": cells(one), "area": area(one),
                        "boundary_points": sm.Fetch(one, idx=1).GetNumberOfPoints(),
                        "control_curves": cells(one, 2)}
+# Boundary-Sampled Curves: a sample on each disc's boundary, pointing to the middle of the
+# two discs (into both); the samples come from a BSC Samples source (properties: they exist
+# once under MPI, as the curves do).
+middle = rays.hit(0.0, 0.0)
+samples = sample_source([(p, tuple(m - x for m, x in zip(middle, p)))
+                         for p in (discs[0][18], discs[1][6])])
+results["samples"] = {"points": sm.Fetch(samples).GetNumberOfPoints()}
+bsc = BoolSurf(Surface=surface, Curves=control, Samples=samples, Selection="BSC")
+results["bsc"] = {"triangles": cells(bsc), "area": area(bsc)}
+resolved = ResolveInconsistentShapes(Surface=surface, Curves=control)
+results["resolve"] = {"curves": cells(resolved)}
 drawing = MapSVGOntoSurface(Input=surface, FileName=os.path.join(source_dir, "Data", "star.svg"),
                             Center=rays.hit(0.0, 0.0), Radius=0.05)
 star = BoolSurf(Surface=surface, Curves=drawing, ShapeA=-1, ShapeB=-1, FillRule="EvenOdd")

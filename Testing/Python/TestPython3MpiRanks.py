@@ -65,6 +65,8 @@ def same(a, b, where=""):
 serial = run(1, False)
 assert serial["one_step"]["triangles"] > 0 and serial["svg"]["area"] > 0, serial
 assert serial["arrangement"]["cells"] == 4, serial  # two crossing discs: 4 cells
+assert serial["samples"]["points"] == 2 and serial["bsc"]["triangles"] > 0, serial
+assert serial["resolve"]["curves"] == 2, serial  # consistent discs: kept as they are
 for ranks in (2, 3):
     for distribute in (False, True):
         result = run(ranks, distribute)
