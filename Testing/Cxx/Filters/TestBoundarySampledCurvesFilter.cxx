@@ -7,6 +7,7 @@
 #include "vtkBoolSurfArrangement.h"
 #include "vtkBoolSurfBSC.h"
 #include "vtkBoolSurfLabeling.h"
+#include "vtkBoolSurfSamples.h"
 #include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkCommand.h>
@@ -122,6 +123,25 @@ struct FlatScene
     return testutils::Area(this->Bsc->GetOutput());
   }
 
+  // The same samples from the BSC Samples source (properties), as ParaView users give them.
+  double RunFromSource(const std::vector<Sample>& samples)
+  {
+    this->Messages->Errors.clear();
+    this->Source->SetNumberOfPoints(static_cast<int>(samples.size()));
+    this->Source->SetNumberOfDirections(static_cast<int>(samples.size()));
+    for (size_t i = 0; i < samples.size(); ++i)
+    {
+      const Sample& s = samples[i];
+      this->Source->SetPoint(static_cast<int>(i), s.X[0], s.X[1], s.X[2]);
+      this->Source->SetDirection(
+        static_cast<int>(i), s.Direction[0], s.Direction[1], s.Direction[2]);
+    }
+    this->Bsc->SetInputConnection(1, this->Source->GetOutputPort());
+    this->Bsc->Update();
+    return testutils::Area(this->Bsc->GetOutput());
+  }
+  vtkNew<vtkBoolSurfSamples> Source;
+
   std::vector<int> Field(const char* name)
   {
     std::vector<int> values;
@@ -196,7 +216,11 @@ TEST(BoundarySampledCurvesFilter, FigureSixThreeSampleSets)
   // 1. Outer arcs towards their curves' insides: the union.
   std::vector<Sample> samples = redOuter;
   samples.insert(samples.end(), greenOuter.begin(), greenOuter.end());
-  EXPECT_NEAR(scene.Run(samples), ClipperResultArea(red, green, ClipperLib::ctUnion), 1e-9);
+  const double unionArea = scene.Run(samples);
+  EXPECT_NEAR(unionArea, ClipperResultArea(red, green, ClipperLib::ctUnion), 1e-9);
+  EXPECT_EQ(scene.Messages->Errors, "");
+  EXPECT_EQ(scene.RunFromSource(samples), unionArea); // the BSC Samples source: same answer
+  EXPECT_EQ(scene.Source->GetOutput()->GetNumberOfVerts(), vtkIdType(samples.size()));
   EXPECT_EQ(scene.Messages->Errors, "");
   EXPECT_TRUE(scene.Field("DroppedSamples").empty());
   // The labeled arrangement is accepted as well, with the same answer; the labels table travels
@@ -447,4 +471,30 @@ TEST(BoundarySampledCurvesFilter, OneStepTorusMeridians)
   f->Update();
   EXPECT_EQ(messages->Errors, "");
   EXPECT_EQ(f->GetOutput()->GetNumberOfCells(), 0);
+}
+
+// The BSC Samples source: one vertex and one Direction per sample; a Directions count that is
+// not the Points count is an error naming both, with an empty output.
+TEST(BoundarySampledCurvesFilter, SamplesSourceChecksItsProperties)
+{
+  vtkNew<vtkBoolSurfSamples> source;
+  source->SetPoint(0, 0.1, 0.2, 0.0);
+  source->SetPoint(1, 0.3, 0.4, 0.0);
+  source->SetDirection(0, 1.0, 0.0, 0.0);
+  source->SetDirection(1, 0.0, -2.0, 0.0);
+  source->Update();
+  vtkPolyData* out = source->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPoints(), 2);
+  EXPECT_EQ(out->GetNumberOfVerts(), 2);
+  vtkDataArray* direction = out->GetPointData()->GetArray("Direction");
+  ASSERT_NE(direction, nullptr);
+  EXPECT_EQ(direction->GetComponent(1, 1), -2.0);
+  EXPECT_EQ(out->GetPoint(1)[0], 0.3);
+
+  source->SetNumberOfDirections(1);
+  EXPECT_NE(
+    testutils::ErrorsOf(source).find("Each of the 2 sample Points needs a Direction; got 1"),
+    std::string::npos)
+    << testutils::ErrorsOf(source);
+  EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
 }
