@@ -7,15 +7,17 @@ Runs `paraview --script=GuiCurveEditorSetup.py --test-script=GuiCurveEditor.xml`
 setup builds a flat triangulated square, an empty Surface Curves source (its panel, the curve
 editor, active) and BoolSurf of shape 0; the recorded events click four points on the square in
 the render view, click the first point again (closing the curve), drag the third point, undo
-and redo the drag (Edit menu) and save the state (File > Save State). The player compares the
+and redo the drag (Edit menu), Shift+click the fourth point (deleting it) and save the state
+(File > Save State). The player compares the
 final view with Testing/Data/Baseline/curve_editor.png (BOOLSURF_UPDATE_BASELINE=1 rewrites
 it: look at the new picture first).
 
-Then, from the saved state loaded here: one closed polygon of four points of shape 0, each
+Then, from the saved state loaded here: one closed polygon of three points of shape 0, each
 stored exactly (a triangle and barycentric weights), on the square, the third moved by the
 drag, and BoolSurf's region of exactly the polygon's area (shoelace formula: on a flat mesh
 geodesics are straight lines) to 1e-9. Without a server, the results BoolSurf produced in the
-GUI (recorded by the setup) must show the drag undone and redone, and end with that area.
+GUI (recorded by the setup) must show the drag undone and redone, then the deletion, ending
+with that area.
 """
 import argparse
 import json
@@ -114,7 +116,7 @@ areas = sizes.GetOutput().GetCellData().GetArray("Area")
 area = sum(areas.GetValue(i) for i in range(areas.GetNumberOfTuples()))
 print("saved drawing:", json.dumps(result))
 
-expect(result["CurveSizes"] == [4], "one curve of four points: %s" % result["CurveSizes"])
+expect(result["CurveSizes"] == [3], "one curve of three points: %s" % result["CurveSizes"])
 expect(result["ClosedCurves"] == [1], "the curve is closed: %s" % result["ClosedCurves"])
 expect(result["ShapeIds"] == [0] and result["CurveTypes"] == [0],
        "a polygon of shape 0: %s %s" % (result["ShapeIds"], result["CurveTypes"]))
@@ -129,12 +131,13 @@ for i, p in enumerate(points):
     expect(p[2] == 0 and abs(p[0]) < 0.5 and abs(p[1]) < 0.5, "point %d on the square: %s"
            % (i, p))
 shoelace = None
-if len(points) == 4:
-    # Clicked at symmetric places (a rectangle), then the third point dragged right and up.
-    expect(points[2][0] > points[1][0] + 0.03 and points[2][1] > points[3][1] + 0.02,
+if len(points) == 3:
+    # Clicked at the corners of a rectangle (the fourth deleted), the third point dragged right
+    # and up from the corner mirroring the first.
+    expect(points[2][0] > points[1][0] + 0.03 and points[2][1] > -points[0][1] + 0.02,
            "the dragged point moved: %s" % points)
-    shoelace = 0.5 * abs(sum(points[i][0] * points[(i + 1) % 4][1]
-                             - points[(i + 1) % 4][0] * points[i][1] for i in range(4)))
+    shoelace = 0.5 * abs(sum(points[i][0] * points[(i + 1) % 3][1]
+                             - points[(i + 1) % 3][0] * points[i][1] for i in range(3)))
     expect(abs(area - shoelace) <= 1e-9 * shoelace,
            "region area %.15g equals the polygon's %.15g" % (area, shoelace))
 
@@ -146,8 +149,8 @@ if not args.server_ranks:
     for h in history:
         if h["region_triangles"] and (not seen or h["region_area"] != seen[-1]):
             seen.append(h["region_area"])
-    expect(len(seen) >= 3 and seen[-1] == seen[-3] and seen[-2] != seen[-1],
-           "undo and redo of the drag: areas %s" % seen)
+    expect(len(seen) >= 4 and seen[-2] == seen[-4] and seen[-3] != seen[-2]
+           and seen[-1] < seen[-2], "drag, undo, redo, then deletion: areas %s" % seen)
     expect(shoelace is not None and abs(history[-1]["region_area"] - shoelace) <= 1e-9 * shoelace,
            "the GUI's last region has the polygon's area: %s" % history[-1]["region_area"])
 if failures:
