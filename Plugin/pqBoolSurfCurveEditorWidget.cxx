@@ -804,37 +804,33 @@ void pqBoolSurfCurveEditorWidget::clearAll()
 }
 
 //------------------------------------------------------------------------------
-void pqBoolSurfCurveEditorWidget::setShape(int shape)
+void pqBoolSurfCurveEditorWidget::EditCurrentCurve(const QString& label,
+  const std::function<void(pqBoolSurfDrawing::Curve&)>& edit)
 {
   if (pqBoolSurfDrawing::Curve* curve = this->Internal->CurrentCurvePtr())
   {
-    BEGIN_UNDO_SET(tr("Set curve shape"));
-    curve->Shape = shape;
+    BEGIN_UNDO_SET(label);
+    edit(*curve);
     this->Push();
     END_UNDO_SET();
   }
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::setShape(int shape)
+{
+  this->EditCurrentCurve(tr("Set curve shape"), [shape](auto& curve) { curve.Shape = shape; });
 }
 
 //------------------------------------------------------------------------------
 void pqBoolSurfCurveEditorWidget::setCurveType(int type)
 {
-  if (pqBoolSurfDrawing::Curve* curve = this->Internal->CurrentCurvePtr())
-  {
-    BEGIN_UNDO_SET(tr("Set curve type"));
-    curve->Type = type;
-    this->Push();
-    END_UNDO_SET();
-  }
+  this->EditCurrentCurve(tr("Set curve type"), [type](auto& curve) { curve.Type = type; });
 }
 
 //------------------------------------------------------------------------------
 void pqBoolSurfCurveEditorWidget::setClosed(bool closed)
 {
-  if (pqBoolSurfDrawing::Curve* curve = this->Internal->CurrentCurvePtr())
-  {
-    BEGIN_UNDO_SET(closed ? tr("Close curve") : tr("Open curve"));
-    curve->Closed = closed;
-    this->Push();
-    END_UNDO_SET();
-  }
+  this->EditCurrentCurve(closed ? tr("Close curve") : tr("Open curve"),
+    [closed](auto& curve) { curve.Closed = closed; });
 }

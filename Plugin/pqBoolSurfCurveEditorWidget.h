@@ -30,7 +30,10 @@
 
 #include "pqPropertyWidget.h"
 
-#include <memory> // for std::unique_ptr
+#include "pqBoolSurfDrawing.h" // for pqBoolSurfDrawing::Curve
+
+#include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
 
 class vtkObject;
 class vtkSMPropertyGroup;
@@ -84,6 +87,9 @@ private:
   void ReadBackExactPoints();
   void UpdateMarkers();
   void UpdateControls();
+  /// Applies `edit` to the current curve (if any) as one undoable step, and pushes.
+  void EditCurrentCurve(const QString& label,
+    const std::function<void(pqBoolSurfDrawing::Curve&)>& edit);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
