@@ -153,6 +153,10 @@ if not args.server_ranks:
            and seen[-1] < seen[-2], "drag, undo, redo, then deletion: areas %s" % seen)
     expect(shoelace is not None and abs(history[-1]["region_area"] - shoelace) <= 1e-9 * shoelace,
            "the GUI's last region has the polygon's area: %s" % history[-1]["region_area"])
+    # The Python trace recorded the edits as property changes of the Surface Curves source.
+    trace = history[-1]["trace"]
+    expect(re.search(r"\.Points = \[", trace) and re.search(r"\.CurveSizes = \[3\]", trace),
+           "the Python trace holds the edits:\n" + trace[-2000:])
 if failures:
     print(run.stdout[-4000:])
     sys.exit("FAILED:\n  " + "\n  ".join(failures))

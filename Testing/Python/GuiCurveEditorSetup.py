@@ -55,6 +55,9 @@ def main():
     ResetCamera(view)
     Render(view)
     SetActiveSource(curves)
+    # Python trace from here on: the editor's edits must appear in it.
+    from paraview import smtrace
+    smtrace.start_trace()
 
     result_path = os.environ["BOOLSURF_GUI_RESULT"]
     algorithm = region.GetClientSideObject()
@@ -73,6 +76,7 @@ def main():
         for name in ("Points", "TriangleIds", "Barycentrics", "CurveSizes", "ShapeIds",
                      "CurveTypes", "ClosedCurves"):
             result[name] = list(curves.GetPropertyValue(name))
+        result["trace"] = smtrace.get_current_trace_output()
         history.append(result)
         with open(result_path, "w") as f:
             json.dump(history, f)
