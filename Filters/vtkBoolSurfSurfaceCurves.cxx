@@ -1,6 +1,8 @@
 #include "vtkBoolSurfSurfaceCurves.h"
 
 #include "vtkBoolSurfRankGather.h"
+#include "vtkBoolSurfSurfaceCache.h"
+#include "vtkBoolSurfTraceStage.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -28,6 +30,7 @@ vtkStandardNewMacro(vtkBoolSurfSurfaceCurves);
 /// The closest-point locator of the last surface, rebuilt when the surface changes.
 struct vtkBoolSurfSurfaceCurves::Internals
 {
+  boolsurf::vtkSurfaceCache Traced; // the surface's adjacency and tracer for port 1
   vtkSmartPointer<vtkStaticCellLocator> Locator;
   vtkPolyData* Surface = nullptr;
   vtkMTimeType SurfaceTime = 0;
@@ -83,6 +86,7 @@ vtkBoolSurfSurfaceCurves::vtkBoolSurfSurfaceCurves()
   : Internal(new Internals)
 {
   this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(2);
 }
 
 vtkBoolSurfSurfaceCurves::~vtkBoolSurfSurfaceCurves() = default;
@@ -192,7 +196,9 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
   vtkBoolSurfRankGather gather(this, inputVector, 1);
   vtkPolyData* surface = gather.Input(0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* traced = vtkPolyData::GetData(outputVector, 1);
   output->Initialize(); // a failed update leaves an empty output
+  traced->Initialize();
   if (!gather.ComputesHere())
   {
     return 1; // other MPI ranks: empty outputs
@@ -375,7 +381,38 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
   output->GetCellData()->AddArray(shapeIds);
   output->GetCellData()->AddArray(curveTypes);
   output->GetCellData()->AddArray(closed);
+  this->TraceForDisplay(surface, output, traced);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfSurfaceCurves::TraceForDisplay(vtkPolyData* surface,
+  vtkPolyData* curves,
+  vtkPolyData* traced)
+{
+  // Port 1 shows the drawing as the filters downstream will use it (the curves traced with
+  // Trace Surface Curves' defaults), so it follows a drag in the curve editor. It is left empty,
+  // without a message, while the drawing cannot be traced (a curve of one point, a Bezier
+  // curve still missing handles): the filters that use the curves say why.
+  std::vector<std::string> warnings, problems, notes;
+  std::string error;
+  if (curves->GetNumberOfCells() == 0 ||
+    !this->Internal->Traced.GetUsable(surface, warnings, error))
+  {
+    return;
+  }
+  std::vector<boolsurf::TracedCurve> paths;
+  if (!boolsurf::TraceControlCurves(this->Internal->Traced,
+        curves,
+        boolsurf::TraceOptions(),
+        nullptr,
+        paths,
+        traced,
+        problems,
+        notes))
+  {
+    traced->Initialize();
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -24,6 +24,11 @@
  * triangle of the surface, barycentric weights outside the triangle, a closed Bezier curve
  * whose size is not a multiple of 3 or an open one whose size is not 3n+1, an empty surface.
  *
+ * Port 1 gives the same curves traced on the surface (geodesic polygons and Bezier splines
+ * with Trace Surface Curves' defaults, as vtkBoolSurfTraceCurves outputs them), for display:
+ * it follows the control points as they are edited, and is empty (no message) while the
+ * drawing cannot be traced yet. Filters take port 0.
+ *
  * Under MPI the surface is gathered to rank 0, which alone produces the curves (see
  * vtkBoolSurfRankGather): the drawing exists once, not once per rank.
  *
@@ -95,6 +100,9 @@ protected:
   std::vector<int> ClosedCurves;
 
 private:
+  /// Writes the curves traced on the surface to port 1 (empty when they cannot be traced).
+  void TraceForDisplay(vtkPolyData* surface, vtkPolyData* curves, vtkPolyData* traced);
+
   vtkBoolSurfSurfaceCurves(const vtkBoolSurfSurfaceCurves&) = delete;
   void operator=(const vtkBoolSurfSurfaceCurves&) = delete;
   struct Internals;

@@ -3,7 +3,8 @@ to the closest surface point (checked against VTK's own cell locator) and given 
 surface points; exact TriangleIds/Barycentrics are kept bit for bit (TriangleId -1 snaps
 that one point, as the curve editor stores a dragged point); curve sizes, shapes,
 types and closure reach the output; a state file saved and loaded again gives the same
-curves; bad properties give an empty output and an error naming the problem."""
+curves; port 1 holds the curves traced on the surface (Trace Surface Curves' output); bad
+properties give an empty output and an error naming the problem."""
 import os
 import tempfile
 
@@ -54,6 +55,13 @@ assert [cd.GetArray("CurveType").GetValue(c) for c in range(2)] == [0, 1]
 assert [cd.GetArray("Closed").GetValue(c) for c in range(2)] == [1, 0]
 lines = out.GetLines()
 assert lines.GetCellSize(0) == 4 and lines.GetCellSize(1) == 4  # closed: first point repeated
+
+# Port 1 shows the curves traced on the surface: Trace Surface Curves' output, point for point.
+shown = sm.Fetch(curves, idx=1)
+traced = sm.Fetch(TraceSurfaceCurves(Surface=mesh, Curves=curves))
+assert shown.GetNumberOfCells() == 2 and shown.GetNumberOfPoints() > 7, shown.GetNumberOfPoints()
+assert shown.GetNumberOfPoints() == traced.GetNumberOfPoints()
+assert all(shown.GetPoint(i) == traced.GetPoint(i) for i in range(traced.GetNumberOfPoints()))
 
 # Exact surface points are kept bit for bit.
 exact_tris = [tri.GetValue(i) for i in range(7)]
