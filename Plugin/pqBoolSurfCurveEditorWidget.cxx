@@ -372,6 +372,10 @@ void pqBoolSurfCurveEditorWidget::Detach()
     }
   }
   internal.MarkerRenderer = nullptr;
+  if (internal.Dragging)
+  {
+    END_UNDO_SET(); // the drag's undo set, opened at the press, ends with the editing
+  }
   internal.Dragging = internal.ClickPending = false;
   if (internal.View)
   {
