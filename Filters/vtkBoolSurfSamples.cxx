@@ -1,5 +1,6 @@
 #include "vtkBoolSurfSamples.h"
 
+#include "vtkBoolSurfPropertyVector.h"
 #include "vtkBoolSurfRankGather.h"
 
 #include <vtkCellArray.h>
@@ -18,32 +19,13 @@ vtkStandardNewMacro(vtkBoolSurfSamples);
 
 namespace
 {
-// Resizes a property vector; returns true when it changed (the caller then calls Modified).
-bool Resize(std::vector<double>& values, size_t size)
-{
-  if (values.size() == size)
-  {
-    return false;
-  }
-  values.resize(size, 0.0);
-  return true;
-}
-
-bool SetTriple(std::vector<double>& values, int i, double x, double y, double z)
+// Sets sample i's three values, growing the vector when a caller sets a sample past its end
+// (ParaView sets the count first; a plain VTK user need not). True when anything changed.
+bool SetSample(std::vector<double>& values, int i, double x, double y, double z)
 {
   const size_t at = 3 * static_cast<size_t>(std::max(0, i));
-  if (values.size() < at + 3)
-  {
-    values.resize(at + 3, 0.0);
-  }
-  if (values[at] == x && values[at + 1] == y && values[at + 2] == z)
-  {
-    return false;
-  }
-  values[at] = x;
-  values[at + 1] = y;
-  values[at + 2] = z;
-  return true;
+  const bool grown = values.size() < at + 3 && boolsurf::ResizeProperty(values, at + 3, 0.0);
+  return boolsurf::SetPropertyElements(values, at, { x, y, z }) || grown;
 }
 }
 
@@ -59,7 +41,7 @@ vtkBoolSurfSamples::~vtkBoolSurfSamples() = default;
 //------------------------------------------------------------------------------
 void vtkBoolSurfSamples::SetNumberOfPoints(int n)
 {
-  if (Resize(this->Points, 3 * static_cast<size_t>(std::max(0, n))))
+  if (boolsurf::ResizeProperty(this->Points, 3 * static_cast<size_t>(std::max(0, n)), 0.0))
   {
     this->Modified();
   }
@@ -68,7 +50,7 @@ void vtkBoolSurfSamples::SetNumberOfPoints(int n)
 //------------------------------------------------------------------------------
 void vtkBoolSurfSamples::SetPoint(int i, double x, double y, double z)
 {
-  if (SetTriple(this->Points, i, x, y, z))
+  if (SetSample(this->Points, i, x, y, z))
   {
     this->Modified();
   }
@@ -77,7 +59,7 @@ void vtkBoolSurfSamples::SetPoint(int i, double x, double y, double z)
 //------------------------------------------------------------------------------
 void vtkBoolSurfSamples::SetNumberOfDirections(int n)
 {
-  if (Resize(this->Directions, 3 * static_cast<size_t>(std::max(0, n))))
+  if (boolsurf::ResizeProperty(this->Directions, 3 * static_cast<size_t>(std::max(0, n)), 0.0))
   {
     this->Modified();
   }
@@ -86,7 +68,7 @@ void vtkBoolSurfSamples::SetNumberOfDirections(int n)
 //------------------------------------------------------------------------------
 void vtkBoolSurfSamples::SetDirection(int i, double x, double y, double z)
 {
-  if (SetTriple(this->Directions, i, x, y, z))
+  if (SetSample(this->Directions, i, x, y, z))
   {
     this->Modified();
   }

@@ -1,5 +1,6 @@
 #include "vtkBoolSurfSurfaceCurves.h"
 
+#include "vtkBoolSurfPropertyVector.h"
 #include "vtkBoolSurfRankGather.h"
 #include "vtkBoolSurfSurfaceCache.h"
 #include "vtkBoolSurfTraceStage.h"
@@ -51,29 +52,6 @@ struct vtkBoolSurfSurfaceCurves::Internals
 
 namespace
 {
-/// Sets element i of a property vector (ParaView sets the size first, then each element).
-template <typename T>
-bool SetElement(std::vector<T>& values, size_t i, T value)
-{
-  if (i >= values.size() || values[i] == value)
-  {
-    return false;
-  }
-  values[i] = value;
-  return true;
-}
-
-template <typename T>
-bool Resize(std::vector<T>& values, size_t n, T fill = T())
-{
-  if (values.size() == n)
-  {
-    return false;
-  }
-  values.resize(n, fill);
-  return true;
-}
-
 /// The value of a per-curve property, or its default past the property's end.
 int PerCurve(const std::vector<int>& values, size_t curve, int fallback)
 {
@@ -94,7 +72,7 @@ vtkBoolSurfSurfaceCurves::~vtkBoolSurfSurfaceCurves() = default;
 // Property setters: each marks the filter modified only when a value changes.
 void vtkBoolSurfSurfaceCurves::SetNumberOfPoints(int n)
 {
-  if (Resize(this->Points, 3 * static_cast<size_t>(std::max(0, n)), 0.0))
+  if (boolsurf::ResizeProperty(this->Points, 3 * static_cast<size_t>(std::max(0, n)), 0.0))
   {
     this->Modified();
   }
@@ -102,11 +80,8 @@ void vtkBoolSurfSurfaceCurves::SetNumberOfPoints(int n)
 
 void vtkBoolSurfSurfaceCurves::SetPoint(int i, double x, double y, double z)
 {
-  const size_t at = 3 * static_cast<size_t>(std::max(0, i));
-  bool changed = SetElement(this->Points, at, x);
-  changed |= SetElement(this->Points, at + 1, y);
-  changed |= SetElement(this->Points, at + 2, z);
-  if (changed)
+  if (boolsurf::SetPropertyElements(
+        this->Points, 3 * static_cast<size_t>(std::max(0, i)), { x, y, z }))
   {
     this->Modified();
   }
@@ -114,7 +89,8 @@ void vtkBoolSurfSurfaceCurves::SetPoint(int i, double x, double y, double z)
 
 void vtkBoolSurfSurfaceCurves::SetNumberOfTriangleIds(int n)
 {
-  if (Resize(this->TriangleIds, static_cast<size_t>(std::max(0, n)), vtkIdType(-1)))
+  if (boolsurf::ResizeProperty(
+        this->TriangleIds, static_cast<size_t>(std::max(0, n)), vtkIdType(-1)))
   {
     this->Modified();
   }
@@ -122,7 +98,8 @@ void vtkBoolSurfSurfaceCurves::SetNumberOfTriangleIds(int n)
 
 void vtkBoolSurfSurfaceCurves::SetTriangleId(int i, vtkIdType triangle)
 {
-  if (SetElement(this->TriangleIds, static_cast<size_t>(std::max(0, i)), triangle))
+  if (boolsurf::SetPropertyElements(
+        this->TriangleIds, static_cast<size_t>(std::max(0, i)), { triangle }))
   {
     this->Modified();
   }
@@ -130,7 +107,7 @@ void vtkBoolSurfSurfaceCurves::SetTriangleId(int i, vtkIdType triangle)
 
 void vtkBoolSurfSurfaceCurves::SetNumberOfBarycentrics(int n)
 {
-  if (Resize(this->Barycentrics, 2 * static_cast<size_t>(std::max(0, n)), 0.0))
+  if (boolsurf::ResizeProperty(this->Barycentrics, 2 * static_cast<size_t>(std::max(0, n)), 0.0))
   {
     this->Modified();
   }
@@ -138,10 +115,8 @@ void vtkBoolSurfSurfaceCurves::SetNumberOfBarycentrics(int n)
 
 void vtkBoolSurfSurfaceCurves::SetBarycentric(int i, double u, double v)
 {
-  const size_t at = 2 * static_cast<size_t>(std::max(0, i));
-  bool changed = SetElement(this->Barycentrics, at, u);
-  changed |= SetElement(this->Barycentrics, at + 1, v);
-  if (changed)
+  if (boolsurf::SetPropertyElements(
+        this->Barycentrics, 2 * static_cast<size_t>(std::max(0, i)), { u, v }))
   {
     this->Modified();
   }
@@ -150,14 +125,15 @@ void vtkBoolSurfSurfaceCurves::SetBarycentric(int i, double u, double v)
 #define BOOLSURF_PER_CURVE_PROPERTY(Count, Element, Vector, Fill)                                  \
   void vtkBoolSurfSurfaceCurves::Count(int n)                                                      \
   {                                                                                                \
-    if (Resize(this->Vector, static_cast<size_t>(std::max(0, n)), Fill))                           \
+    if (boolsurf::ResizeProperty(this->Vector, static_cast<size_t>(std::max(0, n)), Fill))         \
     {                                                                                              \
       this->Modified();                                                                            \
     }                                                                                              \
   }                                                                                                \
   void vtkBoolSurfSurfaceCurves::Element(int i, int value)                                         \
   {                                                                                                \
-    if (SetElement(this->Vector, static_cast<size_t>(std::max(0, i)), value))                      \
+    if (boolsurf::SetPropertyElements(                                                             \
+          this->Vector, static_cast<size_t>(std::max(0, i)), { value }))                           \
     {                                                                                              \
       this->Modified();                                                                            \
     }                                                                                              \
