@@ -455,11 +455,7 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
       }
       if (internal.Interactor->GetShiftKey())
       {
-        BEGIN_UNDO_SET(tr("Delete control point"));
-        internal.Drawing.RemovePoint(under);
-        internal.Selected = {};
-        this->Push();
-        END_UNDO_SET();
+        this->DeletePointAt(under);
         return true;
       }
       internal.Selected = under;
@@ -467,9 +463,7 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
       internal.Dragging = true;
       internal.DragMoved = false;
       BEGIN_UNDO_SET(tr("Move control point"));
-      this->UpdateMarkers();
-      this->UpdateControls();
-      internal.View->render();
+      this->Refresh();
       return true;
     }
     case vtkCommand::MouseMoveEvent:
@@ -560,11 +554,17 @@ void pqBoolSurfCurveEditorWidget::Push()
   smproxy->UpdateVTKObjects();
   internal.Writing = false;
   internal.LoadTimer.stop();
+  this->Refresh(); // the source and everything downstream update with the render
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::Refresh()
+{
   this->UpdateMarkers();
   this->UpdateControls();
   if (pqView* view = this->view())
   {
-    view->render(); // the source and everything downstream update now
+    view->render();
   }
 }
 
@@ -654,12 +654,7 @@ void pqBoolSurfCurveEditorWidget::loadFromProxy()
   {
     internal.Selected = {};
   }
-  this->UpdateMarkers();
-  this->UpdateControls();
-  if (internal.View)
-  {
-    internal.View->render();
-  }
+  this->Refresh();
 }
 
 //------------------------------------------------------------------------------
@@ -752,12 +747,7 @@ void pqBoolSurfCurveEditorWidget::setCurrentCurve(int curve)
 {
   this->Internal->Current = curve;
   this->Internal->Selected = {};
-  this->UpdateMarkers();
-  this->UpdateControls();
-  if (this->Internal->View)
-  {
-    this->Internal->View->render();
-  }
+  this->Refresh();
 }
 
 //------------------------------------------------------------------------------
@@ -770,13 +760,10 @@ void pqBoolSurfCurveEditorWidget::newCurve()
 //------------------------------------------------------------------------------
 void pqBoolSurfCurveEditorWidget::deleteCurve()
 {
-  Internals& internal = *this->Internal;
   BEGIN_UNDO_SET(tr("Delete curve"));
-  if (internal.Drawing.RemoveCurve(internal.Current))
+  if (this->Internal->Drawing.RemoveCurve(this->Internal->Current))
   {
-    internal.Current = std::min(internal.Current, int(internal.Drawing.Curves.size()) - 1);
-    internal.Selected = {};
-    this->Push();
+    this->PushRemoval();
   }
   END_UNDO_SET();
 }
@@ -784,15 +771,28 @@ void pqBoolSurfCurveEditorWidget::deleteCurve()
 //------------------------------------------------------------------------------
 void pqBoolSurfCurveEditorWidget::deletePoint()
 {
-  Internals& internal = *this->Internal;
+  this->DeletePointAt(this->Internal->Selected);
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::DeletePointAt(const pqBoolSurfDrawing::Handle& point)
+{
   BEGIN_UNDO_SET(tr("Delete control point"));
-  if (internal.Drawing.RemovePoint(internal.Selected))
+  if (this->Internal->Drawing.RemovePoint(point))
   {
-    internal.Current = std::min(internal.Current, int(internal.Drawing.Curves.size()) - 1);
-    internal.Selected = {};
-    this->Push();
+    this->PushRemoval();
   }
   END_UNDO_SET();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::PushRemoval()
+{
+  Internals& internal = *this->Internal;
+  // A removed curve may have been the last one: the current curve stays a valid index (or -1).
+  internal.Current = std::min(internal.Current, int(internal.Drawing.Curves.size()) - 1);
+  internal.Selected = {};
+  this->Push();
 }
 
 //------------------------------------------------------------------------------

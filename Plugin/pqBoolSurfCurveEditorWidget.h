@@ -87,6 +87,13 @@ private:
   void ReadBackExactPoints();
   void UpdateMarkers();
   void UpdateControls();
+  /// Markers and panel from the drawing, then a render of the view.
+  void Refresh();
+  /// Deletes a control point (Delete Point, Shift+click) as one undoable step.
+  void DeletePointAt(const pqBoolSurfDrawing::Handle& point);
+  /// After a point or curve was removed: keeps the current curve valid, clears the
+  /// selection, pushes.
+  void PushRemoval();
   /// Applies `edit` to the current curve (if any) as one undoable step, and pushes.
   void EditCurrentCurve(const QString& label,
     const std::function<void(pqBoolSurfDrawing::Curve&)>& edit);
