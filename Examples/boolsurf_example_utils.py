@@ -13,8 +13,8 @@ import os
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager as sm
 from paraview import simple
-from vtkmodules.vtkCommonCore import mutable, vtkIntArray, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkCellLocator, vtkPolyData
+from vtkmodules.vtkCommonCore import mutable
+from vtkmodules.vtkCommonDataModel import vtkCellLocator
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
