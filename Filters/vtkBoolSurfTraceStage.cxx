@@ -70,11 +70,25 @@ void WriteTraces(const TriangleMesh& mesh,
       const CanonicalPoint& p = trace.Curve.Points[i];
       const Vec3 x = PositionOf(mesh, p);
       points->InsertNextPoint(x.x, x.y, x.z);
-      // Control points keep the surface point the user gave, bit for bit (a point on an edge
-      // or vertex has several triangle forms; the user's stays theirs).
+      // Every point is written canonically (exact zeros on edges and vertices), so Surface
+      // Arrangement and every other reader locate it where the tracer did. A control point is
+      // written in the user's triangle when that triangle holds it (then, off edges and
+      // vertices, the user's numbers bit for bit); the user's values themselves stay in the
+      // field data ControlTriangleId/ControlBarycentric. Other points go in a triangle they
+      // share with the next point of the curve.
       const int k = trace.ControlPoint[i];
       const bool isControl = k >= 0 && k < static_cast<int>(control.Points.size());
-      const SurfacePoint sp = isControl ? control.Points[k] : ToSurfacePoint(mesh, p);
+      int preferred = -1;
+      if (isControl)
+      {
+        preferred = control.Points[k].Triangle;
+      }
+      else if (n > 1)
+      {
+        const size_t next = i + 1 < n ? i + 1 : (trace.Curve.Closed ? 0 : i - 1);
+        preferred = SharedTriangle(mesh, p, trace.Curve.Points[next]);
+      }
+      const SurfacePoint sp = WriteSurfacePoint(mesh, p, preferred);
       triangleId->InsertNextValue(sp.Triangle);
       const double uv[2] = { sp.U, sp.V };
       barycentric->InsertNextTuple(uv);

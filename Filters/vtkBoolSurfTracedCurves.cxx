@@ -91,7 +91,7 @@ bool ReadTracedCurves(vtkPolyData* curves,
           ok = false;
           break;
         }
-        curve.Points.push_back(Canonicalize(mesh, sp));
+        curve.Points.push_back(LocateSurfacePoint(mesh, sp));
       }
       if (ok)
       {

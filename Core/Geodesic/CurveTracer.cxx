@@ -9,11 +9,6 @@ namespace boolsurf
 {
 namespace
 {
-// Barycentric weights at most this are zero for control points (about 64 ulps of 1).
-constexpr double ControlPointSnap = 1.5e-14;
-} // namespace
-namespace
-{
 std::string CurveLabel(int curveId)
 {
   return "curve " + std::to_string(curveId);
@@ -57,13 +52,20 @@ void CurveTracer::SetResolution(int levels)
 }
 
 //------------------------------------------------------------------------------
-void CurveTracer::AppendPoint(const CanonicalPoint& p,
+void CurveTracer::AppendPoint(const CanonicalPoint& computed,
   int segment,
   int control,
   double parameter,
   bool onCurve,
   CurveTrace& out) const
 {
+  // A computed point inside a triangle but within SurfacePointSnap of its edge is located the
+  // way every reader of the written curve will locate it, so a traced curve reads back as
+  // itself.
+  const CanonicalPoint p = computed.Location == PointLocation::Face
+    ? LocateSurfacePoint(
+        this->Solver.GetMesh(), SurfacePoint{ computed.Id, computed.U, computed.V })
+    : computed;
   // Joints (end of one path, start of the next) arrive twice; the first copy stays.
   if (!out.Curve.Points.empty() && out.Curve.Points.back() == p)
   {
@@ -267,9 +269,9 @@ TraceStatus CurveTracer::Trace(const std::vector<SurfacePoint>& points,
     }
     // A weight within rounding of zero puts the point on the edge (or vertex): a point 1e-16
     // inside a triangle would make its paths cross that edge and come straight back, a
-    // zero-length excursion that the arrangement cannot orient. The snap is far below any
-    // distance a user means (weights are fractions of the triangle).
-    canonical[i] = Canonicalize(mesh, points[i], ControlPointSnap);
+    // zero-length excursion that the arrangement cannot orient. Every reader of surface points
+    // uses this same tolerance (SurfacePointSnap).
+    canonical[i] = LocateSurfacePoint(mesh, points[i]);
   }
   CurveKey key{
     std::move(canonical), type, closed, this->Resolution, this->Solver.GetUseExactStrip()

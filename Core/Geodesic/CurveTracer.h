@@ -107,7 +107,7 @@ private:
     bool lastOnCurve,
     bool interiorOnCurve,
     CurveTrace& out) const;
-  void AppendPoint(const CanonicalPoint& p,
+  void AppendPoint(const CanonicalPoint& computed,
     int segment,
     int control,
     double parameter,

@@ -19,6 +19,7 @@ CanonicalPoint Canonicalize(const TriangleMesh& mesh, SurfacePoint p, double sna
   {
     w[0] = 0.0;
   }
+  const bool exactZero[3] = { w[0] == 0.0, w[1] == 0.0, w[2] == 0.0 };
   int zeros = 0;
   for (double& x : w)
   {
@@ -54,7 +55,15 @@ CanonicalPoint Canonicalize(const TriangleMesh& mesh, SurfacePoint p, double sna
     const int e = mesh.GetEdgeId(p.Triangle, localEdge);
     c.Location = PointLocation::Edge;
     c.Id = e;
-    c.T = mesh.GetEdgeVertices(e)[0] == a ? s : 1.0 - s;
+    const bool forward = mesh.GetEdgeVertices(e)[0] == a;
+    c.T = forward ? s : 1.0 - s;
+    // Written exactly on the edge with the second vertex's weight explicit (u or v): that
+    // weight is the parameter, bit for bit, rather than a renormalized copy an ulp away.
+    const int second = forward ? (localEdge + 1) % 3 : localEdge;
+    if (exactZero[k] && second != 0)
+    {
+      c.T = w[second];
+    }
     return c;
   }
   c.Location = PointLocation::Face;
@@ -229,6 +238,44 @@ SurfacePoint ToSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c)
     p.V = w[2];
   }
   return p;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+SurfacePoint FormIn(const TriangleMesh& mesh, const CanonicalPoint& c, int t)
+{
+  const std::array<double, 3> w = WeightsInTriangle(mesh, c, t);
+  return SurfacePoint{ t, w[1], w[2] };
+}
+} // namespace
+
+SurfacePoint WriteSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c, int preferred)
+{
+  if (c.Location == PointLocation::Face)
+  {
+    return SurfacePoint{ c.Id, c.U, c.V };
+  }
+  const auto readsBack = [&](const SurfacePoint& sp) { return LocateSurfacePoint(mesh, sp) == c; };
+  if (preferred >= 0 && TriangleContains(mesh, c, preferred))
+  {
+    const SurfacePoint sp = FormIn(mesh, c, preferred);
+    if (readsBack(sp))
+    {
+      return sp;
+    }
+  }
+  thread_local std::vector<int> triangles;
+  TrianglesOf(mesh, c, triangles);
+  for (const int t : triangles)
+  {
+    const SurfacePoint sp = FormIn(mesh, c, t);
+    if (readsBack(sp))
+    {
+      return sp;
+    }
+  }
+  return ToSurfacePoint(mesh, c);
 }
 
 //------------------------------------------------------------------------------

@@ -61,10 +61,26 @@ struct CanonicalPoint
   }
 };
 
+/// The one tolerance that decides where a given surface point lies: a barycentric weight at
+/// most this (about 64 ulps of 1) is zero, so a point written 1e-16 off an edge or a vertex,
+/// in either triangle, is on it. Every stage that reads surface points (tracing, arrangement,
+/// homology, resolution, control-point recovery, scene files) locates them with
+/// LocateSurfacePoint, so two readers of one curve never disagree. It is far below any distance
+/// a user means: weights are fractions of the triangle.
+constexpr double SurfacePointSnap = 1.5e-14;
+
 /// Canonical form of p. A barycentric weight whose absolute value is at most `snap` counts
 /// as zero, so a point given as (t, 1e-17, 0.3) lands on the edge; pass 0 for an exact test.
-/// Weights are clamped into the triangle first.
+/// Weights are clamped into the triangle first. An edge point's parameter is the weight of the
+/// edge's second vertex as written when that weight is one of (u, v), so a point written by
+/// ToSurfacePoint reads back bit for bit.
 CanonicalPoint Canonicalize(const TriangleMesh& mesh, SurfacePoint p, double snap = 0.0);
+
+/// Where p lies, with the one tolerance of every reader: Canonicalize(mesh, p, SurfacePointSnap).
+inline CanonicalPoint LocateSurfacePoint(const TriangleMesh& mesh, const SurfacePoint& p)
+{
+  return Canonicalize(mesh, p, SurfacePointSnap);
+}
 
 /// Barycentric weights (w0, w1, w2) of c in triangle t, which must contain c (t itself for a
 /// face point, a triangle of the edge or vertex otherwise). Edge points put the two canonical
@@ -88,8 +104,18 @@ void TrianglesOf(const TriangleMesh& mesh, const CanonicalPoint& c, std::vector<
 /// A triangle containing both a and b (the lowest id), or -1.
 int SharedTriangle(const TriangleMesh& mesh, const CanonicalPoint& a, const CanonicalPoint& b);
 
-/// Triangle + barycentric form of c (in AnyTriangleOf(c)), for output arrays.
+/// Triangle + barycentric form of c (in AnyTriangleOf(c)), for output arrays: the weights of
+/// c's location are written exactly (an edge point has an exact 0 opposite its edge, a vertex
+/// is (1, 0, 0) in some order).
 SurfacePoint ToSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c);
+
+/// The canonical form of c as written in an output array: in `preferred` when that triangle
+/// contains c (so a curve point is written in a triangle it shares with its neighbours), else
+/// in AnyTriangleOf(c). When that form would not read back (LocateSurfacePoint) to c bit for
+/// bit, which can happen for an edge point whose parameter sits on the implicit corner, the
+/// other triangles of c are tried, and finally the deterministic AnyTriangleOf form, so one
+/// point is written the same way by every curve through it.
+SurfacePoint WriteSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c, int preferred);
 
 /// False, with a sentence naming the problem, when p cannot be used: triangle id out of
 /// range, a triangle with invalid or repeated vertex indices, non-finite barycentrics.

@@ -68,7 +68,7 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
   }
 
   // Cubic Bezier: each segment over [t0, t1], cut at the range's ends.
-  auto canonical = [&](int k) { return Canonicalize(mesh, source.Controls[k % controls]); };
+  auto canonical = [&](int k) { return LocateSurfacePoint(mesh, source.Controls[k % controls]); };
   std::vector<CanonicalPoint> out;
   const int s0 = static_cast<int>(std::floor(t0 + SameParameter));
   const int s1 = static_cast<int>(std::ceil(t1 - SameParameter));
@@ -330,7 +330,7 @@ TraceStatus BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve)
     std::array<CanonicalPoint, 4> rest;
     for (int k = 0; k < 4; ++k)
     {
-      rest[k] = Canonicalize(mesh, source.Controls[(3 * seg + k) % controls]);
+      rest[k] = LocateSurfacePoint(mesh, source.Controls[(3 * seg + k) % controls]);
     }
     double from = 0;
     for (double t : at)

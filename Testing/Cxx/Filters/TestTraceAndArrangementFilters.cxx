@@ -132,8 +132,11 @@ TEST(TraceCurvesFilter, ExactSurfacePointsAreUsedAsGiven)
   EXPECT_EQ(outBary->GetComponent(last, 1), 0.25);
 }
 
-// Control points given as surface points come back bit for bit at their ControlPointId, for
-// arbitrary doubles, points on edges (v = 1 - u) and on vertices.
+// Control points given as surface points come back bit for bit in the field data
+// ControlTriangleId/ControlBarycentric, for arbitrary doubles, points on edges (v = 1 - u) and on
+// vertices; the traced point at their ControlPointId is the same surface point in canonical form
+// (exact zeros on edges and vertices), in the user's triangle, and off edges and vertices it is
+// the user's numbers bit for bit.
 TEST(TraceCurvesFilter, ControlPointsRoundTripExactly)
 {
   auto mesh = testutils::ToPolyData(boolsurf::MakeFlatSquare(12, 1.0, 0.3, 5));
@@ -185,11 +188,42 @@ TEST(TraceCurvesFilter, ControlPointsRoundTripExactly)
       continue;
     }
     ++found;
+    const double u = outBary->GetComponent(p, 0), v = outBary->GetComponent(p, 1);
     EXPECT_EQ(outTri->GetComponent(p, 0), tri->GetValue(k)) << "control point " << k;
-    EXPECT_EQ(outBary->GetComponent(p, 0), bary->GetComponent(k, 0)) << "control point " << k;
-    EXPECT_EQ(outBary->GetComponent(p, 1), bary->GetComponent(k, 1)) << "control point " << k;
+    if (k % 4 == 0)
+    {
+      EXPECT_EQ(u, bary->GetComponent(k, 0)) << "control point " << k;
+      EXPECT_EQ(v, bary->GetComponent(k, 1)) << "control point " << k;
+    }
+    else
+    {
+      // On an edge or a vertex: a weight exactly 0 where the user's is (within rounding).
+      const double w[3] = { 1 - u - v, u, v };
+      const double given[3] = { 1 - bary->GetComponent(k, 0) - bary->GetComponent(k, 1),
+        bary->GetComponent(k, 0),
+        bary->GetComponent(k, 1) };
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(w[c], given[c], 1e-15) << "control point " << k << " corner " << c;
+        if (std::abs(given[c]) < 1e-15)
+        {
+          EXPECT_TRUE(c == 0 ? u + v == 1 : w[c] == 0) << "control point " << k << " corner " << c;
+        }
+      }
+    }
   }
   EXPECT_GE(found, n);
+  auto* fieldTri = out->GetFieldData()->GetArray("ControlTriangleId");
+  auto* fieldBary = out->GetFieldData()->GetArray("ControlBarycentric");
+  ASSERT_NE(fieldTri, nullptr);
+  ASSERT_NE(fieldBary, nullptr);
+  ASSERT_EQ(fieldTri->GetNumberOfTuples(), n);
+  for (int k = 0; k < n; ++k)
+  {
+    EXPECT_EQ(fieldTri->GetComponent(k, 0), tri->GetValue(k)) << "control point " << k;
+    EXPECT_EQ(fieldBary->GetComponent(k, 0), bary->GetComponent(k, 0)) << "control point " << k;
+    EXPECT_EQ(fieldBary->GetComponent(k, 1), bary->GetComponent(k, 1)) << "control point " << k;
+  }
 }
 
 TEST(TraceCurvesFilter, BadInputsAreNamed)

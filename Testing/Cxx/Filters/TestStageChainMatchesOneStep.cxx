@@ -1,0 +1,388 @@
+// The stage filters (Trace Surface Curves -> Surface Arrangement -> Label Arrangement Cells ->
+// Surface Boolean) give the one-step BoolSurf filter's answer: same refusals, same arrangement
+// cells, same labels, same region. Curves are random, on flat, spherical, toroidal and open
+// meshes in float32 and float64, with control points given as coordinates (projected), as exact
+// surface points, and as exact points pushed 1e-16 .. 1e-12 off mesh edges and vertices on
+// either side, in either triangle. Also the regressions that refused through the stage chain.
+#include "FilterTestUtils.h"
+#include "vtkBoolSurf.h"
+#include "vtkBoolSurfArrangement.h"
+#include "vtkBoolSurfBoolean.h"
+#include "vtkBoolSurfLabeling.h"
+#include "vtkBoolSurfTraceCurves.h"
+
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkPointData.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+namespace
+{
+
+struct Answer
+{
+  std::string Errors;
+  double Area = 0;
+  vtkIdType RegionTriangles = 0;
+  std::vector<int> CellLabels; ///< cells x shapes, the labeling's table
+  std::vector<int> ShapeConsistent;
+};
+
+std::vector<int> IntsOf(vtkFieldData* fd, const char* name)
+{
+  std::vector<int> values;
+  vtkDataArray* a = fd ? fd->GetArray(name) : nullptr;
+  for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
+  {
+    for (int k = 0; k < a->GetNumberOfComponents(); ++k)
+    {
+      values.push_back(static_cast<int>(a->GetComponent(i, k)));
+    }
+  }
+  return values;
+}
+
+/// Errors and warnings of every filter of a pipeline.
+struct Messages
+{
+  vtkNew<testutils::MessageCatcher> Catcher;
+  void Watch(vtkAlgorithm* a)
+  {
+    a->AddObserver(vtkCommand::ErrorEvent, this->Catcher);
+    a->AddObserver(vtkCommand::WarningEvent, this->Catcher);
+  }
+};
+
+void ReadAnswer(vtkPolyData* region, vtkFieldData* labels, const std::string& errors, Answer& out)
+{
+  out.Errors = errors;
+  out.Area = testutils::Area(region);
+  out.RegionTriangles = region->GetNumberOfCells();
+  out.CellLabels = IntsOf(labels, "CellLabels");
+  out.ShapeConsistent = IntsOf(labels, "ShapeConsistent");
+}
+
+Answer OneStep(vtkPolyData* surface, vtkPolyData* curves, int operation)
+{
+  vtkNew<vtkBoolSurf> f;
+  Messages m;
+  m.Watch(f);
+  f->SetInputData(0, surface);
+  f->SetInputData(1, curves);
+  f->SetOperation(operation);
+  f->SetShapeA(operation == 0 ? -1 : 0);
+  f->SetShapeB(operation == 0 ? -1 : 1);
+  f->Update();
+  Answer a;
+  ReadAnswer(f->GetOutput(0), f->GetOutput(0)->GetFieldData(), m.Catcher->Errors, a);
+  return a;
+}
+
+Answer StageChain(vtkPolyData* surface, vtkPolyData* curves, int operation)
+{
+  vtkNew<vtkBoolSurfTraceCurves> trace;
+  vtkNew<vtkBoolSurfArrangement> arrange;
+  vtkNew<vtkBoolSurfLabeling> label;
+  vtkNew<vtkBoolSurfBoolean> boolean;
+  Messages m;
+  for (vtkAlgorithm* a : std::initializer_list<vtkAlgorithm*>{ trace, arrange, label, boolean })
+  {
+    m.Watch(a);
+  }
+  trace->SetInputData(0, surface);
+  trace->SetInputData(1, curves);
+  arrange->SetInputData(0, surface);
+  arrange->SetInputConnection(1, trace->GetOutputPort());
+  label->SetInputConnection(arrange->GetOutputPort(0));
+  boolean->SetInputConnection(label->GetOutputPort(0));
+  boolean->SetOperation(operation);
+  boolean->SetShapeA(operation == 0 ? -1 : 0);
+  boolean->SetShapeB(operation == 0 ? -1 : 1);
+  boolean->Update();
+  Answer a;
+  ReadAnswer(boolean->GetOutput(0), label->GetOutput()->GetFieldData(), m.Catcher->Errors, a);
+  return a;
+}
+
+/// Messages differ (the chain names the filter that failed); whether there is one does not.
+bool Refused(const Answer& a)
+{
+  return !a.Errors.empty();
+}
+
+void ExpectSameAnswer(const Answer& oneStep, const Answer& chain, const std::string& what)
+{
+  ASSERT_EQ(Refused(oneStep), Refused(chain))
+    << what << "\none-step: " << oneStep.Errors << "\nstage chain: " << chain.Errors;
+  if (Refused(oneStep))
+  {
+    return;
+  }
+  EXPECT_EQ(oneStep.RegionTriangles, chain.RegionTriangles) << what;
+  EXPECT_NEAR(oneStep.Area, chain.Area, 1e-12) << what;
+  EXPECT_EQ(oneStep.CellLabels, chain.CellLabels) << what;
+  EXPECT_EQ(oneStep.ShapeConsistent, chain.ShapeConsistent) << what;
+}
+
+/// Surface points of `curves` as point data TriangleId/Barycentric.
+void AddSurfacePoints(vtkPolyData* curves,
+  const std::vector<int>& triangles,
+  const std::vector<std::array<double, 2>>& uv)
+{
+  vtkNew<vtkIdTypeArray> tri;
+  tri->SetName("TriangleId");
+  vtkNew<vtkDoubleArray> bary;
+  bary->SetName("Barycentric");
+  bary->SetNumberOfComponents(2);
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    tri->InsertNextValue(triangles[i]);
+    bary->InsertNextTuple2(uv[i][0], uv[i][1]);
+  }
+  curves->GetPointData()->AddArray(tri);
+  curves->GetPointData()->AddArray(bary);
+}
+
+vtkSmartPointer<vtkPolyData> AsFloat32(vtkPolyData* surface)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(surface->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
+  {
+    points->SetPoint(p, surface->GetPoint(p));
+  }
+  out->SetPoints(points);
+  out->SetPolys(surface->GetPolys());
+  return out;
+}
+
+// How the control points of the random curves are given.
+enum class PointForm
+{
+  Coordinates, ///< 3D points near the surface, projected by the filters
+  Exact,       ///< TriangleId/Barycentric strictly inside triangles
+  NearEdge,    ///< 1e-16 .. 1e-12 off a mesh edge, either side, either triangle
+  NearVertex,  ///< 1e-16 .. 1e-12 off a mesh vertex, either triangle
+};
+
+const char* NameOf(PointForm f)
+{
+  switch (f)
+  {
+    case PointForm::Coordinates:
+      return "coordinates";
+    case PointForm::Exact:
+      return "exact";
+    case PointForm::NearEdge:
+      return "near-edge";
+    case PointForm::NearVertex:
+      return "near-vertex";
+  }
+  return "?";
+}
+
+/// Random closed polygons (2 or 3 shapes, 3..6 points, each point in a small neighbourhood of a
+/// random center so that curves overlap) as control curves.
+vtkSmartPointer<vtkPolyData> RandomCurves(vtkPolyData* surface, PointForm form, std::mt19937& rng)
+{
+  const vtkIdType nt = surface->GetNumberOfCells();
+  std::uniform_int_distribution<vtkIdType> anyTriangle(0, nt - 1);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> exponent(12, 16);
+  const auto tiny = [&] { return std::pow(10.0, -exponent(rng)) * (1 + unit(rng)); };
+  const int shapes = 2 + static_cast<int>(unit(rng) * 2);
+  // A neighbourhood: triangles whose first vertex is within a radius of a center vertex.
+  double bounds[6];
+  surface->GetBounds(bounds);
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  std::vector<testutils::ControlPolygon> polygons;
+  std::vector<int> triangles;
+  std::vector<std::array<double, 2>> uvs;
+  const vtkIdType center = anyTriangle(rng);
+  double c[3];
+  surface->GetPoint(surface->GetCell(center)->GetPointId(0), c);
+  std::vector<vtkIdType> near;
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    double x[3];
+    surface->GetPoint(surface->GetCell(t)->GetPointId(0), x);
+    if (std::sqrt(vtkMath::Distance2BetweenPoints(x, c)) < 0.25 * diagonal)
+    {
+      near.push_back(t);
+    }
+  }
+  std::uniform_int_distribution<std::size_t> pick(0, near.size() - 1);
+  for (int s = 0; s < shapes; ++s)
+  {
+    testutils::ControlPolygon polygon;
+    polygon.ShapeId = s;
+    const int n = 3 + static_cast<int>(unit(rng) * 4);
+    for (int i = 0; i < n; ++i)
+    {
+      const int t = static_cast<int>(near[pick(rng)]);
+      double u = 0.05 + 0.9 * unit(rng), v = (1 - u) * (0.05 + 0.9 * unit(rng));
+      if (form == PointForm::NearEdge)
+      {
+        // Off the edge opposite a random corner by +-tiny (outside is clamped back).
+        const int corner = static_cast<int>(unit(rng) * 3);
+        const double off = unit(rng) < 0.5 ? tiny() : -tiny();
+        const double along = 0.1 + 0.8 * unit(rng);
+        if (corner == 0)
+        {
+          u = along;
+          v = 1 - along - off;
+        }
+        else if (corner == 1)
+        {
+          u = off;
+          v = along;
+        }
+        else
+        {
+          u = along;
+          v = off;
+        }
+      }
+      else if (form == PointForm::NearVertex)
+      {
+        const int corner = static_cast<int>(unit(rng) * 3);
+        const double a = tiny(), b = tiny();
+        u = corner == 1 ? 1 - a - b : a;
+        v = corner == 2 ? 1 - a - b : (corner == 1 ? b : a);
+      }
+      double p[3], x0[3], x1[3], x2[3];
+      vtkCell* cell = surface->GetCell(t);
+      surface->GetPoint(cell->GetPointId(0), x0);
+      surface->GetPoint(cell->GetPointId(1), x1);
+      surface->GetPoint(cell->GetPointId(2), x2);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = (1 - u - v) * x0[k] + u * x1[k] + v * x2[k];
+      }
+      polygon.Points.push_back({ p[0], p[1], p[2] });
+      triangles.push_back(t);
+      uvs.push_back({ u, v });
+    }
+    polygons.push_back(polygon);
+  }
+  auto curves = testutils::ToCurves(polygons);
+  if (form != PointForm::Coordinates)
+  {
+    AddSurfacePoints(curves, triangles, uvs);
+  }
+  return curves;
+}
+
+struct NamedSurface
+{
+  std::string Name;
+  vtkSmartPointer<vtkPolyData> Surface;
+};
+
+std::vector<NamedSurface> Surfaces()
+{
+  std::vector<NamedSurface> all;
+  const std::vector<std::pair<std::string, boolsurf::MeshData>> meshes{
+    { "flat", boolsurf::MakeFlatSquare(10, 1.0, 0.3, 7) },
+    { "sphere", boolsurf::MakeIcosphere(2) },
+    { "torus", boolsurf::MakeTorus(1.0, 0.4, 24, 12) },
+    { "open cylinder", boolsurf::MakeOpenCylinder(0.5, 1.0, 20, 8) },
+  };
+  for (const auto& m : meshes)
+  {
+    auto surface = testutils::ToPolyData(m.second);
+    all.push_back({ m.first + " float64", surface });
+    all.push_back({ m.first + " float32", AsFloat32(surface) });
+  }
+  return all;
+}
+
+} // namespace
+
+// The property: over random drawings, the chain answers exactly when the one-step filter does,
+// with the same cells, labels and region.
+TEST(StageChain, MatchesOneStepOnRandomCurves)
+{
+  std::mt19937 rng(26);
+  const int trials = 6;
+  for (const NamedSurface& s : Surfaces())
+  {
+    for (PointForm form :
+      { PointForm::Coordinates, PointForm::Exact, PointForm::NearEdge, PointForm::NearVertex })
+    {
+      for (int trial = 0; trial < trials; ++trial)
+      {
+        auto curves = RandomCurves(s.Surface, form, rng);
+        const int operation = trial % 4; // union, intersection, difference, xor
+        const std::string what = s.Name + ", " + NameOf(form) + ", trial " + std::to_string(trial);
+        ExpectSameAnswer(
+          OneStep(s.Surface, curves, operation), StageChain(s.Surface, curves, operation), what);
+      }
+    }
+  }
+}
+
+// A control point 1e-15 from a grid vertex: the tracer locates it on the vertex; the chain used
+// to read it back inside the triangle and refuse ("share no triangle").
+TEST(StageChain, ControlPointRoundingOffAVertex)
+{
+  auto surface = testutils::ToPolyData(boolsurf::MakeFlatSquare(4));
+  const auto areaOf = [&](double eps)
+  {
+    testutils::ControlPolygon polygon;
+    polygon.Points.assign(3, { 0, 0, 0 });
+    auto curves = testutils::ToCurves({ polygon });
+    AddSurfacePoints(
+      curves, { 10, 0, 1 }, { { { eps, eps } }, { { 0.2, 0.2 } }, { { 0.2, 0.2 } } });
+    const Answer one = OneStep(surface, curves, 0);
+    const Answer chain = StageChain(surface, curves, 0);
+    ExpectSameAnswer(one, chain, "eps " + std::to_string(eps));
+    EXPECT_EQ(chain.Errors, "");
+    return chain.Area;
+  };
+  const double exact = areaOf(0.0);
+  EXPECT_GT(exact, 0.0);
+  for (double eps : { 1e-16, 1e-15, 1e-14 })
+  {
+    EXPECT_NEAR(areaOf(eps), exact, 1e-12) << eps;
+  }
+}
+
+// A projected control point lands 5e-16 off an edge of the neighbouring triangle of a
+// double-precision torus.
+TEST(StageChain, ProjectedPointOffAnEdgeOfATorus)
+{
+  auto surface = testutils::ToPolyData(boolsurf::MakeTorus(1.0, 0.35, 30, 14));
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<vtkIdType> anyTriangle(0, surface->GetNumberOfCells() - 1);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    // Three points on mesh edges (midpoints of a triangle's edges: the projection puts them a
+    // rounding error inside one of the two triangles).
+    testutils::ControlPolygon polygon;
+    for (int k = 0; k < 3; ++k)
+    {
+      vtkCell* cell = surface->GetCell(anyTriangle(rng));
+      double a[3], b[3];
+      surface->GetPoint(cell->GetPointId(0), a);
+      surface->GetPoint(cell->GetPointId(1), b);
+      polygon.Points.push_back({ (a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2 });
+    }
+    auto curves = testutils::ToCurves({ polygon });
+    ExpectSameAnswer(OneStep(surface, curves, 0),
+      StageChain(surface, curves, 0),
+      "torus trial " + std::to_string(trial));
+  }
+}
