@@ -159,7 +159,9 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
         "Curve point " << p << ": Barycentric (" << u << ", " << v << ") is outside its triangle.");
       return vtkBoolSurfErrorReported;
     }
-    points[p] = { static_cast<int>(t), std::max(u, 0.0), std::max(v, 0.0) };
+    // Located as every reader locates it (a weight within rounding of zero is zero), so the
+    // subdivision does not magnify rounding off an edge or a vertex into a distance.
+    points[p] = boolsurf::SnapWeights({ static_cast<int>(t), std::max(u, 0.0), std::max(v, 0.0) });
   }
 
   // One step at a time: the map of each step needs both of its meshes.

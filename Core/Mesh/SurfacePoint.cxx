@@ -241,6 +241,44 @@ SurfacePoint ToSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c)
 }
 
 //------------------------------------------------------------------------------
+SurfacePoint SnapWeights(SurfacePoint p)
+{
+  double w[3] = { 1.0 - p.U - p.V, p.U, p.V };
+  if (std::abs(w[0]) <= 4.0 * std::numeric_limits<double>::epsilon())
+  {
+    w[0] = 0.0;
+  }
+  bool zero[3];
+  int zeros = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    zero[k] = w[k] <= SurfacePointSnap;
+    zeros += zero[k];
+  }
+  if (zeros >= 2)
+  {
+    const int k = static_cast<int>(std::max_element(w, w + 3) - w);
+    p.U = k == 1 ? 1.0 : 0.0;
+    p.V = k == 2 ? 1.0 : 0.0;
+  }
+  else if (zero[0])
+  {
+    const double s = p.U + p.V;
+    p.U = p.U / s;
+    p.V = 1.0 - p.U;
+  }
+  else if (zero[1])
+  {
+    p.U = 0.0;
+  }
+  else if (zero[2])
+  {
+    p.V = 0.0;
+  }
+  return p;
+}
+
+//------------------------------------------------------------------------------
 namespace
 {
 SurfacePoint FormIn(const TriangleMesh& mesh, const CanonicalPoint& c, int t)

@@ -104,6 +104,12 @@ void TrianglesOf(const TriangleMesh& mesh, const CanonicalPoint& c, std::vector<
 /// A triangle containing both a and b (the lowest id), or -1.
 int SharedTriangle(const TriangleMesh& mesh, const CanonicalPoint& a, const CanonicalPoint& b);
 
+/// p in its own triangle with every weight LocateSurfacePoint reads as zero set to exactly 0
+/// (a point on a vertex becomes (1, 0, 0) in some order): for stages that carry a given point
+/// into another triangulation (subdivision) without a TriangleMesh, so rounding off an edge is
+/// not magnified into a distance.
+SurfacePoint SnapWeights(SurfacePoint p);
+
 /// Triangle + barycentric form of c (in AnyTriangleOf(c)), for output arrays: the weights of
 /// c's location are written exactly (an edge point has an exact 0 opposite its edge, a vertex
 /// is (1, 0, 0) in some order).

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace boolsurf;
@@ -146,4 +147,47 @@ TEST(SurfacePointLocation, WrittenPointsReadBackAsThemselves)
   }
   // Most edge points have an exact form (an explicit corner at the edge's second vertex).
   EXPECT_GT(exact, edges * 3 / 4) << exact << " of " << edges;
+}
+
+// SnapWeights writes, in the point's own triangle, exactly what LocateSurfacePoint reads.
+TEST(SurfacePointLocation, SnappedWeightsAreTheLocatedPoint)
+{
+  const TriangleMesh mesh = Torus();
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> anyTriangle(0, mesh.GetNumberOfTriangles() - 1);
+  for (int trial = 0; trial < 3000; ++trial)
+  {
+    const int t = anyTriangle(rng);
+    std::array<double, 3> w{ unit(rng), unit(rng), unit(rng) };
+    const double sum = w[0] + w[1] + w[2];
+    for (double& x : w)
+    {
+      x /= sum;
+    }
+    // One or two weights pushed to rounding level.
+    const int k = trial % 3;
+    const double tiny = std::pow(10.0, -14.5 - 2 * unit(rng));
+    if (trial % 2)
+    {
+      w[k] = tiny;
+      w[(k + 1) % 3] = std::pow(10.0, -14.5 - 2 * unit(rng));
+      w[(k + 2) % 3] = 1 - w[k] - w[(k + 1) % 3];
+    }
+    else
+    {
+      const double rest = w[(k + 1) % 3] + w[(k + 2) % 3];
+      w[k] = tiny;
+      w[(k + 1) % 3] *= (1 - tiny) / rest;
+      w[(k + 2) % 3] = 1 - w[k] - w[(k + 1) % 3];
+    }
+    const SurfacePoint given{ t, w[1], w[2] };
+    const SurfacePoint snapped = SnapWeights(given);
+    const CanonicalPoint located = LocateSurfacePoint(mesh, given);
+    EXPECT_EQ(Canonicalize(mesh, snapped, 0.0).Location, located.Location);
+    EXPECT_EQ(Canonicalize(mesh, snapped, 0.0).Id, located.Id);
+    // A zero weight is exactly zero (corner 0's is implicit: within the 4 ulps read as zero).
+    EXPECT_TRUE(snapped.U == 0.0 || snapped.V == 0.0 ||
+      std::abs(1.0 - snapped.U - snapped.V) <= 4 * std::numeric_limits<double>::epsilon());
+  }
 }
