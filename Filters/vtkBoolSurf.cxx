@@ -11,6 +11,7 @@
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfRegionOutput.h"
 #include "vtkBoolSurfResolveStage.h"
+#include "vtkBoolSurfSelectionOutput.h"
 #include "vtkBoolSurfTraceStage.h"
 
 #include <vtkCellData.h>
@@ -57,13 +58,10 @@ struct vtkBoolSurf::Internals
   boolsurf::LabelingResult Labels;
   // Selection buffers.
   std::vector<char> Selected;
-  std::vector<int> RegionTriangles;
-  boolsurf::RegionExtractor Extractor;
-  boolsurf::RegionMesh Region;
+  boolsurf::SelectionOutputBuffers Output;
   // BSC: where each sample landed and what became of it.
   std::vector<boolsurf::PatchSnap> Snaps;
   boolsurf::BscResult Bsc;
-  std::vector<boolsurf::ControlSubCurve> SubCurves;
   double ControlCurvesTime = 0;
   /// Milliseconds of the stages of the last labeled arrangement (tracing, labeling).
   double TraceTime = 0, LabelingTime = 0;
@@ -230,55 +228,29 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
     vtkErrorMacro(<< error);
     return vtkBoolSurfErrorReported;
   }
-  boolsurf::RegionExtractor::SelectedTriangles(in.Selected, in.Arrangement, in.RegionTriangles);
-  const boolsurf::Arrangement& arr = in.Arrangement;
-  in.Extractor.Extract(
-    in.RegionTriangles,
-    static_cast<int>(arr.Positions.size()),
-    [&](int t, int k) { return arr.Triangles[t][k]; },
-    in.Region);
-  const Clock::time_point selected = Clock::now();
-  boolsurf::WriteRegion(*surface, arr, in.Region, region);
-  const std::vector<boolsurf::BoundaryPolyline> loops =
-    boolsurf::ExtractRegionBoundary(arr.Patches, in.Selected);
-  boolsurf::WriteBoundary(
-    loops,
-    [&](int p, double x[3])
-    {
-      x[0] = arr.Positions[p].x;
-      x[1] = arr.Positions[p].y;
-      x[2] = arr.Positions[p].z;
-    },
-    [&](int p) { return arr.PointSurface[p]; },
-    true,
-    boundary);
-  // The boundary and the clipped open curves as control points of the input curves.
-  const Clock::time_point vectorStart = Clock::now();
-  if (this->ComputeControlCurves)
+  boolsurf::SelectionOutputTimes times;
+  if (!boolsurf::WriteSelectedCells(*surface,
+        in.Arrangement,
+        in.Sources,
+        in.Selected,
+        this->ComputeControlCurves ? &in.Surface.GetTracer().GetPathSolver() : nullptr,
+        in.Output,
+        region,
+        boundary,
+        boundaryControls,
+        clipped,
+        error,
+        &times))
   {
-    boolsurf::GeodesicPathSolver& solver = in.Surface.GetTracer().GetPathSolver();
-    boolsurf::TraceStatus status =
-      boolsurf::BoundaryControlCurves(solver, arr, in.Sources, loops, in.SubCurves);
-    if (status)
-    {
-      boolsurf::WriteControlSubCurves(in.SubCurves, "BoundaryLoop", true, boundaryControls);
-      status = boolsurf::ClippedControlCurves(solver, arr, in.Sources, in.Selected, in.SubCurves);
-    }
-    if (!status)
-    {
-      vtkErrorMacro("Control points of the result: " << status.Message);
-      region->Initialize();
-      boundary->Initialize();
-      boundaryControls->Initialize();
-      return vtkBoolSurfErrorReported;
-    }
-    boolsurf::WriteControlSubCurves(in.SubCurves, "ClippedPiece", false, clipped);
+    vtkErrorMacro(<< error);
+    return vtkBoolSurfErrorReported;
   }
-  in.ControlCurvesTime = Milliseconds(vectorStart, Clock::now());
+  in.ControlCurvesTime = times.ControlCurves;
+  const Clock::time_point selected = Clock::now();
   this->WriteFieldData(text,
     reuse,
-    Milliseconds(selectStart, selected),
-    Milliseconds(selected, Clock::now()),
+    Milliseconds(selectStart, selected) - times.Output - times.ControlCurves,
+    times.Output + times.ControlCurves,
     region,
     boundary);
   if (bsc)
@@ -436,36 +408,11 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
 int vtkBoolSurf::FindZeroCell(const boolsurf::vtkSurfaceInput& surface, std::string& error)
 {
   // The closest point of the input surface, then the refined triangle holding it.
-  vtkStaticCellLocator* locator = this->Internal->Surface.GetLocator();
-  double closest[3], dist2;
-  vtkIdType cell = -1;
-  int sub;
-  vtkNew<vtkGenericCell> scratch;
-  locator->FindClosestPoint(this->ZeroCellPoint, closest, scratch, cell, sub, dist2);
-  if (cell < 0)
-  {
-    error = "no surface cell found near ZeroCellPoint";
-    return -1;
-  }
-  const boolsurf::TriangleMesh& mesh = *surface.Mesh;
-  const boolsurf::Triangle& tri = mesh.GetTriangle(static_cast<int>(cell));
-  // Barycentric coordinates of the closest point (least squares in the triangle's plane).
-  const boolsurf::Vec3 a = mesh.GetPosition(tri[0]);
-  const boolsurf::Vec3 e1 = mesh.GetPosition(tri[1]) - a, e2 = mesh.GetPosition(tri[2]) - a;
-  const boolsurf::Vec3 d = boolsurf::Vec3{ closest[0], closest[1], closest[2] } - a;
-  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
-  const double b1 = Dot(d, e1), b2 = Dot(d, e2);
-  const double det = d11 * d22 - d12 * d12;
-  const double u = det != 0 ? (b1 * d22 - b2 * d12) / det : 0;
-  const double v = det != 0 ? (b2 * d11 - b1 * d12) / det : 0;
-  const int zero =
-    boolsurf::CellAtSurfacePoint(mesh, this->Internal->Arrangement, static_cast<int>(cell), u, v);
-  if (zero < 0)
-  {
-    error = "ZeroCellPoint lies on triangle " + std::to_string(cell) +
-      ", which is not part of the surface";
-  }
-  return zero;
+  return boolsurf::ZeroCellAt(this->Internal->Surface.GetLocator(),
+    *surface.Mesh,
+    this->Internal->Arrangement,
+    this->ZeroCellPoint,
+    error);
 }
 
 //------------------------------------------------------------------------------

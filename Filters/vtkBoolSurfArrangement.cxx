@@ -5,12 +5,15 @@
 #include "vtkBoolSurfArrangementOutput.h"
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfHomologyOutput.h"
+#include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfSurfaceCache.h"
 #include "vtkBoolSurfTracedCurves.h"
 
+#include <vtkCellData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 vtkStandardNewMacro(vtkBoolSurfArrangement);
@@ -18,7 +21,8 @@ vtkStandardNewMacro(vtkBoolSurfArrangement);
 struct vtkBoolSurfArrangement::Internals
 {
   boolsurf::vtkSurfaceCache Surface;
-  boolsurf::Arrangement Arrangement; ///< its buffers are reused by the next update
+  /// Results handed downstream; an edit reuses the buffers of one no output holds any more.
+  boolsurf::ResultPool<boolsurf::ArrangementResult> Results;
 };
 
 //------------------------------------------------------------------------------
@@ -80,34 +84,49 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
     vtkErrorMacro(<< error);
     return vtkBoolSurfErrorReported;
   }
-  std::vector<boolsurf::TracedCurve> curves;
-  if (!boolsurf::ReadTracedCurves(curvesInput, *surface->Mesh, curves, problems))
+  std::shared_ptr<boolsurf::ArrangementResult> result = this->Internal->Results.Acquire();
+  result->Surface = *surface;
+  std::vector<boolsurf::TracedCurve>& curves = result->Curves;
+  std::vector<boolsurf::CurveSource>& sources = result->Sources;
+  // The curves as Trace Surface Curves traced them when it handed them over (on this very
+  // surface); else read back from the arrays (a file, a script's curves).
+  const auto traced = boolsurf::FindStageResult<boolsurf::TracedCurvesResult>(
+    curvesInput ? curvesInput->GetPointData()->GetArray("TriangleId") : nullptr);
+  if (traced && traced->Surface.Matches(surfaceInput))
   {
-    vtkErrorMacro(<< "Invalid traced curves:" << boolsurf::JoinLines(problems));
-    return vtkBoolSurfErrorReported;
+    curves = traced->Curves;
+    sources = traced->Sources;
+    result->ExactGeodesics = traced->ExactGeodesics;
+  }
+  else
+  {
+    if (!boolsurf::ReadTracedCurves(curvesInput, *surface->Mesh, curves, problems))
+    {
+      vtkErrorMacro(<< "Invalid traced curves:" << boolsurf::JoinLines(problems));
+      return vtkBoolSurfErrorReported;
+    }
+    if (!boolsurf::ReadCurveSources(curvesInput, curves, sources))
+    {
+      sources.clear();
+    }
+    result->ExactGeodesics = true;
   }
   this->UpdateProgress(0.1);
   if (this->CheckAbort())
   {
     return 1;
   }
-  if (!boolsurf::ArrangeCurves(*surface,
-        curves,
-        this->NumberOfThreads,
-        this->Internal->Arrangement,
-        output,
-        patches,
-        error))
+  if (!boolsurf::ArrangeCurves(
+        *surface, curves, this->NumberOfThreads, result->Arrangement, output, patches, error))
   {
     vtkErrorMacro(<< error);
     return vtkBoolSurfErrorReported;
   }
   // Each patch as control points of its input curve (when the curves came from Trace Surface
   // Curves, which records them), for the Boolean's vector output.
-  std::vector<boolsurf::CurveSource> sources;
-  if (boolsurf::ReadCurveSources(curvesInput, curves, sources))
+  if (!sources.empty())
   {
-    const boolsurf::Arrangement& arr = this->Internal->Arrangement;
+    const boolsurf::Arrangement& arr = result->Arrangement;
     boolsurf::GeodesicPathSolver& solver = this->Internal->Surface.GetTracer().GetPathSolver();
     std::vector<boolsurf::ControlSubCurve> perPatch(arr.Patches.size());
     boolsurf::BezierPieces bezier(arr, sources); // each Bezier segment split once per cut
@@ -137,6 +156,9 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkWarningMacro(<< homologyError << " (no CurveHomology)");
   }
+  // The arrangement in Core form for the labeling and selections (vtkBoolSurfStageHandoff.h).
+  boolsurf::AttachStageResult<boolsurf::ArrangementResult>(
+    output->GetCellData()->GetArray("ArrangementCell"), std::move(result));
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -296,6 +296,14 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
     return false;
   }
   vtkFieldData* fd = input->GetFieldData();
+  if (input->GetNumberOfPoints() == 0 && input->GetNumberOfCells() == 0 &&
+    !fd->GetArray("NumberOfCells"))
+  {
+    // What a failed BoolSurf filter leaves: say so rather than ask for a rewiring.
+    error = "the input is empty: the filter before it (Surface Arrangement, or a stage above "
+            "it) reported an error; see its message";
+    return false;
+  }
   for (const char* required : { "NumberOfCells", "NumberOfShapes" })
   {
     if (!fd->GetArray(required))

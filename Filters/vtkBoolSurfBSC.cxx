@@ -4,7 +4,11 @@
 
 #include "vtkBoolSurfBSCStage.h"
 #include "vtkBoolSurfBooleanStage.h"
+#include "vtkBoolSurfLabelingStage.h"
+#include "vtkBoolSurfSelectionOutput.h"
+#include "vtkBoolSurfStageHandoff.h"
 
+#include <vtkCellData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
@@ -12,8 +16,20 @@
 
 vtkStandardNewMacro(vtkBoolSurfBSC);
 
+struct vtkBoolSurfBSC::Internals
+{
+  std::vector<boolsurf::PatchSnap> Snaps;
+  boolsurf::BscResult Result;
+  boolsurf::SelectionOutputBuffers Output;
+  boolsurf::ResultPathSolver Solver;
+};
+
+//------------------------------------------------------------------------------
+vtkBoolSurfBSC::~vtkBoolSurfBSC() = default;
+
 //------------------------------------------------------------------------------
 vtkBoolSurfBSC::vtkBoolSurfBSC()
+  : Internal(new Internals)
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(4);
@@ -51,8 +67,27 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
   std::string note;
   this->UpdateProgress(0.0);
 
-  boolsurf::ArrangementFields fields;
   std::string error;
+  // The arrangement in Core form when Surface Arrangement handed it over: selected and written
+  // as the one-step filter does.
+  if (const auto labeled = boolsurf::FindLabeledArrangement(input))
+  {
+    if (!this->SelectFromCore(
+          *labeled->Arranged, samples, region, boundary, controls, clipped, error))
+    {
+      region->Initialize();
+      boundary->Initialize();
+      controls->Initialize();
+      clipped->Initialize();
+      vtkErrorMacro(<< error);
+      return vtkBoolSurfErrorReported;
+    }
+    // The labels of the arrangement's cells, as the one-step filter gives them.
+    boolsurf::AddLabelTable(labeled->Labels, region->GetFieldData());
+    this->UpdateProgress(1.0);
+    return 1;
+  }
+  boolsurf::ArrangementFields fields;
   if (!boolsurf::ReadArrangementFields(input, fields, error))
   {
     vtkErrorMacro(<< error);
@@ -90,6 +125,54 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
   boolsurf::AddSampleFields(snaps, result, boundary);
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfBSC::SelectFromCore(const boolsurf::ArrangementResult& arranged,
+  vtkPolyData* samples,
+  vtkPolyData* region,
+  vtkPolyData* boundary,
+  vtkPolyData* controls,
+  vtkPolyData* clipped,
+  std::string& error)
+{
+  Internals& in = *this->Internal;
+  std::vector<boolsurf::SampleQuery> queries;
+  if (!boolsurf::ReadSampleQueries(samples, arranged.Surface.Mesh.get(), queries, error) ||
+    !boolsurf::SelectBySamples(arranged.Arrangement,
+      queries,
+      boolsurf::SnapDistance(arranged.Surface.Triangles, this->SnapTolerance),
+      this->MaxSearchStates,
+      in.Snaps,
+      in.Result,
+      error,
+      [this] { return this->CheckAbort(); }))
+  {
+    return false;
+  }
+  this->UpdateProgress(0.5);
+  const bool withControls = !arranged.Sources.empty();
+  if (!boolsurf::WriteSelectedCells(arranged.Surface,
+        arranged.Arrangement,
+        arranged.Sources,
+        in.Result.Selected,
+        withControls ? &in.Solver.Get(arranged.Surface.Mesh, arranged.ExactGeodesics) : nullptr,
+        in.Output,
+        region,
+        boundary,
+        controls,
+        clipped,
+        error))
+  {
+    return false;
+  }
+  if (!withControls)
+  {
+    vtkWarningMacro(<< boolsurf::NoControlPointsNote);
+  }
+  boolsurf::AddSampleFields(in.Snaps, in.Result, region);
+  boolsurf::AddSampleFields(in.Snaps, in.Result, boundary);
+  return true;
 }
 
 //------------------------------------------------------------------------------

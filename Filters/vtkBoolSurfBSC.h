@@ -35,6 +35,14 @@
 #include "BoolSurfFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+namespace boolsurf
+{
+struct ArrangementResult;
+}
+
 class BOOLSURFFILTERS_EXPORT vtkBoolSurfBSC : public vtkPolyDataAlgorithm
 {
 public:
@@ -72,7 +80,7 @@ public:
 
 protected:
   vtkBoolSurfBSC();
-  ~vtkBoolSurfBSC() override = default;
+  ~vtkBoolSurfBSC() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request,
@@ -83,6 +91,17 @@ protected:
   int MaxSearchStates = 64;
 
 private:
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+  /// BSC on an arrangement handed over in Core form, written as the one-step filter writes it.
+  bool SelectFromCore(const boolsurf::ArrangementResult& arranged,
+    vtkPolyData* samples,
+    vtkPolyData* region,
+    vtkPolyData* boundary,
+    vtkPolyData* controls,
+    vtkPolyData* clipped,
+    std::string& error);
+
   vtkBoolSurfBSC(const vtkBoolSurfBSC&) = delete;
   void operator=(const vtkBoolSurfBSC&) = delete;
 };

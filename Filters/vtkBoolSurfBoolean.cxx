@@ -4,6 +4,8 @@
 
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
+#include "vtkBoolSurfSelectionOutput.h"
+#include "vtkBoolSurfStageHandoff.h"
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -16,11 +18,67 @@
 
 vtkStandardNewMacro(vtkBoolSurfBoolean);
 
+namespace
+{
+/// The Boolean on a labeled arrangement handed over in Core form, written as the one-step
+/// filter writes it. `note` says when the control-point outputs stay empty.
+bool SelectFromCore(const boolsurf::LabeledArrangementResult& labeled,
+  const boolsurf::BooleanRequest& request,
+  std::vector<char>& selected,
+  boolsurf::SelectionOutputBuffers& buffers,
+  boolsurf::ResultPathSolver& solver,
+  vtkPolyData* region,
+  vtkPolyData* boundary,
+  vtkPolyData* controls,
+  vtkPolyData* clipped,
+  std::string& error,
+  std::string& note)
+{
+  const boolsurf::ArrangementResult& arranged = *labeled.Arranged;
+  std::string text;
+  if (!boolsurf::SelectRequestedCells(labeled.Labels, request, selected, text, error))
+  {
+    return false;
+  }
+  const bool withControls = !arranged.Sources.empty();
+  if (!boolsurf::WriteSelectedCells(arranged.Surface,
+        arranged.Arrangement,
+        arranged.Sources,
+        selected,
+        withControls ? &solver.Get(arranged.Surface.Mesh, arranged.ExactGeodesics) : nullptr,
+        buffers,
+        region,
+        boundary,
+        controls,
+        clipped,
+        error))
+  {
+    return false;
+  }
+  note = withControls ? "" : boolsurf::NoControlPointsNote;
+  boolsurf::AddExpressionField(region, text);
+  boolsurf::AddExpressionField(boundary, text);
+  boolsurf::AddLabelTable(labeled.Labels, region->GetFieldData());
+  return true;
+}
+} // namespace
+
+struct vtkBoolSurfBoolean::Internals
+{
+  std::vector<char> Selected;
+  boolsurf::SelectionOutputBuffers Output;
+  boolsurf::ResultPathSolver Solver;
+};
+
 //------------------------------------------------------------------------------
 vtkBoolSurfBoolean::vtkBoolSurfBoolean()
+  : Internal(new Internals)
 {
   this->SetNumberOfOutputPorts(4);
 }
+
+//------------------------------------------------------------------------------
+vtkBoolSurfBoolean::~vtkBoolSurfBoolean() = default;
 
 //------------------------------------------------------------------------------
 int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
@@ -46,9 +104,41 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
   std::string note;
   this->UpdateProgress(0.0);
 
+  std::string error, warning;
+  // The labeled arrangement in Core form when the stages upstream handed it over: selected and
+  // written as the one-step filter does.
+  if (const auto labeled = boolsurf::FindLabeledArrangement(input))
+  {
+    Internals& in = *this->Internal;
+    if (!SelectFromCore(*labeled,
+          boolsurf::MakeBooleanRequest(
+            this->Operation, this->ShapeA, this->ShapeB, this->Expression, this->FillRule),
+          in.Selected,
+          in.Output,
+          in.Solver,
+          region,
+          boundary,
+          controls,
+          clipped,
+          error,
+          note))
+    {
+      region->Initialize();
+      boundary->Initialize();
+      controls->Initialize();
+      clipped->Initialize();
+      vtkErrorMacro(<< error);
+      return vtkBoolSurfErrorReported;
+    }
+    if (!note.empty())
+    {
+      vtkWarningMacro(<< note);
+    }
+    this->UpdateProgress(1.0);
+    return 1;
+  }
   boolsurf::ArrangementFields fields;
   boolsurf::LabelingResult labels;
-  std::string error, warning;
   vtkFieldData* fd = input ? input->GetFieldData() : nullptr;
   vtkDataArray* cellLabels = fd ? fd->GetArray("CellLabels") : nullptr;
   vtkDataArray* consistent = fd ? fd->GetArray("ShapeConsistent") : nullptr;

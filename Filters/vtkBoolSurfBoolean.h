@@ -38,6 +38,7 @@
 #include "BoolSurfFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
 class BOOLSURFFILTERS_EXPORT vtkBoolSurfBoolean : public vtkPolyDataAlgorithm
@@ -104,7 +105,7 @@ public:
 
 protected:
   vtkBoolSurfBoolean();
-  ~vtkBoolSurfBoolean() override = default;
+  ~vtkBoolSurfBoolean() override;
 
   int RequestData(vtkInformation* request,
     vtkInformationVector** inputVector,
@@ -117,6 +118,9 @@ protected:
   int FillRule = NON_ZERO;
 
 private:
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+
   vtkBoolSurfBoolean(const vtkBoolSurfBoolean&) = delete;
   void operator=(const vtkBoolSurfBoolean&) = delete;
 };

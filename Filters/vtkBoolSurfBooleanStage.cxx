@@ -1,5 +1,7 @@
 #include "vtkBoolSurfBooleanStage.h"
 
+#include "vtkBoolSurfStageHandoff.h"
+
 #include "Selection/RegionBoundary.h"
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfRegionOutput.h"
@@ -120,8 +122,7 @@ void WriteSelectionControlCurves(vtkPolyData* labeled,
   {
     if (note)
     {
-      *note = "the arrangement does not carry its curves' control points (they were not traced "
-              "by Trace Surface Curves): the control-point outputs are empty";
+      *note = NoControlPointsNote;
     }
     return;
   }

@@ -4,7 +4,10 @@
 
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
+#include "vtkBoolSurfStageHandoff.h"
 
+#include <vtkCellData.h>
+#include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
@@ -12,11 +15,21 @@
 
 vtkStandardNewMacro(vtkBoolSurfLabeling);
 
+struct vtkBoolSurfLabeling::Internals
+{
+  /// On the arrangement's input surface, for ZeroCellPoint.
+  boolsurf::SurfaceLocator Locator;
+};
+
 //------------------------------------------------------------------------------
 vtkBoolSurfLabeling::vtkBoolSurfLabeling()
+  : Internal(new Internals)
 {
   this->SetNumberOfOutputPorts(2);
 }
+
+//------------------------------------------------------------------------------
+vtkBoolSurfLabeling::~vtkBoolSurfLabeling() = default;
 
 //------------------------------------------------------------------------------
 int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
@@ -42,10 +55,30 @@ int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
   options.ZeroCellPoint = this->ZeroCellMode == POINT ? this->ZeroCellPoint : nullptr;
   options.ColorShape = this->ColorShape;
   options.PerTriangleLabels = this->PerTriangleLabels;
+  // The arrangement in Core form when Surface Arrangement handed it over: labeled as the
+  // one-step filter labels it.
+  const auto arranged = boolsurf::FindStageResult<boolsurf::ArrangementResult>(
+    input ? input->GetCellData()->GetArray("ArrangementCell") : nullptr);
+  if (arranged)
+  {
+    options.Arranged = arranged.get();
+    if (options.ZeroCellPoint)
+    {
+      options.SurfaceLocator = this->Internal->Locator.Get(arranged->Surface.Triangles);
+    }
+  }
   if (!boolsurf::LabelArrangement(input, options, output, fields, labels, error, warning))
   {
     vtkErrorMacro(<< error);
     return vtkBoolSurfErrorReported;
+  }
+  if (arranged)
+  {
+    auto result = std::make_shared<boolsurf::LabeledArrangementResult>();
+    result->Arranged = arranged;
+    result->Labels = std::move(labels);
+    boolsurf::AttachStageResult<boolsurf::LabeledArrangementResult>(
+      output->GetFieldData()->GetArray("CellLabels"), std::move(result));
   }
   if (!warning.empty())
   {

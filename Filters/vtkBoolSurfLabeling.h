@@ -46,6 +46,8 @@
 #include "BoolSurfFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <memory> // for std::unique_ptr
+
 class BOOLSURFFILTERS_EXPORT vtkBoolSurfLabeling : public vtkPolyDataAlgorithm
 {
 public:
@@ -92,7 +94,7 @@ public:
 
 protected:
   vtkBoolSurfLabeling();
-  ~vtkBoolSurfLabeling() override = default;
+  ~vtkBoolSurfLabeling() override;
 
   int RequestData(vtkInformation* request,
     vtkInformationVector** inputVector,
@@ -104,6 +106,9 @@ protected:
   bool PerTriangleLabels = false;
 
 private:
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+
   vtkBoolSurfLabeling(const vtkBoolSurfLabeling&) = delete;
   void operator=(const vtkBoolSurfLabeling&) = delete;
 };

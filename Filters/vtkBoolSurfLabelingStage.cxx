@@ -3,6 +3,7 @@
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Selection/BooleanExpression.h"
 #include "vtkBoolSurfHomologyOutput.h"
+#include "vtkBoolSurfStageHandoff.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -83,6 +84,45 @@ std::string InconsistencyWarning(const LabelingResult& labels)
 }
 
 //------------------------------------------------------------------------------
+int ZeroCellAt(vtkStaticCellLocator* locator,
+  const TriangleMesh& mesh,
+  const Arrangement& arrangement,
+  const double point[3],
+  std::string& error)
+{
+  double closest[3], dist2;
+  vtkIdType cell = -1;
+  int sub;
+  vtkNew<vtkGenericCell> scratch;
+  if (locator)
+  {
+    locator->FindClosestPoint(point, closest, scratch, cell, sub, dist2);
+  }
+  if (cell < 0)
+  {
+    error = "no surface cell found near ZeroCellPoint";
+    return -1;
+  }
+  const Triangle& tri = mesh.GetTriangle(static_cast<int>(cell));
+  // Barycentric coordinates of the closest point (least squares in the triangle's plane).
+  const Vec3 a = mesh.GetPosition(tri[0]);
+  const Vec3 e1 = mesh.GetPosition(tri[1]) - a, e2 = mesh.GetPosition(tri[2]) - a;
+  const Vec3 d = Vec3{ closest[0], closest[1], closest[2] } - a;
+  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
+  const double b1 = Dot(d, e1), b2 = Dot(d, e2);
+  const double det = d11 * d22 - d12 * d12;
+  const double u = det != 0 ? (b1 * d22 - b2 * d12) / det : 0;
+  const double v = det != 0 ? (b2 * d11 - b1 * d12) / det : 0;
+  const int zero = CellAtSurfacePoint(mesh, arrangement, static_cast<int>(cell), u, v);
+  if (zero < 0)
+  {
+    error = "ZeroCellPoint lies on triangle " + std::to_string(cell) +
+      ", which is not part of the surface";
+  }
+  return zero;
+}
+
+//------------------------------------------------------------------------------
 bool LabelArrangement(vtkPolyData* input,
   const LabelingOutputOptions& options,
   vtkPolyData* output,
@@ -91,19 +131,48 @@ bool LabelArrangement(vtkPolyData* input,
   std::string& error,
   std::string& warning)
 {
-  if (!ReadArrangementFields(input, fields, error))
+  vtkDataArray* cellOf = input ? input->GetCellData()->GetArray("ArrangementCell") : nullptr;
+  LabelingInput in;
+  if (const ArrangementResult* arranged = options.Arranged)
+  {
+    // The one-step filter's labeling, on the arrangement itself.
+    const Arrangement& arr = arranged->Arrangement;
+    in = MakeLabelingInput(
+      *arranged->Surface.Mesh, *arranged->Surface.Topology, arranged->Curves, arr);
+    fields = ArrangementFields();
+    fields.NumberOfCells = in.NumberOfCells;
+    fields.NumberOfShapes = in.NumberOfShapes;
+    fields.ShapeIds = in.ShapeIds;
+    if (options.ZeroCellPoint)
+    {
+      const int zero = ZeroCellAt(
+        options.SurfaceLocator, *arranged->Surface.Mesh, arr, options.ZeroCellPoint, error);
+      if (zero < 0)
+      {
+        return false;
+      }
+      const int comp = in.CellComponent.empty() ? 0 : in.CellComponent[zero];
+      if (static_cast<int>(in.ZeroCells.size()) <= comp)
+      {
+        in.ZeroCells.resize(comp + 1, -1);
+      }
+      in.ZeroCells[comp] = zero;
+    }
+  }
+  else if (!ReadArrangementFields(input, fields, error))
   {
     return false;
   }
-  vtkDataArray* cellOf = input->GetCellData()->GetArray("ArrangementCell");
-  LabelingInput in;
-  in.NumberOfCells = fields.NumberOfCells;
-  in.NumberOfShapes = fields.NumberOfShapes;
-  in.ShapeIds = fields.ShapeIds;
-  in.Arcs = fields.Arcs;
-  in.CellComponent = fields.CellComponent;
-  in.ZeroCells = fields.ZeroCellCandidates;
-  if (options.ZeroCellPoint)
+  else
+  {
+    in.NumberOfCells = fields.NumberOfCells;
+    in.NumberOfShapes = fields.NumberOfShapes;
+    in.ShapeIds = fields.ShapeIds;
+    in.Arcs = fields.Arcs;
+    in.CellComponent = fields.CellComponent;
+    in.ZeroCells = fields.ZeroCellCandidates;
+  }
+  if (options.ZeroCellPoint && !options.Arranged)
   {
     vtkNew<vtkStaticCellLocator> locator;
     locator->SetDataSet(input);

@@ -10,9 +10,21 @@
 
 class vtkFieldData;
 class vtkPolyData;
+class vtkStaticCellLocator;
 
 namespace boolsurf
 {
+
+struct ArrangementResult;
+
+/// The arrangement cell holding the point of the surface closest to `point` (the one-step
+/// filter's and the labeling's ZeroCellPoint): `locator` is built on the surface's triangles.
+/// -1 with a message when there is none.
+int ZeroCellAt(vtkStaticCellLocator* locator,
+  const TriangleMesh& mesh,
+  const Arrangement& arrangement,
+  const double point[3],
+  std::string& error);
 
 /// What the labeling writes besides the per-cell table.
 struct LabelingOutputOptions
@@ -25,6 +37,12 @@ struct LabelingOutputOptions
   /// Every shape's label per triangle as the cell array `Labels` (one component per shape):
   /// memory triangles x shapes, so off unless asked for.
   bool PerTriangleLabels = false;
+  /// The arrangement in Core form when Surface Arrangement handed it over: labeled the way the
+  /// one-step filter labels (then `fields` gets only the shape ids and counts), with
+  /// `SurfaceLocator` (on the arrangement's input surface) for ZeroCellPoint. Null: the input's
+  /// arrays are read.
+  const ArrangementResult* Arranged = nullptr;
+  vtkStaticCellLocator* SurfaceLocator = nullptr;
 };
 
 /// Labels the cells of a refined surface. Adds field data `CellLabels` (cells x shapes,

@@ -2,6 +2,7 @@
 
 #include "vtkBoolSurfRankGather.h"
 
+#include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfTraceStage.h"
 
 #include <vtkFieldData.h>
@@ -9,6 +10,7 @@
 #include <vtkInformationVector.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
@@ -62,15 +64,22 @@ int vtkBoolSurfTraceCurves::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkWarningMacro(<< w);
   }
-  std::vector<boolsurf::TracedCurve> traced;
+  auto result = std::make_shared<boolsurf::TracedCurvesResult>();
   boolsurf::TraceOptions options;
   options.Resolution = this->Resolution;
   options.ProjectionTolerance = this->ProjectionTolerance;
   options.ExactGeodesics = this->ExactGeodesics != 0;
   if (problems.empty())
   {
-    boolsurf::TraceControlCurves(
-      this->Internal->Surface, curvesInput, options, this, traced, output, problems, notes);
+    boolsurf::TraceControlCurves(this->Internal->Surface,
+      curvesInput,
+      options,
+      this,
+      result->Curves,
+      output,
+      problems,
+      notes,
+      &result->Sources);
   }
   for (const std::string& n : notes)
   {
@@ -89,6 +98,11 @@ int vtkBoolSurfTraceCurves::RequestData(vtkInformation* vtkNotUsed(request),
     vtkErrorMacro(<< "Cannot trace the curves:" << boolsurf::JoinLines(problems));
     return 1; // the empty output with TraceErrors is the answer
   }
+  // The traced curves in Core form for Surface Arrangement (see vtkBoolSurfStageHandoff.h).
+  result->Surface = boolsurf::SurfaceIdentity(surfaceInput);
+  result->ExactGeodesics = options.ExactGeodesics;
+  boolsurf::AttachStageResult<boolsurf::TracedCurvesResult>(
+    output->GetPointData()->GetArray("TriangleId"), std::move(result));
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -4,8 +4,10 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 
 namespace boolsurf
 {
@@ -41,6 +43,20 @@ bool ReadTracedCurves(vtkPolyData* curves,
   if (!curves)
   {
     problems.push_back("no curves input");
+    return false;
+  }
+  if (curves->GetNumberOfPoints() == 0 && curves->GetNumberOfCells() == 0)
+  {
+    // What a failed BoolSurf filter leaves: say so rather than ask for a rewiring.
+    std::string why = "the curves input is empty: the filter before it (Trace Surface Curves) "
+                      "reported an error or has no curves";
+    auto* errors =
+      vtkStringArray::SafeDownCast(curves->GetFieldData()->GetAbstractArray("TraceErrors"));
+    for (vtkIdType i = 0; errors && i < errors->GetNumberOfValues(); ++i)
+    {
+      why += (i == 0 ? ":\n    " : "\n    ") + errors->GetValue(i);
+    }
+    problems.push_back(why);
     return false;
   }
   vtkDataArray* triangleIds = curves->GetPointData()->GetArray("TriangleId");

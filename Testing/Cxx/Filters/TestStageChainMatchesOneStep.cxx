@@ -7,6 +7,7 @@
 #include "FilterTestUtils.h"
 #include "vtkBoolSurf.h"
 #include "vtkBoolSurfArrangement.h"
+#include "vtkBoolSurfBSC.h"
 #include "vtkBoolSurfBoolean.h"
 #include "vtkBoolSurfLabeling.h"
 #include "vtkBoolSurfTraceCurves.h"
@@ -385,4 +386,231 @@ TEST(StageChain, ProjectedPointOffAnEdgeOfATorus)
       StageChain(surface, curves, 0),
       "torus trial " + std::to_string(trial));
   }
+}
+
+namespace
+{
+
+/// Every point coordinate and every array of two outputs, bit for bit.
+void ExpectIdentical(vtkPolyData* a, vtkPolyData* b, const std::string& what)
+{
+  ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints()) << what;
+  ASSERT_EQ(a->GetNumberOfCells(), b->GetNumberOfCells()) << what;
+  for (vtkIdType p = 0; p < a->GetNumberOfPoints(); ++p)
+  {
+    double x[3], y[3];
+    a->GetPoint(p, x);
+    b->GetPoint(p, y);
+    ASSERT_TRUE(x[0] == y[0] && x[1] == y[1] && x[2] == y[2]) << what << ": point " << p;
+  }
+  for (vtkDataSetAttributes* attributes : { static_cast<vtkDataSetAttributes*>(a->GetPointData()),
+         static_cast<vtkDataSetAttributes*>(a->GetCellData()) })
+  {
+    vtkDataSetAttributes* other = attributes == a->GetPointData()
+      ? static_cast<vtkDataSetAttributes*>(b->GetPointData())
+      : static_cast<vtkDataSetAttributes*>(b->GetCellData());
+    ASSERT_EQ(attributes->GetNumberOfArrays(), other->GetNumberOfArrays()) << what;
+    for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
+    {
+      vtkDataArray* x = attributes->GetArray(i);
+      vtkDataArray* y = x ? other->GetArray(x->GetName()) : nullptr;
+      ASSERT_NE(y, nullptr) << what << ": array " << (x ? x->GetName() : "?");
+      ASSERT_EQ(x->GetNumberOfValues(), y->GetNumberOfValues()) << what << ": " << x->GetName();
+      for (vtkIdType v = 0; v < x->GetNumberOfValues(); ++v)
+      {
+        ASSERT_EQ(x->GetVariantValue(v), y->GetVariantValue(v)) << what << ": " << x->GetName();
+      }
+    }
+  }
+  vtkIdType na, nb;
+  const vtkIdType *ia, *ib;
+  for (vtkIdType c = 0; c < a->GetNumberOfCells(); ++c)
+  {
+    a->GetCellPoints(c, na, ia);
+    b->GetCellPoints(c, nb, ib);
+    ASSERT_EQ(na, nb) << what << ": cell " << c;
+    for (vtkIdType k = 0; k < na; ++k)
+    {
+      ASSERT_EQ(ia[k], ib[k]) << what << ": cell " << c;
+    }
+  }
+}
+
+struct Chain
+{
+  vtkNew<vtkBoolSurfTraceCurves> Trace;
+  vtkNew<vtkBoolSurfArrangement> Arrange;
+  vtkNew<vtkBoolSurfLabeling> Label;
+  vtkNew<vtkBoolSurfBoolean> Boolean;
+  Messages Log;
+
+  Chain(vtkPolyData* surface, vtkPolyData* curves)
+  {
+    for (vtkAlgorithm* a : std::initializer_list<vtkAlgorithm*>{
+           this->Trace, this->Arrange, this->Label, this->Boolean })
+    {
+      this->Log.Watch(a);
+    }
+    this->Trace->SetInputData(0, surface);
+    this->Trace->SetInputData(1, curves);
+    this->Arrange->SetInputData(0, surface);
+    this->Arrange->SetInputConnection(1, this->Trace->GetOutputPort());
+    this->Label->SetInputConnection(this->Arrange->GetOutputPort(0));
+    this->Boolean->SetInputConnection(this->Label->GetOutputPort(0));
+    this->Boolean->SetShapeA(-1);
+    this->Boolean->SetShapeB(-1);
+  }
+};
+
+vtkSmartPointer<vtkPolyData> TwoSquares(double shift)
+{
+  return testutils::ToCurves(
+    { testutils::ControlPolygon{
+        { { 0.1, 0.1, 0 }, { 0.6, 0.1, 0 }, { 0.6, 0.6, 0 }, { 0.1, 0.6, 0 } }, 0 },
+      testutils::ControlPolygon{ { { 0.3 + shift, 0.3, 0 },
+                                   { 0.9 + shift, 0.3, 0 },
+                                   { 0.9 + shift, 0.8, 0 },
+                                   { 0.3 + shift, 0.8, 0 } },
+        1 } });
+}
+
+} // namespace
+
+// The chain's four outputs are the one-step filter's, bit for bit: points, cells, every array.
+TEST(StageChain, OutputsAreTheOneStepOutputsBitForBit)
+{
+  std::mt19937 rng(4);
+  for (const NamedSurface& s : Surfaces())
+  {
+    for (int trial = 0; trial < 3; ++trial)
+    {
+      auto curves =
+        RandomCurves(s.Surface, trial == 0 ? PointForm::Coordinates : PointForm::NearEdge, rng);
+      vtkNew<vtkBoolSurf> one;
+      Messages m;
+      m.Watch(one);
+      one->SetInputData(0, s.Surface);
+      one->SetInputData(1, curves);
+      one->SetShapeA(-1);
+      one->SetShapeB(-1);
+      one->Update();
+      Chain chain(s.Surface, curves);
+      chain.Boolean->Update();
+      const std::string what = s.Name + " trial " + std::to_string(trial);
+      ASSERT_EQ(m.Catcher->Errors.empty(), chain.Log.Catcher->Errors.empty()) << what;
+      for (int port = 0; port < 4; ++port)
+      {
+        ExpectIdentical(one->GetOutput(port),
+          chain.Boolean->GetOutput(port),
+          what + ", port " + std::to_string(port));
+      }
+    }
+  }
+}
+
+// A shallow copy of a stage's output keeps its own answer when the chain updates again (the
+// Core result it carries is never overwritten), and an input whose arrays were deep-copied (as
+// from a file: no Core result) gives the same answer by reading the arrays.
+TEST(StageChain, CopiesKeepTheirAnswer)
+{
+  auto surface = testutils::ToPolyData(boolsurf::MakeFlatSquare(12, 1.0, 0.3, 3));
+  Chain chain(surface, TwoSquares(0.0));
+  chain.Boolean->Update();
+  ASSERT_EQ(chain.Log.Catcher->Errors, "");
+  const double before = testutils::Area(chain.Boolean->GetOutput());
+  vtkNew<vtkPolyData> held, deep;
+  held->ShallowCopy(chain.Label->GetOutput());
+  deep->DeepCopy(chain.Label->GetOutput());
+  vtkNew<vtkPolyData> heldCurves, deepCurves;
+  heldCurves->ShallowCopy(chain.Trace->GetOutput());
+  deepCurves->DeepCopy(chain.Trace->GetOutput());
+
+  // The chain moves on: more edits, so that every buffer it keeps is reused.
+  for (double shift : { 0.05, 0.1, -0.05 })
+  {
+    chain.Trace->SetInputData(1, TwoSquares(shift));
+    chain.Boolean->Update();
+    ASSERT_EQ(chain.Log.Catcher->Errors, "");
+    EXPECT_NE(testutils::Area(chain.Boolean->GetOutput()), before);
+  }
+
+  for (vtkPolyData* input : { held.GetPointer(), deep.GetPointer() })
+  {
+    vtkNew<vtkBoolSurfBoolean> boolean;
+    boolean->SetInputData(input);
+    boolean->SetShapeA(-1);
+    boolean->SetShapeB(-1);
+    EXPECT_EQ(testutils::ErrorsOf(boolean), "");
+    EXPECT_NEAR(testutils::Area(boolean->GetOutput()), before, 1e-12);
+  }
+  for (vtkPolyData* curves : { heldCurves.GetPointer(), deepCurves.GetPointer() })
+  {
+    vtkNew<vtkBoolSurfArrangement> arrange;
+    arrange->SetInputData(0, surface);
+    arrange->SetInputData(1, curves);
+    vtkNew<vtkBoolSurfBoolean> boolean;
+    boolean->SetInputConnection(arrange->GetOutputPort(0));
+    boolean->SetShapeA(-1);
+    boolean->SetShapeB(-1);
+    EXPECT_EQ(testutils::ErrorsOf(boolean), "");
+    EXPECT_NEAR(testutils::Area(boolean->GetOutput()), before, 1e-12);
+  }
+}
+
+// Boundary Sampled Curves through the chain gives the one-step BSC region.
+TEST(StageChain, BoundarySampledCurvesMatchOneStep)
+{
+  auto surface = testutils::ToPolyData(boolsurf::MakeFlatSquare(14, 1.0, 0.3, 9));
+  auto curves = TwoSquares(0.0);
+  // Samples on the first square's bottom edge pointing inside, and on the second's right edge
+  // pointing outside: the region is the first square minus the second.
+  auto samples = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0.2, 0.1, 0);
+  points->InsertNextPoint(0.9, 0.5, 0);
+  vtkNew<vtkDoubleArray> direction;
+  direction->SetName("Direction");
+  direction->SetNumberOfComponents(3);
+  direction->InsertNextTuple3(0, 1, 0);
+  direction->InsertNextTuple3(1, 0, 0);
+  samples->SetPoints(points);
+  samples->GetPointData()->AddArray(direction);
+
+  vtkNew<vtkBoolSurf> one;
+  one->SetInputData(0, surface);
+  one->SetInputData(1, curves);
+  one->SetInputData(2, samples);
+  one->SetSelection(vtkBoolSurf::BSC_SELECTION);
+  EXPECT_EQ(testutils::ErrorsOf(one), "");
+
+  Chain chain(surface, curves);
+  vtkNew<vtkBoolSurfBSC> bsc;
+  bsc->SetInputConnection(0, chain.Label->GetOutputPort(0));
+  bsc->SetInputData(1, samples);
+  EXPECT_EQ(testutils::ErrorsOf(bsc), "");
+  EXPECT_GT(testutils::Area(bsc->GetOutput()), 0.0);
+  for (int port = 0; port < 4; ++port)
+  {
+    ExpectIdentical(one->GetOutput(port), bsc->GetOutput(port), "BSC port " + std::to_string(port));
+  }
+}
+
+// A stage below a failed one says that its input is empty because of an upstream error, not
+// that the pipeline is wired wrong.
+TEST(StageChain, DownstreamOfAFailureNamesTheUpstreamError)
+{
+  auto surface = testutils::ToPolyData(boolsurf::MakeFlatSquare(6));
+  testutils::ControlPolygon bezier;
+  bezier.Type = 1; // a closed cubic Bezier needs 3n control points: 4 is an error
+  bezier.Points = { { 0.1, 0.1, 0 }, { 0.5, 0.1, 0 }, { 0.5, 0.5, 0 }, { 0.1, 0.5, 0 } };
+  Chain chain(surface, testutils::ToCurves({ bezier }));
+  chain.Boolean->Update();
+  const std::string& errors = chain.Log.Catcher->Errors;
+  EXPECT_NE(errors.find("3n control points"), std::string::npos) << errors;
+  EXPECT_NE(errors.find("the curves input is empty: the filter before it (Trace Surface Curves) "
+                        "reported an error"),
+    std::string::npos)
+    << errors;
+  EXPECT_NE(errors.find("the input is empty: the filter before it"), std::string::npos) << errors;
+  EXPECT_EQ(errors.find("connect the"), std::string::npos) << errors;
 }

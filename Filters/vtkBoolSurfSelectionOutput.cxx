@@ -1,0 +1,85 @@
+#include "vtkBoolSurfSelectionOutput.h"
+
+#include "Geodesic/GeodesicPath.h"
+#include "vtkBoolSurfControlOutput.h"
+#include "vtkBoolSurfRegionOutput.h"
+
+#include <vtkPolyData.h>
+
+#include <chrono>
+
+namespace boolsurf
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+double Milliseconds(Clock::time_point from, Clock::time_point to)
+{
+  return std::chrono::duration<double, std::milli>(to - from).count();
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+bool WriteSelectedCells(const vtkSurfaceInput& surface,
+  const Arrangement& arr,
+  const std::vector<CurveSource>& sources,
+  const std::vector<char>& selected,
+  GeodesicPathSolver* solver,
+  SelectionOutputBuffers& buffers,
+  vtkPolyData* region,
+  vtkPolyData* boundary,
+  vtkPolyData* controls,
+  vtkPolyData* clipped,
+  std::string& error,
+  SelectionOutputTimes* times)
+{
+  const Clock::time_point start = Clock::now();
+  RegionExtractor::SelectedTriangles(selected, arr, buffers.RegionTriangles);
+  buffers.Extractor.Extract(
+    buffers.RegionTriangles,
+    static_cast<int>(arr.Positions.size()),
+    [&](int t, int k) { return arr.Triangles[t][k]; },
+    buffers.Region);
+  const Clock::time_point extracted = Clock::now();
+  WriteRegion(surface, arr, buffers.Region, region);
+  const std::vector<BoundaryPolyline> loops = ExtractRegionBoundary(arr.Patches, selected);
+  WriteBoundary(
+    loops,
+    [&](int p, double x[3])
+    {
+      x[0] = arr.Positions[p].x;
+      x[1] = arr.Positions[p].y;
+      x[2] = arr.Positions[p].z;
+    },
+    [&](int p) { return arr.PointSurface[p]; },
+    true,
+    boundary);
+  const Clock::time_point written = Clock::now();
+  if (solver)
+  {
+    TraceStatus status = BoundaryControlCurves(*solver, arr, sources, loops, buffers.SubCurves);
+    if (status)
+    {
+      WriteControlSubCurves(buffers.SubCurves, "BoundaryLoop", true, controls);
+      status = ClippedControlCurves(*solver, arr, sources, selected, buffers.SubCurves);
+    }
+    if (!status)
+    {
+      error = "Control points of the result: " + status.Message;
+      region->Initialize();
+      boundary->Initialize();
+      controls->Initialize();
+      return false;
+    }
+    WriteControlSubCurves(buffers.SubCurves, "ClippedPiece", false, clipped);
+  }
+  if (times)
+  {
+    times->Extraction = Milliseconds(start, extracted);
+    times->Output = Milliseconds(extracted, written);
+    times->ControlCurves = Milliseconds(written, Clock::now());
+  }
+  return true;
+}
+
+} // namespace boolsurf

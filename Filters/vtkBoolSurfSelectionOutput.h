@@ -1,0 +1,61 @@
+// The selected cells of a Core arrangement written as outputs (a private header of the module):
+// what the one-step vtkBoolSurf writes, and what Surface Boolean and Boundary Sampled Curves
+// write when the arrangement came to them in Core form (vtkBoolSurfStageHandoff.h), so a chain
+// of stage filters gives the one-step answer bit for bit. The cost is the size of the region.
+#ifndef vtkBoolSurfSelectionOutput_h
+#define vtkBoolSurfSelectionOutput_h
+
+#include "Arrangement/Arrangement.h"
+#include "Selection/BoundaryControlPoints.h"
+#include "Selection/RegionExtraction.h"
+#include "vtkBoolSurfSurfaceAdapter.h"
+
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+
+namespace boolsurf
+{
+
+class GeodesicPathSolver;
+
+/// Buffers kept between updates, so an edit reuses them.
+struct SelectionOutputBuffers
+{
+  std::vector<int> RegionTriangles;
+  RegionExtractor Extractor;
+  RegionMesh Region;
+  std::vector<ControlSubCurve> SubCurves;
+};
+
+/// Milliseconds spent in WriteSelectedCells.
+struct SelectionOutputTimes
+{
+  double Extraction = 0;    ///< finding the region's triangles and points
+  double Output = 0;        ///< region and boundary polydata
+  double ControlCurves = 0; ///< ports 2 and 3
+};
+
+/// Writes the cells with selected[cell] != 0: `region` (the refined triangles with
+/// ArrangementCell, SourceTriangle, TriangleId/Barycentric and the surface's own arrays),
+/// `boundary` (oriented loops, region on the left) and, when `solver` is given, `controls` and
+/// `clipped`: the boundary and the clipped open curves as control points of the input curves
+/// `sources` (ports 2 and 3 of vtkBoolSurf). False with a message when those control points
+/// cannot be recovered; the outputs are then empty.
+bool WriteSelectedCells(const vtkSurfaceInput& surface,
+  const Arrangement& arrangement,
+  const std::vector<CurveSource>& sources,
+  const std::vector<char>& selected,
+  GeodesicPathSolver* solver,
+  SelectionOutputBuffers& buffers,
+  vtkPolyData* region,
+  vtkPolyData* boundary,
+  vtkPolyData* controls,
+  vtkPolyData* clipped,
+  std::string& error,
+  SelectionOutputTimes* times = nullptr);
+
+} // namespace boolsurf
+
+#endif
