@@ -358,6 +358,13 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   if (!boolsurf::ComputeArrangement(*surface.Mesh, in.Curves, options, in.Arrangement, error))
   {
     error = "Arrangement failed: " + error;
+    if (in.Arrangement.FailedCurve >= 0)
+    {
+      error += "\n  (at " +
+        boolsurf::DescribeCurvePoint(
+          in.Curves, in.Sources, in.Arrangement.FailedCurve, in.Arrangement.FailedPoint) +
+        ")";
+    }
     return false;
   }
   this->UpdateProgress(0.7);

@@ -7,6 +7,7 @@
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfSurfaceCache.h"
+#include "vtkBoolSurfTraceStage.h"
 #include "vtkBoolSurfTracedCurves.h"
 
 #include <vtkCellData.h>
@@ -119,6 +120,14 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   if (!boolsurf::ArrangeCurves(
         *surface, curves, this->NumberOfThreads, result->Arrangement, output, patches, error))
   {
+    const boolsurf::Arrangement& arr = result->Arrangement;
+    if (arr.FailedCurve >= 0)
+    {
+      error += "\n  (at " +
+        boolsurf::DescribeCurvePoint(curves, sources, arr.FailedCurve, arr.FailedPoint) + ")";
+    }
+    output->Initialize();
+    patches->Initialize();
     vtkErrorMacro(<< error);
     return vtkBoolSurfErrorReported;
   }

@@ -93,6 +93,7 @@ void ReadControlCurves(vtkPolyData* curves,
   }
   vtkDataArray* shapeIds = curves->GetCellData()->GetArray("ShapeId");
   vtkDataArray* types = curves->GetCellData()->GetArray("CurveType");
+  vtkDataArray* inputCurveIds = curves->GetCellData()->GetArray("CurveId");
   vtkDataArray* triangleIds = curves->GetPointData()->GetArray("TriangleId");
   vtkDataArray* barycentric = curves->GetPointData()->GetArray("Barycentric");
   const bool exact = triangleIds && barycentric && barycentric->GetNumberOfComponents() == 2;
@@ -131,6 +132,11 @@ void ReadControlCurves(vtkPolyData* curves,
     {
       ControlCurve curve;
       curve.CurveId = static_cast<int>(cellId);
+      if (inputCurveIds && cellId < inputCurveIds->GetNumberOfTuples())
+      {
+        const double id = inputCurveIds->GetComponent(cellId, 0);
+        curve.InputCurveId = IsIndex(id) ? static_cast<long long>(id) : -1;
+      }
       const double shape = shapeIds ? shapeIds->GetComponent(cellId, 0) : double(cellId);
       const double type = types ? types->GetComponent(cellId, 0) : 0.0;
       if (!IsIndex(shape))

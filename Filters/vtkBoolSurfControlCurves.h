@@ -21,6 +21,9 @@ namespace boolsurf
 struct ControlCurve
 {
   int CurveId = -1; ///< cell id in the curves input
+  /// The input's own cell data `CurveId` for this cell (a scene's polygon index), for messages;
+  /// -1 when the input has none.
+  long long InputCurveId = -1;
   int ShapeId = 0;
   CurveType Type = CurveType::GeodesicPolygon;
   bool Closed = false;

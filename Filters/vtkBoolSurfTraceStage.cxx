@@ -14,6 +14,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace boolsurf
@@ -157,6 +158,40 @@ void WriteTraces(const TriangleMesh& mesh,
 } // namespace
 
 //------------------------------------------------------------------------------
+std::string DescribeCurvePoint(const std::vector<TracedCurve>& curves,
+  const std::vector<CurveSource>& sources,
+  int curve,
+  int point)
+{
+  if (curve < 0 || curve >= static_cast<int>(curves.size()))
+  {
+    return "";
+  }
+  const TracedCurve& traced = curves[curve];
+  std::string text = "curve " + std::to_string(traced.CurveId);
+  const CurveSource* source = curve < static_cast<int>(sources.size()) ? &sources[curve] : nullptr;
+  if (source && source->InputCurveId >= 0 && source->InputCurveId != traced.CurveId)
+  {
+    text += " (input CurveId " + std::to_string(source->InputCurveId) + ")";
+  }
+  text += " of shape " + std::to_string(traced.ShapeId);
+  if (!source || point < 0 || point >= static_cast<int>(source->Parameter.size()) ||
+    source->Controls.empty())
+  {
+    return text;
+  }
+  // Parameter = segment index + fraction: the control points at the ends of that segment.
+  const int n = static_cast<int>(source->Controls.size());
+  const int segment = static_cast<int>(source->Parameter[point]);
+  const bool bezier = source->Type == CurveType::CubicBezier;
+  const int first = bezier ? 3 * segment : segment;
+  const int last = bezier ? 3 * segment + 3 : segment + 1;
+  return text + ", between its control points " + std::to_string(first % n) + " and " +
+    std::to_string(source->Closed ? last % n : std::min(last, n - 1)) + " (traced point " +
+    std::to_string(point) + ")";
+}
+
+//------------------------------------------------------------------------------
 bool TraceControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* controlCurves,
   const TraceOptions& options,
@@ -227,6 +262,7 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
       s.Closed = controls[c].Closed;
       s.ShapeId = controls[c].ShapeId;
       s.CurveId = controls[c].CurveId;
+      s.InputCurveId = controls[c].InputCurveId;
     }
   }
   if (output)

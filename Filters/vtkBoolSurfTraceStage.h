@@ -41,6 +41,15 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   std::vector<std::string>& notes,
   std::vector<CurveSource>* sources = nullptr);
 
+/// How the user knows traced point `point` of `curves[curve]`: "curve 3 (input CurveId 7) of
+/// shape 1, between its control points 4 and 5 (traced point 21)", from the control points and
+/// parameters in `sources` (as TraceControlCurves fills them; without them only the curve is
+/// named). For messages of later stages that refuse a point.
+std::string DescribeCurvePoint(const std::vector<TracedCurve>& curves,
+  const std::vector<CurveSource>& sources,
+  int curve,
+  int point);
+
 } // namespace boolsurf
 
 #endif

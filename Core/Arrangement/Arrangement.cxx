@@ -133,8 +133,12 @@ bool ComputeArrangement(const TriangleMesh& mesh,
 
   // --- 1. hash map triangle -> segments
   TriangleSegmentMap& map = work.Map;
-  if (!BuildTriangleSegmentMap(mesh, curves, map, error))
+  CurvePointRef failed;
+  out.FailedCurve = out.FailedPoint = -1;
+  if (!BuildTriangleSegmentMap(mesh, curves, map, error, &failed))
   {
+    out.FailedCurve = failed.Curve;
+    out.FailedPoint = failed.Point;
     return false;
   }
   const Clock::time_point hashed = Clock::now();

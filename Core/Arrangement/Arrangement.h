@@ -75,6 +75,9 @@ struct Arrangement
   std::vector<std::vector<double>> CurveStations;
 
   ArrangementStageTimes Times;
+  /// After a refusal: the curve (index into the curves) and traced point it is about, -1 when
+  /// not about one, so callers can name the point as their user knows it.
+  int FailedCurve = -1, FailedPoint = -1;
 
   /// Work buffers kept between calls: computing again into the same Arrangement (an edit of
   /// the curves on the same mesh) reuses every allocation, and rewrites the mesh vertices'

@@ -345,9 +345,18 @@ void TriangleSegmentMap::GetEdgePointsOnLocalEdge(const TriangleMesh& mesh,
 bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
   const std::vector<TracedCurve>& curves,
   TriangleSegmentMap& map,
-  std::string& error)
+  std::string& error,
+  CurvePointRef* failed)
 {
   map = TriangleSegmentMap();
+  const auto refuse = [failed](int curve, int point)
+  {
+    if (failed)
+    {
+      *failed = CurvePointRef{ curve, point };
+    }
+    return false;
+  };
   map.CurveSegments.resize(curves.size());
 
   struct Pending
@@ -375,13 +384,13 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
     if (curve.ShapeId < 0)
     {
       error = "curve " + std::to_string(ci) + " has a negative ShapeId";
-      return false;
+      return refuse(curveIndex, -1);
     }
     const int n = static_cast<int>(curve.Points.size());
     if (n < 2)
     {
       error = PointName(curve, curveIndex, 0) + ": a curve needs at least two points";
-      return false;
+      return refuse(curveIndex, -1);
     }
     std::vector<CanonicalPoint>& points = normalized[ci];
     points = curve.Points;
@@ -391,7 +400,7 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
       if (!NormalizePoint(mesh, points[i], why))
       {
         error = PointName(curve, curveIndex, i) + ": " + why;
-        return false;
+        return refuse(curveIndex, i);
       }
       if (points[i].Location == PointLocation::Edge)
       {
@@ -458,7 +467,7 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
       {
         error = PointName(curve, curveIndex, i) + " and point " + std::to_string((i + 1) % n) +
           " share no triangle";
-        return false;
+        return refuse(curveIndex, i);
       }
       Pending p;
       p.Triangle = t;

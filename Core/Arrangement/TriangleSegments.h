@@ -102,13 +102,22 @@ Vec2 EdgePointCoordinates(int k, double T, bool forward);
 /// Coordinates in the unit triangle of a canonical point that triangle t contains.
 Vec2 LocalCoordinates(const TriangleMesh& mesh, const CanonicalPoint& p, int t);
 
+/// Where a curve was refused: its index in the curves and the (first) point involved, -1 when
+/// not about one point.
+struct CurvePointRef
+{
+  int Curve = -1;
+  int Point = -1;
+};
+
 /// Builds the map. Fails with a message naming the curve and point index when a point is
 /// invalid (out-of-range id, non-finite or out-of-range parameter) or when two consecutive
-/// points share no triangle.
+/// points share no triangle; `failed` (may be null) then says which.
 bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
   const std::vector<TracedCurve>& curves,
   TriangleSegmentMap& map,
-  std::string& error);
+  std::string& error,
+  CurvePointRef* failed = nullptr);
 
 } // namespace boolsurf
 

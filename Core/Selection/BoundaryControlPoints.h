@@ -41,6 +41,9 @@ struct CurveSource
   bool Closed = true;
   int ShapeId = 0;
   int CurveId = 0;
+  /// The user's own id of the curve (a scene's polygon index) when the input gave one, for
+  /// messages; -1 otherwise.
+  long long InputCurveId = -1;
 };
 
 /// One sub-curve of an input curve, as control points.

@@ -614,3 +614,42 @@ TEST(StageChain, DownstreamOfAFailureNamesTheUpstreamError)
   EXPECT_NE(errors.find("the input is empty: the filter before it"), std::string::npos) << errors;
   EXPECT_EQ(errors.find("connect the"), std::string::npos) << errors;
 }
+
+// A refused traced point is named by the user's curve and control points, not only by its
+// index in the traced polyline.
+TEST(StageChain, ArrangementErrorNamesTheControlPoints)
+{
+  auto surface = testutils::ToPolyData(boolsurf::MakeFlatSquare(8));
+  Chain chain(surface, TwoSquares(0.0));
+  chain.Trace->Update();
+  vtkNew<vtkPolyData> traced;
+  traced->DeepCopy(chain.Trace->GetOutput()); // arrays only, as from a file
+  // Move one traced point of the second curve, between its control points, into a far
+  // triangle: it then shares no triangle with its neighbours.
+  vtkDataArray* segment = traced->GetPointData()->GetArray("ControlSegment");
+  vtkDataArray* control = traced->GetPointData()->GetArray("ControlPointId");
+  vtkIdType n;
+  const vtkIdType* ids;
+  traced->GetCellPoints(1, n, ids);
+  vtkIdType broken = -1;
+  for (vtkIdType k = 1; k < n && broken < 0; ++k)
+  {
+    if (control->GetComponent(ids[k], 0) < 0)
+    {
+      broken = k;
+    }
+  }
+  ASSERT_GE(broken, 0);
+  const int seg = static_cast<int>(segment->GetComponent(ids[broken], 0));
+  traced->GetPointData()->GetArray("TriangleId")->SetComponent(ids[broken], 0, 0);
+  traced->GetPointData()->GetArray("Barycentric")->SetComponent(ids[broken], 0, 0.3);
+  traced->GetPointData()->GetArray("Barycentric")->SetComponent(ids[broken], 1, 0.3);
+  vtkNew<vtkBoolSurfArrangement> arrange;
+  arrange->SetInputData(0, surface);
+  arrange->SetInputData(1, traced);
+  const std::string errors = testutils::ErrorsOf(arrange);
+  EXPECT_NE(errors.find("share no triangle"), std::string::npos) << errors;
+  const std::string where = "curve 1 of shape 1, between its control points " +
+    std::to_string(seg) + " and " + std::to_string((seg + 1) % 4);
+  EXPECT_NE(errors.find(where), std::string::npos) << errors;
+}
