@@ -1,5 +1,7 @@
 #include "vtkBoolSurf.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfRankGather.h"
 
 #include "Labeling/ArrangementLabelingInput.h"
@@ -480,7 +482,7 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
     times[10] += times[k];
   }
   vtkNew<vtkDoubleArray> stageTimes;
-  stageTimes->SetName("StageTimes");
+  stageTimes->SetName(boolsurf::names::StageTimes);
   stageTimes->SetNumberOfComponents(11);
   for (int k = 0; k < 11; ++k)
   {

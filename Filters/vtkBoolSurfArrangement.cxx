@@ -1,6 +1,6 @@
 #include "vtkBoolSurfArrangement.h"
 
-#include "vtkBoolSurfRankGather.h"
+#include "vtkBoolSurfArrayNames.h"
 
 #include "vtkBoolSurfArrangementOutput.h"
 #include "vtkBoolSurfControlOutput.h"
@@ -21,7 +21,6 @@ vtkStandardNewMacro(vtkBoolSurfArrangement);
 
 struct vtkBoolSurfArrangement::Internals
 {
-  boolsurf::vtkSurfaceCache Surface;
   /// Results handed downstream; an edit reuses the buffers of one no output holds any more.
   boolsurf::ResultPool<boolsurf::ArrangementResult> Results;
 };
@@ -44,46 +43,19 @@ vtkPolyData* vtkBoolSurfArrangement::GetPatchesOutput()
 }
 
 //------------------------------------------------------------------------------
-int vtkBoolSurfArrangement::FillInputPortInformation(int port, vtkInformation* info)
+bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  (void)port;
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
-  vtkBoolSurfRankGather gather(this, inputVector, 2);
-  vtkPolyData* surfaceInput = gather.Input(0);
-  vtkPolyData* curvesInput = gather.Input(1);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  vtkPolyData* patches = vtkPolyData::GetData(outputVector, 1);
-  // A failed update leaves empty outputs: downstream filters and views never show the last
-  // successful result as if it were this one.
-  output->Initialize();
-  patches->Initialize();
-  if (!gather.ComputesHere())
-  {
-    return 1; // other MPI ranks: empty outputs
-  }
-
-  this->UpdateProgress(0.0);
-  std::vector<std::string> warnings, problems;
-  std::string error;
-  const boolsurf::vtkSurfaceInput* surface =
-    this->Internal->Surface.GetUsable(surfaceInput, warnings, error);
-  for (const std::string& w : warnings)
-  {
-    vtkWarningMacro(<< w);
-  }
+  vtkPolyData* surfaceInput = inputs[0];
+  vtkPolyData* curvesInput = inputs[1];
+  vtkPolyData* output = outputs[0];
+  vtkPolyData* patches = outputs[1];
+  std::vector<std::string> problems;
+  const boolsurf::vtkSurfaceInput* surface = this->GetSurface(surfaceInput, error);
   if (!surface)
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   std::shared_ptr<boolsurf::ArrangementResult> result = this->Internal->Results.Acquire();
   result->Surface = *surface;
@@ -92,7 +64,7 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   // The curves as Trace Surface Curves traced them when it handed them over (on this very
   // surface); else read back from the arrays (a file, a script's curves).
   const auto traced = boolsurf::FindStageResult<boolsurf::TracedCurvesResult>(
-    curvesInput ? curvesInput->GetPointData()->GetArray("TriangleId") : nullptr);
+    curvesInput ? curvesInput->GetPointData()->GetArray(boolsurf::names::TriangleId) : nullptr);
   if (traced && traced->Surface.Matches(surfaceInput))
   {
     curves = traced->Curves;
@@ -103,8 +75,8 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   {
     if (!boolsurf::ReadTracedCurves(curvesInput, *surface->Mesh, curves, problems))
     {
-      vtkErrorMacro(<< "Invalid traced curves:" << boolsurf::JoinLines(problems));
-      return vtkBoolSurfErrorReported;
+      error = "Invalid traced curves:" + boolsurf::JoinLines(problems);
+      return false;
     }
     if (!boolsurf::ReadCurveSources(curvesInput, curves, sources))
     {
@@ -115,7 +87,7 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   this->UpdateProgress(0.1);
   if (this->CheckAbort())
   {
-    return 1;
+    return true;
   }
   if (!boolsurf::ArrangeCurves(
         *surface, curves, this->NumberOfThreads, result->Arrangement, output, patches, error))
@@ -126,17 +98,14 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
       error += "\n  (at " +
         boolsurf::DescribeCurvePoint(curves, sources, arr.FailedCurve, arr.FailedPoint) + ")";
     }
-    output->Initialize();
-    patches->Initialize();
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   // Each patch as control points of its input curve (when the curves came from Trace Surface
   // Curves, which records them), for the Boolean's vector output.
   if (!sources.empty())
   {
     const boolsurf::Arrangement& arr = result->Arrangement;
-    boolsurf::GeodesicPathSolver& solver = this->Internal->Surface.GetTracer().GetPathSolver();
+    boolsurf::GeodesicPathSolver& solver = this->GetSurfaceCache().GetTracer().GetPathSolver();
     std::vector<boolsurf::ControlSubCurve> perPatch(arr.Patches.size());
     boolsurf::BezierPieces bezier(arr, sources); // each Bezier segment split once per cut
     for (std::size_t p = 0; p < perPatch.size(); ++p)
@@ -154,12 +123,12 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   // Each curve's homology class and the surface's generators (computed once per surface), for
   // the labeling's explanation of inconsistent shapes.
   std::string homologyError;
-  const boolsurf::HomologyBasis* basis = this->Internal->Surface.GetHomology(homologyError);
+  const boolsurf::HomologyBasis* basis = this->GetSurfaceCache().GetHomology(homologyError);
   if (!basis ||
     !boolsurf::AddHomologyFields(*surface->Mesh,
       *basis,
       curves,
-      this->Internal->Surface.GetShortenedGenerators(),
+      this->GetSurfaceCache().GetShortenedGenerators(),
       output->GetFieldData(),
       homologyError))
   {
@@ -167,9 +136,8 @@ int vtkBoolSurfArrangement::RequestData(vtkInformation* vtkNotUsed(request),
   }
   // The arrangement in Core form for the labeling and selections (vtkBoolSurfStageHandoff.h).
   boolsurf::AttachStageResult<boolsurf::ArrangementResult>(
-    output->GetCellData()->GetArray("ArrangementCell"), std::move(result));
-  this->UpdateProgress(1.0);
-  return 1;
+    output->GetCellData()->GetArray(boolsurf::names::ArrangementCell), std::move(result));
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -52,15 +52,15 @@
 #define vtkBoolSurfArrangement_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkBoolSurfAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfArrangement : public vtkPolyDataAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfArrangement : public vtkBoolSurfAlgorithm
 {
 public:
   static vtkBoolSurfArrangement* New();
-  vtkTypeMacro(vtkBoolSurfArrangement, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoolSurfArrangement, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -82,10 +82,9 @@ protected:
   vtkBoolSurfArrangement();
   ~vtkBoolSurfArrangement() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   int NumberOfThreads = 0;
 

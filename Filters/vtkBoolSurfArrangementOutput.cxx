@@ -1,5 +1,7 @@
 #include "vtkBoolSurfArrangementOutput.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "Labeling/ArrangementLabelingInput.h"
 #include "vtkBoolSurfAttributeTransfer.h"
 
@@ -87,10 +89,10 @@ void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData
 {
   const vtkIdType np = static_cast<vtkIdType>(points.size());
   vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName("TriangleId");
+  triangleId->SetName(boolsurf::names::TriangleId);
   triangleId->SetNumberOfTuples(np);
   vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName("Barycentric");
+  barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   barycentric->SetNumberOfTuples(np);
   vtkIdType* tid = triangleId->GetPointer(0);
@@ -157,9 +159,9 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   TransferSurfaceAttributes(
     surface.Triangles, *surface.Mesh, arr.PointSurface, arr.SourceTriangle, output);
 
-  output->GetCellData()->AddArray(IntArray("ArrangementCell", arr.TriangleCell));
+  output->GetCellData()->AddArray(IntArray(boolsurf::names::ArrangementCell, arr.TriangleCell));
   vtkNew<vtkIdTypeArray> source;
-  source->SetName("SourceTriangle");
+  source->SetName(boolsurf::names::SourceTriangle);
   source->SetNumberOfTuples(nt);
   std::copy(arr.SourceTriangle.begin(), arr.SourceTriangle.end(), source->GetPointer(0));
   output->GetCellData()->AddArray(source);
@@ -170,9 +172,9 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   vtkFieldData* fd = output->GetFieldData();
   // Shapes are numbered densely (index i is ShapeIds[i]); arrays keep the users' ids.
   const std::vector<int> shapeIds = DistinctShapeIds(curves);
-  fd->AddArray(IntArray("NumberOfCells", { arr.NumberOfCells }));
-  fd->AddArray(IntArray("NumberOfShapes", { static_cast<int>(shapeIds.size()) }));
-  AddField(fd, IntArray("ShapeIds", shapeIds));
+  fd->AddArray(IntArray(boolsurf::names::NumberOfCells, { arr.NumberOfCells }));
+  fd->AddArray(IntArray(boolsurf::names::NumberOfShapes, { static_cast<int>(shapeIds.size()) }));
+  AddField(fd, IntArray(boolsurf::names::ShapeIds, shapeIds));
 
   const std::vector<PatchPlace> places = PatchPlaces(arr.Patches);
   std::vector<int> arcs, arcShape, arcPatch, arcLocation, arcDirection;
@@ -214,7 +216,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   AddField(fd, IntArray("PatchCurve", curve));
 
   vtkNew<vtkDoubleArray> times;
-  times->SetName("StageTimes");
+  times->SetName(boolsurf::names::StageTimes);
   times->SetNumberOfComponents(6);
   const char* names[] = {
     "Hash", "Intersections", "Refinement", "FloodFill", "CellGraph", "Total"
@@ -241,7 +243,7 @@ void WriteArrangementPatches(const Arrangement& arr,
   vtkNew<vtkCellArray> lines;
   std::vector<int> patchId, shape, curve, left, right;
   vtkNew<vtkDoubleArray> length;
-  length->SetName("Length");
+  length->SetName(boolsurf::names::Length);
   for (size_t p = 0; p < arr.Patches.size(); ++p)
   {
     const ArrangementPatch& patch = arr.Patches[p];
@@ -259,11 +261,11 @@ void WriteArrangementPatches(const Arrangement& arr,
   }
   patches->SetLines(lines);
   vtkCellData* cd = patches->GetCellData();
-  cd->AddArray(IntArray("PatchId", patchId));
-  cd->AddArray(IntArray("ShapeId", shape));
-  cd->AddArray(IntArray("CurveId", curve));
-  cd->AddArray(IntArray("LeftCell", left));
-  cd->AddArray(IntArray("RightCell", right));
+  cd->AddArray(IntArray(boolsurf::names::PatchId, patchId));
+  cd->AddArray(IntArray(boolsurf::names::ShapeId, shape));
+  cd->AddArray(IntArray(boolsurf::names::CurveId, curve));
+  cd->AddArray(IntArray(boolsurf::names::LeftCell, left));
+  cd->AddArray(IntArray(boolsurf::names::RightCell, right));
   cd->AddArray(length);
 }
 
@@ -297,14 +299,14 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
   }
   vtkFieldData* fd = input->GetFieldData();
   if (input->GetNumberOfPoints() == 0 && input->GetNumberOfCells() == 0 &&
-    !fd->GetArray("NumberOfCells"))
+    !fd->GetArray(boolsurf::names::NumberOfCells))
   {
     // What a failed BoolSurf filter leaves: say so rather than ask for a rewiring.
     error = "the input is empty: the filter before it (Surface Arrangement, or a stage above "
             "it) reported an error; see its message";
     return false;
   }
-  for (const char* required : { "NumberOfCells", "NumberOfShapes" })
+  for (const char* required : { boolsurf::names::NumberOfCells, boolsurf::names::NumberOfShapes })
   {
     if (!fd->GetArray(required))
     {
@@ -313,15 +315,15 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
       return false;
     }
   }
-  if (!input->GetCellData()->GetArray("ArrangementCell"))
+  if (!input->GetCellData()->GetArray(boolsurf::names::ArrangementCell))
   {
     error = "the input lacks cell data 'ArrangementCell': connect the first output of "
             "Surface Arrangement";
     return false;
   }
-  out.NumberOfCells = ReadInts(fd, "NumberOfCells")[0];
-  out.NumberOfShapes = ReadInts(fd, "NumberOfShapes")[0];
-  out.ShapeIds = ReadInts(fd, "ShapeIds");
+  out.NumberOfCells = ReadInts(fd, boolsurf::names::NumberOfCells)[0];
+  out.NumberOfShapes = ReadInts(fd, boolsurf::names::NumberOfShapes)[0];
+  out.ShapeIds = ReadInts(fd, boolsurf::names::ShapeIds);
   if (out.ShapeIds.empty())
   {
     // Written before shape ids were numbered densely: ids are 0..NumberOfShapes-1.

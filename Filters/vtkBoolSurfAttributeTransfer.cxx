@@ -1,5 +1,7 @@
 #include "vtkBoolSurfAttributeTransfer.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include <vtkCellData.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
@@ -16,10 +18,10 @@ namespace
 // must not shadow the new values.
 bool IsBoolSurfArray(const char* name)
 {
-  static const char* const names[] = { "TriangleId",
-    "Barycentric",
-    "ArrangementCell",
-    "SourceTriangle",
+  static const char* const names[] = { boolsurf::names::TriangleId,
+    boolsurf::names::Barycentric,
+    boolsurf::names::ArrangementCell,
+    boolsurf::names::SourceTriangle,
     "Labels",
     "ComponentId",
     "BoundaryLoopId",

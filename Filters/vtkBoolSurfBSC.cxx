@@ -1,7 +1,5 @@
 #include "vtkBoolSurfBSC.h"
 
-#include "vtkBoolSurfRankGather.h"
-
 #include "vtkBoolSurfBSCStage.h"
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
@@ -36,38 +34,17 @@ vtkBoolSurfBSC::vtkBoolSurfBSC()
 }
 
 //------------------------------------------------------------------------------
-int vtkBoolSurfBSC::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
+bool vtkBoolSurfBSC::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
-  vtkBoolSurfRankGather gather(this, inputVector, 2);
-  vtkPolyData* input = gather.Input(0);
-  vtkPolyData* samples = gather.Input(1);
-  vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
-  vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
-  vtkPolyData* controls = vtkPolyData::GetData(outputVector, 2);
-  vtkPolyData* clipped = vtkPolyData::GetData(outputVector, 3);
-  // A failed update leaves empty outputs, not the previous region.
-  region->Initialize();
-  boundary->Initialize();
-  controls->Initialize();
-  clipped->Initialize();
-  if (!gather.ComputesHere())
-  {
-    return 1; // other MPI ranks: empty outputs
-  }
+  vtkPolyData* input = inputs[0];
+  vtkPolyData* samples = inputs[1];
+  vtkPolyData* region = outputs[0];
+  vtkPolyData* boundary = outputs[1];
+  vtkPolyData* controls = outputs[2];
+  vtkPolyData* clipped = outputs[3];
   std::string note;
-  this->UpdateProgress(0.0);
-
-  std::string error;
   // The arrangement in Core form when Surface Arrangement handed it over: selected and written
   // as the one-step filter does.
   if (const auto labeled = boolsurf::FindLabeledArrangement(input))
@@ -75,29 +52,21 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
     if (!this->SelectFromCore(
           *labeled->Arranged, samples, region, boundary, controls, clipped, error))
     {
-      region->Initialize();
-      boundary->Initialize();
-      controls->Initialize();
-      clipped->Initialize();
-      vtkErrorMacro(<< error);
-      return vtkBoolSurfErrorReported;
+      return false;
     }
     // The labels of the arrangement's cells, as the one-step filter gives them.
     boolsurf::AddLabelTable(labeled->Labels, region->GetFieldData());
-    this->UpdateProgress(1.0);
-    return 1;
+    return true;
   }
   boolsurf::ArrangementFields fields;
   if (!boolsurf::ReadArrangementFields(input, fields, error))
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   std::vector<boolsurf::SampleQuery> queries;
   if (!boolsurf::ReadSampleQueries(samples, nullptr, queries, error))
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   std::vector<boolsurf::PatchSnap> snaps;
   boolsurf::BscResult result;
@@ -111,8 +80,7 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
         error,
         [this] { return this->CheckAbort(); }))
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   this->UpdateProgress(0.5);
   boolsurf::WriteSelection(
@@ -123,8 +91,7 @@ int vtkBoolSurfBSC::RequestData(vtkInformation* vtkNotUsed(request),
   }
   boolsurf::AddSampleFields(snaps, result, region);
   boolsurf::AddSampleFields(snaps, result, boundary);
-  this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -33,7 +33,7 @@
 #define vtkBoolSurfBSC_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkBoolSurfAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -43,11 +43,11 @@ namespace boolsurf
 struct ArrangementResult;
 }
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfBSC : public vtkPolyDataAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfBSC : public vtkBoolSurfAlgorithm
 {
 public:
   static vtkBoolSurfBSC* New();
-  vtkTypeMacro(vtkBoolSurfBSC, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoolSurfBSC, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -82,10 +82,9 @@ protected:
   vtkBoolSurfBSC();
   ~vtkBoolSurfBSC() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   double SnapTolerance = 0.01;
   int MaxSearchStates = 64;

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfBSCStage.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
@@ -28,15 +30,15 @@ bool ReadSampleQueries(vtkPolyData* samples,
   {
     return true; // no samples: an empty selection
   }
-  vtkDataArray* direction = samples->GetPointData()->GetArray("Direction");
+  vtkDataArray* direction = samples->GetPointData()->GetArray(boolsurf::names::Direction);
   if (!direction || direction->GetNumberOfComponents() != 3)
   {
     error = "the samples lack point data 'Direction' (3 components: the side each sample "
             "wants inside)";
     return false;
   }
-  vtkDataArray* tid = samples->GetPointData()->GetArray("TriangleId");
-  vtkDataArray* uv = samples->GetPointData()->GetArray("Barycentric");
+  vtkDataArray* tid = samples->GetPointData()->GetArray(boolsurf::names::TriangleId);
+  vtkDataArray* uv = samples->GetPointData()->GetArray(boolsurf::names::Barycentric);
   const bool exact = mesh && tid && uv && uv->GetNumberOfComponents() == 2;
   queries.resize(samples->GetNumberOfPoints());
   for (vtkIdType k = 0; k < samples->GetNumberOfPoints(); ++k)

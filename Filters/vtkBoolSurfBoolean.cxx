@@ -1,6 +1,6 @@
 #include "vtkBoolSurfBoolean.h"
 
-#include "vtkBoolSurfRankGather.h"
+#include "vtkBoolSurfArrayNames.h"
 
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
@@ -81,30 +81,16 @@ vtkBoolSurfBoolean::vtkBoolSurfBoolean()
 vtkBoolSurfBoolean::~vtkBoolSurfBoolean() = default;
 
 //------------------------------------------------------------------------------
-int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
+bool vtkBoolSurfBoolean::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
 {
-  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
-  vtkBoolSurfRankGather gather(this, inputVector, 1);
-  vtkPolyData* input = gather.Input(0);
-  vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
-  vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
-  vtkPolyData* controls = vtkPolyData::GetData(outputVector, 2);
-  vtkPolyData* clipped = vtkPolyData::GetData(outputVector, 3);
-  // A failed update leaves empty outputs, not the previous region.
-  region->Initialize();
-  boundary->Initialize();
-  controls->Initialize();
-  clipped->Initialize();
-  if (!gather.ComputesHere())
-  {
-    return 1; // other MPI ranks: empty outputs
-  }
-  std::string note;
-  this->UpdateProgress(0.0);
-
-  std::string error, warning;
+  vtkPolyData* input = inputs[0];
+  vtkPolyData* region = outputs[0];
+  vtkPolyData* boundary = outputs[1];
+  vtkPolyData* controls = outputs[2];
+  vtkPolyData* clipped = outputs[3];
+  std::string note, warning;
   // The labeled arrangement in Core form when the stages upstream handed it over: selected and
   // written as the one-step filter does.
   if (const auto labeled = boolsurf::FindLabeledArrangement(input))
@@ -123,43 +109,36 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
           error,
           note))
     {
-      region->Initialize();
-      boundary->Initialize();
-      controls->Initialize();
-      clipped->Initialize();
-      vtkErrorMacro(<< error);
-      return vtkBoolSurfErrorReported;
+      return false;
     }
     if (!note.empty())
     {
       vtkWarningMacro(<< note);
     }
-    this->UpdateProgress(1.0);
-    return 1;
+    return true;
   }
   boolsurf::ArrangementFields fields;
   boolsurf::LabelingResult labels;
   vtkFieldData* fd = input ? input->GetFieldData() : nullptr;
-  vtkDataArray* cellLabels = fd ? fd->GetArray("CellLabels") : nullptr;
-  vtkDataArray* consistent = fd ? fd->GetArray("ShapeConsistent") : nullptr;
+  vtkDataArray* cellLabels = fd ? fd->GetArray(boolsurf::names::CellLabels) : nullptr;
+  vtkDataArray* consistent = fd ? fd->GetArray(boolsurf::names::ShapeConsistent) : nullptr;
   vtkSmartPointer<vtkPolyData> labeled = input;
   if (cellLabels && consistent)
   {
     if (!boolsurf::ReadArrangementFields(input, fields, error))
     {
-      vtkErrorMacro(<< error);
-      return vtkBoolSurfErrorReported;
+      return false;
     }
     const int ns = fields.NumberOfShapes;
     if (cellLabels->GetNumberOfComponents() != ns ||
       cellLabels->GetNumberOfTuples() != fields.NumberOfCells ||
       consistent->GetNumberOfTuples() != ns)
     {
-      vtkErrorMacro(<< "field data CellLabels (" << cellLabels->GetNumberOfTuples() << " x "
-                    << cellLabels->GetNumberOfComponents() << ") or ShapeConsistent ("
-                    << consistent->GetNumberOfTuples() << ") does not match the arrangement's "
-                    << fields.NumberOfCells << " cells and " << ns << " shapes");
-      return vtkBoolSurfErrorReported;
+      error = "field data CellLabels (" + std::to_string(cellLabels->GetNumberOfTuples()) + " x " +
+        std::to_string(cellLabels->GetNumberOfComponents()) + ") or ShapeConsistent (" +
+        std::to_string(consistent->GetNumberOfTuples()) + ") does not match the arrangement's " +
+        std::to_string(fields.NumberOfCells) + " cells and " + std::to_string(ns) + " shapes";
+      return false;
     }
     labels.NumberOfShapes = ns;
     labels.ShapeIds = fields.ShapeIds;
@@ -190,8 +169,7 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
     if (!boolsurf::LabelArrangement(
           input, boolsurf::LabelingOutputOptions(), labeled, fields, labels, error, warning))
     {
-      vtkErrorMacro(<< error);
-      return vtkBoolSurfErrorReported;
+      return false;
     }
   }
   this->UpdateProgress(0.5);
@@ -200,15 +178,13 @@ int vtkBoolSurfBoolean::RequestData(vtkInformation* vtkNotUsed(request),
   if (!boolsurf::ComputeBoolean(
         labeled, fields, labels, request, region, boundary, error, controls, clipped, &note))
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   if (!note.empty())
   {
     vtkWarningMacro(<< note);
   }
-  this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------

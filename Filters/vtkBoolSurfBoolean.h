@@ -36,16 +36,16 @@
 #define vtkBoolSurfBoolean_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkBoolSurfAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfBoolean : public vtkPolyDataAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfBoolean : public vtkBoolSurfAlgorithm
 {
 public:
   static vtkBoolSurfBoolean* New();
-  vtkTypeMacro(vtkBoolSurfBoolean, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoolSurfBoolean, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Operations
@@ -107,9 +107,9 @@ protected:
   vtkBoolSurfBoolean();
   ~vtkBoolSurfBoolean() override;
 
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   int Operation = UNION;
   int ShapeA = 0;

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfBooleanStage.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfStageHandoff.h"
 
 #include "Selection/RegionBoundary.h"
@@ -102,7 +104,7 @@ bool SelectRequestedCells(const LabelingResult& labels,
 void AddExpressionField(vtkPolyData* output, const std::string& text)
 {
   vtkNew<vtkStringArray> e;
-  e->SetName("Expression");
+  e->SetName(boolsurf::names::Expression);
   e->InsertNextValue(text);
   output->GetFieldData()->AddArray(e);
 }
@@ -154,15 +156,16 @@ void WriteSelection(vtkPolyData* labeled,
   ExtractRegion(labeled, selected, region);
   // The labels table travels with the region (shared, not copied): row ArrangementCell of
   // CellLabels gives a region triangle's labels.
-  for (const char* name : { "ShapeIds", "ShapeConsistent", "CellLabels" })
+  for (const char* name :
+    { boolsurf::names::ShapeIds, boolsurf::names::ShapeConsistent, boolsurf::names::CellLabels })
   {
     if (vtkAbstractArray* a = labeled->GetFieldData()->GetAbstractArray(name))
     {
       region->GetFieldData()->AddArray(a);
     }
   }
-  vtkDataArray* tid = labeled->GetPointData()->GetArray("TriangleId");
-  vtkDataArray* uv = labeled->GetPointData()->GetArray("Barycentric");
+  vtkDataArray* tid = labeled->GetPointData()->GetArray(boolsurf::names::TriangleId);
+  vtkDataArray* uv = labeled->GetPointData()->GetArray(boolsurf::names::Barycentric);
   const std::vector<BoundaryPolyline> loops = ExtractRegionBoundary(fields.Patches, selected);
   if (controls && clipped)
   {

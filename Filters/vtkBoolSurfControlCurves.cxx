@@ -1,5 +1,7 @@
 #include "vtkBoolSurfControlCurves.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfTracedCurves.h"
 
 #include <vtkCellArray.h>
@@ -91,11 +93,11 @@ void ReadControlCurves(vtkPolyData* curves,
       std::to_string(curves->GetNumberOfVerts() + curves->GetNumberOfStrips()) +
       " vertex/strip cell(s) of the curves input: curves are line and polygon cells");
   }
-  vtkDataArray* shapeIds = curves->GetCellData()->GetArray("ShapeId");
-  vtkDataArray* types = curves->GetCellData()->GetArray("CurveType");
-  vtkDataArray* inputCurveIds = curves->GetCellData()->GetArray("CurveId");
-  vtkDataArray* triangleIds = curves->GetPointData()->GetArray("TriangleId");
-  vtkDataArray* barycentric = curves->GetPointData()->GetArray("Barycentric");
+  vtkDataArray* shapeIds = curves->GetCellData()->GetArray(boolsurf::names::ShapeId);
+  vtkDataArray* types = curves->GetCellData()->GetArray(boolsurf::names::CurveType);
+  vtkDataArray* inputCurveIds = curves->GetCellData()->GetArray(boolsurf::names::CurveId);
+  vtkDataArray* triangleIds = curves->GetPointData()->GetArray(boolsurf::names::TriangleId);
+  vtkDataArray* barycentric = curves->GetPointData()->GetArray(boolsurf::names::Barycentric);
   const bool exact = triangleIds && barycentric && barycentric->GetNumberOfComponents() == 2;
   if ((triangleIds || barycentric) && !exact)
   {

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfControlOutput.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfTracedCurves.h"
 
 #include <vtkCellArray.h>
@@ -25,9 +27,9 @@ void WriteControlSubCurves(const std::vector<ControlSubCurve>& curves,
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName("TriangleId");
+  triangleId->SetName(boolsurf::names::TriangleId);
   vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName("Barycentric");
+  barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   vtkNew<vtkCellArray> lines;
   auto intArray = [](const char* name)
@@ -36,9 +38,10 @@ void WriteControlSubCurves(const std::vector<ControlSubCurve>& curves,
     a->SetName(name);
     return a;
   };
-  auto shape = intArray("ShapeId"), type = intArray("CurveType"), closed = intArray("Closed"),
-       sourceCurve = intArray("SourceCurveId"), sourceShape = intArray("SourceShapeId"),
-       reversed = intArray("Reversed"), group = intArray(groupName);
+  auto shape = intArray(boolsurf::names::ShapeId), type = intArray(boolsurf::names::CurveType),
+       closed = intArray(boolsurf::names::Closed), sourceCurve = intArray("SourceCurveId"),
+       sourceShape = intArray("SourceShapeId"), reversed = intArray("Reversed"),
+       group = intArray(groupName);
   vtkNew<vtkDoubleArray> range;
   range->SetName("ParameterRange");
   range->SetNumberOfComponents(2);
@@ -99,8 +102,10 @@ bool ReadCurveSources(vtkPolyData* traced,
   vtkDataArray* offsets = fd ? fd->GetArray("ControlOffsets") : nullptr;
   vtkDataArray* triangles = fd ? fd->GetArray("ControlTriangleId") : nullptr;
   vtkDataArray* uv = fd ? fd->GetArray("ControlBarycentric") : nullptr;
-  vtkDataArray* parameter = traced ? traced->GetPointData()->GetArray("CurveParameter") : nullptr;
-  vtkDataArray* types = traced ? traced->GetCellData()->GetArray("CurveType") : nullptr;
+  vtkDataArray* parameter =
+    traced ? traced->GetPointData()->GetArray(boolsurf::names::CurveParameter) : nullptr;
+  vtkDataArray* types =
+    traced ? traced->GetCellData()->GetArray(boolsurf::names::CurveType) : nullptr;
   if (!offsets || !triangles || !uv || uv->GetNumberOfComponents() != 2 || !parameter ||
     offsets->GetNumberOfTuples() != static_cast<vtkIdType>(curves.size()) + 1)
   {
@@ -153,9 +158,13 @@ void WritePatchControlCurves(const std::vector<ControlSubCurve>& perPatch, vtkFi
   offsets->SetName("PatchControlOffsets");
   info->SetName("PatchControlInfo");
   info->SetNumberOfComponents(7);
-  const char* names[] = {
-    "CurveIndex", "CurveType", "Segments", "CurveClosed", "SourceShapeId", "SourceCurveId", "Whole"
-  };
+  const char* names[] = { "CurveIndex",
+    boolsurf::names::CurveType,
+    "Segments",
+    "CurveClosed",
+    "SourceShapeId",
+    "SourceCurveId",
+    "Whole" };
   for (int k = 0; k < 7; ++k)
   {
     info->SetComponentName(k, names[k]);

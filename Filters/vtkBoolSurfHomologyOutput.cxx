@@ -1,5 +1,7 @@
 #include "vtkBoolSurfHomologyOutput.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "Homology/HomologyBasis.h"
 
 #include <vtkCellArray.h>
@@ -67,7 +69,7 @@ void WriteLoops(const TriangleMesh& mesh,
   vtkNew<vtkDoubleArray> positions, barycentric;
   positions->SetName((prefix + "Points").c_str());
   positions->SetNumberOfComponents(3);
-  barycentric->SetName((prefix + "Barycentric").c_str());
+  barycentric->SetName((prefix + boolsurf::names::Barycentric).c_str());
   barycentric->SetNumberOfComponents(2);
   for (const std::vector<CanonicalPoint>& loop : loops)
   {
@@ -82,7 +84,7 @@ void WriteLoops(const TriangleMesh& mesh,
     offsets.push_back(static_cast<int>(triangles.size()));
   }
   fd->AddArray(Ints((prefix + "Offsets").c_str(), offsets));
-  fd->AddArray(Ints((prefix + "TriangleId").c_str(), triangles));
+  fd->AddArray(Ints((prefix + boolsurf::names::TriangleId).c_str(), triangles));
   fd->AddArray(Ints((prefix + "Id").c_str(), ids));
   fd->AddArray(positions);
   fd->AddArray(barycentric);
@@ -94,9 +96,9 @@ bool ReadLoops(vtkFieldData* fd, const std::string& prefix, HomologyLoops& out)
   out = HomologyLoops();
   out.Offsets = ReadInts(fd, (prefix + "Offsets").c_str());
   out.Ids = ReadInts(fd, (prefix + "Id").c_str());
-  const std::vector<int> triangles = ReadInts(fd, (prefix + "TriangleId").c_str());
+  const std::vector<int> triangles = ReadInts(fd, (prefix + boolsurf::names::TriangleId).c_str());
   vtkDataArray* positions = fd->GetArray((prefix + "Points").c_str());
-  vtkDataArray* barycentric = fd->GetArray((prefix + "Barycentric").c_str());
+  vtkDataArray* barycentric = fd->GetArray((prefix + boolsurf::names::Barycentric).c_str());
   const vtkIdType np = static_cast<vtkIdType>(triangles.size());
   if (out.Offsets.empty() || out.Ids.size() + 1 != out.Offsets.size() || out.Offsets.back() != np ||
     !positions || !barycentric || positions->GetNumberOfTuples() != np ||
@@ -373,8 +375,8 @@ void WriteGeneratorPolylines(const HomologyFields& h, vtkPolyData* out)
   points->SetDataTypeToDouble();
   vtkNew<vtkIntArray> triangleId, generatorId, shortened;
   vtkNew<vtkDoubleArray> barycentric;
-  triangleId->SetName("TriangleId");
-  barycentric->SetName("Barycentric");
+  triangleId->SetName(boolsurf::names::TriangleId);
+  barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   generatorId->SetName("GeneratorId");
   shortened->SetName("Shortened");

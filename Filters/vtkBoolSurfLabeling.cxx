@@ -1,6 +1,6 @@
 #include "vtkBoolSurfLabeling.h"
 
-#include "vtkBoolSurfRankGather.h"
+#include "vtkBoolSurfArrayNames.h"
 
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
@@ -32,25 +32,16 @@ vtkBoolSurfLabeling::vtkBoolSurfLabeling()
 vtkBoolSurfLabeling::~vtkBoolSurfLabeling() = default;
 
 //------------------------------------------------------------------------------
-int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
+bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
 {
-  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
-  vtkBoolSurfRankGather gather(this, inputVector, 1);
-  vtkPolyData* input = gather.Input(0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  vtkPolyData* generators = vtkPolyData::GetData(outputVector, 1);
-  output->Initialize(); // a failed update leaves an empty output, not the previous one
-  generators->Initialize();
-  if (!gather.ComputesHere())
-  {
-    return 1; // other MPI ranks: empty outputs
-  }
-  this->UpdateProgress(0.0);
+  vtkPolyData* input = inputs[0];
+  vtkPolyData* output = outputs[0];
+  vtkPolyData* generators = outputs[1];
   boolsurf::ArrangementFields fields;
   boolsurf::LabelingResult labels;
-  std::string error, warning;
+  std::string warning;
   boolsurf::LabelingOutputOptions options;
   options.ZeroCellPoint = this->ZeroCellMode == POINT ? this->ZeroCellPoint : nullptr;
   options.ColorShape = this->ColorShape;
@@ -58,7 +49,7 @@ int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
   // The arrangement in Core form when Surface Arrangement handed it over: labeled as the
   // one-step filter labels it.
   const auto arranged = boolsurf::FindStageResult<boolsurf::ArrangementResult>(
-    input ? input->GetCellData()->GetArray("ArrangementCell") : nullptr);
+    input ? input->GetCellData()->GetArray(boolsurf::names::ArrangementCell) : nullptr);
   if (arranged)
   {
     options.Arranged = arranged.get();
@@ -69,8 +60,7 @@ int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
   }
   if (!boolsurf::LabelArrangement(input, options, output, fields, labels, error, warning))
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   if (arranged)
   {
@@ -78,7 +68,7 @@ int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
     result->Arranged = arranged;
     result->Labels = std::move(labels);
     boolsurf::AttachStageResult<boolsurf::LabeledArrangementResult>(
-      output->GetFieldData()->GetArray("CellLabels"), std::move(result));
+      output->GetFieldData()->GetArray(boolsurf::names::CellLabels), std::move(result));
   }
   if (!warning.empty())
   {
@@ -87,8 +77,7 @@ int vtkBoolSurfLabeling::RequestData(vtkInformation* vtkNotUsed(request),
   // Port 1: the homology generators the arrangement found on the surface.
   boolsurf::WriteGeneratorPolylines(
     boolsurf::ReadHomologyFields(input->GetFieldData()), generators);
-  this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------

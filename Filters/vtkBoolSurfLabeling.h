@@ -44,15 +44,15 @@
 #define vtkBoolSurfLabeling_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkBoolSurfAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfLabeling : public vtkPolyDataAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfLabeling : public vtkBoolSurfAlgorithm
 {
 public:
   static vtkBoolSurfLabeling* New();
-  vtkTypeMacro(vtkBoolSurfLabeling, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoolSurfLabeling, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum ZeroCellModes
@@ -96,9 +96,9 @@ protected:
   vtkBoolSurfLabeling();
   ~vtkBoolSurfLabeling() override;
 
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   int ZeroCellMode = AUTOMATIC;
   double ZeroCellPoint[3] = { 0, 0, 0 };

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfLabelingStage.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Selection/BooleanExpression.h"
 #include "vtkBoolSurfHomologyOutput.h"
@@ -42,8 +44,8 @@ void AddLabelTable(const LabelingResult& labels, vtkFieldData* fd)
     return; // no empty arrays: VTK's XML writer cannot read them back
   }
   vtkNew<vtkIntArray> ids, consistent;
-  ids->SetName("ShapeIds");
-  consistent->SetName("ShapeConsistent");
+  ids->SetName(boolsurf::names::ShapeIds);
+  consistent->SetName(boolsurf::names::ShapeConsistent);
   ids->SetNumberOfTuples(ns);
   consistent->SetNumberOfTuples(ns);
   for (int s = 0; s < ns; ++s)
@@ -57,7 +59,7 @@ void AddLabelTable(const LabelingResult& labels, vtkFieldData* fd)
   if (cells > 0)
   {
     vtkNew<vtkIntArray> cellLabels;
-    cellLabels->SetName("CellLabels");
+    cellLabels->SetName(boolsurf::names::CellLabels);
     NameShapeComponents(cellLabels, labels);
     cellLabels->SetNumberOfTuples(cells);
     std::copy(labels.Labels.begin(), labels.Labels.end(), cellLabels->GetPointer(0));
@@ -131,7 +133,8 @@ bool LabelArrangement(vtkPolyData* input,
   std::string& error,
   std::string& warning)
 {
-  vtkDataArray* cellOf = input ? input->GetCellData()->GetArray("ArrangementCell") : nullptr;
+  vtkDataArray* cellOf =
+    input ? input->GetCellData()->GetArray(boolsurf::names::ArrangementCell) : nullptr;
   LabelingInput in;
   if (const ArrangementResult* arranged = options.Arranged)
   {

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfRegionOutput.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfArrangementOutput.h"
 #include "vtkBoolSurfAttributeTransfer.h"
 
@@ -41,7 +43,7 @@ void GatherArrays(vtkDataSetAttributes* from, vtkIdList* ids, vtkDataSetAttribut
 void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPolyData* region)
 {
   const std::vector<int> cellOf =
-    ReadTriangleCells(input->GetCellData()->GetArray("ArrangementCell"));
+    ReadTriangleCells(input->GetCellData()->GetArray(boolsurf::names::ArrangementCell));
   const vtkIdType nt =
     std::min<vtkIdType>(input->GetNumberOfCells(), static_cast<vtkIdType>(cellOf.size()));
   const int cells = static_cast<int>(selected.size());
@@ -122,10 +124,10 @@ void WriteRegion(const vtkSurfaceInput& surface,
 
   std::vector<int> sourceTriangle(nt);
   vtkNew<vtkIntArray> cell;
-  cell->SetName("ArrangementCell");
+  cell->SetName(boolsurf::names::ArrangementCell);
   cell->SetNumberOfTuples(nt);
   vtkNew<vtkIdTypeArray> source;
-  source->SetName("SourceTriangle");
+  source->SetName(boolsurf::names::SourceTriangle);
   source->SetNumberOfTuples(nt);
   for (vtkIdType t = 0; t < nt; ++t)
   {
@@ -143,7 +145,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
   // the region shows its arrangement cells, distinct from the surface it lies on.
   if (!region->GetPointData()->GetScalars() && !region->GetCellData()->GetScalars())
   {
-    region->GetCellData()->SetActiveScalars("ArrangementCell");
+    region->GetCellData()->SetActiveScalars(boolsurf::names::ArrangementCell);
   }
 }
 

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfResolveStage.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfControlCurves.h"
 
 #include <vtkCellArray.h>
@@ -65,14 +67,14 @@ void WriteResolved(const TriangleMesh& mesh, const ResolveResult& result, vtkPol
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName("TriangleId");
+  triangleId->SetName(boolsurf::names::TriangleId);
   vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName("Barycentric");
+  barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   vtkNew<vtkIntArray> shape, type, closed, action, source;
-  shape->SetName("ShapeId");
-  type->SetName("CurveType");
-  closed->SetName("Closed");
+  shape->SetName(boolsurf::names::ShapeId);
+  type->SetName(boolsurf::names::CurveType);
+  closed->SetName(boolsurf::names::Closed);
   action->SetName("Resolution");
   source->SetName("ResolutionSource");
   vtkNew<vtkStringArray> reason;

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSVGMapper.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfRankGather.h"
 
 #include "Svg/SvgSurfaceMap.h"
@@ -162,15 +164,15 @@ int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName("TriangleId");
+  triangleId->SetName(boolsurf::names::TriangleId);
   vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName("Barycentric");
+  barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkIntArray> shape, type, closed;
-  shape->SetName("ShapeId");
-  type->SetName("CurveType");
-  closed->SetName("Closed");
+  shape->SetName(boolsurf::names::ShapeId);
+  type->SetName(boolsurf::names::CurveType);
+  closed->SetName(boolsurf::names::Closed);
   std::vector<int> evenOdd;
   bool allEvenOdd = true;
   for (const boolsurf::MappedSvgCurve& c : curves)

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSamples.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfPropertyVector.h"
 #include "vtkBoolSurfRankGather.h"
 
@@ -100,7 +102,7 @@ int vtkBoolSurfSamples::RequestData(vtkInformation*,
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(n);
   vtkNew<vtkDoubleArray> direction;
-  direction->SetName("Direction");
+  direction->SetName(boolsurf::names::Direction);
   direction->SetNumberOfComponents(3);
   direction->SetNumberOfTuples(n);
   vtkNew<vtkCellArray> vertices;

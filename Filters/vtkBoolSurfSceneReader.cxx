@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSceneReader.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfRankGather.h"
 
 #include "Mesh/ObjCheck.h"
@@ -470,14 +472,14 @@ struct CurveArrays
   CurveArrays()
   {
     this->Points->SetDataTypeToDouble();
-    this->TriangleId->SetName("TriangleId");
-    this->Barycentric->SetName("Barycentric");
+    this->TriangleId->SetName(boolsurf::names::TriangleId);
+    this->Barycentric->SetName(boolsurf::names::Barycentric);
     this->Barycentric->SetNumberOfComponents(2);
-    this->ControlPointId->SetName("ControlPointId");
-    this->CurveId->SetName("CurveId");
-    this->ShapeId->SetName("ShapeId");
-    this->CurveType->SetName("CurveType");
-    this->Closed->SetName("Closed");
+    this->ControlPointId->SetName(boolsurf::names::ControlPointId);
+    this->CurveId->SetName(boolsurf::names::CurveId);
+    this->ShapeId->SetName(boolsurf::names::ShapeId);
+    this->CurveType->SetName(boolsurf::names::CurveType);
+    this->Closed->SetName(boolsurf::names::Closed);
   }
 
   void AddPoint(const double x[3], vtkIdType triangle, double u, double v, int controlPoint)

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSceneWriter.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfTracedCurves.h" // for ForEachCurveCell
 
 #include "vtkAbstractArray.h"
@@ -92,8 +94,8 @@ struct Curve
 /// The `points` list, checked: every point must be a valid surface point for the reader.
 json PointsOf(vtkPolyData* input)
 {
-  vtkDataArray* triangleIds = input->GetPointData()->GetArray("TriangleId");
-  vtkDataArray* barycentric = input->GetPointData()->GetArray("Barycentric");
+  vtkDataArray* triangleIds = input->GetPointData()->GetArray(boolsurf::names::TriangleId);
+  vtkDataArray* barycentric = input->GetPointData()->GetArray(boolsurf::names::Barycentric);
   if (!triangleIds || !barycentric || barycentric->GetNumberOfComponents() != 2)
   {
     throw WriteError("the curves have no surface points: point data TriangleId and Barycentric "
@@ -130,10 +132,10 @@ json PointsOf(vtkPolyData* input)
 /// Every line and polygon cell as a curve, closed the way the tracer reads it.
 std::vector<Curve> CurvesOf(vtkPolyData* input)
 {
-  vtkDataArray* shapeIds = input->GetCellData()->GetArray("ShapeId");
-  vtkDataArray* types = input->GetCellData()->GetArray("CurveType");
-  vtkDataArray* triangleIds = input->GetPointData()->GetArray("TriangleId");
-  vtkDataArray* barycentric = input->GetPointData()->GetArray("Barycentric");
+  vtkDataArray* shapeIds = input->GetCellData()->GetArray(boolsurf::names::ShapeId);
+  vtkDataArray* types = input->GetCellData()->GetArray(boolsurf::names::CurveType);
+  vtkDataArray* triangleIds = input->GetPointData()->GetArray(boolsurf::names::TriangleId);
+  vtkDataArray* barycentric = input->GetPointData()->GetArray(boolsurf::names::Barycentric);
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
   std::vector<Curve> curves;
   boolsurf::ForEachCurveCell(input,
@@ -252,7 +254,7 @@ std::vector<Curve> JoinLoops(vtkPolyData* input,
 std::vector<int> PolygonIndices(vtkPolyData* input, const std::vector<Curve>& curves)
 {
   std::vector<int> index(curves.size());
-  vtkDataArray* curveIds = input->GetCellData()->GetArray("CurveId");
+  vtkDataArray* curveIds = input->GetCellData()->GetArray(boolsurf::names::CurveId);
   if (curveIds)
   {
     std::map<int, vtkIdType> seen;

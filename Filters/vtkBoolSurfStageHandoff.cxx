@@ -1,5 +1,7 @@
 #include "vtkBoolSurfStageHandoff.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "Geodesic/CurveTracer.h"
 #include "Labeling/ArrangementLabelingInput.h"
 
@@ -89,13 +91,14 @@ std::shared_ptr<const LabeledArrangementResult> FindLabeledArrangement(vtkPolyDa
   {
     return nullptr;
   }
-  vtkAbstractArray* cellLabels = input->GetFieldData()->GetAbstractArray("CellLabels");
+  vtkAbstractArray* cellLabels =
+    input->GetFieldData()->GetAbstractArray(boolsurf::names::CellLabels);
   if (cellLabels)
   {
     return FindStageResult<LabeledArrangementResult>(cellLabels);
   }
-  auto arranged =
-    FindStageResult<ArrangementResult>(input->GetCellData()->GetArray("ArrangementCell"));
+  auto arranged = FindStageResult<ArrangementResult>(
+    input->GetCellData()->GetArray(boolsurf::names::ArrangementCell));
   if (!arranged)
   {
     return nullptr;

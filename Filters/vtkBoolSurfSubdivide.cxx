@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSubdivide.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfRankGather.h"
 
 #include "Mesh/SubdivisionMap.h"
@@ -131,8 +133,8 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
     vtkErrorMacro(<< error);
     return vtkBoolSurfErrorReported;
   }
-  vtkDataArray* triangleIds = curves->GetPointData()->GetArray("TriangleId");
-  vtkDataArray* barycentric = curves->GetPointData()->GetArray("Barycentric");
+  vtkDataArray* triangleIds = curves->GetPointData()->GetArray(boolsurf::names::TriangleId);
+  vtkDataArray* barycentric = curves->GetPointData()->GetArray(boolsurf::names::Barycentric);
   const vtkIdType numberOfPoints = curves->GetNumberOfPoints();
   if (!triangleIds || !barycentric || barycentric->GetNumberOfComponents() != 2 ||
     triangleIds->GetNumberOfTuples() < numberOfPoints ||
@@ -257,10 +259,10 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
   curvesOut->GetPointData()->DeepCopy(curves->GetPointData());
   curvesOut->GetFieldData()->PassData(curves->GetFieldData());
   vtkNew<vtkIdTypeArray> newTriangleIds;
-  newTriangleIds->SetName("TriangleId");
+  newTriangleIds->SetName(boolsurf::names::TriangleId);
   newTriangleIds->SetNumberOfTuples(numberOfPoints);
   vtkNew<vtkDoubleArray> newBarycentric;
-  newBarycentric->SetName("Barycentric");
+  newBarycentric->SetName(boolsurf::names::Barycentric);
   newBarycentric->SetNumberOfComponents(2);
   newBarycentric->SetNumberOfTuples(numberOfPoints);
   vtkNew<vtkPoints> positions;
@@ -284,8 +286,8 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
     newBarycentric->SetTuple2(p, s.U, s.V);
   }
   curvesOut->SetPoints(positions);
-  curvesOut->GetPointData()->RemoveArray("TriangleId");
-  curvesOut->GetPointData()->RemoveArray("Barycentric");
+  curvesOut->GetPointData()->RemoveArray(boolsurf::names::TriangleId);
+  curvesOut->GetPointData()->RemoveArray(boolsurf::names::Barycentric);
   curvesOut->GetPointData()->AddArray(newTriangleIds);
   curvesOut->GetPointData()->AddArray(newBarycentric);
   this->UpdateProgress(1.0);

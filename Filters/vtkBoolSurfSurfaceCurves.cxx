@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSurfaceCurves.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfPropertyVector.h"
 #include "vtkBoolSurfRankGather.h"
 #include "vtkBoolSurfSurfaceCache.h"
@@ -224,10 +226,10 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
   positions->SetDataTypeToDouble();
   positions->SetNumberOfPoints(points);
   vtkNew<vtkIdTypeArray> triangleIds;
-  triangleIds->SetName("TriangleId");
+  triangleIds->SetName(boolsurf::names::TriangleId);
   triangleIds->SetNumberOfTuples(points);
   vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName("Barycentric");
+  barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   barycentric->SetNumberOfTuples(points);
   const bool snaps = !exact ||
@@ -307,9 +309,9 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
   // One polyline per curve; a closed curve repeats its first point.
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkIntArray> shapeIds, curveTypes, closed;
-  shapeIds->SetName("ShapeId");
-  curveTypes->SetName("CurveType");
-  closed->SetName("Closed");
+  shapeIds->SetName(boolsurf::names::ShapeId);
+  curveTypes->SetName(boolsurf::names::CurveType);
+  closed->SetName(boolsurf::names::Closed);
   vtkIdType first = 0;
   for (size_t c = 0; c < sizes.size(); ++c)
   {

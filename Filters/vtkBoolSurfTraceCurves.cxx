@@ -1,6 +1,6 @@
 #include "vtkBoolSurfTraceCurves.h"
 
-#include "vtkBoolSurfRankGather.h"
+#include "vtkBoolSurfArrayNames.h"
 
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfTraceStage.h"
@@ -18,7 +18,8 @@ vtkStandardNewMacro(vtkBoolSurfTraceCurves);
 
 struct vtkBoolSurfTraceCurves::Internals
 {
-  boolsurf::vtkSurfaceCache Surface;
+  /// What the last failed update could not trace, one sentence each.
+  std::vector<std::string> Problems;
 };
 
 //------------------------------------------------------------------------------
@@ -32,79 +33,64 @@ vtkBoolSurfTraceCurves::vtkBoolSurfTraceCurves()
 vtkBoolSurfTraceCurves::~vtkBoolSurfTraceCurves() = default;
 
 //------------------------------------------------------------------------------
-int vtkBoolSurfTraceCurves::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
+bool vtkBoolSurfTraceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkBoolSurfTraceCurves::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
-  vtkBoolSurfRankGather gather(this, inputVector, 2);
-  vtkPolyData* surfaceInput = gather.Input(0);
-  vtkPolyData* curvesInput = gather.Input(1);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->Initialize(); // a failed update leaves an empty output, not the previous one
-  if (!gather.ComputesHere())
+  vtkPolyData* surfaceInput = inputs[0];
+  vtkPolyData* curvesInput = inputs[1];
+  vtkPolyData* output = outputs[0];
+  this->Internal->Problems.clear();
+  if (!this->GetSurface(surfaceInput, error))
   {
-    return 1; // other MPI ranks: empty outputs
-  }
-
-  std::vector<std::string> warnings, problems, notes;
-  std::string error;
-  if (!this->Internal->Surface.GetUsable(surfaceInput, warnings, error))
-  {
-    problems.push_back(error);
-  }
-  for (const std::string& w : warnings)
-  {
-    vtkWarningMacro(<< w);
+    this->Internal->Problems.push_back(error);
+    return false;
   }
   auto result = std::make_shared<boolsurf::TracedCurvesResult>();
   boolsurf::TraceOptions options;
   options.Resolution = this->Resolution;
   options.ProjectionTolerance = this->ProjectionTolerance;
   options.ExactGeodesics = this->ExactGeodesics != 0;
-  if (problems.empty())
+  std::vector<std::string> notes;
+  const bool ok = boolsurf::TraceControlCurves(this->GetSurfaceCache(),
+    curvesInput,
+    options,
+    this,
+    result->Curves,
+    output,
+    this->Internal->Problems,
+    notes,
+    &result->Sources);
+  this->ReportWarnings(notes);
+  if (!ok)
   {
-    boolsurf::TraceControlCurves(this->Internal->Surface,
-      curvesInput,
-      options,
-      this,
-      result->Curves,
-      output,
-      problems,
-      notes,
-      &result->Sources);
-  }
-  for (const std::string& n : notes)
-  {
-    vtkWarningMacro(<< n);
-  }
-  if (!problems.empty())
-  {
-    output->Initialize();
-    vtkNew<vtkStringArray> errors;
-    errors->SetName("TraceErrors");
-    for (const std::string& p : problems)
+    if (this->Internal->Problems.empty())
     {
-      errors->InsertNextValue(p);
+      return true; // aborted: the output stays empty
     }
-    output->GetFieldData()->AddArray(errors);
-    vtkErrorMacro(<< "Cannot trace the curves:" << boolsurf::JoinLines(problems));
-    return 1; // the empty output with TraceErrors is the answer
+    error = "Cannot trace the curves:" + boolsurf::JoinLines(this->Internal->Problems);
+    return false;
   }
   // The traced curves in Core form for Surface Arrangement (see vtkBoolSurfStageHandoff.h).
   result->Surface = boolsurf::SurfaceIdentity(surfaceInput);
   result->ExactGeodesics = options.ExactGeodesics;
   boolsurf::AttachStageResult<boolsurf::TracedCurvesResult>(
-    output->GetPointData()->GetArray("TriangleId"), std::move(result));
-  this->UpdateProgress(1.0);
-  return 1;
+    output->GetPointData()->GetArray(boolsurf::names::TriangleId), std::move(result));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfTraceCurves::RecordFailure(const std::string&,
+  const std::vector<vtkPolyData*>& outputs)
+{
+  // The empty output lists every problem: a script or a downstream filter can tell why.
+  vtkNew<vtkStringArray> errors;
+  errors->SetName("TraceErrors");
+  for (const std::string& p : this->Internal->Problems)
+  {
+    errors->InsertNextValue(p);
+  }
+  outputs[0]->GetFieldData()->AddArray(errors);
 }
 
 //------------------------------------------------------------------------------

@@ -43,15 +43,15 @@
 #define vtkBoolSurfTraceCurves_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkBoolSurfAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfTraceCurves : public vtkPolyDataAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfTraceCurves : public vtkBoolSurfAlgorithm
 {
 public:
   static vtkBoolSurfTraceCurves* New();
-  vtkTypeMacro(vtkBoolSurfTraceCurves, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoolSurfTraceCurves, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -86,10 +86,10 @@ protected:
   vtkBoolSurfTraceCurves();
   ~vtkBoolSurfTraceCurves() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
+  void RecordFailure(const std::string& error, const std::vector<vtkPolyData*>& outputs) override;
 
   int Resolution = 4;
   double ProjectionTolerance = 0.01;

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfTraceStage.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfControlCurves.h"
 
 #include <vtkAlgorithm.h>
@@ -46,20 +48,20 @@ void WriteTraces(const TriangleMesh& mesh,
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName("TriangleId");
+  triangleId->SetName(boolsurf::names::TriangleId);
   vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName("Barycentric");
+  barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   vtkNew<vtkDoubleArray> parameter;
-  parameter->SetName("CurveParameter");
-  auto segment = NewIntArray("ControlSegment");
-  auto controlPoint = NewIntArray("ControlPointId");
-  auto shape = NewIntArray("ShapeId");
-  auto curveId = NewIntArray("CurveId");
-  auto closed = NewIntArray("Closed");
-  auto type = NewIntArray("CurveType");
+  parameter->SetName(boolsurf::names::CurveParameter);
+  auto segment = NewIntArray(boolsurf::names::ControlSegment);
+  auto controlPoint = NewIntArray(boolsurf::names::ControlPointId);
+  auto shape = NewIntArray(boolsurf::names::ShapeId);
+  auto curveId = NewIntArray(boolsurf::names::CurveId);
+  auto closed = NewIntArray(boolsurf::names::Closed);
+  auto type = NewIntArray(boolsurf::names::CurveType);
   vtkNew<vtkDoubleArray> length;
-  length->SetName("Length");
+  length->SetName(boolsurf::names::Length);
   for (size_t c = 0; c < traces.size(); ++c)
   {
     const CurveTrace& trace = traces[c];

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfTracedCurves.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
@@ -59,17 +61,17 @@ bool ReadTracedCurves(vtkPolyData* curves,
     problems.push_back(why);
     return false;
   }
-  vtkDataArray* triangleIds = curves->GetPointData()->GetArray("TriangleId");
-  vtkDataArray* barycentric = curves->GetPointData()->GetArray("Barycentric");
+  vtkDataArray* triangleIds = curves->GetPointData()->GetArray(boolsurf::names::TriangleId);
+  vtkDataArray* barycentric = curves->GetPointData()->GetArray(boolsurf::names::Barycentric);
   if (!triangleIds || !barycentric || barycentric->GetNumberOfComponents() != 2)
   {
     problems.push_back("the curves input lacks point data TriangleId (1 component) and "
                        "Barycentric (2 components): connect the output of Trace Surface Curves");
     return false;
   }
-  vtkDataArray* shapeIds = curves->GetCellData()->GetArray("ShapeId");
-  vtkDataArray* curveIds = curves->GetCellData()->GetArray("CurveId");
-  vtkDataArray* closedFlags = curves->GetCellData()->GetArray("Closed");
+  vtkDataArray* shapeIds = curves->GetCellData()->GetArray(boolsurf::names::ShapeId);
+  vtkDataArray* curveIds = curves->GetCellData()->GetArray(boolsurf::names::CurveId);
+  vtkDataArray* closedFlags = curves->GetCellData()->GetArray(boolsurf::names::Closed);
   const size_t before = problems.size();
 
   ForEachCurveCell(curves,

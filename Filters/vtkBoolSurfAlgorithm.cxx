@@ -1,0 +1,122 @@
+#include "vtkBoolSurfAlgorithm.h"
+
+#include "vtkBoolSurfRankGather.h"
+#include "vtkBoolSurfSurfaceCache.h"
+
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+
+//------------------------------------------------------------------------------
+vtkBoolSurfAlgorithm::vtkBoolSurfAlgorithm() = default;
+
+//------------------------------------------------------------------------------
+vtkBoolSurfAlgorithm::~vtkBoolSurfAlgorithm() = default;
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfAlgorithm::RecordFailure(const std::string&, const std::vector<vtkPolyData*>&) {}
+
+//------------------------------------------------------------------------------
+boolsurf::vtkSurfaceCache& vtkBoolSurfAlgorithm::GetSurfaceCache()
+{
+  if (!this->Surface)
+  {
+    this->Surface = std::make_unique<boolsurf::vtkSurfaceCache>();
+  }
+  return *this->Surface;
+}
+
+//------------------------------------------------------------------------------
+const boolsurf::vtkSurfaceInput* vtkBoolSurfAlgorithm::GetSurface(vtkPolyData* input,
+  std::string& error)
+{
+  std::vector<std::string> warnings;
+  const boolsurf::vtkSurfaceInput* surface =
+    this->GetSurfaceCache().GetUsable(input, warnings, error);
+  this->ReportWarnings(warnings);
+  return surface;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfAlgorithm::ReportWarnings(const std::vector<std::string>& lines)
+{
+  for (const std::string& line : lines)
+  {
+    vtkWarningMacro(<< line);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfAlgorithm::SetInputPortOptional(int port)
+{
+  this->OptionalPorts.push_back(port);
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfAlgorithm::SetSurfacePorts(const std::vector<int>& ports)
+{
+  this->SurfacePorts = ports;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfAlgorithm::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (std::find(this->OptionalPorts.begin(), this->OptionalPorts.end(), port) !=
+    this->OptionalPorts.end())
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  // Every rank takes part in the gather first, before anything that may fail or return early
+  // (see vtkBoolSurfRankGather); only the computing rank runs the filter.
+  const int ports = this->GetNumberOfInputPorts();
+  vtkBoolSurfRankGather gather(this, inputVector, ports, this->SurfacePorts);
+  std::vector<vtkPolyData*> inputs(static_cast<std::size_t>(ports));
+  for (int p = 0; p < ports; ++p)
+  {
+    inputs[p] = gather.Input(p);
+  }
+  std::vector<vtkPolyData*> outputs(static_cast<std::size_t>(this->GetNumberOfOutputPorts()));
+  for (std::size_t p = 0; p < outputs.size(); ++p)
+  {
+    outputs[p] = vtkPolyData::GetData(outputVector, static_cast<int>(p));
+    outputs[p]->Initialize(); // other ranks, and a failure: empty outputs
+  }
+  if (!gather.ComputesHere())
+  {
+    return 1;
+  }
+  this->UpdateProgress(0.0);
+  std::string error;
+  if (!this->Execute(inputs, outputs, error))
+  {
+    for (vtkPolyData* output : outputs)
+    {
+      output->Initialize();
+    }
+    this->RecordFailure(error, outputs);
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< error);
+    }
+    return vtkBoolSurfErrorReported;
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

@@ -1,0 +1,91 @@
+/**
+ * @class   vtkBoolSurfAlgorithm
+ * @brief   base of the BoolSurf filters: inputs gathered to one rank, empty outputs on failure
+ *
+ * Every BoolSurf filter needs its whole input at once, reports a failure as an error naming the
+ * problem, and must then leave empty outputs (never the previous result, which ParaView would
+ * keep showing as if it were this one's). vtkBoolSurfAlgorithm does that once for all of them,
+ * as TTK's ttkAlgorithm does for TTK's filters:
+ *
+ * - RequestData gathers the inputs to the computing rank (vtkBoolSurfRankGather: rank 0 under
+ *   MPI, the process itself otherwise), empties every output, and calls Execute() there only;
+ * - when Execute() returns false, its message is reported with vtkErrorMacro, every output is
+ *   emptied again, and RequestData still returns success (vtkBoolSurfErrorReported explains
+ *   why: a failed update must not freeze the views downstream);
+ * - GetSurface() converts a surface input to the Core mesh once and keeps it while the input
+ *   does not change (adjacency, topology, geodesic tracer, homology basis), reporting the
+ *   conversion notes (triangulated polygons, dropped lines) as warnings;
+ * - every input port takes vtkPolyData; SetInputPortOptional() marks the optional ones.
+ *
+ * Subclasses set their port counts in their constructor and implement Execute().
+ *
+ * @sa vtkBoolSurfRankGather
+ */
+#ifndef vtkBoolSurfAlgorithm_h
+#define vtkBoolSurfAlgorithm_h
+
+#include "BoolSurfFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+namespace boolsurf
+{
+class vtkSurfaceCache;
+struct vtkSurfaceInput;
+}
+
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfAlgorithm : public vtkPolyDataAlgorithm
+{
+public:
+  vtkTypeMacro(vtkBoolSurfAlgorithm, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+protected:
+  vtkBoolSurfAlgorithm();
+  ~vtkBoolSurfAlgorithm() override;
+
+  /// The filter's work, on the computing rank only. inputs[p] is input port p (gathered; null
+  /// for an optional port left unconnected); every output is already empty. Return false with
+  /// `error` set to fail: the base class reports it and empties the outputs.
+  virtual bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) = 0;
+
+  /// Called after a failed Execute(), with the outputs emptied: a filter may record the failure
+  /// in them (Trace Surface Curves lists its problems in field data `TraceErrors`).
+  virtual void RecordFailure(const std::string& error, const std::vector<vtkPolyData*>& outputs);
+
+  /// The usable surface converted from `input` (cached while the input is unchanged); its
+  /// conversion notes are reported as warnings. Null, with every problem in `error`, when the
+  /// surface cannot be used.
+  const boolsurf::vtkSurfaceInput* GetSurface(vtkPolyData* input, std::string& error);
+  /// The cache behind GetSurface(): the surface's tracer, locator and homology live there.
+  boolsurf::vtkSurfaceCache& GetSurfaceCache();
+
+  /// Each line as a warning of this filter.
+  void ReportWarnings(const std::vector<std::string>& lines);
+
+  /// Optional input ports may be left unconnected (Execute() then gets null).
+  void SetInputPortOptional(int port);
+  /// Input ports whose pieces are parts of one surface under MPI (coincident points merged when
+  /// gathered); default: port 0 only.
+  void SetSurfacePorts(const std::vector<int>& ports);
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) final;
+
+private:
+  std::vector<int> SurfacePorts{ 0 };
+  std::vector<int> OptionalPorts;
+  std::unique_ptr<boolsurf::vtkSurfaceCache> Surface;
+
+  vtkBoolSurfAlgorithm(const vtkBoolSurfAlgorithm&) = delete;
+  void operator=(const vtkBoolSurfAlgorithm&) = delete;
+};
+
+#endif

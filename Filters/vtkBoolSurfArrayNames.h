@@ -1,0 +1,44 @@
+// The names of the arrays the BoolSurf filters read and write (a private header of the
+// module). They are part of the public API (README, "Data contract"): users' scripts, files and
+// other filters find the data by these names, so every filter spells them from here.
+#ifndef vtkBoolSurfArrayNames_h
+#define vtkBoolSurfArrayNames_h
+
+namespace boolsurf
+{
+namespace names
+{
+// Surface points (point data of curves, refined surfaces, boundaries).
+constexpr const char* TriangleId = "TriangleId";   ///< vtkIdType, 1 component
+constexpr const char* Barycentric = "Barycentric"; ///< double, 2 components (corners 1 and 2)
+
+// Curves (cell data), and where traced points come from (point data).
+constexpr const char* ShapeId = "ShapeId";
+constexpr const char* CurveId = "CurveId";
+constexpr const char* CurveType = "CurveType"; ///< 0 geodesic polygon, 1 cubic Bezier
+constexpr const char* Closed = "Closed";
+constexpr const char* Length = "Length";
+constexpr const char* CurveParameter = "CurveParameter";
+constexpr const char* ControlSegment = "ControlSegment";
+constexpr const char* ControlPointId = "ControlPointId";
+
+// The arrangement: refined surface cell data, patches, field data.
+constexpr const char* ArrangementCell = "ArrangementCell";
+constexpr const char* SourceTriangle = "SourceTriangle";
+constexpr const char* NumberOfCells = "NumberOfCells";
+constexpr const char* NumberOfShapes = "NumberOfShapes";
+constexpr const char* ShapeIds = "ShapeIds";
+constexpr const char* PatchId = "PatchId";
+constexpr const char* LeftCell = "LeftCell";
+constexpr const char* RightCell = "RightCell";
+constexpr const char* StageTimes = "StageTimes";
+
+// Labels and selections (field data), BSC samples (point data).
+constexpr const char* CellLabels = "CellLabels";
+constexpr const char* ShapeConsistent = "ShapeConsistent";
+constexpr const char* Expression = "Expression";
+constexpr const char* Direction = "Direction";
+} // namespace names
+} // namespace boolsurf
+
+#endif
