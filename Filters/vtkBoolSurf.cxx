@@ -2,8 +2,6 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
-#include "vtkBoolSurfRankGather.h"
-
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Selection/RegionExtraction.h"
 #include "vtkBoolSurfBSCStage.h"
@@ -49,7 +47,6 @@ double Milliseconds(Clock::time_point from, Clock::time_point to)
 // polydata. Everything below is kept between updates, so an edit reuses every buffer.
 struct vtkBoolSurf::Internals
 {
-  boolsurf::vtkSurfaceCache Surface;
 
   // The labeled arrangement of the last run, reused when only the Boolean properties
   // (operation, operands, expression, fill rule) change.
@@ -123,6 +120,7 @@ vtkBoolSurf::vtkBoolSurf()
   : Internal(new Internals)
 {
   this->SetNumberOfInputPorts(3);
+  this->SetInputPortOptional(2); // BSC samples
   this->SetNumberOfOutputPorts(4);
 }
 
@@ -130,53 +128,22 @@ vtkBoolSurf::vtkBoolSurf()
 vtkBoolSurf::~vtkBoolSurf() = default;
 
 //------------------------------------------------------------------------------
-int vtkBoolSurf::FillInputPortInformation(int port, vtkInformation* info)
+bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  if (port == 2)
-  {
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1); // BSC samples
-  }
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
-  vtkBoolSurfRankGather gather(this, inputVector, 3);
-  vtkPolyData* surfaceInput = gather.Input(0);
-  vtkPolyData* curvesInput = gather.Input(1);
-  vtkPolyData* region = vtkPolyData::GetData(outputVector, 0);
-  vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
-  vtkPolyData* boundaryControls = vtkPolyData::GetData(outputVector, 2);
-  vtkPolyData* clipped = vtkPolyData::GetData(outputVector, 3);
-
-  // A failed update leaves empty outputs, never the previous region.
-  region->Initialize();
-  boundary->Initialize();
-  boundaryControls->Initialize();
-  clipped->Initialize();
-  if (!gather.ComputesHere())
-  {
-    return 1; // other MPI ranks: empty outputs
-  }
+  vtkPolyData* surfaceInput = inputs[0];
+  vtkPolyData* curvesInput = inputs[1];
+  vtkPolyData* region = outputs[0];
+  vtkPolyData* boundary = outputs[1];
+  vtkPolyData* boundaryControls = outputs[2];
+  vtkPolyData* clipped = outputs[3];
 
   // 1. surface (cached)
-  std::vector<std::string> warnings;
-  std::string error;
-  const boolsurf::vtkSurfaceInput* surface =
-    this->Internal->Surface.GetUsable(surfaceInput, warnings, error);
-  for (const std::string& w : warnings)
-  {
-    vtkWarningMacro(<< w);
-  }
+  const boolsurf::vtkSurfaceInput* surface = this->GetSurface(surfaceInput, error);
   if (!surface)
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   this->UpdateProgress(0.05);
 
@@ -202,8 +169,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
     in.HasLabels = false;
     if (!this->LabelCurves(*surface, curvesInput, error))
     {
-      vtkErrorMacro(<< error);
-      return vtkBoolSurfErrorReported;
+      return false;
     }
     in.HasLabels = true;
     in.LabeledKey = key;
@@ -218,24 +184,21 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
   const bool bsc = this->Selection == BSC_SELECTION;
   if (bsc)
   {
-    if (!this->SelectBySamples(
-          *surface, vtkPolyData::GetData(inputVector[2], 0), surfaceInput, error))
+    if (!this->SelectBySamples(*surface, inputs[2], surfaceInput, error))
     {
-      vtkErrorMacro(<< error);
-      return vtkBoolSurfErrorReported;
+      return false;
     }
   }
   else if (!boolsurf::SelectRequestedCells(in.Labels, request, in.Selected, text, error))
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   boolsurf::SelectionOutputTimes times;
   if (!boolsurf::WriteSelectedCells(*surface,
         in.Arrangement,
         in.Sources,
         in.Selected,
-        this->ComputeControlCurves ? &in.Surface.GetTracer().GetPathSolver() : nullptr,
+        this->ComputeControlCurves ? &this->GetSurfaceCache().GetTracer().GetPathSolver() : nullptr,
         in.Output,
         region,
         boundary,
@@ -244,8 +207,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
         error,
         &times))
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   in.ControlCurvesTime = times.ControlCurves;
   const Clock::time_point selected = Clock::now();
@@ -260,8 +222,7 @@ int vtkBoolSurf::RequestData(vtkInformation* vtkNotUsed(request),
     boolsurf::AddSampleFields(in.Snaps, in.Bsc, region);
     boolsurf::AddSampleFields(in.Snaps, in.Bsc, boundary);
   }
-  this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -313,7 +274,8 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     resolve.Offset = this->ResolveOffset;
     resolve.Resolution = this->Resolution;
     resolve.ProjectionTolerance = this->ProjectionTolerance;
-    if (!boolsurf::ResolveControlCurves(in.Surface, curvesInput, resolve, resolved, notes, error))
+    if (!boolsurf::ResolveControlCurves(
+          this->GetSurfaceCache(), curvesInput, resolve, resolved, notes, error))
     {
       error = "Cannot resolve inconsistent shapes: " + error;
       return false;
@@ -328,7 +290,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     }
     curvesInput = resolved;
   }
-  const bool ok = boolsurf::TraceControlCurves(in.Surface,
+  const bool ok = boolsurf::TraceControlCurves(this->GetSurfaceCache(),
     curvesInput,
     traceOptions,
     nullptr,
@@ -402,7 +364,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     // Explain with the generators in excess (computed once per surface, only when needed).
     boolsurf::HomologyFields homology;
     std::string homologyError;
-    const boolsurf::HomologyBasis* basis = this->Internal->Surface.GetHomology(homologyError);
+    const boolsurf::HomologyBasis* basis = this->GetSurfaceCache().GetHomology(homologyError);
     if (basis && boolsurf::ComputeCurveClasses(*basis, in.Curves, homology, homologyError))
     {
       warning += "\n" + boolsurf::ExplainInconsistency(in.Labels, homology);
@@ -417,7 +379,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
 int vtkBoolSurf::FindZeroCell(const boolsurf::vtkSurfaceInput& surface, std::string& error)
 {
   // The closest point of the input surface, then the refined triangle holding it.
-  return boolsurf::ZeroCellAt(this->Internal->Surface.GetLocator(),
+  return boolsurf::ZeroCellAt(this->GetSurfaceCache().GetLocator(),
     *surface.Mesh,
     this->Internal->Arrangement,
     this->ZeroCellPoint,

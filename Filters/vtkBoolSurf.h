@@ -47,7 +47,7 @@
 #define vtkBoolSurf_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkBoolSurfAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -57,11 +57,11 @@ namespace boolsurf
 struct vtkSurfaceInput;
 }
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurf : public vtkPolyDataAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurf : public vtkBoolSurfAlgorithm
 {
 public:
   static vtkBoolSurf* New();
-  vtkTypeMacro(vtkBoolSurf, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoolSurf, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -170,10 +170,9 @@ protected:
   vtkBoolSurf();
   ~vtkBoolSurf() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   int Resolution = 4;
   vtkTypeBool ExactGeodesics = 1;

@@ -1,7 +1,5 @@
 #include "vtkBoolSurfCheckSurface.h"
 
-#include "vtkBoolSurfRankGather.h"
-
 #include "vtkBoolSurfSurfaceAdapter.h"
 
 #include <vtkCellData.h>
@@ -34,21 +32,13 @@ vtkSmartPointer<vtkIntArray> NamedIntArray(const char* name, vtkIdType n, int fi
 vtkBoolSurfCheckSurface::vtkBoolSurfCheckSurface() = default;
 
 //------------------------------------------------------------------------------
-int vtkBoolSurfCheckSurface::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
+bool vtkBoolSurfCheckSurface::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& vtkNotUsed(error))
 {
-  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
-  vtkBoolSurfRankGather gather(this, inputVector, 1);
-  vtkPolyData* input = gather.Input(0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->Initialize();
-  if (!gather.ComputesHere())
-  {
-    return 1; // other MPI ranks: empty outputs
-  }
+  vtkPolyData* input = inputs[0];
+  vtkPolyData* output = outputs[0];
 
-  this->UpdateProgress(0.0);
   boolsurf::SurfaceCheckOptions options;
   options.DegenerateTolerance = this->DegenerateTolerance;
   boolsurf::vtkSurfaceInput surface;
@@ -122,8 +112,7 @@ int vtkBoolSurfCheckSurface::RequestData(vtkInformation* vtkNotUsed(request),
       vtkWarningMacro(<< problems->GetValue(i));
     }
   }
-  this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------

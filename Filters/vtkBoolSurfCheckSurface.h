@@ -30,13 +30,13 @@
 #define vtkBoolSurfCheckSurface_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkBoolSurfAlgorithm.h"
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfCheckSurface : public vtkPolyDataAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfCheckSurface : public vtkBoolSurfAlgorithm
 {
 public:
   static vtkBoolSurfCheckSurface* New();
-  vtkTypeMacro(vtkBoolSurfCheckSurface, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoolSurfCheckSurface, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -62,9 +62,9 @@ protected:
   vtkBoolSurfCheckSurface();
   ~vtkBoolSurfCheckSurface() override = default;
 
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   double DegenerateTolerance = 1e-12;
   bool WarnOnProblems = true;

@@ -1,7 +1,5 @@
 #include "vtkBoolSurfResolve.h"
 
-#include "vtkBoolSurfRankGather.h"
-
 #include "vtkBoolSurfResolveStage.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
@@ -12,15 +10,8 @@
 
 vtkStandardNewMacro(vtkBoolSurfResolve);
 
-struct vtkBoolSurfResolve::Internals
-{
-  // The surface's adjacency, tracer and homology generators, kept while only the curves change.
-  boolsurf::vtkSurfaceCache Surface;
-};
-
 //------------------------------------------------------------------------------
 vtkBoolSurfResolve::vtkBoolSurfResolve()
-  : Internal(new Internals)
 {
   this->SetNumberOfInputPorts(2);
 }
@@ -29,45 +20,21 @@ vtkBoolSurfResolve::vtkBoolSurfResolve()
 vtkBoolSurfResolve::~vtkBoolSurfResolve() = default;
 
 //------------------------------------------------------------------------------
-int vtkBoolSurfResolve::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
+bool vtkBoolSurfResolve::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkBoolSurfResolve::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
-  vtkBoolSurfRankGather gather(this, inputVector, 2);
-  vtkPolyData* surfaceInput = gather.Input(0);
-  vtkPolyData* curvesInput = gather.Input(1);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->Initialize(); // a failed update leaves an empty output
-  if (!gather.ComputesHere())
+  vtkPolyData* surfaceInput = inputs[0];
+  vtkPolyData* curvesInput = inputs[1];
+  vtkPolyData* output = outputs[0];
+  if (!this->GetSurface(surfaceInput, error))
   {
-    return 1; // other MPI ranks: empty outputs
-  }
-  this->UpdateProgress(0.0);
-  std::vector<std::string> warnings;
-  std::string error;
-  const boolsurf::vtkSurfaceInput* surface =
-    this->Internal->Surface.GetUsable(surfaceInput, warnings, error);
-  for (const std::string& w : warnings)
-  {
-    vtkWarningMacro(<< w);
-  }
-  if (!surface)
-  {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   if (!curvesInput)
   {
-    vtkErrorMacro(<< "no control curves on input port 1");
-    return vtkBoolSurfErrorReported;
+    error = "no control curves on input port 1";
+    return false;
   }
   boolsurf::ResolveStageOptions options;
   options.Strategy = static_cast<boolsurf::ResolveStrategy>(this->Strategy);
@@ -76,24 +43,13 @@ int vtkBoolSurfResolve::RequestData(vtkInformation* vtkNotUsed(request),
   options.ProjectionTolerance = this->ProjectionTolerance;
   if (!boolsurf::ParseShapeStrategies(this->ShapeStrategies, options.PerShape, error))
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   std::vector<std::string> notes;
   const bool ok = boolsurf::ResolveControlCurves(
-    this->Internal->Surface, curvesInput, options, output, notes, error);
-  for (const std::string& n : notes)
-  {
-    vtkWarningMacro(<< n);
-  }
-  if (!ok)
-  {
-    output->Initialize();
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
-  }
-  this->UpdateProgress(1.0);
-  return 1;
+    this->GetSurfaceCache(), curvesInput, options, output, notes, error);
+  this->ReportWarnings(notes);
+  return ok;
 }
 
 //------------------------------------------------------------------------------

@@ -38,16 +38,16 @@
 #define vtkBoolSurfResolve_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkBoolSurfAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfResolve : public vtkPolyDataAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfResolve : public vtkBoolSurfAlgorithm
 {
 public:
   static vtkBoolSurfResolve* New();
-  vtkTypeMacro(vtkBoolSurfResolve, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoolSurfResolve, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Strategies
@@ -88,10 +88,9 @@ protected:
   vtkBoolSurfResolve();
   ~vtkBoolSurfResolve() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   int Strategy = DUPLICATE_REVERSED;
   std::string ShapeStrategies;
@@ -102,9 +101,6 @@ protected:
 private:
   vtkBoolSurfResolve(const vtkBoolSurfResolve&) = delete;
   void operator=(const vtkBoolSurfResolve&) = delete;
-
-  struct Internals;
-  std::unique_ptr<Internals> Internal;
 };
 
 #endif

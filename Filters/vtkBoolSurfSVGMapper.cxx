@@ -2,8 +2,6 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
-#include "vtkBoolSurfRankGather.h"
-
 #include "Svg/SvgSurfaceMap.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
@@ -29,61 +27,36 @@
 
 vtkStandardNewMacro(vtkBoolSurfSVGMapper);
 
-struct vtkBoolSurfSVGMapper::Internals
-{
-  boolsurf::vtkSurfaceCache Surface;
-};
-
 //------------------------------------------------------------------------------
-vtkBoolSurfSVGMapper::vtkBoolSurfSVGMapper()
-  : Internal(new Internals)
-{
-}
+vtkBoolSurfSVGMapper::vtkBoolSurfSVGMapper() = default;
 
 //------------------------------------------------------------------------------
 vtkBoolSurfSVGMapper::~vtkBoolSurfSVGMapper() = default;
 
 //------------------------------------------------------------------------------
-int vtkBoolSurfSVGMapper::FillInputPortInformation(int, vtkInformation* info)
+bool vtkBoolSurfSVGMapper::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
-  vtkBoolSurfRankGather gather(this, inputVector, 1);
-  vtkPolyData* input = gather.Input(0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->Initialize(); // a failed update leaves an empty output
-  if (!gather.ComputesHere())
-  {
-    return 1; // other MPI ranks: empty outputs
-  }
+  vtkPolyData* input = inputs[0];
+  vtkPolyData* output = outputs[0];
   if (this->FileName.empty())
   {
-    vtkErrorMacro("No FileName: set the SVG file to map.");
-    return vtkBoolSurfErrorReported;
+    error = "No FileName: set the SVG file to map.";
+    return false;
   }
   std::vector<std::string> warnings;
-  std::string error;
   const boolsurf::vtkSurfaceInput* surface =
-    this->Internal->Surface.GetUsable(input, warnings, error);
+    this->GetSurfaceCache().GetUsable(input, warnings, error);
   if (!surface)
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   const boolsurf::TriangleMesh& mesh = *surface->Mesh;
   boolsurf::SvgDrawing drawing;
   if (!boolsurf::LoadSvg(this->FileName, drawing, error))
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   this->UpdateProgress(0.2);
 
@@ -92,15 +65,19 @@ int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
   {
     if (this->CenterTriangleId >= mesh.GetNumberOfTriangles())
     {
-      vtkErrorMacro("CenterTriangleId " << this->CenterTriangleId << " is not a triangle of the "
-                                        << mesh.GetNumberOfTriangles() << "-triangle surface");
-      return vtkBoolSurfErrorReported;
+      std::ostringstream message;
+      message << "CenterTriangleId " << this->CenterTriangleId << " is not a triangle of the "
+              << mesh.GetNumberOfTriangles() << "-triangle surface";
+      error = message.str();
+      return false;
     }
     double u = this->CenterBarycentric[0], v = this->CenterBarycentric[1];
     if (!std::isfinite(u) || !std::isfinite(v) || u < -1e-6 || v < -1e-6 || u + v > 1 + 1e-6)
     {
-      vtkErrorMacro("CenterBarycentric (" << u << ", " << v << ") is outside the triangle");
-      return vtkBoolSurfErrorReported;
+      std::ostringstream message;
+      message << "CenterBarycentric (" << u << ", " << v << ") is outside the triangle";
+      error = message.str();
+      return false;
     }
     boolsurf::ClampBarycentric(u, v);
     options.Center = { static_cast<int>(this->CenterTriangleId), u, v };
@@ -111,12 +88,12 @@ int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
     vtkIdType cell = -1;
     int sub;
     vtkNew<vtkGenericCell> scratch;
-    this->Internal->Surface.GetLocator()->FindClosestPoint(
+    this->GetSurfaceCache().GetLocator()->FindClosestPoint(
       this->Center, closest, scratch, cell, sub, dist2);
     if (cell < 0)
     {
-      vtkErrorMacro("no surface point near Center");
-      return vtkBoolSurfErrorReported;
+      error = "no surface point near Center";
+      return false;
     }
     const int t = static_cast<int>(cell);
     const boolsurf::Vec3 a = mesh.GetCornerPosition(t, 0);
@@ -156,8 +133,7 @@ int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
   std::vector<boolsurf::MappedSvgCurve> curves;
   if (!boolsurf::MapSvgOntoSurface(mesh, drawing, options, curves, drawing.Warnings, error))
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   this->UpdateProgress(0.9);
 
@@ -235,8 +211,7 @@ int vtkBoolSurfSVGMapper::RequestData(vtkInformation*,
     }
     output->GetFieldData()->AddArray(notes);
   }
-  this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------

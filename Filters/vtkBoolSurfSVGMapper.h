@@ -30,16 +30,16 @@
 #define vtkBoolSurfSVGMapper_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkBoolSurfAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfSVGMapper : public vtkPolyDataAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfSVGMapper : public vtkBoolSurfAlgorithm
 {
 public:
   static vtkBoolSurfSVGMapper* New();
-  vtkTypeMacro(vtkBoolSurfSVGMapper, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoolSurfSVGMapper, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -86,10 +86,9 @@ protected:
   vtkBoolSurfSVGMapper();
   ~vtkBoolSurfSVGMapper() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   std::string FileName;
   double Center[3] = { 0, 0, 0 };
@@ -103,8 +102,6 @@ protected:
 private:
   vtkBoolSurfSVGMapper(const vtkBoolSurfSVGMapper&) = delete;
   void operator=(const vtkBoolSurfSVGMapper&) = delete;
-  struct Internals;
-  std::unique_ptr<Internals> Internal;
 };
 
 #endif

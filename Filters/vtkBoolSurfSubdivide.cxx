@@ -2,8 +2,6 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
-#include "vtkBoolSurfRankGather.h"
-
 #include "Mesh/SubdivisionMap.h"
 
 #include "vtkCallbackCommand.h"
@@ -98,40 +96,23 @@ vtkBoolSurfSubdivide::vtkBoolSurfSubdivide()
 vtkBoolSurfSubdivide::~vtkBoolSurfSubdivide() = default;
 
 //------------------------------------------------------------------------------
-int vtkBoolSurfSubdivide::FillInputPortInformation(int, vtkInformation* info)
+bool vtkBoolSurfSubdivide::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
-  vtkBoolSurfRankGather gather(this, inputVector, 2);
-  vtkPolyData* surface = gather.Input(0);
-  vtkPolyData* curves = gather.Input(1);
-  vtkPolyData* surfaceOut = vtkPolyData::GetData(outputVector, 0);
-  vtkPolyData* curvesOut = vtkPolyData::GetData(outputVector, 1);
-  surfaceOut->Initialize();
-  curvesOut->Initialize();
-  if (!gather.ComputesHere())
-  {
-    return 1; // other MPI ranks: empty outputs
-  }
+  vtkPolyData* surface = inputs[0];
+  vtkPolyData* curves = inputs[1];
+  vtkPolyData* surfaceOut = outputs[0];
+  vtkPolyData* curvesOut = outputs[1];
   if (!surface || !curves)
   {
-    vtkErrorMacro("Both inputs are needed: the surface (port 0) and the curves (port 1).");
-    return vtkBoolSurfErrorReported;
+    error = "Both inputs are needed: the surface (port 0) and the curves (port 1).";
+    return false;
   }
   std::vector<boolsurf::Triangle> parent;
-  std::string error;
   if (!TrianglesOf(surface, parent, error))
   {
-    vtkErrorMacro(<< error);
-    return vtkBoolSurfErrorReported;
+    return false;
   }
   vtkDataArray* triangleIds = curves->GetPointData()->GetArray(boolsurf::names::TriangleId);
   vtkDataArray* barycentric = curves->GetPointData()->GetArray(boolsurf::names::Barycentric);
@@ -140,9 +121,9 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
     triangleIds->GetNumberOfTuples() < numberOfPoints ||
     barycentric->GetNumberOfTuples() < numberOfPoints)
   {
-    vtkErrorMacro("The curves have no surface points: point data TriangleId and Barycentric (2 "
-                  "components, one per point) are needed.");
-    return vtkBoolSurfErrorReported;
+    error = "The curves have no surface points: point data TriangleId and Barycentric (2 "
+            "components, one per point) are needed.";
+    return false;
   }
   std::vector<boolsurf::SurfacePoint> points(static_cast<std::size_t>(numberOfPoints));
   for (vtkIdType p = 0; p < numberOfPoints; ++p)
@@ -151,15 +132,19 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
     const double u = barycentric->GetComponent(p, 0), v = barycentric->GetComponent(p, 1);
     if (!(t >= 0 && t < static_cast<double>(parent.size()) && t == std::floor(t)))
     {
-      vtkErrorMacro("Curve point " << p << ": TriangleId " << t << " is not a triangle of the "
-                                   << parent.size() << "-triangle surface.");
-      return vtkBoolSurfErrorReported;
+      std::ostringstream message;
+      message << "Curve point " << p << ": TriangleId " << t << " is not a triangle of the "
+              << parent.size() << "-triangle surface.";
+      error = message.str();
+      return false;
     }
     if (!std::isfinite(u) || !std::isfinite(v) || u < -1e-6 || v < -1e-6 || u + v > 1 + 1e-6)
     {
-      vtkErrorMacro(
-        "Curve point " << p << ": Barycentric (" << u << ", " << v << ") is outside its triangle.");
-      return vtkBoolSurfErrorReported;
+      std::ostringstream message;
+      message << "Curve point " << p << ": Barycentric (" << u << ", " << v
+              << ") is outside its triangle.";
+      error = message.str();
+      return false;
     }
     // Located as every reader locates it (a weight within rounding of zero is zero), so the
     // subdivision does not magnify rounding off an edge or a vertex into a distance.
@@ -176,7 +161,7 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
   {
     if (this->CheckAbort())
     {
-      return 1;
+      return true;
     }
     vtkSmartPointer<vtkPolyDataAlgorithm> subdivision;
     if (this->Scheme == LOOP)
@@ -194,18 +179,18 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
     vtkSmartPointer<vtkPolyData> finer = subdivision->GetOutput();
     if (!errors.Text.empty() || finer->GetNumberOfPolys() == 0)
     {
-      vtkErrorMacro("Subdivision step " << level + 1 << " ("
-                                        << (this->Scheme == LOOP ? "Loop" : "linear")
-                                        << ") failed: " << errors.Text);
-      surfaceOut->Initialize();
-      return vtkBoolSurfErrorReported;
+      std::ostringstream message;
+      message << "Subdivision step " << level + 1 << " ("
+              << (this->Scheme == LOOP ? "Loop" : "linear") << ") failed: " << errors.Text;
+      error = message.str();
+      return false;
     }
     boolsurf::SubdivisionMap map;
     if (!TrianglesOf(finer, child, error) ||
       !map.Build(parent, static_cast<int>(current->GetNumberOfPoints()), child, error))
     {
-      vtkErrorMacro("Subdivision step " << level + 1 << ": " << error);
-      return vtkBoolSurfErrorReported;
+      error = "Subdivision step " + std::to_string(level + 1) + ": " + error;
+      return false;
     }
     for (boolsurf::SurfacePoint& p : points)
     {
@@ -290,8 +275,7 @@ int vtkBoolSurfSubdivide::RequestData(vtkInformation*,
   curvesOut->GetPointData()->RemoveArray(boolsurf::names::Barycentric);
   curvesOut->GetPointData()->AddArray(newTriangleIds);
   curvesOut->GetPointData()->AddArray(newBarycentric);
-  this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------

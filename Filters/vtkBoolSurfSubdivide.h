@@ -32,13 +32,13 @@
 #define vtkBoolSurfSubdivide_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkBoolSurfAlgorithm.h"
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfSubdivide : public vtkPolyDataAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfSubdivide : public vtkBoolSurfAlgorithm
 {
 public:
   static vtkBoolSurfSubdivide* New();
-  vtkTypeMacro(vtkBoolSurfSubdivide, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoolSurfSubdivide, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Schemes
@@ -72,10 +72,9 @@ protected:
   vtkBoolSurfSubdivide();
   ~vtkBoolSurfSubdivide() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   int Scheme = LINEAR;
   int NumberOfSubdivisions = 1;

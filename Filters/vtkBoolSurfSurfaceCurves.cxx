@@ -3,7 +3,6 @@
 #include "vtkBoolSurfArrayNames.h"
 
 #include "vtkBoolSurfPropertyVector.h"
-#include "vtkBoolSurfRankGather.h"
 #include "vtkBoolSurfSurfaceCache.h"
 #include "vtkBoolSurfTraceStage.h"
 
@@ -19,6 +18,8 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+
+#include <sstream>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkTriangle.h>
@@ -159,32 +160,17 @@ void vtkBoolSurfSurfaceCurves::RemoveAllCurves()
 }
 
 //------------------------------------------------------------------------------
-int vtkBoolSurfSurfaceCurves::FillInputPortInformation(int, vtkInformation* info)
+bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  // Every rank takes part in the gather first (see vtkBoolSurfRankGather); only rank 0 computes.
-  vtkBoolSurfRankGather gather(this, inputVector, 1);
-  vtkPolyData* surface = gather.Input(0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  vtkPolyData* traced = vtkPolyData::GetData(outputVector, 1);
-  output->Initialize(); // a failed update leaves an empty output
-  traced->Initialize();
-  if (!gather.ComputesHere())
-  {
-    return 1; // other MPI ranks: empty outputs
-  }
+  vtkPolyData* surface = inputs[0];
+  vtkPolyData* output = outputs[0];
+  vtkPolyData* traced = outputs[1];
   if (!surface || surface->GetNumberOfCells() == 0)
   {
-    vtkErrorMacro("The surface is empty: curves are drawn on a triangle surface.");
-    return vtkBoolSurfErrorReported;
+    error = "The surface is empty: curves are drawn on a triangle surface.";
+    return false;
   }
 
   const vtkIdType points = this->GetNumberOfPoints();
@@ -197,16 +183,20 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
   {
     if (sizes[c] < 1)
     {
-      vtkErrorMacro("Curve " << c << " has " << sizes[c] << " control points (CurveSizes).");
-      return vtkBoolSurfErrorReported;
+      std::ostringstream message;
+      message << "Curve " << c << " has " << sizes[c] << " control points (CurveSizes).";
+      error = message.str();
+      return false;
     }
   }
   const long long total = std::accumulate(sizes.begin(), sizes.end(), 0LL);
   if (total != points)
   {
-    vtkErrorMacro("CurveSizes add up to " << total << " control points, but " << points
-                                          << " Points are given.");
-    return vtkBoolSurfErrorReported;
+    std::ostringstream message;
+    message << "CurveSizes add up to " << total << " control points, but " << points
+            << " Points are given.";
+    error = message.str();
+    return false;
   }
   // TriangleIds: none (every point snapped) or one per point, -1 marking a point to snap (the
   // curve editor stores the points it has placed exactly and snaps the one being dragged).
@@ -215,10 +205,12 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
     (static_cast<vtkIdType>(this->TriangleIds.size()) != points ||
       static_cast<vtkIdType>(this->Barycentrics.size()) != 2 * points))
   {
-    vtkErrorMacro("Exact surface points need a TriangleId and a Barycentric pair for each of the "
-      << points << " Points; got " << this->TriangleIds.size() << " TriangleIds and "
-      << this->Barycentrics.size() / 2 << " Barycentrics.");
-    return vtkBoolSurfErrorReported;
+    std::ostringstream message;
+    message << "Exact surface points need a TriangleId and a Barycentric pair for each of the "
+            << points << " Points; got " << this->TriangleIds.size() << " TriangleIds and "
+            << this->Barycentrics.size() / 2 << " Barycentrics.";
+    error = message.str();
+    return false;
   }
 
   // Surface points: given exactly, or the closest surface point of each position.
@@ -249,17 +241,20 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
       v = this->Barycentrics[2 * i + 1];
       if (triangle < 0 || triangle >= triangles)
       {
-        vtkErrorMacro("Point " << i << ": TriangleId " << triangle
-                               << " is not a triangle of the surface (it has " << triangles
-                               << ").");
-        return vtkBoolSurfErrorReported;
+        std::ostringstream message;
+        message << "Point " << i << ": TriangleId " << triangle
+                << " is not a triangle of the surface (it has " << triangles << ").";
+        error = message.str();
+        return false;
       }
       const double slack = 1e-12;
       if (!(u >= -slack && v >= -slack && u + v <= 1 + slack))
       {
-        vtkErrorMacro("Point " << i << ": Barycentric (" << u << ", " << v
-                               << ") is outside triangle " << triangle << ".");
-        return vtkBoolSurfErrorReported;
+        std::ostringstream message;
+        message << "Point " << i << ": Barycentric (" << u << ", " << v << ") is outside triangle "
+                << triangle << ".";
+        error = message.str();
+        return false;
       }
     }
     else
@@ -274,9 +269,11 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
     surface->GetCellPoints(triangle, n, corners);
     if (n != 3)
     {
-      vtkErrorMacro("Point " << i << ": cell " << triangle << " of the surface has " << n
-                             << " points, not 3: triangulate the surface first.");
-      return vtkBoolSurfErrorReported;
+      std::ostringstream message;
+      message << "Point " << i << ": cell " << triangle << " of the surface has " << n
+              << " points, not 3: triangulate the surface first.";
+      error = message.str();
+      return false;
     }
     double p[3][3];
     for (int k = 0; k < 3; ++k)
@@ -320,23 +317,28 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
     const int shape = PerCurve(this->ShapeIds, c, static_cast<int>(c));
     if (type != 0 && type != 1)
     {
-      vtkErrorMacro("Curve " << c << ": CurveType " << type
-                             << " is neither 0 (geodesic polygon) nor 1 (cubic Bezier).");
-      return vtkBoolSurfErrorReported;
+      std::ostringstream message;
+      message << "Curve " << c << ": CurveType " << type
+              << " is neither 0 (geodesic polygon) nor 1 (cubic Bezier).";
+      error = message.str();
+      return false;
     }
     if (shape < 0)
     {
-      vtkErrorMacro("Curve " << c << ": ShapeId " << shape << " is negative.");
-      return vtkBoolSurfErrorReported;
+      std::ostringstream message;
+      message << "Curve " << c << ": ShapeId " << shape << " is negative.";
+      error = message.str();
+      return false;
     }
     const int size = sizes[c];
     if (type == 1 && (isClosed ? size % 3 != 0 : size % 3 != 1))
     {
-      vtkErrorMacro("Curve " << c << ": a " << (isClosed ? "closed" : "open")
-                             << " cubic Bezier spline needs " << (isClosed ? "3n" : "3n+1")
-                             << " control points (anchor, handle, handle, ...); it has " << size
-                             << ".");
-      return vtkBoolSurfErrorReported;
+      std::ostringstream message;
+      message << "Curve " << c << ": a " << (isClosed ? "closed" : "open")
+              << " cubic Bezier spline needs " << (isClosed ? "3n" : "3n+1")
+              << " control points (anchor, handle, handle, ...); it has " << size << ".";
+      error = message.str();
+      return false;
     }
     lines->InsertNextCell(size + (isClosed ? 1 : 0));
     for (int k = 0; k < size; ++k)
@@ -360,7 +362,7 @@ int vtkBoolSurfSurfaceCurves::RequestData(vtkInformation*,
   output->GetCellData()->AddArray(curveTypes);
   output->GetCellData()->AddArray(closed);
   this->TraceForDisplay(surface, output, traced);
-  return 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------

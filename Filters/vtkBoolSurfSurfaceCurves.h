@@ -38,16 +38,16 @@
 #define vtkBoolSurfSurfaceCurves_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkBoolSurfAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfSurfaceCurves : public vtkPolyDataAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfSurfaceCurves : public vtkBoolSurfAlgorithm
 {
 public:
   static vtkBoolSurfSurfaceCurves* New();
-  vtkTypeMacro(vtkBoolSurfSurfaceCurves, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoolSurfSurfaceCurves, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -86,10 +86,9 @@ protected:
   vtkBoolSurfSurfaceCurves();
   ~vtkBoolSurfSurfaceCurves() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   std::vector<double> Points;
   std::vector<vtkIdType> TriangleIds;
