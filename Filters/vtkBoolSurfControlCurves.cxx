@@ -47,29 +47,6 @@ bool IsIndex(double value)
   return value >= 0 && value <= std::numeric_limits<int>::max() && value == std::floor(value);
 }
 
-// Barycentric (u, v) of x, a point of the plane of triangle t, clamped into the triangle.
-SurfacePoint ToBarycentric(const TriangleMesh& mesh, int t, const Vec3& x)
-{
-  const Vec3 a = mesh.GetCornerPosition(t, 0);
-  const Vec3 e1 = mesh.GetCornerPosition(t, 1) - a;
-  const Vec3 e2 = mesh.GetCornerPosition(t, 2) - a;
-  const Vec3 d = x - a;
-  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
-  const double d1 = Dot(d, e1), d2 = Dot(d, e2);
-  const double det = d11 * d22 - d12 * d12;
-  double u = det != 0 ? (d22 * d1 - d12 * d2) / det : 0.0;
-  double v = det != 0 ? (d11 * d2 - d12 * d1) / det : 0.0;
-  u = std::max(0.0, u);
-  v = std::max(0.0, v);
-  if (u + v > 1.0)
-  {
-    const double s = u + v;
-    u /= s;
-    v /= s;
-  }
-  return { t, u, v };
-}
-
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -241,7 +218,7 @@ void ReadControlCurves(vtkPolyData* curves,
             break;
           }
           sp =
-            ToBarycentric(mesh, static_cast<int>(triangle), { closest[0], closest[1], closest[2] });
+            PointInTriangle(mesh, static_cast<int>(triangle), { closest[0], closest[1], closest[2] });
         }
         curve.Points.push_back(sp);
         curve.PointIds.push_back(pid);

@@ -105,17 +105,9 @@ int ZeroCellAt(vtkStaticCellLocator* locator,
     error = "no surface cell found near ZeroCellPoint";
     return -1;
   }
-  const Triangle& tri = mesh.GetTriangle(static_cast<int>(cell));
-  // Barycentric coordinates of the closest point (least squares in the triangle's plane).
-  const Vec3 a = mesh.GetPosition(tri[0]);
-  const Vec3 e1 = mesh.GetPosition(tri[1]) - a, e2 = mesh.GetPosition(tri[2]) - a;
-  const Vec3 d = Vec3{ closest[0], closest[1], closest[2] } - a;
-  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
-  const double b1 = Dot(d, e1), b2 = Dot(d, e2);
-  const double det = d11 * d22 - d12 * d12;
-  const double u = det != 0 ? (b1 * d22 - b2 * d12) / det : 0;
-  const double v = det != 0 ? (b2 * d11 - b1 * d12) / det : 0;
-  const int zero = CellAtSurfacePoint(mesh, arrangement, static_cast<int>(cell), u, v);
+  const SurfacePoint at =
+    PointInTriangle(mesh, static_cast<int>(cell), Vec3{ closest[0], closest[1], closest[2] });
+  const int zero = CellAtSurfacePoint(mesh, arrangement, at.Triangle, at.U, at.V);
   if (zero < 0)
   {
     error = "ZeroCellPoint lies on triangle " + std::to_string(cell) +

@@ -96,16 +96,8 @@ bool vtkBoolSurfSVGMapper::Execute(const std::vector<vtkPolyData*>& inputs,
       return false;
     }
     const int t = static_cast<int>(cell);
-    const boolsurf::Vec3 a = mesh.GetCornerPosition(t, 0);
-    const boolsurf::Vec3 e1 = mesh.GetCornerPosition(t, 1) - a;
-    const boolsurf::Vec3 e2 = mesh.GetCornerPosition(t, 2) - a;
-    const boolsurf::Vec3 d = boolsurf::Vec3{ closest[0], closest[1], closest[2] } - a;
-    const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
-    const double b1 = Dot(d, e1), b2 = Dot(d, e2), det = d11 * d22 - d12 * d12;
-    double u = det != 0 ? (d22 * b1 - d12 * b2) / det : 0,
-           v = det != 0 ? (d11 * b2 - d12 * b1) / det : 0;
-    boolsurf::ClampBarycentric(u, v);
-    options.Center = { t, u, v };
+    options.Center =
+      boolsurf::PointInTriangle(mesh, t, boolsurf::Vec3{ closest[0], closest[1], closest[2] });
   }
   // Size: the drawing's farthest bounding-box corner at Radius from the center.
   const double halfW = 0.5 * (drawing.Max[0] - drawing.Min[0]);

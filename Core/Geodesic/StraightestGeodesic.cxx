@@ -14,21 +14,6 @@ Vec3 Normalized(Vec3 v)
   return n > 0 ? (1.0 / n) * v : v;
 }
 
-/// Barycentric (u, v) of x, a point in the plane of triangle t, clamped into the triangle.
-SurfacePoint PointIn(const TriangleMesh& mesh, int t, Vec3 x)
-{
-  const Vec3 a = mesh.GetCornerPosition(t, 0);
-  const Vec3 e1 = mesh.GetCornerPosition(t, 1) - a, e2 = mesh.GetCornerPosition(t, 2) - a;
-  const Vec3 d = x - a;
-  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
-  const double b1 = Dot(d, e1), b2 = Dot(d, e2);
-  const double det = d11 * d22 - d12 * d12;
-  double u = det != 0 ? (d22 * b1 - d12 * b2) / det : 0.0;
-  double v = det != 0 ? (d11 * b2 - d12 * b1) / det : 0.0;
-  ClampBarycentric(u, v);
-  return { t, u, v };
-}
-
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -100,7 +85,7 @@ StraightestWalk WalkStraightest(const TriangleMesh& mesh,
     t = next;
     n = nextNormal;
   }
-  walk.End = PointIn(mesh, t, x);
+  walk.End = PointInTriangle(mesh, t, x);
   return walk;
 }
 

@@ -26,6 +26,11 @@ struct SurfacePoint
   double U = 0, V = 0;
 };
 
+/// The point of triangle t nearest to x, for an x in (or next to) the triangle's plane, such as
+/// a closest-point query returns: barycentric (u, v) by least squares in the plane, clamped
+/// into the triangle (ClampBarycentric). A degenerate triangle gives its corner 0.
+SurfacePoint PointInTriangle(const TriangleMesh& mesh, int t, const Vec3& x);
+
 /// (u, v) moved into the triangle: negative weights to 0, then scaled so u + v <= 1. For values a
 /// rounding error outside it (callers decide how far outside is an error).
 inline void ClampBarycentric(double& u, double& v)
