@@ -11,6 +11,7 @@
 #include "vtkBoolSurfTracedCurves.h"
 
 #include <vtkCellData.h>
+#include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
@@ -21,6 +22,9 @@ vtkStandardNewMacro(vtkBoolSurfArrangement);
 
 struct vtkBoolSurfArrangement::Internals
 {
+  /// The homology generators' field arrays, written once per surface (its basis).
+  const boolsurf::HomologyBasis* GeneratorBasis = nullptr;
+  vtkNew<vtkFieldData> GeneratorArrays;
   /// Results handed downstream; an edit reuses the buffers of one no output holds any more.
   boolsurf::ResultPool<boolsurf::ArrangementResult> Results;
 };
@@ -124,13 +128,19 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
   // the labeling's explanation of inconsistent shapes.
   std::string homologyError;
   const boolsurf::HomologyBasis* basis = this->GetSurfaceCache().GetHomology(homologyError);
+  if (basis != this->Internal->GeneratorBasis)
+  {
+    this->Internal->GeneratorArrays->Initialize();
+    this->Internal->GeneratorBasis = basis;
+  }
   if (!basis ||
     !boolsurf::AddHomologyFields(*surface->Mesh,
       *basis,
       curves,
       this->GetSurfaceCache().GetShortenedGenerators(),
       output->GetFieldData(),
-      homologyError))
+      homologyError,
+      this->Internal->GeneratorArrays))
   {
     vtkWarningMacro(<< homologyError << " (no CurveHomology)");
   }

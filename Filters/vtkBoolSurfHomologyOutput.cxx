@@ -132,7 +132,8 @@ bool AddHomologyFields(const TriangleMesh& mesh,
   const std::vector<TracedCurve>& curves,
   const std::vector<TracedCurve>* shortened,
   vtkFieldData* fd,
-  std::string& error)
+  std::string& error,
+  vtkFieldData* generatorCache)
 {
   const int ng = basis.GetNumberOfGenerators();
   fd->AddArray(Ints("NumberOfHomologyGenerators", { ng }));
@@ -163,6 +164,15 @@ bool AddHomologyFields(const TriangleMesh& mesh,
     fd->AddArray(Ints("CurveHomologyCurveId", ids));
     fd->AddArray(Ints("CurveHomologyShapeId", shapes));
   }
+  if (generatorCache && generatorCache->GetNumberOfArrays() > 0)
+  {
+    for (int a = 0; a < generatorCache->GetNumberOfArrays(); ++a)
+    {
+      fd->AddArray(generatorCache->GetAbstractArray(a));
+    }
+    return true;
+  }
+  vtkFieldData* generators = generatorCache ? generatorCache : fd;
   std::vector<std::vector<CanonicalPoint>> loops;
   std::vector<int> loopIds;
   for (int g = 0; g < ng; ++g)
@@ -170,7 +180,7 @@ bool AddHomologyFields(const TriangleMesh& mesh,
     loops.push_back(basis.GetGenerator(g).Points);
     loopIds.push_back(g);
   }
-  WriteLoops(mesh, "HomologyGenerator", loops, loopIds, fd);
+  WriteLoops(mesh, "HomologyGenerator", loops, loopIds, generators);
   if (shortened)
   {
     loops.clear();
@@ -185,7 +195,14 @@ bool AddHomologyFields(const TriangleMesh& mesh,
     }
     if (!loops.empty())
     {
-      WriteLoops(mesh, "HomologyShortGenerator", loops, loopIds, fd);
+      WriteLoops(mesh, "HomologyShortGenerator", loops, loopIds, generators);
+    }
+  }
+  if (generatorCache)
+  {
+    for (int a = 0; a < generatorCache->GetNumberOfArrays(); ++a)
+    {
+      fd->AddArray(generatorCache->GetAbstractArray(a));
     }
   }
   return true;
@@ -215,7 +232,7 @@ bool ComputeCurveClasses(const HomologyBasis& basis,
 }
 
 //------------------------------------------------------------------------------
-HomologyFields ReadHomologyFields(vtkFieldData* fd)
+HomologyFields ReadHomologyFields(vtkFieldData* fd, bool withLoops)
 {
   HomologyFields h;
   const std::vector<int> count = ReadInts(fd, "NumberOfHomologyGenerators");
@@ -246,8 +263,11 @@ HomologyFields ReadHomologyFields(vtkFieldData* fd)
       h.CurveClasses.emplace_back(table.begin() + r * ng, table.begin() + (r + 1) * ng);
     }
   }
-  ReadLoops(fd, "HomologyGenerator", h.Generators);
-  ReadLoops(fd, "HomologyShortGenerator", h.ShortGenerators);
+  if (withLoops)
+  {
+    ReadLoops(fd, "HomologyGenerator", h.Generators);
+    ReadLoops(fd, "HomologyShortGenerator", h.ShortGenerators);
+  }
   return h;
 }
 

@@ -54,12 +54,16 @@ struct HomologyFields
 /// Computes each curve's class and writes the homology field data to `fd`; `shortened` (may
 /// be null; per generator, empty when none) adds the HomologyShortGenerator* arrays. False with a
 /// message when a curve cannot be walked (consecutive points sharing no triangle).
+/// `generatorCache` (may be null): the generators' arrays depend on the surface only, so they
+/// are written into it once (when it is empty) and its very arrays added to `fd` on later
+/// updates; the caller empties it when the surface changes.
 bool AddHomologyFields(const TriangleMesh& mesh,
   const HomologyBasis& basis,
   const std::vector<TracedCurve>& curves,
   const std::vector<TracedCurve>* shortened,
   vtkFieldData* fd,
-  std::string& error);
+  std::string& error,
+  vtkFieldData* generatorCache = nullptr);
 
 /// The curve rows of HomologyFields (classes, ids, shapes) computed in memory, without the
 /// generators' points: what the one-step filter needs to explain inconsistent shapes.
@@ -68,8 +72,9 @@ bool ComputeCurveClasses(const HomologyBasis& basis,
   HomologyFields& out,
   std::string& error);
 
-/// Reads the homology field data; Present is false when there is none.
-HomologyFields ReadHomologyFields(vtkFieldData* fd);
+/// Reads the homology field data; Present is false when there is none. Without `withLoops`
+/// the generators' points are not read (classes and counts only).
+HomologyFields ReadHomologyFields(vtkFieldData* fd, bool withLoops = true);
 
 /// Per shape index (of `shapeIds`, sorted), the sum of its curves' classes.
 std::vector<std::vector<int>> ShapeExcess(const HomologyFields& h,

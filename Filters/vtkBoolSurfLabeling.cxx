@@ -6,12 +6,14 @@
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfStageHandoff.h"
 
+#include <vtkAbstractArray.h>
 #include <vtkCellData.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
+#include <vtkWeakPointer.h>
 
 vtkStandardNewMacro(vtkBoolSurfLabeling);
 
@@ -19,6 +21,10 @@ struct vtkBoolSurfLabeling::Internals
 {
   /// On the arrangement's input surface, for ZeroCellPoint.
   boolsurf::SurfaceLocator Locator;
+  /// Port 1 as last drawn, and the generator array it was drawn from.
+  vtkNew<vtkPolyData> Generators;
+  vtkWeakPointer<vtkAbstractArray> GeneratorKey;
+  vtkMTimeType GeneratorTime = 0;
 };
 
 //------------------------------------------------------------------------------
@@ -75,8 +81,19 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
     vtkWarningMacro(<< warning);
   }
   // Port 1: the homology generators the arrangement found on the surface.
-  boolsurf::WriteGeneratorPolylines(
-    boolsurf::ReadHomologyFields(input->GetFieldData()), generators);
+  // Port 1 depends only on the generators' arrays, which the arrangement writes once per
+  // surface: drawn again only when they are other arrays.
+  vtkAbstractArray* key = input->GetFieldData()->GetAbstractArray("HomologyGeneratorPoints");
+  Internals& in = *this->Internal;
+  if (!key || key != in.GeneratorKey.GetPointer() || key->GetMTime() != in.GeneratorTime)
+  {
+    in.Generators->Initialize();
+    boolsurf::WriteGeneratorPolylines(
+      boolsurf::ReadHomologyFields(input->GetFieldData()), in.Generators);
+    in.GeneratorKey = key;
+    in.GeneratorTime = key ? key->GetMTime() : 0;
+  }
+  generators->ShallowCopy(in.Generators);
   return true;
 }
 

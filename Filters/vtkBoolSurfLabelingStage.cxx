@@ -197,7 +197,7 @@ bool LabelArrangement(vtkPolyData* input,
   warning = InconsistencyWarning(labels);
   AddLabelTable(labels, output->GetFieldData());
   // Generators in excess per shape, and what they mean for the inconsistent ones.
-  const HomologyFields homology = ReadHomologyFields(input->GetFieldData());
+  const HomologyFields homology = ReadHomologyFields(input->GetFieldData(), false);
   if (homology.Present)
   {
     AddHomologyExcess(
