@@ -67,12 +67,13 @@ struct CanonicalPoint
 };
 
 /// The one tolerance that decides where a given surface point lies: a barycentric weight at
-/// most this (about 64 ulps of 1) is zero, so a point written 1e-16 off an edge or a vertex,
-/// in either triangle, is on it. Every stage that reads surface points (tracing, arrangement,
-/// homology, resolution, control-point recovery, scene files) locates them with
-/// LocateSurfacePoint, so two readers of one curve never disagree. It is far below any distance
-/// a user means: weights are fractions of the triangle.
-constexpr double SurfacePointSnap = 1.5e-14;
+/// most this is zero, so a point written a rounding error (1e-16 .. 1e-12) off an edge or a
+/// vertex, in either triangle, is on it, and gives the answer of the exact point. Every stage
+/// that reads surface points (tracing, arrangement, homology, resolution, control-point
+/// recovery, subdivision, scene files) locates them with LocateSurfacePoint, so two readers of
+/// one curve never disagree. It is far below any distance a user means: weights are fractions
+/// of the triangle (1e-11 of a 1 m triangle is 10 picometres).
+constexpr double SurfacePointSnap = 1e-11;
 
 /// Canonical form of p. A barycentric weight whose absolute value is at most `snap` counts
 /// as zero, so a point given as (t, 1e-17, 0.3) lands on the edge; pass 0 for an exact test.
