@@ -118,24 +118,23 @@ bool vtkBoolSurfBSC::SelectFromCore(const boolsurf::ArrangementResult& arranged,
     return false;
   }
   this->UpdateProgress(0.5);
-  const bool withControls = !arranged.Sources.empty();
-  if (!boolsurf::WriteSelectedCells(arranged.Surface,
-        arranged.Arrangement,
-        arranged.Sources,
+  std::string note;
+  if (!boolsurf::WriteHandedOverSelection(arranged,
         in.Result.Selected,
-        withControls ? &in.Solver.Get(arranged.Surface.Mesh, arranged.ExactGeodesics) : nullptr,
+        in.Solver,
         in.Output,
         region,
         boundary,
         controls,
         clipped,
-        error))
+        error,
+        note))
   {
     return false;
   }
-  if (!withControls)
+  if (!note.empty())
   {
-    vtkWarningMacro(<< boolsurf::NoControlPointsNote);
+    vtkWarningMacro(<< note);
   }
   boolsurf::AddSampleFields(in.Snaps, in.Result, region);
   boolsurf::AddSampleFields(in.Snaps, in.Result, boundary);

@@ -34,28 +34,24 @@ bool SelectFromCore(const boolsurf::LabeledArrangementResult& labeled,
   std::string& error,
   std::string& note)
 {
-  const boolsurf::ArrangementResult& arranged = *labeled.Arranged;
   std::string text;
   if (!boolsurf::SelectRequestedCells(labeled.Labels, request, selected, text, error))
   {
     return false;
   }
-  const bool withControls = !arranged.Sources.empty();
-  if (!boolsurf::WriteSelectedCells(arranged.Surface,
-        arranged.Arrangement,
-        arranged.Sources,
+  if (!boolsurf::WriteHandedOverSelection(*labeled.Arranged,
         selected,
-        withControls ? &solver.Get(arranged.Surface.Mesh, arranged.ExactGeodesics) : nullptr,
+        solver,
         buffers,
         region,
         boundary,
         controls,
         clipped,
-        error))
+        error,
+        note))
   {
     return false;
   }
-  note = withControls ? "" : boolsurf::NoControlPointsNote;
   boolsurf::AddExpressionField(region, text);
   boolsurf::AddExpressionField(boundary, text);
   boolsurf::AddLabelTable(labeled.Labels, region->GetFieldData());

@@ -3,6 +3,7 @@
 #include "Geodesic/GeodesicPath.h"
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfRegionOutput.h"
+#include "vtkBoolSurfStageHandoff.h"
 
 #include <vtkPolyData.h>
 
@@ -80,6 +81,33 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
     times->ControlCurves = Milliseconds(written, Clock::now());
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool WriteHandedOverSelection(const ArrangementResult& arranged,
+  const std::vector<char>& selected,
+  ResultPathSolver& solver,
+  SelectionOutputBuffers& buffers,
+  vtkPolyData* region,
+  vtkPolyData* boundary,
+  vtkPolyData* controls,
+  vtkPolyData* clipped,
+  std::string& error,
+  std::string& note)
+{
+  const bool withControls = !arranged.Sources.empty();
+  note = withControls ? "" : NoControlPointsNote;
+  return WriteSelectedCells(arranged.Surface,
+    arranged.Arrangement,
+    arranged.Sources,
+    selected,
+    withControls ? &solver.Get(arranged.Surface.Mesh, arranged.ExactGeodesics) : nullptr,
+    buffers,
+    region,
+    boundary,
+    controls,
+    clipped,
+    error);
 }
 
 } // namespace boolsurf

@@ -19,6 +19,8 @@ namespace boolsurf
 {
 
 class GeodesicPathSolver;
+class ResultPathSolver;
+struct ArrangementResult;
 
 /// Buffers kept between updates, so an edit reuses them.
 struct SelectionOutputBuffers
@@ -55,6 +57,21 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
   vtkPolyData* clipped,
   std::string& error,
   SelectionOutputTimes* times = nullptr);
+
+/// WriteSelectedCells on an arrangement handed over by Surface Arrangement (the stage filters'
+/// path to the one-step outputs): the control-point outputs are computed with `solver` when the
+/// arrangement carries its curves' control points; otherwise they stay empty and `note` says
+/// why (empty when they are written).
+bool WriteHandedOverSelection(const ArrangementResult& arranged,
+  const std::vector<char>& selected,
+  ResultPathSolver& solver,
+  SelectionOutputBuffers& buffers,
+  vtkPolyData* region,
+  vtkPolyData* boundary,
+  vtkPolyData* controls,
+  vtkPolyData* clipped,
+  std::string& error,
+  std::string& note);
 
 } // namespace boolsurf
 
