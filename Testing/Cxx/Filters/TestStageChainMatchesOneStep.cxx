@@ -10,6 +10,7 @@
 #include "vtkBoolSurfBSC.h"
 #include "vtkBoolSurfBoolean.h"
 #include "vtkBoolSurfLabeling.h"
+#include "vtkBoolSurfResolve.h"
 #include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkDataArray.h>
@@ -17,11 +18,15 @@
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
+#include <vtkPLYReader.h>
 #include <vtkPointData.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
 #include <random>
 #include <string>
 
@@ -306,6 +311,35 @@ std::vector<NamedSurface> Surfaces()
     auto surface = testutils::ToPolyData(m.second);
     all.push_back({ m.first + " float64", surface });
     all.push_back({ m.first + " float32", AsFloat32(surface) });
+  }
+  // Genus 2 and a scan shipped in Data/ (float32 PLY files), and a scan of the shared
+  // collection when it is there.
+  std::vector<std::pair<std::string, std::string>> files;
+  if (const char* source = std::getenv("BOOLSURF_SOURCE_DIR"))
+  {
+    files.push_back({ "eight (genus 2)", std::string(source) + "/Data/eight.ply" });
+    files.push_back({ "bunny_npm (scan)", std::string(source) + "/Data/bunny_npm.ply" });
+  }
+  const char* shared = std::getenv("BOOLSURF_SHARED_DATA");
+  if (shared && std::ifstream(std::string(shared) + "/meshes/kitten.ply"))
+  {
+    files.push_back({ "kitten (shared scan)", std::string(shared) + "/meshes/kitten.ply" });
+  }
+  else
+  {
+    std::cout << "shared mesh collection absent (BOOLSURF_SHARED_DATA): kitten case skipped\n";
+  }
+  for (const auto& f : files)
+  {
+    vtkNew<vtkPLYReader> reader;
+    reader->SetFileName(f.second.c_str());
+    reader->Update();
+    if (reader->GetOutput()->GetNumberOfCells() > 0)
+    {
+      auto surface = vtkSmartPointer<vtkPolyData>::New();
+      surface->ShallowCopy(reader->GetOutput());
+      all.push_back({ f.first, surface });
+    }
   }
   return all;
 }
@@ -657,4 +691,67 @@ TEST(StageChain, ArrangementErrorNamesTheControlPoints)
   const std::string where = "curve 1 of shape 1, between its control points " +
     std::to_string(seg) + " and " + std::to_string((seg + 1) % 4);
   EXPECT_NE(errors.find(where), std::string::npos) << errors;
+}
+
+// Resolve Inconsistent Shapes before the stage chain gives the one-step filter's
+// ResolveStrategy answer: a torus meridian (no region on its own) and a disc, resolved by each
+// strategy.
+TEST(StageChain, ResolvedShapesMatchOneStep)
+{
+  const double R = 1.0, r = 0.4;
+  auto surface = testutils::ToPolyData(boolsurf::MakeTorus(R, r, 32, 16));
+  testutils::ControlPolygon meridian, disc;
+  meridian.ShapeId = 0;
+  for (int k = 0; k < 12; ++k)
+  {
+    const double v = 0.1 + 2 * 3.14159265358979323846 * k / 12, u = 0.3;
+    meridian.Points.push_back({ (R + r * std::cos(v)) * std::cos(u),
+      (R + r * std::cos(v)) * std::sin(u),
+      r * std::sin(v) });
+  }
+  disc.ShapeId = 1;
+  for (int k = 0; k < 8; ++k)
+  {
+    const double t = 2 * 3.14159265358979323846 * k / 8;
+    const double u = 2.0 + 0.15 * std::cos(t), v = 1.2 + 0.15 * std::sin(t);
+    disc.Points.push_back({ (R + r * std::cos(v)) * std::cos(u),
+      (R + r * std::cos(v)) * std::sin(u),
+      r * std::sin(v) });
+  }
+  auto curves = testutils::ToCurves({ meridian, disc });
+  for (int strategy : { vtkBoolSurfResolve::ADD_GENERATORS,
+         vtkBoolSurfResolve::DUPLICATE_REVERSED,
+         vtkBoolSurfResolve::REMOVE_CURVES })
+  {
+    const std::string what = "strategy " + std::to_string(strategy);
+    vtkNew<vtkBoolSurf> one;
+    Messages m;
+    m.Watch(one);
+    one->SetInputData(0, surface);
+    one->SetInputData(1, curves);
+    one->SetResolveStrategy(strategy);
+    one->SetResolveOffset(0.01);
+    one->SetShapeA(-1);
+    one->SetShapeB(-1);
+    one->Update();
+
+    vtkNew<vtkBoolSurfResolve> resolve;
+    resolve->SetInputData(0, surface);
+    resolve->SetInputData(1, curves);
+    resolve->SetStrategy(strategy);
+    resolve->SetOffset(0.01);
+    Chain chain(surface, curves);
+    chain.Log.Watch(resolve);
+    chain.Trace->SetInputConnection(1, resolve->GetOutputPort());
+    chain.Boolean->Update();
+    ASSERT_EQ(m.Catcher->Errors, "") << what;
+    ASSERT_EQ(chain.Log.Catcher->Errors, "") << what;
+    EXPECT_GT(one->GetOutput()->GetNumberOfCells(), 0) << what;
+    for (int port = 0; port < 4; ++port)
+    {
+      ExpectIdentical(one->GetOutput(port),
+        chain.Boolean->GetOutput(port),
+        what + ", port " + std::to_string(port));
+    }
+  }
 }
