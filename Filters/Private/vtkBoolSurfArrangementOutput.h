@@ -39,10 +39,12 @@ void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData
 
 /// Port 0: refined triangles, ArrangementCell/SourceTriangle, TriangleId/Barycentric, the
 /// input's arrays, and the cell graph, patches and zero-cell candidates as field data.
+/// `threads` (0: all) fill the big arrays concurrently.
 void WriteArrangementSurface(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   const Arrangement& arrangement,
-  vtkPolyData* output);
+  vtkPolyData* output,
+  int threads = 0);
 
 /// Port 1: patches as polylines over the refined surface's points.
 void WriteArrangementPatches(const Arrangement& arrangement,
