@@ -17,6 +17,7 @@
 #define vtkBoolSurfHomologyOutput_h
 
 #include "Geodesic/TracedCurve.h"
+#include "Homology/InconsistencyExplanation.h"
 #include "Labeling/CellLabeling.h"
 
 #include <string>
@@ -30,26 +31,6 @@ namespace boolsurf
 
 class HomologyBasis;
 class TriangleMesh;
-
-/// Closed loops on the surface (the generators, or their shortened versions).
-struct HomologyLoops
-{
-  std::vector<int> Ids;          ///< generator id of each loop
-  std::vector<int> Offsets;      ///< loops + 1 offsets into the points
-  std::vector<double> Positions; ///< xyz per point
-  std::vector<SurfacePoint> Points;
-};
-
-/// The homology fields as read back from field data.
-struct HomologyFields
-{
-  bool Present = false;
-  int NumberOfGenerators = 0;
-  std::vector<int> CurveIds, CurveShapeIds;
-  std::vector<std::vector<int>> CurveClasses; ///< per row
-  HomologyLoops Generators;
-  HomologyLoops ShortGenerators; ///< locally shortest loops, for the generators that have one
-};
 
 /// Computes each curve's class and writes the homology field data to `fd`; `shortened` (may
 /// be null; per generator, empty when none) adds the HomologyShortGenerator* arrays. False with a
@@ -65,33 +46,14 @@ bool AddHomologyFields(const TriangleMesh& mesh,
   std::string& error,
   vtkFieldData* generatorCache = nullptr);
 
-/// The curve rows of HomologyFields (classes, ids, shapes) computed in memory, without the
-/// generators' points: what the one-step filter needs to explain inconsistent shapes.
-bool ComputeCurveClasses(const HomologyBasis& basis,
-  const std::vector<TracedCurve>& curves,
-  HomologyFields& out,
-  std::string& error);
-
 /// Reads the homology field data; Present is false when there is none. Without `withLoops`
 /// the generators' points are not read (classes and counts only).
 HomologyFields ReadHomologyFields(vtkFieldData* fd, bool withLoops = true);
-
-/// Per shape index (of `shapeIds`, sorted), the sum of its curves' classes.
-std::vector<std::vector<int>> ShapeExcess(const HomologyFields& h,
-  const std::vector<int>& shapeIds);
 
 /// Field data HomologyExcess (shapes x generators, components G0...).
 void AddHomologyExcess(const std::vector<std::vector<int>>& excess,
   const std::vector<int>& shapeIds,
   vtkFieldData* fd);
-
-/// For every inconsistent shape of `labels`: the curves that wind around generators (with
-/// sign and multiplicity), the generators in excess and the three fixes, in words. Empty when
-/// every shape is consistent.
-std::string ExplainInconsistency(const LabelingResult& labels, const HomologyFields& h);
-
-/// "+1 x G0, -2 x G3" for a class vector ("no generator" when zero).
-std::string DescribeClass(const std::vector<int>& homology);
 
 /// The generators as closed polylines (point data TriangleId, Barycentric; cell data
 /// GeneratorId, Shortened: 0 for the tree-cotree loops, 1 for their shortened versions) into
