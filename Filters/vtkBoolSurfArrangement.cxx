@@ -25,6 +25,8 @@ struct vtkBoolSurfArrangement::Internals
   /// The homology generators' field arrays, written once per surface (its basis).
   const boolsurf::HomologyBasis* GeneratorBasis = nullptr;
   vtkNew<vtkFieldData> GeneratorArrays;
+  /// The refined surface's big arrays, reused when no output holds them any more.
+  boolsurf::RefinedSurfaceArrays Arrays;
   /// Results handed downstream; an edit reuses the buffers of one no output holds any more.
   boolsurf::ResultPool<boolsurf::ArrangementResult> Results;
 };
@@ -61,6 +63,7 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     return false;
   }
+  this->Internal->Arrays.DetachIdleResults();
   std::shared_ptr<boolsurf::ArrangementResult> result = this->Internal->Results.Acquire();
   result->Surface = *surface;
   std::vector<boolsurf::TracedCurve>& curves = result->Curves;
@@ -93,8 +96,14 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     return true;
   }
-  if (!boolsurf::ArrangeCurves(
-        *surface, curves, this->NumberOfThreads, result->Arrangement, output, patches, error))
+  if (!boolsurf::ArrangeCurves(*surface,
+        curves,
+        this->NumberOfThreads,
+        result->Arrangement,
+        output,
+        patches,
+        error,
+        &this->Internal->Arrays))
   {
     const boolsurf::Arrangement& arr = result->Arrangement;
     if (arr.FailedCurve >= 0)

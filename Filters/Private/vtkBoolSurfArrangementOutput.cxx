@@ -4,6 +4,7 @@
 
 #include "Labeling/ArrangementLabelingInput.h"
 #include "vtkBoolSurfAttributeTransfer.h"
+#include "vtkBoolSurfStageHandoff.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -21,6 +22,7 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 
 namespace boolsurf
 {
@@ -111,13 +113,70 @@ void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+bool Unheld(const RefinedSurfaceArrays::Set& set)
+{
+  for (vtkObjectBase* array : std::initializer_list<vtkObjectBase*>{ set.Coordinates,
+         set.Barycentric,
+         set.CellOffsets,
+         set.Connectivity,
+         set.SourceTriangle,
+         set.TriangleId,
+         set.ArrangementCell })
+  {
+    if (array && array->GetReferenceCount() > 1)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+} // namespace
+
+void RefinedSurfaceArrays::DetachIdleResults()
+{
+  for (Set& set : this->Sets)
+  {
+    if (Unheld(set))
+    {
+      DetachStageResult(set.ArrangementCell);
+    }
+  }
+}
+
+RefinedSurfaceArrays::Set& RefinedSurfaceArrays::Acquire()
+{
+  for (Set& set : this->Sets)
+  {
+    if (Unheld(set))
+    {
+      return set;
+    }
+  }
+  // Two sets: in a chain the labeled output downstream holds the last surface while the next
+  // one is written.
+  constexpr std::size_t Capacity = 2;
+  if (this->Sets.size() < Capacity)
+  {
+    this->Sets.emplace_back();
+    return this->Sets.back();
+  }
+  Set& replaced = this->Sets[this->Next];
+  this->Next = (this->Next + 1) % Capacity;
+  replaced = Set(); // its arrays live on in their holders only
+  return replaced;
+}
+
+//------------------------------------------------------------------------------
 bool ArrangeCurves(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   int threads,
   Arrangement& arrangement,
   vtkPolyData* refined,
   vtkPolyData* patches,
-  std::string& error)
+  std::string& error,
+  RefinedSurfaceArrays* arrays)
 {
   ArrangementOptions options;
   options.Threads = threads;
@@ -126,7 +185,7 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
     error = "Arrangement failed: " + error;
     return false;
   }
-  WriteArrangementSurface(surface, curves, arrangement, refined, threads);
+  WriteArrangementSurface(surface, curves, arrangement, refined, threads, arrays);
   if (patches)
   {
     WriteArrangementPatches(arrangement, refined, patches);
@@ -139,7 +198,8 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   const Arrangement& arr,
   vtkPolyData* output,
-  int threads)
+  int threads,
+  RefinedSurfaceArrays* arrays)
 {
   output->Initialize();
   // Bulk copies into the arrays VTK stores (Vec3 is three packed doubles; a triangle list is a
@@ -151,24 +211,39 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   static_assert(sizeof(std::array<int, 3>) == 3 * sizeof(int), "triangles must be packed ints");
   const vtkIdType np = static_cast<vtkIdType>(arr.Positions.size());
   const vtkIdType nt = static_cast<vtkIdType>(arr.Triangles.size());
-  vtkNew<vtkDoubleArray> coordinates;
-  coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(np);
-  vtkNew<vtkIdTypeArray> cellOffsets, connectivity;
-  cellOffsets->SetNumberOfTuples(nt + 1);
-  connectivity->SetNumberOfTuples(3 * nt);
-  vtkSmartPointer<vtkIntArray> cellOf = IntArray(boolsurf::names::ArrangementCell, {});
-  cellOf->SetNumberOfTuples(nt);
-  vtkNew<vtkIdTypeArray> source;
-  source->SetName(boolsurf::names::SourceTriangle);
-  source->SetNumberOfTuples(nt);
-  vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName(boolsurf::names::TriangleId);
-  triangleId->SetNumberOfTuples(np);
-  vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName(boolsurf::names::Barycentric);
-  barycentric->SetNumberOfComponents(2);
-  barycentric->SetNumberOfTuples(np);
+  RefinedSurfaceArrays::Set fresh;
+  RefinedSurfaceArrays::Set& set = arrays ? arrays->Acquire() : fresh;
+  const auto make = [](auto& array, const char* name, int components)
+  {
+    if (!array)
+    {
+      array = std::decay_t<decltype(array)>::New();
+    }
+    array->SetName(name);
+    array->SetNumberOfComponents(components);
+  };
+  make(set.Coordinates, nullptr, 3);
+  make(set.CellOffsets, nullptr, 1);
+  make(set.Connectivity, nullptr, 1);
+  make(set.ArrangementCell, boolsurf::names::ArrangementCell, 1);
+  make(set.SourceTriangle, boolsurf::names::SourceTriangle, 1);
+  make(set.TriangleId, boolsurf::names::TriangleId, 1);
+  make(set.Barycentric, boolsurf::names::Barycentric, 2);
+  // Kept capacity is reused: no reallocation unless the surface grew.
+  set.Coordinates->SetNumberOfTuples(np);
+  set.CellOffsets->SetNumberOfTuples(nt + 1);
+  set.Connectivity->SetNumberOfTuples(3 * nt);
+  set.ArrangementCell->SetNumberOfTuples(nt);
+  set.SourceTriangle->SetNumberOfTuples(nt);
+  set.TriangleId->SetNumberOfTuples(np);
+  set.Barycentric->SetNumberOfTuples(np);
+  vtkDoubleArray* coordinates = set.Coordinates;
+  vtkIdTypeArray* cellOffsets = set.CellOffsets;
+  vtkIdTypeArray* connectivity = set.Connectivity;
+  vtkIntArray* cellOf = set.ArrangementCell;
+  vtkIdTypeArray* source = set.SourceTriangle;
+  vtkIdTypeArray* triangleId = set.TriangleId;
+  vtkDoubleArray* barycentric = set.Barycentric;
 
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute(
@@ -209,6 +284,11 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
           }
         });
     });
+  for (vtkAbstractArray* written : std::initializer_list<vtkAbstractArray*>{
+         coordinates, cellOffsets, connectivity, cellOf, source, triangleId, barycentric })
+  {
+    written->Modified(); // new values in an array that may have held an older surface's
+  }
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
   output->SetPoints(points);

@@ -9,6 +9,11 @@
 #include "Selection/RegionBoundary.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
 
+#include <vtkDoubleArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
+#include <vtkSmartPointer.h>
+
 #include <string>
 #include <vector>
 
@@ -19,6 +24,32 @@ class vtkPolyData;
 namespace boolsurf
 {
 
+/// The big arrays of a refined surface (points, polygons, per-point surface points, per-triangle
+/// cells and sources), kept by Surface Arrangement between updates: writing ~100 MB into fresh
+/// memory on a million triangles costs a page fault per 4 KB, and releasing it an unmap; a set
+/// no output holds any more (every array referenced by the pool alone) is written again in
+/// place instead. A set still referenced downstream is never touched.
+class RefinedSurfaceArrays
+{
+public:
+  struct Set
+  {
+    vtkSmartPointer<vtkDoubleArray> Coordinates, Barycentric;
+    vtkSmartPointer<vtkIdTypeArray> CellOffsets, Connectivity, SourceTriangle, TriangleId;
+    vtkSmartPointer<vtkIntArray> ArrangementCell;
+  };
+  /// A set of arrays no one else holds (new ones when every kept set is in use).
+  Set& Acquire();
+  /// Drops the Core results attached to the sets no output holds any more: kept for reuse, they
+  /// must not keep their old arrangement alive (its buffers are reused too). Call before
+  /// acquiring the next result.
+  void DetachIdleResults();
+
+private:
+  std::vector<Set> Sets;
+  std::size_t Next = 0;
+};
+
 /// The arrangement stage: computes the arrangement of `curves` into `arrangement` (reusing
 /// its buffers) and writes port 0 (`refined`) and, when not null, port 1 (`patches`). False
 /// with a message naming the curve and point.
@@ -28,7 +59,8 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
   Arrangement& arrangement,
   vtkPolyData* refined,
   vtkPolyData* patches,
-  std::string& error);
+  std::string& error,
+  RefinedSurfaceArrays* arrays = nullptr);
 
 /// Polys of `output`: `count` triangles, corner k of triangle t at corners[3 t + k] (a bulk
 /// copy into the connectivity array, offsets 0, 3, 6, ...).
@@ -39,12 +71,13 @@ void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData
 
 /// Port 0: refined triangles, ArrangementCell/SourceTriangle, TriangleId/Barycentric, the
 /// input's arrays, and the cell graph, patches and zero-cell candidates as field data.
-/// `threads` (0: all) fill the big arrays concurrently.
+/// `threads` (0: all) fill the big arrays concurrently; `arrays` (may be null) lends them.
 void WriteArrangementSurface(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   const Arrangement& arrangement,
   vtkPolyData* output,
-  int threads = 0);
+  int threads = 0,
+  RefinedSurfaceArrays* arrays = nullptr);
 
 /// Port 1: patches as polylines over the refined surface's points.
 void WriteArrangementPatches(const Arrangement& arrangement,

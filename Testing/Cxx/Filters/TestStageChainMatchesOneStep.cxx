@@ -573,6 +573,8 @@ TEST(StageChain, CopiesKeepTheirAnswer)
     EXPECT_NE(testutils::Area(chain.Boolean->GetOutput()), before);
   }
 
+  // The shallow copy's arrays are as they were: no later update wrote into them.
+  ExpectIdentical(held, deep, "shallow copy against deep copy after three edits");
   for (vtkPolyData* input : { held.GetPointer(), deep.GetPointer() })
   {
     vtkNew<vtkBoolSurfBoolean> boolean;
