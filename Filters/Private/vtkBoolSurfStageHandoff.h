@@ -9,8 +9,9 @@
 // gives the same answer bit for bit, and skips the round trip through arrays.
 //
 // The result lives in the witness array's own vtkInformation. Shallow copies share the array,
-// so they carry the result; an upstream update writes new arrays with a new result, so it never
-// changes what a copy already holds. A witness changed since (its MTime or size differs from
+// so they carry the result; an upstream update writes new arrays with a new result (or arrays
+// that nothing but the filter holds any more, see RefinedSurfaceArrays), so it never changes
+// what a copy already holds. A witness changed since (its MTime or size differs from
 // when the result was attached, e.g. edited in a script or deep-copied into another array), or
 // an input read from a file, has no usable result: the downstream stage reads the arrays.
 #ifndef vtkBoolSurfStageHandoff_h
