@@ -217,8 +217,8 @@ void ReadControlCurves(vtkPolyData* curves,
             ok = false;
             break;
           }
-          sp =
-            PointInTriangle(mesh, static_cast<int>(triangle), { closest[0], closest[1], closest[2] });
+          sp = PointInTriangle(
+            mesh, static_cast<int>(triangle), { closest[0], closest[1], closest[2] });
         }
         curve.Points.push_back(sp);
         curve.PointIds.push_back(pid);
