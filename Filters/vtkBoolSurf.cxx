@@ -350,12 +350,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     {
       return false;
     }
-    const int component = labeling.CellComponent.empty() ? 0 : labeling.CellComponent[zero];
-    if (static_cast<int>(labeling.ZeroCells.size()) <= component)
-    {
-      labeling.ZeroCells.resize(component + 1, -1);
-    }
-    labeling.ZeroCells[component] = zero;
+    labeling.SetZeroCell(zero);
   }
   in.Labels = boolsurf::LabelCells(labeling);
   std::string warning = boolsurf::InconsistencyWarning(in.Labels);

@@ -82,6 +82,17 @@ std::vector<Crossing> GroupCrossings(const LabelingInput& input)
 } // namespace
 
 //------------------------------------------------------------------------------
+void LabelingInput::SetZeroCell(int cell)
+{
+  const int component = this->CellComponent.empty() ? 0 : this->CellComponent[cell];
+  if (static_cast<int>(this->ZeroCells.size()) <= component)
+  {
+    this->ZeroCells.resize(component + 1, -1);
+  }
+  this->ZeroCells[component] = cell;
+}
+
+//------------------------------------------------------------------------------
 LabelingResult LabelCells(const LabelingInput& input)
 {
   const int nc = input.NumberOfCells;

@@ -45,6 +45,9 @@ struct LabelingInput
   /// Zero cell of each component, or -1: then every shape's labels in that component are
   /// shifted so their minimum is 0 (the closed-surface heuristic of the paper).
   std::vector<int> ZeroCells;
+
+  /// Makes `cell` the zero cell of its component (a user's ZeroCellPoint).
+  void SetZeroCell(int cell);
 };
 
 struct LabelConflict

@@ -70,6 +70,37 @@ std::vector<int> ReadInts(vtkFieldData* fd, const char* name, int comps = 1)
   return v;
 }
 
+// A triangle list as VTK cell arrays, sized by the caller: offsets 0, 3, 6, ... and the
+// corners.
+void FillTriangleArrays(const int* corners,
+  vtkIdType count,
+  vtkIdTypeArray* offsets,
+  vtkIdTypeArray* connectivity)
+{
+  vtkIdType* offset = offsets->GetPointer(0);
+  for (vtkIdType t = 0; t <= count; ++t)
+  {
+    offset[t] = 3 * t;
+  }
+  std::copy_n(corners, 3 * count, connectivity->GetPointer(0));
+}
+
+// Surface points as TriangleId/Barycentric values, in arrays sized by the caller.
+void FillSurfacePointArrays(const std::vector<SurfacePoint>& points,
+  vtkIdTypeArray* triangleId,
+  vtkDoubleArray* barycentric)
+{
+  vtkIdType* tid = triangleId->GetPointer(0);
+  double* uv = barycentric->GetPointer(0);
+  const vtkIdType np = static_cast<vtkIdType>(points.size());
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    tid[i] = points[i].Triangle;
+    uv[2 * i] = points[i].U;
+    uv[2 * i + 1] = points[i].V;
+  }
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -78,12 +109,7 @@ void SetTriangles(const int* corners, vtkIdType count, vtkPolyData* output)
   vtkNew<vtkIdTypeArray> offsets, connectivity;
   offsets->SetNumberOfTuples(count + 1);
   connectivity->SetNumberOfTuples(3 * count);
-  vtkIdType* offset = offsets->GetPointer(0);
-  for (vtkIdType t = 0; t <= count; ++t)
-  {
-    offset[t] = 3 * t;
-  }
-  std::copy_n(corners, 3 * count, connectivity->GetPointer(0));
+  FillTriangleArrays(corners, count, offsets, connectivity);
   vtkNew<vtkCellArray> polys;
   polys->SetData(offsets, connectivity);
   output->SetPolys(polys);
@@ -100,14 +126,7 @@ void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData
   barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   barycentric->SetNumberOfTuples(np);
-  vtkIdType* tid = triangleId->GetPointer(0);
-  double* uv = barycentric->GetPointer(0);
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    tid[i] = points[i].Triangle;
-    uv[2 * i] = points[i].U;
-    uv[2 * i + 1] = points[i].V;
-  }
+  FillSurfacePointArrays(points, triangleId, barycentric);
   pointData->AddArray(triangleId);
   pointData->AddArray(barycentric);
 }
@@ -258,31 +277,15 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
         },
         [&]
         {
-          vtkIdType* offset = cellOffsets->GetPointer(0);
-          for (vtkIdType t = 0; t <= nt; ++t)
-          {
-            offset[t] = 3 * t;
-          }
-          std::copy_n(reinterpret_cast<const int*>(arr.Triangles.data()),
-            3 * nt,
-            connectivity->GetPointer(0));
+          FillTriangleArrays(
+            reinterpret_cast<const int*>(arr.Triangles.data()), nt, cellOffsets, connectivity);
         },
         [&]
         {
           std::copy_n(arr.TriangleCell.data(), nt, cellOf->GetPointer(0));
           std::copy_n(arr.SourceTriangle.data(), nt, source->GetPointer(0));
         },
-        [&]
-        {
-          vtkIdType* tid = triangleId->GetPointer(0);
-          double* uv = barycentric->GetPointer(0);
-          for (vtkIdType i = 0; i < np; ++i)
-          {
-            tid[i] = arr.PointSurface[i].Triangle;
-            uv[2 * i] = arr.PointSurface[i].U;
-            uv[2 * i + 1] = arr.PointSurface[i].V;
-          }
-        });
+        [&] { FillSurfacePointArrays(arr.PointSurface, triangleId, barycentric); });
     });
   for (vtkAbstractArray* written : std::initializer_list<vtkAbstractArray*>{
          coordinates, cellOffsets, connectivity, cellOf, source, triangleId, barycentric })

@@ -146,12 +146,7 @@ bool LabelArrangement(vtkPolyData* input,
       {
         return false;
       }
-      const int comp = in.CellComponent.empty() ? 0 : in.CellComponent[zero];
-      if (static_cast<int>(in.ZeroCells.size()) <= comp)
-      {
-        in.ZeroCells.resize(comp + 1, -1);
-      }
-      in.ZeroCells[comp] = zero;
+      in.SetZeroCell(zero);
     }
   }
   else if (!ReadArrangementFields(input, fields, error))
@@ -182,13 +177,7 @@ bool LabelArrangement(vtkPolyData* input,
       error = "no surface cell found near ZeroCellPoint";
       return false;
     }
-    const int zero = static_cast<int>(cellOf->GetComponent(cell, 0));
-    const int comp = in.CellComponent.empty() ? 0 : in.CellComponent[zero];
-    if (static_cast<int>(in.ZeroCells.size()) <= comp)
-    {
-      in.ZeroCells.resize(comp + 1, -1);
-    }
-    in.ZeroCells[comp] = zero;
+    in.SetZeroCell(static_cast<int>(cellOf->GetComponent(cell, 0)));
   }
   labels = LabelCells(in);
 
