@@ -53,14 +53,6 @@ bool StrategyFromText(std::string text, ResolveStrategy& out)
   return false;
 }
 
-double BoundsDiagonal(vtkPolyData* pd)
-{
-  double b[6];
-  pd->GetBounds(b);
-  return std::sqrt(
-    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-}
-
 void WriteResolved(const TriangleMesh& mesh, const ResolveResult& result, vtkPolyData* output)
 {
   vtkNew<vtkPoints> points;
@@ -207,7 +199,7 @@ bool ResolveControlCurves(vtkSurfaceCache& cache,
   const vtkSurfaceInput& surface = cache.GetCurrent();
   const TriangleMesh& mesh = *surface.Mesh;
   ControlCurveOptions controlOptions;
-  controlOptions.MaximumDistance = options.ProjectionTolerance * BoundsDiagonal(surface.Triangles);
+  controlOptions.MaximumDistance = options.ProjectionTolerance * surface.Triangles->GetLength();
   std::vector<ControlCurve> controls;
   std::vector<std::string> problems;
   ReadControlCurves(

@@ -24,14 +24,6 @@ namespace boolsurf
 namespace
 {
 
-double BoundsDiagonal(vtkPolyData* pd)
-{
-  double b[6];
-  pd->GetBounds(b);
-  return std::sqrt(
-    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-}
-
 vtkSmartPointer<vtkIntArray> NewIntArray(const char* name)
 {
   auto a = vtkSmartPointer<vtkIntArray>::New();
@@ -208,7 +200,7 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   const vtkSurfaceInput& surface = cache.GetCurrent();
   const TriangleMesh& mesh = *surface.Mesh;
   ControlCurveOptions controlOptions;
-  controlOptions.MaximumDistance = options.ProjectionTolerance * BoundsDiagonal(surface.Triangles);
+  controlOptions.MaximumDistance = options.ProjectionTolerance * surface.Triangles->GetLength();
   std::vector<ControlCurve> controls;
   ReadControlCurves(
     controlCurves,
