@@ -438,8 +438,11 @@ void AssembleBoundaryLoops(const std::function<const ControlSubCurve*(int)>& pat
       sub.Reversed = loop.Reversed[k] != 0;
       if (sub.Reversed)
       {
-        std::reverse(sub.Points.begin(), sub.Points.end());
-        std::reverse(sub.Positions.begin(), sub.Positions.end());
+        // A whole closed curve lists its points without the closing repeat: reversed, it
+        // must still start at its first point (a spline's anchor, not the handle before it).
+        const std::ptrdiff_t keep = sub.Whole ? 1 : 0;
+        std::reverse(sub.Points.begin() + keep, sub.Points.end());
+        std::reverse(sub.Positions.begin() + keep, sub.Positions.end());
       }
       // Patches also end where an open curve or a curve of no consequence crosses: pieces of
       // one curve that follow each other are one sub-curve.

@@ -727,3 +727,92 @@ TEST(BoundaryControlCurves, StageFiltersGiveTheOneStepAnswer)
   ExpectSameCurves(
     bsc->GetBoundaryControlCurvesOutput(), oneStep->GetBoundaryControlCurvesOutput());
 }
+
+TEST(BoundaryControlCurves, ReversedWholeSplineLoopStartsAtAnAnchor)
+{
+  // A clockwise closed spline that meets no other curve bounds its region on its right: port 2
+  // gives it whole and reversed. Its points must still read anchor, handle, handle, anchor,
+  // ... from the spline's first anchor, so that tracing them again gives the region's
+  // boundary (starting at a handle, they were another curve, 0.028 away).
+  vtkSmartPointer<vtkPolyData> mesh = testutils::ToPolyData(boolsurf::MakeFlatSquare(20));
+  ControlPolygon spline;
+  spline.ShapeId = 0;
+  spline.Type = 1;
+  const double r = 0.2, k = 0.5523 * r; // four cubic segments close to a circle
+  const Point2 o = { 0.35, 0.4 };
+  // Clockwise: anchors at 0, -90, -180, -270 degrees, each followed by its two handles.
+  const std::vector<Point2> c = { { o[0] + r, o[1] },
+    { o[0] + r, o[1] - k },
+    { o[0] + k, o[1] - r },
+    { o[0], o[1] - r },
+    { o[0] - k, o[1] - r },
+    { o[0] - r, o[1] - k },
+    { o[0] - r, o[1] },
+    { o[0] - r, o[1] + k },
+    { o[0] - k, o[1] + r },
+    { o[0], o[1] + r },
+    { o[0] + k, o[1] + r },
+    { o[0] + r, o[1] + k } };
+  for (const Point2& p : c)
+  {
+    spline.Points.push_back({ p[0], p[1], 0.0 });
+  }
+  ControlPolygon triangle;
+  triangle.ShapeId = 1;
+  triangle.Points = { { 0.65, 0.6, 0 }, { 0.9, 0.6, 0 }, { 0.8, 0.85, 0 } };
+  for (int fillRule : { 0, 1 })
+  {
+    SCOPED_TRACE("fill rule " + std::to_string(fillRule));
+    vtkNew<vtkBoolSurf> f;
+    f->SetInputData(0, mesh);
+    f->SetInputData(1, testutils::ToCurves({ spline, triangle }));
+    f->SetOperation(0); // union
+    f->SetFillRule(fillRule);
+    ASSERT_EQ(testutils::ErrorsOf(f), "");
+    vtkPolyData* out = f->GetBoundaryControlCurvesOutput();
+    vtkDataArray* type = out->GetCellData()->GetArray("CurveType");
+    vtkDataArray* reversed = out->GetCellData()->GetArray("Reversed");
+    vtkDataArray* closed = out->GetCellData()->GetArray("Closed");
+    ASSERT_TRUE(type && reversed && closed);
+    int splines = 0;
+    auto it = vtk::TakeSmartPointer(out->GetLines()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      const vtkIdType cell = it->GetCurrentCellId();
+      if (type->GetComponent(cell, 0) != 1)
+      {
+        continue;
+      }
+      ++splines;
+      EXPECT_EQ(reversed->GetComponent(cell, 0), 1);
+      EXPECT_EQ(closed->GetComponent(cell, 0), 1);
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      // Whole closed loop: 12 control points and the closing repeat, walked the other way
+      // from the first anchor: A0, h11, h10, A3, h8, h7, A2, ..., h1, A0.
+      ASSERT_EQ(n, 13);
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        const Point2& expected = c[static_cast<std::size_t>((12 - i) % 12)];
+        EXPECT_NEAR(out->GetPoint(ids[i])[0], expected[0], 1e-12) << "point " << i;
+        EXPECT_NEAR(out->GetPoint(ids[i])[1], expected[1], 1e-12) << "point " << i;
+      }
+    }
+    EXPECT_EQ(splines, 1);
+    // Tracing port 2 again gives the region's boundary, point for point.
+    vtkPolyData* boundary = f->GetBoundaryOutput();
+    auto again = Retrace(mesh, out, 4);
+    std::vector<Point2> a, b;
+    for (vtkIdType p = 0; p < boundary->GetNumberOfPoints(); ++p)
+    {
+      a.push_back({ boundary->GetPoint(p)[0], boundary->GetPoint(p)[1] });
+    }
+    for (vtkIdType p = 0; p < again->GetNumberOfPoints(); ++p)
+    {
+      b.push_back({ again->GetPoint(p)[0], again->GetPoint(p)[1] });
+    }
+    EXPECT_TRUE(SameSets(a, b, 1e-9));
+    EXPECT_NEAR(PolylineLength(again), PolylineLength(boundary), 1e-9);
+  }
+}

@@ -508,6 +508,71 @@ TEST(SceneWriter, SavedBoundaryBoundsTheSameRegion)
   }
 }
 
+TEST(SceneWriter, SavedReversedSplineLoopBoundsTheSameRegion)
+{
+  // A clockwise closed spline meeting no other curve comes out of port 2 whole and reversed;
+  // saved and reopened it must bound the same region (it did not while the reversed loop
+  // started at a handle).
+  auto grid = testutils::ToPolyData(boolsurf::MakeFlatSquare(12, 4.0, 0.3, 7));
+  const double r = 0.7, k = 0.5523 * r, x = 1.2, y = 1.3;
+  auto curves = ExactCurves(grid,
+    { { { x + r, y },
+        { x + r, y - k },
+        { x + k, y - r },
+        { x, y - r },
+        { x - k, y - r },
+        { x - r, y - k },
+        { x - r, y },
+        { x - r, y + k },
+        { x - k, y + r },
+        { x, y + r },
+        { x + k, y + r },
+        { x + r, y + k } },
+      { { 2.6, 2.5 }, { 3.6, 2.6 }, { 3.1, 3.6 } } },
+    { 0, 1 },
+    { 1, 0 },
+    { true, true });
+  const fs::path mesh = Scratch() / "jittered-spline.ply";
+  {
+    vtkNew<vtkPLYWriter> ply;
+    ply->SetInputData(grid);
+    ply->SetFileName(mesh.string().c_str());
+    ply->Write();
+  }
+  vtkNew<vtkPLYReader> surface;
+  surface->SetFileName(mesh.string().c_str());
+  surface->Update();
+  for (int operation : { 0, 3 }) // union, xor
+  {
+    SCOPED_TRACE("operation " + std::to_string(operation));
+    vtkNew<vtkBoolSurf> first;
+    first->SetInputConnection(0, surface->GetOutputPort());
+    first->SetInputData(1, curves);
+    first->SetOperation(operation);
+    ASSERT_EQ(testutils::ErrorsOf(first), "");
+    const double area = testutils::Area(first->GetOutput(0));
+    ASSERT_GT(area, 1.0);
+    vtkDataArray* reversed =
+      first->GetBoundaryControlCurvesOutput()->GetCellData()->GetArray("Reversed");
+    ASSERT_TRUE(reversed);
+    ASSERT_EQ(reversed->GetRange(0)[1], 1) << "the spline loop is not reversed: nothing tested";
+    const fs::path file = Scratch() / ("spline-boundary" + std::to_string(operation) + ".json");
+    ASSERT_EQ(
+      WriteScene(first->GetBoundaryControlCurvesOutput(), file, mesh.filename().string()), "");
+    std::string errors;
+    auto reader = ReadScene(file, errors);
+    ASSERT_EQ(errors, "");
+    vtkNew<vtkBoolSurf> again;
+    again->SetInputConnection(0, reader->GetOutputPort(0));
+    again->SetInputConnection(1, reader->GetOutputPort(1));
+    again->SetOperationToExpression();
+    again->SetExpression("S0");
+    again->SetFillRule(0);
+    ASSERT_EQ(testutils::ErrorsOf(again), "");
+    EXPECT_NEAR(testutils::Area(again->GetOutput(0)), area, 1e-9 * area);
+  }
+}
+
 TEST(SceneWriter, BadInputIsANamedErrorAndWritesNothing)
 {
   auto grid = FlatGrid();
