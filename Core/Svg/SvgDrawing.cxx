@@ -40,6 +40,17 @@ Vec2 Apply(const Matrix& m, double x, double y)
   return { m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5] };
 }
 
+/// Whether a and b differ only by rounding, relative to the extent of `points`.
+bool SamePoint(const Vec2& a, const Vec2& b, const std::vector<Vec2>& points)
+{
+  double extent = 0;
+  for (const Vec2& p : points)
+  {
+    extent = std::max({ extent, std::abs(p.x - b.x), std::abs(p.y - b.y) });
+  }
+  return std::abs(a.x - b.x) <= 1e-12 * extent && std::abs(a.y - b.y) <= 1e-12 * extent;
+}
+
 /// Receives svgpp's events for the whole document (one context: element state on stacks).
 class Collector
 {
@@ -103,6 +114,34 @@ public:
     this->Current.Points.push_back(this->Map(x, y));
   }
   void path_close_subpath() { this->EndSubpath(true); }
+
+  /// A circle or ellipse: four quarter arcs as cubics, from (cx + rx, cy) towards +y as SVG
+  /// draws them (svgpp's own conversion gives six arcs and a closing sliver).
+  void set_circle(double cx, double cy, double r) { this->set_ellipse(cx, cy, r, r); }
+  void set_ellipse(double cx, double cy, double rx, double ry)
+  {
+    if (!(rx > 0) || !(ry > 0))
+    {
+      return; // SVG does not render an ellipse with a zero radius
+    }
+    // Handle length of a quarter arc: 4/3 tan(pi/8).
+    const double k = 4.0 / 3.0 * std::tan(std::atan(1.0) / 2.0);
+    const double cosines[4] = { 1, 0, -1, 0 }, sines[4] = { 0, 1, 0, -1 };
+    this->Current.Points.clear();
+    for (int q = 0; q < 4; ++q)
+    {
+      const int n = (q + 1) % 4;
+      const double x0 = cx + rx * cosines[q], y0 = cy + ry * sines[q];
+      const double x1 = cx + rx * cosines[n], y1 = cy + ry * sines[n];
+      this->Current.Points.push_back(this->Map(x0, y0));
+      this->Current.Points.push_back(this->Map(x0 - k * rx * sines[q], y0 + k * ry * cosines[q]));
+      this->Current.Points.push_back(this->Map(x1 + k * rx * sines[n], y1 - k * ry * cosines[n]));
+    }
+    this->Current.Closed = true;
+    this->Path.Subpaths.push_back(this->Current);
+    this->Current = SvgSubpath();
+    this->path_exit();
+  }
   void path_exit()
   {
     this->EndSubpath(false);
@@ -129,8 +168,10 @@ private:
       if (close)
       {
         // Back to the start by a straight piece if not there, then the start is not repeated.
+        // An end within rounding of the start (arcs summing to a full turn) is the start: a
+        // straight piece there would be a segment of no length.
         const Vec2 a = p.back(), b = p.front();
-        if (a.x != b.x || a.y != b.y)
+        if (!SamePoint(a, b, p))
         {
           this->path_line_to_mapped(b);
         }
@@ -228,6 +269,19 @@ using ProcessedElements = boost::mpl::set<svgpp::tag::element::svg,
   svgpp::tag::element::polyline,
   svgpp::tag::element::polygon>::type;
 
+/// Rectangles, lines, polylines and polygons as svgpp's paths; circles and ellipses as their
+/// attributes (Collector::set_ellipse draws them).
+struct ShapesPolicy
+{
+  using convert_to_path = boost::mpl::set4<svgpp::tag::element::rect,
+    svgpp::tag::element::line,
+    svgpp::tag::element::polyline,
+    svgpp::tag::element::polygon>;
+  using collect_attributes =
+    boost::mpl::set2<svgpp::tag::element::circle, svgpp::tag::element::ellipse>;
+  static const bool convert_only_rounded_rect_to_path = false;
+};
+
 using ProcessedAttributes =
   boost::mpl::insert<boost::mpl::insert<svgpp::traits::shapes_attributes_by_element,
                        svgpp::tag::attribute::transform>::type,
@@ -247,7 +301,7 @@ bool Traverse(xmlDocPtr doc, SvgDrawing& out, std::string& error)
     svgpp::document_traversal<svgpp::processed_elements<ProcessedElements>,
       svgpp::processed_attributes<ProcessedAttributes>,
       svgpp::path_policy<svgpp::policy::path::minimal>,
-      svgpp::basic_shapes_policy<svgpp::policy::basic_shapes::all_to_path>,
+      svgpp::basic_shapes_policy<ShapesPolicy>,
       svgpp::error_policy<LenientErrors>>::load_document(root, collector);
   }
   catch (const std::exception& e)

@@ -13,6 +13,8 @@
 #include <vtkPointData.h>
 #include <vtkStringArray.h>
 
+#include <vtkMath.h>
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -102,6 +104,22 @@ TEST(SvgMapperFilter, OutputAndBadInput)
   ASSERT_EQ(testutils::ErrorsOf(mapper), "");
   vtkPolyData* out = mapper->GetOutput();
   ASSERT_EQ(out->GetNumberOfCells(), 3); // outer square, hole, circle
+  // The circle is a closed spline of 4 cubic segments: 12 control points and the closing
+  // repeat, none repeated before (it was 7 segments, the first 4 control points coincident).
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    out->GetCellPoints(2, n, ids);
+    ASSERT_EQ(n, 13);
+    for (vtkIdType i = 0; i + 1 < n; ++i)
+    {
+      double a[3], b[3];
+      out->GetPoint(ids[i], a);
+      out->GetPoint(ids[i + 1], b);
+      EXPECT_GT(std::sqrt(vtkMath::Distance2BetweenPoints(a, b)), 1e-3)
+        << "control points " << i << " and " << i + 1 << " of the circle coincide";
+    }
+  }
   vtkDataArray* shape = out->GetCellData()->GetArray("ShapeId");
   EXPECT_EQ(shape->GetComponent(0, 0), shape->GetComponent(1, 0)); // a glyph with a hole
   EXPECT_NE(shape->GetComponent(0, 0), shape->GetComponent(2, 0));

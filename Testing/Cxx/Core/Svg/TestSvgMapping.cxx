@@ -262,3 +262,47 @@ TEST(SvgSurfaceMap, BoundaryAndBadCenterAreNamed)
   EXPECT_FALSE(MapSvgOntoSurface(mesh, d, options, curves, warnings, error));
   EXPECT_NE(error.find("triangle 99"), std::string::npos) << error;
 }
+
+TEST(SvgDrawing, CircleAndEllipseAreFourCubicSegments)
+{
+  // A circle is four quarter arcs: 12 control points of a closed spline, its anchors on the
+  // circle at 90 degrees from each other and no segment of zero length (svgpp draws the
+  // circle from a move to its first point, a zero-length line and arcs).
+  using namespace boolsurf;
+  for (const char* element :
+    { "<circle cx='5' cy='7' r='3'/>", "<ellipse cx='5' cy='7' rx='3' ry='3'/>" })
+  {
+    SCOPED_TRACE(element);
+    SvgDrawing d;
+    std::string error;
+    ASSERT_TRUE(ParseSvg(Svg(element), d, error)) << error;
+    ASSERT_EQ(d.Paths.size(), 1u);
+    ASSERT_EQ(d.Paths[0].Subpaths.size(), 1u);
+    const SvgSubpath& s = d.Paths[0].Subpaths[0];
+    EXPECT_TRUE(s.Closed);
+    ASSERT_EQ(s.Points.size(), 12u);
+    for (std::size_t k = 0; k < 12; ++k)
+    {
+      const Vec2& p = s.Points[k];
+      const Vec2& q = s.Points[(k + 1) % 12];
+      EXPECT_GT(std::hypot(p.x - q.x, p.y - q.y), 1.0) << "control points " << k << ", " << k + 1;
+      if (k % 3 == 0)
+      {
+        EXPECT_NEAR(std::hypot(p.x - 5, p.y - 7), 3, 1e-12) << "anchor " << k / 3;
+      }
+    }
+  }
+  // Two half arcs closed by Z end within rounding of their start: no closing sliver.
+  SvgDrawing d;
+  std::string error;
+  ASSERT_TRUE(ParseSvg(Svg("<path d='M8 7 A3 3 0 0 1 2 7 A3 3 0 0 1 8 7 Z'/>"), d, error)) << error;
+  const SvgSubpath& s = d.Paths.at(0).Subpaths.at(0);
+  const std::size_t n = s.Points.size();
+  ASSERT_EQ(n % 3, 0u);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const Vec2& p = s.Points[k];
+    const Vec2& q = s.Points[(k + 1) % n];
+    EXPECT_GT(std::hypot(p.x - q.x, p.y - q.y), 1e-3) << "control points " << k << ", " << k + 1;
+  }
+}
