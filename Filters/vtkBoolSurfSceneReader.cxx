@@ -39,6 +39,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <unordered_map>
 #include <vector>
 
 vtkStandardNewMacro(vtkBoolSurfSceneReader);
@@ -46,7 +47,8 @@ vtkStandardNewMacro(vtkBoolSurfSceneReader);
 namespace
 {
 namespace fs = std::filesystem;
-using json = nlohmann::json;
+// Objects keep their keys in document order (NumberSpellings counts numbers in that order).
+using json = nlohmann::ordered_json;
 
 /// A problem with the scene, already worded for the user (the file name is added later).
 struct SceneError : std::runtime_error
@@ -290,6 +292,105 @@ std::string Where(const std::string& key, std::size_t index)
   return "'" + key + "'[" + std::to_string(index) + "]";
 }
 
+/// How the floating-point numbers of the scene being read were spelled in the file, so that
+/// messages quote "1e20" as written and not as nlohmann re-prints it ("1e+20").
+struct NumberSpellings
+{
+  const json* Root = nullptr;
+  std::vector<std::string> Lexemes; ///< in document order
+  /// Each floating-point node's place in document order, built on the first message that
+  /// needs it (objects keep their keys in document order: `json` is nlohmann::ordered_json).
+  std::unordered_map<const json*, std::size_t> Order;
+  bool Ordered = false;
+
+  const std::string* Of(const json& node)
+  {
+    if (!this->Ordered)
+    {
+      this->Ordered = true;
+      std::vector<const json*> stack{ this->Root };
+      while (!stack.empty())
+      {
+        const json* n = stack.back();
+        stack.pop_back();
+        if (n->is_number_float())
+        {
+          this->Order.emplace(n, this->Order.size());
+        }
+        else if (n->is_structured())
+        {
+          for (auto it = n->crbegin(); it != n->crend(); ++it)
+          {
+            stack.push_back(&*it);
+          }
+        }
+      }
+      // A key given twice keeps one value: the places no longer match the lexemes.
+      if (this->Order.size() != this->Lexemes.size())
+      {
+        this->Order.clear();
+      }
+    }
+    auto it = this->Order.find(&node);
+    return it == this->Order.end() ? nullptr : &this->Lexemes[it->second];
+  }
+};
+
+/// The spellings of the scene RequestData is reading, on this thread: Brief is called deep in
+/// the scene's readers.
+thread_local NumberSpellings* CurrentSpellings = nullptr;
+
+/// nlohmann's DOM builder that also keeps each floating-point number's lexeme.
+class SpellingDomParser : public nlohmann::detail::json_sax_dom_parser<json>
+{
+public:
+  SpellingDomParser(json& root, std::vector<std::string>& lexemes)
+    : json_sax_dom_parser(root)
+    , Lexemes(lexemes)
+  {
+  }
+  bool number_float(double value, const std::string& lexeme)
+  {
+    this->Lexemes.push_back(lexeme);
+    return json_sax_dom_parser::number_float(value, lexeme);
+  }
+
+private:
+  std::vector<std::string>& Lexemes;
+};
+
+/// `value` as JSON text, numbers as spelled in the file; `value` is known to be small and
+/// shallow (Brief checks), so recursion is bounded.
+void AppendAsWritten(const json& value, std::string& text)
+{
+  if (value.is_number_float() && CurrentSpellings)
+  {
+    if (const std::string* lexeme = CurrentSpellings->Of(value))
+    {
+      text += *lexeme;
+      return;
+    }
+  }
+  if (value.is_array() || value.is_object())
+  {
+    text += value.is_array() ? '[' : '{';
+    bool first = true;
+    for (auto it = value.begin(); it != value.end(); ++it)
+    {
+      text += first ? "" : ",";
+      first = false;
+      if (value.is_object())
+      {
+        text += json(it.key()).dump(-1, ' ', false, json::error_handler_t::replace) + ":";
+      }
+      AppendAsWritten(*it, text);
+    }
+    text += value.is_array() ? ']' : '}';
+    return;
+  }
+  text += value.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 /// A JSON value for a message: as written when small and shallow; else described by its kind
 /// and size (dump() recurses once per nesting level: a value nested 10^5 deep would overflow
 /// the stack).
@@ -318,7 +419,8 @@ std::string Brief(const json& value)
   }
   if (small)
   {
-    std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
+    std::string text;
+    AppendAsWritten(value, text);
     if (text.size() <= 120)
     {
       return text;
@@ -578,7 +680,7 @@ std::vector<int> CurveTypes(const json& scene, std::size_t polygons)
     const long long t = AsIndex((*it)[i], Where("curve_types", i));
     if (t > 1)
     {
-      throw SceneError(Where("curve_types", i) + " is " + std::to_string(t) +
+      throw SceneError(Where("curve_types", i) + " is " + Brief((*it)[i]) +
         ": 0 geodesic polygon, 1 cubic Bezier spline");
     }
     types[i] = static_cast<int>(t);
@@ -618,7 +720,7 @@ std::vector<int> PolygonShapes(const json& scene, std::size_t polygons, int& num
       const long long p = AsIndex(shape[k], where);
       if (p < 0 || p >= static_cast<long long>(polygons))
       {
-        throw SceneError(where + " names polygon " + std::to_string(p) + ", but the scene has " +
+        throw SceneError(where + " names polygon " + Brief(shape[k]) + ", but the scene has " +
           std::to_string(polygons) + " polygons");
       }
       if (shapeOf[p] >= 0 && shapeOf[p] != static_cast<int>(s))
@@ -654,10 +756,11 @@ void ReadOperations(const json& scene, vtkFieldData* fd)
     }
     a.push_back(static_cast<int>(AsIndex(Required(op, "a", where), where + ".a")));
     b.push_back(static_cast<int>(AsIndex(Required(op, "b", where), where + ".b")));
-    const long long t = AsIndex(Required(op, "type", where), where + ".type");
+    const json& typeValue = Required(op, "type", where);
+    const long long t = AsIndex(typeValue, where + ".type");
     if (t < 0 || t > 3)
     {
-      throw SceneError(where + ".type is " + std::to_string(t) +
+      throw SceneError(where + ".type is " + Brief(typeValue) +
         ": 0 union, 1 difference, 2 intersection, 3 symmetric difference");
     }
     type.push_back(static_cast<int>(t));
@@ -819,7 +922,7 @@ void ReadSurfaceScene(const json& scene,
       const long long p = AsIndex(poly[k], where);
       if (p < 0 || p >= static_cast<long long>(points.size()))
       {
-        throw SceneError(where + " names point " + std::to_string(p) + ", but the scene has " +
+        throw SceneError(where + " names point " + Brief(poly[k]) + ", but the scene has " +
           std::to_string(points.size()) + " points");
       }
     }
@@ -869,10 +972,11 @@ void ReadSurfaceScene(const json& scene,
     {
       throw SceneError(where + " is " + Brief(p) + ", not {\"face\": f, \"uv\": [u, v]}");
     }
-    const long long face = AsIndex(Required(p, "face", where), where + ".face");
+    const json& faceValue = Required(p, "face", where);
+    const long long face = AsIndex(faceValue, where + ".face");
     if (face < 0 || face >= numberOfTriangles)
     {
-      throw SceneError(where + ".face = " + std::to_string(face) + " is out of range: mesh " +
+      throw SceneError(where + ".face = " + Brief(faceValue) + " is out of range: mesh " +
         out.MeshFile + " has " + std::to_string(numberOfTriangles) + " triangles");
     }
     const json& uv = Required(p, "uv", where);
@@ -978,9 +1082,17 @@ int vtkBoolSurfSceneReader::RequestData(vtkInformation*,
       throw SceneError("cannot open the file");
     }
     json root;
+    NumberSpellings spellings;
+    spellings.Root = &root;
+    struct Guard
+    {
+      explicit Guard(NumberSpellings* s) { CurrentSpellings = s; }
+      ~Guard() { CurrentSpellings = nullptr; }
+    } guard(&spellings);
     try
     {
-      root = json::parse(in);
+      SpellingDomParser parser(root, spellings.Lexemes);
+      json::sax_parse(in, &parser);
     }
     catch (const json::parse_error& e)
     {

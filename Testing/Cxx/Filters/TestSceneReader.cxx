@@ -369,7 +369,20 @@ TEST(SceneReader, AdversarialFilesAreNamedErrors)
     { "opshuge.json",
       R"({"model": "quads.ply", )" + points +
         R"(, "operations": [{"a": 1e300, "b": 1, "type": 0}]})",
-      { "'operations'[0].a is 1e+300, not an integer" } },
+      { "'operations'[0].a is 1e300, not an integer" } },
+    // Numbers are quoted as written in the file, not as re-printed (1e+20, 100.0, 0.25).
+    { "facehuge.json",
+      R"({"model": "quads.ply", "points": [{"face": 1e20, "uv": [0.1, 0.1]},
+          {"face": 1, "uv": [0.1, 0.1]}], "polygons": [[], [0, 1]]})",
+      { "'points'[0].face is 1e20, not an integer" } },
+    { "faceexp.json",
+      R"({"model": "quads.ply", "points": [{"face": 1E2, "uv": [0.1, 0.1]},
+          {"face": 1, "uv": [0.1, 0.1]}], "polygons": [[], [0, 1]]})",
+      { "'points'[0].face = 1E2 is out of range" } },
+    { "uvspelled.json",
+      R"({"model": "quads.ply", "points": [{"face": 0, "uv": [2.5E-1, 0.25, 0.2500]},
+          {"face": 1, "uv": [0.1, 0.1]}], "polygons": [[], [0, 1]]})",
+      { "[2.5E-1,0.25,0.2500]" } },
   };
   // PLY files a scene may name: truncated ASCII, garbage binary, an absent vertex.
   const std::string header =
