@@ -14,6 +14,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -24,6 +25,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 vtkStandardNewMacro(vtkBoolSurfSVGMapper);
 
@@ -98,6 +101,27 @@ bool vtkBoolSurfSVGMapper::Execute(const std::vector<vtkPolyData*>& inputs,
     const int t = static_cast<int>(cell);
     options.Center =
       boolsurf::PointInTriangle(mesh, t, boolsurf::Vec3{ closest[0], closest[1], closest[2] });
+    // A center off the surface is projected, but one far from it is more likely a mistake (a
+    // point in other units, another dataset's coordinates) than a choice: say so. The middle
+    // of the bounding box, ParaView's default, is a deliberate "nearest to the middle".
+    const double diagonal = input->GetLength();
+    const double distance = std::sqrt(dist2);
+    double b[6];
+    input->GetBounds(b);
+    const double middle[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
+    const bool isMiddle =
+      std::sqrt(vtkMath::Distance2BetweenPoints(middle, this->Center)) <= 1e-9 * diagonal;
+    if (distance > 0.01 * diagonal && !isMiddle)
+    {
+      std::ostringstream message;
+      message << "Center (" << this->Center[0] << ", " << this->Center[1] << ", " << this->Center[2]
+              << ") is " << distance << " from the surface (" << std::fixed << std::setprecision(1)
+              << 100 * distance / diagonal << std::defaultfloat << std::setprecision(6)
+              << "% of its bounding-box diagonal): the drawing is centered at the nearest "
+                 "surface point ("
+              << closest[0] << ", " << closest[1] << ", " << closest[2] << "), triangle " << t;
+      warnings.push_back(message.str());
+    }
   }
   // Size: the drawing's farthest bounding-box corner at Radius from the center.
   const double halfW = 0.5 * (drawing.Max[0] - drawing.Min[0]);

@@ -148,3 +148,47 @@ TEST(SvgMapperFilter, OutputAndBadInput)
   EXPECT_NE(testutils::ErrorsOf(mapper).find("CenterTriangleId 100000"), std::string::npos);
   fs::remove(file);
 }
+
+TEST(SvgMapperFilter, FarCenterIsProjectedWithAWarning)
+{
+  // Center (50, 50, 50) on the unit sphere still maps the drawing, around the nearest surface
+  // point, and says how far the center was; a center on the surface, or ParaView's default
+  // (the middle of the bounds), says nothing.
+  auto sphere = testutils::ToPolyData(boolsurf::MakeIcosphere(3));
+  const fs::path file = fs::temp_directory_path() / "boolsurf-svg-far-center.svg";
+  std::ofstream(file) << "<svg xmlns='http://www.w3.org/2000/svg'><rect x='0' y='0' "
+                         "width='10' height='10'/></svg>";
+  auto warningsOf = [&](double x, double y, double z)
+  {
+    vtkNew<vtkBoolSurfSVGMapper> mapper;
+    mapper->SetInputData(sphere);
+    mapper->SetFileName(file.string().c_str());
+    mapper->SetCenter(x, y, z);
+    mapper->SetRadius(0.2);
+    EXPECT_EQ(testutils::ErrorsOf(mapper), "");
+    EXPECT_EQ(mapper->GetOutput()->GetNumberOfCells(), 1);
+    auto* notes = vtkStringArray::SafeDownCast(
+      mapper->GetOutput()->GetFieldData()->GetAbstractArray("SvgWarnings"));
+    std::string text;
+    for (vtkIdType i = 0; notes && i < notes->GetNumberOfValues(); ++i)
+    {
+      text += notes->GetValue(i) + "\n";
+    }
+    // The drawing is around the nearest surface point: its points are on the ray's side.
+    vtkPolyData* out = mapper->GetOutput();
+    double p[3];
+    out->GetPoint(0, p);
+    EXPECT_GE(p[0] * x + p[1] * y + p[2] * z, 0);
+    return text;
+  };
+  const std::string far = warningsOf(50, 50, 50);
+  // |(50, 50, 50)| - 1 = 85.60 (the icosphere's facets are a little inside the unit sphere),
+  // 2471% of the bounding-box diagonal 2 sqrt(3).
+  EXPECT_NE(far.find("Center (50, 50, 50) is 85.6"), std::string::npos) << far;
+  EXPECT_NE(far.find("(2471.3% of its bounding-box diagonal)"), std::string::npos) << far;
+  EXPECT_EQ(warningsOf(0, 0, 1), "");
+  EXPECT_EQ(warningsOf(0, 0, 1.005), ""); // within 1% of the diagonal
+  EXPECT_EQ(warningsOf(0, 0, 0), "");     // the middle of the bounds: ParaView's default
+  EXPECT_NE(warningsOf(0, 0, 1.1).find("is 0.1"), std::string::npos);
+  fs::remove(file);
+}
