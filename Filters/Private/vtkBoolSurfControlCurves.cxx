@@ -8,10 +8,15 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkGenericCell.h>
+#include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 
 #include <cmath>
@@ -47,6 +52,82 @@ bool IsIndex(double value)
   return value >= 0 && value <= std::numeric_limits<int>::max() && value == std::floor(value);
 }
 
+/// The control curves of traced curves (Trace Surface Curves' output, Surface Curves' Traced
+/// Curves port), from the control points they carry in field data (ControlOffsets,
+/// ControlTriangleId, ControlBarycentric; cell data Closed, ShapeId, CurveType, CurveId); null
+/// when `curves` is not traced curves.
+vtkSmartPointer<vtkPolyData> ControlCurvesOfTraced(vtkPolyData* curves, const TriangleMesh& mesh)
+{
+  vtkFieldData* fd = curves->GetFieldData();
+  vtkDataArray* offsets = fd ? fd->GetArray("ControlOffsets") : nullptr;
+  vtkDataArray* triangles = fd ? fd->GetArray("ControlTriangleId") : nullptr;
+  vtkDataArray* uv = fd ? fd->GetArray("ControlBarycentric") : nullptr;
+  vtkDataArray* closed = curves->GetCellData()->GetArray(boolsurf::names::Closed);
+  const vtkIdType cells = curves->GetNumberOfCells();
+  if (!offsets || !triangles || !uv || uv->GetNumberOfComponents() != 2 || !closed ||
+    offsets->GetNumberOfTuples() != cells + 1 || closed->GetNumberOfTuples() != cells ||
+    curves->GetNumberOfLines() != cells ||
+    uv->GetNumberOfTuples() != triangles->GetNumberOfTuples())
+  {
+    return nullptr;
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkIdTypeArray> triangleId;
+  triangleId->SetName(boolsurf::names::TriangleId);
+  vtkNew<vtkDoubleArray> barycentric;
+  barycentric->SetName(boolsurf::names::Barycentric);
+  barycentric->SetNumberOfComponents(2);
+  vtkNew<vtkCellArray> lines;
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    const vtkIdType from = static_cast<vtkIdType>(offsets->GetComponent(c, 0));
+    const vtkIdType to = static_cast<vtkIdType>(offsets->GetComponent(c + 1, 0));
+    if (from < 0 || to < from || to > triangles->GetNumberOfTuples())
+    {
+      return nullptr;
+    }
+    const vtkIdType first = points->GetNumberOfPoints();
+    for (vtkIdType k = from; k < to; ++k)
+    {
+      const double t = triangles->GetComponent(k, 0), u = uv->GetComponent(k, 0),
+                   v = uv->GetComponent(k, 1);
+      Vec3 x{ 0, 0, 0 };
+      if (t >= 0 && t < mesh.GetNumberOfTriangles())
+      {
+        x = mesh.Evaluate(static_cast<int>(t), u, v);
+      }
+      points->InsertNextPoint(x.x, x.y, x.z);
+      triangleId->InsertNextValue(static_cast<vtkIdType>(t));
+      barycentric->InsertNextTuple2(u, v);
+    }
+    const bool isClosed = closed->GetComponent(c, 0) != 0 && to - from > 1;
+    lines->InsertNextCell(to - from + (isClosed ? 1 : 0));
+    for (vtkIdType k = 0; k < to - from; ++k)
+    {
+      lines->InsertCellPoint(first + k);
+    }
+    if (isClosed)
+    {
+      lines->InsertCellPoint(first);
+    }
+  }
+  out->SetPoints(points);
+  out->SetLines(lines);
+  out->GetPointData()->AddArray(triangleId);
+  out->GetPointData()->AddArray(barycentric);
+  for (const char* name :
+    { boolsurf::names::ShapeId, boolsurf::names::CurveType, boolsurf::names::CurveId })
+  {
+    if (vtkDataArray* a = curves->GetCellData()->GetArray(name))
+    {
+      out->GetCellData()->AddArray(a);
+    }
+  }
+  return out;
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -63,6 +144,13 @@ void ReadControlCurves(vtkPolyData* curves,
   {
     problems.push_back("the curves input holds no line or polygon cell");
     return;
+  }
+  // Traced curves are read as the control curves they were traced from: either output of
+  // Surface Curves (or Trace Surface Curves' output) gives the same answer.
+  vtkSmartPointer<vtkPolyData> traced = ControlCurvesOfTraced(curves, mesh);
+  if (traced)
+  {
+    curves = traced;
   }
   if (curves->GetNumberOfVerts() + curves->GetNumberOfStrips() > 0)
   {

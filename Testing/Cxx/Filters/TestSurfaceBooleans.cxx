@@ -4,6 +4,7 @@
 #include "vtkBoolSurfArrangement.h"
 #include "vtkBoolSurfBoolean.h"
 #include "vtkBoolSurfLabeling.h"
+#include "vtkBoolSurfSurfaceCurves.h"
 #include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkCommand.h>
@@ -324,4 +325,60 @@ TEST(SurfaceBooleans, OneStepFilterNeverServesAStaleArrangement)
   f->SetResolution(6);
   const double fine = RunArea(f);
   EXPECT_GT(std::abs(fine - coarse), 1e-6);
+}
+
+TEST(SurfaceBooleans, TracedCurvesInputGivesTheControlCurvesAnswer)
+{
+  // Surface Curves has two outputs, Control Curves and Traced Curves; BoolSurf (and Trace
+  // Surface Curves) read traced curves as the control curves they were traced from, so either
+  // output gives the same region, bit for bit: a Bezier spline and a polygon on a sphere.
+  auto sphere = testutils::ToPolyData(boolsurf::MakeIcosphere(3));
+  vtkNew<vtkBoolSurfSurfaceCurves> drawing;
+  drawing->SetInputData(sphere);
+  const double points[][3] = { { 0.6, 0, 0.8 },
+    { 0.4, 0.5, 0.77 },
+    { -0.1, 0.6, 0.79 },
+    { -0.5, 0.2, 0.84 },
+    { -0.4, -0.5, 0.77 },
+    { 0.2, -0.6, 0.77 },
+    { 0.8, 0.3, 0.5 },
+    { 0.3, 0.8, 0.5 },
+    { 0.0, 0.3, 0.95 } };
+  drawing->SetNumberOfPoints(9);
+  for (int i = 0; i < 9; ++i)
+  {
+    drawing->SetPoint(i, points[i][0], points[i][1], points[i][2]);
+  }
+  drawing->SetNumberOfCurveSizes(2);
+  drawing->SetCurveSize(0, 6);
+  drawing->SetCurveSize(1, 3);
+  drawing->SetNumberOfShapeIds(2);
+  drawing->SetShapeId(0, 0);
+  drawing->SetShapeId(1, 1);
+  drawing->SetNumberOfCurveTypes(2);
+  drawing->SetCurveType(0, 1);
+  drawing->SetCurveType(1, 0);
+  for (int operation = 0; operation < 4; ++operation)
+  {
+    SCOPED_TRACE("operation " + std::to_string(operation));
+    vtkNew<vtkBoolSurf> fromControl, fromTraced, fromTrace;
+    vtkNew<vtkBoolSurfTraceCurves> trace;
+    trace->SetInputData(0, sphere);
+    trace->SetInputConnection(1, drawing->GetOutputPort(0));
+    fromControl->SetInputConnection(1, drawing->GetOutputPort(0));
+    fromTraced->SetInputConnection(1, drawing->GetOutputPort(1));
+    fromTrace->SetInputConnection(1, trace->GetOutputPort(0));
+    for (vtkBoolSurf* f : { fromControl.Get(), fromTraced.Get(), fromTrace.Get() })
+    {
+      f->SetInputData(0, sphere);
+      f->SetOperation(operation);
+      ASSERT_EQ(testutils::ErrorsOf(f), "");
+    }
+    const double area = testutils::Area(fromControl->GetOutput());
+    ASSERT_GT(area, 0.01);
+    EXPECT_EQ(testutils::Area(fromTraced->GetOutput()), area);
+    EXPECT_EQ(testutils::Area(fromTrace->GetOutput()), area);
+    EXPECT_EQ(
+      fromTraced->GetOutput()->GetNumberOfCells(), fromControl->GetOutput()->GetNumberOfCells());
+  }
 }
