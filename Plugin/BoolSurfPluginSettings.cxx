@@ -8,8 +8,23 @@ namespace
 // map of an array: ".standard_presets.<array>" names a preset, ".array_lookup_tables.<array>"
 // sets the properties of its lookup table (proxy PVLookupTable).
 const char* const DefaultSettings = R"json({
-  "standard_presets": { "ArrangementCell": "Turbo" },
   "array_lookup_tables": {
+    "Region": { "PVLookupTable": {
+      "IndexedLookup": 1,
+      "AnnotationsInitialized": 1,
+      "Annotations": ["1", "region"],
+      "IndexedColors": [0.95, 0.55, 0.12],
+      "IndexedOpacities": [1]
+    } },
+    "ArrangementCell": { "PVLookupTable": {
+      "ColorSpace": "RGB",
+      "Discretize": 1,
+      "NumberOfTableValues": 12,
+      "RGBPoints": [0.0, 0.12, 0.47, 0.90, 0.1, 0.10, 0.70, 0.80, 0.2, 0.20, 0.70, 0.30,
+        0.3, 0.60, 0.80, 0.20, 0.4, 0.95, 0.80, 0.15, 0.5, 0.98, 0.55, 0.10, 0.6, 0.90, 0.30,
+        0.25, 0.7, 0.85, 0.35, 0.60, 0.8, 0.60, 0.40, 0.85, 0.9, 0.40, 0.45, 0.95, 1.0, 0.55,
+        0.75, 0.95]
+    } },
     "ShapeLabel": { "PVLookupTable": {
       "IndexedLookup": 1,
       "AnnotationsInitialized": 1,

@@ -5,10 +5,11 @@
 #ifndef BoolSurfPluginSettings_h
 #define BoolSurfPluginSettings_h
 
-/// Registers the defaults: `ArrangementCell` (the active scalars of region outputs) with the
-/// Turbo preset, which has no white that would read as "not selected" on a light surface;
-/// `ShapeLabel` (the Label filter's chosen shape) as categories -3..3 with distinct colors,
-/// 0 (outside) gray.
+/// Registers the defaults: `Region` (the active scalars of region outputs, 1 everywhere) as
+/// one category in orange, so a result shows as one region distinct from a light surface;
+/// `ArrangementCell` (per-cell coloring) as 12 bright steps, with no near-white that would
+/// read as "not selected" and no near-black that would read as a hole; `ShapeLabel` (the
+/// Label filter's chosen shape) as categories -3..3 with distinct colors, 0 (outside) gray.
 void BoolSurfAddDefaultSettings();
 
 #endif

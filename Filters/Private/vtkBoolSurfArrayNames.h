@@ -25,6 +25,9 @@ constexpr const char* ControlPointId = "ControlPointId";
 // The arrangement: refined surface cell data, patches, field data.
 constexpr const char* ArrangementCell = "ArrangementCell";
 constexpr const char* SourceTriangle = "SourceTriangle";
+/// Region outputs: 1 on every triangle (unsigned char), the active scalars, so that a new
+/// display shows the region in one color (the plugin's categorical color map for it).
+constexpr const char* Region = "Region";
 constexpr const char* NumberOfCells = "NumberOfCells";
 constexpr const char* NumberOfShapes = "NumberOfShapes";
 constexpr const char* ShapeIds = "ShapeIds";

@@ -22,6 +22,7 @@ bool IsBoolSurfArray(const char* name)
     boolsurf::names::Barycentric,
     boolsurf::names::ArrangementCell,
     boolsurf::names::SourceTriangle,
+    boolsurf::names::Region,
     "Labels",
     "ComponentId",
     "BoundaryLoopId",

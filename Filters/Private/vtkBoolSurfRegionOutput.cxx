@@ -7,6 +7,7 @@
 
 #include <vtkDataArray.h>
 #include <vtkIdList.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 
@@ -35,6 +36,19 @@ void GatherArrays(vtkDataSetAttributes* from, vtkIdList* ids, vtkDataSetAttribut
     destination->SetId(i, i);
   }
   to->CopyData(from, ids, destination);
+}
+
+/// Cell data Region (1 everywhere) as the active scalars: ParaView colors a new display by the
+/// active scalars, and the plugin maps Region to one color distinct from the surface, so a
+/// result reads as one region; its cells are one click away (ArrangementCell).
+void MarkRegion(vtkPolyData* region)
+{
+  vtkNew<vtkUnsignedCharArray> mark;
+  mark->SetName(boolsurf::names::Region);
+  mark->SetNumberOfTuples(region->GetNumberOfCells());
+  mark->FillValue(1);
+  region->GetCellData()->AddArray(mark);
+  region->GetCellData()->SetActiveScalars(boolsurf::names::Region);
 }
 
 } // namespace
@@ -93,6 +107,7 @@ void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPol
   SetTriangles(mesh.Connectivity.data(), static_cast<vtkIdType>(mesh.Triangles.size()), region);
   GatherArrays(input->GetPointData(), pointIds, region->GetPointData());
   GatherArrays(input->GetCellData(), IdList(mesh.Triangles), region->GetCellData());
+  MarkRegion(region);
 }
 
 //------------------------------------------------------------------------------
@@ -141,12 +156,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
   region->GetCellData()->AddArray(cell);
   region->GetCellData()->AddArray(source);
   AddSurfacePointArrays(pointSurface, region->GetPointData());
-  // ParaView colors a new display by the active scalars: unless the surface brings its own,
-  // the region shows its arrangement cells, distinct from the surface it lies on.
-  if (!region->GetPointData()->GetScalars() && !region->GetCellData()->GetScalars())
-  {
-    region->GetCellData()->SetActiveScalars(boolsurf::names::ArrangementCell);
-  }
+  MarkRegion(region);
 }
 
 } // namespace boolsurf

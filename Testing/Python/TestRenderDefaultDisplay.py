@@ -1,8 +1,10 @@
 """pvbatch under Xvfb: BoolSurf's outputs read at a glance with ParaView's defaults.
 
 - The one-step filter's region (port 0) shows as the "BoolSurf Region" representation,
-  colored by its active scalars ArrangementCell with the plugin's default color map (Turbo),
-  in which no cell comes out near-white (the color of the surface).
+  colored by its active scalars Region (1 on every triangle) with the plugin's categorical
+  map: a union of two overlapping discs is one color, distinct from the surface (pixel check:
+  lit flat, every region pixel is that one color). Colored by ArrangementCell instead (one
+  click), no cell comes out near-white (the surface) or near-black (a hole).
 - No z-fighting: the region drawn in solid red over the coincident gray surface covers every
   pixel it covers when drawn alone (with the plain Surface representation, the surface shows
   through; that count is printed, not asserted: how many pixels lose depends on the driver).
@@ -37,15 +39,15 @@ except AttributeError:
 surface = Show(mesh, view)
 region = Show(one, view)
 assert region.Representation == "BoolSurf Region", region.Representation
-assert region.ColorArrayName[1] == "ArrangementCell", region.ColorArrayName
-lut = GetColorTransferFunction("ArrangementCell")
+assert region.ColorArrayName[1] == "Region", region.ColorArrayName
+region_lut = GetColorTransferFunction("Region")
+assert region_lut.InterpretValuesAsCategories == 1
+region_rgb = [0.0, 0.0, 0.0]
+region_lut.GetClientSideObject().GetColor(1, region_rgb)
+assert min(region_rgb) < 0.8 and max(region_rgb) > 0.5, region_rgb
 cells = one.GetDataInformation().DataInformation.GetArrayInformation(
     "ArrangementCell", 1).GetComponentRange(0)
-table = lut.GetClientSideObject()
-for value in range(int(cells[0]), int(cells[1]) + 1):
-    rgb = [0.0, 0.0, 0.0]
-    table.GetColor(value, rgb)
-    assert min(rgb) < 0.8, ("cell %d is drawn near-white" % value, rgb)
+assert cells[1] > cells[0], cells  # a union of overlapping discs has several cells
 # An oblique view, where coincident faces fight most.
 camera = view.GetActiveCamera()
 camera.SetFocalPoint(0, 0, 0)
@@ -66,6 +68,41 @@ def pixels():
     colors = reader.GetOutput().GetPointData().GetScalars()
     return [colors.GetTuple3(i) for i in range(colors.GetNumberOfTuples())]
 
+
+# The union with its default coloring, lit flat: one color over every region pixel.
+region.Ambient, region.Diffuse = 1.0, 0.0
+Hide(mesh, view)
+default = pixels()
+Show(mesh, view)
+expected = tuple(float(round(255 * c)) for c in region_rgb)
+region_pixels = [c for c in default if c != (0.0, 0.0, 0.0)]
+colors = set(region_pixels)
+print("default display: %d region pixels, colors %s" % (len(region_pixels), sorted(colors)[:5]))
+assert len(region_pixels) > 500, len(region_pixels)
+
+
+def hue_of(c):  # the chromaticity: one color under any shading has one
+    total = sum(c)
+    return tuple(x / total for x in c)
+
+
+# Shading still scales the color (ParaView lights scalar colors), so one color means one
+# chromaticity; pixels too dark for 8-bit rounding to keep it are left out.
+bright = [c for c in colors if max(c) >= 60]
+worst = max(max(abs(a - b) for a, b in zip(hue_of(c), hue_of(expected))) for c in bright)
+print("region colors: %d, brightest %s, chromaticity spread %.4f" % (len(colors), max(bright),
+                                                                   worst))
+assert expected in colors, (expected, sorted(colors)[-3:])
+assert worst < 0.02, worst
+
+# Per-cell coloring, one click away: no cell near-white (the surface) or near-black (a hole).
+ColorBy(region, ("CELLS", "ArrangementCell"))
+table = GetColorTransferFunction("ArrangementCell").GetClientSideObject()
+for value in range(int(cells[0]), int(cells[1]) + 1):
+    rgb = [0.0, 0.0, 0.0]
+    table.GetColor(value, rgb)
+    assert min(rgb) < 0.8, ("cell %d is drawn near-white" % value, rgb)
+    assert max(rgb) > 0.5, ("cell %d is drawn near-black" % value, rgb)
 
 ColorBy(region, None)
 region.DiffuseColor = region.AmbientColor = [1, 0, 0]
