@@ -1,5 +1,6 @@
 #include "pqBoolSurfCurveEditorWidget.h"
 
+#include "pqBoolSurfCurveEditorControls.h"
 #include "pqBoolSurfDrawing.h"
 
 #include "pqRenderView.h"
@@ -33,8 +34,6 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QGridLayout>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QPointer>
 #include <QPushButton>
@@ -114,6 +113,10 @@ struct pqBoolSurfCurveEditorWidget::Internals
 {
   pqBoolSurfDrawing Drawing;
   int Current = -1; // the curve clicks add to (-1: the next click starts a curve)
+  // What the next new curve gets, set in the panel after New Curve (before its first click):
+  // a shape (-1: the first unused one) and a type. Closing needs points: a new curve is open.
+  int NewShape = -1;
+  int NewType = 0;
   pqBoolSurfDrawing::Handle Selected;
 
   // Interaction state.
@@ -166,65 +169,20 @@ pqBoolSurfCurveEditorWidget::pqBoolSurfCurveEditorWidget(vtkSMProxy* smproxy,
 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  internal.Editing = new QCheckBox(tr("Edit curves in the render view"), this);
-  internal.Editing->setObjectName("EditInView");
-  internal.Editing->setChecked(true);
-  internal.Editing->setToolTip(tr("Click the surface to add a control point to the current "
-                                  "curve, drag a point to slide it along the surface, click the "
-                                  "first point of an open curve to close it, Shift+click a point "
-                                  "to delete it. Dragging elsewhere rotates the camera."));
-  layout->addWidget(internal.Editing);
-
-  auto* grid = new QGridLayout();
-  int row = 0;
-  grid->addWidget(new QLabel(tr("Curve"), this), row, 0);
-  internal.CurveIndex = new QSpinBox(this);
-  internal.CurveIndex->setObjectName("CurveIndex");
-  internal.CurveIndex->setToolTip(tr("The current curve: clicks on the surface add to it."));
-  grid->addWidget(internal.CurveIndex, row, 1);
-  internal.CurveCount = new QLabel(this);
-  grid->addWidget(internal.CurveCount, row, 2);
-  ++row;
-  grid->addWidget(new QLabel(tr("Shape"), this), row, 0);
-  internal.Shape = new QSpinBox(this);
-  internal.Shape->setObjectName("Shape");
-  internal.Shape->setRange(0, std::numeric_limits<int>::max());
-  internal.Shape->setToolTip(tr("The shape (ShapeId) the current curve bounds."));
-  grid->addWidget(internal.Shape, row, 1);
-  internal.Closed = new QCheckBox(tr("Closed"), this);
-  internal.Closed->setObjectName("Closed");
-  grid->addWidget(internal.Closed, row, 2);
-  ++row;
-  grid->addWidget(new QLabel(tr("Type"), this), row, 0);
-  internal.Type = new QComboBox(this);
-  internal.Type->setObjectName("CurveType");
-  internal.Type->addItem(tr("Geodesic polygon"));
-  internal.Type->addItem(tr("Cubic Bezier spline"));
-  internal.Type->setToolTip(tr("A Bezier spline's points are anchor, handle, handle, ...: a "
-                               "closed one has 3n points, an open one 3n+1."));
-  grid->addWidget(internal.Type, row, 1, 1, 2);
-  layout->addLayout(grid);
-
-  auto* buttons = new QHBoxLayout();
-  auto* add = new QPushButton(tr("New Curve"), this);
-  add->setObjectName("NewCurve");
-  add->setToolTip(tr("The next click on the surface starts a new curve."));
-  internal.DeletePoint = new QPushButton(tr("Delete Point"), this);
-  internal.DeletePoint->setObjectName("DeletePoint");
-  internal.DeleteCurve = new QPushButton(tr("Delete Curve"), this);
-  internal.DeleteCurve->setObjectName("DeleteCurve");
-  auto* clear = new QPushButton(tr("Clear"), this);
-  clear->setObjectName("ClearAll");
-  clear->setToolTip(tr("Removes every curve."));
-  buttons->addWidget(add);
-  buttons->addWidget(internal.DeletePoint);
-  buttons->addWidget(internal.DeleteCurve);
-  buttons->addWidget(clear);
-  layout->addLayout(buttons);
-  internal.Status = new QLabel(this);
-  internal.Status->setObjectName("Status");
-  internal.Status->setWordWrap(true);
-  layout->addWidget(internal.Status);
+  auto* controls = new pqBoolSurfCurveEditorControls(this);
+  controls->setObjectName("Controls");
+  layout->addWidget(controls);
+  internal.Editing = controls->Editing;
+  internal.CurveIndex = controls->CurveIndex;
+  internal.CurveCount = controls->CurveCount;
+  internal.Shape = controls->Shape;
+  internal.Type = controls->Type;
+  internal.Closed = controls->Closed;
+  internal.DeletePoint = controls->DeletePoint;
+  internal.DeleteCurve = controls->DeleteCurve;
+  internal.Status = controls->Status;
+  QPushButton* add = controls->NewCurve;
+  QPushButton* clear = controls->Clear;
 
   QObject::connect(
     internal.Editing, &QCheckBox::toggled, this, &pqBoolSurfCurveEditorWidget::setEditing);
@@ -522,8 +480,16 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
       }
       BEGIN_UNDO_SET(tr("Add control point"));
       const int after = internal.Selected.Curve == internal.Current ? internal.Selected.Index : -1;
+      const bool starts = internal.CurrentCurvePtr() == nullptr;
       internal.Selected = internal.Drawing.InsertPoint(internal.Current, after, world);
       internal.Current = internal.Selected.Curve;
+      if (starts)
+      {
+        pqBoolSurfDrawing::Curve& curve = internal.Drawing.Curves[internal.Current];
+        curve.Shape = internal.NewShape >= 0 ? internal.NewShape : curve.Shape;
+        curve.Type = internal.NewType;
+        internal.NewShape = -1; // the curve after it gets a shape of its own again
+      }
       this->Push();
       this->ReadBackExactPoints();
       END_UNDO_SET();
@@ -672,17 +638,16 @@ void pqBoolSurfCurveEditorWidget::UpdateControls()
   internal.CurveIndex->setSpecialValueText(tr("(new)"));
   internal.CurveIndex->setValue(internal.Current);
   internal.CurveCount->setText(tr("of %1").arg(curves));
-  internal.Shape->setEnabled(curve != nullptr);
-  internal.Type->setEnabled(curve != nullptr);
+  // Without a current curve (after New Curve), Shape and Type are those the next curve will
+  // get, and can be set before its first click; it starts open.
   internal.Closed->setEnabled(curve != nullptr);
   internal.DeleteCurve->setEnabled(curve != nullptr);
   internal.DeletePoint->setEnabled(internal.Drawing.Find(internal.Selected) != nullptr);
-  if (curve)
-  {
-    internal.Shape->setValue(curve->Shape);
-    internal.Type->setCurrentIndex(curve->Type);
-    internal.Closed->setChecked(curve->Closed);
-  }
+  internal.Shape->setValue(curve
+      ? curve->Shape
+      : (internal.NewShape >= 0 ? internal.NewShape : internal.Drawing.UnusedShape()));
+  internal.Type->setCurrentIndex(curve ? curve->Type : internal.NewType);
+  internal.Closed->setChecked(curve ? curve->Closed : false);
   for (QWidget* w : std::initializer_list<QWidget*>{
          internal.CurveIndex, internal.Shape, internal.Type, internal.Closed })
   {
@@ -823,12 +788,22 @@ void pqBoolSurfCurveEditorWidget::EditCurrentCurve(const QString& label,
 //------------------------------------------------------------------------------
 void pqBoolSurfCurveEditorWidget::setShape(int shape)
 {
+  if (!this->Internal->CurrentCurvePtr())
+  {
+    this->Internal->NewShape = shape; // for the next new curve
+    return;
+  }
   this->EditCurrentCurve(tr("Set curve shape"), [shape](auto& curve) { curve.Shape = shape; });
 }
 
 //------------------------------------------------------------------------------
 void pqBoolSurfCurveEditorWidget::setCurveType(int type)
 {
+  if (!this->Internal->CurrentCurvePtr())
+  {
+    this->Internal->NewType = type;
+    return;
+  }
   this->EditCurrentCurve(tr("Set curve type"), [type](auto& curve) { curve.Type = type; });
 }
 

@@ -9,13 +9,15 @@ vtkStandardNewMacro(vtkBoolSurfRegionRepresentation);
 vtkBoolSurfRegionRepresentation::vtkBoolSurfRegionRepresentation()
 {
   // Relative to the global offsets (ParaView's "Resolve Coincident Topology" setting): the
-  // region's faces win over the surface's faces at the same depth, lines still win over both.
+  // region's faces win over the surface's faces at the same depth; its lines (curves on the
+  // surface) win over both, also where a steep facet would otherwise cut a line into dashes.
   for (vtkMapper* mapper :
     { this->Mapper, this->LODMapper, this->BackfaceMapper, this->LODBackfaceMapper })
   {
     if (mapper)
     {
       mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(Offset, Offset);
+      mapper->SetRelativeCoincidentTopologyLineOffsetParameters(LineOffset, LineOffset);
     }
   }
 }
@@ -28,4 +30,5 @@ void vtkBoolSurfRegionRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Offset: " << Offset << "\n";
+  os << indent << "LineOffset: " << LineOffset << "\n";
 }

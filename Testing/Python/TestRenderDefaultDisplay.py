@@ -8,6 +8,8 @@
 - No z-fighting: the region drawn in solid red over the coincident gray surface covers every
   pixel it covers when drawn alone (with the plain Surface representation, the surface shows
   through; that count is printed, not asserted: how many pixels lose depends on the driver).
+- Curves on the surface (Trace Surface Curves) show as "BoolSurf Curves": every pixel of
+  theirs drawn alone is still theirs over the coarse surface (plain Surface loses some).
 - The Label filter's ShapeLabel (ColorShape set) is the active scalars, with a categorical
   color map (0 "outside" and the labels of the shape as annotated categories).
 """
@@ -126,6 +128,42 @@ ours = lost("BoolSurf Region")
 print("region pixels %d; hidden by the surface: %d with Surface, %d with BoolSurf Region"
       % (len(footprint), plain, ours))
 assert ours == 0, ours
+
+# Curves on the surface (Trace Surface Curves' output) show as "BoolSurf Curves": no pixel of
+# theirs is lost to the coincident surface (with plain Surface, a coarse mesh's steep facets cut
+# them into dashes: that count is printed).
+Hide(one, view)
+traced = TraceSurfaceCurves(Surface=mesh, Curves=control)
+lines = Show(traced, view)
+assert lines.Representation == "BoolSurf Curves", lines.Representation
+lines.ColorArrayName = ["POINTS", ""]
+lines.DiffuseColor = lines.AmbientColor = [1, 0, 0]
+lines.Ambient, lines.Diffuse = 1.0, 0.0
+
+
+def reddish(c):
+    return c[0] > 150 and c[1] < 80 and c[2] < 80
+
+
+Hide(mesh, view)
+alone = pixels()
+line_pixels = [i for i, c in enumerate(alone) if reddish(c)]
+assert len(line_pixels) > 40, len(line_pixels)
+Show(mesh, view)
+
+
+def lost_lines(representation):
+    lines.Representation = representation
+    together = pixels()
+    return sum(1 for i in line_pixels if not reddish(together[i]))
+
+
+plain_lines = lost_lines("Surface")
+our_lines = lost_lines("BoolSurf Curves")
+print("curve pixels %d; hidden by the surface: %d with Surface, %d with BoolSurf Curves"
+      % (len(line_pixels), plain_lines, our_lines))
+assert our_lines == 0, our_lines
+Hide(traced, view)
 
 labels = LabelArrangementCells(Input=SurfaceArrangement(
     Surface=mesh, Curves=TraceSurfaceCurves(Surface=mesh, Curves=control)), ColorShape=0)

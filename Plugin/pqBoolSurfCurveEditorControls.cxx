@@ -1,0 +1,83 @@
+#include "pqBoolSurfCurveEditorControls.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QGridLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <limits>
+
+//------------------------------------------------------------------------------
+pqBoolSurfCurveEditorControls::pqBoolSurfCurveEditorControls(QWidget* parent)
+  : QWidget(parent)
+{
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  this->Editing = new QCheckBox(tr("Edit curves in the render view"), this);
+  this->Editing->setObjectName("EditInView");
+  this->Editing->setChecked(true);
+  this->Editing->setToolTip(tr("Click the surface to add a control point to the current "
+                               "curve, drag a point to slide it along the surface, click the "
+                               "first point of an open curve to close it, Shift+click a point "
+                               "to delete it. Dragging elsewhere rotates the camera."));
+  layout->addWidget(this->Editing);
+
+  // One control per row after its label: the properties dock is narrow (292 pixels by default).
+  auto* grid = new QGridLayout();
+  int row = 0;
+  grid->addWidget(new QLabel(tr("Curve"), this), row, 0);
+  this->CurveIndex = new QSpinBox(this);
+  this->CurveIndex->setObjectName("CurveIndex");
+  this->CurveIndex->setToolTip(tr("The current curve: clicks on the surface add to it."));
+  grid->addWidget(this->CurveIndex, row, 1);
+  this->CurveCount = new QLabel(this);
+  this->CurveCount->setObjectName("CurveCount");
+  grid->addWidget(this->CurveCount, row, 2);
+  ++row;
+  grid->addWidget(new QLabel(tr("Shape"), this), row, 0);
+  this->Shape = new QSpinBox(this);
+  this->Shape->setObjectName("Shape");
+  this->Shape->setRange(0, std::numeric_limits<int>::max());
+  this->Shape->setToolTip(tr("The shape (ShapeId) the current curve bounds; after New Curve, "
+                             "the shape the next curve will get."));
+  grid->addWidget(this->Shape, row, 1, 1, 2);
+  ++row;
+  grid->addWidget(new QLabel(tr("Type"), this), row, 0);
+  this->Type = new QComboBox(this);
+  this->Type->setObjectName("CurveType");
+  this->Type->addItem(tr("Geodesic polygon"));
+  this->Type->addItem(tr("Cubic Bezier spline"));
+  this->Type->setToolTip(tr("A Bezier spline's points are anchor, handle, handle, ...: a "
+                            "closed one has 3n points, an open one 3n+1."));
+  grid->addWidget(this->Type, row, 1, 1, 2);
+  ++row;
+  this->Closed = new QCheckBox(tr("Closed"), this);
+  this->Closed->setObjectName("Closed");
+  grid->addWidget(this->Closed, row, 1, 1, 2);
+  grid->setColumnStretch(1, 1);
+  layout->addLayout(grid);
+
+  auto* buttons = new QGridLayout();
+  this->NewCurve = new QPushButton(tr("New Curve"), this);
+  this->NewCurve->setObjectName("NewCurve");
+  this->NewCurve->setToolTip(tr("The next click on the surface starts a new curve."));
+  this->DeletePoint = new QPushButton(tr("Delete Point"), this);
+  this->DeletePoint->setObjectName("DeletePoint");
+  this->DeleteCurve = new QPushButton(tr("Delete Curve"), this);
+  this->DeleteCurve->setObjectName("DeleteCurve");
+  this->Clear = new QPushButton(tr("Clear"), this);
+  this->Clear->setObjectName("ClearAll");
+  this->Clear->setToolTip(tr("Removes every curve."));
+  buttons->addWidget(this->NewCurve, 0, 0);
+  buttons->addWidget(this->DeletePoint, 0, 1);
+  buttons->addWidget(this->DeleteCurve, 1, 0);
+  buttons->addWidget(this->Clear, 1, 1);
+  layout->addLayout(buttons);
+  this->Status = new QLabel(this);
+  this->Status->setObjectName("Status");
+  this->Status->setWordWrap(true);
+  layout->addWidget(this->Status);
+}

@@ -1,0 +1,41 @@
+/**
+ * @class   pqBoolSurfCurveEditorControls
+ * @brief   the widgets of the curve editor's panel, laid out to fit ParaView's properties dock
+ *
+ * Plain Qt (no ParaView): pqBoolSurfCurveEditorWidget connects them to the drawing. Kept apart
+ * so that the layout is tested on its own (Testing/Cxx/Plugin): at ParaView's default dock
+ * width every control shows whole. Rows, narrow to wide: the edit toggle; Curve [n] "of N";
+ * Shape [n]; Type [polygon/Bezier]; Closed; the four buttons two by two; the status line.
+ */
+#ifndef pqBoolSurfCurveEditorControls_h
+#define pqBoolSurfCurveEditorControls_h
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+
+class pqBoolSurfCurveEditorControls : public QWidget
+{
+  Q_OBJECT
+
+public:
+  explicit pqBoolSurfCurveEditorControls(QWidget* parent = nullptr);
+
+  QCheckBox* Editing = nullptr;
+  QSpinBox* CurveIndex = nullptr;
+  QLabel* CurveCount = nullptr;
+  QSpinBox* Shape = nullptr;
+  QComboBox* Type = nullptr;
+  QCheckBox* Closed = nullptr;
+  QPushButton* NewCurve = nullptr;
+  QPushButton* DeletePoint = nullptr;
+  QPushButton* DeleteCurve = nullptr;
+  QPushButton* Clear = nullptr;
+  QLabel* Status = nullptr;
+};
+
+#endif
