@@ -224,6 +224,13 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   barycentric->SetNumberOfTuples(points);
+  // The facet's unit normal at each control point: the curve editor hides the markers of
+  // points on the far side of the surface (named apart from "Normals", which ParaView would
+  // take for the lines' shading normals).
+  vtkNew<vtkDoubleArray> facetNormal;
+  facetNormal->SetName("SurfaceNormal");
+  facetNormal->SetNumberOfComponents(3);
+  facetNormal->SetNumberOfTuples(points);
   const bool snaps = !exact ||
     std::find(this->TriangleIds.begin(), this->TriangleIds.end(), -1) != this->TriangleIds.end();
   vtkStaticCellLocator* locator = snaps ? this->Internal->For(surface) : nullptr;
@@ -299,6 +306,9 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
       x[k] = (1 - u - v) * p[0][k] + u * p[1][k] + v * p[2][k];
     }
     positions->SetPoint(i, x);
+    double normal[3];
+    vtkTriangle::ComputeNormal(p[0], p[1], p[2], normal);
+    facetNormal->SetTuple(i, normal);
     triangleIds->SetValue(i, triangle);
     barycentric->SetTypedTuple(i, std::array<double, 2>{ u, v }.data());
   }
@@ -358,6 +368,7 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   output->SetLines(lines);
   output->GetPointData()->AddArray(triangleIds);
   output->GetPointData()->AddArray(barycentric);
+  output->GetPointData()->AddArray(facetNormal);
   output->GetCellData()->AddArray(shapeIds);
   output->GetCellData()->AddArray(curveTypes);
   output->GetCellData()->AddArray(closed);

@@ -8,6 +8,7 @@
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkEventQtSlotConnect.h"
@@ -43,6 +44,7 @@
 
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 namespace
 {
@@ -72,6 +74,28 @@ void SetVector(vtkSMProxy* proxy, const char* name, const std::vector<T>& values
   {
     helper.Set(values.data(), static_cast<unsigned int>(values.size()));
   }
+}
+
+// Where `renderer`'s camera looks from, for pqBoolSurfDrawing::FacesEye (a parallel
+// projection's eye far back along its direction); false without a renderer.
+bool CameraEye(vtkRenderer* renderer, std::array<double, 3>& eye)
+{
+  if (!renderer)
+  {
+    return false;
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->GetPosition(eye.data());
+  if (camera->GetParallelProjection())
+  {
+    double direction[3];
+    camera->GetDirectionOfProjection(direction);
+    for (int k = 0; k < 3; ++k)
+    {
+      eye[k] -= 1e9 * direction[k];
+    }
+  }
+  return true;
 }
 
 // One group of markers: spheres of a color at some control points.
@@ -131,6 +155,15 @@ struct pqBoolSurfCurveEditorWidget::Internals
   vtkWeakPointer<vtkRenderer> MarkerRenderer;
   vtkNew<vtkCallbackCommand> Observer;
   std::vector<unsigned long> ObserverTags;
+  // Before each render of the view: markers of points on the far side of the surface are
+  // hidden for the camera about to be used.
+  vtkNew<vtkCallbackCommand> RenderObserver;
+  vtkWeakPointer<vtkRenderer> ViewRenderer;
+  unsigned long RenderTag = 0;
+  double MarkerRadius = 0.006;
+  // The surface's facet normals met so far, by triangle id (for points reloaded from the
+  // properties, which hold no normals).
+  std::unordered_map<vtkIdType, std::array<double, 3>> FacetNormals;
   Markers Others{ 0.95, 0.85, 0.25 };
   Markers CurrentCurve{ 1.0, 0.5, 0.05 };
   Markers SelectedPoint{ 0.85, 0.1, 0.1 };
@@ -222,8 +255,17 @@ pqBoolSurfCurveEditorWidget::pqBoolSurfCurveEditorWidget(vtkSMProxy* smproxy,
     }
   }
 
+  if (vtkSMProperty* surface = smproxy->GetProperty("Surface"))
+  {
+    internal.PropertyConnections->Connect(
+      surface, vtkCommand::ModifiedEvent, this, SLOT(forgetFacetNormals()));
+  }
+
   internal.Observer->SetClientData(this);
   internal.Observer->SetCallback(&pqBoolSurfCurveEditorWidget::OnInteractorEvent);
+  internal.RenderObserver->SetClientData(this);
+  internal.RenderObserver->SetCallback([](vtkObject*, unsigned long, void* self, void*)
+    { static_cast<pqBoolSurfCurveEditorWidget*>(self)->PlaceMarkers(); });
   this->loadFromProxy();
 }
 
@@ -300,6 +342,12 @@ void pqBoolSurfCurveEditorWidget::Attach()
   {
     internal.ObserverTags.push_back(interactor->AddObserver(event, internal.Observer, priority));
   }
+  internal.ViewRenderer = viewProxy->GetRenderer();
+  if (internal.ViewRenderer)
+  {
+    internal.RenderTag =
+      internal.ViewRenderer->AddObserver(vtkCommand::StartEvent, internal.RenderObserver);
+  }
   internal.MarkerRenderer = pvView->GetNonCompositedRenderer();
   for (Markers* markers : { &internal.Others, &internal.CurrentCurve, &internal.SelectedPoint })
   {
@@ -322,6 +370,11 @@ void pqBoolSurfCurveEditorWidget::Detach()
   }
   internal.ObserverTags.clear();
   internal.Interactor = nullptr;
+  if (internal.ViewRenderer)
+  {
+    internal.ViewRenderer->RemoveObserver(internal.RenderTag);
+  }
+  internal.ViewRenderer = nullptr;
   if (internal.MarkerRenderer)
   {
     for (Markers* markers : { &internal.Others, &internal.CurrentCurve, &internal.SelectedPoint })
@@ -372,11 +425,17 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
     pqBoolSurfDrawing::Handle best;
     double bestDistance = GrabRadius;
     vtkRenderer* renderer = viewProxy->GetRenderer();
+    std::array<double, 3> eye;
+    const bool culled = CameraEye(renderer, eye);
     for (int c = 0; c < static_cast<int>(internal.Drawing.Curves.size()); ++c)
     {
       const auto& points = internal.Drawing.Curves[c].Points;
       for (int k = 0; k < static_cast<int>(points.size()); ++k)
       {
+        if (culled && !pqBoolSurfDrawing::FacesEye(points[k], eye))
+        {
+          continue; // hidden behind the surface: not grabbed through it
+        }
         const auto& x = points[k].Position;
         renderer->SetWorldPoint(x[0], x[1], x[2], 1.0);
         renderer->WorldToDisplay();
@@ -392,10 +451,10 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
     }
     return best;
   };
+  std::array<double, 3> pickedNormal{ { 0, 0, 0 } };
   auto pickSurface = [&](std::array<double, 3>& world)
   {
-    double normal[3];
-    return viewProxy->ConvertDisplayToPointOnSurface(position, world.data(), normal) &&
+    return viewProxy->ConvertDisplayToPointOnSurface(position, world.data(), pickedNormal.data()) &&
       std::isfinite(world[0]) && std::isfinite(world[1]) && std::isfinite(world[2]);
   };
 
@@ -444,6 +503,7 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
       if (point && pickSurface(world))
       {
         point->Position = world;
+        point->Normal = pickedNormal;
         point->Triangle = -1; // snapped by the source while dragging
         this->Push();
       }
@@ -482,6 +542,7 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
       const int after = internal.Selected.Curve == internal.Current ? internal.Selected.Index : -1;
       const bool starts = internal.CurrentCurvePtr() == nullptr;
       internal.Selected = internal.Drawing.InsertPoint(internal.Current, after, world);
+      internal.Drawing.Find(internal.Selected)->Normal = pickedNormal;
       internal.Current = internal.Selected.Curve;
       if (starts)
       {
@@ -535,9 +596,8 @@ void pqBoolSurfCurveEditorWidget::Refresh()
 }
 
 //------------------------------------------------------------------------------
-void pqBoolSurfCurveEditorWidget::ReadBackExactPoints()
+vtkSmartPointer<vtkPolyData> pqBoolSurfCurveEditorWidget::FetchControlCurves()
 {
-  Internals& internal = *this->Internal;
   vtkSMProxy* smproxy = this->proxy();
   vtkSMSessionProxyManager* pxm = smproxy->GetSessionProxyManager();
   // As paraview.servermanager.Fetch does: a reduction filter gathers the output on the first
@@ -551,7 +611,7 @@ void pqBoolSurfCurveEditorWidget::ReadBackExactPoints()
     vtkSMSourceProxy::SafeDownCast(pxm->NewProxy("filters", "ClientServerMoveData")));
   if (!reducer || !mover)
   {
-    return;
+    return nullptr;
   }
   vtkSMPropertyHelper(reducer, "Input").Set(smproxy, 0);
   vtkSMPropertyHelper(reducer, "PostGatherHelperName").Set("vtkAppendPolyData");
@@ -562,17 +622,50 @@ void pqBoolSurfCurveEditorWidget::ReadBackExactPoints()
   mover->UpdateVTKObjects();
   mover->UpdatePipeline();
   auto* algorithm = vtkAlgorithm::SafeDownCast(mover->GetClientSideObject());
-  vtkPolyData* output =
-    algorithm ? vtkPolyData::SafeDownCast(algorithm->GetOutputDataObject(0)) : nullptr;
-  vtkDataArray* triangles = output ? output->GetPointData()->GetArray("TriangleId") : nullptr;
-  vtkDataArray* weights = output ? output->GetPointData()->GetArray("Barycentric") : nullptr;
-  const int points = internal.Drawing.NumberOfPoints();
-  if (!triangles || !weights || weights->GetNumberOfComponents() != 2 ||
-    output->GetNumberOfPoints() != points)
+  auto* output = algorithm ? vtkPolyData::SafeDownCast(algorithm->GetOutputDataObject(0)) : nullptr;
+  if (!output || output->GetNumberOfPoints() != this->Internal->Drawing.NumberOfPoints())
   {
     // The source failed (its message says why, e.g. a Bezier curve with a point count that
-    // does not fit): the points stay positions to snap.
+    // does not fit).
+    return nullptr;
+  }
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(output);
+  return copy;
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::ReadSurfaceNormals(vtkPolyData* output)
+{
+  vtkDataArray* normals = output ? output->GetPointData()->GetArray("SurfaceNormal") : nullptr;
+  if (!normals || normals->GetNumberOfComponents() != 3)
+  {
     return;
+  }
+  vtkIdType next = 0;
+  for (auto& curve : this->Internal->Drawing.Curves)
+  {
+    for (auto& point : curve.Points)
+    {
+      normals->GetTuple(next++, point.Normal.data());
+      if (point.Triangle >= 0)
+      {
+        this->Internal->FacetNormals[point.Triangle] = point.Normal;
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::ReadBackExactPoints()
+{
+  Internals& internal = *this->Internal;
+  vtkSmartPointer<vtkPolyData> output = this->FetchControlCurves();
+  vtkDataArray* triangles = output ? output->GetPointData()->GetArray("TriangleId") : nullptr;
+  vtkDataArray* weights = output ? output->GetPointData()->GetArray("Barycentric") : nullptr;
+  if (!triangles || !weights || weights->GetNumberOfComponents() != 2)
+  {
+    return; // the points stay positions to snap
   }
   vtkIdType next = 0;
   for (auto& curve : internal.Drawing.Curves)
@@ -585,7 +678,14 @@ void pqBoolSurfCurveEditorWidget::ReadBackExactPoints()
       ++next;
     }
   }
+  this->ReadSurfaceNormals(output);
   this->Push();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::forgetFacetNormals()
+{
+  this->Internal->FacetNormals.clear(); // another surface: other facets
 }
 
 //------------------------------------------------------------------------------
@@ -619,6 +719,21 @@ void pqBoolSurfCurveEditorWidget::loadFromProxy()
   if (!internal.Drawing.Find(internal.Selected))
   {
     internal.Selected = {};
+  }
+  // Undo, a state file or Python give points without their surface normals (which hide the
+  // markers on the far side): a point in a triangle seen before gets that facet's normal (no
+  // pipeline update here: this runs right after an undo); others show until the next edit
+  // reads the source's output back.
+  for (auto& curve : internal.Drawing.Curves)
+  {
+    for (auto& point : curve.Points)
+    {
+      auto it = internal.FacetNormals.find(point.Triangle);
+      if (it != internal.FacetNormals.end())
+      {
+        point.Normal = it->second;
+      }
+    }
   }
   this->Refresh();
 }
@@ -668,24 +783,8 @@ void pqBoolSurfCurveEditorWidget::UpdateControls()
 //------------------------------------------------------------------------------
 void pqBoolSurfCurveEditorWidget::UpdateMarkers()
 {
-  Internals& internal = *this->Internal;
-  std::vector<std::array<double, 3>> others, current, selected;
-  for (int c = 0; c < static_cast<int>(internal.Drawing.Curves.size()); ++c)
-  {
-    const auto& points = internal.Drawing.Curves[c].Points;
-    for (int k = 0; k < static_cast<int>(points.size()); ++k)
-    {
-      if (internal.Selected == pqBoolSurfDrawing::Handle{ c, k })
-      {
-        selected.push_back(points[k].Position);
-      }
-      else
-      {
-        (c == internal.Current ? current : others).push_back(points[k].Position);
-      }
-    }
-  }
-  // Marker size: a fraction of the surface's size.
+  // Marker size (asked of the server here, not while the view renders): a fraction of the surface's
+  // size.
   double diagonal = 1;
   vtkSMProxy* smproxy = this->proxy();
   auto* input = vtkSMInputProperty::SafeDownCast(smproxy->GetProperty("Surface"));
@@ -701,7 +800,39 @@ void pqBoolSurfCurveEditorWidget::UpdateMarkers()
       diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
     }
   }
-  const double radius = 0.006 * diagonal;
+  this->Internal->MarkerRadius = 0.006 * diagonal;
+  this->PlaceMarkers();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::PlaceMarkers()
+{
+  Internals& internal = *this->Internal;
+  // Where the camera looks from: markers whose surface faces away are hidden (they are drawn
+  // over the geometry, so they would show through a closed surface).
+  std::array<double, 3> eye;
+  const bool culled = CameraEye(internal.ViewRenderer, eye);
+  std::vector<std::array<double, 3>> others, current, selected;
+  for (int c = 0; c < static_cast<int>(internal.Drawing.Curves.size()); ++c)
+  {
+    const auto& points = internal.Drawing.Curves[c].Points;
+    for (int k = 0; k < static_cast<int>(points.size()); ++k)
+    {
+      if (culled && !pqBoolSurfDrawing::FacesEye(points[k], eye))
+      {
+        continue;
+      }
+      if (internal.Selected == pqBoolSurfDrawing::Handle{ c, k })
+      {
+        selected.push_back(points[k].Position);
+      }
+      else
+      {
+        (c == internal.Current ? current : others).push_back(points[k].Position);
+      }
+    }
+  }
+  const double radius = internal.MarkerRadius;
   internal.Others.Set(others, radius);
   internal.CurrentCurve.Set(current, radius);
   internal.SelectedPoint.Set(selected, 1.4 * radius);

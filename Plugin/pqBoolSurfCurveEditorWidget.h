@@ -23,7 +23,9 @@
  * render on the server), so the editor also works connected to a pvserver; the exact surface
  * points are read back from the source's output once a point is placed (not during a drag).
  * Markers (control points; the current curve's and the selected point highlighted) are drawn
- * in the view's non-composited renderer, over the geometry.
+ * in the view's non-composited renderer, over the geometry; before each render, those of
+ * points whose surface faces away from the camera are hidden (they would show through a
+ * closed surface).
  */
 #ifndef pqBoolSurfCurveEditorWidget_h
 #define pqBoolSurfCurveEditorWidget_h
@@ -35,7 +37,10 @@
 #include <functional> // for std::function
 #include <memory>     // for std::unique_ptr
 
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+
 class vtkObject;
+class vtkPolyData;
 class vtkSMPropertyGroup;
 
 class pqBoolSurfCurveEditorWidget : public pqPropertyWidget
@@ -62,6 +67,7 @@ public Q_SLOTS:
 private Q_SLOTS:
   void loadFromProxy();
   void scheduleLoad();
+  void forgetFacetNormals();
   void newCurve();
   void deleteCurve();
   void deletePoint();
@@ -85,7 +91,15 @@ private:
   /// Reads the exact surface points (TriangleId, Barycentric) of the source's output into
   /// the drawing, then pushes them: the state then holds exact points, not positions to snap.
   void ReadBackExactPoints();
+  /// The source's output (Control Curves) on the client, or null when it failed or does not
+  /// hold the drawing's points.
+  vtkSmartPointer<vtkPolyData> FetchControlCurves();
+  /// The drawing's points' surface normals from that output (point data SurfaceNormal).
+  void ReadSurfaceNormals(vtkPolyData* output);
+  /// Marker size from the surface's bounds, then PlaceMarkers.
   void UpdateMarkers();
+  /// Markers at the drawing's points that face the camera (before each render too).
+  void PlaceMarkers();
   void UpdateControls();
   /// Markers and panel from the drawing, then a render of the view.
   void Refresh();

@@ -163,3 +163,15 @@ pqBoolSurfDrawing::Point* pqBoolSurfDrawing::Find(const Handle& handle)
   }
   return &points[handle.Index];
 }
+
+//------------------------------------------------------------------------------
+bool pqBoolSurfDrawing::FacesEye(const Point& point, const std::array<double, 3>& eye)
+{
+  double toEye = 0, known = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    toEye += point.Normal[k] * (eye[k] - point.Position[k]);
+    known += point.Normal[k] * point.Normal[k];
+  }
+  return known == 0 || toEye > 0;
+}

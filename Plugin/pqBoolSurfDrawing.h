@@ -24,6 +24,9 @@ struct pqBoolSurfDrawing
     std::array<double, 3> Position{ { 0, 0, 0 } };
     vtkIdType Triangle = -1; // -1: not placed exactly yet (the source snaps Position)
     std::array<double, 2> Weights{ { 0, 0 } };
+    /// The surface's unit normal there (from the pick or the source's SurfaceNormal), zero
+    /// while unknown.
+    std::array<double, 3> Normal{ { 0, 0, 0 } };
   };
   struct Curve
   {
@@ -63,6 +66,11 @@ struct pqBoolSurfDrawing
   Properties ToProperties() const;
 
   int NumberOfPoints() const;
+  /// Whether a point's marker shows from `eye`: its surface faces the eye (the marker of a
+  /// point on the far side of a closed surface would show through it otherwise). For a
+  /// parallel projection, `eye` is a point far back along the direction of projection. A
+  /// point whose normal is unknown shows.
+  static bool FacesEye(const Point& point, const std::array<double, 3>& eye);
   /// The smallest shape id no curve uses (a new curve's shape).
   int UnusedShape() const;
 

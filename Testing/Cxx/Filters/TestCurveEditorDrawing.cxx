@@ -3,6 +3,13 @@
 // after the selected point, a first click starting a curve, deleting a curve's last point).
 #include "pqBoolSurfDrawing.h"
 
+#include "FilterTestUtils.h"
+#include "vtkBoolSurfSurfaceCurves.h"
+
+#include <vtkPointData.h>
+
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 TEST(CurveEditorDrawing, ReadsTheSourceDefaults)
@@ -72,4 +79,43 @@ TEST(CurveEditorDrawing, EditsAsAUserMakesThem)
   EXPECT_FALSE(d.RemoveCurve(5));
   EXPECT_TRUE(d.RemoveCurve(0));
   EXPECT_EQ(d.NumberOfPoints(), 0);
+}
+
+TEST(CurveEditorDrawing, MarkersOnTheFarSideOfTheSurfaceAreHidden)
+{
+  // Control points on a sphere, with the facet normals Surface Curves gives (SurfaceNormal):
+  // seen from +z, the points of the upper half show, those of the lower half do not; a point
+  // whose normal is unknown shows.
+  auto sphere = testutils::ToPolyData(boolsurf::MakeIcosphere(3));
+  vtkNew<vtkBoolSurfSurfaceCurves> source;
+  source->SetInputData(sphere);
+  const double points[][3] = { { 0.3, 0.1, 0.95 }, { -0.2, 0.4, 0.9 }, { 0.5, 0.5, -0.7 },
+    { -0.6, 0.2, -0.77 }, { 0.9, 0.1, 0.4 }, { 0.1, 0.9, -0.4 } };
+  source->SetNumberOfPoints(6);
+  for (int i = 0; i < 6; ++i)
+  {
+    source->SetPoint(i, points[i][0], points[i][1], points[i][2]);
+  }
+  source->Update();
+  vtkPolyData* out = source->GetOutput();
+  vtkDataArray* normals = out->GetPointData()->GetArray("SurfaceNormal");
+  ASSERT_NE(normals, nullptr);
+  ASSERT_EQ(normals->GetNumberOfTuples(), 6);
+  const std::array<double, 3> eye{ { 0, 0, 5 } };
+  for (vtkIdType i = 0; i < 6; ++i)
+  {
+    pqBoolSurfDrawing::Point p;
+    out->GetPoint(i, p.Position.data());
+    normals->GetTuple(i, p.Normal.data());
+    // An outward unit normal of the facet the point is on.
+    EXPECT_NEAR(std::hypot(p.Normal[0], p.Normal[1], p.Normal[2]), 1, 1e-12);
+    EXPECT_GT(p.Normal[0] * p.Position[0] + p.Normal[1] * p.Position[1] +
+        p.Normal[2] * p.Position[2],
+      0.9);
+    // Visible from (0, 0, 5) exactly when the facet faces it: the tangent plane test.
+    const bool upper = points[i][2] > 0.3;
+    EXPECT_EQ(pqBoolSurfDrawing::FacesEye(p, eye), upper) << "point " << i;
+    p.Normal = { 0, 0, 0 };
+    EXPECT_TRUE(pqBoolSurfDrawing::FacesEye(p, eye)) << "unknown normal, point " << i;
+  }
 }
