@@ -6,9 +6,9 @@
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
-#include <vtkCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCommand.h>
 #include <vtkIntArray.h>
 #include <vtkMath.h>
 #include <vtkNew.h>

@@ -89,8 +89,12 @@ TEST(CurveEditorDrawing, MarkersOnTheFarSideOfTheSurfaceAreHidden)
   auto sphere = testutils::ToPolyData(boolsurf::MakeIcosphere(3));
   vtkNew<vtkBoolSurfSurfaceCurves> source;
   source->SetInputData(sphere);
-  const double points[][3] = { { 0.3, 0.1, 0.95 }, { -0.2, 0.4, 0.9 }, { 0.5, 0.5, -0.7 },
-    { -0.6, 0.2, -0.77 }, { 0.9, 0.1, 0.4 }, { 0.1, 0.9, -0.4 } };
+  const double points[][3] = { { 0.3, 0.1, 0.95 },
+    { -0.2, 0.4, 0.9 },
+    { 0.5, 0.5, -0.7 },
+    { -0.6, 0.2, -0.77 },
+    { 0.9, 0.1, 0.4 },
+    { 0.1, 0.9, -0.4 } };
   source->SetNumberOfPoints(6);
   for (int i = 0; i < 6; ++i)
   {
@@ -109,9 +113,8 @@ TEST(CurveEditorDrawing, MarkersOnTheFarSideOfTheSurfaceAreHidden)
     normals->GetTuple(i, p.Normal.data());
     // An outward unit normal of the facet the point is on.
     EXPECT_NEAR(std::hypot(p.Normal[0], p.Normal[1], p.Normal[2]), 1, 1e-12);
-    EXPECT_GT(p.Normal[0] * p.Position[0] + p.Normal[1] * p.Position[1] +
-        p.Normal[2] * p.Position[2],
-      0.9);
+    EXPECT_GT(
+      p.Normal[0] * p.Position[0] + p.Normal[1] * p.Position[1] + p.Normal[2] * p.Position[2], 0.9);
     // Visible from (0, 0, 5) exactly when the facet faces it: the tangent plane test.
     const bool upper = points[i][2] > 0.3;
     EXPECT_EQ(pqBoolSurfDrawing::FacesEye(p, eye), upper) << "point " << i;

@@ -34,7 +34,6 @@ using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using Traits = CGAL::Surface_mesh_shortest_path_traits<Kernel, CgalMesh>;
 using ShortestPaths = CGAL::Surface_mesh_shortest_path<Traits>;
 
-
 /// The same surface as `mesh`, vertex i and face t kept as vertex i and face t.
 std::unique_ptr<CgalMesh> ToCgal(const TriangleMesh& mesh)
 {

@@ -67,7 +67,6 @@ Vec3 At(const std::vector<Vec3>& positions, const Triangle& t, double u, double 
   return { w * a.x + u * b.x + v * c.x, w * a.y + u * b.y + v * c.y, w * a.z + u * b.z + v * c.z };
 }
 
-
 } // namespace
 
 TEST(SubdivisionMap, LinearSplitKeepsPositions)
