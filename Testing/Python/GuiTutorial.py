@@ -7,7 +7,8 @@ open and shown; the recorded events run Filters > BoolSurf > Check Surface and F
 BoolSurf > Surface Curves from the menus (the paths the README gives), check the properties
 dock's width and font (those the panel layout test assumes), draw two overlapping closed curves
 by clicking on the surface, press New Curve between them and check that its fields show the
-next curve's values (shape 1, polygon, open, enabled), and save the state. The player fails on
+next curve's values (shape 1, polygon, open, enabled), open Sources > BoolSurf > BSC Samples,
+and save the state. The player fails on
 any menu path or widget that does not exist and on any check that does not hold.
 
 Then, from the saved state: two closed curves of four exact points, shapes 0 and 1; the
