@@ -51,6 +51,38 @@ bool SamePoint(const Vec2& a, const Vec2& b, const std::vector<Vec2>& points)
   return std::abs(a.x - b.x) <= 1e-12 * extent && std::abs(a.y - b.y) <= 1e-12 * extent;
 }
 
+/// Removes the segments of a spline (P0, then 3 points per segment) whose four control points
+/// are one point up to rounding: a line to where the path already is, the edge of a rect whose
+/// corners' radii take its whole side. A segment of no length is no curve, and traced it would
+/// be a leg between a point and itself.
+void DropEmptySegments(std::vector<Vec2>& p)
+{
+  if (p.size() < 4)
+  {
+    return;
+  }
+  double extent = 0;
+  for (const Vec2& q : p)
+  {
+    extent = std::max({ extent, std::abs(q.x - p[0].x), std::abs(q.y - p[0].y) });
+  }
+  const double tolerance = 1e-12 * extent;
+  auto same = [tolerance](const Vec2& a, const Vec2& b)
+  { return std::abs(a.x - b.x) <= tolerance && std::abs(a.y - b.y) <= tolerance; };
+  std::vector<Vec2> kept = { p[0] };
+  for (std::size_t s = 0; 3 * s + 3 < p.size(); ++s)
+  {
+    const Vec2& start = kept.back();
+    const Vec2 *h1 = &p[3 * s + 1], *h2 = &p[3 * s + 2], *end = &p[3 * s + 3];
+    if (same(start, *h1) && same(start, *h2) && same(start, *end))
+    {
+      continue;
+    }
+    kept.insert(kept.end(), { *h1, *h2, *end });
+  }
+  p = std::move(kept);
+}
+
 /// Receives svgpp's events for the whole document (one context: element state on stacks).
 class Collector
 {
@@ -163,6 +195,7 @@ private:
   void EndSubpath(bool close)
   {
     std::vector<Vec2>& p = this->Current.Points;
+    DropEmptySegments(p);
     if (p.size() >= 4)
     {
       if (close)

@@ -306,3 +306,43 @@ TEST(SvgDrawing, CircleAndEllipseAreFourCubicSegments)
     EXPECT_GT(std::hypot(p.x - q.x, p.y - q.y), 1e-3) << "control points " << k << ", " << k + 1;
   }
 }
+
+TEST(SvgDrawing, NoSegmentOfNoLength)
+{
+  // Lines to where the path already is, and the straight sides of a rect whose rounded corners
+  // take the whole side (a pill), are segments of no length: dropped. What is left is the
+  // shape, every segment of some length.
+  using namespace boolsurf;
+  struct Case
+  {
+    const char* Element;
+    std::size_t Segments;
+  };
+  for (const Case& c : { Case{ "<path d='M0 0 L0 0 L5 0 L5 0 L5 5 Z'/>", 3 },
+         Case{ "<rect x='0' y='0' width='10' height='4' rx='2' ry='2'/>", 0 } })
+  {
+    SCOPED_TRACE(c.Element);
+    SvgDrawing d;
+    std::string error;
+    ASSERT_TRUE(ParseSvg(Svg(c.Element), d, error)) << error;
+    const SvgSubpath& s = d.Paths.at(0).Subpaths.at(0);
+    ASSERT_TRUE(s.Closed);
+    const std::size_t n = s.Points.size();
+    ASSERT_EQ(n % 3, 0u);
+    if (c.Segments > 0)
+    {
+      EXPECT_EQ(n / 3, c.Segments);
+    }
+    for (std::size_t k = 0; k < n; k += 3)
+    {
+      double length = 0;
+      for (std::size_t i = 0; i < 3; ++i)
+      {
+        const Vec2& a = s.Points[k + i];
+        const Vec2& b = s.Points[(k + i + 1) % n];
+        length += std::hypot(a.x - b.x, a.y - b.y);
+      }
+      EXPECT_GT(length, 1e-3) << "segment " << k / 3 << " of " << n / 3;
+    }
+  }
+}
