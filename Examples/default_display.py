@@ -3,8 +3,8 @@
 Draws two overlapping discs on a mesh (rays cast along its thinnest axis), runs the one-step
 BoolSurf filter (union) and shows the surface and the region with no display setting changed:
 the region uses its default "BoolSurf Region" representation (drawn over the coincident
-surface, no z-fighting) and is colored by its active scalars, ArrangementCell; the boundary
-(port 1) is drawn as lines over it.
+surface, no z-fighting) and is colored by its active scalars, Region, in one color (the union
+reads as one region); the boundary (port 1) is drawn as lines over it ("BoolSurf Curves").
 
     xvfb-run -a pvbatch Examples/default_display.py --mesh ../shared/data/meshes/bimba.ply \\
         --png out/default_display.png
