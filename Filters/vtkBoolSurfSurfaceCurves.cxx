@@ -39,6 +39,34 @@ struct vtkBoolSurfSurfaceCurves::Internals
   vtkPolyData* Surface = nullptr;
   vtkMTimeType SurfaceTime = 0;
 
+  /// Whether every edge of `surface` has a triangle on each side (cached with the surface's
+  /// adjacency). Only then is a facet facing away from the camera hidden by the surface.
+  bool IsClosed(vtkPolyData* surface)
+  {
+    std::vector<std::string> warnings;
+    std::string error;
+    const boolsurf::vtkSurfaceInput* input = this->Traced.GetUsable(surface, warnings, error);
+    if (!input)
+    {
+      return false;
+    }
+    if (input != this->ClosedOf || surface->GetMTime() != this->ClosedTime)
+    {
+      const boolsurf::TriangleMesh& mesh = *input->Mesh;
+      this->Closed = true;
+      for (int h = 0; h < 3 * mesh.GetNumberOfTriangles() && this->Closed; ++h)
+      {
+        this->Closed = mesh.GetTwin(h) >= 0;
+      }
+      this->ClosedOf = input;
+      this->ClosedTime = surface->GetMTime();
+    }
+    return this->Closed;
+  }
+  const boolsurf::vtkSurfaceInput* ClosedOf = nullptr;
+  vtkMTimeType ClosedTime = 0;
+  bool Closed = false;
+
   vtkStaticCellLocator* For(vtkPolyData* surface)
   {
     if (!this->Locator || surface != this->Surface || surface->GetMTime() != this->SurfaceTime)
@@ -224,9 +252,11 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   barycentric->SetNumberOfTuples(points);
-  // The facet's unit normal at each control point: the curve editor hides the markers of
-  // points on the far side of the surface (named apart from "Normals", which ParaView would
-  // take for the lines' shading normals).
+  // The facet's unit normal at each control point of a closed surface (zero on a surface with
+  // a boundary, whose back may be in view): the curve editor hides the markers of points on
+  // the far side (named apart from "Normals", which ParaView would take for the lines' shading
+  // normals).
+  const bool closedSurface = points > 0 && this->Internal->IsClosed(surface);
   vtkNew<vtkDoubleArray> facetNormal;
   facetNormal->SetName("SurfaceNormal");
   facetNormal->SetNumberOfComponents(3);
@@ -306,8 +336,11 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
       x[k] = (1 - u - v) * p[0][k] + u * p[1][k] + v * p[2][k];
     }
     positions->SetPoint(i, x);
-    double normal[3];
-    vtkTriangle::ComputeNormal(p[0], p[1], p[2], normal);
+    double normal[3] = { 0, 0, 0 };
+    if (closedSurface)
+    {
+      vtkTriangle::ComputeNormal(p[0], p[1], p[2], normal);
+    }
     facetNormal->SetTuple(i, normal);
     triangleIds->SetValue(i, triangle);
     barycentric->SetTypedTuple(i, std::array<double, 2>{ u, v }.data());

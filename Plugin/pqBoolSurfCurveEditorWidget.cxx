@@ -451,11 +451,29 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
     }
     return best;
   };
+  // A picked point is in view: its normal is turned toward the eye whichever way the pick
+  // gives it (the source's SurfaceNormal replaces it once the point is read back).
   std::array<double, 3> pickedNormal{ { 0, 0, 0 } };
   auto pickSurface = [&](std::array<double, 3>& world)
   {
-    return viewProxy->ConvertDisplayToPointOnSurface(position, world.data(), pickedNormal.data()) &&
+    const bool picked =
+      viewProxy->ConvertDisplayToPointOnSurface(position, world.data(), pickedNormal.data()) &&
       std::isfinite(world[0]) && std::isfinite(world[1]) && std::isfinite(world[2]);
+    std::array<double, 3> eye;
+    if (picked && CameraEye(viewProxy->GetRenderer(), eye))
+    {
+      pqBoolSurfDrawing::Point p;
+      p.Position = world;
+      p.Normal = pickedNormal;
+      if (!pqBoolSurfDrawing::FacesEye(p, eye))
+      {
+        for (double& c : pickedNormal)
+        {
+          c = -c;
+        }
+      }
+    }
+    return picked;
   };
 
   switch (event)

@@ -81,7 +81,7 @@ TEST(CurveEditorDrawing, EditsAsAUserMakesThem)
   EXPECT_EQ(d.NumberOfPoints(), 0);
 }
 
-TEST(CurveEditorDrawing, MarkersOnTheFarSideOfTheSurfaceAreHidden)
+TEST(CurveEditorDrawing, MarkersOnTheFarSideOfAClosedSurfaceAreHidden)
 {
   // Control points on a sphere, with the facet normals Surface Curves gives (SurfaceNormal):
   // seen from +z, the points of the upper half show, those of the lower half do not; a point
@@ -120,5 +120,23 @@ TEST(CurveEditorDrawing, MarkersOnTheFarSideOfTheSurfaceAreHidden)
     EXPECT_EQ(pqBoolSurfDrawing::FacesEye(p, eye), upper) << "point " << i;
     p.Normal = { 0, 0, 0 };
     EXPECT_TRUE(pqBoolSurfDrawing::FacesEye(p, eye)) << "unknown normal, point " << i;
+  }
+
+  // A surface with a boundary may be seen from its back: no normals, every marker shows.
+  auto square = testutils::ToPolyData(boolsurf::MakeFlatSquare(8));
+  vtkNew<vtkBoolSurfSurfaceCurves> open;
+  open->SetInputData(square);
+  open->SetNumberOfPoints(2);
+  open->SetPoint(0, 0.2, 0.3, 0);
+  open->SetPoint(1, 0.7, 0.6, 0);
+  open->Update();
+  vtkDataArray* none = open->GetOutput()->GetPointData()->GetArray("SurfaceNormal");
+  ASSERT_NE(none, nullptr);
+  for (vtkIdType i = 0; i < 2; ++i)
+  {
+    pqBoolSurfDrawing::Point p;
+    open->GetOutput()->GetPoint(i, p.Position.data());
+    none->GetTuple(i, p.Normal.data());
+    EXPECT_TRUE(pqBoolSurfDrawing::FacesEye(p, { { 0, 0, -5 } })) << "seen from below, point " << i;
   }
 }
