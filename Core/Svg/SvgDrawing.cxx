@@ -6,6 +6,7 @@
 
 #include <svgpp/policy/xml/libxml2.hpp>
 #include <svgpp/svgpp.hpp>
+#include <svgpp/utility/arc_endpoint_to_center.hpp>
 
 #include <boost/mpl/set.hpp>
 
@@ -125,13 +126,12 @@ public:
   {
     this->EndSubpath(false);
     this->Current.Points = { this->Map(x, y) };
+    this->At = this->SubpathStart = { x, y };
   }
   void path_line_to(double x, double y, svgpp::tag::coordinate::absolute)
   {
-    const Vec2 a = this->Current.Points.back(), b = this->Map(x, y);
-    this->Current.Points.push_back(a + (1.0 / 3.0) * (b - a));
-    this->Current.Points.push_back(a + (2.0 / 3.0) * (b - a));
-    this->Current.Points.push_back(b);
+    this->path_line_to_mapped(this->Map(x, y));
+    this->At = { x, y };
   }
   void path_cubic_bezier_to(double x1,
     double y1,
@@ -144,36 +144,77 @@ public:
     this->Current.Points.push_back(this->Map(x1, y1));
     this->Current.Points.push_back(this->Map(x2, y2));
     this->Current.Points.push_back(this->Map(x, y));
+    this->At = { x, y };
   }
-  void path_close_subpath() { this->EndSubpath(true); }
-
-  /// A circle or ellipse: four quarter arcs as cubics, from (cx + rx, cy) towards +y as SVG
-  /// draws them (svgpp's own conversion gives six arcs and a closing sliver).
-  void set_circle(double cx, double cy, double r) { this->set_ellipse(cx, cy, r, r); }
-  void set_ellipse(double cx, double cy, double rx, double ry)
+  /// An elliptical arc (SVG's endpoint form, rotation in degrees) as few cubic pieces as it
+  /// has quarter turns, so a circle (two half-turn arcs from svgpp's basic shapes) is 4 pieces
+  /// (svgpp's own conversion makes a half turn 3), a rounded corner 1; the last piece ends
+  /// exactly at the arc's end, so a closed circle closes without a sliver.
+  void path_elliptical_arc_to(double rx,
+    double ry,
+    double rotation,
+    bool largeArc,
+    bool sweep,
+    double x,
+    double y,
+    svgpp::tag::coordinate::absolute)
   {
-    if (!(rx > 0) || !(ry > 0))
+    const Vec2 from = this->At;
+    if (from.x == x && from.y == y)
     {
-      return; // SVG does not render an ellipse with a zero radius
+      return; // SVG: an arc to its own start is left out
     }
-    // Handle length of a quarter arc: 4/3 tan(pi/8).
-    const double k = 4.0 / 3.0 * std::tan(std::atan(1.0) / 2.0);
-    const double cosines[4] = { 1, 0, -1, 0 }, sines[4] = { 0, 1, 0, -1 };
-    this->Current.Points.clear();
-    for (int q = 0; q < 4; ++q)
+    if (rx == 0 || ry == 0)
     {
-      const int n = (q + 1) % 4;
-      const double x0 = cx + rx * cosines[q], y0 = cy + ry * sines[q];
-      const double x1 = cx + rx * cosines[n], y1 = cy + ry * sines[n];
-      this->Current.Points.push_back(this->Map(x0, y0));
-      this->Current.Points.push_back(this->Map(x0 - k * rx * sines[q], y0 + k * ry * cosines[q]));
-      this->Current.Points.push_back(this->Map(x1 + k * rx * sines[n], y1 - k * ry * cosines[n]));
+      this->path_line_to(x, y, svgpp::tag::coordinate::absolute()); // SVG: a straight line
+      return;
     }
-    this->Current.Closed = true;
-    this->Path.Subpaths.push_back(this->Current);
-    this->Current = SvgSubpath();
-    this->path_exit();
+    const double pi = std::acos(-1.0);
+    const double phi = rotation * pi / 180;
+    rx = std::abs(rx);
+    ry = std::abs(ry);
+    double cx, cy, t0, t1;
+    svgpp::arc_endpoint_to_center(
+      from.x, from.y, x, y, rx, ry, phi, largeArc, sweep, cx, cy, t0, t1);
+    if (sweep && t1 < t0)
+    {
+      t1 += 2 * pi;
+    }
+    else if (!sweep && t1 > t0)
+    {
+      t1 -= 2 * pi;
+    }
+    const double c = std::cos(phi), s = std::sin(phi);
+    auto point = [&](double t)
+    {
+      const double ex = rx * std::cos(t), ey = ry * std::sin(t);
+      return Vec2{ cx + c * ex - s * ey, cy + s * ex + c * ey };
+    };
+    auto tangent = [&](double t)
+    {
+      const double ex = -rx * std::sin(t), ey = ry * std::cos(t);
+      return Vec2{ c * ex - s * ey, s * ex + c * ey };
+    };
+    const int pieces =
+      std::max(1, static_cast<int>(std::ceil(std::abs(t1 - t0) / (pi / 2) - 1e-9)));
+    for (int k = 0; k < pieces; ++k)
+    {
+      const double a = t0 + (t1 - t0) * k / pieces, b = t0 + (t1 - t0) * (k + 1) / pieces;
+      const double handle = 4.0 / 3.0 * std::tan((b - a) / 4);
+      const Vec2 p0 = point(a), p3 = k + 1 == pieces ? Vec2{ x, y } : point(b);
+      const Vec2 p1 = p0 + handle * tangent(a), p2 = point(b) - handle * tangent(b);
+      this->Current.Points.push_back(this->Map(p1.x, p1.y));
+      this->Current.Points.push_back(this->Map(p2.x, p2.y));
+      this->Current.Points.push_back(this->Map(p3.x, p3.y));
+    }
+    this->At = { x, y };
   }
+  void path_close_subpath()
+  {
+    this->EndSubpath(true);
+    this->At = this->SubpathStart;
+  }
+
   void path_exit()
   {
     this->EndSubpath(false);
@@ -234,6 +275,7 @@ private:
   int Elements = 0;
   SvgPath Path;
   SvgSubpath Current;
+  Vec2 At, SubpathStart; ///< the current point and the subpath's start, in user units
 };
 
 template <class Name>
@@ -302,17 +344,11 @@ using ProcessedElements = boost::mpl::set<svgpp::tag::element::svg,
   svgpp::tag::element::polyline,
   svgpp::tag::element::polygon>::type;
 
-/// Rectangles, lines, polylines and polygons as svgpp's paths; circles and ellipses as their
-/// attributes (Collector::set_ellipse draws them).
-struct ShapesPolicy
+/// svgpp's minimal path events, except that elliptical arcs come as arcs
+/// (Collector::path_elliptical_arc_to converts them).
+struct PathPolicy : svgpp::policy::path::minimal
 {
-  using convert_to_path = boost::mpl::set4<svgpp::tag::element::rect,
-    svgpp::tag::element::line,
-    svgpp::tag::element::polyline,
-    svgpp::tag::element::polygon>;
-  using collect_attributes =
-    boost::mpl::set2<svgpp::tag::element::circle, svgpp::tag::element::ellipse>;
-  static const bool convert_only_rounded_rect_to_path = false;
+  static const bool arc_as_cubic_bezier = false;
 };
 
 using ProcessedAttributes =
@@ -333,8 +369,8 @@ bool Traverse(xmlDocPtr doc, SvgDrawing& out, std::string& error)
   {
     svgpp::document_traversal<svgpp::processed_elements<ProcessedElements>,
       svgpp::processed_attributes<ProcessedAttributes>,
-      svgpp::path_policy<svgpp::policy::path::minimal>,
-      svgpp::basic_shapes_policy<ShapesPolicy>,
+      svgpp::path_policy<PathPolicy>,
+      svgpp::basic_shapes_policy<svgpp::policy::basic_shapes::all_to_path>,
       svgpp::error_policy<LenientErrors>>::load_document(root, collector);
   }
   catch (const std::exception& e)

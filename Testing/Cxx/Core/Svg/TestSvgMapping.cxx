@@ -299,11 +299,28 @@ TEST(SvgDrawing, CircleAndEllipseAreFourCubicSegments)
   const SvgSubpath& s = d.Paths.at(0).Subpaths.at(0);
   const std::size_t n = s.Points.size();
   ASSERT_EQ(n % 3, 0u);
+  EXPECT_EQ(n / 3, 4u) << "a full turn of arcs is four quarter-turn pieces";
   for (std::size_t k = 0; k < n; ++k)
   {
     const Vec2& p = s.Points[k];
     const Vec2& q = s.Points[(k + 1) % n];
     EXPECT_GT(std::hypot(p.x - q.x, p.y - q.y), 1e-3) << "control points " << k << ", " << k + 1;
+  }
+  // Each piece stays on the circle of radius 3 around (5, 7) (a quarter-turn cubic is off by
+  // at most 2.7e-4 of the radius).
+  for (std::size_t k = 0; k < n; k += 3)
+  {
+    const Vec2 &a = s.Points[k], &b = s.Points[k + 1], &c = s.Points[k + 2],
+               &e = s.Points[(k + 3) % n];
+    for (double t : { 0.25, 0.5, 0.75 })
+    {
+      const double u = 1 - t;
+      const double x =
+        u * u * u * a.x + 3 * u * u * t * b.x + 3 * u * t * t * c.x + t * t * t * e.x;
+      const double y =
+        u * u * u * a.y + 3 * u * u * t * b.y + 3 * u * t * t * c.y + t * t * t * e.y;
+      EXPECT_NEAR(std::hypot(x - 5, y - 7), 3, 3 * 3e-4) << "piece " << k / 3 << " at " << t;
+    }
   }
 }
 
