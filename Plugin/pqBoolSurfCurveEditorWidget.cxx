@@ -170,15 +170,7 @@ struct pqBoolSurfCurveEditorWidget::Internals
   vtkNew<vtkEventQtSlotConnect> PropertyConnections;
   QTimer LoadTimer;
 
-  QCheckBox* Editing = nullptr;
-  QSpinBox* CurveIndex = nullptr;
-  QLabel* CurveCount = nullptr;
-  QSpinBox* Shape = nullptr;
-  QComboBox* Type = nullptr;
-  QCheckBox* Closed = nullptr;
-  QPushButton* DeletePoint = nullptr;
-  QPushButton* DeleteCurve = nullptr;
-  QLabel* Status = nullptr;
+  pqBoolSurfCurveEditorControls* Controls = nullptr; // the panel's widgets
 
   pqBoolSurfDrawing::Curve* CurrentCurvePtr()
   {
@@ -205,40 +197,38 @@ pqBoolSurfCurveEditorWidget::pqBoolSurfCurveEditorWidget(vtkSMProxy* smproxy,
   auto* controls = new pqBoolSurfCurveEditorControls(this);
   controls->setObjectName("Controls");
   layout->addWidget(controls);
-  internal.Editing = controls->Editing;
-  internal.CurveIndex = controls->CurveIndex;
-  internal.CurveCount = controls->CurveCount;
-  internal.Shape = controls->Shape;
-  internal.Type = controls->Type;
-  internal.Closed = controls->Closed;
-  internal.DeletePoint = controls->DeletePoint;
-  internal.DeleteCurve = controls->DeleteCurve;
-  internal.Status = controls->Status;
-  QPushButton* add = controls->NewCurve;
-  QPushButton* clear = controls->Clear;
+  internal.Controls = controls;
 
-  QObject::connect(
-    internal.Editing, &QCheckBox::toggled, this, &pqBoolSurfCurveEditorWidget::setEditing);
-  QObject::connect(internal.CurveIndex,
+  QObject::connect(internal.Controls->Editing,
+    &QCheckBox::toggled,
+    this,
+    &pqBoolSurfCurveEditorWidget::setEditing);
+  QObject::connect(internal.Controls->CurveIndex,
     QOverload<int>::of(&QSpinBox::valueChanged),
     this,
     &pqBoolSurfCurveEditorWidget::setCurrentCurve);
-  QObject::connect(internal.Shape,
+  QObject::connect(internal.Controls->Shape,
     QOverload<int>::of(&QSpinBox::valueChanged),
     this,
     &pqBoolSurfCurveEditorWidget::setShape);
-  QObject::connect(internal.Type,
+  QObject::connect(internal.Controls->Type,
     QOverload<int>::of(&QComboBox::currentIndexChanged),
     this,
     &pqBoolSurfCurveEditorWidget::setCurveType);
   QObject::connect(
-    internal.Closed, &QCheckBox::toggled, this, &pqBoolSurfCurveEditorWidget::setClosed);
-  QObject::connect(add, &QPushButton::clicked, this, &pqBoolSurfCurveEditorWidget::newCurve);
+    internal.Controls->Closed, &QCheckBox::toggled, this, &pqBoolSurfCurveEditorWidget::setClosed);
   QObject::connect(
-    internal.DeletePoint, &QPushButton::clicked, this, &pqBoolSurfCurveEditorWidget::deletePoint);
+    controls->NewCurve, &QPushButton::clicked, this, &pqBoolSurfCurveEditorWidget::newCurve);
+  QObject::connect(internal.Controls->DeletePoint,
+    &QPushButton::clicked,
+    this,
+    &pqBoolSurfCurveEditorWidget::deletePoint);
+  QObject::connect(internal.Controls->DeleteCurve,
+    &QPushButton::clicked,
+    this,
+    &pqBoolSurfCurveEditorWidget::deleteCurve);
   QObject::connect(
-    internal.DeleteCurve, &QPushButton::clicked, this, &pqBoolSurfCurveEditorWidget::deleteCurve);
-  QObject::connect(clear, &QPushButton::clicked, this, &pqBoolSurfCurveEditorWidget::clearAll);
+    controls->Clear, &QPushButton::clicked, this, &pqBoolSurfCurveEditorWidget::clearAll);
 
   // Undo, redo, state loading and Python change the properties behind our back: reload (once
   // per burst of changes).
@@ -321,7 +311,7 @@ void pqBoolSurfCurveEditorWidget::Attach()
 {
   Internals& internal = *this->Internal;
   auto* view = qobject_cast<pqRenderView*>(this->view());
-  if (!this->isSelected() || !internal.Editing->isChecked() || !view || internal.View)
+  if (!this->isSelected() || !internal.Controls->Editing->isChecked() || !view || internal.View)
   {
     return;
   }
@@ -762,27 +752,31 @@ void pqBoolSurfCurveEditorWidget::UpdateControls()
   Internals& internal = *this->Internal;
   const int curves = static_cast<int>(internal.Drawing.Curves.size());
   const pqBoolSurfDrawing::Curve* curve = internal.CurrentCurvePtr();
-  for (QWidget* w : std::initializer_list<QWidget*>{
-         internal.CurveIndex, internal.Shape, internal.Type, internal.Closed })
+  for (QWidget* w : std::initializer_list<QWidget*>{ internal.Controls->CurveIndex,
+         internal.Controls->Shape,
+         internal.Controls->Type,
+         internal.Controls->Closed })
   {
     w->blockSignals(true);
   }
-  internal.CurveIndex->setRange(-1, std::max(0, curves - 1));
-  internal.CurveIndex->setSpecialValueText(tr("(new)"));
-  internal.CurveIndex->setValue(internal.Current);
-  internal.CurveCount->setText(tr("of %1").arg(curves));
+  internal.Controls->CurveIndex->setRange(-1, std::max(0, curves - 1));
+  internal.Controls->CurveIndex->setSpecialValueText(tr("(new)"));
+  internal.Controls->CurveIndex->setValue(internal.Current);
+  internal.Controls->CurveCount->setText(tr("of %1").arg(curves));
   // Without a current curve (after New Curve), Shape and Type are those the next curve will
   // get, and can be set before its first click; it starts open.
-  internal.Closed->setEnabled(curve != nullptr);
-  internal.DeleteCurve->setEnabled(curve != nullptr);
-  internal.DeletePoint->setEnabled(internal.Drawing.Find(internal.Selected) != nullptr);
-  internal.Shape->setValue(curve
+  internal.Controls->Closed->setEnabled(curve != nullptr);
+  internal.Controls->DeleteCurve->setEnabled(curve != nullptr);
+  internal.Controls->DeletePoint->setEnabled(internal.Drawing.Find(internal.Selected) != nullptr);
+  internal.Controls->Shape->setValue(curve
       ? curve->Shape
       : (internal.NewShape >= 0 ? internal.NewShape : internal.Drawing.UnusedShape()));
-  internal.Type->setCurrentIndex(curve ? curve->Type : internal.NewType);
-  internal.Closed->setChecked(curve ? curve->Closed : false);
-  for (QWidget* w : std::initializer_list<QWidget*>{
-         internal.CurveIndex, internal.Shape, internal.Type, internal.Closed })
+  internal.Controls->Type->setCurrentIndex(curve ? curve->Type : internal.NewType);
+  internal.Controls->Closed->setChecked(curve ? curve->Closed : false);
+  for (QWidget* w : std::initializer_list<QWidget*>{ internal.Controls->CurveIndex,
+         internal.Controls->Shape,
+         internal.Controls->Type,
+         internal.Controls->Closed })
   {
     w->blockSignals(false);
   }
@@ -795,7 +789,7 @@ void pqBoolSurfCurveEditorWidget::UpdateControls()
                  "...).")
                 .arg(curve->Closed ? tr("3n") : tr("3n+1"));
   }
-  internal.Status->setText(status);
+  internal.Controls->Status->setText(status);
 }
 
 //------------------------------------------------------------------------------
