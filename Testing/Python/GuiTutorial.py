@@ -42,10 +42,11 @@ state = os.path.join(out, "tutorial.pvsm")
 if not os.path.exists(state):
     sys.exit("no state saved by the GUI: " + state)
 
-from paraview.simple import (GetDisplayProperties, GetSources, LoadPlugin, LoadState,  # noqa: E402
-                             GetActiveView, Hide, Render, ResetCamera, SaveScreenshot, Show)
+from paraview.simple import (GetActiveView, GetDisplayProperties, GetSources, Hide,  # noqa: E402
+                             LoadPlugin, LoadState, ResetCamera, Show)
 from paraview import servermanager as sm  # noqa: E402
-from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+sys.path.insert(0, here)
+from render_pixels import chromaticity_spread, view_pixels  # noqa: E402
 
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 LoadState(state)
@@ -70,22 +71,14 @@ traced = sm.OutputPort(curves, 1)
 lines = GetDisplayProperties(traced, view)
 expect(lines.Visibility == 1 and lines.Representation == "BoolSurf Curves",
        "traced curves shown as BoolSurf Curves: %s" % lines.Representation)
-for name in ("eight.ply",):
-    mesh = sources.get("PLYReader")
-    if mesh is not None:
-        Hide(mesh, view)
+if "PLYReader" in sources:  # Check Surface shows the mesh in its place
+    Hide(sources["PLYReader"], view)
 
 png = os.path.join(out, "view.png")
 
 
 def pixels():
-    Render(view)
-    SaveScreenshot(png, view, ImageResolution=[500, 400], TransparentBackground=0)
-    reader = vtkPNGReader()
-    reader.SetFileName(png)
-    reader.Update()
-    colors = reader.GetOutput().GetPointData().GetScalars()
-    return [colors.GetTuple3(i) for i in range(colors.GetNumberOfTuples())]
+    return view_pixels(view, png, (500, 400))
 
 
 view.OrientationAxesVisibility = 0
@@ -125,10 +118,7 @@ Hide(surface, view)
 ResetCamera(view)
 image = pixels()
 colors = [c for c in image if c != (0.0, 0.0, 0.0)]
-bright = [c for c in colors if max(c) >= 60]
-chroma = [tuple(x / sum(c) for x in c) for c in bright]
-spread = max(max(abs(a[k] - b[k]) for k in range(3)) for a in chroma for b in chroma[:1]) \
-    if chroma else 1
+spread = chromaticity_spread(colors)
 print("union pixels %d, chromaticity spread %.4f" % (len(colors), spread))
 expect(len(colors) > 200 and spread < 0.02,
        "the union is one color: %d pixels, spread %.4f" % (len(colors), spread))

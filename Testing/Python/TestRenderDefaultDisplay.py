@@ -21,7 +21,8 @@ source_dir = os.environ["BOOLSURF_SOURCE_DIR"]
 sys.path.insert(0, os.path.join(source_dir, "Examples"))
 from boolsurf_example_utils import SurfaceRays, curves_source, surface_circle  # noqa: E402
 from paraview.simple import *  # noqa: E402,F401,F403
-from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from render_pixels import chromaticity_spread, view_pixels  # noqa: E402
 
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 mesh = PLYReader(FileNames=[os.path.join(source_dir, "Data", "eight.ply")])
@@ -62,13 +63,7 @@ png = os.path.join(tempfile.mkdtemp(prefix="boolsurf-display-"), "view.png")
 
 
 def pixels():
-    Render(view)
-    SaveScreenshot(png, view, ImageResolution=[400, 400], TransparentBackground=0)
-    reader = vtkPNGReader()
-    reader.SetFileName(png)
-    reader.Update()
-    colors = reader.GetOutput().GetPointData().GetScalars()
-    return [colors.GetTuple3(i) for i in range(colors.GetNumberOfTuples())]
+    return view_pixels(view, png, (400, 400))
 
 
 # The union with its default coloring, lit flat: one color over every region pixel.
@@ -81,18 +76,9 @@ region_pixels = [c for c in default if c != (0.0, 0.0, 0.0)]
 colors = set(region_pixels)
 print("default display: %d region pixels, colors %s" % (len(region_pixels), sorted(colors)[:5]))
 assert len(region_pixels) > 500, len(region_pixels)
-
-
-def hue_of(c):  # the chromaticity: one color under any shading has one
-    total = sum(c)
-    return tuple(x / total for x in c)
-
-
-# Shading still scales the color (ParaView lights scalar colors), so one color means one
-# chromaticity; pixels too dark for 8-bit rounding to keep it are left out.
-bright = [c for c in colors if max(c) >= 60]
-worst = max(max(abs(a - b) for a, b in zip(hue_of(c), hue_of(expected))) for c in bright)
-print("region colors: %d, brightest %s, chromaticity spread %.4f" % (len(colors), max(bright),
+# Shading still scales the color (ParaView lights scalar colors): one color, one chromaticity.
+worst = chromaticity_spread(colors, expected)
+print("region colors: %d, brightest %s, chromaticity spread %.4f" % (len(colors), max(colors),
                                                                    worst))
 assert expected in colors, (expected, sorted(colors)[-3:])
 assert worst < 0.02, worst
