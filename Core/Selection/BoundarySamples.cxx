@@ -144,6 +144,34 @@ std::vector<BscPatch> BscPatchesOf(const Arrangement& arrangement)
 }
 
 //------------------------------------------------------------------------------
+Vec3 UnitTriangleNormal(Vec3 a, Vec3 b, Vec3 c)
+{
+  const Vec3 n = Cross(b - a, c - a);
+  const double length = Length(n);
+  return length > 0 ? (1 / length) * n : Vec3();
+}
+
+//------------------------------------------------------------------------------
+bool SelectBySamples(const std::vector<Vec3>& positions,
+  const std::vector<const std::vector<int>*>& patchPoints,
+  const std::function<Vec3(int)>& normalOf,
+  const std::vector<SampleQuery>& queries,
+  double tolerance,
+  BscInput& input,
+  std::vector<PatchSnap>& snaps,
+  BscResult& result,
+  std::string& error)
+{
+  const PatchSnapper snapper(positions, patchPoints);
+  if (!SnapSamples(snapper, queries, tolerance, snaps, error) ||
+    !OrientSamples(positions, patchPoints, queries, snaps, normalOf, input.Samples, error))
+  {
+    return false;
+  }
+  return SelectBoundarySampledCells(input, result, error);
+}
+
+//------------------------------------------------------------------------------
 bool SelectBySamples(const Arrangement& arr,
   const std::vector<SampleQuery>& queries,
   double tolerance,
@@ -158,14 +186,8 @@ bool SelectBySamples(const Arrangement& arr,
   {
     points.push_back(&p.Points);
   }
-  const PatchSnapper snapper(arr.Positions, points);
-  if (!SnapSamples(snapper, queries, tolerance, snaps, error))
-  {
-    return false;
-  }
-  // The surface normal at a refined point: that of the mesh triangle its surface point names
-  // (read from one of the triangle's refined triangles, which keep its orientation), so the
-  // cost is per sample, not per triangle.
+  // The surface normal at a refined point: that of the mesh triangle its surface point names,
+  // so the cost is per sample, not per triangle.
   auto normalOf = [&](int p)
   {
     const int t = arr.PointSurface[p].Triangle;
@@ -175,21 +197,15 @@ bool SelectBySamples(const Arrangement& arr,
       return Vec3();
     }
     const std::array<int, 3>& r = arr.Triangles[arr.TriangleOffset[t]];
-    const Vec3 n =
-      Cross(arr.Positions[r[1]] - arr.Positions[r[0]], arr.Positions[r[2]] - arr.Positions[r[0]]);
-    const double length = Length(n);
-    return length > 0 ? (1 / length) * n : Vec3();
+    return UnitTriangleNormal(arr.Positions[r[0]], arr.Positions[r[1]], arr.Positions[r[2]]);
   };
   BscInput input;
   input.NumberOfCells = arr.NumberOfCells;
   input.Patches = BscPatchesOf(arr);
   input.MaxSearchStates = maxSearchStates;
   input.Abort = abort;
-  if (!OrientSamples(arr.Positions, points, queries, snaps, normalOf, input.Samples, error))
-  {
-    return false;
-  }
-  return SelectBoundarySampledCells(input, result, error);
+  return SelectBySamples(
+    arr.Positions, points, normalOf, queries, tolerance, input, snaps, result, error);
 }
 
 } // namespace boolsurf

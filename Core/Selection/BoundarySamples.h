@@ -96,6 +96,27 @@ bool OrientSamples(const std::vector<Vec3>& positions,
   return true;
 }
 
+/// The unit normal of triangle (a, b, c), zero when it is degenerate. BSC reads the surface
+/// normal at a refined point as that of its source triangle, through one of the source
+/// triangle's refined triangles (which keep its orientation); every path computes it here, so
+/// that a selection made from arrays gives the one made from a Core arrangement.
+Vec3 UnitTriangleNormal(Vec3 a, Vec3 b, Vec3 c);
+
+/// The BSC stage on patches given as polylines of points: snap `queries` to the patches'
+/// segments (within `tolerance`), orient them with normalOf(point) (asked only at the snapped
+/// segments' ends), select. `input` holds the patches (in the order of `patchPoints`), the
+/// number of cells and the search settings; its samples are filled here. False with a message
+/// naming the bad sample.
+bool SelectBySamples(const std::vector<Vec3>& positions,
+  const std::vector<const std::vector<int>*>& patchPoints,
+  const std::function<Vec3(int)>& normalOf,
+  const std::vector<SampleQuery>& queries,
+  double tolerance,
+  BscInput& input,
+  std::vector<PatchSnap>& snaps,
+  BscResult& result,
+  std::string& error);
+
 struct Arrangement;
 
 /// BSC's view of an arrangement's patches.

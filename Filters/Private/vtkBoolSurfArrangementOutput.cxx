@@ -336,7 +336,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   AddField(
     fd, IntArray("ZeroCellCandidates", ZeroCellCandidates(*surface.Mesh, *surface.Topology, arr)));
 
-  std::vector<int> offsets{ 0 }, pointIds, left, right, shape, curve;
+  std::vector<int> offsets{ 0 }, pointIds, left, right, shape, curve, closed;
   for (const ArrangementPatch& p : arr.Patches)
   {
     pointIds.insert(pointIds.end(), p.Points.begin(), p.Points.end());
@@ -345,6 +345,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
     right.push_back(p.RightCell);
     shape.push_back(p.ShapeId);
     curve.push_back(p.CurveId);
+    closed.push_back(p.Closed ? 1 : 0);
   }
   AddField(fd, IntArray("PatchOffsets", offsets));
   AddField(fd, IntArray("PatchPoints", pointIds));
@@ -352,6 +353,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   AddField(fd, IntArray("PatchRightCell", right));
   AddField(fd, IntArray("PatchShape", shape));
   AddField(fd, IntArray("PatchCurve", curve));
+  AddField(fd, IntArray("PatchClosed", closed));
 
   vtkNew<vtkDoubleArray> times;
   times->SetName(boolsurf::names::StageTimes);
@@ -511,6 +513,7 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
   const std::vector<int> right = ReadInts(fd, "PatchRightCell");
   out.PatchShape = ReadInts(fd, "PatchShape");
   out.PatchCurve = ReadInts(fd, "PatchCurve");
+  out.PatchClosed = ReadInts(fd, "PatchClosed"); // absent in files written before it
   for (size_t p = 0; p + 1 < offsets.size() && p < left.size() && p < right.size(); ++p)
   {
     BoundaryPatch patch;

@@ -95,6 +95,7 @@ struct ArrangementFields
   std::vector<int> ZeroCellCandidates;
   std::vector<BoundaryPatch> Patches;
   std::vector<int> PatchShape, PatchCurve;
+  std::vector<int> PatchClosed; ///< 1 a closed curve's patch; empty: all closed (older files)
 };
 
 /// Cell data `ArrangementCell` as ints (the arrangement writes a vtkIntArray; any other type is

@@ -3,6 +3,7 @@
 #include "vtkBoolSurfArrayNames.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -12,6 +13,7 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -118,8 +120,10 @@ bool SelectSampledCells(vtkPolyData* refined,
       }
     }
     points[i] = &local[i];
-    b.LeftCell = p.LeftCell;
-    b.RightCell = p.RightCell;
+    // Open curves clip, they bound nothing (as BscPatchesOf says for a Core arrangement).
+    const bool closed = i >= static_cast<int>(fields.PatchClosed.size()) || fields.PatchClosed[i];
+    b.LeftCell = closed ? p.LeftCell : -1;
+    b.RightCell = closed ? p.RightCell : -1;
     const int shape = i < static_cast<int>(fields.PatchShape.size()) ? fields.PatchShape[i] : 0;
     const int curve = i < static_cast<int>(fields.PatchCurve.size()) ? fields.PatchCurve[i] : i;
     b.Curve = curveIndex.emplace(std::make_pair(shape, curve), static_cast<int>(curveIndex.size()))
@@ -130,56 +134,58 @@ bool SelectSampledCells(vtkPolyData* refined,
       b.LastPoint = p.Points.back();
     }
   }
-  const PatchSnapper snapper(positions, points);
-  if (!SnapSamples(snapper, queries, tolerance, snaps, error))
+  // The surface normal at a patch point is its source triangle's, as for a Core arrangement:
+  // point data TriangleId names the source triangle, cell data SourceTriangle its first refined
+  // triangle.
+  vtkDataArray* pointTriangle = refined->GetPointData()->GetArray(boolsurf::names::TriangleId);
+  vtkDataArray* source = refined->GetCellData()->GetArray(boolsurf::names::SourceTriangle);
+  if (!pointTriangle || !source || source->GetNumberOfTuples() != refined->GetNumberOfCells() ||
+    refined->GetNumberOfCells() != refined->GetNumberOfPolys())
   {
+    error = "the input lacks point data 'TriangleId' or cell data 'SourceTriangle' on every "
+            "triangle (the surface normals at the samples are read from them): connect the "
+            "first output of Surface Arrangement";
     return false;
   }
-  // Normals at the snapped segments' ends: one pass over the triangles' corners.
-  std::vector<char> wanted(numberOfPoints, 0);
-  std::map<int, Vec3> normals;
-  for (const PatchSnap& s : snaps)
+  std::vector<vtkIdType> firstRefined; // source triangle -> its first refined triangle
+  auto normalOf = [&](int compact)
   {
-    for (int k : { s.Segment, s.Segment + 1 })
+    if (firstRefined.empty())
     {
-      wanted[fields.Patches[s.Patch].Points[k]] = 1;
-      normals[fields.Patches[s.Patch].Points[k]] = Vec3();
-    }
-  }
-  if (!snaps.empty())
-  {
-    vtkCellArray* polys = refined->GetPolys();
-    vtkIdType n;
-    const vtkIdType* ids;
-    for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-    {
-      if (n != 3 || (!wanted[ids[0]] && !wanted[ids[1]] && !wanted[ids[2]]))
+      vtkIdType largest = -1;
+      for (vtkIdType c = 0; c < source->GetNumberOfTuples(); ++c)
       {
-        continue;
+        largest = std::max(largest, static_cast<vtkIdType>(source->GetComponent(c, 0)));
       }
-      double a[3], b[3], c[3];
-      refined->GetPoint(ids[0], a);
-      refined->GetPoint(ids[1], b);
-      refined->GetPoint(ids[2], c);
-      const Vec3 pa{ a[0], a[1], a[2] }, pb{ b[0], b[1], b[2] }, pc{ c[0], c[1], c[2] };
-      const Vec3 normal = Cross(pb - pa, pc - pa);
-      for (int k = 0; k < 3; ++k)
+      firstRefined.assign(largest + 1, -1);
+      for (vtkIdType c = source->GetNumberOfTuples() - 1; c >= 0; --c)
       {
-        if (wanted[ids[k]])
+        const auto t = static_cast<vtkIdType>(source->GetComponent(c, 0));
+        if (t >= 0)
         {
-          Vec3& m = normals[static_cast<int>(ids[k])];
-          m = m + normal;
+          firstRefined[t] = c;
         }
       }
     }
-  }
-  // OrientSamples reads compact point indices: map them back to refined point ids.
-  auto normalOf = [&](int compact) { return normals[globalOf[compact]]; };
-  if (!OrientSamples(positions, points, queries, snaps, normalOf, input.Samples, error))
-  {
-    return false;
-  }
-  return SelectBoundarySampledCells(input, result, error);
+    const auto t = static_cast<vtkIdType>(pointTriangle->GetComponent(globalOf[compact], 0));
+    if (t < 0 || t >= static_cast<vtkIdType>(firstRefined.size()) || firstRefined[t] < 0)
+    {
+      return Vec3();
+    }
+    vtkIdType n;
+    const vtkIdType* ids;
+    refined->GetCellPoints(firstRefined[t], n, ids);
+    Vec3 corner[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      double x[3];
+      refined->GetPoint(ids[k], x);
+      corner[k] = { x[0], x[1], x[2] };
+    }
+    return UnitTriangleNormal(corner[0], corner[1], corner[2]);
+  };
+  return SelectBySamples(
+    positions, points, normalOf, queries, tolerance, input, snaps, result, error);
 }
 
 //------------------------------------------------------------------------------

@@ -636,6 +636,108 @@ TEST(StageChain, BoundarySampledCurvesMatchOneStep)
   }
 }
 
+// Boundary Sampled Curves on an arrangement read back from arrays (a file: no Core result
+// attached) gives the answer of the handed-over arrangement and of the one-step filter: the
+// surface normal that decides a sample's side is the source triangle's on every path. Samples
+// point mostly along the surface normal, so a vertex-averaged normal would flip some of them.
+TEST(StageChain, BoundarySampledCurvesFromArraysMatchHandedOver)
+{
+  std::mt19937 rng(31);
+  std::normal_distribution<double> gauss;
+  std::vector<NamedSurface> surfaces{
+    { "coarse sphere", testutils::ToPolyData(boolsurf::MakeIcosphere(1)) },
+    { "sphere", testutils::ToPolyData(boolsurf::MakeIcosphere(2)) },
+  };
+  int samplesChecked = 0;
+  for (const NamedSurface& s : surfaces)
+  {
+    for (int trial = 0; trial < 8; ++trial)
+    {
+      const std::string what = s.Name + ", trial " + std::to_string(trial);
+      auto curves = RandomCurves(s.Surface, PointForm::Exact, rng);
+      Chain chain(s.Surface, curves);
+      chain.Label->Update();
+      if (chain.Log.Catcher->Errors != "")
+      {
+        continue; // a refused drawing: the chain against one step is the test above
+      }
+      // One sample at the middle of each patch's middle segment; the direction is the sphere's
+      // normal there, tilted a little to a random side.
+      vtkPolyData* patches = chain.Arrange->GetOutput(1);
+      auto samples = vtkSmartPointer<vtkPolyData>::New();
+      vtkNew<vtkPoints> points;
+      vtkNew<vtkDoubleArray> direction;
+      direction->SetName("Direction");
+      direction->SetNumberOfComponents(3);
+      for (vtkIdType c = 0; c < patches->GetNumberOfCells(); ++c)
+      {
+        vtkIdType n;
+        const vtkIdType* ids;
+        patches->GetCellPoints(c, n, ids);
+        if (n < 2)
+        {
+          continue;
+        }
+        double a[3], b[3], x[3], d[3];
+        patches->GetPoint(ids[(n - 1) / 2], a);
+        patches->GetPoint(ids[(n - 1) / 2 + 1], b);
+        for (int k = 0; k < 3; ++k)
+        {
+          x[k] = 0.5 * (a[k] + b[k]);
+        }
+        const double r = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+        for (int k = 0; k < 3; ++k)
+        {
+          d[k] = x[k] / r + 0.05 * gauss(rng);
+        }
+        points->InsertNextPoint(x);
+        direction->InsertNextTuple(d);
+      }
+      samples->SetPoints(points);
+      samples->GetPointData()->AddArray(direction);
+
+      vtkNew<vtkBoolSurf> one;
+      one->SetInputData(0, s.Surface);
+      one->SetInputData(1, curves);
+      one->SetInputData(2, samples);
+      one->SetSelection(vtkBoolSurf::BSC_SELECTION);
+      const std::string oneErrors = testutils::ErrorsOf(one);
+
+      vtkNew<vtkBoolSurfBSC> handedOver;
+      handedOver->SetInputConnection(0, chain.Label->GetOutputPort(0));
+      handedOver->SetInputData(1, samples);
+      vtkNew<vtkPolyData> deep; // arrays only, as from a file
+      deep->DeepCopy(chain.Label->GetOutput());
+      vtkNew<vtkBoolSurfBSC> fromArrays;
+      fromArrays->SetInputData(0, deep);
+      fromArrays->SetInputData(1, samples);
+      EXPECT_EQ(testutils::ErrorsOf(handedOver), oneErrors) << what;
+      EXPECT_EQ(testutils::ErrorsOf(fromArrays), oneErrors) << what;
+      if (!oneErrors.empty())
+      {
+        continue;
+      }
+      samplesChecked += static_cast<int>(samples->GetNumberOfPoints());
+      for (vtkBoolSurfBSC* bsc : { handedOver.GetPointer(), fromArrays.GetPointer() })
+      {
+        vtkFieldData* fd = bsc->GetOutput(0)->GetFieldData();
+        vtkFieldData* expected = one->GetOutput(0)->GetFieldData();
+        for (const char* name : { "SamplePatch", "SampleOnBoundary", "BSCCuts" })
+        {
+          EXPECT_EQ(IntsOf(fd, name), IntsOf(expected, name)) << what << ": " << name;
+        }
+        // The same triangles; from arrays they are written in another order, so the area's sum
+        // may differ in its last bits.
+        const double area = testutils::Area(one->GetOutput(0));
+        EXPECT_NEAR(testutils::Area(bsc->GetOutput(0)), area, 1e-13 * area) << what;
+        EXPECT_EQ(bsc->GetOutput(0)->GetNumberOfCells(), one->GetOutput(0)->GetNumberOfCells())
+          << what;
+      }
+    }
+  }
+  EXPECT_GT(samplesChecked, 50);
+}
+
 // A stage below a failed one says that its input is empty because of an upstream error, not
 // that the pipeline is wired wrong.
 TEST(StageChain, DownstreamOfAFailureNamesTheUpstreamError)
