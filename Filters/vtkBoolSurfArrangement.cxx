@@ -25,10 +25,12 @@ struct vtkBoolSurfArrangement::Internals
   /// The homology generators' field arrays, written once per surface (its basis).
   const boolsurf::HomologyBasis* GeneratorBasis = nullptr;
   vtkNew<vtkFieldData> GeneratorArrays;
-  /// The refined surface's big arrays, reused when no output holds them any more.
+  /// The refined surface's per-point arrays, reused when no output holds them any more.
   boolsurf::RefinedSurfaceArrays Arrays;
   /// Results handed downstream; an edit reuses the buffers of one no output holds any more.
   boolsurf::ResultPool<boolsurf::ArrangementResult> Results;
+  /// The arrangement's work buffers, shared by the pool's results (only results need two).
+  std::shared_ptr<boolsurf::Arrangement::WorkBuffers> Work;
 };
 
 //------------------------------------------------------------------------------
@@ -63,8 +65,11 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     return false;
   }
-  this->Internal->Arrays.DetachIdleResults();
   std::shared_ptr<boolsurf::ArrangementResult> result = this->Internal->Results.Acquire();
+  if (this->Internal->Work)
+  {
+    result->Arrangement.Work = this->Internal->Work;
+  }
   result->Surface = *surface;
   std::vector<boolsurf::TracedCurve>& curves = result->Curves;
   std::vector<boolsurf::CurveSource>& sources = result->Sources;
@@ -100,11 +105,13 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
         curves,
         this->NumberOfThreads,
         result->Arrangement,
+        { result, &result->CellOffsets },
+        this->Internal->Arrays,
         output,
         patches,
-        error,
-        &this->Internal->Arrays))
+        error))
   {
+    this->Internal->Work = result->Arrangement.Work;
     const boolsurf::Arrangement& arr = result->Arrangement;
     if (arr.FailedCurve >= 0)
     {
@@ -113,6 +120,7 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
     }
     return false;
   }
+  this->Internal->Work = result->Arrangement.Work;
   // Each patch as control points of its input curve (when the curves came from Trace Surface
   // Curves, which records them), for the Boolean's vector output.
   if (!sources.empty())

@@ -59,7 +59,8 @@ void ParallelFor(tbb::task_arena& arena, int n, const Body& body)
 //------------------------------------------------------------------------------
 struct Arrangement::WorkBuffers
 {
-  /// The mesh whose vertices fill the first NumberOfMeshVertices refined points (0: none yet).
+  /// The mesh the per-triangle and per-edge buffers below are sized for and clean on (0: none
+  /// yet, or a call stopped before it could say).
   std::uint64_t MeshSerial = 0;
   TriangleSegmentMap Map;
   std::vector<LocalArrangement> Local;
@@ -92,8 +93,11 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   Arrangement::WorkBuffers& work = *out.Work;
   const int nv = mesh.GetNumberOfVertices();
   const int nt = mesh.GetNumberOfTriangles();
-  // The last call's buffers belong to this mesh when it wrote the mesh's vertices into them.
-  const bool sameMesh = work.MeshSerial != 0 && work.MeshSerial == mesh.GetSerial() &&
+  // The work buffers may be shared by several arrangements (a filter that double-buffers its
+  // results computes them in turn): whether they belong to this mesh, and whether this result's
+  // first refined points already are this mesh's vertices, are two questions.
+  const bool sameMesh = work.MeshSerial != 0 && work.MeshSerial == mesh.GetSerial();
+  const bool sameVertices = sameMesh && out.VerticesMeshSerial == mesh.GetSerial() &&
     static_cast<int>(out.Positions.size()) >= nv;
   // Results are cleared, keeping their capacity (the next edit needs about as much).
   // Triangles, SourceTriangle, TriangleCell and the points keep their contents until
@@ -126,7 +130,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   }
   work.TouchedTriangles.clear();
   work.TouchedEdges.clear();
-  work.MeshSerial = 0; // until the vertex part of the refined points is written again
+  work.MeshSerial = 0;        // until the buffers are known clean again
+  out.VerticesMeshSerial = 0; // until the vertex part of the refined points is written again
 
   tbb::task_arena arena(options.Threads > 0 ? options.Threads : tbb::task_arena::automatic);
   const Clock::time_point start = Clock::now();
@@ -178,7 +183,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   out.PointOnMesh.resize(totalPoints);
   out.PointSurface.resize(totalPoints);
   // Mesh vertices keep their ids: written once per mesh, then reused by every edit.
-  if (!sameMesh)
+  if (!sameVertices)
   {
     ParallelRange(arena,
       nv,
@@ -202,6 +207,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       });
   }
   work.MeshSerial = mesh.GetSerial();
+  out.VerticesMeshSerial = mesh.GetSerial();
   std::vector<int>& edgeOfEdgePoint = work.EdgeOfEdgePoint;
   edgeOfEdgePoint.resize(edgePoints);
   ParallelFor(arena,

@@ -79,9 +79,13 @@ struct Arrangement
   /// not about one, so callers can name the point as their user knows it.
   int FailedCurve = -1, FailedPoint = -1;
 
+  /// The mesh whose vertices fill the first refined points (0: none yet): computing again into
+  /// the same Arrangement on the same mesh writes them only once.
+  std::uint64_t VerticesMeshSerial = 0;
+
   /// Work buffers kept between calls: computing again into the same Arrangement (an edit of
-  /// the curves on the same mesh) reuses every allocation, and rewrites the mesh vertices'
-  /// part of the refined points only when the mesh changed.
+  /// the curves on the same mesh) reuses every allocation. Nothing of the result is in them, so
+  /// arrangements computed one after the other may share them (assign one's Work to another).
   struct WorkBuffers;
   std::shared_ptr<WorkBuffers> Work;
 };

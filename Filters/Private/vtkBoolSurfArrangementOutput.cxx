@@ -3,6 +3,7 @@
 #include "vtkBoolSurfArrayNames.h"
 
 #include "Labeling/ArrangementLabelingInput.h"
+#include "vtkBoolSurfArrayView.h"
 #include "vtkBoolSurfAttributeTransfer.h"
 #include "vtkBoolSurfStageHandoff.h"
 
@@ -16,8 +17,10 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTypeInt32Array.h>
 
-#include <tbb/parallel_invoke.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -85,15 +88,17 @@ void FillTriangleArrays(const int* corners,
   std::copy_n(corners, 3 * count, connectivity->GetPointer(0));
 }
 
-// Surface points as TriangleId/Barycentric values, in arrays sized by the caller.
+// Surface points [first, last) as TriangleId/Barycentric values, in arrays sized by the
+// caller.
 void FillSurfacePointArrays(const std::vector<SurfacePoint>& points,
+  vtkIdType first,
+  vtkIdType last,
   vtkIdTypeArray* triangleId,
   vtkDoubleArray* barycentric)
 {
   vtkIdType* tid = triangleId->GetPointer(0);
   double* uv = barycentric->GetPointer(0);
-  const vtkIdType np = static_cast<vtkIdType>(points.size());
-  for (vtkIdType i = 0; i < np; ++i)
+  for (vtkIdType i = first; i < last; ++i)
   {
     tid[i] = points[i].Triangle;
     uv[2 * i] = points[i].U;
@@ -126,7 +131,7 @@ void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData
   barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   barycentric->SetNumberOfTuples(np);
-  FillSurfacePointArrays(points, triangleId, barycentric);
+  FillSurfacePointArrays(points, 0, np, triangleId, barycentric);
   pointData->AddArray(triangleId);
   pointData->AddArray(barycentric);
 }
@@ -136,13 +141,8 @@ namespace
 {
 bool Unheld(const RefinedSurfaceArrays::Set& set)
 {
-  for (vtkObjectBase* array : std::initializer_list<vtkObjectBase*>{ set.Coordinates,
-         set.Barycentric,
-         set.CellOffsets,
-         set.Connectivity,
-         set.SourceTriangle,
-         set.TriangleId,
-         set.ArrangementCell })
+  for (vtkObjectBase* array :
+    std::initializer_list<vtkObjectBase*>{ set.TriangleId, set.Barycentric })
   {
     if (array && array->GetReferenceCount() > 1)
     {
@@ -152,17 +152,6 @@ bool Unheld(const RefinedSurfaceArrays::Set& set)
   return true;
 }
 } // namespace
-
-void RefinedSurfaceArrays::DetachIdleResults()
-{
-  for (Set& set : this->Sets)
-  {
-    if (Unheld(set))
-    {
-      DetachStageResult(set.ArrangementCell);
-    }
-  }
-}
 
 RefinedSurfaceArrays::Set& RefinedSurfaceArrays::Acquire()
 {
@@ -192,10 +181,11 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   int threads,
   Arrangement& arrangement,
+  const ArrangementMemory& memory,
+  RefinedSurfaceArrays& arrays,
   vtkPolyData* refined,
   vtkPolyData* patches,
-  std::string& error,
-  RefinedSurfaceArrays* arrays)
+  std::string& error)
 {
   ArrangementOptions options;
   options.Threads = threads;
@@ -204,7 +194,7 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
     error = "Arrangement failed: " + error;
     return false;
   }
-  WriteArrangementSurface(surface, curves, arrangement, refined, threads, arrays);
+  WriteArrangementSurface(surface, curves, arrangement, memory, arrays, refined, threads);
   if (patches)
   {
     WriteArrangementPatches(arrangement, refined, patches);
@@ -216,82 +206,66 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
 void WriteArrangementSurface(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   const Arrangement& arr,
+  const ArrangementMemory& memory,
+  RefinedSurfaceArrays& arrays,
   vtkPolyData* output,
-  int threads,
-  RefinedSurfaceArrays* arrays)
+  int threads)
 {
   output->Initialize();
-  // Bulk copies into the arrays VTK stores (Vec3 is three packed doubles; a triangle list is a
-  // connectivity array with offsets 0, 3, 6, ...): per-element insertion costs tens of
-  // milliseconds on a million triangles. The arrays are allocated here and filled by
-  // independent tasks at once: on a million triangles they are ~100 MB written at memory
-  // bandwidth, the bulk of this filter's cost beyond the arrangement itself.
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
   static_assert(sizeof(std::array<int, 3>) == 3 * sizeof(int), "triangles must be packed ints");
   const vtkIdType np = static_cast<vtkIdType>(arr.Positions.size());
   const vtkIdType nt = static_cast<vtkIdType>(arr.Triangles.size());
-  RefinedSurfaceArrays::Set fresh;
-  RefinedSurfaceArrays::Set& set = arrays ? arrays->Acquire() : fresh;
-  const auto make = [](auto& array, const char* name, int components)
+  // Points, triangles and the per-triangle arrays read the arrangement in place: on a million
+  // triangles a copy is ~50 MB written per edit. VTK takes a triangle list as a connectivity
+  // array (the corners, as the arrangement stores them) and offsets 0, 3, 6, ..., which the
+  // result keeps and extends only when it grows.
+  std::vector<int>& cellStarts = *memory.CellOffsets;
+  const std::size_t known = cellStarts.size();
+  if (known < static_cast<std::size_t>(nt) + 1)
   {
-    if (!array)
+    cellStarts.resize(nt + 1);
+    for (std::size_t t = known; t < cellStarts.size(); ++t)
     {
-      array = std::decay_t<decltype(array)>::New();
+      cellStarts[t] = static_cast<int>(3 * t);
     }
-    array->SetName(name);
-    array->SetNumberOfComponents(components);
-  };
-  make(set.Coordinates, nullptr, 3);
-  make(set.CellOffsets, nullptr, 1);
-  make(set.Connectivity, nullptr, 1);
-  make(set.ArrangementCell, boolsurf::names::ArrangementCell, 1);
-  make(set.SourceTriangle, boolsurf::names::SourceTriangle, 1);
-  make(set.TriangleId, boolsurf::names::TriangleId, 1);
-  make(set.Barycentric, boolsurf::names::Barycentric, 2);
+  }
+  auto coordinates = MakeArrayView<vtkDoubleArray>(&arr.Positions.data()->x, np, 3, memory.Owner);
+  auto cellOffsets = MakeArrayView<vtkTypeInt32Array>(cellStarts.data(), nt + 1, 1, memory.Owner);
+  auto connectivity = MakeArrayView<vtkTypeInt32Array>(
+    reinterpret_cast<const int*>(arr.Triangles.data()), 3 * nt, 1, memory.Owner);
+  auto cellOf = MakeArrayView<vtkIntArray>(arr.TriangleCell.data(), nt, 1, memory.Owner);
+  auto source = MakeArrayView<vtkIntArray>(arr.SourceTriangle.data(), nt, 1, memory.Owner);
+  cellOf->SetName(boolsurf::names::ArrangementCell);
+  source->SetName(boolsurf::names::SourceTriangle);
+
+  // The per-point surface points are copies (one struct per point in the arrangement), into
+  // arrays kept for reuse.
+  RefinedSurfaceArrays::Set& set = arrays.Acquire();
+  if (!set.TriangleId)
+  {
+    set.TriangleId = vtkSmartPointer<vtkIdTypeArray>::New();
+    set.TriangleId->SetName(boolsurf::names::TriangleId);
+    set.Barycentric = vtkSmartPointer<vtkDoubleArray>::New();
+    set.Barycentric->SetName(boolsurf::names::Barycentric);
+    set.Barycentric->SetNumberOfComponents(2);
+  }
   // Kept capacity is reused: no reallocation unless the surface grew.
-  set.Coordinates->SetNumberOfTuples(np);
-  set.CellOffsets->SetNumberOfTuples(nt + 1);
-  set.Connectivity->SetNumberOfTuples(3 * nt);
-  set.ArrangementCell->SetNumberOfTuples(nt);
-  set.SourceTriangle->SetNumberOfTuples(nt);
   set.TriangleId->SetNumberOfTuples(np);
   set.Barycentric->SetNumberOfTuples(np);
-  vtkDoubleArray* coordinates = set.Coordinates;
-  vtkIdTypeArray* cellOffsets = set.CellOffsets;
-  vtkIdTypeArray* connectivity = set.Connectivity;
-  vtkIntArray* cellOf = set.ArrangementCell;
-  vtkIdTypeArray* source = set.SourceTriangle;
-  vtkIdTypeArray* triangleId = set.TriangleId;
-  vtkDoubleArray* barycentric = set.Barycentric;
-
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute(
     [&]
     {
-      tbb::parallel_invoke(
-        [&]
+      tbb::parallel_for(tbb::blocked_range<vtkIdType>(0, np, 1 << 15),
+        [&](const tbb::blocked_range<vtkIdType>& range)
         {
-          std::copy_n(reinterpret_cast<const double*>(arr.Positions.data()),
-            3 * np,
-            coordinates->GetPointer(0));
-        },
-        [&]
-        {
-          FillTriangleArrays(
-            reinterpret_cast<const int*>(arr.Triangles.data()), nt, cellOffsets, connectivity);
-        },
-        [&]
-        {
-          std::copy_n(arr.TriangleCell.data(), nt, cellOf->GetPointer(0));
-          std::copy_n(arr.SourceTriangle.data(), nt, source->GetPointer(0));
-        },
-        [&] { FillSurfacePointArrays(arr.PointSurface, triangleId, barycentric); });
+          FillSurfacePointArrays(
+            arr.PointSurface, range.begin(), range.end(), set.TriangleId, set.Barycentric);
+        });
     });
-  for (vtkAbstractArray* written : std::initializer_list<vtkAbstractArray*>{
-         coordinates, cellOffsets, connectivity, cellOf, source, triangleId, barycentric })
-  {
-    written->Modified(); // new values in an array that may have held an older surface's
-  }
+  set.TriangleId->Modified(); // new values in an array that may have held an older surface's
+  set.Barycentric->Modified();
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
   output->SetPoints(points);
@@ -303,8 +277,8 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
     surface.Triangles, *surface.Mesh, arr.PointSurface, arr.SourceTriangle, output);
   output->GetCellData()->AddArray(cellOf);
   output->GetCellData()->AddArray(source);
-  output->GetPointData()->AddArray(triangleId);
-  output->GetPointData()->AddArray(barycentric);
+  output->GetPointData()->AddArray(set.TriangleId);
+  output->GetPointData()->AddArray(set.Barycentric);
 
   // --- field data: cell graph, patches, components
   vtkFieldData* fd = output->GetFieldData();

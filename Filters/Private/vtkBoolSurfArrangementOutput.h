@@ -14,6 +14,7 @@
 #include <vtkIntArray.h>
 #include <vtkSmartPointer.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,30 +25,34 @@ class vtkPolyData;
 namespace boolsurf
 {
 
-/// The big arrays of a refined surface (points, polygons, per-point surface points, per-triangle
-/// cells and sources), kept by Surface Arrangement between updates: writing ~100 MB into fresh
-/// memory on a million triangles costs a page fault per 4 KB, and releasing it an unmap; a set
-/// no output holds any more (every array referenced by the pool alone) is written again in
-/// place instead. A set still referenced downstream is never touched.
+/// The per-point arrays of a refined surface (TriangleId, Barycentric: the Core arrangement
+/// stores them as one struct per point, so they are copies), kept by Surface Arrangement
+/// between updates: writing into fresh memory costs a page fault per 4 KB and releasing it an
+/// unmap; a set no output holds any more is written again in place instead. A set still
+/// referenced downstream is never touched.
 class RefinedSurfaceArrays
 {
 public:
   struct Set
   {
-    vtkSmartPointer<vtkDoubleArray> Coordinates, Barycentric;
-    vtkSmartPointer<vtkIdTypeArray> CellOffsets, Connectivity, SourceTriangle, TriangleId;
-    vtkSmartPointer<vtkIntArray> ArrangementCell;
+    vtkSmartPointer<vtkIdTypeArray> TriangleId;
+    vtkSmartPointer<vtkDoubleArray> Barycentric;
   };
   /// A set of arrays no one else holds (new ones when every kept set is in use).
   Set& Acquire();
-  /// Drops the Core results attached to the sets no output holds any more: kept for reuse, they
-  /// must not keep their old arrangement alive (its buffers are reused too). Call before
-  /// acquiring the next result.
-  void DetachIdleResults();
 
 private:
   std::vector<Set> Sets;
   std::size_t Next = 0;
+};
+
+/// The memory the refined surface's arrays read in place (vtkBoolSurfArrayView.h): the Core
+/// result that owns the arrangement, kept alive and unchanged while any array reads it, and a
+/// buffer of the result's for the cell offsets 0, 3, 6, ... (grown in place, never shrunk).
+struct ArrangementMemory
+{
+  std::shared_ptr<const void> Owner;
+  std::vector<int>* CellOffsets = nullptr;
 };
 
 /// The arrangement stage: computes the arrangement of `curves` into `arrangement` (reusing
@@ -57,10 +62,11 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   int threads,
   Arrangement& arrangement,
+  const ArrangementMemory& memory,
+  RefinedSurfaceArrays& arrays,
   vtkPolyData* refined,
   vtkPolyData* patches,
-  std::string& error,
-  RefinedSurfaceArrays* arrays = nullptr);
+  std::string& error);
 
 /// Polys of `output`: `count` triangles, corner k of triangle t at corners[3 t + k] (a bulk
 /// copy into the connectivity array, offsets 0, 3, 6, ...).
@@ -70,14 +76,16 @@ void SetTriangles(const int* corners, vtkIdType count, vtkPolyData* output);
 void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData* pointData);
 
 /// Port 0: refined triangles, ArrangementCell/SourceTriangle, TriangleId/Barycentric, the
-/// input's arrays, and the cell graph, patches and zero-cell candidates as field data.
-/// `threads` (0: all) fill the big arrays concurrently; `arrays` (may be null) lends them.
+/// input's arrays, and the cell graph, patches and zero-cell candidates as field data. Points,
+/// triangles, ArrangementCell and SourceTriangle read `arrangement` in place (it must live in
+/// `memory.Owner`); `threads` (0: all) fill the rest concurrently into `arrays`.
 void WriteArrangementSurface(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   const Arrangement& arrangement,
+  const ArrangementMemory& memory,
+  RefinedSurfaceArrays& arrays,
   vtkPolyData* output,
-  int threads = 0,
-  RefinedSurfaceArrays* arrays = nullptr);
+  int threads = 0);
 
 /// Port 1: patches as polylines over the refined surface's points.
 void WriteArrangementPatches(const Arrangement& arrangement,

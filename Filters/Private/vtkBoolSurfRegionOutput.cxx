@@ -141,7 +141,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
   vtkNew<vtkIntArray> cell;
   cell->SetName(boolsurf::names::ArrangementCell);
   cell->SetNumberOfTuples(nt);
-  vtkNew<vtkIdTypeArray> source;
+  vtkNew<vtkIntArray> source; // int, as on the refined surface (mesh triangle ids are ints)
   source->SetName(boolsurf::names::SourceTriangle);
   source->SetNumberOfTuples(nt);
   for (vtkIdType t = 0; t < nt; ++t)

@@ -77,6 +77,8 @@ struct ArrangementResult
   std::vector<CurveSource> Sources; ///< empty when the curves came without control points
   bool ExactGeodesics = true;
   boolsurf::Arrangement Arrangement;
+  /// VTK's cell offsets 0, 3, 6, ... of the refined triangles, read in place by the output.
+  std::vector<int> CellOffsets;
 };
 
 /// Label Arrangement Cells -> Surface Boolean / Boundary Sampled Curves.

@@ -563,6 +563,13 @@ TEST(StageChain, CopiesKeepTheirAnswer)
   vtkNew<vtkPolyData> heldCurves, deepCurves;
   heldCurves->ShallowCopy(chain.Trace->GetOutput());
   deepCurves->DeepCopy(chain.Trace->GetOutput());
+  // The refined surface reads the arrangement's memory in place (points, triangles, cells).
+  // The patches share its points: held alone, they keep them too.
+  vtkNew<vtkPolyData> heldRefined, deepRefined, heldPatches, deepPatches;
+  heldRefined->ShallowCopy(chain.Arrange->GetOutput(0));
+  deepRefined->DeepCopy(chain.Arrange->GetOutput(0));
+  heldPatches->ShallowCopy(chain.Arrange->GetOutput(1));
+  deepPatches->DeepCopy(chain.Arrange->GetOutput(1));
 
   // The chain moves on: more edits, so that every buffer it keeps is reused.
   for (double shift : { 0.05, 0.1, -0.05 })
@@ -575,6 +582,8 @@ TEST(StageChain, CopiesKeepTheirAnswer)
 
   // The shallow copy's arrays are as they were: no later update wrote into them.
   ExpectIdentical(held, deep, "shallow copy against deep copy after three edits");
+  ExpectIdentical(heldRefined, deepRefined, "refined surface held across three edits");
+  ExpectIdentical(heldPatches, deepPatches, "patches held across three edits");
   for (vtkPolyData* input : { held.GetPointer(), deep.GetPointer() })
   {
     vtkNew<vtkBoolSurfBoolean> boolean;
@@ -596,6 +605,37 @@ TEST(StageChain, CopiesKeepTheirAnswer)
     EXPECT_EQ(testutils::ErrorsOf(boolean), "");
     EXPECT_NEAR(testutils::Area(boolean->GetOutput()), before, 1e-12);
   }
+}
+
+// A refined surface outlives the filters that made it: its arrays read the arrangement's memory,
+// which they keep alive (checked under AddressSanitizer in the sanitizer build).
+TEST(StageChain, RefinedSurfaceOutlivesItsFilters)
+{
+  auto surface = testutils::ToPolyData(boolsurf::MakeIcosphere(2));
+  vtkNew<vtkPolyData> held, deep, heldPatches, deepPatches;
+  {
+    std::mt19937 rng(8);
+    Chain chain(surface, RandomCurves(surface, PointForm::Exact, rng));
+    chain.Boolean->Update();
+    ASSERT_EQ(chain.Log.Catcher->Errors, "");
+    held->ShallowCopy(chain.Arrange->GetOutput(0));
+    deep->DeepCopy(chain.Arrange->GetOutput(0));
+    heldPatches->ShallowCopy(chain.Arrange->GetOutput(1));
+    deepPatches->DeepCopy(chain.Arrange->GetOutput(1));
+  }
+  ExpectIdentical(held, deep, "refined surface after its filters were deleted");
+  {
+    // Still a surface VTK works with: the Boolean from the held copy alone.
+    vtkNew<vtkBoolSurfBoolean> boolean;
+    boolean->SetInputData(held);
+    boolean->SetShapeA(-1);
+    boolean->SetShapeB(-1);
+    EXPECT_EQ(testutils::ErrorsOf(boolean), "");
+    EXPECT_GT(testutils::Area(boolean->GetOutput()), 0.0);
+  }
+  held->Initialize(); // the patches alone hold the points now
+  deep->Initialize();
+  ExpectIdentical(heldPatches, deepPatches, "patches after their filters were deleted");
 }
 
 // Boundary Sampled Curves through the chain gives the one-step BSC region.

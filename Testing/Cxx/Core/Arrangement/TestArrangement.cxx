@@ -353,6 +353,39 @@ TEST(Arrangement, EditsIntoTheSameArrangementEqualFreshOnes)
   ExpectSameArrangement(reused, ArrangeOrDie(other, curves));
 }
 
+// Two arrangements sharing their work buffers (as a filter that double-buffers its results
+// does), computed in turn, across a change to another mesh with as many vertices: each result
+// equals a fresh one, so neither keeps the other mesh's vertices.
+TEST(Arrangement, ArrangementsSharingWorkBuffersEqualFreshOnes)
+{
+  const TriangleMesh first = MeshOf(MakeFlatSquare(20, 1.0, 0.3, 1));
+  const TriangleMesh second = MeshOf(MakeFlatSquare(20, 1.0, 0.3, 2));
+  ASSERT_EQ(first.GetNumberOfVertices(), second.GetNumberOfVertices());
+  Arrangement a, b;
+  std::string error;
+  int step = 0;
+  for (const TriangleMesh* mesh : { &first, &first, &second, &second, &first })
+  {
+    FlatPolygonTracer tracer(*mesh);
+    for (Arrangement* out : { &a, &b })
+    {
+      std::mt19937 rng(300 + step++);
+      const std::vector<TracedCurve> curves{
+        TraceOrDie(tracer, RandomPolygon(rng, 6, 0.05, 0.95), true, 0, 0),
+        TraceOrDie(tracer, RandomPolygon(rng, 5, 0.05, 0.95), true, 1, 1)
+      };
+      if (out == &b && a.Work)
+      {
+        b.Work = a.Work;
+      }
+      SCOPED_TRACE("step " + std::to_string(step));
+      ASSERT_TRUE(ComputeArrangement(*mesh, curves, ArrangementOptions(), *out, error)) << error;
+      ExpectSameArrangement(*out, ArrangeOrDie(*mesh, curves));
+    }
+  }
+  EXPECT_EQ(a.Work, b.Work);
+}
+
 // Tiles partition the usable triangles into connected groups of at most the requested size,
 // each led by its lowest member, in increasing order of that member.
 TEST(Arrangement, MeshTilesAreConnectedAndOrdered)
