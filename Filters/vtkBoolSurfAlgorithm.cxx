@@ -3,11 +3,40 @@
 #include "vtkBoolSurfRankGather.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
+#include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 
 #include <algorithm>
+
+namespace
+{
+/// The field data of a BoolSurf filter's output. VTK's executive passes every field array of
+/// the first input to every output before each RequestData (vtkDemandDrivenPipeline::
+/// ExecuteDataStart); BoolSurf's outputs are written whole, starting empty, so those copies
+/// were thrown away at once, and on an arrangement (about 40 field arrays, each added by name)
+/// they cost more than a small scene's whole arrangement. The output keeps this field data
+/// across updates (Initialize empties it, it does not replace it), so it never takes them.
+/// Shallow and deep copies of the output get a plain vtkFieldData with the same arrays.
+class vtkBoolSurfOutputFieldData : public vtkFieldData
+{
+public:
+  static vtkBoolSurfOutputFieldData* New();
+  vtkTypeMacro(vtkBoolSurfOutputFieldData, vtkFieldData);
+  void PassData(vtkFieldData*) override {}
+
+protected:
+  vtkBoolSurfOutputFieldData() = default;
+  ~vtkBoolSurfOutputFieldData() override = default;
+
+private:
+  vtkBoolSurfOutputFieldData(const vtkBoolSurfOutputFieldData&) = delete;
+  void operator=(const vtkBoolSurfOutputFieldData&) = delete;
+};
+vtkStandardNewMacro(vtkBoolSurfOutputFieldData);
+} // namespace
 
 //------------------------------------------------------------------------------
 vtkBoolSurfAlgorithm::vtkBoolSurfAlgorithm() = default;
@@ -91,6 +120,10 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
   {
     outputs[p] = vtkPolyData::GetData(outputVector, static_cast<int>(p));
     outputs[p]->Initialize(); // other ranks, and a failure: empty outputs
+    if (!vtkBoolSurfOutputFieldData::SafeDownCast(outputs[p]->GetFieldData()))
+    {
+      outputs[p]->SetFieldData(vtkSmartPointer<vtkBoolSurfOutputFieldData>::New());
+    }
   }
   if (!gather.ComputesHere())
   {
