@@ -40,7 +40,8 @@ MeshData MakeFlatSquare(int n, double size, double jitter, std::uint32_t seed)
   {
     for (int i = 0; i <= n; ++i)
     {
-      double x = i * h, y = j * h;
+      // i * size / n rather than i * h: with size 1 the grid is exactly i / n.
+      double x = i * size / n, y = j * size / n;
       if (jitter > 0 && i > 0 && i < n && j > 0 && j < n)
       {
         x += offset(rng) * h;

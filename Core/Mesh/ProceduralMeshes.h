@@ -19,7 +19,9 @@ struct MeshData
   std::vector<std::array<int, 3>> Triangles;
 };
 
-/// Square [0,size]^2 in the plane z = 0, n x n cells, normals +z. With jitter > 0 the interior
+/// Square [0,size]^2 in the plane z = 0, n x n cells, normals +z: vertex (i, j) has the id
+/// j (n + 1) + i and the position (i size / n, j size / n, 0) (exactly i / n for size 1); cell
+/// (i, j) is split into (p00, p10, p11), (p00, p11, p01). With jitter > 0 the interior
 /// vertices move by up to jitter * cell size and each cell's diagonal is chosen at random
 /// (seeded) among those that keep every triangle counter-clockwise, giving an irregular
 /// triangulation of the same square that never folds over itself.
