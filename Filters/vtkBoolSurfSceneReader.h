@@ -41,6 +41,9 @@
  * of MeshSearchPath (separated by ';' or ':') and in a `meshes` folder beside any ancestor.
  * PLY (vtkPLYReader) and OBJ (vtkOBJReader) meshes are read.
  *
+ * The format, its checks and the placement of the points are Core's (Core/Scene: SceneJson,
+ * ScenePlacement, SceneMeshLookup); this class reads the mesh and makes the outputs.
+ *
  * Errors (vtkErrorMacro naming the file, the key, the polygon and point index; empty outputs):
  * unreadable file, bad JSON, missing `polygons` or `points`, a value of the wrong type, a
  * face index out of range, a uv outside the triangle (tolerance 1e-6; values within it are
