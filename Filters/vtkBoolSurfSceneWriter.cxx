@@ -4,6 +4,8 @@
 
 #include "vtkBoolSurfTracedCurves.h" // for ForEachCurveCell
 
+#include "Scene/SceneJson.h"
+
 #include "vtkAbstractArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -15,14 +17,12 @@
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
 
-#include <nlohmann/json.hpp>
-
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -31,7 +31,6 @@ vtkStandardNewMacro(vtkBoolSurfSceneWriter);
 namespace
 {
 namespace fs = std::filesystem;
-using json = nlohmann::json;
 
 /// A problem with the input, already worded for the user.
 struct WriteError : std::runtime_error
@@ -39,9 +38,9 @@ struct WriteError : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-/// The reader's tolerance on barycentric coordinates (vtkBoolSurfSceneReader): a point written
+/// The reader's tolerance on barycentric coordinates (Core's scene files): a point written
 /// outside it could not be read back.
-constexpr double UVTolerance = 1e-6;
+constexpr double UVTolerance = boolsurf::SceneUVTolerance;
 
 /// Polygon and shape indices become list positions in the file: an id far beyond the number
 /// of curves would write millions of empty entries, so it is refused.
@@ -92,7 +91,7 @@ struct Curve
 };
 
 /// The `points` list, checked: every point must be a valid surface point for the reader.
-json PointsOf(vtkPolyData* input)
+std::vector<boolsurf::ScenePoint> PointsOf(vtkPolyData* input)
 {
   vtkDataArray* triangleIds = input->GetPointData()->GetArray(boolsurf::names::TriangleId);
   vtkDataArray* barycentric = input->GetPointData()->GetArray(boolsurf::names::Barycentric);
@@ -108,7 +107,7 @@ json PointsOf(vtkPolyData* input)
     throw WriteError("point data TriangleId/Barycentric has fewer tuples than the " +
       std::to_string(n) + " points");
   }
-  json points = json::array();
+  std::vector<boolsurf::ScenePoint> points(static_cast<std::size_t>(n));
   for (vtkIdType p = 0; p < n; ++p)
   {
     const double t = triangleIds->GetComponent(p, 0);
@@ -124,7 +123,10 @@ json PointsOf(vtkPolyData* input)
       throw WriteError("point " + std::to_string(p) + ": Barycentric (" + std::to_string(u) + ", " +
         std::to_string(v) + ") is outside its triangle (needs u, v >= 0, u + v <= 1)");
     }
-    points.push_back({ { "face", static_cast<long long>(t) }, { "uv", { u, v } } });
+    boolsurf::ScenePoint& point = points[static_cast<std::size_t>(p)];
+    point.Face = static_cast<long long>(t);
+    point.U = u;
+    point.V = v;
   }
   return points;
 }
@@ -277,22 +279,22 @@ std::vector<int> PolygonIndices(vtkPolyData* input, const std::vector<Curve>& cu
   return index;
 }
 
-/// `operations` from field data OperationA/B/Type (as the reader puts them), or null.
-json OperationsOf(vtkFieldData* fd)
+/// `operations` from field data OperationA/B/Type (as the reader puts them), or none.
+std::optional<std::vector<boolsurf::SceneOperation>> OperationsOf(vtkFieldData* fd)
 {
   vtkDataArray* a = fd ? fd->GetArray("OperationA") : nullptr;
   vtkDataArray* b = fd ? fd->GetArray("OperationB") : nullptr;
   vtkDataArray* type = fd ? fd->GetArray("OperationType") : nullptr;
   if (!a || !b || !type)
   {
-    return nullptr;
+    return std::nullopt;
   }
   const vtkIdType n = a->GetNumberOfTuples();
   if (b->GetNumberOfTuples() != n || type->GetNumberOfTuples() != n)
   {
     throw WriteError("field data OperationA, OperationB and OperationType differ in length");
   }
-  json operations = json::array();
+  std::vector<boolsurf::SceneOperation> operations;
   for (vtkIdType i = 0; i < n; ++i)
   {
     const double va = a->GetComponent(i, 0), vb = b->GetComponent(i, 0),
@@ -303,9 +305,7 @@ json OperationsOf(vtkFieldData* fd)
         " is not {shape a, shape b, type 0..3}: " + std::to_string(va) + ", " + std::to_string(vb) +
         ", " + std::to_string(vt));
     }
-    operations.push_back({ { "a", static_cast<int>(va) },
-      { "b", static_cast<int>(vb) },
-      { "type", static_cast<int>(vt) } });
+    operations.push_back({ static_cast<int>(va), static_cast<int>(vb), static_cast<int>(vt) });
   }
   return operations;
 }
@@ -335,7 +335,7 @@ void vtkBoolSurfSceneWriter::WriteData()
     vtkErrorMacro("No FileName: set the scene file (.json) to write.");
     return;
   }
-  json scene;
+  boolsurf::SceneModel scene;
   try
   {
     if (!input)
@@ -359,7 +359,8 @@ void vtkBoolSurfSceneWriter::WriteData()
       throw WriteError("no mesh reference: set MeshReference to the mesh file the curves lie on "
                        "(the input has no field data SceneModel or MeshFileName to take it from)");
     }
-    json points = PointsOf(input);
+    scene.Model = model;
+    scene.Points = PointsOf(input);
     this->UpdateProgress(0.5);
     std::vector<std::string> notes;
     const std::vector<Curve> curves =
@@ -368,44 +369,20 @@ void vtkBoolSurfSceneWriter::WriteData()
     {
       vtkWarningMacro("BoolSurf scene " << this->FileName << ": " << note);
     }
+    // Polygons and shapes are numbered from the curves; the emitter sizes `polygons` and
+    // `shapes` by the largest of them.
     const std::vector<int> polygonOf = PolygonIndices(input, curves);
-    const int numberOfPolygons = *std::max_element(polygonOf.begin(), polygonOf.end()) + 1;
-    int numberOfShapes = 0;
-    bool bezier = false;
-    for (const Curve& c : curves)
-    {
-      numberOfShapes = std::max(numberOfShapes, c.Shape + 1);
-      bezier = bezier || c.Type == 1;
-    }
-    json polygons(numberOfPolygons, json::array());
-    json closed(numberOfPolygons, true);
-    json types(numberOfPolygons, 0);
-    json shapes(numberOfShapes, json::array());
     for (std::size_t k = 0; k < curves.size(); ++k)
     {
-      const int p = polygonOf[k];
-      for (vtkIdType id : curves[k].Points)
-      {
-        polygons[p].push_back(static_cast<long long>(id));
-      }
-      closed[p] = curves[k].Closed;
-      types[p] = curves[k].Type;
-      shapes[curves[k].Shape].push_back(p);
+      boolsurf::ScenePolygon polygon;
+      polygon.Index = polygonOf[k];
+      polygon.Points.assign(curves[k].Points.begin(), curves[k].Points.end());
+      polygon.Closed = curves[k].Closed;
+      polygon.CurveType = curves[k].Type;
+      polygon.Shape = curves[k].Shape;
+      scene.Polygons.push_back(std::move(polygon));
     }
-    scene["model"] = model;
-    scene["points"] = std::move(points);
-    scene["polygons"] = std::move(polygons);
-    scene["are_closed"] = std::move(closed);
-    scene["shapes"] = std::move(shapes);
-    if (bezier)
-    {
-      scene["curve_types"] = std::move(types);
-    }
-    json operations = OperationsOf(input->GetFieldData());
-    if (!operations.is_null())
-    {
-      scene["operations"] = std::move(operations);
-    }
+    scene.Operations = OperationsOf(input->GetFieldData());
   }
   catch (const WriteError& e)
   {
@@ -418,7 +395,7 @@ void vtkBoolSurfSceneWriter::WriteData()
   const fs::path temporary = target.string() + ".part";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << scene.dump(this->Indent) << '\n';
+    out << boolsurf::EmitSceneJson(scene, this->Indent);
     if (!out)
     {
       vtkErrorMacro("BoolSurf scene " << this->FileName << ": cannot write the file");
@@ -438,7 +415,7 @@ void vtkBoolSurfSceneWriter::WriteData()
     fs::remove(temporary, ec);
     return;
   }
-  this->WrittenMeshReference = scene["model"].get<std::string>();
+  this->WrittenMeshReference = scene.Model;
   this->UpdateProgress(1.0);
 }
 

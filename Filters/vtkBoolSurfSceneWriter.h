@@ -27,6 +27,9 @@
  *   of ours, one int per polygon, that vtkBoolSurfSceneReader reads and the original code
  *   ignores.
  *
+ * The JSON is written by Core (Core/Scene/SceneJson, EmitSceneJson) from the scene this class
+ * fills from its input.
+ *
  * Errors (vtkErrorMacro naming the point or curve id; no file is written): no FileName, no
  * mesh reference, no point data `TriangleId` and `Barycentric` (two components), a TriangleId
  * that is not a triangle index, barycentric coordinates outside the triangle (tolerance 1e-6)
