@@ -25,8 +25,6 @@ struct vtkBoolSurfArrangement::Internals
   /// The homology generators' field arrays, written once per surface (its basis).
   const boolsurf::HomologyBasis* GeneratorBasis = nullptr;
   vtkNew<vtkFieldData> GeneratorArrays;
-  /// The refined surface's per-point arrays, reused when no output holds them any more.
-  boolsurf::RefinedSurfaceArrays Arrays;
   /// Results handed downstream; an edit reuses the buffers of one no output holds any more.
   boolsurf::ResultPool<boolsurf::ArrangementResult> Results;
   /// The arrangement's work buffers, shared by the pool's results (only results need two).
@@ -105,8 +103,7 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
         curves,
         this->NumberOfThreads,
         result->Arrangement,
-        { result, &result->CellOffsets },
-        this->Internal->Arrays,
+        { result, &result->CellOffsets, &result->PointTriangle, &result->PointBarycentric },
         output,
         patches,
         error))

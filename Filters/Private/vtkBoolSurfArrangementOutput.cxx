@@ -88,17 +88,15 @@ void FillTriangleArrays(const int* corners,
   std::copy_n(corners, 3 * count, connectivity->GetPointer(0));
 }
 
-// Surface points [first, last) as TriangleId/Barycentric values, in arrays sized by the
-// caller.
+// Surface points as TriangleId/Barycentric values, in arrays sized by the caller.
 void FillSurfacePointArrays(const std::vector<SurfacePoint>& points,
-  vtkIdType first,
-  vtkIdType last,
   vtkIdTypeArray* triangleId,
   vtkDoubleArray* barycentric)
 {
   vtkIdType* tid = triangleId->GetPointer(0);
   double* uv = barycentric->GetPointer(0);
-  for (vtkIdType i = first; i < last; ++i)
+  const vtkIdType np = static_cast<vtkIdType>(points.size());
+  for (vtkIdType i = 0; i < np; ++i)
   {
     tid[i] = points[i].Triangle;
     uv[2 * i] = points[i].U;
@@ -131,49 +129,9 @@ void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData
   barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   barycentric->SetNumberOfTuples(np);
-  FillSurfacePointArrays(points, 0, np, triangleId, barycentric);
+  FillSurfacePointArrays(points, triangleId, barycentric);
   pointData->AddArray(triangleId);
   pointData->AddArray(barycentric);
-}
-
-//------------------------------------------------------------------------------
-namespace
-{
-bool Unheld(const RefinedSurfaceArrays::Set& set)
-{
-  for (vtkObjectBase* array :
-    std::initializer_list<vtkObjectBase*>{ set.TriangleId, set.Barycentric })
-  {
-    if (array && array->GetReferenceCount() > 1)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-} // namespace
-
-RefinedSurfaceArrays::Set& RefinedSurfaceArrays::Acquire()
-{
-  for (Set& set : this->Sets)
-  {
-    if (Unheld(set))
-    {
-      return set;
-    }
-  }
-  // Two sets: in a chain the labeled output downstream holds the last surface while the next
-  // one is written.
-  constexpr std::size_t Capacity = 2;
-  if (this->Sets.size() < Capacity)
-  {
-    this->Sets.emplace_back();
-    return this->Sets.back();
-  }
-  Set& replaced = this->Sets[this->Next];
-  this->Next = (this->Next + 1) % Capacity;
-  replaced = Set(); // its arrays live on in their holders only
-  return replaced;
 }
 
 //------------------------------------------------------------------------------
@@ -182,7 +140,6 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
   int threads,
   Arrangement& arrangement,
   const ArrangementMemory& memory,
-  RefinedSurfaceArrays& arrays,
   vtkPolyData* refined,
   vtkPolyData* patches,
   std::string& error)
@@ -194,7 +151,7 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
     error = "Arrangement failed: " + error;
     return false;
   }
-  WriteArrangementSurface(surface, curves, arrangement, memory, arrays, refined, threads);
+  WriteArrangementSurface(surface, curves, arrangement, memory, refined, threads);
   if (patches)
   {
     WriteArrangementPatches(arrangement, refined, patches);
@@ -207,7 +164,6 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   const Arrangement& arr,
   const ArrangementMemory& memory,
-  RefinedSurfaceArrays& arrays,
   vtkPolyData* output,
   int threads)
 {
@@ -239,33 +195,41 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   cellOf->SetName(boolsurf::names::ArrangementCell);
   source->SetName(boolsurf::names::SourceTriangle);
 
-  // The per-point surface points are copies (one struct per point in the arrangement), into
-  // arrays kept for reuse.
-  RefinedSurfaceArrays::Set& set = arrays.Acquire();
-  if (!set.TriangleId)
+  // The per-point surface points: copies (one struct per point in the arrangement) into the
+  // result's buffers, read in place too.
+  std::vector<vtkIdType>& pointTriangle = *memory.PointTriangle;
+  std::vector<double>& pointBarycentric = *memory.PointBarycentric;
+  pointTriangle.resize(np);
+  pointBarycentric.resize(2 * np);
+  const auto fill = [&](vtkIdType first, vtkIdType last)
   {
-    set.TriangleId = vtkSmartPointer<vtkIdTypeArray>::New();
-    set.TriangleId->SetName(boolsurf::names::TriangleId);
-    set.Barycentric = vtkSmartPointer<vtkDoubleArray>::New();
-    set.Barycentric->SetName(boolsurf::names::Barycentric);
-    set.Barycentric->SetNumberOfComponents(2);
-  }
-  // Kept capacity is reused: no reallocation unless the surface grew.
-  set.TriangleId->SetNumberOfTuples(np);
-  set.Barycentric->SetNumberOfTuples(np);
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute(
-    [&]
+    for (vtkIdType i = first; i < last; ++i)
     {
-      tbb::parallel_for(tbb::blocked_range<vtkIdType>(0, np, 1 << 15),
-        [&](const tbb::blocked_range<vtkIdType>& range)
-        {
-          FillSurfacePointArrays(
-            arr.PointSurface, range.begin(), range.end(), set.TriangleId, set.Barycentric);
-        });
-    });
-  set.TriangleId->Modified(); // new values in an array that may have held an older surface's
-  set.Barycentric->Modified();
+      const SurfacePoint& p = arr.PointSurface[i];
+      pointTriangle[i] = p.Triangle;
+      pointBarycentric[2 * i] = p.U;
+      pointBarycentric[2 * i + 1] = p.V;
+    }
+  };
+  constexpr vtkIdType Grain = 1 << 15;
+  if (np <= Grain)
+  {
+    fill(0, np); // a small surface: not worth waking other threads
+  }
+  else
+  {
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    arena.execute(
+      [&]
+      {
+        tbb::parallel_for(tbb::blocked_range<vtkIdType>(0, np, Grain),
+          [&](const tbb::blocked_range<vtkIdType>& range) { fill(range.begin(), range.end()); });
+      });
+  }
+  auto triangleId = MakeArrayView<vtkIdTypeArray>(pointTriangle.data(), np, 1, memory.Owner);
+  auto barycentric = MakeArrayView<vtkDoubleArray>(pointBarycentric.data(), np, 2, memory.Owner);
+  triangleId->SetName(boolsurf::names::TriangleId);
+  barycentric->SetName(boolsurf::names::Barycentric);
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
   output->SetPoints(points);
@@ -277,8 +241,8 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
     surface.Triangles, *surface.Mesh, arr.PointSurface, arr.SourceTriangle, output);
   output->GetCellData()->AddArray(cellOf);
   output->GetCellData()->AddArray(source);
-  output->GetPointData()->AddArray(set.TriangleId);
-  output->GetPointData()->AddArray(set.Barycentric);
+  output->GetPointData()->AddArray(triangleId);
+  output->GetPointData()->AddArray(barycentric);
 
   // --- field data: cell graph, patches, components
   vtkFieldData* fd = output->GetFieldData();

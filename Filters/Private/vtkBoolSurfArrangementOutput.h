@@ -25,34 +25,18 @@ class vtkPolyData;
 namespace boolsurf
 {
 
-/// The per-point arrays of a refined surface (TriangleId, Barycentric: the Core arrangement
-/// stores them as one struct per point, so they are copies), kept by Surface Arrangement
-/// between updates: writing into fresh memory costs a page fault per 4 KB and releasing it an
-/// unmap; a set no output holds any more is written again in place instead. A set still
-/// referenced downstream is never touched.
-class RefinedSurfaceArrays
-{
-public:
-  struct Set
-  {
-    vtkSmartPointer<vtkIdTypeArray> TriangleId;
-    vtkSmartPointer<vtkDoubleArray> Barycentric;
-  };
-  /// A set of arrays no one else holds (new ones when every kept set is in use).
-  Set& Acquire();
-
-private:
-  std::vector<Set> Sets;
-  std::size_t Next = 0;
-};
-
 /// The memory the refined surface's arrays read in place (vtkBoolSurfArrayView.h): the Core
-/// result that owns the arrangement, kept alive and unchanged while any array reads it, and a
-/// buffer of the result's for the cell offsets 0, 3, 6, ... (grown in place, never shrunk).
+/// result that owns the arrangement, kept alive and unchanged while any array reads it, and
+/// buffers of the result's for what VTK stores in another form than the arrangement: the cell
+/// offsets 0, 3, 6, ... (extended only when the surface grows) and each point's TriangleId and
+/// Barycentric (the arrangement keeps one struct per point). Buffers keep their capacity
+/// between the edits that reuse the result, so an edit touches no fresh memory for them.
 struct ArrangementMemory
 {
   std::shared_ptr<const void> Owner;
   std::vector<int>* CellOffsets = nullptr;
+  std::vector<vtkIdType>* PointTriangle = nullptr;
+  std::vector<double>* PointBarycentric = nullptr;
 };
 
 /// The arrangement stage: computes the arrangement of `curves` into `arrangement` (reusing
@@ -63,7 +47,6 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
   int threads,
   Arrangement& arrangement,
   const ArrangementMemory& memory,
-  RefinedSurfaceArrays& arrays,
   vtkPolyData* refined,
   vtkPolyData* patches,
   std::string& error);
@@ -78,12 +61,11 @@ void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData
 /// Port 0: refined triangles, ArrangementCell/SourceTriangle, TriangleId/Barycentric, the
 /// input's arrays, and the cell graph, patches and zero-cell candidates as field data. Points,
 /// triangles, ArrangementCell and SourceTriangle read `arrangement` in place (it must live in
-/// `memory.Owner`); `threads` (0: all) fill the rest concurrently into `arrays`.
+/// `memory.Owner`), as do TriangleId/Barycentric, filled by `threads` (0: all) into `memory`.
 void WriteArrangementSurface(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
   const Arrangement& arrangement,
   const ArrangementMemory& memory,
-  RefinedSurfaceArrays& arrays,
   vtkPolyData* output,
   int threads = 0);
 

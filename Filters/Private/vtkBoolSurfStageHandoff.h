@@ -10,7 +10,7 @@
 //
 // The result lives in the witness array's own vtkInformation. Shallow copies share the array,
 // so they carry the result; an upstream update writes new arrays with a new result (or arrays
-// that nothing but the filter holds any more, see RefinedSurfaceArrays), so it never changes
+// that nothing but the filter holds any more, see ResultPool), so it never changes
 // what a copy already holds. A witness changed since (its MTime or size differs from
 // when the result was attached, e.g. edited in a script or deep-copied into another array), or
 // an input read from a file, has no usable result: the downstream stage reads the arrays.
@@ -77,8 +77,11 @@ struct ArrangementResult
   std::vector<CurveSource> Sources; ///< empty when the curves came without control points
   bool ExactGeodesics = true;
   boolsurf::Arrangement Arrangement;
-  /// VTK's cell offsets 0, 3, 6, ... of the refined triangles, read in place by the output.
+  /// What the refined surface's VTK arrays read in place besides the arrangement: the cell
+  /// offsets 0, 3, 6, ... and each point's TriangleId and Barycentric (ArrangementMemory).
   std::vector<int> CellOffsets;
+  std::vector<vtkIdType> PointTriangle;
+  std::vector<double> PointBarycentric;
 };
 
 /// Label Arrangement Cells -> Surface Boolean / Boundary Sampled Curves.
