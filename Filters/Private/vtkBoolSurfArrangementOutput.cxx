@@ -199,8 +199,14 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   // result's buffers, read in place too.
   std::vector<vtkIdType>& pointTriangle = *memory.PointTriangle;
   std::vector<double>& pointBarycentric = *memory.PointBarycentric;
+  const vtkIdType nv = surface.Mesh->GetNumberOfVertices();
+  const std::uint64_t serial = surface.Mesh->GetSerial();
+  const bool verticesKept = serial != 0 && *memory.PointArraysMeshSerial == serial &&
+    static_cast<vtkIdType>(pointTriangle.size()) >= nv && arr.VerticesMeshSerial == serial;
+  *memory.PointArraysMeshSerial = 0; // until the vertices' part is written
   pointTriangle.resize(np);
   pointBarycentric.resize(2 * np);
+  const vtkIdType firstWritten = verticesKept ? std::min(nv, np) : 0;
   const auto fill = [&](vtkIdType first, vtkIdType last)
   {
     for (vtkIdType i = first; i < last; ++i)
@@ -212,9 +218,9 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
     }
   };
   constexpr vtkIdType Grain = 1 << 15;
-  if (np <= Grain)
+  if (np - firstWritten <= Grain)
   {
-    fill(0, np); // a small surface: not worth waking other threads
+    fill(firstWritten, np); // a few points: not worth waking other threads
   }
   else
   {
@@ -222,10 +228,11 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
     arena.execute(
       [&]
       {
-        tbb::parallel_for(tbb::blocked_range<vtkIdType>(0, np, Grain),
+        tbb::parallel_for(tbb::blocked_range<vtkIdType>(firstWritten, np, Grain),
           [&](const tbb::blocked_range<vtkIdType>& range) { fill(range.begin(), range.end()); });
       });
   }
+  *memory.PointArraysMeshSerial = serial;
   auto triangleId = MakeArrayView<vtkIdTypeArray>(pointTriangle.data(), np, 1, memory.Owner);
   auto barycentric = MakeArrayView<vtkDoubleArray>(pointBarycentric.data(), np, 2, memory.Owner);
   triangleId->SetName(boolsurf::names::TriangleId);

@@ -14,6 +14,7 @@
 #include <vtkIntArray.h>
 #include <vtkSmartPointer.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +38,10 @@ struct ArrangementMemory
   std::vector<int>* CellOffsets = nullptr;
   std::vector<vtkIdType>* PointTriangle = nullptr;
   std::vector<double>* PointBarycentric = nullptr;
+  /// The mesh whose vertices' surface points the two buffers above already hold in their first
+  /// entries (0: none), updated here: the arrangement numbers the mesh vertices first and never
+  /// changes them, so an edit on the same mesh fills only the curves' points.
+  std::uint64_t* PointArraysMeshSerial = nullptr;
 };
 
 /// The arrangement stage: computes the arrangement of `curves` into `arrangement` (reusing

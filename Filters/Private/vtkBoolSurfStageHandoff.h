@@ -82,6 +82,7 @@ struct ArrangementResult
   std::vector<int> CellOffsets;
   std::vector<vtkIdType> PointTriangle;
   std::vector<double> PointBarycentric;
+  std::uint64_t PointArraysMeshSerial = 0;
 };
 
 /// Label Arrangement Cells -> Surface Boolean / Boundary Sampled Curves.

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace boolsurf
 {
@@ -36,35 +37,64 @@ void WriteTraces(const TriangleMesh& mesh,
   const std::vector<CurveTrace>& traces,
   vtkPolyData* output)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> lines;
+  // Arrays sized once and filled in place: a per-value insertion into ten arrays cost more
+  // than the arrangement's reading of the curves.
+  const vtkIdType nc = static_cast<vtkIdType>(traces.size());
+  std::vector<vtkIdType> firstPoint(nc + 1, 0), firstCorner(nc + 1, 0);
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    const vtkIdType n = static_cast<vtkIdType>(traces[c].Curve.Points.size());
+    const bool isClosed = traces[c].Curve.Closed && n > 1;
+    firstPoint[c + 1] = firstPoint[c] + n;
+    firstCorner[c + 1] = firstCorner[c] + n + (isClosed ? 1 : 0);
+  }
+  const vtkIdType np = firstPoint[nc];
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(np);
   vtkNew<vtkIdTypeArray> triangleId;
   triangleId->SetName(boolsurf::names::TriangleId);
+  triangleId->SetNumberOfTuples(np);
   vtkNew<vtkDoubleArray> barycentric;
   barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
+  barycentric->SetNumberOfTuples(np);
   vtkNew<vtkDoubleArray> parameter;
   parameter->SetName(boolsurf::names::CurveParameter);
+  parameter->SetNumberOfTuples(np);
   auto segment = NewIntArray(boolsurf::names::ControlSegment);
+  segment->SetNumberOfTuples(np);
   auto controlPoint = NewIntArray(boolsurf::names::ControlPointId);
+  controlPoint->SetNumberOfTuples(np);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfTuples(nc + 1);
+  connectivity->SetNumberOfTuples(firstCorner[nc]);
   auto shape = NewIntArray(boolsurf::names::ShapeId);
   auto curveId = NewIntArray(boolsurf::names::CurveId);
   auto closed = NewIntArray(boolsurf::names::Closed);
   auto type = NewIntArray(boolsurf::names::CurveType);
   vtkNew<vtkDoubleArray> length;
   length->SetName(boolsurf::names::Length);
-  for (size_t c = 0; c < traces.size(); ++c)
+  for (vtkAbstractArray* perCurve :
+    std::initializer_list<vtkAbstractArray*>{ shape, curveId, closed, type, length })
+  {
+    perCurve->SetNumberOfTuples(nc);
+  }
+  const auto writeCurve = [&](vtkIdType c)
   {
     const CurveTrace& trace = traces[c];
     const ControlCurve& control = controls[c];
-    const vtkIdType first = points->GetNumberOfPoints();
+    const vtkIdType first = firstPoint[c];
     const size_t n = trace.Curve.Points.size();
     for (size_t i = 0; i < n; ++i)
     {
+      const vtkIdType id = first + static_cast<vtkIdType>(i);
       const CanonicalPoint& p = trace.Curve.Points[i];
       const Vec3 x = PositionOf(mesh, p);
-      points->InsertNextPoint(x.x, x.y, x.z);
+      double* xyz = coordinates->GetPointer(3 * id);
+      xyz[0] = x.x;
+      xyz[1] = x.y;
+      xyz[2] = x.z;
       // Every point is written canonically (exact zeros on edges and vertices), so Surface
       // Arrangement and every other reader locate it where the tracer did. A control point is
       // written in the user's triangle when that triangle holds it (then, off edges and
@@ -84,30 +114,39 @@ void WriteTraces(const TriangleMesh& mesh,
         preferred = SharedTriangle(mesh, p, trace.Curve.Points[next]);
       }
       const SurfacePoint sp = WriteSurfacePoint(mesh, p, preferred);
-      triangleId->InsertNextValue(sp.Triangle);
-      const double uv[2] = { sp.U, sp.V };
-      barycentric->InsertNextTuple(uv);
-      parameter->InsertNextValue(trace.Parameter[i]);
-      segment->InsertNextValue(trace.Segment[i]);
-      controlPoint->InsertNextValue(isControl ? static_cast<int>(control.PointIds[k]) : -1);
+      triangleId->SetValue(id, sp.Triangle);
+      barycentric->SetValue(2 * id, sp.U);
+      barycentric->SetValue(2 * id + 1, sp.V);
+      parameter->SetValue(id, trace.Parameter[i]);
+      segment->SetValue(id, trace.Segment[i]);
+      controlPoint->SetValue(id, isControl ? static_cast<int>(control.PointIds[k]) : -1);
     }
-    const bool isClosed = trace.Curve.Closed && n > 1;
-    lines->InsertNextCell(static_cast<vtkIdType>(n + (isClosed ? 1 : 0)));
+    vtkIdType corner = firstCorner[c];
+    offsets->SetValue(c, corner);
     for (size_t i = 0; i < n; ++i)
     {
-      lines->InsertCellPoint(first + static_cast<vtkIdType>(i));
+      connectivity->SetValue(corner++, first + static_cast<vtkIdType>(i));
     }
-    if (isClosed)
+    if (trace.Curve.Closed && n > 1)
     {
-      lines->InsertCellPoint(first);
+      connectivity->SetValue(corner, first);
     }
-    shape->InsertNextValue(control.ShapeId);
-    curveId->InsertNextValue(control.CurveId);
-    closed->InsertNextValue(trace.Curve.Closed ? 1 : 0);
-    type->InsertNextValue(static_cast<int>(control.Type));
-    length->InsertNextValue(trace.Length);
+    shape->SetValue(c, control.ShapeId);
+    curveId->SetValue(c, control.CurveId);
+    closed->SetValue(c, trace.Curve.Closed ? 1 : 0);
+    type->SetValue(c, static_cast<int>(control.Type));
+    length->SetValue(c, trace.Length);
+  };
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    writeCurve(c);
   }
+  offsets->SetValue(nc, firstCorner[nc]);
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
   output->SetPoints(points);
+  vtkNew<vtkCellArray> lines;
+  lines->SetData(offsets, connectivity);
   output->SetLines(lines);
   vtkPointData* pd = output->GetPointData();
   pd->AddArray(triangleId);

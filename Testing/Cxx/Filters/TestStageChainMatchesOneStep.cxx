@@ -638,6 +638,35 @@ TEST(StageChain, RefinedSurfaceOutlivesItsFilters)
   ExpectIdentical(heldPatches, deepPatches, "patches after their filters were deleted");
 }
 
+// The refined surface's per-point arrays keep the mesh vertices' part between edits on one
+// mesh: after a change to another mesh with as many vertices (and back), every array equals that
+// of a chain that saw only that mesh.
+TEST(StageChain, RefinedSurfaceAfterASurfaceChange)
+{
+  auto first = testutils::ToPolyData(boolsurf::MakeFlatSquare(12, 1.0, 0.3, 4));
+  auto second = testutils::ToPolyData(boolsurf::MakeFlatSquare(12, 1.0, 0.3, 5));
+  Chain chain(first, TwoSquares(0.0));
+  int step = 0;
+  for (vtkPolyData* surface : { first.GetPointer(),
+         second.GetPointer(),
+         second.GetPointer(),
+         first.GetPointer(),
+         first.GetPointer() })
+  {
+    const double shift = 0.02 * (step++ % 3);
+    chain.Trace->SetInputData(0, surface);
+    chain.Trace->SetInputData(1, TwoSquares(shift));
+    chain.Arrange->SetInputData(0, surface);
+    chain.Boolean->Update();
+    ASSERT_EQ(chain.Log.Catcher->Errors, "");
+    Chain fresh(surface, TwoSquares(shift));
+    fresh.Boolean->Update();
+    ExpectIdentical(chain.Arrange->GetOutput(0),
+      fresh.Arrange->GetOutput(0),
+      "refined surface at step " + std::to_string(step));
+  }
+}
+
 // Boundary Sampled Curves through the chain gives the one-step BSC region.
 TEST(StageChain, BoundarySampledCurvesMatchOneStep)
 {
