@@ -10,6 +10,7 @@
 #include "Geodesic/CurveTracer.h"
 #include "Mesh/PlyReader.h"
 #include "Mesh/TriangleMesh.h"
+#include "Scene/SceneMeshLookup.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -52,16 +53,6 @@ const std::map<std::string, std::string>& MeshOfModel()
     { "data/models/floor.ply", "floor.ply" },
   };
   return map;
-}
-
-std::string NormalizeModel(std::string model)
-{
-  std::replace(model.begin(), model.end(), '\\', '/');
-  while (model.rfind("./", 0) == 0)
-  {
-    model = model.substr(2);
-  }
-  return model;
 }
 
 std::string SourceDir()
@@ -318,7 +309,7 @@ TEST(ReferenceScenes, CellCountsMatchExpectations)
       skipped.push_back({ { "file", file }, { "reason", "screen-space scene (no mesh)" } });
       continue;
     }
-    const std::string model = NormalizeModel(scene.at("model").get<std::string>());
+    const std::string model = NormalizeModelPath(scene.at("model").get<std::string>());
     auto it = MeshOfModel().find(model);
     if (it == MeshOfModel().end() || !fs::exists(meshDir / it->second))
     {
