@@ -5,13 +5,99 @@
 
 #include "Geodesic/CurveTracer.h"
 
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStaticCellLocator.h>
 
+#include <map>
+#include <mutex>
+#include <tuple>
+
 namespace boolsurf
 {
+namespace
+{
 
-vtkSurfaceCache::vtkSurfaceCache() = default;
+/// What a converted surface was made from: the input object and its modification time (as
+/// each cache checks), its point and polygon arrays and sizes (so that an address reused by
+/// another object cannot be mistaken for it), and the conversion's tolerance.
+struct SurfaceKey
+{
+  const void* Input = nullptr;
+  vtkMTimeType Time = 0;
+  const void* Points = nullptr;
+  const void* Polys = nullptr;
+  vtkIdType NumberOfPoints = 0, NumberOfCells = 0;
+  double Tolerance = 0;
+
+  SurfaceKey(vtkPolyData* input, double tolerance)
+    : Input(input)
+    , Time(input ? input->GetMTime() : 0)
+    , Points(input && input->GetPoints() ? input->GetPoints()->GetData() : nullptr)
+    , Polys(input ? input->GetPolys() : nullptr)
+    , NumberOfPoints(input ? input->GetNumberOfPoints() : 0)
+    , NumberOfCells(input ? input->GetNumberOfCells() : 0)
+    , Tolerance(tolerance)
+  {
+  }
+  bool operator<(const SurfaceKey& o) const
+  {
+    return std::tie(Input, Time, Points, Polys, NumberOfPoints, NumberOfCells, Tolerance) <
+      std::tie(o.Input, o.Time, o.Points, o.Polys, o.NumberOfPoints, o.NumberOfCells, o.Tolerance);
+  }
+};
+
+/// Converted surfaces in use by some cache, by what they were made from. Entries are weak: a
+/// surface lives as long as a cache holds it, and an entry whose surface died is dropped on the
+/// next lookup. Filters update on any thread of a pipeline, hence the mutex.
+std::mutex& SharedSurfacesMutex()
+{
+  static std::mutex mutex;
+  return mutex;
+}
+
+std::map<SurfaceKey, std::weak_ptr<const vtkSurfaceInput>>& SharedSurfaces()
+{
+  static std::map<SurfaceKey, std::weak_ptr<const vtkSurfaceInput>> surfaces;
+  return surfaces;
+}
+
+std::shared_ptr<const vtkSurfaceInput> ConvertedSurface(vtkPolyData* input,
+  const SurfaceCheckOptions& options)
+{
+  const SurfaceKey key(input, options.DegenerateTolerance);
+  {
+    std::lock_guard<std::mutex> lock(SharedSurfacesMutex());
+    auto& all = SharedSurfaces();
+    for (auto it = all.begin(); it != all.end();)
+    {
+      it = it->second.expired() ? all.erase(it) : std::next(it);
+    }
+    auto found = all.find(key);
+    if (found != all.end())
+    {
+      if (auto surface = found->second.lock())
+      {
+        return surface;
+      }
+    }
+  }
+  auto surface = std::make_shared<vtkSurfaceInput>();
+  ConvertSurface(input, *surface, options); // outside the lock: it may take a second
+  std::lock_guard<std::mutex> lock(SharedSurfacesMutex());
+  SharedSurfaces()[key] = surface;
+  return surface;
+}
+
+} // namespace
+
+vtkSurfaceCache::vtkSurfaceCache()
+  : Surface(std::make_shared<vtkSurfaceInput>())
+{
+}
+
 vtkSurfaceCache::~vtkSurfaceCache() = default;
 
 //------------------------------------------------------------------------------
@@ -20,18 +106,19 @@ const vtkSurfaceInput& vtkSurfaceCache::Get(vtkPolyData* input,
   bool& rebuilt)
 {
   const vtkMTimeType time = input ? input->GetMTime() : 0;
-  rebuilt = !this->Surface.Mesh || input != this->Input || time != this->InputTime ||
+  rebuilt = !this->Surface->Mesh || input != this->Input || time != this->InputTime ||
     options.DegenerateTolerance != this->Tolerance;
   if (rebuilt)
   {
-    ConvertSurface(input, this->Surface, options);
+    // What was built on the old surface goes first: the tracer refers to its mesh.
+    this->Locator = nullptr;
+    this->Tracer.reset();
+    this->Surface = ConvertedSurface(input, options);
     this->Input = input;
     this->InputTime = time;
     this->Tolerance = options.DegenerateTolerance;
-    this->Locator = nullptr;
-    this->Tracer.reset();
   }
-  return this->Surface;
+  return *this->Surface;
 }
 
 //------------------------------------------------------------------------------
@@ -59,7 +146,7 @@ vtkStaticCellLocator* vtkSurfaceCache::GetLocator()
   if (!this->Locator)
   {
     this->Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
-    this->Locator->SetDataSet(this->Surface.Triangles);
+    this->Locator->SetDataSet(this->Surface->Triangles);
     this->Locator->BuildLocator();
   }
   return this->Locator;
@@ -70,7 +157,7 @@ CurveTracer& vtkSurfaceCache::GetTracer()
 {
   if (!this->Tracer)
   {
-    this->Tracer = std::make_unique<CurveTracer>(*this->Surface.Mesh);
+    this->Tracer = std::make_unique<CurveTracer>(*this->Surface->Mesh);
   }
   return *this->Tracer;
 }
@@ -78,8 +165,8 @@ CurveTracer& vtkSurfaceCache::GetTracer()
 //------------------------------------------------------------------------------
 const HomologyBasis* vtkSurfaceCache::GetHomology(std::string& error)
 {
-  const TriangleMesh* mesh = this->Surface.Mesh.get();
-  if (!mesh || !this->Surface.Topology)
+  const TriangleMesh* mesh = this->Surface->Mesh.get();
+  if (!mesh || !this->Surface->Topology)
   {
     error = "no surface to compute homology generators on";
     return nullptr;
@@ -91,7 +178,7 @@ const HomologyBasis* vtkSurfaceCache::GetHomology(std::string& error)
     this->ShortGenerators.clear();
     this->HasShortGenerators = false;
     if (!this->Homology->Compute(
-          *mesh, *this->Surface.Topology, HomologyOptions(), this->HomologyError))
+          *mesh, *this->Surface->Topology, HomologyOptions(), this->HomologyError))
     {
       // Keep the failed basis (its serial marks the mesh) so the error is not recomputed.
       this->HomologyError = "homology generators: " + this->HomologyError;
@@ -120,7 +207,7 @@ const std::vector<TracedCurve>* vtkSurfaceCache::GetShortenedGenerators()
     for (int g = 0; g < basis->GetNumberOfGenerators(); ++g)
     {
       if (!ShortenGenerator(
-            *this->Surface.Mesh, *basis, g, this->GetTracer(), this->ShortGenerators[g]))
+            *this->Surface->Mesh, *basis, g, this->GetTracer(), this->ShortGenerators[g]))
       {
         this->ShortGenerators[g] = TracedCurve();
       }

@@ -3,7 +3,10 @@
 // Building the triangle mesh, its adjacency (the dual graph of adjacencies) and topology is
 // the one cost that grows with the mesh; while only the curves or the filter's properties
 // change, the surface input keeps its identity and modification time, and every stage
-// reuses what it built before, so edits cost time proportional to the curves.
+// reuses what it built before, so edits cost time proportional to the curves. The converted
+// surface itself (immutable) is shared by every filter whose input is the same unmodified
+// surface, as the stages of a chain are: one copy of the mesh in memory, converted once, and
+// the mesh a stage reads is the one the stage before it just read (still in the CPU's caches).
 #ifndef vtkBoolSurfSurfaceCache_h
 #define vtkBoolSurfSurfaceCache_h
 
@@ -40,7 +43,7 @@ public:
     std::string& error);
 
   /// The result of the last Get().
-  const vtkSurfaceInput& GetCurrent() const { return this->Surface; }
+  const vtkSurfaceInput& GetCurrent() const { return *this->Surface; }
 
   /// Closest-cell locator on the triangles of the last Get() (built on first use).
   vtkStaticCellLocator* GetLocator();
@@ -66,7 +69,8 @@ private:
   vtkPolyData* Input = nullptr; // identity only, never dereferenced
   vtkMTimeType InputTime = 0;
   double Tolerance = -1;
-  vtkSurfaceInput Surface;
+  /// Shared with the other caches of the same surface (see the .cxx); never null.
+  std::shared_ptr<const vtkSurfaceInput> Surface;
   vtkSmartPointer<vtkStaticCellLocator> Locator;
   std::unique_ptr<CurveTracer> Tracer;
 };
