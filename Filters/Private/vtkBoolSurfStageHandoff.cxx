@@ -166,15 +166,6 @@ void AttachStageResult(vtkAbstractArray* witness,
 }
 
 //------------------------------------------------------------------------------
-void DetachStageResult(vtkAbstractArray* witness)
-{
-  if (witness && witness->HasInformation())
-  {
-    witness->GetInformation()->Remove(vtkBoolSurfStageResultHolder::STAGE_RESULT());
-  }
-}
-
-//------------------------------------------------------------------------------
 std::shared_ptr<const void> FindStageResult(vtkAbstractArray* witness, const std::type_info& type)
 {
   if (!witness || !witness->HasInformation())

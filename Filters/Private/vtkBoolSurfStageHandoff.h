@@ -133,10 +133,6 @@ void AttachStageResult(vtkAbstractArray* witness,
   std::shared_ptr<const void> result,
   const std::type_info& type);
 
-/// Drops the result attached to `witness`, if any (for arrays kept for reuse, so that an idle
-/// array does not keep its old result alive).
-void DetachStageResult(vtkAbstractArray* witness);
-
 /// The result of type `type` attached to `witness`, or null (no witness, none attached, another
 /// type, or the witness changed since).
 std::shared_ptr<const void> FindStageResult(vtkAbstractArray* witness, const std::type_info& type);

@@ -20,6 +20,7 @@
 #include <vtkIdTypeArray.h>
 #include <vtkPLYReader.h>
 #include <vtkPointData.h>
+#include <vtkTriangleFilter.h>
 
 #include <gtest/gtest.h>
 
@@ -693,6 +694,26 @@ TEST(StageChain, SurfaceEditedInPlaceIsConvertedAgain)
   ExpectIdentical(chain.Arrange->GetOutput(0), fresh.Arrange->GetOutput(0), "edited surface");
   EXPECT_EQ(
     testutils::Area(chain.Boolean->GetOutput()), testutils::Area(fresh.Boolean->GetOutput()));
+}
+
+// BoolSurf outputs do not take the executive's copy of their input's field data, but a VTK
+// filter downstream of one still receives the output's field data as usual.
+TEST(StageChain, FiltersDownstreamReceiveTheFieldData)
+{
+  auto surface = testutils::ToPolyData(boolsurf::MakeFlatSquare(8));
+  Chain chain(surface, TwoSquares(0.0));
+  vtkNew<vtkTriangleFilter> downstream;
+  downstream->SetInputConnection(chain.Boolean->GetOutputPort(0));
+  downstream->Update();
+  ASSERT_EQ(chain.Log.Catcher->Errors, "");
+  vtkFieldData* fd = downstream->GetOutput()->GetFieldData();
+  for (const char* name : { "CellLabels", "ShapeIds" })
+  {
+    EXPECT_NE(fd->GetAbstractArray(name), nullptr) << name;
+  }
+  // The Boolean's own field data is its own: nothing of the labeled input's cell graph.
+  EXPECT_EQ(
+    chain.Boolean->GetOutput(0)->GetFieldData()->GetAbstractArray("CellGraphArcs"), nullptr);
 }
 
 // Boundary Sampled Curves through the chain gives the one-step BSC region.
