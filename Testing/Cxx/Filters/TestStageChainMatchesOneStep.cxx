@@ -711,6 +711,9 @@ TEST(StageChain, FiltersDownstreamReceiveTheFieldData)
   {
     EXPECT_NE(fd->GetAbstractArray(name), nullptr) << name;
   }
+  // Each output's field data is its own: the labels are not written into the arrangement's.
+  EXPECT_EQ(chain.Arrange->GetOutput(0)->GetFieldData()->GetAbstractArray("CellLabels"), nullptr);
+  EXPECT_NE(chain.Label->GetOutput(0)->GetFieldData()->GetAbstractArray("CellLabels"), nullptr);
   // The Boolean's own field data is its own: nothing of the labeled input's cell graph.
   EXPECT_EQ(
     chain.Boolean->GetOutput(0)->GetFieldData()->GetAbstractArray("CellGraphArcs"), nullptr);
