@@ -202,7 +202,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   const vtkIdType nv = surface.Mesh->GetNumberOfVertices();
   const std::uint64_t serial = surface.Mesh->GetSerial();
   const bool verticesKept = serial != 0 && *memory.PointArraysMeshSerial == serial &&
-    static_cast<vtkIdType>(pointTriangle.size()) >= nv && arr.VerticesMeshSerial == serial;
+    static_cast<vtkIdType>(pointTriangle.size()) >= nv;
   *memory.PointArraysMeshSerial = 0; // until the vertices' part is written
   pointTriangle.resize(np);
   pointBarycentric.resize(2 * np);

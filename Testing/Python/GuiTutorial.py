@@ -46,7 +46,7 @@ from paraview.simple import (GetActiveView, GetDisplayProperties, GetSources, Hi
                              LoadPlugin, LoadState, ResetCamera, Show)
 from paraview import servermanager as sm  # noqa: E402
 sys.path.insert(0, here)
-from render_pixels import chromaticity_spread, view_pixels  # noqa: E402
+from render_pixels import chromaticity_spread, paint_unlit, view_pixels  # noqa: E402
 
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 LoadState(state)
@@ -85,9 +85,7 @@ view.OrientationAxesVisibility = 0
 view.UseColorPaletteForBackground = 0
 view.Background = [0, 0, 0]  # black: edge pixels blend the region's color with no other hue
 # The traced curves, flat red: every pixel they have alone they keep over the surface.
-lines.ColorArrayName = ["POINTS", ""]
-lines.DiffuseColor = lines.AmbientColor = [1, 0, 0]
-lines.Ambient, lines.Diffuse = 1.0, 0.0
+paint_unlit(lines, [1, 0, 0])
 
 
 def reddish(c):

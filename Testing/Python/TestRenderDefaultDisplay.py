@@ -22,7 +22,7 @@ sys.path.insert(0, os.path.join(source_dir, "Examples"))
 from boolsurf_example_utils import SurfaceRays, curves_source, surface_circle  # noqa: E402
 from paraview.simple import *  # noqa: E402,F401,F403
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from render_pixels import chromaticity_spread, view_pixels  # noqa: E402
+from render_pixels import chromaticity_spread, paint_unlit, view_pixels  # noqa: E402
 
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 mesh = PLYReader(FileNames=[os.path.join(source_dir, "Data", "eight.ply")])
@@ -122,9 +122,7 @@ Hide(one, view)
 traced = TraceSurfaceCurves(Surface=mesh, Curves=control)
 lines = Show(traced, view)
 assert lines.Representation == "BoolSurf Curves", lines.Representation
-lines.ColorArrayName = ["POINTS", ""]
-lines.DiffuseColor = lines.AmbientColor = [1, 0, 0]
-lines.Ambient, lines.Diffuse = 1.0, 0.0
+paint_unlit(lines, [1, 0, 0])
 
 
 def reddish(c):

@@ -28,3 +28,11 @@ def chromaticity_spread(colors, reference=None):
         return 1.0
     ref = chroma(reference if reference is not None else bright[0])
     return max(max(abs(a - b) for a, b in zip(chroma(c), ref)) for c in bright)
+
+
+def paint_unlit(display, rgb):
+    """`display` in one flat color, unlit: each of its pixels is exactly `rgb` wherever nothing
+    covers it, so the pixels it keeps over a coincident surface can be counted."""
+    display.ColorArrayName = ["POINTS", ""]
+    display.DiffuseColor = display.AmbientColor = rgb
+    display.Ambient, display.Diffuse = 1.0, 0.0
