@@ -274,7 +274,7 @@ TraceStatus CurveTracer::Trace(const std::vector<SurfacePoint>& points,
     canonical[i] = LocateSurfacePoint(mesh, points[i]);
   }
   CurveKey key{
-    std::move(canonical), type, closed, this->Resolution, this->Solver.GetUseExactStrip()
+    std::move(canonical), type, closed, this->Resolution, this->Solver.GetMethod()
   };
   auto known = this->Memory.find(key);
   if (known != this->Memory.end())
@@ -336,13 +336,13 @@ void CurveTracer::StartPass()
 bool CurveTracer::CurveKey::operator==(const CurveKey& o) const
 {
   return this->Type == o.Type && this->Closed == o.Closed && this->Resolution == o.Resolution &&
-    this->Exact == o.Exact && this->Points == o.Points;
+    this->Method == o.Method && this->Points == o.Points;
 }
 
 std::size_t CurveTracer::CurveKeyHash::operator()(const CurveKey& k) const
 {
   std::size_t h = static_cast<std::size_t>(k.Type) * 31 + (k.Closed ? 17 : 0) +
-    static_cast<std::size_t>(k.Resolution) * 131 + (k.Exact ? 7 : 0);
+    static_cast<std::size_t>(k.Resolution) * 131 + static_cast<std::size_t>(k.Method) * 7;
   auto mix = [&h](std::size_t v) { h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); };
   for (const CanonicalPoint& p : k.Points)
   {

@@ -123,7 +123,7 @@ private:
     CurveType Type = CurveType::GeodesicPolygon;
     bool Closed = true;
     int Resolution = 0;
-    bool Exact = true;
+    GeodesicMethod Method = GeodesicMethod::Bounded;
     bool operator==(const CurveKey& o) const;
   };
   struct CurveKeyHash

@@ -86,6 +86,21 @@ CanonicalPoint FromWeights(const TriangleMesh& mesh, int t, const std::array<dou
 } // namespace
 
 //------------------------------------------------------------------------------
+const char* GeodesicMethodName(GeodesicMethod method)
+{
+  switch (method)
+  {
+    case GeodesicMethod::Bounded:
+      return "Bounded";
+    case GeodesicMethod::Exact:
+      return "Exact";
+    case GeodesicMethod::LocallyShortest:
+      return "LocallyShortest";
+  }
+  return "Unknown";
+}
+
+//------------------------------------------------------------------------------
 GeodesicPathSolver::GeodesicPathSolver(const TriangleMesh& mesh)
   : Search(mesh)
   , EdgeSearch(mesh)
@@ -174,7 +189,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
     haveStrip = true;
     this->Statistics.Exact = true;
   }
-  if (!haveStrip && this->UseExactStrip)
+  if (!haveStrip && this->Method != GeodesicMethod::LocallyShortest)
   {
     this->Statistics.ExactLength =
       this->Exact.FindStrip(start, this->StartTriangles, end, this->EndTriangles, this->Strip);

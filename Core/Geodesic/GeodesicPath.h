@@ -41,6 +41,24 @@
 namespace boolsurf
 {
 
+/// How a geodesic leg is computed (the `GeodesicMethod` property of the filters).
+enum class GeodesicMethod : int
+{
+  /// The shortest path in practice at a bounded cost per leg (default): the exact window
+  /// search while its work stays under a fixed budget, otherwise the path in the homotopy
+  /// class of the per-surface coarse graph's route, straightened (see SurfaceSiteGraph).
+  Bounded = 0,
+  /// The exact polyhedral shortest path (window search, budget 2^20 windows); can take
+  /// seconds for far points on large meshes.
+  Exact = 1,
+  /// The straightened shortest mesh-edge path: locally shortest, fast, no guarantee of being
+  /// the shortest.
+  LocallyShortest = 2,
+};
+
+/// "Bounded", "Exact", "LocallyShortest".
+const char* GeodesicMethodName(GeodesicMethod method);
+
 /// Outcome of a tracing call: Ok, or a message naming the offending points/curves.
 struct TraceStatus
 {
@@ -118,10 +136,14 @@ public:
   /// Seed with the dual-graph strip only (no edge-path bound); for benchmarks and tests.
   void SetUseEdgePathStrip(bool on) { this->UseEdgePathStrip = on; }
 
-  /// Seed with the strip of the exact shortest path (ExactGeodesicSearch; default on). Off,
-  /// the result is only locally shortest (the straightened shortest edge path), but faster.
-  void SetUseExactStrip(bool on) { this->UseExactStrip = on; }
-  bool GetUseExactStrip() const { return this->UseExactStrip; }
+  /// The method of every following Compute (default Bounded).
+  void SetMethod(GeodesicMethod method) { this->Method = method; }
+  GeodesicMethod GetMethod() const { return this->Method; }
+  /// Shorthand: on is Exact, off is LocallyShortest.
+  void SetUseExactStrip(bool on)
+  {
+    this->Method = on ? GeodesicMethod::Exact : GeodesicMethod::LocallyShortest;
+  }
   const ExactGeodesicSearch& GetExactSearch() const { return this->Exact; }
   /// Window budget of the exact search (see ExactGeodesicSearch::SetMaximumWindows); past it
   /// the path falls back to the locally shortest one and GetLastStatistics().Exact is false.
@@ -168,7 +190,7 @@ private:
   EdgeGraphSearch EdgeSearch;
   ExactGeodesicSearch Exact;
   bool UseEdgePathStrip = true;
-  bool UseExactStrip = true;
+  GeodesicMethod Method = GeodesicMethod::Bounded;
   std::vector<EdgeGraphSearch::Terminal> Sources, Targets;
   std::vector<int> VertexPath;
   GeodesicPathStatistics Statistics;
