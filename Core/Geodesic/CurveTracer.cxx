@@ -273,9 +273,7 @@ TraceStatus CurveTracer::Trace(const std::vector<SurfacePoint>& points,
     // uses this same tolerance (SurfacePointSnap).
     canonical[i] = LocateSurfacePoint(mesh, points[i]);
   }
-  CurveKey key{
-    std::move(canonical), type, closed, this->Resolution, this->Solver.GetMethod()
-  };
+  CurveKey key{ std::move(canonical), type, closed, this->Resolution, this->Solver.GetMethod() };
   auto known = this->Memory.find(key);
   if (known != this->Memory.end())
   {
