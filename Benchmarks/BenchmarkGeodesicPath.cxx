@@ -128,7 +128,7 @@ void BenchmarkPaths(benchmark::State& state,
   bool longPaths,
   bool edgePathStrip = true,
   bool landmarks = true,
-  bool exact = true)
+  GeodesicMethod method = GeodesicMethod::Exact)
 {
   LoadedMesh& m = Load(name);
   if (!m.Mesh)
@@ -139,10 +139,11 @@ void BenchmarkPaths(benchmark::State& state,
   const auto& pairs = longPaths ? m.LongPairs : m.ShortPairs;
   GeodesicPathSolver& solver = landmarks ? *m.Solver : *m.PlainSolver;
   solver.SetUseEdgePathStrip(edgePathStrip);
-  solver.SetUseExactStrip(exact);
+  solver.SetMethod(method);
   GeodesicPath path;
   size_t i = 0;
   double settled = 0, expanded = 0, strip = 0, rounds = 0, length = 0, ratio = 0, windows = 0;
+  double routed = 0, exactShare = 0;
   std::vector<double> times;
   for (auto _ : state)
   {
@@ -159,6 +160,8 @@ void BenchmarkPaths(benchmark::State& state,
     benchmark::DoNotOptimize(path.Points.data());
     const GeodesicPathStatistics& s = solver.GetLastStatistics();
     settled += s.SettledVertices;
+    routed += s.Routed;
+    exactShare += s.Exact;
     windows += s.Windows;
     expanded += s.ExpandedTriangles;
     ratio += s.EdgePathLength > 0 ? path.Length / s.EdgePathLength : 0.0;
@@ -180,8 +183,16 @@ void BenchmarkPaths(benchmark::State& state,
   state.counters["points"] = length / n;
   state.counters["landmark_setup_s"] = solver.GetEdgeSearch().GetLandmarkBuildSeconds();
   state.counters["landmark_MB"] = solver.GetEdgeSearch().GetLandmarkMemory() / 1048576.0;
+  state.counters["routed"] = routed / n;
+  state.counters["exact"] = exactShare / n;
+  if (const SurfaceSiteGraph* graph = solver.GetSiteGraph())
+  {
+    state.counters["sites"] = graph->GetNumberOfSites();
+    state.counters["site_graph_s"] = graph->GetBuildSeconds();
+    state.counters["site_graph_MB"] = graph->GetMemory() / 1048576.0;
+  }
   solver.SetUseEdgePathStrip(true);
-  solver.SetUseExactStrip(true);
+  solver.SetMethod(GeodesicMethod::Exact);
 }
 } // namespace
 
@@ -205,7 +216,7 @@ BENCHMARK_CAPTURE(BenchmarkPaths,
   false,
   true,
   true,
-  false)
+  GeodesicMethod::LocallyShortest)
   ->Iterations(320)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BenchmarkPaths,
@@ -214,7 +225,7 @@ BENCHMARK_CAPTURE(BenchmarkPaths,
   true,
   true,
   true,
-  false)
+  GeodesicMethod::LocallyShortest)
   ->Iterations(24)
   ->Unit(benchmark::kMillisecond);
 // Straight-line bound only (no landmarks), for comparison.
@@ -245,3 +256,36 @@ BENCHMARK_CAPTURE(BenchmarkPaths,
   false)
   ->Iterations(24)
   ->Unit(benchmark::kMillisecond);
+
+namespace
+{
+// The default method: exact while the window search stays within its budget, otherwise the
+// site-graph route straightened (issue 27's bounded cost per leg).
+BENCHMARK_CAPTURE(BenchmarkPaths,
+  igea_1m_short_bounded,
+  std::string("igea_1m.ply"),
+  false,
+  true,
+  true,
+  GeodesicMethod::Bounded)
+  ->Iterations(320)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BenchmarkPaths,
+  igea_1m_long_bounded,
+  std::string("igea_1m.ply"),
+  true,
+  true,
+  true,
+  GeodesicMethod::Bounded)
+  ->Iterations(24)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BenchmarkPaths,
+  torus3_800k_long_bounded,
+  std::string("3torus_800k.ply"),
+  true,
+  true,
+  true,
+  GeodesicMethod::Bounded)
+  ->Iterations(24)
+  ->Unit(benchmark::kMillisecond);
+} // namespace

@@ -110,8 +110,7 @@ bool IsEmpty(vtkPolyData* data)
 {
   return data->GetNumberOfPoints() == 0 && data->GetNumberOfCells() == 0 &&
     data->GetPointData()->GetNumberOfArrays() == 0 &&
-    data->GetCellData()->GetNumberOfArrays() == 0 &&
-    data->GetFieldData()->GetNumberOfArrays() == 0;
+    data->GetCellData()->GetNumberOfArrays() == 0 && data->GetFieldData()->GetNumberOfArrays() == 0;
 }
 } // namespace
 

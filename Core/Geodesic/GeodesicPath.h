@@ -31,10 +31,12 @@
 #include "Geodesic/DualGraphSearch.h"
 #include "Geodesic/EdgeGraphSearch.h"
 #include "Geodesic/ExactGeodesicSearch.h"
+#include "Geodesic/SurfaceSiteGraph.h"
 #include "Mesh/SurfacePoint.h"
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -93,6 +95,12 @@ struct GeodesicPathStatistics
   /// share a triangle); false when the window budget ran out and the locally shortest
   /// straightened edge path was returned instead.
   bool Exact = false;
+  /// Bounded method past its window budget: the path was straightened from the surface's
+  /// site-graph route (RouteLength: that route's length) ...
+  bool Routed = false;
+  double RouteLength = -1;
+  /// ... and from this many other routes (homotopy classes) too, the shortest result kept.
+  int AlternativeRoutes = 0;
 };
 
 /// Computes geodesic paths on one mesh. Holds the reusable search state (mesh-sized arrays
@@ -145,9 +153,20 @@ public:
     this->Method = on ? GeodesicMethod::Exact : GeodesicMethod::LocallyShortest;
   }
   const ExactGeodesicSearch& GetExactSearch() const { return this->Exact; }
-  /// Window budget of the exact search (see ExactGeodesicSearch::SetMaximumWindows); past it
-  /// the path falls back to the locally shortest one and GetLastStatistics().Exact is false.
-  void SetMaximumWindows(int n) { this->Exact.SetMaximumWindows(n); }
+  /// Window budget of the Exact method's search (see ExactGeodesicSearch::SetMaximumWindows;
+  /// default 2^20); past it the path falls back to the locally shortest one and
+  /// GetLastStatistics().Exact is false.
+  void SetMaximumWindows(int n) { this->ExactWindows = n; }
+  /// Window budget of the Bounded method's exact search (default 2^15, about 10 ms on one
+  /// core); past it the leg is routed on the surface's site graph and straightened.
+  void SetBoundedWindows(int n) { this->BoundedWindows = n; }
+  int GetBoundedWindows() const { return this->BoundedWindows; }
+  /// Bounded method, on surfaces with handles or boundaries: a second route (another
+  /// homotopy class) is straightened too when its site-graph length is within this fraction
+  /// of the first route's (default 0.15; 0 disables).
+  void SetRouteTolerance(double f) { this->RouteTolerance = f; }
+  /// The surface's site graph (built on the first routed leg; null before).
+  const SurfaceSiteGraph* GetSiteGraph() const { return this->SiteGraph.get(); }
 
 private:
   struct Portal
@@ -168,7 +187,25 @@ private:
     int FirstPortal = -1, LastPortal = -1; // Vertex points: strip portals that contain it
   };
 
+  void CollectTerminals(const CanonicalPoint& start, const CanonicalPoint& end);
   bool StripFromEdgePath(const CanonicalPoint& start, const CanonicalPoint& end);
+  /// Bounded method: the strip along the site-graph route avoiding the sites flagged in
+  /// AvoidSites (none when empty).
+  bool StripFromSiteRoute(const CanonicalPoint& start, const CanonicalPoint& end);
+  /// The strip holding VertexPath (a mesh-edge path from a start corner to an end corner).
+  bool StripAlongVertexPath(const CanonicalPoint& end);
+  /// True when every connected component is a closed surface of genus 0 (cached).
+  bool AllSpheres();
+  /// Bounded method: true when the straight distance between the ends already shows the
+  /// window search cannot finish within its budget.
+  bool ExceedsBoundedWindows(const CanonicalPoint& start, const CanonicalPoint& end);
+  /// Funnel and vertex rerouting on Strip until locally shortest; the result in Points.
+  bool Straighten(const CanonicalPoint& start, const CanonicalPoint& end);
+  /// Bounded method, after a routed leg: a second route round the middle of the first,
+  /// straightened too when nearly as long; `path` becomes the shorter.
+  void TryAlternativeRoute(const CanonicalPoint& start,
+    const CanonicalPoint& end,
+    GeodesicPath& path);
   void TrimStrip(const CanonicalPoint& start, const CanonicalPoint& end);
   bool UnfoldStrip(const CanonicalPoint& start, const CanonicalPoint& end);
   void RunFunnel();
@@ -189,6 +226,15 @@ private:
   DualGraphSearch Search;
   EdgeGraphSearch EdgeSearch;
   ExactGeodesicSearch Exact;
+  std::shared_ptr<const SurfaceSiteGraph> SiteGraph;
+  SurfaceSiteGraph::Scratch SiteScratch;
+  std::vector<char> AvoidSites;
+  int ExactWindows = 1 << 20;
+  int BoundedWindows = 1 << 15;
+  double RouteTolerance = 0.15;
+  double MeanEdgeLength = -1; // computed on first use
+  int SphereTopology = -1;    // AllSpheres(), computed on first use
+  std::vector<CanonicalPoint> Alternative;
   bool UseEdgePathStrip = true;
   GeodesicMethod Method = GeodesicMethod::Bounded;
   std::vector<EdgeGraphSearch::Terminal> Sources, Targets;

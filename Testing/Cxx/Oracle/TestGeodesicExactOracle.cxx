@@ -2,11 +2,13 @@
 // CGAL's Surface_mesh_shortest_path (Chen-Han's algorithm with exact predicates). CGAL is a
 // test dependency only; this executable is the one place it is linked.
 //
-// Every traced edge must have the oracle's length to 1e-9 relative: none longer (a locally
-// shortest path in the wrong homotopy class, or straightening stopped short) and none shorter
-// (a path leaving the surface). Pairs: random points (vertex, edge and face points), far
-// points (the farthest of many random candidates) and, on meshes with handles, pairs on
-// opposite sides of a handle.
+// With the Exact method every traced edge must have the oracle's length to 1e-9 relative:
+// none longer (a locally shortest path in the wrong homotopy class, or straightening stopped
+// short) and none shorter (a path leaving the surface). With the Bounded method (the default)
+// none may be shorter, short pairs must be exact, and far pairs within the measured worst
+// excess (see Docs/Decisions.md). Pairs: random points (vertex, edge and face points), short
+// pairs (2-6 % of the bounding-box diagonal), far points (the farthest of many random
+// candidates) and, on meshes with handles, pairs on opposite sides of a handle.
 #include "Geodesic/GeodesicPath.h"
 #include "Mesh/PlyReader.h"
 #include "Mesh/ProceduralMeshes.h"
@@ -18,8 +20,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <memory>
 #include <random>
 #include <sstream>
@@ -140,20 +144,59 @@ CanonicalPoint FarPoint(const TriangleMesh& mesh, const CanonicalPoint& p, std::
   return best;
 }
 
+/// A random point 2-6 % of the bounding-box diagonal from p (p itself if none is found).
+CanonicalPoint NearPoint(const TriangleMesh& mesh, const CanonicalPoint& p, std::mt19937& rng)
+{
+  Vec3 lo = mesh.GetPosition(0), hi = lo;
+  for (const Vec3& q : mesh.GetPositions())
+  {
+    lo = { std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z) };
+    hi = { std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z) };
+  }
+  const double diagonal = Distance(lo, hi);
+  for (int i = 0; i < 200000; ++i)
+  {
+    const CanonicalPoint q = RandomPoint(mesh, rng);
+    const double d = Distance(PositionOf(mesh, q), PositionOf(mesh, p));
+    if (d > 0.02 * diagonal && d < 0.06 * diagonal)
+    {
+      return q;
+    }
+  }
+  return p;
+}
+
+struct OracleStats
+{
+  int Compared = 0;
+  int Exact = 0;
+  double WorstRelative = 0;
+  void Add(double relative)
+  {
+    ++this->Compared;
+    this->Exact += relative <= 1e-9;
+    this->WorstRelative = std::max(this->WorstRelative, relative);
+  }
+};
+
 struct OracleRun
 {
   int Compared = 0;
   int Exact = 0;
   double WorstRelative = 0;
+  OracleStats Random, Short, Far;
 };
 
 /// For `sources` random start points (one oracle tree each), traces to `targets` points
-/// (random and far, alternately, plus any `extra` targets) and compares every length.
+/// (far, random and short in turn) with `method` and compares every length. With the Exact
+/// method every length must be the oracle's; with the others none may be shorter and the
+/// statistics per kind of pair are returned for the caller's thresholds.
 OracleRun CompareWithOracle(const TriangleMesh& mesh,
   int sources,
   int targets,
   std::uint32_t seed,
-  const std::string& name)
+  const std::string& name,
+  GeodesicMethod method = GeodesicMethod::Exact)
 {
   OracleRun run;
   std::unique_ptr<CgalMesh> cgal = ToCgal(mesh);
@@ -163,6 +206,7 @@ OracleRun CompareWithOracle(const TriangleMesh& mesh,
     return run;
   }
   GeodesicPathSolver solver(mesh);
+  solver.SetMethod(method);
   std::mt19937 rng(seed);
   GeodesicPath path;
   for (int s = 0; s < sources; ++s)
@@ -179,7 +223,10 @@ OracleRun CompareWithOracle(const TriangleMesh& mesh,
     }
     for (int k = 0; k < targets; ++k)
     {
-      const CanonicalPoint b = k % 2 == 0 ? FarPoint(mesh, a, rng) : RandomPoint(mesh, rng);
+      const int kind = k % 3; // 0 far, 1 random, 2 short
+      const CanonicalPoint b = kind == 0 ? FarPoint(mesh, a, rng)
+        : kind == 1                      ? RandomPoint(mesh, rng)
+                                         : NearPoint(mesh, a, rng);
       const double expected = oracle
                                 .shortest_distance_to_source_points(
                                   Locate(mesh, *cgal, b).first, Locate(mesh, *cgal, b).second)
@@ -199,8 +246,14 @@ OracleRun CompareWithOracle(const TriangleMesh& mesh,
       const double relative = std::abs(path.Length - expected) / std::max(expected, 1e-300);
       run.WorstRelative = std::max(run.WorstRelative, relative);
       run.Exact += relative <= 1e-9;
-      EXPECT_LE(relative, 1e-9) << name << ": " << Describe(a) << " -> " << Describe(b)
-                                << " traced " << path.Length << ", shortest " << expected;
+      (kind == 0 ? run.Far : kind == 1 ? run.Random : run.Short).Add(relative);
+      if (method == GeodesicMethod::Exact)
+      {
+        EXPECT_LE(relative, 1e-9) << name << ": " << Describe(a) << " -> " << Describe(b)
+                                  << " traced " << path.Length << ", shortest " << expected;
+      }
+      EXPECT_GE(path.Length, expected * (1 - 1e-9))
+        << name << " (" << GeodesicMethodName(method) << "): shorter than the shortest path";
       // The polyline really lies on the surface: consecutive points share a triangle.
       for (size_t i = 1; i < path.Points.size(); ++i)
       {
@@ -256,6 +309,13 @@ TEST(GeodesicExactOracle, ProceduralSurfaces)
     const OracleRun run = CompareWithOracle(mesh, 4, 10, 17, c.Name);
     EXPECT_EQ(run.Exact, run.Compared) << c.Name << " worst relative " << run.WorstRelative;
     EXPECT_GE(run.Compared, 40) << c.Name;
+    // The default: these meshes are small enough for the exact search to fit its budget on
+    // most pairs; the others are routed and straightened.
+    const OracleRun bounded =
+      CompareWithOracle(mesh, 4, 12, 23, c.Name + " bounded", GeodesicMethod::Bounded);
+    EXPECT_EQ(bounded.Short.Exact, bounded.Short.Compared) << c.Name;
+    EXPECT_LE(bounded.WorstRelative, 0.005) << c.Name;
+    EXPECT_GE(bounded.Far.Exact, 0.9 * bounded.Far.Compared) << c.Name;
   }
 }
 
@@ -321,6 +381,18 @@ TEST(GeodesicExactOracle, SharedScans)
     const TriangleMesh mesh = ToMesh(std::move(data));
     const OracleRun run = CompareWithOracle(mesh, 1, 10, 19, file); // one CGAL tree per mesh
     EXPECT_EQ(run.Exact, run.Compared) << file << " worst relative " << run.WorstRelative;
+    // The default, Bounded: short pairs exact; far pairs on these scans mostly past the
+    // window budget, routed and straightened: never shorter, within a few percent (the
+    // measured worst over 280 far pairs on these meshes is 3.5 %, see Docs/Decisions.md).
+    const OracleRun bounded =
+      CompareWithOracle(mesh, 1, 30, 29, std::string(file) + " bounded", GeodesicMethod::Bounded);
+    EXPECT_EQ(bounded.Short.Exact, bounded.Short.Compared) << file;
+    EXPECT_LE(bounded.WorstRelative, 0.05) << file;
+    std::cout << file << " bounded: far pairs exact " << bounded.Far.Exact << " of "
+              << bounded.Far.Compared << ", worst " << bounded.Far.WorstRelative
+              << "; random exact " << bounded.Random.Exact << " of " << bounded.Random.Compared
+              << "; short exact " << bounded.Short.Exact << " of " << bounded.Short.Compared
+              << "\n";
   }
   if (meshes == 0)
   {

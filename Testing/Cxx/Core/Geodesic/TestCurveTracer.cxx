@@ -173,10 +173,10 @@ TEST(CurveTracer, RemembersTracedCurves)
   ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, again).Ok);
   tracer.SetResolution(2);
   ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, again).Ok);
-  tracer.GetPathSolver().SetUseExactStrip(false);
+  tracer.GetPathSolver().SetMethod(GeodesicMethod::LocallyShortest);
   ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again).Ok);
   EXPECT_EQ(tracer.GetRecalledCurves(), 1u);
-  tracer.GetPathSolver().SetUseExactStrip(true);
+  tracer.GetPathSolver().SetMethod(GeodesicMethod::Bounded);
   tracer.SetResolution(4);
   // A control point moved by one ulp is another curve.
   std::vector<SurfacePoint> moved = polygon;

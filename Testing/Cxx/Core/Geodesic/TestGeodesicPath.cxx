@@ -672,7 +672,7 @@ TEST(GeodesicPath, PrismNearOppositePairsAreShortest)
   const int around = 48, along = 16;
   const double radius = 1.0;
   const TriangleMesh mesh = ToMesh(MakeOpenCylinder(radius, 3.0, around, along));
-  GeodesicPathSolver solver(mesh);
+  GeodesicPathSolver solver(mesh); // the default, Bounded: these pairs fit its window budget
   const boolsurf::testing::UnrolledPrism prism{ around, radius };
   const double width = prism.Width();
   std::mt19937 rng(12);
@@ -702,6 +702,8 @@ TEST(GeodesicPath, WindowBudgetFallsBackToLocallyShortest)
 {
   const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 48, 20));
   GeodesicPathSolver exact(mesh), budgeted(mesh);
+  exact.SetMethod(GeodesicMethod::Exact);
+  budgeted.SetMethod(GeodesicMethod::Exact);
   budgeted.SetMaximumWindows(20);
   std::mt19937 rng(3);
   GeodesicPath a, b;

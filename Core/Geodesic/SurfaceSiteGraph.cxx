@@ -1,0 +1,468 @@
+#include "Geodesic/SurfaceSiteGraph.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <queue>
+#include <random>
+
+namespace boolsurf
+{
+
+namespace
+{
+/// Vertex adjacency over the edges of usable triangles (compressed rows, mesh ids).
+void BuildAdjacency(const TriangleMesh& mesh,
+  std::vector<int>& offsets,
+  std::vector<int>& neighbors)
+{
+  const int nv = mesh.GetNumberOfVertices();
+  offsets.assign(nv + 1, 0);
+  neighbors.clear();
+  std::vector<int> row;
+  for (int v = 0; v < nv; ++v)
+  {
+    row.clear();
+    for (int corner : mesh.GetVertexCorners(v))
+    {
+      const int t = corner / 3, k = corner % 3;
+      if (mesh.IsUsable(t))
+      {
+        const Triangle& tri = mesh.GetTriangle(t);
+        row.push_back(tri[(k + 1) % 3]);
+        row.push_back(tri[(k + 2) % 3]);
+      }
+    }
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    neighbors.insert(neighbors.end(), row.begin(), row.end());
+    offsets[v + 1] = static_cast<int>(neighbors.size());
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+SurfaceSiteGraph::SurfaceSiteGraph(const TriangleMesh& mesh, int hops)
+  : Mesh(mesh)
+  , MeshSerial(mesh.GetSerial())
+{
+  const auto begin = std::chrono::steady_clock::now();
+  std::vector<int> offsets, neighbors;
+  BuildAdjacency(mesh, offsets, neighbors);
+  this->ChooseSites(offsets, neighbors, hops > 0 ? hops : DefaultHops(mesh.GetNumberOfVertices()));
+  this->GrowCells(offsets, neighbors);
+  this->BuildArcs(offsets, neighbors);
+  this->BuildSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
+//------------------------------------------------------------------------------
+int SurfaceSiteGraph::DefaultHops(int vertices)
+{
+  const int hops = static_cast<int>(std::lround(std::sqrt(static_cast<double>(vertices)) / 80.0));
+  return std::min(8, std::max(1, hops));
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const SurfaceSiteGraph> SurfaceSiteGraph::Get(const TriangleMesh& mesh)
+{
+  // Weak references: the graph lives as long as a solver on its mesh holds it. Building
+  // happens under the lock, so concurrent first requests build once.
+  static std::mutex lock;
+  static std::map<std::uint64_t, std::weak_ptr<const SurfaceSiteGraph>> graphs;
+  std::lock_guard<std::mutex> guard(lock);
+  for (auto it = graphs.begin(); it != graphs.end();)
+  {
+    it = it->second.expired() ? graphs.erase(it) : std::next(it);
+  }
+  std::weak_ptr<const SurfaceSiteGraph>& slot = graphs[mesh.GetSerial()];
+  std::shared_ptr<const SurfaceSiteGraph> graph = slot.lock();
+  if (!graph || &graph->Mesh != &mesh)
+  {
+    graph = std::make_shared<const SurfaceSiteGraph>(mesh);
+    slot = graph;
+  }
+  return graph;
+}
+
+//------------------------------------------------------------------------------
+// Greedy maximal set of vertices pairwise more than `hops` edges apart: visit vertices in a
+// fixed pseudo-random order; an unclaimed one becomes a site and claims its `hops`-ball
+// (breadth-first). The order only spreads the sites; any order gives the covering property.
+void SurfaceSiteGraph::ChooseSites(const std::vector<int>& offsets,
+  const std::vector<int>& neighbors,
+  int hops)
+{
+  const int nv = this->Mesh.GetNumberOfVertices();
+  std::vector<int> order(nv);
+  for (int v = 0; v < nv; ++v)
+  {
+    order[v] = v;
+  }
+  std::mt19937 rng(20221206u);
+  std::shuffle(order.begin(), order.end(), rng);
+  std::vector<int> claimed(nv, -1); // hop distance to the claiming site, -1: unclaimed
+  std::vector<int> frontier, next;
+  for (int v : order)
+  {
+    if (claimed[v] >= 0 || offsets[v] == offsets[v + 1])
+    {
+      continue; // claimed, or on no usable triangle
+    }
+    this->Sites.push_back(v);
+    claimed[v] = 0;
+    frontier.assign(1, v);
+    for (int h = 1; h <= hops && !frontier.empty(); ++h)
+    {
+      next.clear();
+      for (int u : frontier)
+      {
+        for (int i = offsets[u]; i < offsets[u + 1]; ++i)
+        {
+          const int w = neighbors[i];
+          // Re-claim a vertex a nearer site reaches in fewer hops: keeps balls of later sites
+          // from stopping at earlier ones' far edges (only the covering property matters).
+          if (claimed[w] < 0 || claimed[w] > h)
+          {
+            claimed[w] = h;
+            next.push_back(w);
+          }
+        }
+      }
+      frontier.swap(next);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void SurfaceSiteGraph::GrowCells(const std::vector<int>& offsets, const std::vector<int>& neighbors)
+{
+  const int nv = this->Mesh.GetNumberOfVertices();
+  this->Cell.assign(nv, -1);
+  this->Parent.assign(nv, -1);
+  this->SiteDistance.assign(nv, std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+  for (int s = 0; s < static_cast<int>(this->Sites.size()); ++s)
+  {
+    const int v = this->Sites[s];
+    this->Cell[v] = s;
+    this->SiteDistance[v] = 0.0;
+    heap.push({ 0.0, v });
+  }
+  while (!heap.empty())
+  {
+    const auto [d, u] = heap.top();
+    heap.pop();
+    if (d > this->SiteDistance[u])
+    {
+      continue;
+    }
+    const Vec3& pu = this->Mesh.GetPosition(u);
+    for (int i = offsets[u]; i < offsets[u + 1]; ++i)
+    {
+      const int w = neighbors[i];
+      const double dw = d + Distance(pu, this->Mesh.GetPosition(w));
+      if (dw < this->SiteDistance[w])
+      {
+        this->SiteDistance[w] = dw;
+        this->Parent[w] = u;
+        this->Cell[w] = this->Cell[u];
+        heap.push({ dw, w });
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void SurfaceSiteGraph::BuildArcs(const std::vector<int>& offsets, const std::vector<int>& neighbors)
+{
+  struct Candidate
+  {
+    int A, B;
+    double Length;
+    int U, V;
+    bool operator<(const Candidate& o) const
+    {
+      return A != o.A ? A < o.A : B != o.B ? B < o.B : Length < o.Length;
+    }
+  };
+  std::vector<Candidate> candidates;
+  const int nv = this->Mesh.GetNumberOfVertices();
+  for (int u = 0; u < nv; ++u)
+  {
+    const int a = this->Cell[u];
+    if (a < 0)
+    {
+      continue;
+    }
+    for (int i = offsets[u]; i < offsets[u + 1]; ++i)
+    {
+      const int w = neighbors[i];
+      const int b = this->Cell[w];
+      if (b >= 0 && b != a)
+      {
+        candidates.push_back({ a,
+          b,
+          this->SiteDistance[u] + Distance(this->Mesh.GetPosition(u), this->Mesh.GetPosition(w)) +
+            this->SiteDistance[w],
+          u,
+          w });
+      }
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  const int ns = static_cast<int>(this->Sites.size());
+  this->ArcOffsets.assign(ns + 1, 0);
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+  {
+    const Candidate& c = candidates[i];
+    if (i > 0 && candidates[i - 1].A == c.A && candidates[i - 1].B == c.B)
+    {
+      continue; // the shortest edge between two cells is the first of its run
+    }
+    this->ArcTarget.push_back(c.B);
+    this->ArcLength.push_back(
+      Distance(this->Mesh.GetPosition(this->Sites[c.A]), this->Mesh.GetPosition(this->Sites[c.B])));
+    this->ArcFrom.push_back(c.U);
+    this->ArcTo.push_back(c.V);
+    ++this->ArcOffsets[c.A + 1];
+  }
+  for (int s = 0; s < ns; ++s)
+  {
+    this->ArcOffsets[s + 1] += this->ArcOffsets[s];
+  }
+}
+
+//------------------------------------------------------------------------------
+std::size_t SurfaceSiteGraph::GetMemory() const
+{
+  return this->Sites.size() * sizeof(int) + this->Cell.size() * sizeof(int) +
+    this->Parent.size() * sizeof(int) + this->SiteDistance.size() * sizeof(double) +
+    this->ArcOffsets.size() * sizeof(int) +
+    this->ArcTarget.size() * (3 * sizeof(int) + sizeof(double));
+}
+
+//------------------------------------------------------------------------------
+void SurfaceSiteGraph::FlagNeighbourhood(int s, std::vector<char>& flags) const
+{
+  flags[s] = 1;
+  for (int a = this->ArcOffsets[s]; a < this->ArcOffsets[s + 1]; ++a)
+  {
+    flags[this->ArcTarget[a]] = 1;
+  }
+}
+
+//------------------------------------------------------------------------------
+void SurfaceSiteGraph::AppendChain(int v, bool down, std::vector<int>& out) const
+{
+  const std::size_t first = out.size();
+  for (int u = v; u >= 0; u = this->Parent[u])
+  {
+    out.push_back(u);
+  }
+  if (down)
+  {
+    std::reverse(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+  }
+}
+
+//------------------------------------------------------------------------------
+double SurfaceSiteGraph::FindRoute(const std::vector<EdgeGraphSearch::Terminal>& sources,
+  const Vec3& from,
+  const std::vector<EdgeGraphSearch::Terminal>& targets,
+  const Vec3& to,
+  const std::vector<char>& avoid,
+  Scratch& scratch,
+  std::vector<int>& vertices) const
+{
+  (void)from;
+  vertices.clear();
+  const int ns = static_cast<int>(this->Sites.size());
+  if (scratch.Stamp.size() != static_cast<std::size_t>(ns))
+  {
+    scratch.Cost.assign(ns, 0.0);
+    scratch.Parent.assign(ns, -1);
+    scratch.ArcIn.assign(ns, -1);
+    scratch.Source.assign(ns, -1);
+    scratch.Stamp.assign(ns, 0u);
+    scratch.Generation = 0;
+  }
+  if (++scratch.Generation == 0)
+  {
+    std::fill(scratch.Stamp.begin(), scratch.Stamp.end(), 0u);
+    scratch.Generation = 1;
+  }
+  const std::uint32_t generation = scratch.Generation;
+  auto seen = [&](int s) { return scratch.Stamp[s] == generation; };
+  auto bound = [&](int s) { return Distance(this->Mesh.GetPosition(this->Sites[s]), to); };
+
+  // Terminal costs: reaching the end from a target cell's site (down its parents to the
+  // corner, then the straight segment to the end point).
+  std::vector<std::pair<int, double>> exits; // (site, cost), best target corner per site
+  std::vector<int> exitCorner;
+  for (const EdgeGraphSearch::Terminal& t : targets)
+  {
+    const int s = this->Cell[t.Vertex];
+    if (s < 0)
+    {
+      continue;
+    }
+    const double cost = this->SiteDistance[t.Vertex] + t.Cost;
+    auto it = std::find_if(
+      exits.begin(), exits.end(), [&](const std::pair<int, double>& e) { return e.first == s; });
+    if (it == exits.end())
+    {
+      exits.emplace_back(s, cost);
+      exitCorner.push_back(t.Vertex);
+    }
+    else if (cost < it->second)
+    {
+      it->second = cost;
+      exitCorner[it - exits.begin()] = t.Vertex;
+    }
+  }
+  auto exitOf = [&](int s) -> int
+  {
+    for (std::size_t i = 0; i < exits.size(); ++i)
+    {
+      if (exits[i].first == s)
+      {
+        return static_cast<int>(i);
+      }
+    }
+    return -1;
+  };
+
+  std::vector<std::pair<double, int>>& heap = scratch.Heap;
+  heap.clear();
+  auto push = [&](double key, int s)
+  {
+    heap.emplace_back(key, s);
+    std::push_heap(heap.begin(), heap.end(), std::greater<>());
+  };
+  for (const EdgeGraphSearch::Terminal& t : sources)
+  {
+    const int s = this->Cell[t.Vertex];
+    if (s < 0)
+    {
+      continue;
+    }
+    const double cost = t.Cost + this->SiteDistance[t.Vertex];
+    if (!seen(s) || cost < scratch.Cost[s])
+    {
+      scratch.Stamp[s] = generation;
+      scratch.Cost[s] = cost;
+      scratch.Parent[s] = -1;
+      scratch.ArcIn[s] = -1;
+      scratch.Source[s] = t.Vertex;
+      push(cost + bound(s), s);
+    }
+  }
+  double best = std::numeric_limits<double>::infinity();
+  int bestSite = -1;
+  while (!heap.empty())
+  {
+    std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+    const auto [key, s] = heap.back();
+    heap.pop_back();
+    if (key >= best)
+    {
+      break;
+    }
+    if (key > scratch.Cost[s] + bound(s))
+    {
+      continue; // stale entry
+    }
+    const int e = exitOf(s);
+    if (e >= 0 && scratch.Cost[s] + exits[e].second < best)
+    {
+      best = scratch.Cost[s] + exits[e].second;
+      bestSite = s;
+    }
+    for (int a = this->ArcOffsets[s]; a < this->ArcOffsets[s + 1]; ++a)
+    {
+      const int w = this->ArcTarget[a];
+      if (!avoid.empty() && avoid[w] && exitOf(w) < 0)
+      {
+        continue;
+      }
+      const double cost = scratch.Cost[s] + this->ArcLength[a];
+      if (!seen(w) || cost < scratch.Cost[w])
+      {
+        scratch.Stamp[w] = generation;
+        scratch.Cost[w] = cost;
+        scratch.Parent[w] = s;
+        scratch.ArcIn[w] = a;
+        scratch.Source[w] = -1;
+        push(cost + bound(w), w);
+      }
+    }
+  }
+  if (bestSite < 0)
+  {
+    return -1.0;
+  }
+
+  // Sites of the route, start to end.
+  scratch.Sites.clear();
+  for (int s = bestSite; s >= 0; s = scratch.Parent[s])
+  {
+    scratch.Sites.push_back(s);
+  }
+  std::reverse(scratch.Sites.begin(), scratch.Sites.end());
+  // Mesh-edge path: up from the start corner to the first site, then each arc's edge path
+  // (down to u in the arc's cell, across to v, up to the next site), then down to the end
+  // corner.
+  const int first = scratch.Sites.front();
+  this->AppendChain(scratch.Source[first], false, vertices);
+  for (std::size_t i = 1; i < scratch.Sites.size(); ++i)
+  {
+    const int a = scratch.ArcIn[scratch.Sites[i]];
+    vertices.pop_back(); // the site itself, appended again as the chain's top
+    this->AppendChain(this->ArcFrom[a], true, vertices);
+    this->AppendChain(this->ArcTo[a], false, vertices);
+  }
+  vertices.pop_back();
+  this->AppendChain(exitCorner[exitOf(bestSite)], true, vertices);
+
+  // Cut loops (a chain down a cell may retrace the chain that came up it): keep the first
+  // visit of a vertex and drop what lay between its visits. Mesh-sized, stamped.
+  const std::size_t nv = static_cast<std::size_t>(this->Mesh.GetNumberOfVertices());
+  if (scratch.Position.size() != nv)
+  {
+    scratch.Position.assign(nv, 0);
+    scratch.PositionStamp.assign(nv, 0u);
+    scratch.PositionGeneration = 0;
+  }
+  if (++scratch.PositionGeneration == 0)
+  {
+    std::fill(scratch.PositionStamp.begin(), scratch.PositionStamp.end(), 0u);
+    scratch.PositionGeneration = 1;
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    const int v = vertices[i];
+    if (scratch.PositionStamp[v] == scratch.PositionGeneration)
+    {
+      const int at = scratch.Position[v];
+      if (at < static_cast<int>(kept) && vertices[at] == v)
+      {
+        kept = static_cast<std::size_t>(at) + 1;
+        continue;
+      }
+    }
+    scratch.PositionStamp[v] = scratch.PositionGeneration;
+    scratch.Position[v] = static_cast<int>(kept);
+    vertices[kept++] = v;
+  }
+  vertices.resize(kept);
+  return best;
+}
+
+} // namespace boolsurf

@@ -1,0 +1,240 @@
+// The Bounded geodesic method and its per-surface site graph: a fixed window budget per leg,
+// far legs routed on the site graph and straightened (valid, never shorter than the exact
+// path, within a few percent of it), short legs exact, and one graph per surface.
+#include "Geodesic/CurveTracer.h"
+#include "Geodesic/GeodesicPath.h"
+#include "Geodesic/SurfaceSiteGraph.h"
+#include "Mesh/ProceduralMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <queue>
+#include <random>
+
+using namespace boolsurf;
+
+namespace
+{
+TriangleMesh ToMesh(const MeshData& d)
+{
+  return TriangleMesh(d.Positions, d.Triangles);
+}
+
+CanonicalPoint FacePoint(const TriangleMesh& mesh, std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> unit(0.05, 0.45);
+  CanonicalPoint c;
+  c.Location = PointLocation::Face;
+  c.Id = static_cast<int>(rng() % mesh.GetNumberOfTriangles());
+  c.U = unit(rng);
+  c.V = unit(rng);
+  return c;
+}
+
+/// The farthest (straight line) of 64 random face points from p.
+CanonicalPoint FarPoint(const TriangleMesh& mesh, const CanonicalPoint& p, std::mt19937& rng)
+{
+  CanonicalPoint best = FacePoint(mesh, rng);
+  for (int i = 0; i < 64; ++i)
+  {
+    const CanonicalPoint q = FacePoint(mesh, rng);
+    if (Distance(PositionOf(mesh, q), PositionOf(mesh, p)) >
+      Distance(PositionOf(mesh, best), PositionOf(mesh, p)))
+    {
+      best = q;
+    }
+  }
+  return best;
+}
+
+void ExpectOnSurface(const TriangleMesh& mesh, const GeodesicPath& path)
+{
+  for (std::size_t i = 1; i < path.Points.size(); ++i)
+  {
+    EXPECT_GE(SharedTriangle(mesh, path.Points[i - 1], path.Points[i]), 0) << "point " << i;
+  }
+}
+
+/// Edge hops from vertex `from` to every vertex (breadth-first).
+std::vector<int> Hops(const TriangleMesh& mesh, int from)
+{
+  std::vector<int> hops(mesh.GetNumberOfVertices(), -1);
+  std::queue<int> queue;
+  hops[from] = 0;
+  queue.push(from);
+  while (!queue.empty())
+  {
+    const int v = queue.front();
+    queue.pop();
+    for (int corner : mesh.GetVertexCorners(v))
+    {
+      const Triangle& t = mesh.GetTriangle(corner / 3);
+      for (int w : { t[(corner % 3 + 1) % 3], t[(corner % 3 + 2) % 3] })
+      {
+        if (hops[w] < 0)
+        {
+          hops[w] = hops[v] + 1;
+          queue.push(w);
+        }
+      }
+    }
+  }
+  return hops;
+}
+} // namespace
+
+// Every vertex lies in a cell whose site is within `hops` edges, sites are more than `hops`
+// edges apart, and the cells' parent chains end at their sites.
+TEST(SurfaceSiteGraph, CellsCoverTheSurfaceAndSitesAreSpread)
+{
+  const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 64, 24));
+  const int hops = 2;
+  const SurfaceSiteGraph graph(mesh, hops);
+  ASSERT_GT(graph.GetNumberOfSites(), 10);
+  ASSERT_GT(graph.GetNumberOfArcs(), graph.GetNumberOfSites());
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    ASSERT_GE(graph.GetCell(v), 0) << "vertex " << v;
+  }
+  std::vector<int> nearest(mesh.GetNumberOfVertices(), 1 << 30);
+  std::vector<int> siteVertices;
+  for (int s = 0; s < graph.GetNumberOfSites(); ++s)
+  {
+    const int v = graph.GetSite(s);
+    EXPECT_EQ(graph.GetCell(v), s) << "a site lies in its own cell";
+    siteVertices.push_back(v);
+    const std::vector<int> h = Hops(mesh, v);
+    for (int w = 0; w < mesh.GetNumberOfVertices(); ++w)
+    {
+      nearest[w] = std::min(nearest[w], h[w]);
+    }
+  }
+  ASSERT_EQ(static_cast<int>(siteVertices.size()), graph.GetNumberOfSites());
+  for (int s : siteVertices)
+  {
+    const std::vector<int> h = Hops(mesh, s);
+    for (int t : siteVertices)
+    {
+      if (t != s)
+      {
+        EXPECT_GT(h[t], hops) << "sites " << s << " and " << t;
+      }
+    }
+  }
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    EXPECT_LE(nearest[v], hops) << "vertex " << v << " is far from every site";
+  }
+}
+
+// One graph per surface: solvers on the same mesh share it, another mesh gets its own, and a
+// graph is the same whoever builds it (deterministic).
+TEST(SurfaceSiteGraph, SharedPerSurfaceAndDeterministic)
+{
+  const TriangleMesh a = ToMesh(MakeTorus(1.0, 0.35, 48, 20));
+  const TriangleMesh b = ToMesh(MakeTorus(1.0, 0.35, 48, 20));
+  const auto ga = SurfaceSiteGraph::Get(a);
+  EXPECT_EQ(SurfaceSiteGraph::Get(a).get(), ga.get());
+  const auto gb = SurfaceSiteGraph::Get(b);
+  EXPECT_NE(gb.get(), ga.get());
+  ASSERT_EQ(gb->GetNumberOfSites(), ga->GetNumberOfSites());
+  ASSERT_EQ(gb->GetNumberOfArcs(), ga->GetNumberOfArcs());
+  for (int v = 0; v < a.GetNumberOfVertices(); ++v)
+  {
+    ASSERT_EQ(ga->GetCell(v), gb->GetCell(v));
+  }
+}
+
+// Far legs on a mesh too large for the window budget: every leg's exact search stays within
+// the budget, far legs are routed, valid, never shorter than the exact path and within 5 % of
+// it; the routed legs of a tracer never rebuild the graph when only the curves change.
+TEST(BoundedGeodesics, FarLegsAreRoutedWithinTheBudget)
+{
+  const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 112, 44));
+  GeodesicPathSolver bounded(mesh), exact(mesh);
+  exact.SetMethod(GeodesicMethod::Exact);
+  exact.SetMaximumWindows(1 << 26);
+  bounded.SetBoundedWindows(1 << 12);
+  std::mt19937 rng(27);
+  GeodesicPath b, e;
+  int routed = 0, same = 0;
+  const SurfaceSiteGraph* graph = nullptr;
+  for (int i = 0; i < 16; ++i)
+  {
+    const CanonicalPoint p = FacePoint(mesh, rng);
+    const CanonicalPoint q = FarPoint(mesh, p, rng);
+    ASSERT_TRUE(bounded.Compute(p, q, b).Ok);
+    ASSERT_TRUE(exact.Compute(p, q, e).Ok);
+    ASSERT_TRUE(exact.GetLastStatistics().Exact);
+    // The search stops at the first propagation past the budget (which adds at most a few).
+    EXPECT_LE(bounded.GetLastStatistics().Windows, (1 << 12) + 8);
+    ExpectOnSurface(mesh, b);
+    EXPECT_GE(b.Length, e.Length * (1 - 1e-9));
+    EXPECT_LE(b.Length, e.Length * 1.05);
+    routed += bounded.GetLastStatistics().Routed;
+    same += std::abs(b.Length - e.Length) <= 1e-9 * e.Length;
+    if (bounded.GetSiteGraph())
+    {
+      if (!graph)
+      {
+        graph = bounded.GetSiteGraph();
+      }
+      EXPECT_EQ(bounded.GetSiteGraph(), graph) << "the graph was rebuilt";
+    }
+  }
+  EXPECT_EQ(routed, 16);
+  // Routed far legs are the exact ones about half of the time on this torus (9 of 16 when
+  // written); the others are locally shortest geodesics at most a few percent longer.
+  EXPECT_GE(same, 8) << "far legs equal to the exact ones";
+
+  // A tracer: the same graph for every curve on the mesh.
+  CurveTracer tracer(mesh);
+  tracer.GetPathSolver().SetBoundedWindows(1 << 12);
+  CurveTrace trace;
+  const SurfaceSiteGraph* traced = nullptr;
+  for (int c = 0; c < 3; ++c)
+  {
+    std::vector<SurfacePoint> points;
+    for (int k = 0; k < 3; ++k)
+    {
+      const CanonicalPoint p = FacePoint(mesh, rng);
+      points.push_back({ p.Id, p.U, p.V });
+    }
+    ASSERT_TRUE(tracer.Trace(points, CurveType::GeodesicPolygon, true, trace).Ok);
+    ASSERT_NE(tracer.GetPathSolver().GetSiteGraph(), nullptr);
+    if (!traced)
+    {
+      traced = tracer.GetPathSolver().GetSiteGraph();
+    }
+    EXPECT_EQ(tracer.GetPathSolver().GetSiteGraph(), traced);
+  }
+  EXPECT_EQ(traced, SurfaceSiteGraph::Get(mesh).get()) << "one graph per surface";
+}
+
+// Short legs are exact under the Bounded method, whatever the budget's far legs do.
+TEST(BoundedGeodesics, ShortLegsAreExact)
+{
+  const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 160, 64));
+  GeodesicPathSolver bounded(mesh), exact(mesh);
+  exact.SetMethod(GeodesicMethod::Exact);
+  std::mt19937 rng(28);
+  GeodesicPath b, e;
+  int tested = 0;
+  for (int i = 0; i < 100000 && tested < 40; ++i)
+  {
+    const CanonicalPoint p = FacePoint(mesh, rng), q = FacePoint(mesh, rng);
+    const double d = Distance(PositionOf(mesh, p), PositionOf(mesh, q));
+    if (d > 0.15 || d < 0.02)
+    {
+      continue;
+    }
+    ASSERT_TRUE(bounded.Compute(p, q, b).Ok);
+    ASSERT_TRUE(exact.Compute(p, q, e).Ok);
+    EXPECT_TRUE(bounded.GetLastStatistics().Exact);
+    EXPECT_FALSE(bounded.GetLastStatistics().Routed);
+    EXPECT_EQ(b.Points, e.Points);
+    ++tested;
+  }
+  EXPECT_EQ(tested, 40);
+}
