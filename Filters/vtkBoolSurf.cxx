@@ -76,7 +76,7 @@ struct vtkBoolSurf::Internals
     vtkPolyData* Curves = nullptr;
     vtkMTimeType CurvesTime = 0;
     int Resolution = 0;
-    vtkTypeBool ExactGeodesics = 1;
+    int GeodesicMethod = GEODESIC_BOUNDED;
     double ProjectionTolerance = 0;
     int ZeroCellMode = 0;
     std::array<double, 3> ZeroCellPoint{};
@@ -95,7 +95,7 @@ struct vtkBoolSurf::Internals
                this->Curves,
                this->CurvesTime,
                this->Resolution,
-               this->ExactGeodesics,
+               this->GeodesicMethod,
                this->ProjectionTolerance,
                this->ZeroCellMode,
                this->ZeroCellPoint,
@@ -105,7 +105,7 @@ struct vtkBoolSurf::Internals
           o.Curves,
           o.CurvesTime,
           o.Resolution,
-          o.ExactGeodesics,
+          o.GeodesicMethod,
           o.ProjectionTolerance,
           o.ZeroCellMode,
           o.ZeroCellPoint,
@@ -156,7 +156,7 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
     curvesInput,
     curvesInput ? curvesInput->GetMTime() : 0,
     this->Resolution,
-    this->ExactGeodesics,
+    this->GeodesicMethod,
     this->ProjectionTolerance,
     this->ZeroCellMode,
     { this->ZeroCellPoint[0], this->ZeroCellPoint[1], this->ZeroCellPoint[2] },
@@ -194,11 +194,19 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
     return false;
   }
   boolsurf::SelectionOutputTimes times;
+  // The control points are traced as the curves were (the tracer is shared with the cache's
+  // other users, which set their own method).
+  boolsurf::GeodesicPathSolver* solver = nullptr;
+  if (this->ComputeControlCurves)
+  {
+    solver = &this->GetSurfaceCache().GetTracer().GetPathSolver();
+    solver->SetMethod(static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod));
+  }
   if (!boolsurf::WriteSelectedCells(*surface,
         in.Arrangement,
         in.Sources,
         in.Selected,
-        this->ComputeControlCurves ? &this->GetSurfaceCache().GetTracer().GetPathSolver() : nullptr,
+        solver,
         in.Output,
         region,
         boundary,
@@ -262,7 +270,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   boolsurf::TraceOptions traceOptions;
   traceOptions.Resolution = this->Resolution;
   traceOptions.ProjectionTolerance = this->ProjectionTolerance;
-  traceOptions.ExactGeodesics = this->ExactGeodesics != 0;
+  traceOptions.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
   std::vector<std::string> notes;
   // Optional first step: resolve inconsistent shapes, then trace the resolved curves.
   in.ResolutionNotes.clear();
@@ -274,6 +282,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     resolve.Offset = this->ResolveOffset;
     resolve.Resolution = this->Resolution;
     resolve.ProjectionTolerance = this->ProjectionTolerance;
+    resolve.Method = traceOptions.Method;
     if (!boolsurf::ResolveControlCurves(
           this->GetSurfaceCache(), curvesInput, resolve, resolved, notes, error))
     {
@@ -454,7 +463,8 @@ void vtkBoolSurf::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Resolution: " << this->Resolution << "\n";
-  os << indent << "ExactGeodesics: " << this->ExactGeodesics << "\n";
+  os << indent << "GeodesicMethod: " << this->GeodesicMethod << " ("
+     << GetGeodesicMethodName(this->GeodesicMethod) << ")\n";
   os << indent << "Operation: " << this->Operation << "\n";
   os << indent << "ShapeA: " << this->ShapeA << " ShapeB: " << this->ShapeB << "\n";
   os << indent << "Expression: " << this->Expression << "\n";

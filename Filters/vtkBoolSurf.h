@@ -98,9 +98,35 @@ public:
   vtkGetMacro(Resolution, int);
   vtkSetClampMacro(ProjectionTolerance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(ProjectionTolerance, double);
-  vtkSetMacro(ExactGeodesics, vtkTypeBool);
-  vtkGetMacro(ExactGeodesics, vtkTypeBool);
-  vtkBooleanMacro(ExactGeodesics, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// How each geodesic leg is computed (tracing the curves, resolving inconsistent shapes
+  /// and the control points of ports 2 and 3): GEODESIC_BOUNDED (0, default), the shortest path
+  /// in practice at a bounded cost per leg (exact while the exact search stays small, else
+  /// straightened in the homotopy class of a coarse per-surface graph's route);
+  /// GEODESIC_EXACT (1), the exact polyhedral shortest path (can take seconds between far
+  /// points on large meshes); GEODESIC_LOCALLY_SHORTEST (2), the straightened shortest
+  /// mesh-edge path (fastest, not guaranteed to be the shortest). See
+  /// vtkBoolSurfTraceCurves::SetGeodesicMethod.
+  vtkSetClampMacro(GeodesicMethod, int, GEODESIC_BOUNDED, GEODESIC_LOCALLY_SHORTEST);
+  vtkGetMacro(GeodesicMethod, int);
+  void SetGeodesicMethodToBounded() { this->SetGeodesicMethod(GEODESIC_BOUNDED); }
+  void SetGeodesicMethodToExact() { this->SetGeodesicMethod(GEODESIC_EXACT); }
+  void SetGeodesicMethodToLocallyShortest() { this->SetGeodesicMethod(GEODESIC_LOCALLY_SHORTEST); }
+  ///@}
+
+  ///@{
+  /// @deprecated Use SetGeodesicMethod(). Kept for existing scripts: on sets GeodesicMethod to
+  /// GEODESIC_EXACT, off to GEODESIC_LOCALLY_SHORTEST; GetExactGeodesics() is 1 exactly when
+  /// GeodesicMethod is GEODESIC_EXACT.
+  void SetExactGeodesics(vtkTypeBool exact)
+  {
+    this->SetGeodesicMethod(exact ? GEODESIC_EXACT : GEODESIC_LOCALLY_SHORTEST);
+  }
+  vtkTypeBool GetExactGeodesics() { return this->GeodesicMethod == GEODESIC_EXACT ? 1 : 0; }
+  void ExactGeodesicsOn() { this->SetExactGeodesics(1); }
+  void ExactGeodesicsOff() { this->SetExactGeodesics(0); }
   ///@}
 
   ///@{
@@ -175,7 +201,7 @@ protected:
     std::string& error) override;
 
   int Resolution = 4;
-  vtkTypeBool ExactGeodesics = 1;
+  int GeodesicMethod = GEODESIC_BOUNDED;
   double ProjectionTolerance = 0.01;
   int ZeroCellMode = 0;
   double ZeroCellPoint[3] = { 0, 0, 0 };

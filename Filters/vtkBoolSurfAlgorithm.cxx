@@ -1,5 +1,7 @@
 #include "vtkBoolSurfAlgorithm.h"
 
+#include "Geodesic/GeodesicPath.h"
+
 #include "vtkBoolSurfRankGather.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
@@ -171,4 +173,25 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
 void vtkBoolSurfAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+}
+
+//------------------------------------------------------------------------------
+// The property's values are those of Core's enumeration.
+static_assert(
+  vtkBoolSurfAlgorithm::GEODESIC_BOUNDED == static_cast<int>(boolsurf::GeodesicMethod::Bounded),
+  "GeodesicMethod values");
+static_assert(
+  vtkBoolSurfAlgorithm::GEODESIC_EXACT == static_cast<int>(boolsurf::GeodesicMethod::Exact),
+  "GeodesicMethod values");
+static_assert(vtkBoolSurfAlgorithm::GEODESIC_LOCALLY_SHORTEST ==
+    static_cast<int>(boolsurf::GeodesicMethod::LocallyShortest),
+  "GeodesicMethod values");
+
+const char* vtkBoolSurfAlgorithm::GetGeodesicMethodName(int method)
+{
+  if (method < GEODESIC_BOUNDED || method > GEODESIC_LOCALLY_SHORTEST)
+  {
+    return "Unknown";
+  }
+  return boolsurf::GeodesicMethodName(static_cast<boolsurf::GeodesicMethod>(method));
 }

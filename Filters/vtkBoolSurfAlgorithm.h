@@ -43,6 +43,18 @@ public:
   vtkTypeMacro(vtkBoolSurfAlgorithm, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /// Values of the GeodesicMethod property of the filters that trace geodesics
+  /// (vtkBoolSurfTraceCurves, vtkBoolSurf, vtkBoolSurfSurfaceCurves, vtkBoolSurfResolve); see
+  /// vtkBoolSurfTraceCurves::SetGeodesicMethod for what each one guarantees and costs.
+  enum GeodesicMethods
+  {
+    GEODESIC_BOUNDED = 0,
+    GEODESIC_EXACT = 1,
+    GEODESIC_LOCALLY_SHORTEST = 2,
+  };
+  /// "Bounded", "Exact" or "LocallyShortest" (the names of boolsurf::GeodesicMethod).
+  static const char* GetGeodesicMethodName(int method);
+
 protected:
   vtkBoolSurfAlgorithm();
   ~vtkBoolSurfAlgorithm() override;

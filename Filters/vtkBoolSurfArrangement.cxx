@@ -79,7 +79,7 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     curves = traced->Curves;
     sources = traced->Sources;
-    result->ExactGeodesics = traced->ExactGeodesics;
+    result->Method = traced->Method;
   }
   else
   {
@@ -92,7 +92,7 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
     {
       sources.clear();
     }
-    result->ExactGeodesics = true;
+    result->Method = boolsurf::GeodesicMethod::Bounded; // the method is not in the arrays
   }
   this->UpdateProgress(0.1);
   if (this->CheckAbort())
@@ -127,7 +127,9 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
   if (!sources.empty())
   {
     const boolsurf::Arrangement& arr = result->Arrangement;
+    // Traced as the curves were (the solver's method is set again by every user of the cache).
     boolsurf::GeodesicPathSolver& solver = this->GetSurfaceCache().GetTracer().GetPathSolver();
+    solver.SetMethod(result->Method);
     std::vector<boolsurf::ControlSubCurve> perPatch(arr.Patches.size());
     boolsurf::BezierPieces bezier(arr, sources); // each Bezier segment split once per cut
     for (std::size_t p = 0; p < perPatch.size(); ++p)

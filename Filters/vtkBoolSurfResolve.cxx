@@ -41,6 +41,7 @@ bool vtkBoolSurfResolve::Execute(const std::vector<vtkPolyData*>& inputs,
   options.Offset = this->Offset;
   options.Resolution = this->Resolution;
   options.ProjectionTolerance = this->ProjectionTolerance;
+  options.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
   if (!boolsurf::ParseShapeStrategies(this->ShapeStrategies, options.PerShape, error))
   {
     return false;
@@ -61,4 +62,6 @@ void vtkBoolSurfResolve::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Offset: " << this->Offset << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "ProjectionTolerance: " << this->ProjectionTolerance << "\n";
+  os << indent << "GeodesicMethod: " << this->GeodesicMethod << " ("
+     << GetGeodesicMethodName(this->GeodesicMethod) << ")\n";
 }

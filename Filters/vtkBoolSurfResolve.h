@@ -84,6 +84,21 @@ public:
   vtkGetMacro(ProjectionTolerance, double);
   ///@}
 
+  ///@{
+  /// How each geodesic leg is computed when the curves are traced to find their homology classes:
+  /// GEODESIC_BOUNDED (0, default), the shortest path in practice at a bounded cost per leg (exact
+  /// while the exact search stays small, else straightened in the homotopy class of a coarse
+  /// per-surface graph's route); GEODESIC_EXACT (1), the exact polyhedral shortest path (can take
+  /// seconds between far points on large meshes); GEODESIC_LOCALLY_SHORTEST (2), the straightened
+  /// shortest mesh-edge path (fastest, not guaranteed to be the shortest). See
+  /// vtkBoolSurfTraceCurves::SetGeodesicMethod.
+  vtkSetClampMacro(GeodesicMethod, int, GEODESIC_BOUNDED, GEODESIC_LOCALLY_SHORTEST);
+  vtkGetMacro(GeodesicMethod, int);
+  void SetGeodesicMethodToBounded() { this->SetGeodesicMethod(GEODESIC_BOUNDED); }
+  void SetGeodesicMethodToExact() { this->SetGeodesicMethod(GEODESIC_EXACT); }
+  void SetGeodesicMethodToLocallyShortest() { this->SetGeodesicMethod(GEODESIC_LOCALLY_SHORTEST); }
+  ///@}
+
 protected:
   vtkBoolSurfResolve();
   ~vtkBoolSurfResolve() override;
@@ -97,6 +112,7 @@ protected:
   double Offset = 0;
   int Resolution = 4;
   double ProjectionTolerance = 0.01;
+  int GeodesicMethod = GEODESIC_BOUNDED;
 
 private:
   vtkBoolSurfResolve(const vtkBoolSurfResolve&) = delete;

@@ -415,9 +415,10 @@ void vtkBoolSurfSurfaceCurves::TraceForDisplay(vtkPolyData* surface,
   vtkPolyData* traced)
 {
   // Port 1 shows the drawing as the filters downstream will use it (the curves traced with
-  // Trace Surface Curves' defaults), so it follows a drag in the curve editor. It is left empty,
-  // without a message, while the drawing cannot be traced (a curve of one point, a Bezier
-  // curve still missing handles): the filters that use the curves say why.
+  // Trace Surface Curves' defaults and this filter's GeodesicMethod), so it follows a drag in
+  // the curve editor. It is left empty, without a message, while the drawing cannot be traced
+  // (a curve of one point, a Bezier curve still missing handles): the filters that use the
+  // curves say why.
   std::vector<std::string> warnings, problems, notes;
   std::string error;
   if (curves->GetNumberOfCells() == 0 ||
@@ -426,14 +427,10 @@ void vtkBoolSurfSurfaceCurves::TraceForDisplay(vtkPolyData* surface,
     return;
   }
   std::vector<boolsurf::TracedCurve> paths;
-  if (!boolsurf::TraceControlCurves(this->Internal->Traced,
-        curves,
-        boolsurf::TraceOptions(),
-        nullptr,
-        paths,
-        traced,
-        problems,
-        notes))
+  boolsurf::TraceOptions options;
+  options.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
+  if (!boolsurf::TraceControlCurves(
+        this->Internal->Traced, curves, options, nullptr, paths, traced, problems, notes))
   {
     traced->Initialize();
   }
@@ -448,4 +445,6 @@ void vtkBoolSurfSurfaceCurves::PrintSelf(ostream& os, vtkIndent indent)
   os << indent
      << "Curves: " << std::max<size_t>(this->CurveSizes.size(), this->GetNumberOfPoints() > 0)
      << "\n";
+  os << indent << "GeodesicMethod: " << this->GeodesicMethod << " ("
+     << GetGeodesicMethodName(this->GeodesicMethod) << ")\n";
 }

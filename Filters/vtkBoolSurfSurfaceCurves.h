@@ -25,7 +25,8 @@
  * whose size is not a multiple of 3 or an open one whose size is not 3n+1, an empty surface.
  *
  * Port 1 gives the same curves traced on the surface (geodesic polygons and Bezier splines
- * with Trace Surface Curves' defaults, as vtkBoolSurfTraceCurves outputs them), for display:
+ * with Trace Surface Curves' defaults but this filter's GeodesicMethod, as
+ * vtkBoolSurfTraceCurves outputs them), for display:
  * it follows the control points as they are edited, and is empty (no message) while the
  * drawing cannot be traced yet. Filters take port 0.
  *
@@ -82,6 +83,21 @@ public:
   /// Removes every point and curve.
   void RemoveAllCurves();
 
+  ///@{
+  /// How each geodesic leg is computed for the traced curves of port 1: GEODESIC_BOUNDED (0,
+  /// default), the shortest path in practice at a bounded cost per leg (exact while the exact
+  /// search stays small, else straightened in the homotopy class of a coarse per-surface graph's
+  /// route); GEODESIC_EXACT (1), the exact polyhedral shortest path (can take seconds between far
+  /// points on large meshes); GEODESIC_LOCALLY_SHORTEST (2), the straightened shortest
+  /// mesh-edge path (fastest, not guaranteed to be the shortest). See
+  /// vtkBoolSurfTraceCurves::SetGeodesicMethod.
+  vtkSetClampMacro(GeodesicMethod, int, GEODESIC_BOUNDED, GEODESIC_LOCALLY_SHORTEST);
+  vtkGetMacro(GeodesicMethod, int);
+  void SetGeodesicMethodToBounded() { this->SetGeodesicMethod(GEODESIC_BOUNDED); }
+  void SetGeodesicMethodToExact() { this->SetGeodesicMethod(GEODESIC_EXACT); }
+  void SetGeodesicMethodToLocallyShortest() { this->SetGeodesicMethod(GEODESIC_LOCALLY_SHORTEST); }
+  ///@}
+
 protected:
   vtkBoolSurfSurfaceCurves();
   ~vtkBoolSurfSurfaceCurves() override;
@@ -97,6 +113,7 @@ protected:
   std::vector<int> ShapeIds;
   std::vector<int> CurveTypes;
   std::vector<int> ClosedCurves;
+  int GeodesicMethod = GEODESIC_BOUNDED;
 
 private:
   /// Writes the curves traced on the surface to port 1 (empty when they cannot be traced).

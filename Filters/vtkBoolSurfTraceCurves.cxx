@@ -50,7 +50,7 @@ bool vtkBoolSurfTraceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   boolsurf::TraceOptions options;
   options.Resolution = this->Resolution;
   options.ProjectionTolerance = this->ProjectionTolerance;
-  options.ExactGeodesics = this->ExactGeodesics != 0;
+  options.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
   std::vector<std::string> notes;
   const bool ok = boolsurf::TraceControlCurves(this->GetSurfaceCache(),
     curvesInput,
@@ -73,7 +73,7 @@ bool vtkBoolSurfTraceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   }
   // The traced curves in Core form for Surface Arrangement (see vtkBoolSurfStageHandoff.h).
   result->Surface = boolsurf::SurfaceIdentity(surfaceInput);
-  result->ExactGeodesics = options.ExactGeodesics;
+  result->Method = options.Method;
   boolsurf::AttachStageResult<boolsurf::TracedCurvesResult>(
     output->GetPointData()->GetArray(boolsurf::names::TriangleId), std::move(result));
   return true;
@@ -98,6 +98,7 @@ void vtkBoolSurfTraceCurves::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Resolution: " << this->Resolution << "\n";
-  os << indent << "ExactGeodesics: " << this->ExactGeodesics << "\n";
+  os << indent << "GeodesicMethod: " << this->GeodesicMethod << " ("
+     << GetGeodesicMethodName(this->GeodesicMethod) << ")\n";
   os << indent << "ProjectionTolerance: " << this->ProjectionTolerance << "\n";
 }

@@ -5,10 +5,9 @@
  * vtkBoolSurfTraceCurves turns control polygons into curves lying on a surface, at a
  * resolution independent of the mesh's:
  *
- * - a geodesic polygon (CurveType 0) joins consecutive control points by shortest paths
- *   (locally shortest geodesics: a triangle strip from a dual-graph search, the funnel
- *   algorithm on the unfolded strip, then the strip rerouted around every vertex where the
- *   path bends by less than pi, until no such vertex is left);
+ * - a geodesic polygon (CurveType 0) joins consecutive control points by shortest paths,
+ *   computed as GeodesicMethod says (default: the shortest path in practice at a bounded cost
+ *   per leg), each one straightened exactly in its unfolded triangle strip;
  * - a cubic geodesic Bezier spline (CurveType 1; anchor, handle, handle, anchor, ...) is
  *   evaluated by geodesic de Casteljau subdivision (b/Surf, Mancinelli et al. 2022) with
  *   Resolution levels, and the refined control polygon is traced as a geodesic polygon.
@@ -74,12 +73,35 @@ public:
   ///@}
 
   ///@{
-  /// Trace each geodesic leg as the exact shortest path between its two points (default on).
-  /// Off, a leg is locally shortest (the straightened shortest edge path): faster on long
-  /// legs of large meshes, but it may pass on the wrong side of a bump, saddle or handle.
-  vtkSetMacro(ExactGeodesics, vtkTypeBool);
-  vtkGetMacro(ExactGeodesics, vtkTypeBool);
-  vtkBooleanMacro(ExactGeodesics, vtkTypeBool);
+  /// How each geodesic leg (between two consecutive points of a geodesic polygon or of a
+  /// Bezier spline's refined control polygon) is computed:
+  ///
+  /// - GEODESIC_BOUNDED (0, default): the shortest path in practice at a bounded cost per leg.
+  ///   The exact search is used while it stays small; past that, the leg is straightened in
+  ///   the homotopy class of the route found on a coarse graph built once per surface.
+  /// - GEODESIC_EXACT (1): the exact polyhedral shortest path (window propagation); it can take
+  ///   seconds between far points on large meshes.
+  /// - GEODESIC_LOCALLY_SHORTEST (2): the shortest mesh-edge path, straightened: the fastest,
+  ///   but with no guarantee of being the shortest (it may pass on the wrong side of a bump, a
+  ///   saddle or a handle).
+  vtkSetClampMacro(GeodesicMethod, int, GEODESIC_BOUNDED, GEODESIC_LOCALLY_SHORTEST);
+  vtkGetMacro(GeodesicMethod, int);
+  void SetGeodesicMethodToBounded() { this->SetGeodesicMethod(GEODESIC_BOUNDED); }
+  void SetGeodesicMethodToExact() { this->SetGeodesicMethod(GEODESIC_EXACT); }
+  void SetGeodesicMethodToLocallyShortest() { this->SetGeodesicMethod(GEODESIC_LOCALLY_SHORTEST); }
+  ///@}
+
+  ///@{
+  /// @deprecated Use SetGeodesicMethod(). Kept for existing scripts: on sets GeodesicMethod to
+  /// GEODESIC_EXACT, off to GEODESIC_LOCALLY_SHORTEST; GetExactGeodesics() is 1 exactly when
+  /// GeodesicMethod is GEODESIC_EXACT.
+  void SetExactGeodesics(vtkTypeBool exact)
+  {
+    this->SetGeodesicMethod(exact ? GEODESIC_EXACT : GEODESIC_LOCALLY_SHORTEST);
+  }
+  vtkTypeBool GetExactGeodesics() { return this->GeodesicMethod == GEODESIC_EXACT ? 1 : 0; }
+  void ExactGeodesicsOn() { this->SetExactGeodesics(1); }
+  void ExactGeodesicsOff() { this->SetExactGeodesics(0); }
   ///@}
 
 protected:
@@ -93,7 +115,7 @@ protected:
 
   int Resolution = 4;
   double ProjectionTolerance = 0.01;
-  vtkTypeBool ExactGeodesics = 1;
+  int GeodesicMethod = GEODESIC_BOUNDED;
 
 private:
   vtkBoolSurfTraceCurves(const vtkBoolSurfTraceCurves&) = delete;

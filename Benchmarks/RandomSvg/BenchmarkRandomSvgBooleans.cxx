@@ -18,9 +18,11 @@
 //
 // Usage: BoolSurfRandomSvgBenchmark [--trials N] [--seed S] [--csv FILE] [--mesh NAME]...
 //        [--only-trial K] (replays trial K of each mesh: each mesh has its own generator)
-//        [--verbose] (each trial named before it runs) [--locally-shortest] (ExactGeodesics
-//        off) [--no-control-curves] (ComputeControlCurves off: no vector output, as the
-//        paper's timings)
+//        [--verbose] (each trial named before it runs)
+//        [--geodesic-method=bounded|exact|locally-shortest] (the filter's GeodesicMethod;
+//        default bounded; --locally-shortest is kept as an alias of
+//        --geodesic-method=locally-shortest) [--no-control-curves] (ComputeControlCurves off:
+//        no vector output, as the paper's timings)
 // (shared data from BOOLSURF_SHARED_DATA or the build's configured path; a missing collection
 // ends the program with a message and exit code 0, nothing measured).
 #include "vtkBoolSurf.h"
@@ -107,8 +109,8 @@ struct Options
   std::vector<std::string> Meshes; // empty: every shared mesh of >= 100k triangles
   int OnlyTrial = -1;              // >= 0: run only this trial (and the cold update)
   bool Verbose = false;            // print each trial before it runs
-  bool LocallyShortest = false;    // ExactGeodesics off (locally shortest legs)
-  bool ControlCurves = true;       // ComputeControlCurves (the vector output, ports 2-3)
+  int GeodesicMethod = vtkBoolSurf::GEODESIC_BOUNDED; // the filter's GeodesicMethod
+  bool ControlCurves = true; // ComputeControlCurves (the vector output, ports 2-3)
 };
 
 Options ParseOptions(int argc, char** argv)
@@ -130,9 +132,26 @@ Options ParseOptions(int argc, char** argv)
     {
       options.Csv = argv[++i];
     }
-    else if (arg == "--locally-shortest")
+    else if (arg.rfind("--geodesic-method=", 0) == 0 || (arg == "--geodesic-method" && hasValue))
     {
-      options.LocallyShortest = true;
+      const std::string method = arg == "--geodesic-method"
+        ? argv[++i]
+        : arg.substr(std::string("--geodesic-method=").size());
+      const std::map<std::string, int> methods{ { "bounded", vtkBoolSurf::GEODESIC_BOUNDED },
+        { "exact", vtkBoolSurf::GEODESIC_EXACT },
+        { "locally-shortest", vtkBoolSurf::GEODESIC_LOCALLY_SHORTEST } };
+      const auto it = methods.find(method);
+      if (it == methods.end())
+      {
+        std::cerr << "unknown geodesic method '" << method
+                  << "': use bounded, exact or locally-shortest\n";
+        std::exit(2);
+      }
+      options.GeodesicMethod = it->second;
+    }
+    else if (arg == "--locally-shortest") // the option's name before --geodesic-method
+    {
+      options.GeodesicMethod = vtkBoolSurf::GEODESIC_LOCALLY_SHORTEST;
     }
     else if (arg == "--no-control-curves")
     {
@@ -154,7 +173,8 @@ Options ParseOptions(int argc, char** argv)
     {
       std::cerr << "usage: " << argv[0]
                 << " [--trials N] [--seed S] [--csv FILE] [--mesh NAME.ply]... [--only-trial K] "
-                   "[--verbose] [--locally-shortest] [--no-control-curves]\n";
+                   "[--verbose] [--geodesic-method=bounded|exact|locally-shortest] "
+                   "[--no-control-curves]\n";
       std::exit(2);
     }
   }
@@ -311,7 +331,9 @@ int main(int argc, char** argv)
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   std::cout << "Random SVG Booleans (paper Fig. 22): " << meshes.size() << " meshes, "
             << svgs.size() << " SVGs, " << options.Trials << " trials per mesh, seed "
-            << options.Seed << ", " << cores << " cores\n";
+            << options.Seed << ", geodesic method "
+            << vtkBoolSurf::GetGeodesicMethodName(options.GeodesicMethod) << ", " << cores
+            << " cores\n";
 
   // Rows are kept until the end: the stage columns are known from the first successful update.
   struct Row
@@ -336,7 +358,7 @@ int main(int argc, char** argv)
     const double diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
       std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
     Pipeline pipeline(surface);
-    pipeline.Boolean->SetExactGeodesics(!options.LocallyShortest);
+    pipeline.Boolean->SetGeodesicMethod(options.GeodesicMethod);
     pipeline.Boolean->SetComputeControlCurves(options.ControlCurves);
     // One generator per mesh, seeded by the seed and the mesh's name, so a run on a subset of
     // the meshes (--mesh) repeats the same trials.

@@ -233,6 +233,7 @@ bool ResolveControlCurves(vtkSurfaceCache& cache,
   }
   CurveTracer& tracer = cache.GetTracer();
   tracer.SetResolution(options.Resolution);
+  tracer.GetPathSolver().SetMethod(options.Method);
   std::vector<std::vector<int>> classes;
   if (!ClassifyControlCurves(tracer, *basis, input, classes, nullptr, error))
   {

@@ -22,6 +22,8 @@ struct ResolveStageOptions
   double Offset = 0;                                             ///< DuplicateReversed; 0: auto
   int Resolution = 4;
   double ProjectionTolerance = 0.01; ///< fraction of the surface's bounding-box diagonal
+  /// How the curves are traced to find their homology classes (as in TraceOptions).
+  GeodesicMethod Method = GeodesicMethod::Bounded;
 };
 
 /// Parses "3:RemoveCurves, S5=AddGenerators; 7:1" (ShapeId, then a strategy name or number)

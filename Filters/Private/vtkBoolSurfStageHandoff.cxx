@@ -115,7 +115,7 @@ ResultPathSolver::ResultPathSolver() = default;
 ResultPathSolver::~ResultPathSolver() = default;
 
 GeodesicPathSolver& ResultPathSolver::Get(const std::shared_ptr<const TriangleMesh>& mesh,
-  bool exactGeodesics)
+  GeodesicMethod method)
 {
   if (!this->Tracer || this->Mesh != mesh)
   {
@@ -123,7 +123,7 @@ GeodesicPathSolver& ResultPathSolver::Get(const std::shared_ptr<const TriangleMe
     this->Mesh = mesh; // keeps the mesh alive as long as the tracer refers to it
   }
   GeodesicPathSolver& solver = this->Tracer->GetPathSolver();
-  solver.SetUseExactStrip(exactGeodesics);
+  solver.SetMethod(method);
   return solver;
 }
 

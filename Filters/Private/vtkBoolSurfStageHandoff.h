@@ -65,7 +65,8 @@ struct TracedCurvesResult
   SurfaceIdentity Surface;
   std::vector<TracedCurve> Curves;
   std::vector<CurveSource> Sources;
-  bool ExactGeodesics = true; ///< the legs' method, for the control points of results
+  /// How the legs were traced; the control points of results are traced the same way.
+  GeodesicMethod Method = GeodesicMethod::Bounded;
 };
 
 /// Surface Arrangement -> labeling and selections: the arrangement with what it was computed
@@ -75,7 +76,8 @@ struct ArrangementResult
   vtkSurfaceInput Surface;
   std::vector<TracedCurve> Curves;
   std::vector<CurveSource> Sources; ///< empty when the curves came without control points
-  bool ExactGeodesics = true;
+  /// The traced curves' method (Bounded for curves read from arrays), for the control points.
+  GeodesicMethod Method = GeodesicMethod::Bounded;
   boolsurf::Arrangement Arrangement;
   /// What the refined surface's VTK arrays read in place besides the arrangement: the cell
   /// offsets 0, 3, 6, ... and each point's TriangleId and Barycentric (ArrangementMemory).
@@ -118,7 +120,8 @@ class ResultPathSolver
 public:
   ResultPathSolver();
   ~ResultPathSolver();
-  GeodesicPathSolver& Get(const std::shared_ptr<const TriangleMesh>& mesh, bool exactGeodesics);
+  /// The solver on `mesh`, set to `method` (the method the result's curves were traced with).
+  GeodesicPathSolver& Get(const std::shared_ptr<const TriangleMesh>& mesh, GeodesicMethod method);
 
 private:
   std::shared_ptr<const TriangleMesh> Mesh;

@@ -203,6 +203,11 @@ const std::vector<TracedCurve>* vtkSurfaceCache::GetShortenedGenerators()
   }
   if (!this->HasShortGenerators)
   {
+    // Always with the default method, whatever the tracer was last used for: the loops are
+    // computed once per surface and must not depend on which filter asked first.
+    GeodesicPathSolver& solver = this->GetTracer().GetPathSolver();
+    const GeodesicMethod method = solver.GetMethod();
+    solver.SetMethod(GeodesicMethod::Bounded);
     this->ShortGenerators.assign(basis->GetNumberOfGenerators(), TracedCurve());
     for (int g = 0; g < basis->GetNumberOfGenerators(); ++g)
     {
@@ -212,6 +217,7 @@ const std::vector<TracedCurve>* vtkSurfaceCache::GetShortenedGenerators()
         this->ShortGenerators[g] = TracedCurve();
       }
     }
+    solver.SetMethod(method);
     this->HasShortGenerators = true;
   }
   return &this->ShortGenerators;

@@ -251,7 +251,7 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
     notes);
   CurveTracer& tracer = cache.GetTracer();
   tracer.SetResolution(options.Resolution);
-  tracer.GetPathSolver().SetUseExactStrip(options.ExactGeodesics);
+  tracer.GetPathSolver().SetMethod(options.Method);
   tracer.StartPass(); // curves of the update before the last one are forgotten
   std::vector<CurveTrace> traces(controls.size());
   for (size_t c = 0; c < controls.size(); ++c)

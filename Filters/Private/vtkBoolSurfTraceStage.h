@@ -20,9 +20,8 @@ struct TraceOptions
 {
   int Resolution = 4;
   double ProjectionTolerance = 0.01; ///< fraction of the surface's bounding-box diagonal
-  /// Geodesic legs are the exact shortest paths (window propagation; off: locally shortest,
-  /// the straightened shortest edge path, which is faster on long legs of large meshes).
-  bool ExactGeodesics = true;
+  /// How each geodesic leg is computed (see GeodesicMethod in Geodesic/GeodesicPath.h).
+  GeodesicMethod Method = GeodesicMethod::Bounded;
 };
 
 /// Traces every curve of `controlCurves` on the cached surface. On success fills `traced`

@@ -394,7 +394,7 @@ TEST(BoundarySampledCurvesFilter, OneStepTorusMeridians)
   // turn. Exact shortest legs between ring vertices leave the ring on the saddle-shaped inner
   // side, where mirror-image paths tie and either may be taken; locally shortest legs stay
   // symmetric.
-  f->SetExactGeodesics(false);
+  f->SetGeodesicMethodToLocallyShortest();
   // Samples on the outer equator of each meridian, pointing to y > 0: the band u in (0, pi),
   // half of the torus (the half turn around z maps the mesh onto itself and swaps the bands).
   f->SetInputData(
