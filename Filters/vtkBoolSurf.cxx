@@ -456,6 +456,7 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
   }
   stageTimes->InsertNextTypedTuple(times.data());
   fd->AddArray(stageTimes);
+  boolsurf::AddSiteGraphField(*this->GetSurfaceCache().GetCurrent().Mesh, fd);
 }
 
 //------------------------------------------------------------------------------

@@ -71,6 +71,7 @@ bool vtkBoolSurfTraceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
     error = "Cannot trace the curves:" + boolsurf::JoinLines(this->Internal->Problems);
     return false;
   }
+  boolsurf::AddSiteGraphField(*this->GetSurfaceCache().GetCurrent().Mesh, output->GetFieldData());
   // The traced curves in Core form for Surface Arrangement (see vtkBoolSurfStageHandoff.h).
   result->Surface = boolsurf::SurfaceIdentity(surfaceInput);
   result->Method = options.Method;

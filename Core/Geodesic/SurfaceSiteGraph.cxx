@@ -1,6 +1,7 @@
 #include "Geodesic/SurfaceSiteGraph.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -58,6 +59,8 @@ SurfaceSiteGraph::SurfaceSiteGraph(const TriangleMesh& mesh, int hops)
   this->BuildArcs(offsets, neighbors);
   this->BuildSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  static std::atomic<std::uint64_t> builds{ 0 };
+  this->BuildNumber = ++builds;
 }
 
 //------------------------------------------------------------------------------
@@ -68,13 +71,27 @@ int SurfaceSiteGraph::DefaultHops(int vertices)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// Weak references: a graph lives as long as a solver on its mesh holds it.
+std::mutex registryLock;
+std::map<std::uint64_t, std::weak_ptr<const SurfaceSiteGraph>> registry;
+} // namespace
+
+std::shared_ptr<const SurfaceSiteGraph> SurfaceSiteGraph::Find(const TriangleMesh& mesh)
+{
+  std::lock_guard<std::mutex> guard(registryLock);
+  auto it = registry.find(mesh.GetSerial());
+  std::shared_ptr<const SurfaceSiteGraph> graph =
+    it == registry.end() ? nullptr : it->second.lock();
+  return graph && &graph->Mesh == &mesh ? graph : nullptr;
+}
+
 std::shared_ptr<const SurfaceSiteGraph> SurfaceSiteGraph::Get(const TriangleMesh& mesh)
 {
-  // Weak references: the graph lives as long as a solver on its mesh holds it. Building
-  // happens under the lock, so concurrent first requests build once.
-  static std::mutex lock;
-  static std::map<std::uint64_t, std::weak_ptr<const SurfaceSiteGraph>> graphs;
-  std::lock_guard<std::mutex> guard(lock);
+  // Building happens under the lock, so concurrent first requests build once.
+  std::lock_guard<std::mutex> guard(registryLock);
+  auto& graphs = registry;
   for (auto it = graphs.begin(); it != graphs.end();)
   {
     it = it->second.expired() ? graphs.erase(it) : std::next(it);

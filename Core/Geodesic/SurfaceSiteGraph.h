@@ -55,6 +55,8 @@ public:
   /// The graph of `mesh`, shared by every caller on the same mesh (keyed by the mesh's serial
   /// number, held as long as one caller holds it) and built on first request.
   static std::shared_ptr<const SurfaceSiteGraph> Get(const TriangleMesh& mesh);
+  /// The graph of `mesh` if one is held, else null (never builds).
+  static std::shared_ptr<const SurfaceSiteGraph> Find(const TriangleMesh& mesh);
 
   /// Per-caller search state (a graph is shared read-only between threads).
   struct Scratch
@@ -96,6 +98,8 @@ public:
   double GetBuildSeconds() const { return this->BuildSeconds; }
   std::size_t GetMemory() const;
   std::uint64_t GetMeshSerial() const { return this->MeshSerial; }
+  /// Distinct for every graph built in this process (1, 2, ...): tells a rebuilt graph apart.
+  std::uint64_t GetBuildNumber() const { return this->BuildNumber; }
 
 private:
   void ChooseSites(const std::vector<int>& offsets, const std::vector<int>& neighbors, int hops);
@@ -115,6 +119,7 @@ private:
   std::vector<double> ArcLength;
   std::vector<int> ArcFrom, ArcTo; // the mesh edge (u in the source cell, v in the target's)
   double BuildSeconds = 0;
+  std::uint64_t BuildNumber = 0;
 };
 
 } // namespace boolsurf

@@ -225,6 +225,29 @@ std::string DescribeCurvePoint(const std::vector<TracedCurve>& curves,
 }
 
 //------------------------------------------------------------------------------
+void AddSiteGraphField(const TriangleMesh& mesh, vtkFieldData* fieldData)
+{
+  const std::shared_ptr<const SurfaceSiteGraph> graph = SurfaceSiteGraph::Find(mesh);
+  if (!graph)
+  {
+    return;
+  }
+  vtkNew<vtkDoubleArray> field;
+  field->SetName("GeodesicSiteGraph");
+  field->SetNumberOfComponents(4);
+  field->SetComponentName(0, "Sites");
+  field->SetComponentName(1, "BuildMilliseconds");
+  field->SetComponentName(2, "MemoryMB");
+  field->SetComponentName(3, "BuildNumber");
+  const double values[4] = { static_cast<double>(graph->GetNumberOfSites()),
+    1000.0 * graph->GetBuildSeconds(),
+    graph->GetMemory() / 1048576.0,
+    static_cast<double>(graph->GetBuildNumber()) };
+  field->InsertNextTuple(values);
+  fieldData->AddArray(field);
+}
+
+//------------------------------------------------------------------------------
 bool TraceControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* controlCurves,
   const TraceOptions& options,

@@ -11,6 +11,7 @@
 #include <vector>
 
 class vtkAlgorithm;
+class vtkFieldData;
 class vtkPolyData;
 
 namespace boolsurf
@@ -39,6 +40,12 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes,
   std::vector<CurveSource>* sources = nullptr);
+
+/// Field array "GeodesicSiteGraph" (components Sites, BuildMilliseconds, MemoryMB,
+/// BuildNumber): the per-surface structure of the Bounded geodesic method, once a far leg has
+/// built it for `mesh`; nothing before. BuildNumber changes only when the graph is rebuilt
+/// (the surface changed), never when only the curves do.
+void AddSiteGraphField(const TriangleMesh& mesh, vtkFieldData* fieldData);
 
 /// How the user knows traced point `point` of `curves[curve]`: "curve 3 (input CurveId 7) of
 /// shape 1, between its control points 4 and 5 (traced point 21)", from the control points and

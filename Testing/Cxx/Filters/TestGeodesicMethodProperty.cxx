@@ -428,3 +428,55 @@ TEST(GeodesicMethodProperty, ResolveRunsWithEachMethod)
     EXPECT_EQ(action->GetTuple1(0) + action->GetTuple1(1), 2) << "kept (0) + duplicated (2)";
   }
 }
+
+// Bounded: the per-surface site graph of far legs is reported in the output's field data,
+// built once per surface: moving the curves keeps it, a new surface gets a new one.
+TEST(GeodesicMethodProperty, SiteGraphIsBuiltOncePerSurface)
+{
+  auto graphOf = [](vtkBoolSurfTraceCurves* trace) -> std::array<double, 4>
+  {
+    vtkDataArray* field = trace->GetOutput()->GetFieldData()->GetArray("GeodesicSiteGraph");
+    if (!field || field->GetNumberOfComponents() != 4)
+    {
+      return { -1, -1, -1, -1 };
+    }
+    return { field->GetComponent(0, 0),
+      field->GetComponent(0, 1),
+      field->GetComponent(0, 2),
+      field->GetComponent(0, 3) };
+  };
+  // A torus too large for the exact search's budget between opposite points (0.4 apart
+  // through the hole, 2.7 around the tube) and a second one of another resolution.
+  vtkSmartPointer<vtkPolyData> torus =
+    testutils::ToPolyData(boolsurf::MakeTorus(1.0, 0.35, 400, 160));
+  vtkSmartPointer<vtkPolyData> other =
+    testutils::ToPolyData(boolsurf::MakeTorus(1.0, 0.35, 360, 150));
+  auto farLeg = [](double z)
+  {
+    testutils::ControlPolygon leg;
+    leg.Points = { Point{ 1.35, 0.0, z }, Point{ -1.35, 0.0, z } };
+    leg.Closed = false;
+    return leg;
+  };
+  vtkNew<vtkBoolSurfTraceCurves> trace;
+  trace->SetInputData(0, torus);
+  trace->SetInputData(1, testutils::ToCurves({ farLeg(0.0) }));
+  trace->Update();
+  ASSERT_EQ(testutils::ErrorsOf(trace), "");
+  const std::array<double, 4> first = graphOf(trace);
+  ASSERT_GT(first[0], 100) << "no site graph reported after a far leg";
+  EXPECT_GT(first[2], 0.0);
+  // Only the curves change: the same graph.
+  trace->SetInputData(1, testutils::ToCurves({ farLeg(0.1), farLeg(-0.1) }));
+  trace->Update();
+  ASSERT_EQ(testutils::ErrorsOf(trace), "");
+  EXPECT_EQ(graphOf(trace)[3], first[3]) << "the graph was rebuilt for new curves";
+  // Another surface: another graph.
+  trace->SetInputData(0, other);
+  trace->Update();
+  ASSERT_EQ(testutils::ErrorsOf(trace), "");
+  const std::array<double, 4> second = graphOf(trace);
+  EXPECT_GT(second[0], 100);
+  EXPECT_NE(second[3], first[3]) << "the new surface kept the old surface's graph";
+  EXPECT_NE(second[0], first[0]);
+}
