@@ -93,7 +93,7 @@ void ExactGeodesicSearch::Prepare()
   }
   for (int v = 0; v < nv; ++v)
   {
-    if (angle[v] >= 2.0 * Pi - SaddleTolerance)
+    if (angle[v] > 2.0 * Pi + SaddleTolerance)
     {
       this->PseudoSource[v] = 1;
     }

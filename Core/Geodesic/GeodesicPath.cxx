@@ -181,6 +181,32 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
       ") lie on different connected components of the surface: no path joins them");
   }
 
+  // Legs that cost real work are shared through the surface's cache (see GeodesicPathCache).
+  // The locally shortest method is not cached: its ties depend on whether the edge search's
+  // landmark table exists yet.
+  const bool cached = this->Method != GeodesicMethod::LocallyShortest;
+  const GeodesicPathCache::Settings settings{ static_cast<int>(this->Method) * 2 +
+      (this->UseEdgePathStrip ? 1 : 0),
+    this->ExactWindows,
+    this->BoundedWindows,
+    this->RouteTolerance };
+  if (cached)
+  {
+    if (!this->Cache)
+    {
+      this->Cache = GeodesicPathCache::Get(mesh);
+    }
+    if (this->Cache->Find(start, end, settings, this->CachedLeg))
+    {
+      path.Points.swap(this->CachedLeg.Points);
+      path.Length = this->CachedLeg.Length;
+      this->Statistics.Exact = this->CachedLeg.Exact;
+      this->Statistics.Routed = this->CachedLeg.Routed;
+      this->Statistics.FromCache = true;
+      return TraceStatus::Success();
+    }
+  }
+
   const int common = SharedTriangle(mesh, start, end);
   bool haveStrip = false;
   if (common >= 0)
@@ -235,6 +261,15 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   if (this->Statistics.Routed && !this->AllSpheres())
   {
     this->TryAlternativeRoute(start, end, path);
+  }
+  if (cached &&
+    (this->Statistics.Windows >= GeodesicPathCache::MinimumWindows || this->Statistics.Routed))
+  {
+    this->CachedLeg.Points = path.Points;
+    this->CachedLeg.Length = path.Length;
+    this->CachedLeg.Exact = this->Statistics.Exact;
+    this->CachedLeg.Routed = this->Statistics.Routed;
+    this->Cache->Store(start, end, settings, this->CachedLeg);
   }
   return TraceStatus::Success();
 }

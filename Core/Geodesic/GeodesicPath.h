@@ -31,6 +31,7 @@
 #include "Geodesic/DualGraphSearch.h"
 #include "Geodesic/EdgeGraphSearch.h"
 #include "Geodesic/ExactGeodesicSearch.h"
+#include "Geodesic/GeodesicPathCache.h"
 #include "Geodesic/SurfaceSiteGraph.h"
 #include "Mesh/SurfacePoint.h"
 
@@ -101,6 +102,9 @@ struct GeodesicPathStatistics
   double RouteLength = -1;
   /// ... and from this many other routes (homotopy classes) too, the shortest result kept.
   int AlternativeRoutes = 0;
+  /// The leg came from the surface's GeodesicPathCache (computed before by a solver on the
+  /// same surface with the same settings); the work counters above are then zero.
+  bool FromCache = false;
 };
 
 /// Computes geodesic paths on one mesh. Holds the reusable search state (mesh-sized arrays
@@ -165,6 +169,8 @@ public:
   /// homotopy class) is straightened too when its site-graph length is within this fraction
   /// of the first route's (default 0.15; 0 disables).
   void SetRouteTolerance(double f) { this->RouteTolerance = f; }
+  /// The surface's cache of costly legs (null before the first Compute).
+  const GeodesicPathCache* GetPathCache() const { return this->Cache.get(); }
   /// The surface's site graph (built on the first routed leg; null before).
   const SurfaceSiteGraph* GetSiteGraph() const { return this->SiteGraph.get(); }
 
@@ -227,6 +233,8 @@ private:
   EdgeGraphSearch EdgeSearch;
   ExactGeodesicSearch Exact;
   std::shared_ptr<const SurfaceSiteGraph> SiteGraph;
+  std::shared_ptr<GeodesicPathCache> Cache;
+  GeodesicPathCache::Leg CachedLeg;
   SurfaceSiteGraph::Scratch SiteScratch;
   std::vector<char> AvoidSites;
   int ExactWindows = 1 << 20;

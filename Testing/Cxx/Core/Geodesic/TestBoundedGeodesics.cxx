@@ -238,3 +238,45 @@ TEST(BoundedGeodesics, ShortLegsAreExact)
   }
   EXPECT_EQ(tested, 40);
 }
+
+// Costly legs are shared through the surface's cache: a second solver on the same surface
+// with the same settings gets the first one's legs back, bit for bit, without searching; other
+// settings or another surface do not.
+TEST(GeodesicPathCache, CostlyLegsAreSharedPerSurfaceAndSettings)
+{
+  const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 112, 44));
+  GeodesicPathSolver first(mesh), second(mesh), other(mesh);
+  other.SetBoundedWindows(1 << 12);
+  std::mt19937 rng(31);
+  GeodesicPath a, b, c;
+  int shared = 0;
+  for (int i = 0; i < 8; ++i)
+  {
+    const CanonicalPoint p = FacePoint(mesh, rng);
+    const CanonicalPoint q = FarPoint(mesh, p, rng);
+    ASSERT_TRUE(first.Compute(p, q, a).Ok);
+    EXPECT_FALSE(first.GetLastStatistics().FromCache);
+    const bool costly = first.GetLastStatistics().Windows >= GeodesicPathCache::MinimumWindows ||
+      first.GetLastStatistics().Routed;
+    ASSERT_TRUE(second.Compute(p, q, b).Ok);
+    EXPECT_EQ(second.GetLastStatistics().FromCache, costly);
+    EXPECT_EQ(b.Points, a.Points);
+    EXPECT_EQ(b.Length, a.Length);
+    EXPECT_EQ(second.GetLastStatistics().Exact, first.GetLastStatistics().Exact);
+    shared += costly;
+    ASSERT_TRUE(other.Compute(p, q, c).Ok);
+    EXPECT_FALSE(other.GetLastStatistics().FromCache) << "another budget took a cached leg";
+  }
+  EXPECT_GE(shared, 6);
+  ASSERT_NE(first.GetPathCache(), nullptr);
+  EXPECT_EQ(first.GetPathCache(), second.GetPathCache());
+  EXPECT_GE(first.GetPathCache()->GetHits(), static_cast<std::size_t>(shared));
+
+  const TriangleMesh copy = ToMesh(MakeTorus(1.0, 0.35, 112, 44));
+  GeodesicPathSolver elsewhere(copy);
+  std::mt19937 again(31);
+  const CanonicalPoint p = FacePoint(copy, again);
+  ASSERT_TRUE(elsewhere.Compute(p, FarPoint(copy, p, again), c).Ok);
+  EXPECT_FALSE(elsewhere.GetLastStatistics().FromCache) << "another surface shares the cache";
+  EXPECT_NE(elsewhere.GetPathCache(), first.GetPathCache());
+}
