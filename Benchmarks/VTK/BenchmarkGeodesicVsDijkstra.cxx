@@ -126,6 +126,9 @@ LoadedMesh& Load(const std::string& name)
   }
   m.Mesh = std::make_unique<TriangleMesh>(std::move(positions), std::move(triangles));
   m.Solver = std::make_unique<GeodesicPathSolver>(*m.Mesh);
+  // Exact: the comparison is the shortest path against the shortest edge path (a routed
+  // Bounded leg may be longer than the shortest edge path).
+  m.Solver->SetMethod(GeodesicMethod::Exact);
   m.SolverSetupSeconds = Seconds(setup0, Clock::now());
   // The landmark table of the edge-path search (built lazily otherwise), timed apart.
   const auto landmarks0 = Clock::now();
