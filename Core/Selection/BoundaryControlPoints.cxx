@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <unordered_map>
 
 namespace boolsurf
@@ -512,10 +513,16 @@ TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   const std::vector<BoundaryPolyline>& loops,
-  std::vector<ControlSubCurve>& out)
+  std::vector<ControlSubCurve>& out,
+  BezierPieces* shared)
 {
   // Only the boundary's patches are computed (a Bezier piece costs geodesic splits).
-  BezierPieces bezier(arrangement, sources);
+  std::unique_ptr<BezierPieces> local;
+  if (!shared)
+  {
+    local = std::make_unique<BezierPieces>(arrangement, sources);
+  }
+  BezierPieces& bezier = shared ? *shared : *local;
   std::unordered_map<int, ControlSubCurve> pieces;
   for (const BoundaryPolyline& loop : loops)
   {
@@ -547,10 +554,16 @@ TraceStatus ClippedControlCurves(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   const std::vector<char>& selected,
-  std::vector<ControlSubCurve>& out)
+  std::vector<ControlSubCurve>& out,
+  BezierPieces* shared)
 {
   std::vector<PatchInfo> info(arrangement.Patches.size());
-  BezierPieces bezier(arrangement, sources);
+  std::unique_ptr<BezierPieces> local;
+  if (!shared)
+  {
+    local = std::make_unique<BezierPieces>(arrangement, sources);
+  }
+  BezierPieces& bezier = shared ? *shared : *local;
   std::unordered_map<int, ControlSubCurve> pieces;
   for (std::size_t p = 0; p < info.size(); ++p)
   {

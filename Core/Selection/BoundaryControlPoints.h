@@ -142,21 +142,25 @@ void AssembleClippedPieces(const std::function<const ControlSubCurve*(int)>& pat
   std::vector<ControlSubCurve>& out);
 
 /// Sub-curves of the boundary loops `loops` (from ExtractRegionBoundary on the arrangement's
-/// patches), each oriented with the region on its left; Group is the loop index.
+/// patches), each oriented with the region on its left; Group is the loop index. `pieces`
+/// (may be null: a local one is used) holds the Bezier segments already cut: pass the same one
+/// to ClippedControlCurves on the same arrangement so no segment is split twice.
 TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   const std::vector<BoundaryPolyline>& loops,
-  std::vector<ControlSubCurve>& out);
+  std::vector<ControlSubCurve>& out,
+  BezierPieces* pieces = nullptr);
 
 /// The pieces of open curves inside the cells with selected[cell] != 0 (a piece along the
 /// region's boundary counts as inside), consecutive patches joined; Group numbers the pieces
-/// of each curve in curve order.
+/// of each curve in curve order. `pieces` as for BoundaryControlCurves.
 TraceStatus ClippedControlCurves(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   const std::vector<char>& selected,
-  std::vector<ControlSubCurve>& out);
+  std::vector<ControlSubCurve>& out,
+  BezierPieces* pieces = nullptr);
 
 } // namespace boolsurf
 

@@ -58,11 +58,13 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
   const Clock::time_point written = Clock::now();
   if (solver)
   {
-    TraceStatus status = BoundaryControlCurves(*solver, arr, sources, loops, buffers.SubCurves);
+    BezierPieces bezier(arr, sources); // each Bezier segment cut once for both outputs
+    TraceStatus status =
+      BoundaryControlCurves(*solver, arr, sources, loops, buffers.SubCurves, &bezier);
     if (status)
     {
       WriteControlSubCurves(buffers.SubCurves, "BoundaryLoop", true, controls);
-      status = ClippedControlCurves(*solver, arr, sources, selected, buffers.SubCurves);
+      status = ClippedControlCurves(*solver, arr, sources, selected, buffers.SubCurves, &bezier);
     }
     if (!status)
     {
