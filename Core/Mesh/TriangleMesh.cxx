@@ -40,14 +40,6 @@ Vec3 TriangleMesh::Evaluate(int t, double u, double v) const
 }
 
 //------------------------------------------------------------------------------
-std::array<int, 2> TriangleMesh::GetEdgeVertices(int e) const
-{
-  const int h = this->EdgeHalfEdge[e];
-  const Triangle& tri = this->Triangles[h / 3];
-  return { tri[h % 3], tri[(h % 3 + 1) % 3] };
-}
-
-//------------------------------------------------------------------------------
 // Counting sort of corners by vertex: linear, and corners come out sorted by corner id,
 // which keeps every later traversal deterministic.
 void TriangleMesh::BuildVertexCorners()

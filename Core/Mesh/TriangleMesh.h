@@ -105,7 +105,13 @@ public:
   /// GetEdgeVertices(e) follows that half-edge's direction.
   int GetEdgeId(int t, int k) const { return this->HalfEdgeEdge[3 * t + k]; }
   int GetEdgeHalfEdge(int e) const { return this->EdgeHalfEdge[e]; }
-  std::array<int, 2> GetEdgeVertices(int e) const;
+  std::array<int, 2> GetEdgeVertices(int e) const
+  {
+    // Inline: the exact geodesic search calls it for every window it creates.
+    const int h = this->EdgeHalfEdge[e];
+    const Triangle& tri = this->Triangles[h / 3];
+    return { tri[h % 3], tri[(h % 3 + 1) % 3] };
+  }
   /// Number of triangles on edge e (1 on the boundary, 2 inside, more if non-manifold).
   int GetEdgeValence(int e) const { return this->EdgeValence[e]; }
   bool IsBoundaryEdge(int e) const { return this->EdgeValence[e] == 1; }
