@@ -319,16 +319,10 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
     }
     if (!given)
     {
-      double weights[3];
-      vtkTriangle::BarycentricCoords(closest, p[0], p[1], p[2], weights);
-      // The closest point is on the triangle: clamp rounding, then renormalise.
-      for (double& w : weights)
-      {
-        w = std::max(0.0, w);
-      }
-      const double sum = weights[0] + weights[1] + weights[2];
-      u = sum > 0 ? weights[1] / sum : 0;
-      v = sum > 0 ? weights[2] / sum : 0;
+      // In 3D: vtkTriangle::BarycentricCoords reads only x and y, so on a triangle standing
+      // upright (a wall, a cylinder's side) it had no solution or the wrong one.
+      auto vec = [](const double* q) { return boolsurf::Vec3{ q[0], q[1], q[2] }; };
+      boolsurf::BarycentricInTriangle(vec(p[0]), vec(p[1]), vec(p[2]), vec(closest), u, v);
     }
     double x[3];
     for (int k = 0; k < 3; ++k)

@@ -11,16 +11,32 @@ namespace boolsurf
 //------------------------------------------------------------------------------
 SurfacePoint PointInTriangle(const TriangleMesh& mesh, int t, const Vec3& x)
 {
-  const Vec3 a = mesh.GetCornerPosition(t, 0);
-  const Vec3 e1 = mesh.GetCornerPosition(t, 1) - a, e2 = mesh.GetCornerPosition(t, 2) - a;
+  SurfacePoint p{ t, 0.0, 0.0 };
+  BarycentricInTriangle(mesh.GetCornerPosition(t, 0),
+    mesh.GetCornerPosition(t, 1),
+    mesh.GetCornerPosition(t, 2),
+    x,
+    p.U,
+    p.V);
+  return p;
+}
+
+//------------------------------------------------------------------------------
+void BarycentricInTriangle(const Vec3& a,
+  const Vec3& b,
+  const Vec3& c,
+  const Vec3& x,
+  double& u,
+  double& v)
+{
+  const Vec3 e1 = b - a, e2 = c - a;
   const Vec3 d = x - a;
   const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
   const double b1 = Dot(d, e1), b2 = Dot(d, e2);
   const double det = d11 * d22 - d12 * d12;
-  double u = det != 0 ? (d22 * b1 - d12 * b2) / det : 0.0;
-  double v = det != 0 ? (d11 * b2 - d12 * b1) / det : 0.0;
+  u = det != 0 ? (d22 * b1 - d12 * b2) / det : 0.0;
+  v = det != 0 ? (d11 * b2 - d12 * b1) / det : 0.0;
   ClampBarycentric(u, v);
-  return SurfacePoint{ t, u, v };
 }
 
 //------------------------------------------------------------------------------

@@ -31,6 +31,15 @@ struct SurfacePoint
 /// into the triangle (ClampBarycentric). A degenerate triangle gives its corner 0.
 SurfacePoint PointInTriangle(const TriangleMesh& mesh, int t, const Vec3& x);
 
+/// The same for a triangle given by its corners a, b, c (in 3D, any orientation): the weights
+/// (u, v) of b and c.
+void BarycentricInTriangle(const Vec3& a,
+  const Vec3& b,
+  const Vec3& c,
+  const Vec3& x,
+  double& u,
+  double& v);
+
 /// (u, v) moved into the triangle: negative weights to 0, then scaled so u + v <= 1. For values a
 /// rounding error outside it (callers decide how far outside is an error).
 inline void ClampBarycentric(double& u, double& v)

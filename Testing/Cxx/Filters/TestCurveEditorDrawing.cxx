@@ -4,11 +4,15 @@
 #include "pqBoolSurfDrawing.h"
 
 #include "FilterTestUtils.h"
+#include "Mesh/TriangleMesh.h"
 #include "vtkBoolSurfSurfaceCurves.h"
 
+#include <vtkDataArray.h>
 #include <vtkPointData.h>
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -138,5 +142,61 @@ TEST(CurveEditorDrawing, MarkersOnTheFarSideOfAClosedSurfaceAreHidden)
     open->GetOutput()->GetPoint(i, p.Position.data());
     none->GetTuple(i, p.Normal.data());
     EXPECT_TRUE(pqBoolSurfDrawing::FacesEye(p, { { 0, 0, -5 } })) << "seen from below, point " << i;
+  }
+}
+
+// Points placed by position are snapped in 3D: on the upright facets of a prism (triangles
+// with no extent in a coordinate plane's normal direction) the snapped point is the point
+// given, and its triangle and weights give it back.
+TEST(CurveEditorDrawing, SnapsPointsOnUprightTriangles)
+{
+  const boolsurf::MeshData prism = boolsurf::MakeOpenCylinder(1.0, 3.0, 48, 16);
+  vtkSmartPointer<vtkPolyData> surface = testutils::ToPolyData(prism);
+  vtkNew<vtkBoolSurfSurfaceCurves> drawing;
+  drawing->SetInputData(surface);
+  const int triangles[4] = { 5, 200, 777, 1500 };
+  const double weights[4][2] = { { 0.2, 0.3 }, { 0.6, 0.1 }, { 0.25, 0.25 }, { 0.05, 0.9 } };
+  std::vector<std::array<double, 3>> given;
+  drawing->SetNumberOfPoints(4);
+  for (int i = 0; i < 4; ++i)
+  {
+    const boolsurf::Triangle& t = prism.Triangles[triangles[i]];
+    std::array<double, 3> x{};
+    const double w[3] = { 1 - weights[i][0] - weights[i][1], weights[i][0], weights[i][1] };
+    for (int k = 0; k < 3; ++k)
+    {
+      x[0] += w[k] * prism.Positions[t[k]].x;
+      x[1] += w[k] * prism.Positions[t[k]].y;
+      x[2] += w[k] * prism.Positions[t[k]].z;
+    }
+    given.push_back(x);
+    drawing->SetPoint(i, x[0], x[1], x[2]);
+  }
+  drawing->SetNumberOfCurveSizes(1);
+  drawing->SetCurveSize(0, 4);
+  drawing->Update();
+  ASSERT_EQ(testutils::ErrorsOf(drawing), "");
+  vtkPolyData* out = drawing->GetOutput(0);
+  ASSERT_EQ(out->GetNumberOfPoints(), 4);
+  vtkDataArray* ids = out->GetPointData()->GetArray("TriangleId");
+  vtkDataArray* bary = out->GetPointData()->GetArray("Barycentric");
+  ASSERT_NE(ids, nullptr);
+  ASSERT_NE(bary, nullptr);
+  for (int i = 0; i < 4; ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_NEAR(x[k], given[i][k], 1e-12) << "point " << i;
+    }
+    // The triangle and weights written give the point back.
+    const boolsurf::Triangle& t = prism.Triangles[static_cast<int>(ids->GetComponent(i, 0))];
+    const double u = bary->GetComponent(i, 0), v = bary->GetComponent(i, 1);
+    const boolsurf::Vec3 back =
+      (1 - u - v) * prism.Positions[t[0]] + u * prism.Positions[t[1]] + v * prism.Positions[t[2]];
+    EXPECT_NEAR(back.x, given[i][0], 1e-12) << "point " << i;
+    EXPECT_NEAR(back.y, given[i][1], 1e-12) << "point " << i;
+    EXPECT_NEAR(back.z, given[i][2], 1e-12) << "point " << i;
   }
 }
