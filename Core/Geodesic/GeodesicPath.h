@@ -1,10 +1,13 @@
 // Shortest geodesic path between two surface points.
 //
-// By default the strip comes from ExactGeodesicSearch (window propagation): the triangles
-// the exact polyhedral shortest path crosses, so the funnel below returns the shortest path
-// itself, not only a locally shortest one. Without it (SetUseExactStrip(false), or if that
-// search gives up), three stages, after Lee-Preparata and the strip straightening used by
-// BoolSurf/b-Surf:
+// The strip of triangles the path crosses comes, by method (SetMethod):
+// - Exact: from ExactGeodesicSearch (window propagation): the triangles the exact polyhedral
+//   shortest path crosses, so the funnel below returns the shortest path itself, not only a
+//   locally shortest one;
+// - Bounded (default): the same while the window search fits a small budget; past it, from
+//   the route of the surface's SurfaceSiteGraph, straightened below as in stage 3;
+// - LocallyShortest (or an exact search that gives up): three stages, after Lee-Preparata and
+//   the strip straightening used by BoolSurf/b-Surf:
 //  1. EdgeGraphSearch finds the shortest path along mesh edges (start -> corners of its
 //     triangle -> ... -> corners of the end's triangle -> end; exact bidirectional A*). The
 //     initial strip is the chain of triangles along one side of it, turning around each path
