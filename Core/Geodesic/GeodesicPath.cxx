@@ -262,6 +262,10 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   {
     this->TryAlternativeRoute(start, end, path);
   }
+  if (this->Statistics.Routed && mesh.GetNumberOfVertices() <= MaximumVerticesForEdgeCandidate)
+  {
+    this->TryEdgePathCandidate(start, end, path);
+  }
   if (cached &&
     (this->Statistics.Windows >= GeodesicPathCache::MinimumWindows || this->Statistics.Routed))
   {
@@ -400,6 +404,52 @@ bool GeodesicPathSolver::ExceedsBoundedWindows(const CanonicalPoint& start,
   const double ratio =
     Distance(PositionOf(mesh, start), PositionOf(mesh, end)) / this->MeanEdgeLength;
   return 1.6 * ratio * ratio > 2.0 * this->BoundedWindows;
+}
+
+//------------------------------------------------------------------------------
+// A routed leg and the straightened shortest edge path often reach different local geodesics
+// (one on each side of a bump), and either may be the shorter: on the shared scans keeping the
+// shorter of the two took the far pairs equal to the exact ones from 17 to 29 of 40 on kitten
+// and the worst excess from 3.5 % to 0.9 %. The edge search costs O(mesh) for far legs, so
+// only meshes up to MaximumVerticesForEdgeCandidate vertices take it (a few milliseconds);
+// it runs without landmarks, whose lazily built table would make ties depend on history.
+void GeodesicPathSolver::TryEdgePathCandidate(const CanonicalPoint& start,
+  const CanonicalPoint& end,
+  GeodesicPath& path)
+{
+  const TriangleMesh& mesh = this->GetMesh();
+  if (!this->PlainEdgeSearch)
+  {
+    this->PlainEdgeSearch = std::make_unique<EdgeGraphSearch>(mesh);
+    this->PlainEdgeSearch->SetNumberOfLandmarks(0);
+  }
+  this->CollectTerminals(start, end);
+  const GeodesicPathStatistics kept = this->Statistics;
+  const double length = this->PlainEdgeSearch->FindPath(
+    this->Sources, PositionOf(mesh, start), this->Targets, PositionOf(mesh, end), this->VertexPath);
+  if (length < 0.0 || !this->StripAlongVertexPath(end) || !this->Straighten(start, end))
+  {
+    this->Statistics = kept;
+    return;
+  }
+  this->Alternative.clear();
+  for (const PathPoint& p : this->Points)
+  {
+    this->Alternative.push_back(p.Point);
+  }
+  const double straightened = PolylineLength(mesh, this->Alternative);
+  const int rounds = this->Statistics.StraighteningRounds;
+  const int strip = static_cast<int>(this->Strip.size());
+  this->Statistics = kept;
+  this->Statistics.AlternativeRoutes += 1;
+  this->Statistics.StraighteningRounds = rounds;
+  this->Statistics.EdgePathLength = length;
+  if (straightened < path.Length)
+  {
+    path.Points.swap(this->Alternative);
+    path.Length = straightened;
+    this->Statistics.StripTriangles = strip;
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -103,7 +103,8 @@ struct GeodesicPathStatistics
   /// site-graph route (RouteLength: that route's length) ...
   bool Routed = false;
   double RouteLength = -1;
-  /// ... and from this many other routes (homotopy classes) too, the shortest result kept.
+  /// ... and from this many other candidates too (a second route round a handle, the
+  /// straightened shortest edge path on meshes up to 100k vertices), the shortest kept.
   int AlternativeRoutes = 0;
   /// The leg came from the surface's GeodesicPathCache (computed before by a solver on the
   /// same surface with the same settings); the work counters above are then zero.
@@ -212,6 +213,11 @@ private:
   bool Straighten(const CanonicalPoint& start, const CanonicalPoint& end);
   /// Bounded method, after a routed leg: a second route round the middle of the first,
   /// straightened too when nearly as long; `path` becomes the shorter.
+  /// Bounded method, after a routed leg on a mesh of at most MaximumVerticesForEdgeCandidate
+  /// vertices: the straightened shortest edge path too; `path` becomes the shorter.
+  void TryEdgePathCandidate(const CanonicalPoint& start,
+    const CanonicalPoint& end,
+    GeodesicPath& path);
   void TryAlternativeRoute(const CanonicalPoint& start,
     const CanonicalPoint& end,
     GeodesicPath& path);
@@ -236,6 +242,8 @@ private:
   EdgeGraphSearch EdgeSearch;
   ExactGeodesicSearch Exact;
   std::shared_ptr<const SurfaceSiteGraph> SiteGraph;
+  std::unique_ptr<EdgeGraphSearch> PlainEdgeSearch; // no landmarks: see TryEdgePathCandidate
+  static constexpr int MaximumVerticesForEdgeCandidate = 100000;
   std::shared_ptr<GeodesicPathCache> Cache;
   GeodesicPathCache::Leg CachedLeg;
   SurfaceSiteGraph::Scratch SiteScratch;
