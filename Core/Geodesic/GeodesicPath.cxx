@@ -258,7 +258,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
     path.Points.push_back(p.Point);
   }
   path.Length = PolylineLength(mesh, path.Points);
-  if (this->Statistics.Routed && !this->AllSpheres())
+  if (this->Statistics.Routed && !this->SiteGraph->IsAllSpheres())
   {
     this->TryAlternativeRoute(start, end, path);
   }
@@ -313,67 +313,10 @@ void GeodesicPathSolver::TryAlternativeRoute(const CanonicalPoint& start,
     this->Statistics = kept;
     return;
   }
-  this->Alternative.clear();
-  for (const PathPoint& p : this->Points)
+  if (this->KeepShorterCandidate(kept, path))
   {
-    this->Alternative.push_back(p.Point);
-  }
-  const double length = PolylineLength(this->GetMesh(), this->Alternative);
-  const int rounds = this->Statistics.StraighteningRounds;
-  const int strip = static_cast<int>(this->Strip.size());
-  this->Statistics = kept;
-  this->Statistics.AlternativeRoutes = 1;
-  this->Statistics.StraighteningRounds = rounds;
-  if (length < path.Length)
-  {
-    path.Points.swap(this->Alternative);
-    path.Length = length;
     this->Statistics.RouteLength = secondRoute;
-    this->Statistics.StripTriangles = strip;
   }
-}
-
-//------------------------------------------------------------------------------
-// Euler characteristic V - E + F = 2 per component exactly when every component is a closed
-// sphere. There, a second route measured no better (it runs beside the first and straightens
-// to the same geodesic) while doubling the cost; handles and holes are where it pays.
-bool GeodesicPathSolver::AllSpheres()
-{
-  if (this->SphereTopology < 0)
-  {
-    const TriangleMesh& mesh = this->GetMesh();
-    long long triangles = 0;
-    std::vector<char> used(static_cast<std::size_t>(mesh.GetNumberOfVertices()), 0);
-    std::vector<char> edgeUsed(static_cast<std::size_t>(mesh.GetNumberOfEdges()), 0);
-    bool boundary = false;
-    for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
-    {
-      if (!mesh.IsUsable(t))
-      {
-        continue;
-      }
-      ++triangles;
-      for (int k = 0; k < 3; ++k)
-      {
-        used[mesh.GetTriangle(t)[k]] = 1;
-        const int e = mesh.GetEdgeId(t, k);
-        edgeUsed[e] = 1;
-        boundary = boundary || mesh.GetNeighbor(t, k) < 0;
-      }
-    }
-    long long vertices = 0, edges = 0;
-    for (char u : used)
-    {
-      vertices += u;
-    }
-    for (char u : edgeUsed)
-    {
-      edges += u;
-    }
-    this->SphereTopology =
-      !boundary && vertices - edges + triangles == 2LL * this->GetNumberOfComponents();
-  }
-  return this->SphereTopology == 1;
 }
 
 //------------------------------------------------------------------------------
@@ -432,24 +375,36 @@ void GeodesicPathSolver::TryEdgePathCandidate(const CanonicalPoint& start,
     this->Statistics = kept;
     return;
   }
+  this->KeepShorterCandidate(kept, path);
+  this->Statistics.EdgePathLength = length;
+}
+
+//------------------------------------------------------------------------------
+// A candidate strip was just straightened (Points): the statistics go back to the first
+// path's (`kept`), with the candidate counted and every funnel run kept, and `path` becomes
+// the candidate when it is shorter.
+bool GeodesicPathSolver::KeepShorterCandidate(const GeodesicPathStatistics& kept,
+  GeodesicPath& path)
+{
   this->Alternative.clear();
   for (const PathPoint& p : this->Points)
   {
     this->Alternative.push_back(p.Point);
   }
-  const double straightened = PolylineLength(mesh, this->Alternative);
+  const double length = PolylineLength(this->GetMesh(), this->Alternative);
   const int rounds = this->Statistics.StraighteningRounds;
   const int strip = static_cast<int>(this->Strip.size());
   this->Statistics = kept;
   this->Statistics.AlternativeRoutes += 1;
   this->Statistics.StraighteningRounds = rounds;
-  this->Statistics.EdgePathLength = length;
-  if (straightened < path.Length)
+  if (!(length < path.Length))
   {
-    path.Points.swap(this->Alternative);
-    path.Length = straightened;
-    this->Statistics.StripTriangles = strip;
+    return false;
   }
+  path.Points.swap(this->Alternative);
+  path.Length = length;
+  this->Statistics.StripTriangles = strip;
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -204,8 +204,6 @@ private:
   bool StripFromSiteRoute(const CanonicalPoint& start, const CanonicalPoint& end);
   /// The strip holding VertexPath (a mesh-edge path from a start corner to an end corner).
   bool StripAlongVertexPath(const CanonicalPoint& end);
-  /// True when every connected component is a closed surface of genus 0 (cached).
-  bool AllSpheres();
   /// Bounded method: true when the straight distance between the ends already shows the
   /// window search cannot finish within its budget.
   bool ExceedsBoundedWindows(const CanonicalPoint& start, const CanonicalPoint& end);
@@ -218,6 +216,7 @@ private:
   void TryEdgePathCandidate(const CanonicalPoint& start,
     const CanonicalPoint& end,
     GeodesicPath& path);
+  bool KeepShorterCandidate(const GeodesicPathStatistics& kept, GeodesicPath& path);
   void TryAlternativeRoute(const CanonicalPoint& start,
     const CanonicalPoint& end,
     GeodesicPath& path);
@@ -252,7 +251,6 @@ private:
   int BoundedWindows = 1 << 15;
   double RouteTolerance = 0.15;
   double MeanEdgeLength = -1; // computed on first use
-  int SphereTopology = -1;    // AllSpheres(), computed on first use
   std::vector<CanonicalPoint> Alternative;
   bool UseEdgePathStrip = true;
   GeodesicMethod Method = GeodesicMethod::Bounded;

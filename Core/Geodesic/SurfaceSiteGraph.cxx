@@ -1,5 +1,7 @@
 #include "Geodesic/SurfaceSiteGraph.h"
 
+#include "Mesh/MeshTopology.h"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -57,6 +59,10 @@ SurfaceSiteGraph::SurfaceSiteGraph(const TriangleMesh& mesh, int hops)
   this->ChooseSites(offsets, neighbors, hops > 0 ? hops : DefaultHops(mesh.GetNumberOfVertices()));
   this->GrowCells(offsets, neighbors);
   this->BuildArcs(offsets, neighbors);
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  this->AllSpheres = std::all_of(topology.Components.begin(),
+    topology.Components.end(),
+    [](const ComponentTopology& c) { return c.BoundaryLoops == 0 && c.EulerCharacteristic == 2; });
   this->BuildSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   static std::atomic<std::uint64_t> builds{ 0 };

@@ -89,6 +89,11 @@ public:
   /// Sets flags[s] and flags[w] for every site w adjacent to site s.
   void FlagNeighbourhood(int s, std::vector<char>& flags) const;
 
+  /// True when every connected component is a closed surface of genus 0 (MeshTopology). There
+  /// a second route measured no better than the first (it runs beside it and straightens to
+  /// the same geodesic) while doubling the cost; handles and holes are where it pays.
+  bool IsAllSpheres() const { return this->AllSpheres; }
+
   int GetNumberOfSites() const { return static_cast<int>(this->Sites.size()); }
   int GetNumberOfArcs() const { return static_cast<int>(this->ArcTarget.size()); }
   /// The mesh vertex of site s.
@@ -120,6 +125,7 @@ private:
   std::vector<int> ArcFrom, ArcTo; // the mesh edge (u in the source cell, v in the target's)
   double BuildSeconds = 0;
   std::uint64_t BuildNumber = 0;
+  bool AllSpheres = false;
 };
 
 } // namespace boolsurf
