@@ -141,11 +141,16 @@ void ExactGeodesicSearch::Relax(int v, double d, int kind, int parent, int arriv
   {
     return;
   }
+  if (this->FieldMode && this->Distance[v] == Infinity)
+  {
+    this->FieldVertices.push_back(v);
+  }
   this->Distance[v] = d;
   this->VertexKind[v] = kind;
   this->VertexParent[v] = parent;
   this->VertexArrival[v] = arrival;
-  const double toTarget = ::boolsurf::Distance(this->Mesh.GetPosition(v), this->Target);
+  const double toTarget =
+    this->FieldMode ? 0.0 : ::boolsurf::Distance(this->Mesh.GetPosition(v), this->Target);
   this->Heap.push_back({ d + toTarget, -(v + 1), d });
   std::push_heap(this->Heap.begin(), this->Heap.end());
 }
@@ -182,16 +187,24 @@ void ExactGeodesicSearch::AddWindow(const Window& w)
   double nearest = w.Sx;
   nearest = std::min(w.B1, std::max(w.B0, nearest));
   const double lower = distanceAt(nearest);
-  const double scale = 1.0 / length;
-  const Vec3 a = p0 + (w.B0 * scale) * (p1 - p0);
-  const Vec3 b = p0 + (w.B1 * scale) * (p1 - p0);
-  const double key = lower + SegmentPointDistance(a, b, this->Target);
+  double key = lower;
+  if (!this->FieldMode)
+  {
+    const double scale = 1.0 / length;
+    const Vec3 a = p0 + (w.B0 * scale) * (p1 - p0);
+    const Vec3 b = p0 + (w.B1 * scale) * (p1 - p0);
+    key += SegmentPointDistance(a, b, this->Target);
+  }
   if (key >= this->Best)
   {
     return;
   }
   const int id = static_cast<int>(this->Windows.size());
   this->Windows.push_back(w);
+  if (this->FieldMode)
+  {
+    this->LinkToEdge(id);
+  }
   this->Heap.push_back({ key, id, 0.0 });
   std::push_heap(this->Heap.begin(), this->Heap.end());
 }
@@ -382,7 +395,8 @@ void ExactGeodesicSearch::EmitFromVertex(int v)
       const int u = tri[(k + j) % 3];
       this->Relax(u, d + ::boolsurf::Distance(pv, mesh.GetPosition(u)), FromVertex, v, t);
     }
-    if (!this->PseudoSource[v] && v != this->ForcedVertex)
+    if (!this->PseudoSource[v] && v != this->ForcedVertex &&
+      !(this->FieldMode && this->ForcedMark[v] == this->CurrentStamp))
     {
       continue;
     }
@@ -415,77 +429,72 @@ void ExactGeodesicSearch::EmitFromVertex(int v)
 }
 
 //------------------------------------------------------------------------------
-double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
-  const std::vector<int>& startTriangles,
-  const CanonicalPoint& end,
-  const std::vector<int>& endTriangles,
-  std::vector<int>& strip)
+// The start's triangle corners get their straight distances and each edge of a start triangle
+// (but the one the start lies on) a window lighting the triangle beyond; a vertex start is a
+// source vertex instead.
+void ExactGeodesicSearch::SeedFromPoint(const CanonicalPoint& start,
+  const std::vector<int>& startTriangles)
 {
   const TriangleMesh& mesh = this->Mesh;
-  this->Prepare();
-  this->ResetMarks();
-  this->Windows.clear();
-  this->Heap.clear();
-  this->Target = PositionOf(mesh, end);
-  this->End = end;
-  this->Best = Infinity;
-  this->BestKind = this->BestId = -1;
-  this->ForcedVertex = -1;
-  this->LastVertexCount = 0;
-  this->BudgetExceeded = false;
-  strip.clear();
-  for (int t : endTriangles)
-  {
-    this->EndMark[t] = this->CurrentStamp;
-  }
-
-  const Vec3 source = PositionOf(mesh, start);
   if (start.Location == PointLocation::Vertex)
   {
-    this->ForcedVertex = start.Id;
-    this->Relax(start.Id, 0.0, FromSource, -1, startTriangles.front());
-  }
-  else
-  {
-    for (int t : startTriangles)
+    if (this->FieldMode)
     {
-      const Triangle& tri = mesh.GetTriangle(t);
-      const std::array<double, 3> weights = WeightsInTriangle(mesh, start, t);
-      for (int k = 0; k < 3; ++k)
+      this->ForcedMark[start.Id] = this->CurrentStamp;
+    }
+    else
+    {
+      this->ForcedVertex = start.Id;
+    }
+    this->Relax(start.Id, 0.0, FromSource, -1, startTriangles.front());
+    return;
+  }
+  const Vec3 source = PositionOf(mesh, start);
+  for (int t : startTriangles)
+  {
+    const Triangle& tri = mesh.GetTriangle(t);
+    const std::array<double, 3> weights = WeightsInTriangle(mesh, start, t);
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Relax(
+        tri[k], ::boolsurf::Distance(source, mesh.GetPosition(tri[k])), FromSource, -1, t);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const int next = mesh.GetNeighbor(t, k);
+      if (next < 0 || weights[(k + 2) % 3] <= 0.0)
       {
-        this->Relax(
-          tri[k], ::boolsurf::Distance(source, mesh.GetPosition(tri[k])), FromSource, -1, t);
+        continue; // boundary, or the start lies on this edge
       }
-      for (int k = 0; k < 3; ++k)
-      {
-        const int next = mesh.GetNeighbor(t, k);
-        if (next < 0 || weights[(k + 2) % 3] <= 0.0)
-        {
-          continue; // boundary, or the start lies on this edge
-        }
-        const int edge = mesh.GetEdgeId(t, k);
-        const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
-        const Vec3 p0 = mesh.GetPosition(ev[0]);
-        const Vec3 axis = mesh.GetPosition(ev[1]) - p0;
-        const double length = Length(axis);
-        const Vec3 ex = (1.0 / length) * axis;
-        const double x = Dot(source - p0, ex);
-        Window w;
-        w.Edge = edge;
-        w.Face = next;
-        w.Origin = t;
-        w.Parent = t;
-        w.Kind = FromSource;
-        w.Sigma = 0.0;
-        w.Sx = x;
-        w.Sy = -Length(source - p0 - x * ex);
-        w.B0 = 0.0;
-        w.B1 = length;
-        this->AddWindow(w);
-      }
+      const int edge = mesh.GetEdgeId(t, k);
+      const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
+      const Vec3 p0 = mesh.GetPosition(ev[0]);
+      const Vec3 axis = mesh.GetPosition(ev[1]) - p0;
+      const double length = Length(axis);
+      const Vec3 ex = (1.0 / length) * axis;
+      const double x = Dot(source - p0, ex);
+      Window w;
+      w.Edge = edge;
+      w.Face = next;
+      w.Origin = t;
+      w.Parent = t;
+      w.Kind = FromSource;
+      w.Sigma = 0.0;
+      w.Sx = x;
+      w.Sy = -Length(source - p0 - x * ex);
+      w.B0 = 0.0;
+      w.B1 = length;
+      this->AddWindow(w);
     }
   }
+}
 
+//------------------------------------------------------------------------------
+// Pops events until the heap is empty or the next one cannot beat Best. False when the window
+// budget ran out.
+bool ExactGeodesicSearch::Run(const std::vector<int>& endTriangles)
+{
+  const TriangleMesh& mesh = this->Mesh;
   while (!this->Heap.empty())
   {
     std::pop_heap(this->Heap.begin(), this->Heap.end());
@@ -501,7 +510,7 @@ double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
       if (static_cast<int>(this->Windows.size()) > this->MaximumWindows)
       {
         this->BudgetExceeded = true;
-        return -1.0;
+        return false;
       }
       continue;
     }
@@ -521,6 +530,39 @@ double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
       }
     }
     this->EmitFromVertex(v);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
+  const std::vector<int>& startTriangles,
+  const CanonicalPoint& end,
+  const std::vector<int>& endTriangles,
+  std::vector<int>& strip)
+{
+  const TriangleMesh& mesh = this->Mesh;
+  this->Prepare();
+  this->ResetMarks();
+  this->FieldMode = false;
+  this->Windows.clear();
+  this->Heap.clear();
+  this->Target = PositionOf(mesh, end);
+  this->End = end;
+  this->Best = Infinity;
+  this->BestKind = this->BestId = -1;
+  this->ForcedVertex = -1;
+  this->LastVertexCount = 0;
+  this->BudgetExceeded = false;
+  strip.clear();
+  for (int t : endTriangles)
+  {
+    this->EndMark[t] = this->CurrentStamp;
+  }
+  this->SeedFromPoint(start, startTriangles);
+  if (!this->Run(endTriangles))
+  {
+    return -1.0;
   }
   if (this->BestKind < 0 || !this->Backtrack(strip))
   {

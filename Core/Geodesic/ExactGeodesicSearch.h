@@ -18,6 +18,7 @@
 
 #include "Mesh/SurfacePoint.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -52,6 +53,27 @@ public:
   int GetMaximumWindows() const { return this->MaximumWindows; }
   /// True when the last FindStrip stopped at the window budget.
   bool GetLastBudgetExceeded() const { return this->BudgetExceeded; }
+
+  ///@{
+  /// Distance field mode (geodesic offsets): the exact distance from the nearest of `sources`
+  /// (normalized canonical points) to every surface point closer than `radius`. The same
+  /// window propagation as FindStrip with every source at distance 0 and no target, stopped
+  /// when every event left is at least `radius` away. False when the window budget ran out.
+  /// Afterwards the field can be read anywhere: a value below `radius` is exact, a value at or
+  /// above it only says "at least radius" (infinity where nothing arrived).
+  bool ComputeDistanceField(const std::vector<CanonicalPoint>& sources, double radius);
+  /// At mesh vertex v.
+  double GetFieldDistanceAtVertex(int v) const;
+  /// On mesh edge `edge` at parameter t in [0, 1] from its canonical vertex 0 to vertex 1
+  /// (TriangleMesh::GetEdgeVertices): the windows on the edge, the paths through its two
+  /// vertices and the sources on it.
+  double GetFieldDistanceOnEdge(int edge, double t) const;
+  /// At barycentric weights `w` (of its corners in order) inside triangle `face`: the windows
+  /// lighting it, the paths through its corners and the sources in it.
+  double GetFieldDistanceInTriangle(int face, const std::array<double, 3>& w) const;
+  /// Vertices whose distance was set by the last field computation (settled or not).
+  const std::vector<int>& GetFieldVertices() const { return this->FieldVertices; }
+  ///@}
 
 private:
   enum ParentKind : int
@@ -90,6 +112,11 @@ private:
   bool Backtrack(std::vector<int>& strip);
   bool FanWalk(int v, int from, int to, std::vector<int>& out) const;
   void OfferTarget(double length, int kind, int id);
+  void SeedFromPoint(const CanonicalPoint& source, const std::vector<int>& triangles);
+  bool Run(const std::vector<int>& endTriangles);
+  void LinkToEdge(int id);
+  void PrepareField();
+  double WindowDistanceAt(const Window& w, double b) const;
 
   const TriangleMesh& Mesh;
   bool Prepared = false;
@@ -112,6 +139,16 @@ private:
   double Best = 0;
   int BestKind = -1, BestId = -1;
   int LastVertexCount = 0;
+
+  // Distance field mode: no target, every window kept per edge for reading the field.
+  bool FieldMode = false;
+  std::vector<std::uint32_t> ForcedMark;           // == CurrentStamp: a source vertex
+  std::vector<int> EdgeHead, WindowNext;           // windows per edge, linked (valid where stamped)
+  std::vector<std::uint32_t> EdgeStamp;            //
+  std::vector<int> FaceSourceHead, FaceSourceNext; // sources inside or on each triangle
+  std::vector<std::uint32_t> FaceStamp;            //
+  std::vector<Vec3> FieldSources;                  // positions of the field's sources
+  std::vector<int> FieldVertices;
 };
 
 } // namespace boolsurf

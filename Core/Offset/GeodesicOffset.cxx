@@ -1,0 +1,915 @@
+#include "Offset/GeodesicOffset.h"
+
+#include "Geodesic/ExactGeodesicSearch.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace boolsurf
+{
+namespace
+{
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+constexpr double Pi = 3.14159265358979323846;
+
+// Contour points stay this far (in edge parameter) from the edge's ends, well above the
+// tolerance that would read them as the vertex (SurfacePointSnap), so every contour point lies
+// strictly inside its edge and is shared by exactly the edge's triangles.
+constexpr double EdgeMargin = 1e-9;
+
+using Clock = std::chrono::steady_clock;
+double Milliseconds(Clock::time_point from, Clock::time_point to)
+{
+  return std::chrono::duration<double, std::milli>(to - from).count();
+}
+
+// The boundary's points plus samples every `spacing` along each straight piece (the pieces lie
+// in one triangle each, so the samples are surface points of that triangle).
+void SampleCurve(const TriangleMesh& mesh,
+  const std::vector<CanonicalPoint>& curve,
+  bool closed,
+  double spacing,
+  std::vector<CanonicalPoint>& out)
+{
+  const size_t n = curve.size();
+  for (size_t i = 0; i < n; ++i)
+  {
+    out.push_back(curve[i]);
+    if (i + 1 == n && !closed)
+    {
+      break;
+    }
+    const CanonicalPoint& a = curve[i];
+    const CanonicalPoint& b = curve[(i + 1) % n];
+    const int t = SharedTriangle(mesh, a, b);
+    if (t < 0)
+    {
+      continue;
+    }
+    const double length = Distance(PositionOf(mesh, a), PositionOf(mesh, b));
+    const int pieces = static_cast<int>(std::ceil(length / spacing));
+    if (pieces < 2)
+    {
+      continue;
+    }
+    const std::array<double, 3> wa = WeightsInTriangle(mesh, a, t);
+    const std::array<double, 3> wb = WeightsInTriangle(mesh, b, t);
+    for (int j = 1; j < pieces; ++j)
+    {
+      const double f = static_cast<double>(j) / pieces;
+      SurfacePoint p;
+      p.Triangle = t;
+      p.U = (1.0 - f) * wa[1] + f * wb[1];
+      p.V = (1.0 - f) * wa[2] + f * wb[2];
+      out.push_back(LocateSurfacePoint(mesh, p));
+    }
+  }
+}
+
+// Mean edge length of the triangles the curves pass through: the scale of "mesh resolution"
+// where the offset is drawn.
+double LocalEdgeLength(const TriangleMesh& mesh,
+  const std::vector<std::vector<CanonicalPoint>>& curves)
+{
+  double sum = 0.0;
+  int count = 0;
+  for (const auto& curve : curves)
+  {
+    for (const CanonicalPoint& p : curve)
+    {
+      const int t = AnyTriangleOf(mesh, p);
+      if (t < 0)
+      {
+        continue;
+      }
+      const Triangle& tri = mesh.GetTriangle(t);
+      for (int k = 0; k < 3; ++k)
+      {
+        sum += Distance(mesh.GetPosition(tri[k]), mesh.GetPosition(tri[(k + 1) % 3]));
+        ++count;
+      }
+    }
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+
+struct EndCap
+{
+  Vec3 Point, Outward; // the end point and the unit direction leaving the curve there
+};
+
+// The signed field F (distance inside negative) minus the offset distance, on the mesh.
+class OffsetField
+{
+public:
+  OffsetField(const TriangleMesh& mesh, const OffsetRegion& region, double distance)
+    : Mesh(mesh)
+    , Region(region)
+    , Level(distance)
+    , Closed(mesh)
+    , Open(mesh)
+  {
+  }
+
+  bool Compute(const OffsetOptions& options, OffsetStatistics& stats, std::string& error)
+  {
+    const TriangleMesh& mesh = this->Mesh;
+    const double d = std::abs(this->Level);
+    this->HasClosed = !this->Region.Boundary.empty();
+    this->HasOpen = this->Level > 0.0 && !this->Region.Bands.empty();
+    std::vector<std::vector<CanonicalPoint>> all = this->Region.Boundary;
+    if (this->HasOpen)
+    {
+      for (const BandCurve& band : this->Region.Bands)
+      {
+        all.push_back(band.Points);
+      }
+    }
+    double spacing = options.SourceSpacing;
+    if (!(spacing > 0.0))
+    {
+      spacing = std::max(0.02 * d, LocalEdgeLength(mesh, all) / 16.0);
+    }
+    // Values below the radius are exact; the contour only reads values near d.
+    const double radius = d * (1.0 + 1e-3) + 1e-12;
+    std::vector<CanonicalPoint> sources;
+    if (this->HasClosed)
+    {
+      for (const auto& loop : this->Region.Boundary)
+      {
+        SampleCurve(mesh, loop, true, spacing, sources);
+        for (const CanonicalPoint& p : loop)
+        {
+          if (p.Location == PointLocation::Edge)
+          {
+            this->Crossings[p.Id].push_back(p.T);
+          }
+          else if (p.Location == PointLocation::Vertex)
+          {
+            this->OnBoundary.insert(p.Id);
+          }
+          const int t = AnyTriangleOf(mesh, p);
+          if (p.Location == PointLocation::Face)
+          {
+            this->TouchedTriangles.insert(t);
+          }
+          else
+          {
+            std::vector<int> around;
+            TrianglesOf(mesh, p, around);
+            this->TouchedTriangles.insert(around.begin(), around.end());
+          }
+        }
+      }
+      for (auto& entry : this->Crossings)
+      {
+        std::sort(entry.second.begin(), entry.second.end());
+      }
+      stats.Sources += static_cast<int>(sources.size());
+      this->Closed.SetMaximumWindows(options.MaximumWindows);
+      if (!this->Closed.ComputeDistanceField(sources, radius))
+      {
+        error = "the distance computation ran out of its window budget (" +
+          std::to_string(options.MaximumWindows) + " windows)";
+        return false;
+      }
+      stats.Windows += this->Closed.GetLastWindowCount();
+    }
+    if (this->HasOpen)
+    {
+      sources.clear();
+      for (const BandCurve& band : this->Region.Bands)
+      {
+        const std::vector<CanonicalPoint>& curve = band.Points;
+        if (curve.size() < 2)
+        {
+          continue;
+        }
+        SampleCurve(mesh, curve, band.Closed, spacing, sources);
+        if (options.Ends == OffsetEndStyle::Flat && !band.Closed)
+        {
+          const size_t n = curve.size();
+          const Vec3 a = PositionOf(mesh, curve[0]), a1 = PositionOf(mesh, curve[1]);
+          const Vec3 b = PositionOf(mesh, curve[n - 1]), b1 = PositionOf(mesh, curve[n - 2]);
+          if (Length(a - a1) > 0.0)
+          {
+            this->Caps.push_back({ a, (1.0 / Length(a - a1)) * (a - a1) });
+          }
+          if (Length(b - b1) > 0.0)
+          {
+            this->Caps.push_back({ b, (1.0 / Length(b - b1)) * (b - b1) });
+          }
+        }
+      }
+      stats.Sources += static_cast<int>(sources.size());
+      this->Open.SetMaximumWindows(options.MaximumWindows);
+      if (!this->Open.ComputeDistanceField(sources, radius))
+      {
+        error = "the distance computation ran out of its window budget (" +
+          std::to_string(options.MaximumWindows) + " windows)";
+        return false;
+      }
+      stats.Windows += this->Open.GetLastWindowCount();
+    }
+    return true;
+  }
+
+  /// Vertices either distance reached: the contour lies in their triangles.
+  void ReachedVertices(std::vector<int>& out) const
+  {
+    out.clear();
+    if (this->HasClosed)
+    {
+      out = this->Closed.GetFieldVertices();
+    }
+    if (this->HasOpen)
+    {
+      const std::vector<int>& more = this->Open.GetFieldVertices();
+      out.insert(out.end(), more.begin(), more.end());
+    }
+  }
+
+  /// F - d at mesh vertex v (never exactly 0: a vertex on the level set counts as outside).
+  double AtVertex(int v)
+  {
+    const auto it = this->VertexValue.find(v);
+    if (it != this->VertexValue.end())
+    {
+      return it->second;
+    }
+    const double value = this->Combine(this->Mesh.GetPosition(v),
+      this->HasClosed ? this->Closed.GetFieldDistanceAtVertex(v) : Infinity,
+      this->HasClosed && this->Inside(v),
+      this->HasOpen ? this->Open.GetFieldDistanceAtVertex(v) : Infinity);
+    this->VertexValue.emplace(v, value);
+    return value;
+  }
+
+  /// F - d on mesh edge `edge` at parameter s from its canonical vertex 0.
+  double OnEdge(int edge, double s)
+  {
+    const TriangleMesh& mesh = this->Mesh;
+    const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
+    const Vec3 x = (1.0 - s) * mesh.GetPosition(ev[0]) + s * mesh.GetPosition(ev[1]);
+    bool inside = false;
+    double closed = Infinity;
+    if (this->HasClosed)
+    {
+      closed = this->Closed.GetFieldDistanceOnEdge(edge, s);
+      // The side of the boundary: from a vertex off the boundary, flipped at each crossing
+      // between it and s.
+      const auto it = this->Crossings.find(edge);
+      const std::vector<double>* crossings = it == this->Crossings.end() ? nullptr : &it->second;
+      const bool fromStart = !this->OnBoundary.count(ev[0]) || this->OnBoundary.count(ev[1]);
+      inside = this->Inside(fromStart ? ev[0] : ev[1]);
+      if (crossings)
+      {
+        for (double c : *crossings)
+        {
+          if (fromStart ? c < s : c > s)
+          {
+            inside = !inside;
+          }
+        }
+      }
+    }
+    return this->Combine(
+      x, closed, inside, this->HasOpen ? this->Open.GetFieldDistanceOnEdge(edge, s) : Infinity);
+  }
+
+  /// F - d inside triangle `face` (one the boundary does not touch) at weights w.
+  double InTriangle(int face, const std::array<double, 3>& w)
+  {
+    const TriangleMesh& mesh = this->Mesh;
+    const Triangle& tri = mesh.GetTriangle(face);
+    const Vec3 x = w[0] * mesh.GetPosition(tri[0]) + w[1] * mesh.GetPosition(tri[1]) +
+      w[2] * mesh.GetPosition(tri[2]);
+    return this->Combine(x,
+      this->HasClosed ? this->Closed.GetFieldDistanceInTriangle(face, w) : Infinity,
+      this->HasClosed && this->Inside(tri[0]),
+      this->HasOpen ? this->Open.GetFieldDistanceInTriangle(face, w) : Infinity);
+  }
+
+  /// The boundary passes through (or along) this triangle: its side is not uniform inside.
+  bool Touches(int face) const { return this->TouchedTriangles.count(face) != 0; }
+
+private:
+  bool Inside(int v)
+  {
+    const auto it = this->InsideValue.find(v);
+    if (it != this->InsideValue.end())
+    {
+      return it->second;
+    }
+    const bool inside = this->Region.InsideVertex ? this->Region.InsideVertex(v) : false;
+    this->InsideValue.emplace(v, inside);
+    return inside;
+  }
+
+  double Combine(const Vec3& x, double closedDistance, bool inside, double openDistance) const
+  {
+    double f = Infinity;
+    if (this->HasClosed)
+    {
+      f = inside ? -closedDistance : closedDistance;
+    }
+    if (this->HasOpen)
+    {
+      double band = openDistance;
+      // Flat ends: the band minus the half-space beyond each end, near that end.
+      for (const EndCap& cap : this->Caps)
+      {
+        if (Distance(x, cap.Point) <= 2.0 * this->Level)
+        {
+          band = std::max(band, this->Level + Dot(x - cap.Point, cap.Outward));
+        }
+      }
+      f = std::min(f, band);
+    }
+    const double value = f - this->Level;
+    return value == 0.0 ? std::numeric_limits<double>::min() : value;
+  }
+
+  const TriangleMesh& Mesh;
+  const OffsetRegion& Region;
+  const double Level;
+  ExactGeodesicSearch Closed, Open;
+  bool HasClosed = false, HasOpen = false;
+  std::unordered_map<int, std::vector<double>> Crossings; // edge -> boundary parameters
+  std::unordered_set<int> OnBoundary;                     // vertices on the boundary
+  std::unordered_set<int> TouchedTriangles;
+  std::vector<EndCap> Caps;
+  std::unordered_map<int, double> VertexValue;
+  std::unordered_map<int, bool> InsideValue;
+};
+
+// The contour F = d: points on edges, one directed piece per crossed triangle, chained.
+class Contour
+{
+public:
+  Contour(const TriangleMesh& mesh, OffsetField& field)
+    : Mesh(mesh)
+    , Field(field)
+  {
+  }
+
+  void Build(const std::vector<int>& reached)
+  {
+    const TriangleMesh& mesh = this->Mesh;
+    std::unordered_set<int> seen;
+    seen.reserve(4 * reached.size());
+    for (int v : reached)
+    {
+      for (int corner : mesh.GetVertexCorners(v))
+      {
+        const int t = corner / 3;
+        if (mesh.IsUsable(t) && seen.insert(t).second)
+        {
+          this->AddTriangle(t);
+        }
+      }
+    }
+  }
+
+  /// Closed chains as lists of pieces; chains that end on the surface's boundary in `open`.
+  int GetNumberOfCrossedTriangles() const { return static_cast<int>(this->Pieces.size()); }
+
+  struct Piece
+  {
+    int Triangle;
+    int From, To; // contour point ids
+  };
+  std::vector<CanonicalPoint> Points;
+  std::vector<Piece> Pieces;
+  std::vector<int> PieceFrom; // contour point -> piece starting there, -1 none
+  std::vector<int> PieceTo;   // contour point -> piece ending there, -1 none
+
+private:
+  int PointOnEdge(int edge)
+  {
+    const auto it = this->EdgePoint.find(edge);
+    if (it != this->EdgePoint.end())
+    {
+      return it->second;
+    }
+    const std::array<int, 2> ev = this->Mesh.GetEdgeVertices(edge);
+    double lo = 0.0, hi = 1.0;
+    const bool startInside = this->Field.AtVertex(ev[0]) < 0.0;
+    for (int i = 0; i < 60 && hi - lo > 1e-15; ++i)
+    {
+      const double mid = 0.5 * (lo + hi);
+      if ((this->Field.OnEdge(edge, mid) < 0.0) == startInside)
+      {
+        lo = mid;
+      }
+      else
+      {
+        hi = mid;
+      }
+    }
+    CanonicalPoint p;
+    p.Location = PointLocation::Edge;
+    p.Id = edge;
+    p.T = std::min(1.0 - EdgeMargin, std::max(EdgeMargin, 0.5 * (lo + hi)));
+    const int id = static_cast<int>(this->Points.size());
+    this->Points.push_back(p);
+    this->PieceFrom.push_back(-1);
+    this->PieceTo.push_back(-1);
+    this->EdgePoint.emplace(edge, id);
+    return id;
+  }
+
+  void AddTriangle(int t)
+  {
+    const TriangleMesh& mesh = this->Mesh;
+    const Triangle& tri = mesh.GetTriangle(t);
+    bool negative[3];
+    int count = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      negative[k] = this->Field.AtVertex(tri[k]) < 0.0;
+      count += negative[k] ? 1 : 0;
+    }
+    if (count == 0 || count == 3)
+    {
+      return;
+    }
+    // The odd corner k (alone on its side). Local edge k joins corners k and k+1.
+    int k = 0;
+    while (negative[k] != (count == 1))
+    {
+      ++k;
+    }
+    // One corner inside: from edge (k, k+1) to edge (k+2, k) keeps it on the left; one
+    // corner outside: the other way round.
+    int fromEdge = mesh.GetEdgeId(t, k), toEdge = mesh.GetEdgeId(t, (k + 2) % 3);
+    if (count == 2)
+    {
+      std::swap(fromEdge, toEdge);
+    }
+    const int from = this->PointOnEdge(fromEdge), to = this->PointOnEdge(toEdge);
+    const int id = static_cast<int>(this->Pieces.size());
+    this->Pieces.push_back({ t, from, to });
+    this->PieceFrom[from] = id;
+    this->PieceTo[to] = id;
+  }
+
+  const TriangleMesh& Mesh;
+  OffsetField& Field;
+  std::unordered_map<int, int> EdgePoint;
+};
+
+// Points on the level set inside a crossed triangle between a piece's two end points, found by
+// bisection along the chord's normal in the triangle's plane.
+void RefinePiece(const TriangleMesh& mesh,
+  OffsetField& field,
+  int t,
+  const CanonicalPoint& a,
+  const CanonicalPoint& b,
+  int count,
+  std::vector<CanonicalPoint>& out)
+{
+  const Triangle& tri = mesh.GetTriangle(t);
+  const Vec3 p0 = mesh.GetPosition(tri[0]), p1 = mesh.GetPosition(tri[1]),
+             p2 = mesh.GetPosition(tri[2]);
+  const Vec3 normal = Cross(p1 - p0, p2 - p0);
+  const std::array<double, 3> wa = WeightsInTriangle(mesh, a, t);
+  const std::array<double, 3> wb = WeightsInTriangle(mesh, b, t);
+  const Vec3 xa = PositionOf(mesh, a), xb = PositionOf(mesh, b);
+  const Vec3 left = Cross(normal, xb - xa); // the region's side
+  const double leftLength = Length(left);
+  if (!(leftLength > 0.0))
+  {
+    return;
+  }
+  // Weights of points of the triangle's plane, not clamped (the step below leaves the triangle).
+  const Vec3 e1 = p1 - p0, e2 = p2 - p0;
+  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
+  const double det = d11 * d22 - d12 * d12;
+  if (!(det > 0.0))
+  {
+    return;
+  }
+  auto weightsOf = [&](const Vec3& x)
+  {
+    const double b1 = Dot(x - p0, e1), b2 = Dot(x - p0, e2);
+    const double u = (d22 * b1 - d12 * b2) / det, v = (d11 * b2 - d12 * b1) / det;
+    return std::array<double, 3>{ 1.0 - u - v, u, v };
+  };
+  for (int i = 1; i <= count; ++i)
+  {
+    const double f = static_cast<double>(i) / (count + 1);
+    std::array<double, 3> w{
+      (1.0 - f) * wa[0] + f * wb[0], (1.0 - f) * wa[1] + f * wb[1], (1.0 - f) * wa[2] + f * wb[2]
+    };
+    const Vec3 m = w[0] * p0 + w[1] * p1 + w[2] * p2;
+    const double fm = field.InTriangle(t, w);
+    // Inside (negative) the level set lies to the right, outside to the left.
+    const Vec3 dir = (fm < 0.0 ? -1.0 : 1.0) / leftLength * left;
+    // How far the triangle extends from m along dir: the largest step keeping the weights >= 0.
+    const std::array<double, 3> wd = weightsOf(m + dir);
+    double reach = Infinity;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double rate = wd[k] - w[k];
+      if (rate < 0.0)
+      {
+        reach = std::min(reach, -w[k] / rate);
+      }
+    }
+    if (!(reach > 0.0) || reach == Infinity)
+    {
+      continue;
+    }
+    double lo = 0.0, hi = reach * (1.0 - 1e-6);
+    std::array<double, 3> wHi = weightsOf(m + hi * dir);
+    if ((field.InTriangle(t, wHi) < 0.0) == (fm < 0.0))
+    {
+      continue; // no sign change inside the triangle: keep the chord
+    }
+    for (int it = 0; it < 50; ++it)
+    {
+      const double mid = 0.5 * (lo + hi);
+      if ((field.InTriangle(t, weightsOf(m + mid * dir)) < 0.0) == (fm < 0.0))
+      {
+        lo = mid;
+      }
+      else
+      {
+        hi = mid;
+      }
+    }
+    const std::array<double, 3> wp = weightsOf(m + (0.5 * (lo + hi)) * dir);
+    SurfacePoint p;
+    p.Triangle = t;
+    p.U = std::max(wp[1], 1e-9);
+    p.V = std::max(wp[2], 1e-9);
+    if (p.U + p.V > 1.0 - 1e-9)
+    {
+      const double scale = (1.0 - 1e-9) / (p.U + p.V);
+      p.U *= scale;
+      p.V *= scale;
+    }
+    out.push_back(LocateSurfacePoint(mesh, p));
+  }
+}
+
+// Where the level set turns sharply inside a crossed triangle (shrinking past a convex corner,
+// growing into a concave one: two fronts from different parts of the boundary meet), the chord
+// between the piece's end points would cut the corner off. The corner is where the level set's
+// tangents at the two end points meet; it is kept when the field there is much closer to the
+// level than at the chord's middle (a round join's tangents meet outside it, and are not).
+bool SharpCorner(const TriangleMesh& mesh,
+  OffsetField& field,
+  int t,
+  const CanonicalPoint& a,
+  const CanonicalPoint& b,
+  CanonicalPoint& corner)
+{
+  const Triangle& tri = mesh.GetTriangle(t);
+  const Vec3 p0 = mesh.GetPosition(tri[0]), p1 = mesh.GetPosition(tri[1]),
+             p2 = mesh.GetPosition(tri[2]);
+  const Vec3 e1 = p1 - p0, e2 = p2 - p0;
+  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
+  const double det = d11 * d22 - d12 * d12;
+  if (!(det > 0.0))
+  {
+    return false;
+  }
+  // Plane coordinates: x along e1, y normal to it in the plane.
+  const double l1 = std::sqrt(d11);
+  const Vec3 ux = (1.0 / l1) * e1;
+  const Vec3 uy0 = e2 - Dot(e2, ux) * ux;
+  const Vec3 uy = (1.0 / Length(uy0)) * uy0;
+  auto weightsOf = [&](double x, double y)
+  {
+    const Vec3 q = p0 + x * ux + y * uy;
+    const double b1 = Dot(q - p0, e1), b2 = Dot(q - p0, e2);
+    const double u = (d22 * b1 - d12 * b2) / det, v = (d11 * b2 - d12 * b1) / det;
+    return std::array<double, 3>{ 1.0 - u - v, u, v };
+  };
+  auto value = [&](double x, double y) { return field.InTriangle(t, weightsOf(x, y)); };
+  const Vec3 centroid = (1.0 / 3.0) * (p0 + p1 + p2);
+  const double cx = Dot(centroid - p0, ux), cy = Dot(centroid - p0, uy);
+  const double h = 1e-4 * l1;
+  Vec2 point[2], gradient[2];
+  const CanonicalPoint* ends[2] = { &a, &b };
+  for (int i = 0; i < 2; ++i)
+  {
+    const Vec3 x = PositionOf(mesh, *ends[i]);
+    const double px = Dot(x - p0, ux), py = Dot(x - p0, uy);
+    point[i] = { px, py };
+    // Just inside the triangle from the end point.
+    const double sx = px + 1e-2 * (cx - px), sy = py + 1e-2 * (cy - py);
+    const double f = value(sx, sy);
+    gradient[i] = { (value(sx + h, sy) - f) / h, (value(sx, sy + h) - f) / h };
+  }
+  const double g0 = Length(gradient[0]), g1 = Length(gradient[1]);
+  const double sine = Cross(gradient[0], gradient[1]) / (g0 * g1);
+  if (!(g0 > 0.0 && g1 > 0.0) || std::abs(sine) < 0.1)
+  {
+    return false; // the fronts turn by less than ~6 degrees: no corner to keep
+  }
+  // Tangent lines g_i . (x - p_i) = 0, solved by Cramer's rule.
+  const double r0 = Dot(gradient[0], point[0]), r1 = Dot(gradient[1], point[1]);
+  const double den = gradient[0].x * gradient[1].y - gradient[0].y * gradient[1].x;
+  const double x = (r0 * gradient[1].y - r1 * gradient[0].y) / den;
+  const double y = (gradient[0].x * r1 - gradient[1].x * r0) / den;
+  const std::array<double, 3> w = weightsOf(x, y);
+  if (!(w[0] > 1e-9 && w[1] > 1e-9 && w[2] > 1e-9))
+  {
+    return false;
+  }
+  const double mid = value(0.5 * (point[0].x + point[1].x), 0.5 * (point[0].y + point[1].y));
+  if (!(std::abs(value(x, y)) < 0.25 * std::abs(mid)))
+  {
+    return false;
+  }
+  SurfacePoint sp;
+  sp.Triangle = t;
+  sp.U = w[1];
+  sp.V = w[2];
+  corner = LocateSurfacePoint(mesh, sp);
+  return true;
+}
+
+// Length of a loop and its turning sense: the area it encloses projected on the mean normal of
+// the triangles it passes (positive: counter-clockwise, a region; negative: a hole). Only read
+// for loops far smaller than the surface's curvature radius.
+void LoopExtent(const TriangleMesh& mesh,
+  const std::vector<CanonicalPoint>& loop,
+  double& length,
+  double& area)
+{
+  Vec3 normal{ 0.0, 0.0, 0.0 }, twice{ 0.0, 0.0, 0.0 };
+  length = 0.0;
+  const Vec3 origin = PositionOf(mesh, loop[0]);
+  for (size_t i = 0; i < loop.size(); ++i)
+  {
+    const Vec3 a = PositionOf(mesh, loop[i]), b = PositionOf(mesh, loop[(i + 1) % loop.size()]);
+    length += Distance(a, b);
+    twice = twice + Cross(a - origin, b - origin);
+    const int t = AnyTriangleOf(mesh, loop[i]);
+    if (t >= 0)
+    {
+      const Triangle& tri = mesh.GetTriangle(t);
+      normal = normal +
+        Cross(mesh.GetPosition(tri[1]) - mesh.GetPosition(tri[0]),
+          mesh.GetPosition(tri[2]) - mesh.GetPosition(tri[0]));
+    }
+  }
+  const double n = Length(normal);
+  area = n > 0.0 ? 0.5 * Dot(twice, (1.0 / n) * normal) : 0.0;
+}
+
+// Outgoing boundary half-edge (3 t + k, from corner k to k + 1) of each boundary vertex.
+std::unordered_map<int, int> BoundaryNext(const MeshTopology& topology)
+{
+  std::unordered_map<int, int> next;
+  for (const BoundaryLoop& loop : topology.BoundaryLoops)
+  {
+    for (size_t i = 0; i < loop.HalfEdges.size(); ++i)
+    {
+      next.emplace(loop.Vertices[i], loop.HalfEdges[i]);
+    }
+  }
+  return next;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool ComputeGeodesicOffset(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const OffsetRegion& region,
+  const OffsetOptions& options,
+  std::vector<std::vector<CanonicalPoint>>& loops,
+  std::string& error,
+  OffsetStatistics* statistics)
+{
+  loops.clear();
+  OffsetStatistics stats;
+  const double d = options.Distance;
+  if (!std::isfinite(d))
+  {
+    error = "the offset distance is not a finite number";
+    return false;
+  }
+  if (region.Boundary.empty() && region.Bands.empty())
+  {
+    error = "the region to offset has no boundary and no open curve";
+    return false;
+  }
+  if (d == 0.0)
+  {
+    loops = region.Boundary; // the identity; a band of width 0 is empty
+    if (statistics)
+    {
+      *statistics = stats;
+    }
+    return true;
+  }
+  if (d < 0.0 && region.Boundary.empty())
+  {
+    error = "a negative distance shrinks a region, and only curves to draw bands around were given";
+    return false;
+  }
+  const Clock::time_point start = Clock::now();
+  OffsetField field(mesh, region, d);
+  if (!field.Compute(options, stats, error))
+  {
+    return false;
+  }
+  const Clock::time_point computed = Clock::now();
+  std::vector<int> reached;
+  field.ReachedVertices(reached);
+  stats.FieldVertices = static_cast<int>(reached.size());
+  Contour contour(mesh, field);
+  contour.Build(reached);
+  stats.CrossedTriangles = contour.GetNumberOfCrossedTriangles();
+
+  // Chains: follow the pieces from point to point. A chain that starts at a point no piece ends
+  // at (on a boundary edge of the surface) is open; the rest close on themselves.
+  const int np = static_cast<int>(contour.Points.size());
+  std::vector<char> used(contour.Pieces.size(), 0);
+  struct Chain
+  {
+    std::vector<int> Pieces;
+    bool Closed = false;
+  };
+  std::vector<Chain> chains;
+  auto follow = [&](int piece)
+  {
+    Chain chain;
+    while (piece >= 0 && !used[piece])
+    {
+      used[piece] = 1;
+      chain.Pieces.push_back(piece);
+      piece = contour.PieceFrom[contour.Pieces[piece].To];
+    }
+    chain.Closed = piece >= 0 && piece == chain.Pieces.front();
+    chains.push_back(std::move(chain));
+  };
+  for (int p = 0; p < np; ++p)
+  {
+    if (contour.PieceTo[p] < 0 && contour.PieceFrom[p] >= 0)
+    {
+      follow(contour.PieceFrom[p]);
+    }
+  }
+  for (size_t i = 0; i < contour.Pieces.size(); ++i)
+  {
+    if (!used[i])
+    {
+      follow(static_cast<int>(i));
+    }
+  }
+
+  auto appendChain = [&](const Chain& chain, std::vector<CanonicalPoint>& loop)
+  {
+    for (int id : chain.Pieces)
+    {
+      const Contour::Piece& piece = contour.Pieces[id];
+      const CanonicalPoint& a = contour.Points[piece.From];
+      if (loop.empty() || !(loop.back() == a))
+      {
+        loop.push_back(a);
+      }
+      CanonicalPoint corner;
+      if (!field.Touches(piece.Triangle) &&
+        SharpCorner(mesh, field, piece.Triangle, a, contour.Points[piece.To], corner))
+      {
+        loop.push_back(corner);
+      }
+      else if (options.Resolution > 0 && !field.Touches(piece.Triangle))
+      {
+        RefinePiece(
+          mesh, field, piece.Triangle, a, contour.Points[piece.To], options.Resolution, loop);
+      }
+    }
+    if (!chain.Closed)
+    {
+      loop.push_back(contour.Points[contour.Pieces[chain.Pieces.back()].To]);
+    }
+  };
+
+  // Open chains end on boundary edges of the surface: the region continues along the boundary
+  // (the surface is on the left of its half-edges) to the start of the next open chain.
+  std::unordered_map<int, int> chainStartingOnEdge; // boundary edge -> open chain
+  for (size_t i = 0; i < chains.size(); ++i)
+  {
+    if (!chains[i].Closed)
+    {
+      const int first = contour.Pieces[chains[i].Pieces.front()].From;
+      chainStartingOnEdge.emplace(contour.Points[first].Id, static_cast<int>(i));
+    }
+  }
+  const std::unordered_map<int, int> boundaryNext =
+    chainStartingOnEdge.empty() ? std::unordered_map<int, int>() : BoundaryNext(topology);
+  std::vector<char> placed(chains.size(), 0);
+  for (size_t i = 0; i < chains.size(); ++i)
+  {
+    if (placed[i])
+    {
+      continue;
+    }
+    std::vector<CanonicalPoint> loop;
+    int current = static_cast<int>(i);
+    while (!placed[current])
+    {
+      placed[current] = 1;
+      appendChain(chains[current], loop);
+      if (chains[current].Closed)
+      {
+        break;
+      }
+      // Walk the boundary from the chain's last point.
+      const int lastEdge = loop.back().Id;
+      int halfEdge = -1;
+      const int t = contour.Pieces[chains[current].Pieces.back()].Triangle;
+      for (int k = 0; k < 3; ++k)
+      {
+        if (mesh.GetEdgeId(t, k) == lastEdge)
+        {
+          halfEdge = 3 * t + k;
+        }
+      }
+      int next = -1;
+      for (int steps = 0; halfEdge >= 0 && steps <= mesh.GetNumberOfVertices(); ++steps)
+      {
+        const int ht = halfEdge / 3, hk = halfEdge % 3;
+        const int to = mesh.GetTriangle(ht)[(hk + 1) % 3];
+        if (field.AtVertex(to) >= 0.0)
+        {
+          break; // the offset region does not continue this way: inconsistent contour
+        }
+        CanonicalPoint vertex;
+        vertex.Location = PointLocation::Vertex;
+        vertex.Id = to;
+        loop.push_back(vertex);
+        const auto it = boundaryNext.find(to);
+        if (it == boundaryNext.end())
+        {
+          break;
+        }
+        halfEdge = it->second;
+        const auto starts = chainStartingOnEdge.find(mesh.GetEdgeId(halfEdge / 3, halfEdge % 3));
+        if (starts != chainStartingOnEdge.end())
+        {
+          next = starts->second;
+          break;
+        }
+      }
+      if (next < 0)
+      {
+        error = "the offset contour reaches the surface's boundary at edge " +
+          std::to_string(lastEdge) + " and cannot be closed along it";
+        return false;
+      }
+      current = next;
+    }
+    if (loop.size() < 3)
+    {
+      continue;
+    }
+    // Slivers: where a sharp corner of the offset region is thinner than the mesh, the contour
+    // of the mesh vertices' signs can split its tip off as a tiny loop. A grown region contains
+    // a disk of radius d around each of its boundary's points, so none of its parts is that
+    // small (and no hole of a shrunk region is): such loops are dropped.
+    double length, area;
+    LoopExtent(mesh, loop, length, area);
+    if (length < Pi * std::abs(d) && (d > 0.0 ? area > 0.0 : area < 0.0))
+    {
+      ++stats.DroppedSlivers;
+      continue;
+    }
+    loops.push_back(std::move(loop));
+  }
+  stats.ContourMilliseconds = Milliseconds(computed, Clock::now());
+  stats.FieldMilliseconds = Milliseconds(start, computed);
+  if (statistics)
+  {
+    *statistics = stats;
+  }
+  if (loops.empty())
+  {
+    if (d < 0.0)
+    {
+      error = "shrinking by " + std::to_string(-d) +
+        " leaves nothing: no point of the region is farther than that from its boundary";
+      return false;
+    }
+    // No contour: the grown region either covers every component it touches or (for an
+    // isolated region far from everything) is unchanged, which cannot happen for d > 0.
+    error = "growing by " + std::to_string(d) +
+      " covers the whole surface around the region (no boundary is left to draw)";
+    return false;
+  }
+  return true;
+}
+
+} // namespace boolsurf

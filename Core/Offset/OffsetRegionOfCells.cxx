@@ -1,0 +1,48 @@
+#include "Offset/OffsetRegionOfCells.h"
+
+#include "Selection/RegionBoundary.h"
+
+namespace boolsurf
+{
+
+//------------------------------------------------------------------------------
+OffsetRegion MakeOffsetRegion(const TriangleMesh& mesh,
+  const Arrangement& arrangement,
+  const std::vector<char>& selected)
+{
+  OffsetRegion region;
+  for (const BoundaryPolyline& line : ExtractRegionBoundary(arrangement.Patches, selected))
+  {
+    std::vector<CanonicalPoint> loop;
+    loop.reserve(line.Points.size());
+    for (int p : line.Points)
+    {
+      loop.push_back(arrangement.PointOnMesh[p]);
+    }
+    region.Boundary.push_back(std::move(loop));
+  }
+  const TriangleMesh* m = &mesh;
+  const Arrangement* arr = &arrangement;
+  const std::vector<char>* cells = &selected;
+  // Mesh vertices keep their ids in the refined surface: any refined triangle with v as a
+  // corner, among those that replace a mesh triangle around v, tells its cell.
+  region.InsideVertex = [m, arr, cells](int v)
+  {
+    for (int corner : m->GetVertexCorners(v))
+    {
+      const int t = corner / 3;
+      for (int r = arr->TriangleOffset[t]; r < arr->TriangleOffset[t + 1]; ++r)
+      {
+        const std::array<int, 3>& tri = arr->Triangles[r];
+        if (tri[0] == v || tri[1] == v || tri[2] == v)
+        {
+          return (*cells)[arr->TriangleCell[r]] != 0;
+        }
+      }
+    }
+    return false;
+  };
+  return region;
+}
+
+} // namespace boolsurf

@@ -1,0 +1,457 @@
+// Geodesic offsets (Core/Offset): flat meshes against Clipper's round-join offsets, a sphere
+// against Steiner's formula, the identity, closings, merging and nested fronts, bands around
+// open curves and around a loop on a torus handle, and the named refusals.
+#include "Arrangement/Arrangement.h"
+#include "Geodesic/CurveTracer.h"
+#include "Labeling/ArrangementLabelingInput.h"
+#include "Labeling/CellLabeling.h"
+#include "Mesh/MeshTopology.h"
+#include "Mesh/ProceduralMeshes.h"
+#include "Offset/GeodesicOffset.h"
+#include "Offset/OffsetRegionOfCells.h"
+#include "Support/SyntheticCurves.h"
+
+#include <gtest/gtest.h>
+#include <polyclipping/clipper.hpp>
+
+#include <cmath>
+
+using namespace boolsurf;
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+TriangleMesh MeshOf(const MeshData& d)
+{
+  return TriangleMesh(d.Positions, d.Triangles);
+}
+
+struct Labeled
+{
+  Arrangement Arr;
+  LabelingResult Labels;
+  std::vector<char> Selected; // cells with a non-zero label of shape index 0
+  double Area = 0;            // their area (3D)
+};
+
+// Arrangement, labels and the non-zero cells of the first shape of `curves`.
+Labeled Label(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  std::vector<TracedCurve> curves)
+{
+  Labeled out;
+  std::string error;
+  ArrangementOptions options;
+  options.Threads = 1;
+  EXPECT_TRUE(ComputeArrangement(mesh, curves, options, out.Arr, error)) << error;
+  out.Labels = LabelCells(MakeLabelingInput(mesh, topology, curves, out.Arr));
+  EXPECT_TRUE(out.Labels.ShapeConsistent[0]);
+  out.Selected.assign(out.Arr.NumberOfCells, 0);
+  for (int c = 0; c < out.Arr.NumberOfCells; ++c)
+  {
+    out.Selected[c] = out.Labels.GetLabel(c, 0) != 0;
+  }
+  for (size_t r = 0; r < out.Arr.Triangles.size(); ++r)
+  {
+    if (out.Selected[out.Arr.TriangleCell[r]])
+    {
+      const auto& t = out.Arr.Triangles[r];
+      out.Area += 0.5 *
+        Length(Cross(out.Arr.Positions[t[1]] - out.Arr.Positions[t[0]],
+          out.Arr.Positions[t[2]] - out.Arr.Positions[t[0]]));
+    }
+  }
+  return out;
+}
+
+std::vector<TracedCurve> AsCurves(const std::vector<std::vector<CanonicalPoint>>& loops, int shape)
+{
+  std::vector<TracedCurve> curves;
+  for (const auto& loop : loops)
+  {
+    TracedCurve c;
+    c.Points = loop;
+    c.Closed = true;
+    c.ShapeId = shape;
+    c.CurveId = static_cast<int>(curves.size());
+    curves.push_back(std::move(c));
+  }
+  return curves;
+}
+
+struct Offset
+{
+  bool Ok = false;
+  std::string Error;
+  std::vector<std::vector<CanonicalPoint>> Loops;
+  double Area = 0;
+  OffsetStatistics Stats;
+};
+
+// Offsets the non-zero region of `curves`' first shape (plus bands) and measures the result.
+Offset OffsetOf(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const std::vector<TracedCurve>& curves,
+  const std::vector<BandCurve>& bands,
+  OffsetOptions options)
+{
+  Offset out;
+  Labeled region;
+  OffsetRegion input;
+  if (!curves.empty())
+  {
+    region = Label(mesh, topology, curves);
+    input = MakeOffsetRegion(mesh, region.Arr, region.Selected);
+  }
+  input.Bands = bands;
+  out.Ok = ComputeGeodesicOffset(mesh, topology, input, options, out.Loops, out.Error, &out.Stats);
+  if (out.Ok)
+  {
+    out.Area = Label(mesh, topology, AsCurves(out.Loops, 0)).Area;
+  }
+  return out;
+}
+
+std::vector<Vec2> Circle(Vec2 center, double radius, int n)
+{
+  std::vector<Vec2> p;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = 2.0 * Pi * i / n;
+    p.push_back({ center.x + radius * std::cos(a), center.y + radius * std::sin(a) });
+  }
+  return p;
+}
+
+// Clipper's offset with round joins (arc tolerance 1e-7 of the unit square).
+constexpr double Scale = 1e9;
+double ClipperOffsetArea(const std::vector<std::vector<Vec2>>& polygons,
+  double delta,
+  ClipperLib::EndType ends)
+{
+  ClipperLib::ClipperOffset offset(2.0, 1e-7 * Scale);
+  for (const auto& polygon : polygons)
+  {
+    ClipperLib::Path path;
+    for (const Vec2& p : polygon)
+    {
+      path.push_back({ static_cast<ClipperLib::cInt>(std::llround(p.x * Scale)),
+        static_cast<ClipperLib::cInt>(std::llround(p.y * Scale)) });
+    }
+    offset.AddPath(path, ClipperLib::jtRound, ends);
+  }
+  ClipperLib::Paths solution;
+  offset.Execute(solution, delta * Scale);
+  double area = 0;
+  for (const auto& path : solution)
+  {
+    area += ClipperLib::Area(path);
+  }
+  return area / (Scale * Scale);
+}
+
+// An L-shaped hexagon (a concave corner, where growing fills in and shrinking rounds off).
+const std::vector<Vec2> LShape = { { 0.30, 0.25 },
+  { 0.70, 0.25 },
+  { 0.70, 0.45 },
+  { 0.50, 0.45 },
+  { 0.50, 0.75 },
+  { 0.30, 0.75 } };
+
+} // namespace
+
+TEST(GeodesicOffset, FlatGrowAndShrinkMatchClipperRoundJoins)
+{
+  // On a flat mesh geodesic distance is Euclidean: growing is Clipper's offset with round
+  // joins, shrinking its inward offset. Errors at mesh resolution: the contour's chords cut
+  // round joins by ~ h^2 / (8 d) per piece, and a sharp corner of a shrunk region thinner than
+  // a triangle loses its tip (~ h^2 / 4), so the error falls with h^2.
+  for (double d : { 0.08, -0.05 })
+  {
+    double coarsest = 0.0;
+    for (int n : { 32, 64, 128, 256 })
+    {
+      const TriangleMesh mesh = MeshOf(MakeFlatSquare(n, 1.0, 0.3, 7));
+      const MeshTopology topology = MeshTopology::Compute(mesh);
+      FlatPolygonTracer tracer(mesh);
+      TracedCurve curve;
+      ASSERT_TRUE(tracer.Trace(LShape, true, 0, 0, curve));
+      OffsetOptions options;
+      options.Distance = d;
+      const Offset result = OffsetOf(mesh, topology, { curve }, {}, options);
+      ASSERT_TRUE(result.Ok) << result.Error;
+      EXPECT_EQ(result.Loops.size(), 1u);
+      const double expected = ClipperOffsetArea({ LShape }, d, ClipperLib::etClosedPolygon);
+      const double error = std::abs(result.Area - expected) / expected;
+      const double bound = d > 0 || n >= 128 ? 1e-3 : 2.5e-3;
+      EXPECT_LT(error, bound) << "d " << d << ", " << n << " cells";
+      if (n == 32)
+      {
+        coarsest = error;
+      }
+      else if (n == 256)
+      {
+        EXPECT_LT(error, 0.1 * coarsest) << "converges as the mesh refines, d " << d;
+      }
+    }
+  }
+}
+
+TEST(GeodesicOffset, ResolutionPointsFollowTheRoundJoins)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(32, 1.0, 0.3, 3));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  FlatPolygonTracer tracer(mesh);
+  TracedCurve curve;
+  ASSERT_TRUE(tracer.Trace(LShape, true, 0, 0, curve));
+  const double expected = ClipperOffsetArea({ LShape }, 0.08, ClipperLib::etClosedPolygon);
+  OffsetOptions options;
+  options.Distance = 0.08;
+  const Offset coarse = OffsetOf(mesh, topology, { curve }, {}, options);
+  options.Resolution = 3;
+  const Offset fine = OffsetOf(mesh, topology, { curve }, {}, options);
+  ASSERT_TRUE(coarse.Ok && fine.Ok) << coarse.Error << fine.Error;
+  EXPECT_GT(fine.Loops[0].size(), 3 * coarse.Loops[0].size());
+  EXPECT_LT(std::abs(fine.Area - expected), 0.2 * std::abs(coarse.Area - expected));
+}
+
+TEST(GeodesicOffset, ZeroDistanceIsTheIdentity)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(32, 1.0, 0.3, 5));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  FlatPolygonTracer tracer(mesh);
+  TracedCurve curve;
+  ASSERT_TRUE(tracer.Trace(LShape, true, 0, 0, curve));
+  const Labeled shape = Label(mesh, topology, { curve });
+  OffsetOptions options;
+  options.Distance = 0.0;
+  const Offset same = OffsetOf(mesh, topology, { curve }, {}, options);
+  ASSERT_TRUE(same.Ok) << same.Error;
+  ASSERT_EQ(same.Loops.size(), 1u);
+  EXPECT_NEAR(same.Area, shape.Area, 1e-12);
+  EXPECT_NEAR(shape.Area, 0.4 * 0.2 + 0.2 * 0.3, 1e-12);
+}
+
+TEST(GeodesicOffset, GrowThenShrinkIsAClosingThatContainsTheShape)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(128, 1.0, 0.3, 11));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  FlatPolygonTracer tracer(mesh);
+  TracedCurve curve;
+  ASSERT_TRUE(tracer.Trace(LShape, true, 0, 0, curve));
+  OffsetOptions options;
+  options.Distance = 0.06;
+  const Offset grown = OffsetOf(mesh, topology, { curve }, {}, options);
+  ASSERT_TRUE(grown.Ok) << grown.Error;
+  options.Distance = -0.06;
+  const Offset closed = OffsetOf(mesh, topology, AsCurves(grown.Loops, 0), {}, options);
+  ASSERT_TRUE(closed.Ok) << closed.Error;
+  // The closing fills the concave corner with a fillet of radius d: (1 - pi / 4) d^2 more.
+  const double shapeArea = 0.4 * 0.2 + 0.2 * 0.3;
+  EXPECT_NEAR(closed.Area, shapeArea + (1.0 - Pi / 4.0) * 0.06 * 0.06, 1e-3 * shapeArea);
+  // It contains the shape: shape minus closing has (almost) no area.
+  std::vector<TracedCurve> both = { curve };
+  for (TracedCurve c : AsCurves(closed.Loops, 1))
+  {
+    c.CurveId += 1;
+    both.push_back(c);
+  }
+  const Labeled together = Label(mesh, topology, both);
+  double outside = 0;
+  for (size_t r = 0; r < together.Arr.Triangles.size(); ++r)
+  {
+    const int cell = together.Arr.TriangleCell[r];
+    if (together.Labels.GetLabel(cell, 0) != 0 && together.Labels.GetLabel(cell, 1) == 0)
+    {
+      const auto& t = together.Arr.Triangles[r];
+      outside += 0.5 *
+        Length(Cross(together.Arr.Positions[t[1]] - together.Arr.Positions[t[0]],
+          together.Arr.Positions[t[2]] - together.Arr.Positions[t[0]]));
+    }
+  }
+  // Only the shape's sharp corners may poke out of the closing, by their tips at mesh
+  // resolution (~ h^2 / 4 each).
+  EXPECT_LT(outside, 1e-3 * shapeArea);
+}
+
+TEST(GeodesicOffset, FrontsMergeAndHolesClose)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(64, 1.0, 0.3, 13));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  FlatPolygonTracer tracer(mesh);
+  // Two squares 0.1 apart: grown by 0.06 they merge into one region.
+  const std::vector<Vec2> a = { { 0.2, 0.3 }, { 0.4, 0.3 }, { 0.4, 0.7 }, { 0.2, 0.7 } };
+  const std::vector<Vec2> b = { { 0.5, 0.3 }, { 0.7, 0.3 }, { 0.7, 0.7 }, { 0.5, 0.7 } };
+  TracedCurve ca, cb;
+  ASSERT_TRUE(tracer.Trace(a, true, 0, 0, ca));
+  ASSERT_TRUE(tracer.Trace(b, true, 0, 1, cb));
+  OffsetOptions options;
+  options.Distance = 0.06;
+  const Offset merged = OffsetOf(mesh, topology, { ca, cb }, {}, options);
+  ASSERT_TRUE(merged.Ok) << merged.Error;
+  EXPECT_EQ(merged.Loops.size(), 1u);
+  EXPECT_NEAR(merged.Area,
+    ClipperOffsetArea({ a, b }, 0.06, ClipperLib::etClosedPolygon),
+    1e-3 * merged.Area);
+  // Touching squares (sharing the side x = 0.4) shrink as one region: the shared side is not
+  // a boundary.
+  const std::vector<Vec2> c = { { 0.4, 0.3 }, { 0.6, 0.3 }, { 0.6, 0.7 }, { 0.4, 0.7 } };
+  TracedCurve cc;
+  ASSERT_TRUE(tracer.Trace(c, true, 0, 1, cc));
+  options.Distance = -0.05;
+  const Offset touching = OffsetOf(mesh, topology, { ca, cc }, {}, options);
+  ASSERT_TRUE(touching.Ok) << touching.Error;
+  EXPECT_EQ(touching.Loops.size(), 1u);
+  EXPECT_NEAR(touching.Area, 0.3 * 0.3, 1e-3 * 0.09);
+  // A square ring (outer counter-clockwise, inner clockwise): growing by more than the hole's
+  // half width closes the hole; shrinking by a little keeps it, one loop each side.
+  const std::vector<Vec2> outer = { { 0.2, 0.2 }, { 0.8, 0.2 }, { 0.8, 0.8 }, { 0.2, 0.8 } };
+  const std::vector<Vec2> hole = { { 0.45, 0.45 }, { 0.45, 0.55 }, { 0.55, 0.55 }, { 0.55, 0.45 } };
+  TracedCurve co, ch;
+  ASSERT_TRUE(tracer.Trace(outer, true, 0, 0, co));
+  ASSERT_TRUE(tracer.Trace(hole, true, 0, 1, ch));
+  options.Distance = 0.06;
+  const Offset filled = OffsetOf(mesh, topology, { co, ch }, {}, options);
+  ASSERT_TRUE(filled.Ok) << filled.Error;
+  EXPECT_EQ(filled.Loops.size(), 1u);
+  options.Distance = -0.02;
+  const Offset ring = OffsetOf(mesh, topology, { co, ch }, {}, options);
+  ASSERT_TRUE(ring.Ok) << ring.Error;
+  EXPECT_EQ(ring.Loops.size(), 2u);
+  EXPECT_NEAR(ring.Area,
+    ClipperOffsetArea({ outer, hole }, -0.02, ClipperLib::etClosedPolygon),
+    1e-3 * ring.Area);
+}
+
+TEST(GeodesicOffset, BandsAroundOpenCurvesMatchClipper)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(64, 1.0, 0.3, 17));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  FlatPolygonTracer tracer(mesh);
+  const std::vector<Vec2> path = { { 0.2, 0.3 }, { 0.6, 0.35 }, { 0.7, 0.7 } };
+  TracedCurve open;
+  ASSERT_TRUE(tracer.Trace(path, false, 0, 0, open));
+  BandCurve band;
+  band.Points = open.Points;
+  for (OffsetEndStyle ends : { OffsetEndStyle::Round, OffsetEndStyle::Flat })
+  {
+    OffsetOptions options;
+    options.Distance = 0.05;
+    options.Ends = ends;
+    const Offset result = OffsetOf(mesh, topology, {}, { band }, options);
+    ASSERT_TRUE(result.Ok) << result.Error;
+    EXPECT_EQ(result.Loops.size(), 1u);
+    const double expected = ClipperOffsetArea({ path },
+      0.05,
+      ends == OffsetEndStyle::Round ? ClipperLib::etOpenRound : ClipperLib::etOpenButt);
+    EXPECT_NEAR(result.Area, expected, 2e-3 * expected) << static_cast<int>(ends);
+  }
+}
+
+TEST(GeodesicOffset, SphereCapsFollowSteinersFormula)
+{
+  // On the unit sphere the points within d of a convex region of area A and perimeter L cover
+  // 2 pi - (2 pi - A) cos d + L sin d; shrinking a cap-like region by d leaves
+  // 2 pi - (2 pi - A) cos d - L sin d.
+  const TriangleMesh mesh = MeshOf(MakeIcosphere(5));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  CurveTracer tracer(mesh);
+  const double theta = 0.6;
+  std::vector<SurfacePoint> control;
+  for (int i = 0; i < 48; ++i)
+  {
+    const double a = 2.0 * Pi * i / 48;
+    const Vec3 x{ std::sin(theta) * std::cos(a), std::sin(theta) * std::sin(a), std::cos(theta) };
+    int best = 0;
+    double bestDistance = 1e300;
+    for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+    {
+      const Triangle& tri = mesh.GetTriangle(t);
+      const Vec3 c = (1.0 / 3.0) *
+        (mesh.GetPosition(tri[0]) + mesh.GetPosition(tri[1]) + mesh.GetPosition(tri[2]));
+      if (Distance(c, x) < bestDistance)
+      {
+        bestDistance = Distance(c, x);
+        best = t;
+      }
+    }
+    control.push_back(PointInTriangle(mesh, best, x));
+  }
+  CurveTrace trace;
+  ASSERT_TRUE(tracer.Trace(control, CurveType::GeodesicPolygon, true, trace).Ok);
+  const TracedCurve curve = trace.Curve;
+  const Labeled shape = Label(mesh, topology, { curve });
+  const double area = std::min(shape.Area, 4.0 * Pi - shape.Area);
+  const double length = trace.Length;
+  for (double d : { 0.15, -0.15 })
+  {
+    OffsetOptions options;
+    options.Distance = d;
+    Offset result = OffsetOf(mesh, topology, { curve }, {}, options);
+    ASSERT_TRUE(result.Ok) << result.Error;
+    EXPECT_EQ(result.Loops.size(), 1u);
+    const double sign = d > 0 ? 1.0 : -1.0;
+    const double expected =
+      2.0 * Pi - (2.0 * Pi - area) * std::cos(d) + sign * length * std::sin(std::abs(d));
+    const double got = std::min(result.Area, 4.0 * Pi - result.Area);
+    // The icosphere's own area and distances differ from the sphere's by ~ 1e-3.
+    EXPECT_NEAR(got - area, expected - area, 5e-3 * std::abs(expected - area)) << d;
+  }
+}
+
+TEST(GeodesicOffset, BandAroundATorusMeridianIsAnAnnulus)
+{
+  const double R = 1.0, r = 0.4;
+  const TriangleMesh mesh = MeshOf(MakeTorus(R, r, 96, 48));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  // The meridian at angle 0 runs along mesh edges (a loop of vertices), a geodesic.
+  BandCurve meridian;
+  meridian.Closed = true;
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    const Vec3 p = mesh.GetPosition(v);
+    if (std::abs(p.y) < 1e-12 && p.x > 0)
+    {
+      CanonicalPoint c;
+      c.Location = PointLocation::Vertex;
+      c.Id = v;
+      meridian.Points.push_back(c);
+    }
+  }
+  ASSERT_EQ(meridian.Points.size(), 48u);
+  std::sort(meridian.Points.begin(),
+    meridian.Points.end(),
+    [&](const CanonicalPoint& a, const CanonicalPoint& b)
+    {
+      const Vec3 pa = mesh.GetPosition(a.Id), pb = mesh.GetPosition(b.Id);
+      return std::atan2(pa.z, pa.x - R) < std::atan2(pb.z, pb.x - R);
+    });
+  OffsetOptions options;
+  options.Distance = 0.1;
+  const Offset band = OffsetOf(mesh, topology, {}, { meridian }, options);
+  ASSERT_TRUE(band.Ok) << band.Error;
+  // Two loops, each going once around the tube, bounding a consistent region: an annulus whose
+  // area is about 2 d times the meridian's length (the parallel curves of a meridian are
+  // longer outside and shorter inside, and cancel to first order).
+  ASSERT_EQ(band.Loops.size(), 2u);
+  EXPECT_NEAR(band.Area, 2.0 * 0.1 * 2.0 * Pi * r, 0.03 * band.Area);
+}
+
+TEST(GeodesicOffset, RefusalsAreNamed)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(32, 1.0, 0.3, 19));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  FlatPolygonTracer tracer(mesh);
+  TracedCurve curve;
+  ASSERT_TRUE(tracer.Trace(LShape, true, 0, 0, curve));
+  OffsetOptions options;
+  options.Distance = std::nan("");
+  Offset result = OffsetOf(mesh, topology, { curve }, {}, options);
+  EXPECT_FALSE(result.Ok);
+  EXPECT_NE(result.Error.find("not a finite number"), std::string::npos) << result.Error;
+  options.Distance = -0.2; // the L's arms are 0.2 wide: nothing is 0.2 inside
+  result = OffsetOf(mesh, topology, { curve }, {}, options);
+  EXPECT_FALSE(result.Ok);
+  EXPECT_NE(result.Error.find("leaves nothing"), std::string::npos) << result.Error;
+}
