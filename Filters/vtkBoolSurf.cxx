@@ -9,12 +9,14 @@
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
+#include "vtkBoolSurfOffsetStage.h"
 #include "vtkBoolSurfRegionOutput.h"
 #include "vtkBoolSurfResolveStage.h"
 #include "vtkBoolSurfSelectionOutput.h"
 #include "vtkBoolSurfTraceStage.h"
 
 #include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkGenericCell.h>
@@ -24,6 +26,7 @@
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkStringArray.h>
 
@@ -66,6 +69,8 @@ struct vtkBoolSurf::Internals
   double TraceTime = 0, LabelingTime = 0;
   /// What the resolution of inconsistent shapes did (ResolveStrategy >= 0), one note per shape.
   std::vector<std::string> ResolutionNotes;
+  /// The offset step's statistics (OffsetShape >= 0), for the region's field data.
+  vtkSmartPointer<vtkDataArray> OffsetStatistics;
 
   /// What the labeled arrangement was computed from (the inputs by identity and time, and the
   /// tracing and labeling properties).
@@ -83,10 +88,14 @@ struct vtkBoolSurf::Internals
     int NumberOfThreads = 0;
     int ResolveStrategy = -1;
     double ResolveOffset = 0;
+    int OffsetShape = -1;
+    double OffsetDistance = 0;
 
     bool operator==(const Key& o) const
     {
-      if (this->ResolveStrategy != o.ResolveStrategy || this->ResolveOffset != o.ResolveOffset)
+      if (this->ResolveStrategy != o.ResolveStrategy || this->ResolveOffset != o.ResolveOffset ||
+        this->OffsetShape != o.OffsetShape ||
+        (this->OffsetShape >= 0 && !(this->OffsetDistance == o.OffsetDistance)))
       {
         return false;
       }
@@ -162,7 +171,9 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
     { this->ZeroCellPoint[0], this->ZeroCellPoint[1], this->ZeroCellPoint[2] },
     this->NumberOfThreads,
     this->ResolveStrategy,
-    this->ResolveOffset };
+    this->ResolveOffset,
+    this->OffsetShape,
+    this->OffsetDistance };
   const bool reuse = in.HasLabels && key == in.LabeledKey;
   if (!reuse)
   {
@@ -299,6 +310,29 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     }
     curvesInput = resolved;
   }
+  // Optional step: the offset shape replaces the shape.
+  in.OffsetStatistics = nullptr;
+  vtkNew<vtkPolyData> offset;
+  if (this->OffsetShape >= 0 && curvesInput)
+  {
+    boolsurf::OffsetStageOptions options;
+    options.Distance = this->OffsetDistance;
+    options.Shapes = { this->OffsetShape };
+    options.OutputShapeId = this->OffsetShape;
+    options.ReplaceShapes = true;
+    options.Resolution = this->Resolution;
+    options.ProjectionTolerance = this->ProjectionTolerance;
+    options.Method = traceOptions.Method;
+    options.Threads = this->NumberOfThreads;
+    if (!boolsurf::OffsetControlCurves(
+          this->GetSurfaceCache(), curvesInput, options, offset, notes, error))
+    {
+      error = "OffsetShape: " + error;
+      return false;
+    }
+    in.OffsetStatistics = offset->GetFieldData()->GetArray("OffsetStatistics");
+    curvesInput = offset;
+  }
   const bool ok = boolsurf::TraceControlCurves(this->GetSurfaceCache(),
     curvesInput,
     traceOptions,
@@ -405,6 +439,10 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
   // The labels of the arrangement's cells (rows: ArrangementCell), for coloring the region by a
   // shape without per-triangle label arrays.
   boolsurf::AddLabelTable(in.Labels, fd);
+  if (in.OffsetStatistics)
+  {
+    fd->AddArray(in.OffsetStatistics);
+  }
   if (!in.ResolutionNotes.empty())
   {
     vtkNew<vtkStringArray> notes;
@@ -472,4 +510,6 @@ void vtkBoolSurf::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FillRule: " << this->FillRule << "\n";
   os << indent << "Selection: " << (this->Selection == BSC_SELECTION ? "BSC" : "Boolean") << "\n";
   os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
+  os << indent << "OffsetShape: " << this->OffsetShape
+     << " OffsetDistance: " << this->OffsetDistance << "\n";
 }

@@ -177,6 +177,17 @@ public:
   ///@}
 
   ///@{
+  /// Optional step before the Boolean: offset shape OffsetShape (its region; -1, the default:
+  /// none) by the geodesic distance OffsetDistance (> 0 grows, < 0 shrinks), as
+  /// vtkBoolSurfOffset does, and use the offset in its place in the Boolean. The region's
+  /// field data OffsetStatistics says what it cost.
+  vtkSetClampMacro(OffsetShape, int, -1, VTK_INT_MAX);
+  vtkGetMacro(OffsetShape, int);
+  vtkSetMacro(OffsetDistance, double);
+  vtkGetMacro(OffsetDistance, double);
+  ///@}
+
+  ///@{
   /// Whether ports 2 and 3 are computed (default on): the result's boundary and the clipped
   /// open curves as control points of the input curves (see Docs/VectorOutput.md). Off leaves
   /// them empty and saves their cost (geodesic de Casteljau splits of Bezier curves).
@@ -216,6 +227,8 @@ protected:
   int MaxSearchStates = 64;
   int ResolveStrategy = -1;
   double ResolveOffset = 0;
+  int OffsetShape = -1;
+  double OffsetDistance = 0;
   vtkTypeBool ComputeControlCurves = 1;
 
 private:

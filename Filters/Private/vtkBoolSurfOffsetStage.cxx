@@ -1,0 +1,344 @@
+#include "vtkBoolSurfOffsetStage.h"
+
+#include "vtkBoolSurfArrayNames.h"
+
+#include "Arrangement/Arrangement.h"
+#include "Labeling/ArrangementLabelingInput.h"
+#include "Labeling/CellLabeling.h"
+#include "Offset/OffsetRegionOfCells.h"
+#include "Selection/BooleanExpression.h"
+#include "vtkBoolSurfBooleanStage.h"
+#include "vtkBoolSurfControlCurves.h"
+#include "vtkBoolSurfTraceStage.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+
+#include <algorithm>
+#include <chrono>
+#include <set>
+
+namespace boolsurf
+{
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+// The control-curve form every BoolSurf filter reads: one polyline per curve (closed ones
+// repeat their first point id), exact surface points, ShapeId, CurveType, Closed, OffsetCurve.
+class ControlCurveWriter
+{
+public:
+  explicit ControlCurveWriter(const TriangleMesh& mesh)
+    : Mesh(mesh)
+  {
+    this->Points->SetDataTypeToDouble();
+    this->TriangleId->SetName(names::TriangleId);
+    this->Barycentric->SetName(names::Barycentric);
+    this->Barycentric->SetNumberOfComponents(2);
+    this->Shape->SetName(names::ShapeId);
+    this->Type->SetName(names::CurveType);
+    this->Closed->SetName(names::Closed);
+    this->Offset->SetName("OffsetCurve");
+  }
+
+  void Add(const std::vector<SurfacePoint>& points, int shape, int type, bool closed, int offset)
+  {
+    const vtkIdType first = this->Points->GetNumberOfPoints();
+    for (const SurfacePoint& p : points)
+    {
+      const Vec3 x = this->Mesh.Evaluate(p.Triangle, p.U, p.V);
+      this->Points->InsertNextPoint(x.x, x.y, x.z);
+      this->TriangleId->InsertNextValue(p.Triangle);
+      this->Barycentric->InsertNextTuple2(p.U, p.V);
+    }
+    const vtkIdType n = static_cast<vtkIdType>(points.size());
+    const bool repeat = closed && n > 1;
+    this->Lines->InsertNextCell(n + (repeat ? 1 : 0));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      this->Lines->InsertCellPoint(first + i);
+    }
+    if (repeat)
+    {
+      this->Lines->InsertCellPoint(first);
+    }
+    this->Shape->InsertNextValue(shape);
+    this->Type->InsertNextValue(type);
+    this->Closed->InsertNextValue(closed ? 1 : 0);
+    this->Offset->InsertNextValue(offset);
+  }
+
+  void Write(vtkPolyData* output)
+  {
+    output->SetPoints(this->Points);
+    output->SetLines(this->Lines);
+    output->GetPointData()->AddArray(this->TriangleId);
+    output->GetPointData()->AddArray(this->Barycentric);
+    for (vtkDataArray* a : { static_cast<vtkDataArray*>(this->Shape),
+           static_cast<vtkDataArray*>(this->Type),
+           static_cast<vtkDataArray*>(this->Closed),
+           static_cast<vtkDataArray*>(this->Offset) })
+    {
+      output->GetCellData()->AddArray(a);
+    }
+  }
+
+private:
+  const TriangleMesh& Mesh;
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Lines;
+  vtkNew<vtkIdTypeArray> TriangleId;
+  vtkNew<vtkDoubleArray> Barycentric;
+  vtkNew<vtkIntArray> Shape, Type, Closed, Offset;
+};
+
+// An offset loop as control points: each point written in a triangle it shares with the next
+// one, so the geodesic polygon through them is the loop itself.
+std::vector<SurfacePoint> LoopControlPoints(const TriangleMesh& mesh,
+  const std::vector<CanonicalPoint>& loop)
+{
+  std::vector<SurfacePoint> points;
+  points.reserve(loop.size());
+  for (size_t i = 0; i < loop.size(); ++i)
+  {
+    const int shared = SharedTriangle(mesh, loop[i], loop[(i + 1) % loop.size()]);
+    points.push_back(WriteSurfacePoint(mesh, loop[i], shared));
+  }
+  return points;
+}
+
+void AddStatistics(const OffsetStatistics& s, double total, vtkFieldData* fd)
+{
+  const char* names[] = { "Sources",
+    "Windows",
+    "FieldVertices",
+    "CrossedTriangles",
+    "DroppedSlivers",
+    "FieldMilliseconds",
+    "ContourMilliseconds",
+    "TotalMilliseconds" };
+  const double values[] = { static_cast<double>(s.Sources),
+    static_cast<double>(s.Windows),
+    static_cast<double>(s.FieldVertices),
+    static_cast<double>(s.CrossedTriangles),
+    static_cast<double>(s.DroppedSlivers),
+    s.FieldMilliseconds,
+    s.ContourMilliseconds,
+    total };
+  vtkNew<vtkDoubleArray> stats;
+  stats->SetName("OffsetStatistics");
+  stats->SetNumberOfComponents(8);
+  for (int k = 0; k < 8; ++k)
+  {
+    stats->SetComponentName(k, names[k]);
+  }
+  stats->InsertNextTuple(values);
+  fd->AddArray(stats);
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool OffsetControlCurves(vtkSurfaceCache& cache,
+  vtkPolyData* curves,
+  const OffsetStageOptions& options,
+  vtkPolyData* output,
+  std::vector<std::string>& notes,
+  std::string& error)
+{
+  const Clock::time_point start = Clock::now();
+  const vtkSurfaceInput& surface = cache.GetCurrent();
+  const TriangleMesh& mesh = *surface.Mesh;
+  if (!std::isfinite(options.Distance))
+  {
+    error = "Distance is not a finite number";
+    return false;
+  }
+  // 1. the control curves (kept for the output) and their traces
+  ControlCurveOptions controlOptions;
+  controlOptions.MaximumDistance = options.ProjectionTolerance * surface.Triangles->GetLength();
+  std::vector<ControlCurve> controls;
+  std::vector<std::string> problems;
+  ReadControlCurves(
+    curves,
+    [&cache] { return cache.GetLocator(); },
+    mesh,
+    controlOptions,
+    controls,
+    problems,
+    notes);
+  TraceOptions traceOptions;
+  traceOptions.Resolution = options.Resolution;
+  traceOptions.ProjectionTolerance = options.ProjectionTolerance;
+  traceOptions.Method = options.Method;
+  std::vector<TracedCurve> traced;
+  if (!problems.empty() ||
+    !TraceControlCurves(cache, curves, traceOptions, nullptr, traced, nullptr, problems, notes))
+  {
+    error = "Cannot trace the curves:" + JoinLines(problems);
+    return false;
+  }
+  std::set<int> idSet;
+  for (const TracedCurve& c : traced)
+  {
+    idSet.insert(c.ShapeId);
+  }
+  const std::vector<int> ids(idSet.begin(), idSet.end());
+  if (ids.empty())
+  {
+    error = "the curves input has no curves to offset";
+    return false;
+  }
+
+  // 2. which shapes: the expression's, or the listed ones, or all
+  std::string text = options.Expression;
+  if (text.empty())
+  {
+    const std::vector<int>& listed = options.Shapes.empty() ? ids : options.Shapes;
+    for (int id : listed)
+    {
+      if (!idSet.count(id))
+      {
+        std::string known;
+        for (int k : ids)
+        {
+          known += (known.empty() ? "" : ", ") + std::to_string(k);
+        }
+        error = "Shapes names shape " + std::to_string(id) +
+          ", which no curve has (the curves' ShapeIds: " + known + ")";
+        return false;
+      }
+      text += (text.empty() ? "S" : " | S") + std::to_string(id);
+    }
+  }
+  BooleanExpression expression;
+  if (!expression.Parse(text, ids, error))
+  {
+    error = "Expression '" + text + "': " + error;
+    return false;
+  }
+  std::set<int> operands;
+  for (int index : expression.GetShapes())
+  {
+    operands.insert(ids[index]);
+  }
+
+  // 3. the region (arrangement, labels, selection) and the bands
+  Arrangement arrangement;
+  LabelingResult labels;
+  std::vector<char> selected;
+  OffsetRegion region;
+  std::vector<TracedCurve> closed;
+  for (const TracedCurve& c : traced)
+  {
+    const bool operand = operands.count(c.ShapeId) != 0;
+    if (operand && (options.Bands || !c.Closed))
+    {
+      region.Bands.push_back({ c.Points, c.Closed });
+    }
+    else if (c.Closed && !options.Bands && operand)
+    {
+      closed.push_back(c);
+    }
+  }
+  if (!options.Bands && !closed.empty())
+  {
+    ArrangementOptions arrangementOptions;
+    arrangementOptions.Threads = options.Threads;
+    if (!ComputeArrangement(mesh, closed, arrangementOptions, arrangement, error))
+    {
+      error = "Arrangement of the shapes to offset failed: " + error;
+      return false;
+    }
+    labels = LabelCells(MakeLabelingInput(mesh, *surface.Topology, closed, arrangement));
+    BooleanRequest request;
+    request.Operation = BooleanOperation::Expression;
+    request.Expression = text;
+    request.Rule = static_cast<FillRule>(options.FillRule);
+    std::string ran;
+    if (!SelectRequestedCells(labels, request, selected, ran, error))
+    {
+      return false;
+    }
+    const OffsetRegion cells = MakeOffsetRegion(mesh, arrangement, selected);
+    region.Boundary = cells.Boundary;
+    region.InsideVertex = cells.InsideVertex;
+  }
+
+  // 4. the offset
+  OffsetOptions offset;
+  offset.Distance = options.Distance;
+  offset.Ends = options.Ends;
+  offset.Resolution = options.OutputResolution;
+  std::vector<std::vector<CanonicalPoint>> loops;
+  OffsetStatistics statistics;
+  if (region.Boundary.empty() && region.Bands.empty())
+  {
+    error = "'" + text + "' is empty: there is nothing to offset";
+    return false;
+  }
+  if (!ComputeGeodesicOffset(mesh, *surface.Topology, region, offset, loops, error, &statistics))
+  {
+    error = "Cannot offset '" + text + "' by " + std::to_string(options.Distance) + ": " + error;
+    return false;
+  }
+
+  // 5. the output control curves
+  const int outputShape = options.OutputShapeId >= 0 ? options.OutputShapeId : ids.back() + 1;
+  if (options.KeepInputCurves && !options.ReplaceShapes && idSet.count(outputShape))
+  {
+    notes.push_back("OutputShapeId " + std::to_string(outputShape) +
+      " is also an input shape: the offset loops join that shape's curves");
+  }
+  ControlCurveWriter writer(mesh);
+  if (options.KeepInputCurves)
+  {
+    for (const ControlCurve& c : controls)
+    {
+      if (options.ReplaceShapes && operands.count(c.ShapeId))
+      {
+        continue;
+      }
+      writer.Add(c.Points, c.ShapeId, static_cast<int>(c.Type), c.Closed, 0);
+    }
+  }
+  for (const auto& loop : loops)
+  {
+    writer.Add(LoopControlPoints(mesh, loop),
+      outputShape,
+      static_cast<int>(CurveType::GeodesicPolygon),
+      true,
+      1);
+  }
+  output->Initialize();
+  writer.Write(output);
+  vtkFieldData* fd = output->GetFieldData();
+  vtkNew<vtkDoubleArray> distance;
+  distance->SetName("OffsetDistance");
+  distance->InsertNextValue(options.Distance);
+  fd->AddArray(distance);
+  vtkNew<vtkIntArray> shape;
+  shape->SetName("OffsetShapeId");
+  shape->InsertNextValue(outputShape);
+  fd->AddArray(shape);
+  vtkNew<vtkStringArray> what;
+  what->SetName("OffsetExpression");
+  what->InsertNextValue(options.Bands ? "bands around " + text : text);
+  fd->AddArray(what);
+  AddStatistics(
+    statistics, std::chrono::duration<double, std::milli>(Clock::now() - start).count(), fd);
+  return true;
+}
+
+} // namespace boolsurf
