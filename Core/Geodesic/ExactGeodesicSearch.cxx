@@ -183,6 +183,10 @@ void ExactGeodesicSearch::AddWindow(const Window& w)
   {
     return;
   }
+  if (this->FieldMode && this->Allowed && !this->Allowed(w.Face))
+  {
+    return;
+  }
   auto distanceAt = [&](double b) { return w.Sigma + Hypot(w.Sx - b, w.Sy); };
   double nearest = w.Sx;
   nearest = std::min(w.B1, std::max(w.B0, nearest));
@@ -389,6 +393,10 @@ void ExactGeodesicSearch::EmitFromVertex(int v)
   for (int corner : mesh.GetVertexCorners(v))
   {
     const int t = corner / 3, k = corner % 3;
+    if (this->FieldMode && this->Allowed && !this->Allowed(t))
+    {
+      continue;
+    }
     const Triangle& tri = mesh.GetTriangle(t);
     for (int j = 1; j <= 2; ++j)
     {

@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace boolsurf
@@ -71,6 +72,13 @@ public:
   /// At barycentric weights `w` (of its corners in order) inside triangle `face`: the windows
   /// lighting it, the paths through its corners and the sources in it.
   double GetFieldDistanceInTriangle(int face, const std::array<double, 3>& w) const;
+  /// Field mode only: triangles for which `allowed` returns false are never entered (no window
+  /// lights them, no path crosses them), for a caller that needs the field on one side of its
+  /// sources only. Empty (default): every triangle.
+  void SetFieldTriangleFilter(std::function<bool(int)> allowed)
+  {
+    this->Allowed = std::move(allowed);
+  }
   /// Vertices whose distance was set by the last field computation (settled or not).
   const std::vector<int>& GetFieldVertices() const { return this->FieldVertices; }
   ///@}
@@ -149,6 +157,7 @@ private:
   std::vector<std::uint32_t> FaceStamp;            //
   std::vector<Vec3> FieldSources;                  // positions of the field's sources
   std::vector<int> FieldVertices;
+  std::function<bool(int)> Allowed;
 };
 
 } // namespace boolsurf

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -106,13 +107,29 @@ struct EndCap
 class OffsetField
 {
 public:
-  OffsetField(const TriangleMesh& mesh, const OffsetRegion& region, double distance)
+  OffsetField(const TriangleMesh& mesh,
+    const OffsetRegion& region,
+    double distance,
+    OffsetBuffers& buffers)
     : Mesh(mesh)
     , Region(region)
     , Level(distance)
-    , Closed(mesh)
-    , Open(mesh)
+    , Closed(buffers.Closed)
+    , Open(buffers.Open)
+    , Buffers(buffers)
   {
+    // New marks for this run; the buffers are sized once per mesh.
+    const size_t nv = mesh.GetNumberOfVertices(), nt = mesh.GetNumberOfTriangles();
+    if (buffers.VertexStamp.size() != nv || buffers.TriangleStamp.size() != nt ||
+      ++buffers.Stamp == 0)
+    {
+      buffers.VertexValue.assign(nv, 0.0);
+      buffers.VertexInside.assign(nv, 0);
+      buffers.VertexStamp.assign(nv, 0u);
+      buffers.InsideStamp.assign(nv, 0u);
+      buffers.TriangleStamp.assign(nt, 0u);
+      buffers.Stamp = 1;
+    }
   }
 
   bool Compute(const OffsetOptions& options, OffsetStatistics& stats, std::string& error)
@@ -132,7 +149,7 @@ public:
     double spacing = options.SourceSpacing;
     if (!(spacing > 0.0))
     {
-      spacing = std::max(0.02 * d, LocalEdgeLength(mesh, all) / 16.0);
+      spacing = std::max(0.05 * d, LocalEdgeLength(mesh, all) / 16.0);
     }
     // Values below the radius are exact; the contour only reads values near d.
     const double radius = d * (1.0 + 1e-3) + 1e-12;
@@ -171,6 +188,16 @@ public:
       }
       stats.Sources += static_cast<int>(sources.size());
       this->Closed.SetMaximumWindows(options.MaximumWindows);
+      if (this->Region.TriangleSide)
+      {
+        const std::function<int(int)>& side = this->Region.TriangleSide;
+        const int useless = this->Level > 0.0 ? 1 : -1;
+        this->Closed.SetFieldTriangleFilter([&side, useless](int t) { return side(t) != useless; });
+      }
+      else
+      {
+        this->Closed.SetFieldTriangleFilter(nullptr);
+      }
       if (!this->Closed.ComputeDistanceField(sources, radius))
       {
         error = "the distance computation ran out of its window budget (" +
@@ -236,17 +263,30 @@ public:
   /// F - d at mesh vertex v (never exactly 0: a vertex on the level set counts as outside).
   double AtVertex(int v)
   {
-    const auto it = this->VertexValue.find(v);
-    if (it != this->VertexValue.end())
+    OffsetBuffers& b = this->Buffers;
+    if (b.VertexStamp[v] == b.Stamp)
     {
-      return it->second;
+      return b.VertexValue[v];
     }
     const double value = this->Combine(this->Mesh.GetPosition(v),
       this->HasClosed ? this->Closed.GetFieldDistanceAtVertex(v) : Infinity,
       this->HasClosed && this->Inside(v),
       this->HasOpen ? this->Open.GetFieldDistanceAtVertex(v) : Infinity);
-    this->VertexValue.emplace(v, value);
+    b.VertexStamp[v] = b.Stamp;
+    b.VertexValue[v] = value;
     return value;
+  }
+
+  /// True the first time triangle t is asked about in this run.
+  bool FirstVisit(int t)
+  {
+    OffsetBuffers& b = this->Buffers;
+    if (b.TriangleStamp[t] == b.Stamp)
+    {
+      return false;
+    }
+    b.TriangleStamp[t] = b.Stamp;
+    return true;
   }
 
   /// F - d on mesh edge `edge` at parameter s from its canonical vertex 0.
@@ -300,14 +340,13 @@ public:
 private:
   bool Inside(int v)
   {
-    const auto it = this->InsideValue.find(v);
-    if (it != this->InsideValue.end())
+    OffsetBuffers& b = this->Buffers;
+    if (b.InsideStamp[v] != b.Stamp)
     {
-      return it->second;
+      b.InsideStamp[v] = b.Stamp;
+      b.VertexInside[v] = this->Region.InsideVertex && this->Region.InsideVertex(v) ? 1 : 0;
     }
-    const bool inside = this->Region.InsideVertex ? this->Region.InsideVertex(v) : false;
-    this->InsideValue.emplace(v, inside);
-    return inside;
+    return b.VertexInside[v] != 0;
   }
 
   double Combine(const Vec3& x, double closedDistance, bool inside, double openDistance) const
@@ -337,14 +376,14 @@ private:
   const TriangleMesh& Mesh;
   const OffsetRegion& Region;
   const double Level;
-  ExactGeodesicSearch Closed, Open;
+  ExactGeodesicSearch& Closed;
+  ExactGeodesicSearch& Open;
   bool HasClosed = false, HasOpen = false;
   std::unordered_map<int, std::vector<double>> Crossings; // edge -> boundary parameters
   std::unordered_set<int> OnBoundary;                     // vertices on the boundary
   std::unordered_set<int> TouchedTriangles;
   std::vector<EndCap> Caps;
-  std::unordered_map<int, double> VertexValue;
-  std::unordered_map<int, bool> InsideValue;
+  OffsetBuffers& Buffers;
 };
 
 // The contour F = d: points on edges, one directed piece per crossed triangle, chained.
@@ -360,14 +399,12 @@ public:
   void Build(const std::vector<int>& reached)
   {
     const TriangleMesh& mesh = this->Mesh;
-    std::unordered_set<int> seen;
-    seen.reserve(4 * reached.size());
     for (int v : reached)
     {
       for (int corner : mesh.GetVertexCorners(v))
       {
         const int t = corner / 3;
-        if (mesh.IsUsable(t) && seen.insert(t).second)
+        if (mesh.IsUsable(t) && this->Field.FirstVisit(t))
         {
           this->AddTriangle(t);
         }
@@ -689,7 +726,8 @@ bool ComputeGeodesicOffset(const TriangleMesh& mesh,
   const OffsetOptions& options,
   std::vector<std::vector<CanonicalPoint>>& loops,
   std::string& error,
-  OffsetStatistics* statistics)
+  OffsetStatistics* statistics,
+  OffsetBuffers* buffers)
 {
   loops.clear();
   OffsetStatistics stats;
@@ -719,7 +757,13 @@ bool ComputeGeodesicOffset(const TriangleMesh& mesh,
     return false;
   }
   const Clock::time_point start = Clock::now();
-  OffsetField field(mesh, region, d);
+  std::unique_ptr<OffsetBuffers> own;
+  if (!buffers)
+  {
+    own = std::make_unique<OffsetBuffers>(mesh);
+    buffers = own.get();
+  }
+  OffsetField field(mesh, region, d, *buffers);
   if (!field.Compute(options, stats, error))
   {
     return false;

@@ -42,6 +42,16 @@ OffsetRegion MakeOffsetRegion(const TriangleMesh& mesh,
     }
     return false;
   };
+  // Triangles left whole by the arrangement lie in one cell.
+  region.TriangleSide = [arr, cells](int t)
+  {
+    const int r = arr->TriangleOffset[t];
+    if (arr->TriangleOffset[t + 1] != r + 1)
+    {
+      return 0;
+    }
+    return (*cells)[arr->TriangleCell[r]] != 0 ? 1 : -1;
+  };
   return region;
 }
 

@@ -11,6 +11,19 @@
 namespace boolsurf
 {
 
+/// What an offset edit reuses on one mesh: the distance searches (per-vertex state, angle sums)
+/// and the arrangement of the shapes offset (its buffers and the mesh's tiles), so an edit costs
+/// what its curves and band cost.
+struct OffsetWorkspace
+{
+  explicit OffsetWorkspace(const TriangleMesh& mesh)
+    : Buffers(mesh)
+  {
+  }
+  OffsetBuffers Buffers;
+  Arrangement Shapes;
+};
+
 /// The region made of the cells with selected[c] != 0: its boundary (the patches between a
 /// selected and an unselected cell, chained with the region on their left) and each vertex's
 /// side (the cell of a refined triangle at that corner). `mesh`, `arrangement` and `selected` must

@@ -235,7 +235,8 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
   }
 
   // 3. the region (arrangement, labels, selection) and the bands
-  Arrangement arrangement;
+  OffsetWorkspace& workspace = cache.GetOffsetWorkspace();
+  Arrangement& arrangement = workspace.Shapes;
   LabelingResult labels;
   std::vector<char> selected;
   OffsetRegion region;
@@ -274,6 +275,7 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
     const OffsetRegion cells = MakeOffsetRegion(mesh, arrangement, selected);
     region.Boundary = cells.Boundary;
     region.InsideVertex = cells.InsideVertex;
+    region.TriangleSide = cells.TriangleSide;
   }
 
   // 4. the offset
@@ -288,7 +290,8 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
     error = "'" + text + "' is empty: there is nothing to offset";
     return false;
   }
-  if (!ComputeGeodesicOffset(mesh, *surface.Topology, region, offset, loops, error, &statistics))
+  if (!ComputeGeodesicOffset(
+        mesh, *surface.Topology, region, offset, loops, error, &statistics, &workspace.Buffers))
   {
     error = "Cannot offset '" + text + "' by " + std::to_string(options.Distance) + ": " + error;
     return false;

@@ -4,6 +4,7 @@
 #include "Homology/HomologyBasis.h"
 
 #include "Geodesic/CurveTracer.h"
+#include "Offset/OffsetRegionOfCells.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -113,6 +114,7 @@ const vtkSurfaceInput& vtkSurfaceCache::Get(vtkPolyData* input,
     // What was built on the old surface goes first: the tracer refers to its mesh.
     this->Locator = nullptr;
     this->Tracer.reset();
+    this->Offset.reset();
     this->Surface = ConvertedSurface(input, options);
     this->Input = input;
     this->InputTime = time;
@@ -150,6 +152,16 @@ vtkStaticCellLocator* vtkSurfaceCache::GetLocator()
     this->Locator->BuildLocator();
   }
   return this->Locator;
+}
+
+//------------------------------------------------------------------------------
+OffsetWorkspace& vtkSurfaceCache::GetOffsetWorkspace()
+{
+  if (!this->Offset)
+  {
+    this->Offset = std::make_unique<OffsetWorkspace>(*this->Surface->Mesh);
+  }
+  return *this->Offset;
 }
 
 //------------------------------------------------------------------------------

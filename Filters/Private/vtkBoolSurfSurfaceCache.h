@@ -25,6 +25,7 @@ namespace boolsurf
 
 class CurveTracer;
 class HomologyBasis;
+struct OffsetWorkspace;
 
 class vtkSurfaceCache
 {
@@ -52,6 +53,10 @@ public:
   /// state is reused by every path).
   CurveTracer& GetTracer();
 
+  /// What offsets reuse on the mesh of the last Get() (distance searches, the arrangement of the
+  /// offset shapes), built on first use.
+  OffsetWorkspace& GetOffsetWorkspace();
+
   /// Homology generators of the mesh of the last Get(), computed on first use and kept while
   /// the surface is the same (null with the reason in `error` when they cannot be computed).
   const HomologyBasis* GetHomology(std::string& error);
@@ -73,6 +78,7 @@ private:
   std::shared_ptr<const vtkSurfaceInput> Surface;
   vtkSmartPointer<vtkStaticCellLocator> Locator;
   std::unique_ptr<CurveTracer> Tracer;
+  std::unique_ptr<OffsetWorkspace> Offset;
 };
 
 } // namespace boolsurf
