@@ -9,7 +9,7 @@
 //    (ExactGeodesicSearch's field mode) from points sampled along the boundary's straight
 //    pieces, stopped just past |d|: only the band the offset sweeps is visited. Sampling a
 //    piece every s puts each point at most s^2 / (8 |d|) too far at distance |d|; s is 5 % of
-//    |d| (a relative error of at most 3.2e-4, and a contour never inside the true one), but not
+//    |d| (a relative error of at most 3.2e-4, never too short: a grown region is never too large), but not
 //    below 1/16 of the local edge length. Growing does not propagate inside the region, nor
 //    shrinking outside it: a shortest path to the boundary never crosses it.
 // 2. Signed field: F = -distance inside the region, +distance outside (the sign flips where
