@@ -1,5 +1,6 @@
 """pvbatch under Xvfb: the examples a new user runs first (Examples/boolean_genus2.py,
-Examples/variadic_xor.py, Examples/bsc_flower.py and Examples/svg_on_bunny.py) write a
+Examples/variadic_xor.py, Examples/bsc_flower.py, Examples/svg_on_bunny.py and
+Examples/offset_margin.py) write a
 readable .vtp region and a non-trivial .png."""
 import os
 import shutil
@@ -19,6 +20,8 @@ expected = {
     "bsc_flower.py": ("bsc_flower", 8.3, 9.5),  # BSC: half the torus (7.89) + 3 petals: 8.88
     # Data/star.svg (a star with a hole) mapped on the bunny, minus a disc: 1.152
     "svg_on_bunny.py": ("svg_on_bunny", 0.9, 1.4),
+    # S0 (2.02 cm^2) grown by 0.2 cm along the surface (3.09), minus S1: 2.72
+    "offset_margin.py": ("offset_margin", 2.5, 2.95),
 }
 extra = {"svg_on_bunny.py": ["--svg", os.path.join(source_dir, "Data", "star.svg")]}
 for script, (name, low, high) in expected.items():
