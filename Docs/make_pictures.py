@@ -44,7 +44,7 @@ def tube_loop(z, reverse):
 
 control = curves_source([(surface_circle(front, (0.0, -0.035), 0.06), 0),
                          (surface_circle(front, (0.0, 0.035), 0.06), 1),
-                         (tube_loop(0.22, False), 2), (tube_loop(0.30, True), 2)])
+                         (tube_loop(0.22, False), 2), (tube_loop(0.30, True), 2)], eight)
 traced = TraceSurfaceCurves(Surface=eight, Curves=control)
 arrangement = SurfaceArrangement(Surface=eight, Curves=traced)
 labels = LabelArrangementCells(Input=arrangement, ColorShape=2)
@@ -76,10 +76,23 @@ render_result(out("CheckSurface"), nefertiti, check, color_by="ComponentId", vie
 bunny = PLYReader(FileNames=[os.path.join(root, "Data", "bunny_npm.ply")])
 rays = SurfaceRays(bunny, axis=2)
 discs = curves_source([(surface_circle(rays, (0.5 + dx, 3.4), 1.0, n=32), k)
-                       for k, dx in enumerate((-0.6, 0.6))])
+                       for k, dx in enumerate((-0.6, 0.6))], bunny)
 one = BoolSurf(Surface=bunny, Curves=discs, Operation="Difference", ShapeA=0, ShapeB=1)
 render_result(out("BoolSurf"), bunny, one, boundary=OutputPort(one, 1), view_axis=2,
               view_up=(0, 1, 0), size=size)
+
+# Offset Shapes: a disc (S0) grown by 0.3 along the surface and a band of half width 0.3 around
+# an open stroke (S1) that passes near it: the fronts merge into one region (S2).
+stroke = [rays.hit(x, y) for x, y in ((-1.9, 1.6), (-0.6, 2.2), (0.4, 1.6), (1.6, 2.0))]
+disc = surface_circle(rays, (0.6, 2.9), 0.7, n=24)
+drawing = SurfaceCurves(Surface=bunny, Points=[x for p in disc + stroke for x in p],
+                        CurveSizes=[len(disc), len(stroke)], ShapeIds=[0, 1],
+                        ClosedCurves=[1, 0])
+grown = OffsetShapes(Surface=bunny, Curves=drawing, Distance=0.3, Shapes="0 1",
+                     KeepInputCurves=0, OutputShapeId=2, OutputResolution=2)
+margin = BoolSurf(Surface=bunny, Curves=grown, Operation="Union", ShapeA=2, ShapeB=2)
+render_result(out("OffsetShapes"), bunny, margin, boundary=OutputPort(margin, 1),
+              curves=OutputPort(drawing, 1), view_axis=2, view_up=(0, 1, 0), size=size)
 
 shared = os.environ.get("BOOLSURF_SHARED_DATA") or os.path.join(root, "..", "shared", "data")
 scene = os.path.join(shared, "boolsurf-scenes", "tests", "examples", "sphere0.json")

@@ -240,29 +240,36 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
   LabelingResult labels;
   std::vector<char> selected;
   OffsetRegion region;
-  std::vector<TracedCurve> closed;
+  // The operands' curves make the arrangement, open ones too: a shape of open curves only is
+  // then a shape whose region is empty (labels 0), so an expression naming it still reads.
+  std::vector<TracedCurve> arranged;
+  bool anyClosed = false;
   for (const TracedCurve& c : traced)
   {
-    const bool operand = operands.count(c.ShapeId) != 0;
-    if (operand && (options.Bands || !c.Closed))
+    if (!operands.count(c.ShapeId))
+    {
+      continue;
+    }
+    if (options.Bands || !c.Closed)
     {
       region.Bands.push_back({ c.Points, c.Closed });
     }
-    else if (c.Closed && !options.Bands && operand)
+    if (!options.Bands)
     {
-      closed.push_back(c);
+      arranged.push_back(c);
+      anyClosed = anyClosed || c.Closed;
     }
   }
-  if (!options.Bands && !closed.empty())
+  if (anyClosed)
   {
     ArrangementOptions arrangementOptions;
     arrangementOptions.Threads = options.Threads;
-    if (!ComputeArrangement(mesh, closed, arrangementOptions, arrangement, error))
+    if (!ComputeArrangement(mesh, arranged, arrangementOptions, arrangement, error))
     {
       error = "Arrangement of the shapes to offset failed: " + error;
       return false;
     }
-    labels = LabelCells(MakeLabelingInput(mesh, *surface.Topology, closed, arrangement));
+    labels = LabelCells(MakeLabelingInput(mesh, *surface.Topology, arranged, arrangement));
     BooleanRequest request;
     request.Operation = BooleanOperation::Expression;
     request.Expression = text;
