@@ -260,7 +260,7 @@ public:
     }
   }
 
-  /// F - d at mesh vertex v (never exactly 0: a vertex on the level set counts as outside).
+  /// F - d at mesh vertex v (never exactly 0, see Combine).
   double AtVertex(int v)
   {
     OffsetBuffers& b = this->Buffers;
@@ -369,8 +369,16 @@ private:
       }
       f = std::min(f, band);
     }
+    // A point on the level set (to rounding) goes to the side whose sharp corners meet there:
+    // the region's when shrinking (an inset's corners are convex), its complement's when
+    // growing (a margin's sharp corners are concave). The contour then keeps the corner's tip.
     const double value = f - this->Level;
-    return value == 0.0 ? std::numeric_limits<double>::min() : value;
+    if (std::abs(value) <= 1e-9 * std::abs(this->Level))
+    {
+      const double tiny = std::numeric_limits<double>::min();
+      return this->Level < 0.0 ? -tiny : tiny;
+    }
+    return value;
   }
 
   const TriangleMesh& Mesh;
@@ -656,10 +664,15 @@ bool SharpCorner(const TriangleMesh& mesh,
   const double den = gradient[0].x * gradient[1].y - gradient[0].y * gradient[1].x;
   const double x = (r0 * gradient[1].y - r1 * gradient[0].y) / den;
   const double y = (gradient[0].x * r1 - gradient[1].x * r0) / den;
-  const std::array<double, 3> w = weightsOf(x, y);
-  if (!(w[0] > 1e-9 && w[1] > 1e-9 && w[2] > 1e-9))
+  // The corner may lie on the triangle's side or corner (a vertex exactly on the level set).
+  std::array<double, 3> w = weightsOf(x, y);
+  if (!(w[0] > -1e-9 && w[1] > -1e-9 && w[2] > -1e-9))
   {
     return false;
+  }
+  for (double& wk : w)
+  {
+    wk = std::max(0.0, wk);
   }
   const double mid = value(0.5 * (point[0].x + point[1].x), 0.5 * (point[0].y + point[1].y));
   if (!(std::abs(value(x, y)) < 0.25 * std::abs(mid)))
@@ -668,10 +681,10 @@ bool SharpCorner(const TriangleMesh& mesh,
   }
   SurfacePoint sp;
   sp.Triangle = t;
-  sp.U = w[1];
-  sp.V = w[2];
+  sp.U = w[1] / (w[0] + w[1] + w[2]);
+  sp.V = w[2] / (w[0] + w[1] + w[2]);
   corner = LocateSurfacePoint(mesh, sp);
-  return true;
+  return !(corner == a) && !(corner == b);
 }
 
 // Length of a loop and its turning sense: the area it encloses projected on the mean normal of

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <polyclipping/clipper.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace boolsurf;
@@ -454,4 +455,116 @@ TEST(GeodesicOffset, RefusalsAreNamed)
   result = OffsetOf(mesh, topology, { curve }, {}, options);
   EXPECT_FALSE(result.Ok);
   EXPECT_NE(result.Error.find("leaves nothing"), std::string::npos) << result.Error;
+}
+
+TEST(GeodesicOffset, CurvesAlongMeshEdgesAndThroughVertices)
+{
+  // On the aligned grid the square's sides run along mesh edges and its corners are vertices.
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(40, 1.0));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  FlatPolygonTracer tracer(mesh);
+  const std::vector<Vec2> square = { { 0.3, 0.3 }, { 0.7, 0.3 }, { 0.7, 0.7 }, { 0.3, 0.7 } };
+  TracedCurve curve;
+  ASSERT_TRUE(tracer.Trace(square, true, 0, 0, curve));
+  for (double d : { 0.1, -0.1, 0.0375 })
+  {
+    OffsetOptions options;
+    options.Distance = d;
+    const Offset result = OffsetOf(mesh, topology, { curve }, {}, options);
+    ASSERT_TRUE(result.Ok) << result.Error;
+    EXPECT_EQ(result.Loops.size(), 1u);
+    const double expected = ClipperOffsetArea({ square }, d, ClipperLib::etClosedPolygon);
+    EXPECT_NEAR(result.Area, expected, 1e-3 * expected) << d;
+  }
+}
+
+TEST(GeodesicOffset, MarginsAreClosedAlongTheSurfacesBoundary)
+{
+  // A disc near the square's edge grown past it: the margin is cut by the boundary (the
+  // planar offset intersected with the square), its loop closed along the boundary edges.
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(64, 1.0, 0.3, 23));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  FlatPolygonTracer tracer(mesh);
+  const std::vector<Vec2> disc = Circle({ 0.15, 0.5 }, 0.1, 24);
+  TracedCurve curve;
+  ASSERT_TRUE(tracer.Trace(disc, true, 0, 0, curve));
+  OffsetOptions options;
+  options.Distance = 0.1;
+  const Offset result = OffsetOf(mesh, topology, { curve }, {}, options);
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ASSERT_EQ(result.Loops.size(), 1u);
+  const int onBoundary = static_cast<int>(std::count_if(result.Loops[0].begin(),
+    result.Loops[0].end(),
+    [](const CanonicalPoint& p) { return p.Location == PointLocation::Vertex; }));
+  EXPECT_GT(onBoundary, 5); // the walk along the boundary's vertices
+  ClipperLib::ClipperOffset offset(2.0, 1e-7 * Scale);
+  ClipperLib::Path path;
+  for (const Vec2& p : disc)
+  {
+    path.push_back({ static_cast<ClipperLib::cInt>(std::llround(p.x * Scale)),
+      static_cast<ClipperLib::cInt>(std::llround(p.y * Scale)) });
+  }
+  offset.AddPath(path, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths grown;
+  offset.Execute(grown, 0.1 * Scale);
+  ClipperLib::Clipper clip;
+  clip.AddPaths(grown, ClipperLib::ptSubject, true);
+  const ClipperLib::cInt one = static_cast<ClipperLib::cInt>(Scale);
+  clip.AddPath({ { 0, 0 }, { one, 0 }, { one, one }, { 0, one } }, ClipperLib::ptClip, true);
+  ClipperLib::Paths inside;
+  ASSERT_TRUE(clip.Execute(ClipperLib::ctIntersection, inside));
+  double expected = 0;
+  for (const auto& p : inside)
+  {
+    expected += ClipperLib::Area(p) / (Scale * Scale);
+  }
+  EXPECT_NEAR(result.Area, expected, 1e-3 * expected);
+}
+
+TEST(GeodesicOffset, AGrowingFrontThatClosesAroundAHandle)
+{
+  // A disc on the torus's outer equator grown by more than half the tube's girth: the front
+  // meets itself behind the tube, and the margin becomes a band around the tube (two loops,
+  // each going around it once), never a self-crossing curve.
+  const double R = 1.0, r = 0.3;
+  const TriangleMesh mesh = MeshOf(MakeTorus(R, r, 96, 32));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  CurveTracer tracer(mesh);
+  std::vector<SurfacePoint> control;
+  for (int i = 0; i < 12; ++i)
+  {
+    // Around the point (R + r, 0, 0): angle a around z, angle b around the tube.
+    const double t = 2.0 * Pi * i / 12, a = 0.2 * std::cos(t), b = 0.2 / r * std::sin(t);
+    const Vec3 x{
+      (R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b)
+    };
+    int best = 0;
+    for (int k = 0; k < mesh.GetNumberOfTriangles(); ++k)
+    {
+      const Triangle& tri = mesh.GetTriangle(k);
+      const Triangle& bt = mesh.GetTriangle(best);
+      auto centroid = [&](const Triangle& q)
+      {
+        return (1.0 / 3.0) *
+          (mesh.GetPosition(q[0]) + mesh.GetPosition(q[1]) + mesh.GetPosition(q[2]));
+      };
+      if (Distance(centroid(tri), x) < Distance(centroid(bt), x))
+      {
+        best = k;
+      }
+    }
+    control.push_back(PointInTriangle(mesh, best, x));
+  }
+  CurveTrace trace;
+  ASSERT_TRUE(tracer.Trace(control, CurveType::GeodesicPolygon, true, trace).Ok);
+  const Labeled disc = Label(mesh, topology, { trace.Curve });
+  OffsetOptions options;
+  options.Distance = 1.2; // half the girth is pi r = 0.94
+  const Offset result = OffsetOf(mesh, topology, { trace.Curve }, {}, options);
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ASSERT_EQ(result.Loops.size(), 2u);
+  // Consistent (the labeling would refuse otherwise) and larger than the disc.
+  const Labeled band = Label(mesh, topology, AsCurves(result.Loops, 0));
+  EXPECT_TRUE(band.Labels.ShapeConsistent[0]);
+  EXPECT_GT(std::min(band.Area, 4.0 * Pi * Pi * R * r - band.Area), 4.0 * disc.Area);
 }
