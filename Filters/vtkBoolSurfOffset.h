@@ -17,7 +17,9 @@
  *
  * Inputs are those of vtkBoolSurfTraceCurves: port 0 the surface, port 1 the control curves
  * (one polyline or polygon per curve, cell data ShapeId and CurveType, points projected or
- * given exactly as TriangleId/Barycentric). The output is control curves in that same form, so
+ * given exactly as TriangleId/Barycentric). Curves without a ShapeId array are one shape, so
+ * the Boundary output (port 1) of vtkBoolSurf, vtkBoolSurfBoolean or vtkBoolSurfBSC is offset
+ * as the region it bounds: margins of any Boolean or BSC result. The output is control curves in that same form, so
  * it chains into vtkBoolSurfTraceCurves or the one-step vtkBoolSurf: the input curves
  * (KeepInputCurves), then the offset boundary as closed geodesic polygons of exact surface points
  * with ShapeId OutputShapeId (-1: one above the largest input ShapeId), one point per mesh edge

@@ -189,6 +189,19 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
     error = "Cannot trace the curves:" + JoinLines(problems);
     return false;
   }
+  // Curves without ShapeIds are one shape: the loops of a Boolean or BSC result's Boundary
+  // output (region on their left, holes turning the other way) offset as the region they bound.
+  if (!curves->GetCellData()->GetArray(names::ShapeId))
+  {
+    for (TracedCurve& c : traced)
+    {
+      c.ShapeId = 0;
+    }
+    for (ControlCurve& c : controls)
+    {
+      c.ShapeId = 0;
+    }
+  }
   std::set<int> idSet;
   for (const TracedCurve& c : traced)
   {

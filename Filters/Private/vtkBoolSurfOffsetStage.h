@@ -39,8 +39,9 @@ struct OffsetStageOptions
   int Threads = 0;
 };
 
-/// Reads and traces the control curves of `curves` (the input of Trace Surface Curves) on the
-/// cached surface, offsets the requested region (or bands) by Distance and writes control curves
+/// Reads and traces the control curves of `curves` (the input of Trace Surface Curves; without
+/// a ShapeId array all its curves are one shape, so a Boolean's or BSC's Boundary output is
+/// offset as the region it bounds) on the cached surface, offsets the requested region (or bands) by Distance and writes control curves
 /// to `output` in the same form: the kept input curves, then the offset loops as geodesic
 /// polygons of exact surface points (point data TriangleId/Barycentric; cell data ShapeId,
 /// CurveType, Closed, OffsetCurve = 1 for offset loops, 0 for input curves), field data

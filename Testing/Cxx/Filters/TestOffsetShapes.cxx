@@ -191,6 +191,44 @@ TEST(OffsetShapes, ShrinkingAnExpressionAndBands)
   EXPECT_NEAR(bandArea, AreaOf(band), 2e-3 * bandArea);
 }
 
+TEST(OffsetShapes, ABooleanResultsBoundaryIsOffsetAsItsRegion)
+{
+  // The square minus the L is two pieces; its Boundary output (loops without ShapeIds) grown
+  // by a margin is Clipper's offset of Clipper's difference.
+  Fixture f;
+  vtkNew<vtkBoolSurf> difference;
+  difference->SetInputData(0, f.Mesh);
+  difference->SetInputData(1, f.Curves);
+  difference->SetOperation(2);
+  difference->SetShapeA(1);
+  difference->SetShapeB(0);
+  vtkNew<vtkBoolSurfOffset> offset;
+  offset->SetInputData(0, f.Mesh);
+  offset->SetInputConnection(1, difference->GetOutputPort(1));
+  offset->SetDistance(0.03125);
+  offset->SetKeepInputCurves(false);
+  ASSERT_EQ(testutils::ErrorsOf(offset), "");
+  vtkNew<vtkBoolSurf> grown;
+  grown->SetInputData(0, f.Mesh);
+  grown->SetInputConnection(1, offset->GetOutputPort());
+  grown->SetOperation(0);
+  grown->SetShapeA(1);
+  grown->SetShapeB(1);
+  ASSERT_EQ(testutils::ErrorsOf(grown), "");
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(Scaled(Square), ClipperLib::ptSubject, true);
+  clipper.AddPaths(Scaled(LShape), ClipperLib::ptClip, true);
+  ClipperLib::Paths pieces;
+  ASSERT_TRUE(clipper.Execute(
+    ClipperLib::ctDifference, pieces, ClipperLib::pftNonZero, ClipperLib::pftNonZero));
+  ClipperLib::ClipperOffset margin(2.0, 1e-7 * Scale);
+  margin.AddPaths(pieces, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths expected;
+  margin.Execute(expected, 0.03125 * Scale);
+  const double area = testutils::Area(grown->GetOutput());
+  EXPECT_NEAR(area, AreaOf(expected), 1e-3 * area);
+}
+
 TEST(OffsetShapes, BadInputGetsNamedErrors)
 {
   Fixture f;
