@@ -385,6 +385,38 @@ void ExactGeodesicSearch::Propagate(int id)
 }
 
 //------------------------------------------------------------------------------
+// A window over all of `edge`, lighting `face`, from a source at `point` in the plane of
+// `origin` (the triangle on the other side of the edge) reached at distance `sigma`.
+ExactGeodesicSearch::Window ExactGeodesicSearch::WholeEdgeWindow(int edge,
+  int face,
+  int origin,
+  const Vec3& point,
+  double sigma,
+  int kind,
+  int parent) const
+{
+  const TriangleMesh& mesh = this->Mesh;
+  const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
+  const Vec3 p0 = mesh.GetPosition(ev[0]);
+  const Vec3 axis = mesh.GetPosition(ev[1]) - p0;
+  const double length = Length(axis);
+  const Vec3 ex = (1.0 / length) * axis;
+  const double x = Dot(point - p0, ex);
+  Window w;
+  w.Edge = edge;
+  w.Face = face;
+  w.Origin = origin;
+  w.Parent = parent;
+  w.Kind = kind;
+  w.Sigma = sigma;
+  w.Sx = x;
+  w.Sy = -Length(point - p0 - x * ex);
+  w.B0 = 0.0;
+  w.B1 = length;
+  return w;
+}
+
+//------------------------------------------------------------------------------
 void ExactGeodesicSearch::EmitFromVertex(int v)
 {
   const TriangleMesh& mesh = this->Mesh;
@@ -414,25 +446,7 @@ void ExactGeodesicSearch::EmitFromVertex(int v)
     {
       continue;
     }
-    const int edge = mesh.GetEdgeId(t, local);
-    const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
-    const Vec3 p0 = mesh.GetPosition(ev[0]);
-    const Vec3 axis = mesh.GetPosition(ev[1]) - p0;
-    const double length = Length(axis);
-    const Vec3 ex = (1.0 / length) * axis;
-    const double x = Dot(pv - p0, ex);
-    Window w;
-    w.Edge = edge;
-    w.Face = next;
-    w.Origin = t;
-    w.Parent = v;
-    w.Kind = FromVertex;
-    w.Sigma = d;
-    w.Sx = x;
-    w.Sy = -Length(pv - p0 - x * ex);
-    w.B0 = 0.0;
-    w.B1 = length;
-    this->AddWindow(w);
+    this->AddWindow(this->WholeEdgeWindow(mesh.GetEdgeId(t, local), next, t, pv, d, FromVertex, v));
   }
 }
 
@@ -474,25 +488,8 @@ void ExactGeodesicSearch::SeedFromPoint(const CanonicalPoint& start,
       {
         continue; // boundary, or the start lies on this edge
       }
-      const int edge = mesh.GetEdgeId(t, k);
-      const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
-      const Vec3 p0 = mesh.GetPosition(ev[0]);
-      const Vec3 axis = mesh.GetPosition(ev[1]) - p0;
-      const double length = Length(axis);
-      const Vec3 ex = (1.0 / length) * axis;
-      const double x = Dot(source - p0, ex);
-      Window w;
-      w.Edge = edge;
-      w.Face = next;
-      w.Origin = t;
-      w.Parent = t;
-      w.Kind = FromSource;
-      w.Sigma = 0.0;
-      w.Sx = x;
-      w.Sy = -Length(source - p0 - x * ex);
-      w.B0 = 0.0;
-      w.B1 = length;
-      this->AddWindow(w);
+      this->AddWindow(
+        this->WholeEdgeWindow(mesh.GetEdgeId(t, k), next, t, source, 0.0, FromSource, t));
     }
   }
 }

@@ -115,6 +115,13 @@ private:
   void Relax(int v, double d, int kind, int parent, int arrival);
   bool Dominated(const Window& w, const std::array<int, 2>& ev, double length) const;
   void AddWindow(const Window& w);
+  Window WholeEdgeWindow(int edge,
+    int face,
+    int origin,
+    const Vec3& point,
+    double sigma,
+    int kind,
+    int parent) const;
   void Propagate(int id);
   void EmitFromVertex(int v);
   bool Backtrack(std::vector<int>& strip);

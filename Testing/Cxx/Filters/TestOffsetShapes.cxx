@@ -35,7 +35,7 @@ const ControlPolygon Square{
 };
 
 constexpr double Scale = 1e9;
-ClipperLib::Paths ClipperMargin(const ControlPolygon& p, double d)
+ClipperLib::Paths Scaled(const ControlPolygon& p)
 {
   ClipperLib::Path path;
   for (const auto& x : p.Points)
@@ -43,10 +43,31 @@ ClipperLib::Paths ClipperMargin(const ControlPolygon& p, double d)
     path.push_back({ static_cast<ClipperLib::cInt>(std::llround(x[0] * Scale)),
       static_cast<ClipperLib::cInt>(std::llround(x[1] * Scale)) });
   }
+  return { path };
+}
+
+// Clipper's offset of `paths` by d with round joins (closed polygons or, for bands, lines).
+ClipperLib::Paths ClipperOffset(const ClipperLib::Paths& paths,
+  double d,
+  ClipperLib::EndType ends = ClipperLib::etClosedPolygon)
+{
   ClipperLib::ClipperOffset offset(2.0, 1e-7 * Scale);
-  offset.AddPath(path, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  offset.AddPaths(paths, ClipperLib::jtRound, ends);
   ClipperLib::Paths out;
   offset.Execute(out, d * Scale);
+  return out;
+}
+
+// Clipper's Boolean `op` of two regions (non-zero fill).
+ClipperLib::Paths ClipperBoolean(ClipperLib::ClipType op,
+  const ClipperLib::Paths& a,
+  const ClipperLib::Paths& b)
+{
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(a, ClipperLib::ptSubject, true);
+  clipper.AddPaths(b, ClipperLib::ptClip, true);
+  ClipperLib::Paths out;
+  clipper.Execute(op, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
   return out;
 }
 
@@ -58,17 +79,6 @@ double AreaOf(const ClipperLib::Paths& paths)
     a += ClipperLib::Area(p);
   }
   return a / (Scale * Scale);
-}
-
-ClipperLib::Paths Scaled(const ControlPolygon& p)
-{
-  ClipperLib::Path path;
-  for (const auto& x : p.Points)
-  {
-    path.push_back({ static_cast<ClipperLib::cInt>(std::llround(x[0] * Scale)),
-      static_cast<ClipperLib::cInt>(std::llround(x[1] * Scale)) });
-  }
-  return { path };
 }
 
 struct Fixture
@@ -99,7 +109,7 @@ TEST(OffsetShapes, MarginMatchesClipperAndChainsIntoBoolSurf)
   EXPECT_EQ(marked->GetValue(2), 1);
   EXPECT_EQ(out->GetFieldData()->GetArray("OffsetShapeId")->GetTuple1(0), 2);
 
-  const ClipperLib::Paths margin = ClipperMargin(LShape, 0.0625);
+  const ClipperLib::Paths margin = ClipperOffset(Scaled(LShape), 0.0625);
   vtkNew<vtkBoolSurf> boolean;
   boolean->SetInputData(0, f.Mesh);
   boolean->SetInputConnection(1, offset->GetOutputPort());
@@ -112,12 +122,8 @@ TEST(OffsetShapes, MarginMatchesClipperAndChainsIntoBoolSurf)
   // The margin minus the square, against Clipper's difference of the same two regions.
   boolean->SetExpression("S2 - S1");
   ASSERT_EQ(testutils::ErrorsOf(boolean), "");
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(margin, ClipperLib::ptSubject, true);
-  clipper.AddPaths(Scaled(Square), ClipperLib::ptClip, true);
-  ClipperLib::Paths difference;
-  ASSERT_TRUE(clipper.Execute(
-    ClipperLib::ctDifference, difference, ClipperLib::pftNonZero, ClipperLib::pftNonZero));
+  const ClipperLib::Paths difference =
+    ClipperBoolean(ClipperLib::ctDifference, margin, Scaled(Square));
   const double minus = testutils::Area(boolean->GetOutput());
   EXPECT_NEAR(minus, AreaOf(difference), 1e-3 * minus);
 
@@ -136,12 +142,8 @@ TEST(OffsetShapes, MarginMatchesClipperAndChainsIntoBoolSurf)
   // Turning the step off again gives the plain difference.
   oneStep->SetOffsetShape(-1);
   ASSERT_EQ(testutils::ErrorsOf(oneStep), "");
-  ClipperLib::Clipper plain;
-  plain.AddPaths(Scaled(LShape), ClipperLib::ptSubject, true);
-  plain.AddPaths(Scaled(Square), ClipperLib::ptClip, true);
-  ClipperLib::Paths plainDifference;
-  ASSERT_TRUE(plain.Execute(
-    ClipperLib::ctDifference, plainDifference, ClipperLib::pftNonZero, ClipperLib::pftNonZero));
+  const ClipperLib::Paths plainDifference =
+    ClipperBoolean(ClipperLib::ctDifference, Scaled(LShape), Scaled(Square));
   EXPECT_NEAR(testutils::Area(oneStep->GetOutput()), AreaOf(plainDifference), 1e-9);
 }
 
@@ -163,15 +165,8 @@ TEST(OffsetShapes, ShrinkingAnExpressionAndBands)
   boolean->SetOperation(4);
   boolean->SetExpression("S7");
   ASSERT_EQ(testutils::ErrorsOf(boolean), "");
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(Scaled(LShape), ClipperLib::ptSubject, true);
-  clipper.AddPaths(Scaled(Square), ClipperLib::ptClip, true);
-  ClipperLib::Paths both;
-  ASSERT_TRUE(clipper.Execute(ClipperLib::ctUnion, both, ClipperLib::pftNonZero));
-  ClipperLib::ClipperOffset inset(2.0, 1e-7 * Scale);
-  inset.AddPaths(both, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
-  ClipperLib::Paths shrunk;
-  inset.Execute(shrunk, -0.03125 * Scale);
+  const ClipperLib::Paths shrunk =
+    ClipperOffset(ClipperBoolean(ClipperLib::ctUnion, Scaled(LShape), Scaled(Square)), -0.03125);
   const double area = testutils::Area(boolean->GetOutput());
   EXPECT_NEAR(area, AreaOf(shrunk), 2e-3 * area);
 
@@ -183,10 +178,7 @@ TEST(OffsetShapes, ShrinkingAnExpressionAndBands)
   ASSERT_EQ(testutils::ErrorsOf(offset), "");
   EXPECT_EQ(offset->GetOutput()->GetNumberOfCells(), 2); // outer and inner boundary
   ASSERT_EQ(testutils::ErrorsOf(boolean), "");
-  ClipperLib::ClipperOffset ring(2.0, 1e-7 * Scale);
-  ring.AddPaths(Scaled(Square), ClipperLib::jtRound, ClipperLib::etClosedLine);
-  ClipperLib::Paths band;
-  ring.Execute(band, 0.015625 * Scale);
+  const ClipperLib::Paths band = ClipperOffset(Scaled(Square), 0.015625, ClipperLib::etClosedLine);
   const double bandArea = testutils::Area(boolean->GetOutput());
   EXPECT_NEAR(bandArea, AreaOf(band), 2e-3 * bandArea);
 }
@@ -215,16 +207,8 @@ TEST(OffsetShapes, ABooleanResultsBoundaryIsOffsetAsItsRegion)
   grown->SetShapeA(1);
   grown->SetShapeB(1);
   ASSERT_EQ(testutils::ErrorsOf(grown), "");
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(Scaled(Square), ClipperLib::ptSubject, true);
-  clipper.AddPaths(Scaled(LShape), ClipperLib::ptClip, true);
-  ClipperLib::Paths pieces;
-  ASSERT_TRUE(clipper.Execute(
-    ClipperLib::ctDifference, pieces, ClipperLib::pftNonZero, ClipperLib::pftNonZero));
-  ClipperLib::ClipperOffset margin(2.0, 1e-7 * Scale);
-  margin.AddPaths(pieces, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
-  ClipperLib::Paths expected;
-  margin.Execute(expected, 0.03125 * Scale);
+  const ClipperLib::Paths expected = ClipperOffset(
+    ClipperBoolean(ClipperLib::ctDifference, Scaled(Square), Scaled(LShape)), 0.03125);
   const double area = testutils::Area(grown->GetOutput());
   EXPECT_NEAR(area, AreaOf(expected), 1e-3 * area);
 }

@@ -127,6 +127,17 @@ std::vector<Vec2> Circle(Vec2 center, double radius, int n)
 
 // Clipper's offset with round joins (arc tolerance 1e-7 of the unit square).
 constexpr double Scale = 1e9;
+ClipperLib::Path ToClipperPath(const std::vector<Vec2>& polygon)
+{
+  ClipperLib::Path path;
+  for (const Vec2& p : polygon)
+  {
+    path.push_back({ static_cast<ClipperLib::cInt>(std::llround(p.x * Scale)),
+      static_cast<ClipperLib::cInt>(std::llround(p.y * Scale)) });
+  }
+  return path;
+}
+
 double ClipperOffsetArea(const std::vector<std::vector<Vec2>>& polygons,
   double delta,
   ClipperLib::EndType ends)
@@ -134,13 +145,7 @@ double ClipperOffsetArea(const std::vector<std::vector<Vec2>>& polygons,
   ClipperLib::ClipperOffset offset(2.0, 1e-7 * Scale);
   for (const auto& polygon : polygons)
   {
-    ClipperLib::Path path;
-    for (const Vec2& p : polygon)
-    {
-      path.push_back({ static_cast<ClipperLib::cInt>(std::llround(p.x * Scale)),
-        static_cast<ClipperLib::cInt>(std::llround(p.y * Scale)) });
-    }
-    offset.AddPath(path, ClipperLib::jtRound, ends);
+    offset.AddPath(ToClipperPath(polygon), ClipperLib::jtRound, ends);
   }
   ClipperLib::Paths solution;
   offset.Execute(solution, delta * Scale);
@@ -498,13 +503,7 @@ TEST(GeodesicOffset, MarginsAreClosedAlongTheSurfacesBoundary)
     [](const CanonicalPoint& p) { return p.Location == PointLocation::Vertex; }));
   EXPECT_GT(onBoundary, 5); // the walk along the boundary's vertices
   ClipperLib::ClipperOffset offset(2.0, 1e-7 * Scale);
-  ClipperLib::Path path;
-  for (const Vec2& p : disc)
-  {
-    path.push_back({ static_cast<ClipperLib::cInt>(std::llround(p.x * Scale)),
-      static_cast<ClipperLib::cInt>(std::llround(p.y * Scale)) });
-  }
-  offset.AddPath(path, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  offset.AddPath(ToClipperPath(disc), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
   ClipperLib::Paths grown;
   offset.Execute(grown, 0.1 * Scale);
   ClipperLib::Clipper clip;
