@@ -98,6 +98,12 @@ double LocalEdgeLength(const TriangleMesh& mesh,
   return count > 0 ? sum / count : 0.0;
 }
 
+std::string BudgetMessage(int windows)
+{
+  return "the band within the distance is too large for the distance computation (over " +
+    std::to_string(windows) + " windows): use a smaller distance";
+}
+
 struct EndCap
 {
   Vec3 Point, Outward; // the end point and the unit direction leaving the curve there
@@ -200,8 +206,7 @@ public:
       }
       if (!this->Closed.ComputeDistanceField(sources, radius))
       {
-        error = "the distance computation ran out of its window budget (" +
-          std::to_string(options.MaximumWindows) + " windows)";
+        error = BudgetMessage(options.MaximumWindows);
         return false;
       }
       stats.Windows += this->Closed.GetLastWindowCount();
@@ -236,8 +241,7 @@ public:
       this->Open.SetMaximumWindows(options.MaximumWindows);
       if (!this->Open.ComputeDistanceField(sources, radius))
       {
-        error = "the distance computation ran out of its window budget (" +
-          std::to_string(options.MaximumWindows) + " windows)";
+        error = BudgetMessage(options.MaximumWindows);
         return false;
       }
       stats.Windows += this->Open.GetLastWindowCount();

@@ -56,8 +56,9 @@ struct OffsetOptions
   int Resolution = 0;
   /// Distance between samples along the boundary; 0: automatic (see the header's comment).
   double SourceSpacing = 0.0;
-  /// Window budget of the distance computation (72 bytes each).
-  int MaximumWindows = 1 << 24;
+  /// Window budget of the distance computation (about 80 bytes each: 2^23 is ~0.7 GB, a band
+  /// of millions of triangles); past it the offset is refused with a message.
+  int MaximumWindows = 1 << 23;
 };
 
 struct BandCurve
