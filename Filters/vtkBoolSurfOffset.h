@@ -29,7 +29,7 @@
  * vertices, crossed triangles, slivers dropped, milliseconds).
  *
  * How: the exact distance to the shape's boundary by window propagation from samples along it
- * (every 5 % of |d|, so at most 3.2e-4 |d| too far), limited to the band the offset sweeps; the
+ * (every 5 % of |d|, so about 3e-4 |d| too far, never too near), limited to the band the offset sweeps; the
  * level set at d of the signed distance located on mesh edges by bisection on that exact field,
  * with the sharp corners where two fronts meet kept. On a flat mesh growing matches Clipper's
  * offset with round joins. Errors name the problem: a distance that is not finite, a shape id
