@@ -52,7 +52,7 @@ one_step = BoolSurf(Surface=mesh, Curves=control, Operation="Expression", Expres
 print("S0: area %.4f cm^2; grown by %.2f cm: %.4f cm^2; minus S1: %.4f cm^2 "
       "(one-step: %.4f cm^2)" % (area(shape), args.margin, area(grown), area(result),
                                  area(one_step)))
-print("offset: %d boundary samples, %d windows, %d triangles crossed, %.1f ms" % (
+print("offset: %d boundary points, %d windows, %d triangles crossed, %.1f ms" % (
     stats.GetComponent(0, 0), stats.GetComponent(0, 1), stats.GetComponent(0, 3),
     stats.GetComponent(0, 7)))
 

@@ -25,11 +25,11 @@
  * with ShapeId OutputShapeId (-1: one above the largest input ShapeId), one point per mesh edge
  * the boundary crosses plus OutputResolution points inside each crossed triangle. Cell data
  * OffsetCurve is 1 on offset loops, 0 on input curves; field data OffsetDistance,
- * OffsetShapeId, OffsetExpression and OffsetStatistics (boundary samples, windows, reached
+ * OffsetShapeId, OffsetExpression and OffsetStatistics (boundary points, windows, reached
  * vertices, crossed triangles, slivers dropped, milliseconds).
  *
- * How: the exact distance to the shape's boundary by window propagation from samples along it
- * (every 5 % of |d|, so about 3e-4 |d| too far, never too near), limited to the band the offset sweeps; the
+ * How: the exact distance to the shape's boundary by window propagation (its points as point
+ * sources, its straight pieces as line sources), limited to the band the offset sweeps; the
  * level set at d of the signed distance located on mesh edges by bisection on that exact field,
  * with the sharp corners where two fronts meet kept. On a flat mesh growing matches Clipper's
  * offset with round joins. Errors name the problem: a distance that is not finite, a shape id

@@ -52,7 +52,157 @@ void ExactGeodesicSearch::LinkToEdge(int id)
 }
 
 //------------------------------------------------------------------------------
-bool ExactGeodesicSearch::ComputeDistanceField(const std::vector<CanonicalPoint>& sources,
+void ExactGeodesicSearch::AddFaceSource(int face, const Vec3& a, const Vec3& b)
+{
+  if (this->FaceStamp[face] != this->CurrentStamp)
+  {
+    this->FaceStamp[face] = this->CurrentStamp;
+    this->FaceSourceHead[face] = -1;
+  }
+  // One link per (source, triangle): the links live in FaceSourceNext, in pairs.
+  const int link = static_cast<int>(this->FaceSourceNext.size());
+  this->FaceSourceNext.push_back(this->FaceSourceHead[face]);
+  this->FaceSourceNext.push_back(static_cast<int>(this->FieldSources.size()));
+  this->FieldSources.push_back({ a, b });
+  this->FaceSourceHead[face] = link;
+}
+
+//------------------------------------------------------------------------------
+// The straight piece a-b as a line source in each triangle holding it: the rays normal to it
+// leave the triangle through its other edges as windows from a far point behind the piece.
+void ExactGeodesicSearch::AddLineSource(const CanonicalPoint& a, const CanonicalPoint& b)
+{
+  const TriangleMesh& mesh = this->Mesh;
+  const Vec3 pa = PositionOf(mesh, a), pb = PositionOf(mesh, b);
+  const double pieceLength = ::boolsurf::Distance(pa, pb);
+  if (!(pieceLength > 0.0))
+  {
+    return;
+  }
+  const Vec3 u = (1.0 / pieceLength) * (pb - pa);
+  const Vec3 middle = 0.5 * (pa + pb);
+  const double far = 1e7 * pieceLength;
+  std::vector<int> triangles;
+  TrianglesOf(mesh, a, triangles);
+  for (int t : triangles)
+  {
+    if (!TriangleContains(mesh, b, t))
+    {
+      continue;
+    }
+    this->AddFaceSource(t, pa, pb);
+    const Triangle& tri = mesh.GetTriangle(t);
+    const Vec3 q[3] = {
+      mesh.GetPosition(tri[0]), mesh.GetPosition(tri[1]), mesh.GetPosition(tri[2])
+    };
+    const Vec3 normal = Cross(q[1] - q[0], q[2] - q[0]);
+    const Vec3 side0 = Cross(normal, u);
+    if (!(Length(side0) > 0.0))
+    {
+      continue;
+    }
+    const Vec3 n = (1.0 / Length(side0)) * side0; // in the triangle's plane, normal to the piece
+    // Corners whose foot on the piece's line falls on the piece: their distance is exact.
+    for (int k = 0; k < 3; ++k)
+    {
+      const double along = Dot(q[k] - pa, u);
+      if (along > 0.0 && along < pieceLength)
+      {
+        this->Relax(tri[k], std::abs(Dot(q[k] - pa, n)), FromSource, -1, t);
+      }
+    }
+    const std::array<double, 3> wa = WeightsInTriangle(mesh, a, t);
+    const std::array<double, 3> wb = WeightsInTriangle(mesh, b, t);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int edge = mesh.GetEdgeId(t, k);
+      const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
+      const Vec3 p0 = mesh.GetPosition(ev[0]), p1 = mesh.GetPosition(ev[1]);
+      const double length = ::boolsurf::Distance(p0, p1);
+      const Vec3 ex = (1.0 / length) * (p1 - p0);
+      if (wa[(k + 2) % 3] <= 0.0 && wb[(k + 2) % 3] <= 0.0)
+      {
+        // The piece lies on this edge: distance 0 along it, read but never propagated (its
+        // rays into each triangle of the edge are that triangle's other edges' windows).
+        const double ba = Dot(pa - p0, ex), bb = Dot(pb - p0, ex);
+        Window w;
+        w.Edge = edge;
+        w.Face = w.Origin = w.Parent = -1;
+        w.Kind = FromSource;
+        w.Sigma = -far;
+        w.Sx = 0.5 * (ba + bb);
+        w.Sy = -far;
+        w.B0 = std::min(ba, bb);
+        w.B1 = std::max(ba, bb);
+        this->Windows.push_back(w);
+        this->LinkToEdge(static_cast<int>(this->Windows.size()) - 1);
+        continue;
+      }
+      const int next = mesh.GetNeighbor(t, k);
+      if (next < 0)
+      {
+        continue;
+      }
+      // Along the edge (parameter s in [0, 1]): the foot on the piece's line and the side.
+      const double along0 = Dot(p0 - pa, u), along1 = Dot(p1 - pa, u);
+      const double side0v = Dot(p0 - pa, n), side1v = Dot(p1 - pa, n);
+      for (double sign : { 1.0, -1.0 })
+      {
+        double lo = 0.0, hi = 1.0;
+        // Keep s where f(s) = f0 + s (f1 - f0) >= 0.
+        auto keep = [&lo, &hi](double f0, double f1)
+        {
+          if (f0 >= 0.0 && f1 >= 0.0)
+          {
+            return;
+          }
+          if (f0 < 0.0 && f1 < 0.0)
+          {
+            hi = -1.0;
+            return;
+          }
+          const double root = f0 / (f0 - f1);
+          if (f0 < 0.0)
+          {
+            lo = std::max(lo, root);
+          }
+          else
+          {
+            hi = std::min(hi, root);
+          }
+        };
+        keep(along0, along1);
+        keep(pieceLength - along0, pieceLength - along1);
+        keep(sign * side0v, sign * side1v);
+        if (!(hi - lo > 0.0))
+        {
+          continue;
+        }
+        // The far point behind the piece, on the triangle's side of the edge; distance -far, so
+        // a point beyond the edge is reached at its distance to the piece's line.
+        const Vec3 source = middle - (sign * far) * n;
+        const double x = Dot(source - p0, ex);
+        Window w;
+        w.Edge = edge;
+        w.Face = next;
+        w.Origin = t;
+        w.Parent = t;
+        w.Kind = FromSource;
+        w.Sigma = -far;
+        w.Sx = x;
+        w.Sy = -Length(source - p0 - x * ex);
+        w.B0 = lo * length;
+        w.B1 = hi * length;
+        this->AddWindow(w);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool ExactGeodesicSearch::ComputeDistanceField(
+  const std::vector<std::vector<CanonicalPoint>>& curves,
+  const std::vector<char>& closed,
   double radius)
 {
   const TriangleMesh& mesh = this->Mesh;
@@ -71,49 +221,48 @@ bool ExactGeodesicSearch::ComputeDistanceField(const std::vector<CanonicalPoint>
   this->LastVertexCount = 0;
   this->BudgetExceeded = false;
   std::vector<int> triangles;
-  for (const CanonicalPoint& source : sources)
+  for (size_t c = 0; c < curves.size(); ++c)
   {
-    TrianglesOf(mesh, source, triangles);
-    if (triangles.empty())
+    const std::vector<CanonicalPoint>& curve = curves[c];
+    for (const CanonicalPoint& source : curve)
     {
-      continue;
-    }
-    const int index = static_cast<int>(this->FieldSources.size());
-    this->FieldSources.push_back(PositionOf(mesh, source));
-    for (int t : triangles)
-    {
-      if (this->FaceStamp[t] != this->CurrentStamp)
+      TrianglesOf(mesh, source, triangles);
+      if (triangles.empty())
       {
-        this->FaceStamp[t] = this->CurrentStamp;
-        this->FaceSourceHead[t] = -1;
+        continue;
       }
-      // One link per (source, triangle): the links live in FaceSourceNext, in pairs.
-      const int link = static_cast<int>(this->FaceSourceNext.size());
-      this->FaceSourceNext.push_back(this->FaceSourceHead[t]);
-      this->FaceSourceNext.push_back(index);
-      this->FaceSourceHead[t] = link;
+      const Vec3 position = PositionOf(mesh, source);
+      for (int t : triangles)
+      {
+        this->AddFaceSource(t, position, position);
+      }
+      if (source.Location == PointLocation::Edge)
+      {
+        // The edge the source lies on gets no window from it: record the straight distance
+        // along the edge as a window of zero height, read but never propagated.
+        const std::array<int, 2> ev = mesh.GetEdgeVertices(source.Id);
+        const double length =
+          ::boolsurf::Distance(mesh.GetPosition(ev[0]), mesh.GetPosition(ev[1]));
+        Window w;
+        w.Edge = source.Id;
+        w.Face = w.Origin = w.Parent = -1;
+        w.Kind = FromSource;
+        w.Sigma = 0.0;
+        w.Sx = source.T * length;
+        w.Sy = 0.0;
+        w.B0 = 0.0;
+        w.B1 = length;
+        this->Windows.push_back(w);
+        this->LinkToEdge(static_cast<int>(this->Windows.size()) - 1);
+      }
+      this->SeedFromPoint(source, triangles);
     }
-    if (source.Location == PointLocation::Edge)
+    const size_t n = curve.size();
+    const size_t pieces = n < 2 ? 0 : (c < closed.size() && closed[c] ? n : n - 1);
+    for (size_t i = 0; i < pieces; ++i)
     {
-      // The edge the source lies on gets no window from it: record the straight distance
-      // along the edge as a window of zero height, read but never propagated.
-      const std::array<int, 2> ev = mesh.GetEdgeVertices(source.Id);
-      const double length = ::boolsurf::Distance(mesh.GetPosition(ev[0]), mesh.GetPosition(ev[1]));
-      Window w;
-      w.Edge = source.Id;
-      w.Face = -1;
-      w.Origin = -1;
-      w.Parent = -1;
-      w.Kind = FromSource;
-      w.Sigma = 0.0;
-      w.Sx = source.T * length;
-      w.Sy = 0.0;
-      w.B0 = 0.0;
-      w.B1 = length;
-      this->Windows.push_back(w);
-      this->LinkToEdge(static_cast<int>(this->Windows.size()) - 1);
+      this->AddLineSource(curve[i], curve[(i + 1) % n]);
     }
-    this->SeedFromPoint(source, triangles);
   }
   const std::vector<int> noTarget;
   return this->Run(noTarget);
@@ -175,8 +324,8 @@ double ExactGeodesicSearch::GetFieldDistanceInTriangle(int face,
   {
     for (int link = this->FaceSourceHead[face]; link >= 0; link = this->FaceSourceNext[link])
     {
-      best =
-        std::min(best, ::boolsurf::Distance(this->FieldSources[this->FaceSourceNext[link + 1]], x));
+      const std::array<Vec3, 2>& piece = this->FieldSources[this->FaceSourceNext[link + 1]];
+      best = std::min(best, SegmentPointDistance(piece[0], piece[1], x));
     }
   }
   // Windows on the triangle's edges that light it: x in the edge's frame (vertex 0 at the

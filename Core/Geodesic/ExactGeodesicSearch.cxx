@@ -43,14 +43,6 @@ double CrossingOf(Vec2 s, Vec2 x)
   return den > 0.0 ? s.x + (x.x - s.x) * (-s.y) / den : x.x;
 }
 
-double SegmentPointDistance(const Vec3& a, const Vec3& b, const Vec3& p)
-{
-  const Vec3 ab = b - a;
-  const double l2 = Dot(ab, ab);
-  double t = l2 > 0.0 ? Dot(p - a, ab) / l2 : 0.0;
-  t = std::min(1.0, std::max(0.0, t));
-  return Distance(a + t * ab, p);
-}
 } // namespace
 
 //------------------------------------------------------------------------------

@@ -56,13 +56,21 @@ public:
   bool GetLastBudgetExceeded() const { return this->BudgetExceeded; }
 
   ///@{
-  /// Distance field mode (geodesic offsets): the exact distance from the nearest of `sources`
-  /// (normalized canonical points) to every surface point closer than `radius`. The same
-  /// window propagation as FindStrip with every source at distance 0 and no target, stopped
-  /// when every event left is at least `radius` away. False when the window budget ran out.
-  /// Afterwards the field can be read anywhere: a value below `radius` is exact, a value at or
-  /// above it only says "at least radius" (infinity where nothing arrived).
-  bool ComputeDistanceField(const std::vector<CanonicalPoint>& sources, double radius);
+  /// Distance field mode (geodesic offsets): the exact distance from the nearest of `curves`
+  /// (polylines of normalized canonical points whose consecutive points share a triangle, so
+  /// each piece is a straight segment of one triangle, or of an edge) to every surface point
+  /// closer than `radius`. The same window propagation as FindStrip with every source at
+  /// distance 0 and no target, stopped when every event left is at least `radius` away. The
+  /// polylines' points are point sources; each piece is a line source: in its triangle's plane,
+  /// the rays normal to it through each edge of the triangle form a window whose source is a
+  /// point 1e7 piece lengths behind the piece (at distance -1e7 lengths), so the rays are
+  /// parallel to 1e-7 and the distance it gives is the distance to the piece's line to ~1e-8 of
+  /// the piece's length. False when the window budget ran out. Afterwards the field can be read
+  /// anywhere: a value below `radius` is exact, a value at or above it only says "at least
+  /// radius" (infinity where nothing arrived).
+  bool ComputeDistanceField(const std::vector<std::vector<CanonicalPoint>>& curves,
+    const std::vector<char>& closed,
+    double radius);
   /// At mesh vertex v.
   double GetFieldDistanceAtVertex(int v) const;
   /// On mesh edge `edge` at parameter t in [0, 1] from its canonical vertex 0 to vertex 1
@@ -131,6 +139,8 @@ private:
   bool Run(const std::vector<int>& endTriangles);
   void LinkToEdge(int id);
   void PrepareField();
+  void AddFaceSource(int face, const Vec3& a, const Vec3& b);
+  void AddLineSource(const CanonicalPoint& a, const CanonicalPoint& b);
   double WindowDistanceAt(const Window& w, double b) const;
 
   const TriangleMesh& Mesh;
@@ -162,7 +172,8 @@ private:
   std::vector<std::uint32_t> EdgeStamp;            //
   std::vector<int> FaceSourceHead, FaceSourceNext; // sources inside or on each triangle
   std::vector<std::uint32_t> FaceStamp;            //
-  std::vector<Vec3> FieldSources;                  // positions of the field's sources
+  // The field's sources as segments (a point source is a segment of length 0).
+  std::vector<std::array<Vec3, 2>> FieldSources;
   std::vector<int> FieldVertices;
   std::function<bool(int)> Allowed;
 };

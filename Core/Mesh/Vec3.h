@@ -75,6 +75,17 @@ inline double Distance(Vec3 a, Vec3 b)
 {
   return Length(a - b);
 }
+
+/// Distance from p to the segment [a, b] (a point when a == b).
+inline double SegmentPointDistance(const Vec3& a, const Vec3& b, const Vec3& p)
+{
+  const Vec3 ab = b - a;
+  const double l2 = Dot(ab, ab);
+  double t = l2 > 0.0 ? Dot(p - a, ab) / l2 : 0.0;
+  t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+  return Distance(a + t * ab, p);
+}
+
 inline bool IsFinite(Vec3 a)
 {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);

@@ -28,76 +28,6 @@ double Milliseconds(Clock::time_point from, Clock::time_point to)
   return std::chrono::duration<double, std::milli>(to - from).count();
 }
 
-// The boundary's points plus samples every `spacing` along each straight piece (the pieces lie
-// in one triangle each, so the samples are surface points of that triangle).
-void SampleCurve(const TriangleMesh& mesh,
-  const std::vector<CanonicalPoint>& curve,
-  bool closed,
-  double spacing,
-  std::vector<CanonicalPoint>& out)
-{
-  const size_t n = curve.size();
-  for (size_t i = 0; i < n; ++i)
-  {
-    out.push_back(curve[i]);
-    if (i + 1 == n && !closed)
-    {
-      break;
-    }
-    const CanonicalPoint& a = curve[i];
-    const CanonicalPoint& b = curve[(i + 1) % n];
-    const int t = SharedTriangle(mesh, a, b);
-    if (t < 0)
-    {
-      continue;
-    }
-    const double length = Distance(PositionOf(mesh, a), PositionOf(mesh, b));
-    const int pieces = static_cast<int>(std::ceil(length / spacing));
-    if (pieces < 2)
-    {
-      continue;
-    }
-    const std::array<double, 3> wa = WeightsInTriangle(mesh, a, t);
-    const std::array<double, 3> wb = WeightsInTriangle(mesh, b, t);
-    for (int j = 1; j < pieces; ++j)
-    {
-      const double f = static_cast<double>(j) / pieces;
-      SurfacePoint p;
-      p.Triangle = t;
-      p.U = (1.0 - f) * wa[1] + f * wb[1];
-      p.V = (1.0 - f) * wa[2] + f * wb[2];
-      out.push_back(LocateSurfacePoint(mesh, p));
-    }
-  }
-}
-
-// Mean edge length of the triangles the curves pass through: the scale of "mesh resolution"
-// where the offset is drawn.
-double LocalEdgeLength(const TriangleMesh& mesh,
-  const std::vector<std::vector<CanonicalPoint>>& curves)
-{
-  double sum = 0.0;
-  int count = 0;
-  for (const auto& curve : curves)
-  {
-    for (const CanonicalPoint& p : curve)
-    {
-      const int t = AnyTriangleOf(mesh, p);
-      if (t < 0)
-      {
-        continue;
-      }
-      const Triangle& tri = mesh.GetTriangle(t);
-      for (int k = 0; k < 3; ++k)
-      {
-        sum += Distance(mesh.GetPosition(tri[k]), mesh.GetPosition(tri[(k + 1) % 3]));
-        ++count;
-      }
-    }
-  }
-  return count > 0 ? sum / count : 0.0;
-}
-
 std::string BudgetMessage(int windows)
 {
   return "the band within the distance is too large for the distance computation (over " +
@@ -144,27 +74,13 @@ public:
     const double d = std::abs(this->Level);
     this->HasClosed = !this->Region.Boundary.empty();
     this->HasOpen = this->Level > 0.0 && !this->Region.Bands.empty();
-    std::vector<std::vector<CanonicalPoint>> all = this->Region.Boundary;
-    if (this->HasOpen)
-    {
-      for (const BandCurve& band : this->Region.Bands)
-      {
-        all.push_back(band.Points);
-      }
-    }
-    double spacing = options.SourceSpacing;
-    if (!(spacing > 0.0))
-    {
-      spacing = std::max(0.05 * d, LocalEdgeLength(mesh, all) / 16.0);
-    }
     // Values below the radius are exact; the contour only reads values near d.
     const double radius = d * (1.0 + 1e-3) + 1e-12;
-    std::vector<CanonicalPoint> sources;
     if (this->HasClosed)
     {
       for (const auto& loop : this->Region.Boundary)
       {
-        SampleCurve(mesh, loop, true, spacing, sources);
+        stats.Sources += static_cast<int>(loop.size());
         for (const CanonicalPoint& p : loop)
         {
           if (p.Location == PointLocation::Edge)
@@ -192,7 +108,6 @@ public:
       {
         std::sort(entry.second.begin(), entry.second.end());
       }
-      stats.Sources += static_cast<int>(sources.size());
       this->Closed.SetMaximumWindows(options.MaximumWindows);
       if (this->Region.TriangleSide)
       {
@@ -204,7 +119,8 @@ public:
       {
         this->Closed.SetFieldTriangleFilter(nullptr);
       }
-      if (!this->Closed.ComputeDistanceField(sources, radius))
+      const std::vector<char> loopsClosed(this->Region.Boundary.size(), 1);
+      if (!this->Closed.ComputeDistanceField(this->Region.Boundary, loopsClosed, radius))
       {
         error = BudgetMessage(options.MaximumWindows);
         return false;
@@ -213,7 +129,8 @@ public:
     }
     if (this->HasOpen)
     {
-      sources.clear();
+      std::vector<std::vector<CanonicalPoint>> curves;
+      std::vector<char> curvesClosed;
       for (const BandCurve& band : this->Region.Bands)
       {
         const std::vector<CanonicalPoint>& curve = band.Points;
@@ -221,7 +138,9 @@ public:
         {
           continue;
         }
-        SampleCurve(mesh, curve, band.Closed, spacing, sources);
+        curves.push_back(curve);
+        curvesClosed.push_back(band.Closed ? 1 : 0);
+        stats.Sources += static_cast<int>(curve.size());
         if (options.Ends == OffsetEndStyle::Flat && !band.Closed)
         {
           const size_t n = curve.size();
@@ -237,9 +156,8 @@ public:
           }
         }
       }
-      stats.Sources += static_cast<int>(sources.size());
       this->Open.SetMaximumWindows(options.MaximumWindows);
-      if (!this->Open.ComputeDistanceField(sources, radius))
+      if (!this->Open.ComputeDistanceField(curves, curvesClosed, radius))
       {
         error = BudgetMessage(options.MaximumWindows);
         return false;

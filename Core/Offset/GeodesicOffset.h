@@ -6,13 +6,9 @@
 // The region is given by its boundary (closed loops of surface points, the region on their
 // left, as the arrangement's RegionBoundary gives them) and the side of each mesh vertex.
 // 1. Distance: exact polyhedral distance to the boundary by window propagation
-//    (ExactGeodesicSearch's field mode) from points sampled along the boundary's straight
-//    pieces, stopped just past |d|: only the band the offset sweeps is visited. Sampling a
-//    piece every s puts each point at most about s^2 / (8 |d|) too far at distance |d| (paths
-//    bending around a vertex near the boundary were measured at up to 1.5 times that); s is 5 %
-//    of |d|, a relative error of about 3e-4, but not below 1/16 of the local edge length h, so
-//    for |d| under ~1.25 h the error is up to ~3e-3 |d| (h^2/2048/|d|). Distances are never
-//    too short: a grown region is never too large. Growing does not propagate inside the
+//    (ExactGeodesicSearch's field mode): the boundary's points are point sources and each
+//    straight piece between two of them a line source (rays normal to it), stopped just past
+//    |d|: only the band the offset sweeps is visited. Growing does not propagate inside the
 //    region, nor shrinking outside it: a shortest path to the boundary never crosses it.
 // 2. Signed field: F = -distance inside the region, +distance outside (the sign flips where
 //    an edge crosses the boundary); bands use the distance to the open curves, cut square at
@@ -56,8 +52,6 @@ struct OffsetOptions
   /// Points added on the level set inside each crossed triangle (0: one point per crossed mesh
   /// edge, the contour's mesh resolution).
   int Resolution = 0;
-  /// Distance between samples along the boundary; 0: automatic (see the header's comment).
-  double SourceSpacing = 0.0;
   /// Window budget of the distance computation (about 80 bytes each: 2^23 is ~0.7 GB, a band
   /// of millions of triangles); past it the offset is refused with a message.
   int MaximumWindows = 1 << 23;
@@ -88,7 +82,7 @@ struct OffsetRegion
 
 struct OffsetStatistics
 {
-  int Sources = 0;          ///< boundary samples
+  int Sources = 0;          ///< boundary points (each piece between two is a line source)
   int Windows = 0;          ///< windows of the distance computation
   int FieldVertices = 0;    ///< vertices the distance reached
   int CrossedTriangles = 0; ///< triangles the contour crosses

@@ -120,7 +120,7 @@ std::vector<SurfacePoint> LoopControlPoints(const TriangleMesh& mesh,
 
 void AddStatistics(const OffsetStatistics& s, double total, vtkFieldData* fd)
 {
-  const char* names[] = { "Sources",
+  const char* names[] = { "BoundaryPoints",
     "Windows",
     "FieldVertices",
     "CrossedTriangles",
