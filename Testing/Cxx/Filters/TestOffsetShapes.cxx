@@ -213,6 +213,48 @@ TEST(OffsetShapes, ABooleanResultsBoundaryIsOffsetAsItsRegion)
   EXPECT_NEAR(area, AreaOf(expected), 1e-3 * area);
 }
 
+TEST(OffsetShapes, NestedShapesOffsetAsTheirUnion)
+{
+  // S1 inside S0: their union's margin is S0's; a margin of S0 minus S1 (a ring) closes the
+  // hole once the distance exceeds the hole's half width.
+  Fixture f;
+  const ControlPolygon outer{
+    { { 0.25, 0.25, 0 }, { 0.75, 0.25, 0 }, { 0.75, 0.75, 0 }, { 0.25, 0.75, 0 } }, 0
+  };
+  const ControlPolygon inner{
+    { { 0.4375, 0.4375, 0 }, { 0.5625, 0.4375, 0 }, { 0.5625, 0.5625, 0 }, { 0.4375, 0.5625, 0 } },
+    1
+  };
+  vtkNew<vtkBoolSurfOffset> offset;
+  offset->SetInputData(0, f.Mesh);
+  offset->SetInputData(1, testutils::ToCurves({ outer, inner }));
+  offset->SetKeepInputCurves(false);
+  offset->SetOutputShapeId(5);
+  vtkNew<vtkBoolSurf> region;
+  region->SetInputData(0, f.Mesh);
+  region->SetInputConnection(1, offset->GetOutputPort());
+  region->SetOperation(4);
+  region->SetExpression("S5");
+  for (const char* expression : { "S0 | S1", "S0 - S1" })
+  {
+    for (double d : { 0.03125, 0.09375 })
+    {
+      offset->SetExpression(expression);
+      offset->SetDistance(d);
+      ASSERT_EQ(testutils::ErrorsOf(region), "") << expression << " " << d;
+      const ClipperLib::Paths shape = std::string(expression) == "S0 | S1"
+        ? Scaled(outer)
+        : ClipperBoolean(ClipperLib::ctDifference, Scaled(outer), Scaled(inner));
+      const double expected = AreaOf(ClipperOffset(shape, d));
+      const double area = testutils::Area(region->GetOutput());
+      EXPECT_NEAR(area, expected, 1e-3 * expected) << expression << " " << d;
+      // One loop, except the ring at the small distance (its hole stays open).
+      const bool ring = std::string(expression) == "S0 - S1" && d < 0.0625;
+      EXPECT_EQ(offset->GetOutput()->GetNumberOfCells(), ring ? 2 : 1) << expression << " " << d;
+    }
+  }
+}
+
 TEST(OffsetShapes, BadInputGetsNamedErrors)
 {
   Fixture f;
