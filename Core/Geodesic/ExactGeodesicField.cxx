@@ -200,6 +200,40 @@ void ExactGeodesicSearch::AddLineSource(const CanonicalPoint& a, const Canonical
 }
 
 //------------------------------------------------------------------------------
+// Point i of the curve lies on a mesh edge that the curve crosses without turning: its pieces
+// lie in the edge's two triangles and make the same angle with the edge (straight once the
+// triangles are unfolded), as a traced geodesic does at every edge it crosses.
+bool ExactGeodesicSearch::StraightCrossing(const std::vector<CanonicalPoint>& curve,
+  size_t i,
+  bool closed) const
+{
+  const TriangleMesh& mesh = this->Mesh;
+  const size_t n = curve.size();
+  const CanonicalPoint& p = curve[i];
+  if (p.Location != PointLocation::Edge || n < 3 || (!closed && (i == 0 || i + 1 == n)))
+  {
+    return false;
+  }
+  const CanonicalPoint& before = curve[(i + n - 1) % n];
+  const CanonicalPoint& after = curve[(i + 1) % n];
+  const int t1 = SharedTriangle(mesh, before, p), t2 = SharedTriangle(mesh, p, after);
+  if (t1 < 0 || t2 < 0 || t1 == t2 || TriangleContains(mesh, after, t1) ||
+    TriangleContains(mesh, before, t2))
+  {
+    return false;
+  }
+  const Vec3 x = PositionOf(mesh, p), a = PositionOf(mesh, before), b = PositionOf(mesh, after);
+  const std::array<int, 2> ev = mesh.GetEdgeVertices(p.Id);
+  const Vec3 edge = mesh.GetPosition(ev[1]) - mesh.GetPosition(ev[0]);
+  const double la = Length(x - a), lb = Length(b - x), le = Length(edge);
+  if (!(la > 0.0 && lb > 0.0 && le > 0.0))
+  {
+    return false;
+  }
+  return std::abs(Dot(x - a, edge) / (la * le) - Dot(b - x, edge) / (lb * le)) <= 1e-9;
+}
+
+//------------------------------------------------------------------------------
 bool ExactGeodesicSearch::ComputeDistanceField(
   const std::vector<std::vector<CanonicalPoint>>& curves,
   const std::vector<char>& closed,
@@ -224,8 +258,14 @@ bool ExactGeodesicSearch::ComputeDistanceField(
   for (size_t c = 0; c < curves.size(); ++c)
   {
     const std::vector<CanonicalPoint>& curve = curves[c];
-    for (const CanonicalPoint& source : curve)
+    const bool isClosed = c < closed.size() && closed[c];
+    for (size_t i = 0; i < curve.size(); ++i)
     {
+      const CanonicalPoint& source = curve[i];
+      if (this->StraightCrossing(curve, i, isClosed))
+      {
+        continue; // the two pieces' line sources meet on its normal: nothing is nearer to it
+      }
       TrianglesOf(mesh, source, triangles);
       if (triangles.empty())
       {
@@ -258,7 +298,7 @@ bool ExactGeodesicSearch::ComputeDistanceField(
       this->SeedFromPoint(source, triangles);
     }
     const size_t n = curve.size();
-    const size_t pieces = n < 2 ? 0 : (c < closed.size() && closed[c] ? n : n - 1);
+    const size_t pieces = n < 2 ? 0 : (isClosed ? n : n - 1);
     for (size_t i = 0; i < pieces; ++i)
     {
       this->AddLineSource(curve[i], curve[(i + 1) % n]);

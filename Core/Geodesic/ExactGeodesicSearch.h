@@ -61,7 +61,8 @@ public:
   /// each piece is a straight segment of one triangle, or of an edge) to every surface point
   /// closer than `radius`. The same window propagation as FindStrip with every source at
   /// distance 0 and no target, stopped when every event left is at least `radius` away. The
-  /// polylines' points are point sources; each piece is a line source: in its triangle's plane,
+  /// polylines' points are point sources (but where a curve crosses an edge without turning,
+  /// which its two pieces cover); each piece is a line source: in its triangle's plane,
   /// the rays normal to it through each edge of the triangle form a window whose source is a
   /// point 1e7 piece lengths behind the piece (at distance -1e7 lengths), so the rays are
   /// parallel to 1e-7 and the distance it gives is the distance to the piece's line to ~1e-8 of
@@ -141,6 +142,7 @@ private:
   void PrepareField();
   void AddFaceSource(int face, const Vec3& a, const Vec3& b);
   void AddLineSource(const CanonicalPoint& a, const CanonicalPoint& b);
+  bool StraightCrossing(const std::vector<CanonicalPoint>& curve, size_t i, bool closed) const;
   double WindowDistanceAt(const Window& w, double b) const;
 
   const TriangleMesh& Mesh;
