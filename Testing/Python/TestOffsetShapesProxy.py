@@ -7,12 +7,15 @@ distance gets back its area; the one-step BoolSurf's OffsetShape step gives the 
 """
 import math
 import os
+import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager as sm
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import torus_mesh  # noqa: E402
 
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 
@@ -21,23 +24,7 @@ NU, NV = 96, 48
 
 
 def torus_polydata():
-    points, polys = vtkPoints(), vtkCellArray()
-    for i in range(NU):
-        for j in range(NV):
-            a, b = 2 * math.pi * i / NU, 2 * math.pi * j / NV
-            points.InsertNextPoint((R + r * math.cos(b)) * math.cos(a),
-                                   (R + r * math.cos(b)) * math.sin(a), r * math.sin(b))
-
-    def vid(i, j):
-        return (i % NU) * NV + (j % NV)
-    for i in range(NU):
-        for j in range(NV):  # counter-clockwise seen from outside
-            polys.InsertNextCell(3, [vid(i, j), vid(i + 1, j), vid(i + 1, j + 1)])
-            polys.InsertNextCell(3, [vid(i, j), vid(i + 1, j + 1), vid(i, j + 1)])
-    pd = vtkPolyData()
-    pd.SetPoints(points)
-    pd.SetPolys(polys)
-    return pd
+    return torus_mesh.torus_polydata(R, r, NU, NV)
 
 
 def area(proxy):

@@ -9,6 +9,7 @@
 // excess (see Docs/Decisions.md). Pairs: random points (vertex, edge and face points), short
 // pairs (2-6 % of the bounding-box diagonal), far points (the farthest of many random
 // candidates) and, on meshes with handles, pairs on opposite sides of a handle.
+#include "CgalFaceWeights.h"
 #include "Geodesic/GeodesicPath.h"
 #include "Mesh/PlyReader.h"
 #include "Mesh/ProceduralMeshes.h"
@@ -67,21 +68,7 @@ ShortestPaths::Face_location Locate(const TriangleMesh& mesh,
   const std::array<double, 3> w = WeightsInTriangle(mesh, c, t);
   const Triangle& tri = mesh.GetTriangle(t);
   const CgalMesh::Face_index f(t);
-  const auto h = cgal.halfedge(f);
-  const int order[3] = { static_cast<int>(cgal.source(h)),
-    static_cast<int>(cgal.target(h)),
-    static_cast<int>(cgal.target(cgal.next(h))) };
-  std::array<double, 3> b{};
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      if (tri[k] == order[i])
-      {
-        b[i] = w[k];
-      }
-    }
-  }
+  std::array<double, 3> b = InCgalVertexOrder(cgal, f, { tri[0], tri[1], tri[2] }, w);
   if (c.Location == PointLocation::Edge)
   {
     // CGAL 5.5's tree is wrong for some points given exactly on an edge (one zero weight):

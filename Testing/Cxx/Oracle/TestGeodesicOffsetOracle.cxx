@@ -17,6 +17,7 @@
 // in CGAL 5.5.1 it returns distances too long by up to 13 % of |d| at some points here (vertices
 // too), where single-source trees, exact traced paths and Core's field agree to rounding.
 #include "Arrangement/Arrangement.h"
+#include "CgalFaceWeights.h"
 #include "Geodesic/CurveTracer.h"
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Labeling/CellLabeling.h"
@@ -60,21 +61,7 @@ ShortestPaths::Face_location FaceLocation(const CgalMesh& cgal,
   const std::array<int, 3>& corners,
   const std::array<double, 3>& w)
 {
-  const auto h = cgal.halfedge(f);
-  const int order[3] = { static_cast<int>(cgal.source(h)),
-    static_cast<int>(cgal.target(h)),
-    static_cast<int>(cgal.target(cgal.next(h))) };
-  std::array<double, 3> b{};
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      if (corners[k] == order[i])
-      {
-        b[i] = w[k];
-      }
-    }
-  }
+  std::array<double, 3> b = InCgalVertexOrder(cgal, f, corners, w);
   // CGAL 5.5's tree is wrong for some sources given exactly on an edge (a zero weight; see
   // TestGeodesicExactOracle.cxx): a point 1e-13 (relative) inside the face is the same point to
   // far below every tolerance here and takes the well-tested face path.
