@@ -180,17 +180,8 @@ void ExactGeodesicSearch::AddLineSource(const CanonicalPoint& a, const Canonical
         }
         // The far point behind the piece, on the triangle's side of the edge; distance -far, so
         // a point beyond the edge is reached at its distance to the piece's line.
-        const Vec3 source = middle - (sign * far) * n;
-        const double x = Dot(source - p0, ex);
-        Window w;
-        w.Edge = edge;
-        w.Face = next;
-        w.Origin = t;
-        w.Parent = t;
-        w.Kind = FromSource;
-        w.Sigma = -far;
-        w.Sx = x;
-        w.Sy = -Length(source - p0 - x * ex);
+        Window w =
+          this->WholeEdgeWindow(edge, next, t, middle - (sign * far) * n, -far, FromSource, t);
         w.B0 = lo * length;
         w.B1 = hi * length;
         this->AddWindow(w);

@@ -29,13 +29,9 @@ void BarycentricInTriangle(const Vec3& a,
   double& u,
   double& v)
 {
-  const Vec3 e1 = b - a, e2 = c - a;
-  const Vec3 d = x - a;
-  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
-  const double b1 = Dot(d, e1), b2 = Dot(d, e2);
-  const double det = d11 * d22 - d12 * d12;
-  u = det != 0 ? (d22 * b1 - d12 * b2) / det : 0.0;
-  v = det != 0 ? (d11 * b2 - d12 * b1) / det : 0.0;
+  const std::array<double, 3> w = TrianglePlaneWeights(a, b, c)(x);
+  u = w[1];
+  v = w[2];
   ClampBarycentric(u, v);
 }
 

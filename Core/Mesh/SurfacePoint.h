@@ -14,6 +14,7 @@
 
 #include "Mesh/TriangleMesh.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,39 @@ struct SurfacePoint
 /// a closest-point query returns: barycentric (u, v) by least squares in the plane, clamped
 /// into the triangle (ClampBarycentric). A degenerate triangle gives its corner 0.
 SurfacePoint PointInTriangle(const TriangleMesh& mesh, int t, const Vec3& x);
+
+/// Barycentric weights (w0, w1, w2) of the points of the plane of triangle a, b, c, not clamped
+/// (points outside the triangle get negative weights); all zero for a degenerate triangle.
+class TrianglePlaneWeights
+{
+public:
+  TrianglePlaneWeights(const Vec3& a, const Vec3& b, const Vec3& c)
+    : A(a)
+    , E1(b - a)
+    , E2(c - a)
+    , D11(Dot(E1, E1))
+    , D12(Dot(E1, E2))
+    , D22(Dot(E2, E2))
+    , Det(D11 * D22 - D12 * D12)
+  {
+  }
+  bool IsDegenerate() const { return !(this->Det > 0.0); }
+  std::array<double, 3> operator()(const Vec3& x) const
+  {
+    if (this->IsDegenerate())
+    {
+      return { 0.0, 0.0, 0.0 };
+    }
+    const double b1 = Dot(x - this->A, this->E1), b2 = Dot(x - this->A, this->E2);
+    const double u = (this->D22 * b1 - this->D12 * b2) / this->Det;
+    const double v = (this->D11 * b2 - this->D12 * b1) / this->Det;
+    return { 1.0 - u - v, u, v };
+  }
+
+private:
+  Vec3 A, E1, E2;
+  double D11, D12, D22, Det;
+};
 
 /// The same for a triangle given by its corners a, b, c (in 3D, any orientation): the weights
 /// (u, v) of b and c.

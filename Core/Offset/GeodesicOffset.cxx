@@ -453,20 +453,12 @@ void RefinePiece(const TriangleMesh& mesh,
   {
     return;
   }
-  // Weights of points of the triangle's plane, not clamped (the step below leaves the triangle).
-  const Vec3 e1 = p1 - p0, e2 = p2 - p0;
-  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
-  const double det = d11 * d22 - d12 * d12;
-  if (!(det > 0.0))
+  // Not clamped: the step below leaves the triangle.
+  const TrianglePlaneWeights weightsOf(p0, p1, p2);
+  if (weightsOf.IsDegenerate())
   {
     return;
   }
-  auto weightsOf = [&](const Vec3& x)
-  {
-    const double b1 = Dot(x - p0, e1), b2 = Dot(x - p0, e2);
-    const double u = (d22 * b1 - d12 * b2) / det, v = (d11 * b2 - d12 * b1) / det;
-    return std::array<double, 3>{ 1.0 - u - v, u, v };
-  };
   for (int i = 1; i <= count; ++i)
   {
     const double f = static_cast<double>(i) / (count + 1);
@@ -540,25 +532,17 @@ bool SharpCorner(const TriangleMesh& mesh,
   const Triangle& tri = mesh.GetTriangle(t);
   const Vec3 p0 = mesh.GetPosition(tri[0]), p1 = mesh.GetPosition(tri[1]),
              p2 = mesh.GetPosition(tri[2]);
-  const Vec3 e1 = p1 - p0, e2 = p2 - p0;
-  const double d11 = Dot(e1, e1), d12 = Dot(e1, e2), d22 = Dot(e2, e2);
-  const double det = d11 * d22 - d12 * d12;
-  if (!(det > 0.0))
+  const TrianglePlaneWeights plane(p0, p1, p2);
+  if (plane.IsDegenerate())
   {
     return false;
   }
-  // Plane coordinates: x along e1, y normal to it in the plane.
-  const double l1 = std::sqrt(d11);
-  const Vec3 ux = (1.0 / l1) * e1;
-  const Vec3 uy0 = e2 - Dot(e2, ux) * ux;
+  // Plane coordinates: x along p0 -> p1, y normal to it in the plane.
+  const double l1 = Distance(p0, p1);
+  const Vec3 ux = (1.0 / l1) * (p1 - p0);
+  const Vec3 uy0 = (p2 - p0) - Dot(p2 - p0, ux) * ux;
   const Vec3 uy = (1.0 / Length(uy0)) * uy0;
-  auto weightsOf = [&](double x, double y)
-  {
-    const Vec3 q = p0 + x * ux + y * uy;
-    const double b1 = Dot(q - p0, e1), b2 = Dot(q - p0, e2);
-    const double u = (d22 * b1 - d12 * b2) / det, v = (d11 * b2 - d12 * b1) / det;
-    return std::array<double, 3>{ 1.0 - u - v, u, v };
-  };
+  auto weightsOf = [&](double x, double y) { return plane(p0 + x * ux + y * uy); };
   auto value = [&](double x, double y) { return field.InTriangle(t, weightsOf(x, y)); };
   const Vec3 centroid = (1.0 / 3.0) * (p0 + p1 + p2);
   const double cx = Dot(centroid - p0, ux), cy = Dot(centroid - p0, uy);

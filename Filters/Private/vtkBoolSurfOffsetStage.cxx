@@ -8,7 +8,6 @@
 #include "Offset/OffsetRegionOfCells.h"
 #include "Selection/BooleanExpression.h"
 #include "vtkBoolSurfBooleanStage.h"
-#include "vtkBoolSurfControlCurves.h"
 #include "vtkBoolSurfTraceStage.h"
 
 #include <vtkCellArray.h>
@@ -165,26 +164,16 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
     error = "Distance is not a finite number";
     return false;
   }
-  // 1. the control curves (kept for the output) and their traces
-  ControlCurveOptions controlOptions;
-  controlOptions.MaximumDistance = options.ProjectionTolerance * surface.Triangles->GetLength();
+  // 1. the control curves (kept for the output) and their traces, read once
   std::vector<ControlCurve> controls;
   std::vector<std::string> problems;
-  ReadControlCurves(
-    curves,
-    [&cache] { return cache.GetLocator(); },
-    mesh,
-    controlOptions,
-    controls,
-    problems,
-    notes);
   TraceOptions traceOptions;
   traceOptions.Resolution = options.Resolution;
   traceOptions.ProjectionTolerance = options.ProjectionTolerance;
   traceOptions.Method = options.Method;
   std::vector<TracedCurve> traced;
-  if (!problems.empty() ||
-    !TraceControlCurves(cache, curves, traceOptions, nullptr, traced, nullptr, problems, notes))
+  if (!TraceControlCurves(
+        cache, curves, traceOptions, nullptr, traced, nullptr, problems, notes, nullptr, &controls))
   {
     error = "Cannot trace the curves:" + JoinLines(problems);
     return false;

@@ -41,13 +41,13 @@ struct OffsetStageOptions
 
 /// Reads and traces the control curves of `curves` (the input of Trace Surface Curves; without
 /// a ShapeId array all its curves are one shape, so a Boolean's or BSC's Boundary output is
-/// offset as the region it bounds) on the cached surface, offsets the requested region (or bands) by Distance and writes control curves
-/// to `output` in the same form: the kept input curves, then the offset loops as geodesic
-/// polygons of exact surface points (point data TriangleId/Barycentric; cell data ShapeId,
-/// CurveType, Closed, OffsetCurve = 1 for offset loops, 0 for input curves), field data
-/// OffsetDistance, OffsetShapeId, OffsetExpression and OffsetStatistics. False with a named
-/// error: unknown shape id, malformed expression, inconsistent shape, a negative distance larger
-/// than the shape, a non-finite distance.
+/// offset as the region it bounds) on the cached surface, offsets the requested region (or bands)
+/// by Distance and writes control curves to `output` in the same form: the kept input curves, then
+/// the offset loops as geodesic polygons of exact surface points (point data
+/// TriangleId/Barycentric; cell data ShapeId, CurveType, Closed, OffsetCurve = 1 for offset loops,
+/// 0 for input curves), field data OffsetDistance, OffsetShapeId, OffsetExpression and
+/// OffsetStatistics. False with a named error: unknown shape id, malformed expression, inconsistent
+/// shape, a negative distance larger than the shape, a non-finite distance.
 bool OffsetControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* curves,
   const OffsetStageOptions& options,

@@ -2,7 +2,7 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
-#include "vtkBoolSurfControlCurves.h"
+#include "vtkBoolSurfTraceStage.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -198,18 +198,9 @@ bool ResolveControlCurves(vtkSurfaceCache& cache,
 {
   const vtkSurfaceInput& surface = cache.GetCurrent();
   const TriangleMesh& mesh = *surface.Mesh;
-  ControlCurveOptions controlOptions;
-  controlOptions.MaximumDistance = options.ProjectionTolerance * surface.Triangles->GetLength();
   std::vector<ControlCurve> controls;
   std::vector<std::string> problems;
-  ReadControlCurves(
-    curves,
-    [&cache] { return cache.GetLocator(); },
-    mesh,
-    controlOptions,
-    controls,
-    problems,
-    notes);
+  ReadSurfaceControlCurves(cache, curves, options.ProjectionTolerance, controls, problems, notes);
   if (!problems.empty())
   {
     error = "Invalid control curves:" + JoinLines(problems);

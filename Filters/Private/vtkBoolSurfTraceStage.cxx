@@ -248,6 +248,27 @@ void AddSiteGraphField(const TriangleMesh& mesh, vtkFieldData* fieldData)
 }
 
 //------------------------------------------------------------------------------
+void ReadSurfaceControlCurves(vtkSurfaceCache& cache,
+  vtkPolyData* controlCurves,
+  double projectionTolerance,
+  std::vector<ControlCurve>& controls,
+  std::vector<std::string>& problems,
+  std::vector<std::string>& notes)
+{
+  const vtkSurfaceInput& surface = cache.GetCurrent();
+  ControlCurveOptions options;
+  options.MaximumDistance = projectionTolerance * surface.Triangles->GetLength();
+  ReadControlCurves(
+    controlCurves,
+    [&cache] { return cache.GetLocator(); },
+    *surface.Mesh,
+    options,
+    controls,
+    problems,
+    notes);
+}
+
+//------------------------------------------------------------------------------
 bool TraceControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* controlCurves,
   const TraceOptions& options,
@@ -256,22 +277,16 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* output,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes,
-  std::vector<CurveSource>* sources)
+  std::vector<CurveSource>* sources,
+  std::vector<ControlCurve>* controlsRead)
 {
   traced.clear();
-  const vtkSurfaceInput& surface = cache.GetCurrent();
-  const TriangleMesh& mesh = *surface.Mesh;
-  ControlCurveOptions controlOptions;
-  controlOptions.MaximumDistance = options.ProjectionTolerance * surface.Triangles->GetLength();
-  std::vector<ControlCurve> controls;
-  ReadControlCurves(
-    controlCurves,
-    [&cache] { return cache.GetLocator(); },
-    mesh,
-    controlOptions,
-    controls,
-    problems,
-    notes);
+  const TriangleMesh& mesh = *cache.GetCurrent().Mesh;
+  std::vector<ControlCurve> own;
+  std::vector<ControlCurve>& controls = controlsRead ? *controlsRead : own;
+  controls.clear();
+  ReadSurfaceControlCurves(
+    cache, controlCurves, options.ProjectionTolerance, controls, problems, notes);
   CurveTracer& tracer = cache.GetTracer();
   tracer.SetResolution(options.Resolution);
   tracer.GetPathSolver().SetMethod(options.Method);

@@ -5,6 +5,7 @@
 
 #include "Geodesic/CurveTracer.h"
 #include "Selection/BoundaryControlPoints.h"
+#include "vtkBoolSurfControlCurves.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
 #include <string>
@@ -31,6 +32,7 @@ struct TraceOptions
 /// `sources` (may be null) receives each curve's control points and the curve parameter of
 /// each traced point, for results given back as control points.
 /// `progress` (may be null) receives progress updates in [0, 1] and is checked for aborts.
+/// `controls` (may be null) receives the control curves as read.
 bool TraceControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* controlCurves,
   const TraceOptions& options,
@@ -39,7 +41,17 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* output,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes,
-  std::vector<CurveSource>* sources = nullptr);
+  std::vector<CurveSource>* sources = nullptr,
+  std::vector<ControlCurve>* controls = nullptr);
+
+/// ReadControlCurves on the cached surface: control points projected with its locator, no
+/// farther than `projectionTolerance` times its bounding-box diagonal.
+void ReadSurfaceControlCurves(vtkSurfaceCache& cache,
+  vtkPolyData* controlCurves,
+  double projectionTolerance,
+  std::vector<ControlCurve>& controls,
+  std::vector<std::string>& problems,
+  std::vector<std::string>& notes);
 
 /// Field array "GeodesicSiteGraph" (components Sites, BuildMilliseconds, MemoryMB,
 /// BuildNumber): the per-surface structure of the Bounded geodesic method, once a far leg has
