@@ -87,6 +87,7 @@ protected:
   void SetSurfacePorts(const std::vector<int>& ports);
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  vtkExecutive* CreateDefaultExecutive() override;
   int RequestData(vtkInformation* request,
     vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) final;

@@ -230,6 +230,5 @@ vtkBoolSurfRankGather::vtkBoolSurfRankGather(vtkAlgorithm* filter,
 //------------------------------------------------------------------------------
 vtkPolyData* vtkBoolSurfRankGather::Input(int port) const
 {
-  return port >= 0 && port < static_cast<int>(this->Inputs.size()) ? this->Inputs[port].Get()
-                                                                   : nullptr;
+  return port >= 0 && port < static_cast<int>(this->Inputs.size()) ? this->Inputs[port] : nullptr;
 }
