@@ -1,0 +1,87 @@
+// Wall time of each filter's own execution inside one pipeline update, for the benchmarks of the
+// stage filters. A user's edit updates the last filter of the chain once (ParaView updates the
+// visible representation, pvpython's UpdatePipeline the active source); timing each stage by
+// updating it on its own would add the executive's passes over the filters upstream of it to
+// the edit. The filters' StartEvent and EndEvent bracket their RequestData, so observing them
+// splits that one update into stages.
+#ifndef boolsurf_FilterUpdateTimer_h
+#define boolsurf_FilterUpdateTimer_h
+
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkNew.h>
+
+#include <chrono>
+#include <vector>
+
+namespace benchutil
+{
+
+class FilterUpdateTimer
+{
+public:
+  /// Times `filters` (kept by the caller for the timer's lifetime); Milliseconds(k) is filter
+  /// k's total execution time since the last Reset().
+  explicit FilterUpdateTimer(const std::vector<vtkAlgorithm*>& filters)
+    : Filters(filters)
+    , Started(filters.size())
+    , Total(filters.size(), 0.0)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback(&FilterUpdateTimer::OnEvent);
+    for (vtkAlgorithm* filter : this->Filters)
+    {
+      this->Tags.push_back(filter->AddObserver(vtkCommand::StartEvent, this->Callback));
+      this->Tags.push_back(filter->AddObserver(vtkCommand::EndEvent, this->Callback));
+    }
+  }
+  ~FilterUpdateTimer()
+  {
+    for (std::size_t k = 0; k < this->Filters.size(); ++k)
+    {
+      this->Filters[k]->RemoveObserver(this->Tags[2 * k]);
+      this->Filters[k]->RemoveObserver(this->Tags[2 * k + 1]);
+    }
+  }
+  FilterUpdateTimer(const FilterUpdateTimer&) = delete;
+  FilterUpdateTimer& operator=(const FilterUpdateTimer&) = delete;
+
+  double Milliseconds(std::size_t k) const { return this->Total[k]; }
+  void Reset() { this->Total.assign(this->Total.size(), 0.0); }
+
+private:
+  using Clock = std::chrono::steady_clock;
+
+  static void OnEvent(vtkObject* caller, unsigned long event, void* self, void*)
+  {
+    auto* timer = static_cast<FilterUpdateTimer*>(self);
+    const Clock::time_point now = Clock::now();
+    for (std::size_t k = 0; k < timer->Filters.size(); ++k)
+    {
+      if (timer->Filters[k] != caller)
+      {
+        continue;
+      }
+      if (event == vtkCommand::StartEvent)
+      {
+        timer->Started[k] = now;
+      }
+      else
+      {
+        timer->Total[k] +=
+          std::chrono::duration<double, std::milli>(now - timer->Started[k]).count();
+      }
+    }
+  }
+
+  std::vector<vtkAlgorithm*> Filters;
+  std::vector<Clock::time_point> Started;
+  std::vector<double> Total;
+  std::vector<unsigned long> Tags;
+  vtkNew<vtkCallbackCommand> Callback;
+};
+
+} // namespace benchutil
+
+#endif
