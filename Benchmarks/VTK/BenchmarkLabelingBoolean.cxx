@@ -27,6 +27,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <map>
 #include <memory>
 
@@ -357,15 +358,20 @@ const bool registered = []
       ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("BM_BSC/" + file.Scene).c_str(), BM_BSC, file)
       ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("BM_OneStepScene/" + file.Scene).c_str(), BM_OneStepScene, file)
-      ->Arg(1)
-      ->Arg(2)
-      ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(
-      ("BM_StageChainScene/" + file.Scene).c_str(), BM_StageChainScene, file)
-      ->Arg(1)
-      ->Arg(2)
-      ->Unit(benchmark::kMillisecond);
+    for (benchmark::internal::Benchmark* edits :
+      { benchmark::RegisterBenchmark(
+          ("BM_OneStepScene/" + file.Scene).c_str(), BM_OneStepScene, file),
+        benchmark::RegisterBenchmark(
+          ("BM_StageChainScene/" + file.Scene).c_str(), BM_StageChainScene, file) })
+    {
+      edits->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+      // A fixed number of edits, for instruction counts under callgrind (where the timings
+      // that choose the number of iterations mean nothing).
+      if (const char* iterations = std::getenv("BOOLSURF_BENCHMARK_ITERATIONS"))
+      {
+        edits->Iterations(std::atoi(iterations));
+      }
+    }
   }
   return true;
 }();
