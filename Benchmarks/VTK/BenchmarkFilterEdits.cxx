@@ -939,6 +939,10 @@ void BM_StageChainCurveEdit(benchmark::State& state)
   state.counters["Boolean_ms"] = stages.Milliseconds(3) / n;
   state.counters["Update_ms"] = iterationMs / n;
   state.counters["MinorFaults"] = faults / n;
+  state.counters["TraceFaults"] = stages.MinorFaults(0) / n;
+  state.counters["ArrangementFaults"] = stages.MinorFaults(1) / n;
+  state.counters["LabelingFaults"] = stages.MinorFaults(2) / n;
+  state.counters["BooleanFaults"] = stages.MinorFaults(3) / n;
   arrangementStages.Report(state);
   state.counters["ChainRegionTriangles"] =
     static_cast<double>(boolean->GetOutput(0)->GetNumberOfCells());

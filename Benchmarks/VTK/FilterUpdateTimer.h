@@ -12,6 +12,8 @@
 #include <vtkCommand.h>
 #include <vtkNew.h>
 
+#include <sys/resource.h>
+
 #include <chrono>
 #include <vector>
 
@@ -27,6 +29,8 @@ public:
     : Filters(filters)
     , Started(filters.size())
     , Total(filters.size(), 0.0)
+    , FaultsAtStart(filters.size(), 0)
+    , Faults(filters.size(), 0.0)
   {
     this->Callback->SetClientData(this);
     this->Callback->SetCallback(&FilterUpdateTimer::OnEvent);
@@ -48,15 +52,30 @@ public:
   FilterUpdateTimer& operator=(const FilterUpdateTimer&) = delete;
 
   double Milliseconds(std::size_t k) const { return this->Total[k]; }
-  void Reset() { this->Total.assign(this->Total.size(), 0.0); }
+  /// Minor page faults during filter k's executions (memory the process touched for the first
+  /// time: buffers allocated anew rather than reused).
+  double MinorFaults(std::size_t k) const { return this->Faults[k]; }
+  void Reset()
+  {
+    this->Total.assign(this->Total.size(), 0.0);
+    this->Faults.assign(this->Faults.size(), 0.0);
+  }
 
 private:
   using Clock = std::chrono::steady_clock;
+
+  static long CurrentMinorFaults()
+  {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_minflt;
+  }
 
   static void OnEvent(vtkObject* caller, unsigned long event, void* self, void*)
   {
     auto* timer = static_cast<FilterUpdateTimer*>(self);
     const Clock::time_point now = Clock::now();
+    const long faults = CurrentMinorFaults();
     for (std::size_t k = 0; k < timer->Filters.size(); ++k)
     {
       if (timer->Filters[k] != caller)
@@ -66,11 +85,13 @@ private:
       if (event == vtkCommand::StartEvent)
       {
         timer->Started[k] = now;
+        timer->FaultsAtStart[k] = faults;
       }
       else
       {
         timer->Total[k] +=
           std::chrono::duration<double, std::milli>(now - timer->Started[k]).count();
+        timer->Faults[k] += static_cast<double>(faults - timer->FaultsAtStart[k]);
       }
     }
   }
@@ -78,6 +99,8 @@ private:
   std::vector<vtkAlgorithm*> Filters;
   std::vector<Clock::time_point> Started;
   std::vector<double> Total;
+  std::vector<long> FaultsAtStart;
+  std::vector<double> Faults;
   std::vector<unsigned long> Tags;
   vtkNew<vtkCallbackCommand> Callback;
 };

@@ -1,5 +1,7 @@
 #include "Arrangement/Arrangement.h"
 
+#include "Arrangement/EditBuffers.h"
+
 #include "Arrangement/SegmentIntersection.h"
 #include "Arrangement/TriangleRefinement.h"
 #include "Arrangement/TriangleSegments.h"
@@ -179,9 +181,9 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     newPointBase[s + 1] = newPointBase[s] + local[s].NumberOfNewPoints;
   }
   const int totalPoints = newPointBase[slots];
-  out.Positions.resize(totalPoints);
-  out.PointOnMesh.resize(totalPoints);
-  out.PointSurface.resize(totalPoints);
+  ResizeForEdits(out.Positions, totalPoints);
+  ResizeForEdits(out.PointOnMesh, totalPoints);
+  ResizeForEdits(out.PointSurface, totalPoints);
   // Mesh vertices keep their ids: written once per mesh, then reused by every edit.
   if (!sameVertices)
   {
@@ -334,8 +336,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     offset[nt] = blockStart[blocks];
   }
   const int refinedCount = offset[nt];
-  out.Triangles.resize(refinedCount);
-  out.SourceTriangle.resize(refinedCount);
+  ResizeForEdits(out.Triangles, refinedCount);
+  ResizeForEdits(out.SourceTriangle, refinedCount);
   std::vector<unsigned char>& blocked = work.Blocked;
   blocked.assign(refinedCount, 0);
   ParallelRange(arena,

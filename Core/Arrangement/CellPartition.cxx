@@ -1,5 +1,7 @@
 #include "Arrangement/CellPartition.h"
 
+#include "Arrangement/EditBuffers.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -219,11 +221,11 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
   const Triangle* meshTriangles = mesh.GetTriangles().data();
   if (scratch.AtomicCapacity < static_cast<size_t>(count))
   {
-    scratch.AtomicParent.reset(new std::atomic<int>[count]);
-    scratch.AtomicCapacity = count;
+    scratch.AtomicCapacity = EditCapacity(count);
+    scratch.AtomicParent.reset(new std::atomic<int>[scratch.AtomicCapacity]);
   }
   std::atomic<int>* parent = scratch.AtomicParent.get();
-  cellOfTriangle.resize(count);
+  ResizeForEdits(cellOfTriangle, count);
   const int grain = 4096;
   tbb::parallel_for(tbb::blocked_range<int>(0, count, grain),
     [&](const tbb::blocked_range<int>& range)
@@ -572,7 +574,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   {
     tileNode[k] = dirty[k] ? -1 : cellOfRoot[parent[tileNode[k]]];
   }
-  cellOfTriangle.resize(count);
+  ResizeForEdits(cellOfTriangle, count);
   int* cell = cellOfTriangle.data();
   const int nt = mesh.GetNumberOfTriangles();
   tbb::parallel_for(tbb::blocked_range<int>(0, nt, 1 << 14),

@@ -2,6 +2,7 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
+#include "Arrangement/EditBuffers.h"
 #include "Labeling/ArrangementLabelingInput.h"
 #include "vtkBoolSurfArrayView.h"
 #include "vtkBoolSurfAttributeTransfer.h"
@@ -175,12 +176,12 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   // Points, triangles and the per-triangle arrays read the arrangement in place: on a million
   // triangles a copy is ~50 MB written per edit. VTK takes a triangle list as a connectivity
   // array (the corners, as the arrangement stores them) and offsets 0, 3, 6, ..., which the
-  // result keeps and extends only when it grows.
+  // result keeps and extends, with room for later edits, only when it grows.
   std::vector<int>& cellStarts = *memory.CellOffsets;
   const std::size_t known = cellStarts.size();
   if (known < static_cast<std::size_t>(nt) + 1)
   {
-    cellStarts.resize(nt + 1);
+    cellStarts.resize(EditCapacity(nt + 1));
     for (std::size_t t = known; t < cellStarts.size(); ++t)
     {
       cellStarts[t] = static_cast<int>(3 * t);
@@ -204,8 +205,8 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   const bool verticesKept = serial != 0 && *memory.PointArraysMeshSerial == serial &&
     static_cast<vtkIdType>(pointTriangle.size()) >= nv;
   *memory.PointArraysMeshSerial = 0; // until the vertices' part is written
-  pointTriangle.resize(np);
-  pointBarycentric.resize(2 * np);
+  ResizeForEdits(pointTriangle, np);
+  ResizeForEdits(pointBarycentric, 2 * np);
   const vtkIdType firstWritten = verticesKept ? std::min(nv, np) : 0;
   const auto fill = [&](vtkIdType first, vtkIdType last)
   {
