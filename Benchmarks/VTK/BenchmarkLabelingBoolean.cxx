@@ -344,6 +344,9 @@ void BM_StageChainScene(benchmark::State& state, benchutil::SceneFile file)
   state.counters["Trace_ms"] = stages.Milliseconds(0) / n;
   state.counters["ArrangeLabel_ms"] = (stages.Milliseconds(1) + stages.Milliseconds(2)) / n;
   state.counters["Boolean_ms"] = stages.Milliseconds(3) / n;
+  state.counters["StageFaults"] = (stages.MinorFaults(0) + stages.MinorFaults(1) +
+                                    stages.MinorFaults(2) + stages.MinorFaults(3)) /
+    n;
   state.counters["cells"] = scene.Cells;
 }
 
