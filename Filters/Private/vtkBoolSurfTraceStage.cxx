@@ -16,6 +16,9 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -80,47 +83,77 @@ void WriteTraces(const TriangleMesh& mesh,
   {
     perCurve->SetNumberOfTuples(nc);
   }
-  const auto writeCurve = [&](vtkIdType c)
+  // Point `i` of curve `c`, as output point `id`.
+  const auto writePoint = [&](vtkIdType c, std::size_t i, vtkIdType id)
+  {
+    const CurveTrace& trace = traces[c];
+    const ControlCurve& control = controls[c];
+    const size_t n = trace.Curve.Points.size();
+    const CanonicalPoint& p = trace.Curve.Points[i];
+    const Vec3 x = PositionOf(mesh, p);
+    double* xyz = coordinates->GetPointer(3 * id);
+    xyz[0] = x.x;
+    xyz[1] = x.y;
+    xyz[2] = x.z;
+    // Every point is written canonically (exact zeros on edges and vertices), so Surface
+    // Arrangement and every other reader locate it where the tracer did. A control point is
+    // written in the user's triangle when that triangle holds it (then, off edges and
+    // vertices, the user's numbers bit for bit); the user's values themselves stay in the
+    // field data ControlTriangleId/ControlBarycentric. Other points go in a triangle they
+    // share with the next point of the curve.
+    const int k = trace.ControlPoint[i];
+    const bool isControl = k >= 0 && k < static_cast<int>(control.Points.size());
+    int preferred = -1;
+    if (isControl)
+    {
+      preferred = control.Points[k].Triangle;
+    }
+    else if (n > 1)
+    {
+      const size_t next = i + 1 < n ? i + 1 : (trace.Curve.Closed ? 0 : i - 1);
+      preferred = SharedTriangle(mesh, p, trace.Curve.Points[next]);
+    }
+    const SurfacePoint sp = WriteSurfacePoint(mesh, p, preferred);
+    triangleId->SetValue(id, sp.Triangle);
+    barycentric->SetValue(2 * id, sp.U);
+    barycentric->SetValue(2 * id + 1, sp.V);
+    parameter->SetValue(id, trace.Parameter[i]);
+    segment->SetValue(id, trace.Segment[i]);
+    controlPoint->SetValue(id, isControl ? static_cast<int>(control.PointIds[k]) : -1);
+  };
+  // Output points [from, to), whichever curves they belong to.
+  const auto writePoints = [&](vtkIdType from, vtkIdType to)
+  {
+    vtkIdType c = static_cast<vtkIdType>(
+      std::upper_bound(firstPoint.begin(), firstPoint.end(), from) - firstPoint.begin() - 1);
+    for (vtkIdType id = from; id < to; ++id)
+    {
+      while (id >= firstPoint[c + 1])
+      {
+        ++c;
+      }
+      writePoint(c, static_cast<std::size_t>(id - firstPoint[c]), id);
+    }
+  };
+  // Each point is written independently (positions, canonical surface points: about half the
+  // filter's time on a long drawing), so long drawings are written on every core; a few
+  // thousand points are not worth waking other threads.
+  constexpr vtkIdType Grain = 1 << 12;
+  if (np <= Grain)
+  {
+    writePoints(0, np);
+  }
+  else
+  {
+    tbb::parallel_for(tbb::blocked_range<vtkIdType>(0, np, Grain),
+      [&](const tbb::blocked_range<vtkIdType>& range) { writePoints(range.begin(), range.end()); });
+  }
+  for (vtkIdType c = 0; c < nc; ++c)
   {
     const CurveTrace& trace = traces[c];
     const ControlCurve& control = controls[c];
     const vtkIdType first = firstPoint[c];
     const size_t n = trace.Curve.Points.size();
-    for (size_t i = 0; i < n; ++i)
-    {
-      const vtkIdType id = first + static_cast<vtkIdType>(i);
-      const CanonicalPoint& p = trace.Curve.Points[i];
-      const Vec3 x = PositionOf(mesh, p);
-      double* xyz = coordinates->GetPointer(3 * id);
-      xyz[0] = x.x;
-      xyz[1] = x.y;
-      xyz[2] = x.z;
-      // Every point is written canonically (exact zeros on edges and vertices), so Surface
-      // Arrangement and every other reader locate it where the tracer did. A control point is
-      // written in the user's triangle when that triangle holds it (then, off edges and
-      // vertices, the user's numbers bit for bit); the user's values themselves stay in the
-      // field data ControlTriangleId/ControlBarycentric. Other points go in a triangle they
-      // share with the next point of the curve.
-      const int k = trace.ControlPoint[i];
-      const bool isControl = k >= 0 && k < static_cast<int>(control.Points.size());
-      int preferred = -1;
-      if (isControl)
-      {
-        preferred = control.Points[k].Triangle;
-      }
-      else if (n > 1)
-      {
-        const size_t next = i + 1 < n ? i + 1 : (trace.Curve.Closed ? 0 : i - 1);
-        preferred = SharedTriangle(mesh, p, trace.Curve.Points[next]);
-      }
-      const SurfacePoint sp = WriteSurfacePoint(mesh, p, preferred);
-      triangleId->SetValue(id, sp.Triangle);
-      barycentric->SetValue(2 * id, sp.U);
-      barycentric->SetValue(2 * id + 1, sp.V);
-      parameter->SetValue(id, trace.Parameter[i]);
-      segment->SetValue(id, trace.Segment[i]);
-      controlPoint->SetValue(id, isControl ? static_cast<int>(control.PointIds[k]) : -1);
-    }
     vtkIdType corner = firstCorner[c];
     offsets->SetValue(c, corner);
     for (size_t i = 0; i < n; ++i)
@@ -136,10 +169,6 @@ void WriteTraces(const TriangleMesh& mesh,
     closed->SetValue(c, trace.Curve.Closed ? 1 : 0);
     type->SetValue(c, static_cast<int>(control.Type));
     length->SetValue(c, trace.Length);
-  };
-  for (vtkIdType c = 0; c < nc; ++c)
-  {
-    writeCurve(c);
   }
   offsets->SetValue(nc, firstCorner[nc]);
   vtkNew<vtkPoints> points;
