@@ -57,6 +57,32 @@ struct Hit
   int Point;
 };
 
+/// Scratch of IntersectTriangleSegments, per thread.
+struct Scratch
+{
+  std::vector<int> EndA, EndB, Order;
+  std::vector<std::vector<Hit>> Hits;
+};
+
+/// Empties `a` for the next triangle of its slot, keeping its buffers' capacity (the slot's
+/// LocalArrangement lives on in the arrangement's work buffers from edit to edit).
+void ClearForReuse(LocalArrangement& a)
+{
+  a.Triangle = -1;
+  a.Points.clear();
+  a.Boundary.clear();
+  for (std::vector<int>& chain : a.Chains)
+  {
+    chain.clear();
+  }
+  a.ChainClosed.clear();
+  a.Triangles.clear();
+  a.Blocked.clear();
+  a.Alias.clear();
+  a.NumberOfNewPoints = 0;
+  a.Error.clear();
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -129,7 +155,7 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
   const int t = map.Triangles[slot];
   const Triangle& tri = mesh.GetTriangle(t);
   const int nv = mesh.GetNumberOfVertices();
-  out = LocalArrangement();
+  ClearForReuse(out);
   out.Triangle = t;
 
   // Boundary points: corners, then each edge's points in the edge's order.
@@ -193,8 +219,22 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
 
   const int first = map.SegmentOffset[slot];
   const int count = map.SegmentOffset[slot + 1] - first;
-  std::vector<int> endA(count), endB(count);
-  std::vector<std::vector<Hit>> hits(count);
+  // Per-call scratch, kept per thread: a few thousand crossed triangles per edit each
+  // allocated these anew.
+  thread_local Scratch scratch;
+  std::vector<int>& endA = scratch.EndA;
+  std::vector<int>& endB = scratch.EndB;
+  endA.assign(count, 0);
+  endB.assign(count, 0);
+  std::vector<std::vector<Hit>>& hits = scratch.Hits;
+  if (hits.size() < static_cast<std::size_t>(count))
+  {
+    hits.resize(count);
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    hits[i].clear();
+  }
   out.ChainClosed.resize(count);
   for (int i = 0; i < count; ++i)
   {
@@ -211,7 +251,8 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
   }
 
   // Sweep over x: only segments whose x-ranges overlap are tested.
-  std::vector<int> order(count);
+  std::vector<int>& order = scratch.Order;
+  order.resize(count);
   for (int i = 0; i < count; ++i)
   {
     order[i] = i;
@@ -312,7 +353,7 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
     }
   }
 
-  out.Chains.resize(count);
+  out.Chains.resize(count); // cleared by ClearForReuse, capacity kept
   for (int i = 0; i < count; ++i)
   {
     std::vector<Hit>& h = hits[i];

@@ -48,13 +48,36 @@ struct Crossing
   int X, Y; ///< crossed edge: X on the right of the piece, Y on its left
 };
 
+/// The buffers of a LocalTriangulation, kept per thread: an edit refines a few thousand
+/// crossed triangles, and each one allocated them anew.
+struct TriangulationBuffers
+{
+  std::vector<std::array<int, 3>> Tris;
+  std::vector<char> Alive;
+  std::vector<char> IsInserted;
+  std::vector<EdgeKey> ClosedEdges;
+};
+
+TriangulationBuffers& ThreadTriangulationBuffers()
+{
+  thread_local TriangulationBuffers buffers;
+  return buffers;
+}
+
 class LocalTriangulation
 {
 public:
-  explicit LocalTriangulation(LocalArrangement& arrangement)
+  /// `buffers` are emptied and used by this triangulation only, for its lifetime.
+  LocalTriangulation(LocalArrangement& arrangement, TriangulationBuffers& buffers)
     : Arr(arrangement)
     , UseMap(arrangement.Points.size() > 24)
+    , Tris(buffers.Tris)
+    , Alive(buffers.Alive)
+    , IsInserted(buffers.IsInserted)
   {
+    this->Tris.clear();
+    this->Alive.clear();
+    this->IsInserted.clear();
   }
 
   Vec2 P(int i) const { return this->Arr.Points[i].P; }
@@ -515,12 +538,12 @@ public:
   /// Small triangulations (the vast majority) find half-edges by scanning, which beats
   /// maintaining a hash map; large ones keep the map.
   bool UseMap = false;
-  std::vector<std::array<int, 3>> Tris;
-  std::vector<char> Alive;
+  std::vector<std::array<int, 3>>& Tris;
+  std::vector<char>& Alive;
   std::unordered_map<EdgeKey, int> HalfEdges;
   std::unordered_set<EdgeKey> Constrained;
   std::vector<std::vector<int>> Paths;
-  std::vector<char> IsInserted;
+  std::vector<char>& IsInserted;
   /// Distance (unit-triangle coordinates) within which a rounded crossing is taken to be an
   /// existing point: far above the rounding of crossings (~1e-16), far below any feature
   /// the curves can resolve.
@@ -594,7 +617,8 @@ bool RefineTriangle(LocalArrangement& arr)
   {
     arr.Alias[i] = i;
   }
-  LocalTriangulation tri(arr);
+  TriangulationBuffers& buffers = ThreadTriangulationBuffers();
+  LocalTriangulation tri(arr, buffers);
   tri.StepBudget = 32 * static_cast<size_t>(n) + 1024;
   tri.Tris.reserve(4 * n);
   tri.Alive.reserve(4 * n);
@@ -611,7 +635,7 @@ bool RefineTriangle(LocalArrangement& arr)
     {
       return false;
     }
-    tri.Paths = arr.Chains;
+    tri.Paths.swap(arr.Chains); // unchanged: handed back below
   }
   else
   {
@@ -652,7 +676,8 @@ bool RefineTriangle(LocalArrangement& arr)
   }
 
   // Sub-edges on closed curves block the flood fill.
-  std::vector<EdgeKey> closedEdges;
+  std::vector<EdgeKey>& closedEdges = buffers.ClosedEdges;
+  closedEdges.clear();
   for (size_t c = 0; c < tri.Paths.size(); ++c)
   {
     if (arr.ChainClosed[c])
