@@ -134,15 +134,6 @@ double ResetPeakRss()
   return PeakRssMB();
 }
 
-/// Minor page faults of the process so far: memory touched for the first time since it was
-/// mapped (fresh allocations), which an edit that reuses its buffers does not pay.
-double MinorFaults()
-{
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_minflt);
-}
-
 double Milliseconds(std::chrono::steady_clock::time_point a,
   std::chrono::steady_clock::time_point b)
 {
@@ -695,11 +686,11 @@ void CurveEdits(benchmark::State& state,
     }
     filter->SetInputData(1, input);
     state.ResumeTiming();
-    const double faults0 = MinorFaults();
+    const double faults0 = benchutil::ProcessMinorFaults();
     const auto t0 = std::chrono::steady_clock::now();
     filter->Update();
     updateMs += Milliseconds(t0, std::chrono::steady_clock::now());
-    faults += MinorFaults() - faults0;
+    faults += benchutil::ProcessMinorFaults() - faults0;
     stages.Add(filter->GetOutput(0));
   }
   if (filter->GetOutput(0)->GetNumberOfCells() == 0)
@@ -925,11 +916,11 @@ void BM_StageChainCurveEdit(benchmark::State& state)
     state.PauseTiming();
     nextEdit();
     state.ResumeTiming();
-    const double faults0 = MinorFaults();
+    const double faults0 = benchutil::ProcessMinorFaults();
     const auto iterStart = std::chrono::steady_clock::now();
     boolean->Update();
     iterationMs += Milliseconds(iterStart, std::chrono::steady_clock::now());
-    faults += MinorFaults() - faults0;
+    faults += benchutil::ProcessMinorFaults() - faults0;
     arrangementStages.Add(arrange->GetOutput(0));
   }
   const double n = static_cast<double>(state.iterations());

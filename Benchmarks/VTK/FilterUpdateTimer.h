@@ -20,16 +20,25 @@
 namespace benchutil
 {
 
+/// Minor page faults of the process so far: memory touched for the first time since it was
+/// mapped (fresh allocations), which an edit that reuses its buffers does not pay.
+inline double ProcessMinorFaults()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_minflt);
+}
+
 class FilterUpdateTimer
 {
 public:
   /// Times `filters` (kept by the caller for the timer's lifetime); Milliseconds(k) is filter
-  /// k's total execution time since the last Reset().
+  /// k's total execution time since the timer was made.
   explicit FilterUpdateTimer(const std::vector<vtkAlgorithm*>& filters)
     : Filters(filters)
     , Started(filters.size())
     , Total(filters.size(), 0.0)
-    , FaultsAtStart(filters.size(), 0)
+    , FaultsAtStart(filters.size(), 0.0)
     , Faults(filters.size(), 0.0)
   {
     this->Callback->SetClientData(this);
@@ -55,27 +64,15 @@ public:
   /// Minor page faults during filter k's executions (memory the process touched for the first
   /// time: buffers allocated anew rather than reused).
   double MinorFaults(std::size_t k) const { return this->Faults[k]; }
-  void Reset()
-  {
-    this->Total.assign(this->Total.size(), 0.0);
-    this->Faults.assign(this->Faults.size(), 0.0);
-  }
 
 private:
   using Clock = std::chrono::steady_clock;
-
-  static long CurrentMinorFaults()
-  {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return usage.ru_minflt;
-  }
 
   static void OnEvent(vtkObject* caller, unsigned long event, void* self, void*)
   {
     auto* timer = static_cast<FilterUpdateTimer*>(self);
     const Clock::time_point now = Clock::now();
-    const long faults = CurrentMinorFaults();
+    const double faults = ProcessMinorFaults();
     for (std::size_t k = 0; k < timer->Filters.size(); ++k)
     {
       if (timer->Filters[k] != caller)
@@ -91,7 +88,7 @@ private:
       {
         timer->Total[k] +=
           std::chrono::duration<double, std::milli>(now - timer->Started[k]).count();
-        timer->Faults[k] += static_cast<double>(faults - timer->FaultsAtStart[k]);
+        timer->Faults[k] += faults - timer->FaultsAtStart[k];
       }
     }
   }
@@ -99,7 +96,7 @@ private:
   std::vector<vtkAlgorithm*> Filters;
   std::vector<Clock::time_point> Started;
   std::vector<double> Total;
-  std::vector<long> FaultsAtStart;
+  std::vector<double> FaultsAtStart;
   std::vector<double> Faults;
   std::vector<unsigned long> Tags;
   vtkNew<vtkCallbackCommand> Callback;
