@@ -27,6 +27,7 @@
 #include "BoolSurfFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <array>  // for std::array
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
@@ -96,6 +97,9 @@ private:
   std::vector<int> SurfacePorts{ 0 };
   std::vector<int> OptionalPorts;
   std::unique_ptr<boolsurf::vtkSurfaceCache> Surface;
+  /// Per output port: how many point, cell and field arrays the last update wrote (the next
+  /// update reserves that many slots at once; see RequestData).
+  std::vector<std::array<int, 3>> ArrayCounts;
 
   vtkBoolSurfAlgorithm(const vtkBoolSurfAlgorithm&) = delete;
   void operator=(const vtkBoolSurfAlgorithm&) = delete;

@@ -1,5 +1,7 @@
 #include "Geodesic/CurveTracer.h"
 
+#include "Geodesic/WrittenCurvePoints.h"
+
 #include <algorithm>
 #include <functional>
 #include <iterator>
@@ -24,6 +26,8 @@ void CurveTrace::Clear()
   this->Parameter.clear();
   this->OnCurve.clear();
   this->Length = 0.0;
+  this->Positions.clear();
+  this->Written.clear();
 }
 
 //------------------------------------------------------------------------------
@@ -278,7 +282,16 @@ TraceStatus CurveTracer::Trace(const std::vector<SurfacePoint>& points,
   if (known != this->Memory.end())
   {
     known->second.Pass = this->Pass;
+    if (this->KeepWrittenForms && known->second.Trace.Written.empty())
+    {
+      ComputeWrittenForms(mesh, known->second.Trace); // remembered before they were kept
+    }
     out = known->second.Trace;
+    if (!this->KeepWrittenForms)
+    {
+      out.Positions.clear();
+      out.Written.clear();
+    }
     out.Curve.CurveId = curveId;
     ++this->Recalled;
     return TraceStatus::Success();
@@ -295,6 +308,10 @@ TraceStatus CurveTracer::Trace(const std::vector<SurfacePoint>& points,
     default:
       return TraceStatus::Failure(CurveLabel(curveId) + ": unknown curve type " +
         std::to_string(static_cast<int>(type)) + " (0: geodesic polygon, 1: cubic Bezier)");
+  }
+  if (status && this->KeepWrittenForms)
+  {
+    ComputeWrittenForms(mesh, out);
   }
   constexpr std::size_t MemoryLimit = std::size_t(1) << 20;
   if (status && out.Curve.Points.size() <= MemoryLimit)

@@ -39,6 +39,10 @@ struct CurveTrace
   /// polygon are within its convergence distance of the curve, not on it).
   std::vector<char> OnCurve;
   double Length = 0.0;
+  /// Filled when the tracer keeps written forms (SetKeepWrittenForms), else empty: each
+  /// point's position and its form in output arrays (ComputeWrittenForms).
+  std::vector<Vec3> Positions;
+  std::vector<SurfacePoint> Written;
 
   void Clear();
   /// A closed curve's trace ends where it started: remove that repeated last point (with its
@@ -85,10 +89,18 @@ public:
   /// tracing. An edit retraces every curve, and usually only one moved. Call StartPass() once
   /// per set of curves (one update): curves neither traced nor recalled during the previous
   /// pass are then forgotten, so the memory holds about two updates' curves. It never holds
-  /// more than 2^20 traced points (about 60 MB): past that it empties and fills again.
+  /// more than 2^20 traced points (about 60 MB, 110 MB with written forms): past that it
+  /// empties and fills again.
   void StartPass();
   /// How many Trace() calls were answered from memory (for tests and benchmarks).
   std::size_t GetRecalledCurves() const { return this->Recalled; }
+
+  /// Whether Trace() also gives each curve's CurveTrace::Positions and Written, kept with the
+  /// curves it remembers (default off). A filter that writes traced curves into arrays turns
+  /// it on: a curve an edit did not move is then written by copying, where writing it anew
+  /// reads the mesh around every point (most of an edit's writing time on a traced scene).
+  /// Remembered curves then take about 50 more bytes per point.
+  void SetKeepWrittenForms(bool keep) { this->KeepWrittenForms = keep; }
 
 private:
   /// The geodesic between a and b, computed from whichever of the two comes first in a fixed
@@ -137,6 +149,7 @@ private:
   };
   std::unordered_map<CurveKey, RememberedCurve, CurveKeyHash> Memory;
   unsigned Pass = 0;
+  bool KeepWrittenForms = false;
   std::size_t Recalled = 0;
   std::size_t MemoryPoints = 0; ///< traced points held by Memory
   GeodesicPath Path;

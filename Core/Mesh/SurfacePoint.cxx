@@ -238,8 +238,33 @@ void TrianglesOf(const TriangleMesh& mesh, const CanonicalPoint& c, std::vector<
 //------------------------------------------------------------------------------
 int SharedTriangle(const TriangleMesh& mesh, const CanonicalPoint& a, const CanonicalPoint& b)
 {
-  // Small fixed buffers would do for faces and edges; vertices need the fan, so reuse one
-  // vector per thread rather than allocating per call.
+  // Faces and edges have at most two triangles (the common case: tracing asks this for every
+  // point it writes); vertices need the fan, so reuse one vector per thread for them rather
+  // than allocating per call.
+  if (a.Location != PointLocation::Vertex)
+  {
+    int sides[2] = { -1, -1 };
+    if (a.Location == PointLocation::Face)
+    {
+      sides[0] = a.Id >= 0 && a.Id < mesh.GetNumberOfTriangles() && mesh.IsUsable(a.Id) ? a.Id : -1;
+    }
+    else if (a.Id >= 0 && a.Id < mesh.GetNumberOfEdges())
+    {
+      const int h = mesh.GetEdgeHalfEdge(a.Id);
+      const int twin = mesh.GetTwin(h);
+      sides[0] = h / 3;
+      sides[1] = twin >= 0 ? twin / 3 : -1;
+    }
+    int best = -1;
+    for (const int t : sides)
+    {
+      if (t >= 0 && TriangleContains(mesh, b, t) && (best < 0 || t < best))
+      {
+        best = t;
+      }
+    }
+    return best;
+  }
   thread_local std::vector<int> trianglesOfA;
   TrianglesOf(mesh, a, trianglesOfA);
   int best = -1;
@@ -313,6 +338,19 @@ SurfacePoint FormIn(const TriangleMesh& mesh, const CanonicalPoint& c, int t)
   const std::array<double, 3> w = WeightsInTriangle(mesh, c, t);
   return SurfacePoint{ t, w[1], w[2] };
 }
+
+// Whether edge point c written in triangle t (FormIn) reads back as c without reading it: when
+// the edge's second vertex is corner 1 or 2 of t, the parameter T is written as u or v and
+// Canonicalize takes it from there bit for bit, with the weight opposite the edge an exact 0
+// (or, opposite corner 0, within the few ulps it reads as 0); the margin keeps both weights of
+// the edge clear of the snap that would make the point a vertex. Tracing writes a few thousand
+// such points per edit, and this saves reading each one back.
+bool EdgeFormReadsBack(const TriangleMesh& mesh, const CanonicalPoint& c, int t)
+{
+  constexpr double margin = 2.0 * SurfacePointSnap;
+  return c.T > margin && c.T < 1.0 - margin &&
+    mesh.GetTriangle(t)[0] != mesh.GetEdgeVertices(c.Id)[1];
+}
 } // namespace
 
 SurfacePoint WriteSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c, int preferred)
@@ -321,7 +359,40 @@ SurfacePoint WriteSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c
   {
     return SurfacePoint{ c.Id, c.U, c.V };
   }
-  const auto readsBack = [&](const SurfacePoint& sp) { return LocateSurfacePoint(mesh, sp) == c; };
+  const auto readsBack = [&](const SurfacePoint& sp)
+  {
+    return (c.Location == PointLocation::Edge && EdgeFormReadsBack(mesh, c, sp.Triangle)) ||
+      LocateSurfacePoint(mesh, sp) == c;
+  };
+  if (c.Location == PointLocation::Edge && c.Id >= 0 && c.Id < mesh.GetNumberOfEdges())
+  {
+    // The same search as below, over the edge's two triangles without a list (TrianglesOf's
+    // order: the edge's half-edge, then its twin).
+    const int h = mesh.GetEdgeHalfEdge(c.Id);
+    const int twin = mesh.GetTwin(h);
+    const int sides[2] = { h / 3, twin >= 0 ? twin / 3 : -1 };
+    if (preferred >= 0 && (preferred == sides[0] || preferred == sides[1]) &&
+      mesh.IsUsable(preferred))
+    {
+      const SurfacePoint sp = FormIn(mesh, c, preferred);
+      if (readsBack(sp))
+      {
+        return sp;
+      }
+    }
+    for (const int t : sides)
+    {
+      if (t >= 0)
+      {
+        const SurfacePoint sp = FormIn(mesh, c, t);
+        if (readsBack(sp))
+        {
+          return sp;
+        }
+      }
+    }
+    return FormIn(mesh, c, sides[0]); // ToSurfacePoint's form
+  }
   if (preferred >= 0 && TriangleContains(mesh, c, preferred))
   {
     const SurfacePoint sp = FormIn(mesh, c, preferred);

@@ -6,6 +6,7 @@
 #include "Labeling/ArrangementLabelingInput.h"
 #include "vtkBoolSurfArrayView.h"
 #include "vtkBoolSurfAttributeTransfer.h"
+#include "vtkBoolSurfOutputReuse.h"
 #include "vtkBoolSurfStageHandoff.h"
 
 #include <vtkCellArray.h>
@@ -168,7 +169,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   vtkPolyData* output,
   int threads)
 {
-  output->Initialize();
+  EmptyPolyData(output);
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
   static_assert(sizeof(std::array<int, 3>) == 3 * sizeof(int), "triangles must be packed ints");
   const vtkIdType np = static_cast<vtkIdType>(arr.Positions.size());
@@ -323,7 +324,7 @@ void WriteArrangementPatches(const Arrangement& arr,
   vtkPolyData* refinedSurface,
   vtkPolyData* patches)
 {
-  patches->Initialize();
+  EmptyPolyData(patches);
   patches->SetPoints(refinedSurface->GetPoints());
   patches->GetPointData()->PassData(refinedSurface->GetPointData());
   vtkNew<vtkCellArray> lines;

@@ -2,6 +2,7 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
+#include "vtkBoolSurfOutputReuse.h"
 #include "vtkBoolSurfStageHandoff.h"
 
 #include "Selection/RegionBoundary.h"
@@ -201,8 +202,8 @@ bool ComputeBoolean(vtkPolyData* labeled,
   vtkPolyData* clipped,
   std::string* note)
 {
-  region->Initialize();
-  boundary->Initialize();
+  EmptyPolyData(region);
+  EmptyPolyData(boundary);
   std::string text;
   std::vector<char> selected;
   if (!SelectRequestedCells(labels, request, selected, text, error))

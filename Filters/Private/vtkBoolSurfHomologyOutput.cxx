@@ -1,6 +1,7 @@
 #include "vtkBoolSurfHomologyOutput.h"
 
 #include "vtkBoolSurfArrayNames.h"
+#include "vtkBoolSurfOutputReuse.h"
 
 #include "Homology/HomologyBasis.h"
 
@@ -269,7 +270,7 @@ void AddHomologyExcess(const std::vector<std::vector<int>>& excess,
 //------------------------------------------------------------------------------
 void WriteGeneratorPolylines(const HomologyFields& h, vtkPolyData* out)
 {
-  out->Initialize();
+  EmptyPolyData(out);
   if (h.Generators.Ids.empty())
   {
     return;

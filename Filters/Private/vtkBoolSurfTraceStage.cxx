@@ -4,6 +4,8 @@
 
 #include "vtkBoolSurfControlCurves.h"
 
+#include "Geodesic/WrittenCurvePoints.h"
+
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -89,31 +91,24 @@ void WriteTraces(const TriangleMesh& mesh,
     const CurveTrace& trace = traces[c];
     const ControlCurve& control = controls[c];
     const size_t n = trace.Curve.Points.size();
-    const CanonicalPoint& p = trace.Curve.Points[i];
-    const Vec3 x = PositionOf(mesh, p);
+    // Every point is written canonically (exact zeros on edges and vertices), so Surface
+    // Arrangement and every other reader locate it where the tracer did. A control point is
+    // written in the user's triangle (then, off edges and vertices, the user's numbers bit for
+    // bit); the user's values themselves stay in the field data ControlTriangleId/
+    // ControlBarycentric. Other points go in a triangle they share with the next point of the
+    // curve (WrittenCurvePoint); the tracer keeps those forms with the curves it remembers, so
+    // a curve that an edit did not move is written by copying.
+    const int k = trace.ControlPoint[i];
+    const bool isControl = k >= 0 && k < static_cast<int>(control.Points.size());
+    const bool known = trace.Written.size() == n && trace.Positions.size() == n;
+    const Vec3 x = known ? trace.Positions[i] : PositionOf(mesh, trace.Curve.Points[i]);
     double* xyz = coordinates->GetPointer(3 * id);
     xyz[0] = x.x;
     xyz[1] = x.y;
     xyz[2] = x.z;
-    // Every point is written canonically (exact zeros on edges and vertices), so Surface
-    // Arrangement and every other reader locate it where the tracer did. A control point is
-    // written in the user's triangle when that triangle holds it (then, off edges and
-    // vertices, the user's numbers bit for bit); the user's values themselves stay in the
-    // field data ControlTriangleId/ControlBarycentric. Other points go in a triangle they
-    // share with the next point of the curve.
-    const int k = trace.ControlPoint[i];
-    const bool isControl = k >= 0 && k < static_cast<int>(control.Points.size());
-    int preferred = -1;
-    if (isControl)
-    {
-      preferred = control.Points[k].Triangle;
-    }
-    else if (n > 1)
-    {
-      const size_t next = i + 1 < n ? i + 1 : (trace.Curve.Closed ? 0 : i - 1);
-      preferred = SharedTriangle(mesh, p, trace.Curve.Points[next]);
-    }
-    const SurfacePoint sp = WriteSurfacePoint(mesh, p, preferred);
+    const SurfacePoint sp = known && !isControl
+      ? trace.Written[i]
+      : WrittenCurvePoint(mesh, trace.Curve, i, isControl ? control.Points[k].Triangle : -1);
     triangleId->SetValue(id, sp.Triangle);
     barycentric->SetValue(2 * id, sp.U);
     barycentric->SetValue(2 * id + 1, sp.V);
@@ -136,8 +131,8 @@ void WriteTraces(const TriangleMesh& mesh,
     }
   };
   // Each point is written independently (positions, canonical surface points: about half the
-  // filter's time on a long drawing), so long drawings are written on every core; a few
-  // thousand points are not worth waking other threads.
+  // filter's time on a long drawing that an edit traced anew), so long drawings are written on
+  // every core; a few thousand points are not worth waking other threads.
   constexpr vtkIdType Grain = 1 << 12;
   if (np <= Grain)
   {
@@ -318,6 +313,7 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
     cache, controlCurves, options.ProjectionTolerance, controls, problems, notes);
   CurveTracer& tracer = cache.GetTracer();
   tracer.SetResolution(options.Resolution);
+  tracer.SetKeepWrittenForms(output != nullptr); // see WriteTraces
   tracer.GetPathSolver().SetMethod(options.Method);
   tracer.StartPass(); // curves of the update before the last one are forgotten
   std::vector<CurveTrace> traces(controls.size());

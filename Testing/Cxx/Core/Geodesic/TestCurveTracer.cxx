@@ -1,5 +1,6 @@
 // Curve tracing: geodesic polygons with provenance, and the named errors users see.
 #include "Geodesic/CurveTracer.h"
+#include "Geodesic/WrittenCurvePoints.h"
 #include "Mesh/ProceduralMeshes.h"
 
 #include <gtest/gtest.h>
@@ -192,4 +193,62 @@ TEST(CurveTracer, RemembersTracedCurves)
   ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again).Ok);
   EXPECT_EQ(tracer.GetRecalledCurves(), 2u);
   EXPECT_TRUE(again.Curve.Points == first.Curve.Points); // traced again: the same result
+}
+
+// With written forms kept, a traced curve carries each point's position and output form, equal
+// to what WrittenCurvePoint and PositionOf give (a fresh trace, a recalled one, and one
+// remembered before the forms were kept); without them it carries none.
+TEST(CurveTracer, KeepsWrittenForms)
+{
+  const MeshData d = MakeTorus(1.0, 0.4, 24, 12);
+  const TriangleMesh mesh(d.Positions, d.Triangles);
+  CurveTracer tracer(mesh);
+  const std::vector<SurfacePoint> polygon{ { 3, 0.2, 0.3 }, { 100, 0.0, 0.5 }, { 250, 1.0, 0.0 } };
+  const std::vector<SurfacePoint> spline{
+    { 7, 0.2, 0.3 }, { 90, 0.5, 0.5 }, { 200, 0.25, 0.25 }, { 401, 0.3, 0.0 }
+  };
+  const auto expectForms = [&mesh](const CurveTrace& trace)
+  {
+    const std::size_t n = trace.Curve.Points.size();
+    ASSERT_EQ(trace.Positions.size(), n);
+    ASSERT_EQ(trace.Written.size(), n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const SurfacePoint w = WrittenCurvePoint(mesh, trace.Curve, i);
+      EXPECT_EQ(trace.Written[i].Triangle, w.Triangle) << i;
+      EXPECT_EQ(trace.Written[i].U, w.U) << i;
+      EXPECT_EQ(trace.Written[i].V, w.V) << i;
+      // Read back where it was traced (bit for bit but for an edge point whose parameter
+      // sits on the implicit corner in both triangles: WriteSurfacePoint).
+      const CanonicalPoint back = LocateSurfacePoint(mesh, w);
+      EXPECT_EQ(back.Location, trace.Curve.Points[i].Location) << i;
+      EXPECT_EQ(back.Id, trace.Curve.Points[i].Id) << i;
+      EXPECT_NEAR(back.T, trace.Curve.Points[i].T, 1e-15) << i;
+      const std::size_t next = i + 1 < n ? i + 1 : (trace.Curve.Closed ? 0 : i - 1);
+      if (trace.Curve.Points[i].Location != PointLocation::Face)
+      {
+        EXPECT_TRUE(TriangleContains(mesh, trace.Curve.Points[next], w.Triangle)) << i;
+      }
+      const Vec3 x = PositionOf(mesh, trace.Curve.Points[i]);
+      EXPECT_EQ(trace.Positions[i].x, x.x);
+      EXPECT_EQ(trace.Positions[i].y, x.y);
+      EXPECT_EQ(trace.Positions[i].z, x.z);
+    }
+  };
+  CurveTrace trace;
+  tracer.StartPass();
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, trace).Ok);
+  EXPECT_TRUE(trace.Written.empty());
+  tracer.SetKeepWrittenForms(true);
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, trace).Ok); // recalled
+  EXPECT_EQ(tracer.GetRecalledCurves(), 1u);
+  expectForms(trace);
+  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, trace).Ok); // fresh
+  expectForms(trace);
+  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, trace).Ok); // recalled
+  EXPECT_EQ(tracer.GetRecalledCurves(), 2u);
+  expectForms(trace);
+  tracer.SetKeepWrittenForms(false);
+  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, trace).Ok);
+  EXPECT_TRUE(trace.Written.empty() && trace.Positions.empty());
 }

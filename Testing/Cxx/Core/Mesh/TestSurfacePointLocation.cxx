@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -147,6 +148,70 @@ TEST(SurfacePointLocation, WrittenPointsReadBackAsThemselves)
   }
   // Most edge points have an exact form (an explicit corner at the edge's second vertex).
   EXPECT_GT(exact, edges * 3 / 4) << exact << " of " << edges;
+}
+
+// WriteSurfacePoint takes an edge point's form without reading it back when the edge's second
+// vertex is an explicit corner; that shortcut gives exactly what reading every candidate back
+// gives, also for parameters next to the snap and for every orientation of the edge.
+TEST(SurfacePointLocation, EdgeShortcutWritesWhatReadingBackWrites)
+{
+  const TriangleMesh mesh = Torus();
+  // The written form as found by reading each candidate back (WriteSurfacePoint's definition).
+  const auto byReadingBack = [&mesh](const CanonicalPoint& c, int preferred)
+  {
+    const auto formIn = [&](int t)
+    {
+      const std::array<double, 3> w = WeightsInTriangle(mesh, c, t);
+      return SurfacePoint{ t, w[1], w[2] };
+    };
+    std::vector<int> candidates;
+    if (preferred >= 0 && TriangleContains(mesh, c, preferred))
+    {
+      candidates.push_back(preferred);
+    }
+    std::vector<int> triangles;
+    TrianglesOf(mesh, c, triangles);
+    candidates.insert(candidates.end(), triangles.begin(), triangles.end());
+    for (const int t : candidates)
+    {
+      const SurfacePoint sp = formIn(t);
+      if (LocateSurfacePoint(mesh, sp) == c)
+      {
+        return sp;
+      }
+    }
+    return ToSurfacePoint(mesh, c);
+  };
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<int> triangles;
+  int shortcuts = 0;
+  for (int e = 0; e < mesh.GetNumberOfEdges(); ++e)
+  {
+    const double eps = std::numeric_limits<double>::epsilon();
+    for (const double t :
+      { unit(rng), 0.5, 3e-11, 2e-11 + eps, 1e-11, 1 - 2e-11, 1 - 3e-11, eps, 1 - eps })
+    {
+      CanonicalPoint c;
+      c.Location = PointLocation::Edge;
+      c.Id = e;
+      c.T = t;
+      TrianglesOf(mesh, c, triangles);
+      triangles.push_back(-1);                                    // no preference
+      triangles.push_back((7 * e) % mesh.GetNumberOfTriangles()); // most often not on the edge
+      for (const int preferred : triangles)
+      {
+        const SurfacePoint written = WriteSurfacePoint(mesh, c, preferred);
+        const SurfacePoint reference = byReadingBack(c, preferred);
+        ASSERT_EQ(written.Triangle, reference.Triangle) << Describe(c);
+        ASSERT_EQ(written.U, reference.U) << Describe(c);
+        ASSERT_EQ(written.V, reference.V) << Describe(c);
+        shortcuts += preferred >= 0 && TriangleContains(mesh, c, preferred) &&
+          mesh.GetTriangle(preferred)[0] != mesh.GetEdgeVertices(e)[1];
+      }
+    }
+  }
+  EXPECT_GT(shortcuts, mesh.GetNumberOfEdges()); // the shortcut was taken, on many edges
 }
 
 // SnapWeights writes, in the point's own triangle, exactly what LocateSurfacePoint reads.
