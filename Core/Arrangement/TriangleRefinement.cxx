@@ -1,5 +1,6 @@
 #include "Arrangement/TriangleRefinement.h"
 
+#include "Arrangement/PieceSplitting.h"
 #include "Arrangement/Predicates.h"
 
 #include <algorithm>
@@ -605,12 +606,10 @@ bool SplitByChords(LocalTriangulation& tri, const LocalArrangement& arr)
 } // namespace
 
 //------------------------------------------------------------------------------
-bool RefineTriangle(LocalArrangement& arr)
+namespace
 {
-  if (!arr.Error.empty())
-  {
-    return false;
-  }
+bool RefineOnce(LocalArrangement& arr)
+{
   const int n = static_cast<int>(arr.Points.size());
   arr.Alias.resize(n);
   for (int i = 0; i < n; ++i)
@@ -719,6 +718,39 @@ bool RefineTriangle(LocalArrangement& arr)
     {
       ++arr.NumberOfNewPoints;
     }
+  }
+  return true;
+}
+} // namespace
+
+bool RefineTriangle(LocalArrangement& arr)
+{
+  if (!arr.Error.empty())
+  {
+    return false;
+  }
+  const std::size_t firstPoints = arr.Points.size();
+  if (RefineOnce(arr))
+  {
+    return true;
+  }
+  // The incremental insertion failed (in practice: detours around rounded crossings that do
+  // not end, on a triangle crowded with pieces). Start again from stage 2's points and chains,
+  // split until no two pieces cross (PieceSplitting.h), and triangulate that: no constraint
+  // can then block another.
+  const std::string first = arr.Error;
+  arr.Error.clear();
+  arr.Points.resize(firstPoints);
+  std::string problem;
+  if (!SplitPiecesAtCrossings(arr, LocalTriangulation::SnapDistance, problem))
+  {
+    arr.Error = first + "; " + problem;
+    return false;
+  }
+  if (!RefineOnce(arr))
+  {
+    arr.Error = first + "; after splitting crossing pieces: " + arr.Error;
+    return false;
   }
   return true;
 }
