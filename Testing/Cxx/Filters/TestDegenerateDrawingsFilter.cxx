@@ -225,3 +225,46 @@ TEST(DegenerateDrawingsFilter, RandomLatticeDrawingsMatchExactAreas)
   }
   EXPECT_EQ(compared, 40 * 32);
 }
+
+// Crowded triangles (issue 28): dense lattice drawings, with the pattern cases above (repeated
+// points, spikes, runs shared with earlier polygons), on a square of two mesh triangles, so that
+// about a hundred pieces and hundreds of crossings, many of them through lattice points other
+// pieces pass, fall in one triangle. Every operation answers with the exact planar area. (The
+// refinement's cost grows faster than the square of a triangle's pieces: with about 300 per
+// triangle an update takes about a second, issue 28.)
+TEST(DegenerateDrawingsFilter, CrowdedTrianglesMatchExactAreas)
+{
+  std::mt19937 rng(28);
+  const int lattice = 16;
+  vtkSmartPointer<vtkPolyData> twoTriangles = AlignedGrid(-1, lattice + 1, lattice + 2);
+  ASSERT_EQ(twoTriangles->GetNumberOfCells(), 2);
+  for (int k = 0; k < 3; ++k)
+  {
+    std::vector<LatticePolygon> drawing;
+    const int polygons = 10 + 5 * k;
+    for (int p = 0; p < polygons; ++p)
+    {
+      drawing.push_back({ p % 2, LatticePolygonPoints(rng, lattice, drawing) });
+    }
+    std::size_t segments = 0;
+    for (const LatticePolygon& polygon : drawing)
+    {
+      segments += polygon.Points.size();
+    }
+    vtkSmartPointer<vtkPolyData> curves = CurvesOf(drawing);
+    for (int op = 0; op < 4; ++op)
+    {
+      const double swept = SweepArea(drawing,
+        2,
+        [&](const std::vector<int>& w)
+        {
+          const bool a = w[0] != 0, b = w[1] != 0;
+          return op == 0 ? a || b : op == 1 ? a && b : op == 2 ? a && !b : a != b;
+        });
+      const std::string what = "drawing " + std::to_string(k) + " (" + std::to_string(segments) +
+        " segments) op " + std::to_string(op);
+      const double area = BooleanArea(twoTriangles, curves, op, 0, nullptr, what);
+      ASSERT_NEAR(area, swept, 1e-9 * (lattice + 2) * (lattice + 2)) << what;
+    }
+  }
+}
