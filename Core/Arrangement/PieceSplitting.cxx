@@ -12,21 +12,6 @@ namespace boolsurf
 namespace
 {
 
-bool StrictlyInside(Vec2 a, Vec2 b, Vec2 q)
-{
-  if (a.x != b.x)
-  {
-    return (a.x < q.x && q.x < b.x) || (b.x < q.x && q.x < a.x);
-  }
-  return (a.y < q.y && q.y < b.y) || (b.y < q.y && q.y < a.y);
-}
-
-double Along(Vec2 a, Vec2 b, Vec2 q)
-{
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return std::abs(dx) >= std::abs(dy) ? (q.x - a.x) / dx : (q.y - a.y) / dy;
-}
-
 struct Piece
 {
   int Chain;
@@ -79,9 +64,9 @@ bool SplitPiecesAtCrossings(LocalArrangement& arr, double snapDistance, std::str
       const std::array<int, 2> e = ends(piece);
       const Vec2 a = p(e[0]), b = p(e[1]), x = p(q);
       if (q != e[0] && q != e[1] && !(x.x == a.x && x.y == a.y) && !(x.x == b.x && x.y == b.y) &&
-        Orient2dSign(a, b, x) == 0 && StrictlyInside(a, b, x))
+        Orient2dSign(a, b, x) == 0 && StrictlyBetween(a, b, x))
       {
-        insertions.push_back({ piece.Chain, piece.Index, Along(a, b, x), q });
+        insertions.push_back({ piece.Chain, piece.Index, ParameterAlong(a, b, x), q });
         return true;
       }
       return false;
@@ -146,11 +131,13 @@ bool SplitPiecesAtCrossings(LocalArrangement& arr, double snapDistance, std::str
         }
         if (at != e[0] && at != e[1])
         {
-          insertions.push_back({ pieces[i].Chain, pieces[i].Index, Along(a, b, p(at)), at });
+          insertions.push_back(
+            { pieces[i].Chain, pieces[i].Index, ParameterAlong(a, b, p(at)), at });
         }
         if (at != f[0] && at != f[1])
         {
-          insertions.push_back({ pieces[j].Chain, pieces[j].Index, Along(c, d, p(at)), at });
+          insertions.push_back(
+            { pieces[j].Chain, pieces[j].Index, ParameterAlong(c, d, p(at)), at });
         }
       }
     }

@@ -11,6 +11,8 @@
 
 #include "Mesh/Vec3.h"
 
+#include <cmath>
+
 namespace boolsurf
 {
 
@@ -28,6 +30,25 @@ double Orient2dExact(Vec2 a, Vec2 b, Vec2 c);
 /// Exact sign of (a + b - 1) for doubles a, b: tells whether the barycentric point (a, b) lies
 /// below, on or above the hypotenuse u + v = 1 of the unit triangle.
 int SumMinusOneSign(double a, double b);
+
+/// For q on the line through a and b (Orient2d zero): whether q lies strictly between them,
+/// decided exactly on one coordinate (x unless the segment is vertical).
+inline bool StrictlyBetween(Vec2 a, Vec2 b, Vec2 q)
+{
+  if (a.x != b.x)
+  {
+    return (a.x < q.x && q.x < b.x) || (b.x < q.x && q.x < a.x);
+  }
+  return (a.y < q.y && q.y < b.y) || (b.y < q.y && q.y < a.y);
+}
+
+/// Position of q along segment (a, b), measured on the segment's dominant axis: 0 at a, 1 at
+/// b. For points exactly on the segment this orders them exactly.
+inline double ParameterAlong(Vec2 a, Vec2 b, Vec2 q)
+{
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return std::abs(dx) >= std::abs(dy) ? (q.x - a.x) / dx : (q.y - a.y) / dy;
+}
 
 } // namespace boolsurf
 

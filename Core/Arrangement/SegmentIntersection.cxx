@@ -10,24 +10,6 @@ namespace boolsurf
 namespace
 {
 
-// Position of q along segment (a, b), measured on the segment's dominant axis. For points
-// exactly on the segment this orders them exactly; 0 at a, 1 at b.
-double ParameterAlong(Vec2 a, Vec2 b, Vec2 q)
-{
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return std::fabs(dx) >= std::fabs(dy) ? (q.x - a.x) / dx : (q.y - a.y) / dy;
-}
-
-// Is q, known to be on the line of (a, b), strictly between a and b?
-bool StrictlyBetween(Vec2 a, Vec2 b, Vec2 q)
-{
-  if (a.x != b.x)
-  {
-    return (a.x < q.x && q.x < b.x) || (b.x < q.x && q.x < a.x);
-  }
-  return (a.y < q.y && q.y < b.y) || (b.y < q.y && q.y < a.y);
-}
-
 bool StrictlyInsideUnitTriangle(Vec2 p)
 {
   return p.x > 0.0 && p.y > 0.0 && SumMinusOneSign(p.x, p.y) < 0;

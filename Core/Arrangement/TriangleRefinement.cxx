@@ -26,21 +26,6 @@ inline EdgeKey Undirected(int a, int b)
   return a < b ? Directed(a, b) : Directed(b, a);
 }
 
-bool StrictlyBetween(Vec2 a, Vec2 b, Vec2 q)
-{
-  if (a.x != b.x)
-  {
-    return (a.x < q.x && q.x < b.x) || (b.x < q.x && q.x < a.x);
-  }
-  return (a.y < q.y && q.y < b.y) || (b.y < q.y && q.y < a.y);
-}
-
-double ParameterAlong(Vec2 a, Vec2 b, Vec2 q)
-{
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return std::abs(dx) >= std::abs(dy) ? (q.x - a.x) / dx : (q.y - a.y) / dy;
-}
-
 // A triangulation of a few dozen points, kept simple on purpose: every search is a linear
 // scan, which is faster than maintaining a point-location structure at these sizes.
 struct Crossing
