@@ -196,85 +196,73 @@ bool TriangleContains(const TriangleMesh& mesh, const CanonicalPoint& c, int t)
 }
 
 //------------------------------------------------------------------------------
-void TrianglesOf(const TriangleMesh& mesh, const CanonicalPoint& c, std::vector<int>& out)
+namespace
 {
-  out.clear();
+// Calls visit(t) for every triangle that contains c, in TrianglesOf's order (a face's own
+// triangle if usable; an edge's half-edge triangle, then its twin's; a vertex's fan), until
+// visit returns true; whether it did. No list is built: tracing asks this for every point it
+// writes.
+template <class Visit>
+bool VisitTrianglesOf(const TriangleMesh& mesh, const CanonicalPoint& c, Visit&& visit)
+{
   switch (c.Location)
   {
     case PointLocation::Face:
-      if (c.Id >= 0 && c.Id < mesh.GetNumberOfTriangles() && mesh.IsUsable(c.Id))
-      {
-        out.push_back(c.Id);
-      }
-      break;
+      return c.Id >= 0 && c.Id < mesh.GetNumberOfTriangles() && mesh.IsUsable(c.Id) && visit(c.Id);
     case PointLocation::Edge:
     {
       if (c.Id < 0 || c.Id >= mesh.GetNumberOfEdges())
       {
-        break;
+        return false;
       }
       const int h = mesh.GetEdgeHalfEdge(c.Id);
-      out.push_back(h / 3);
       const int twin = mesh.GetTwin(h);
-      if (twin >= 0)
-      {
-        out.push_back(twin / 3);
-      }
-      break;
+      return visit(h / 3) || (twin >= 0 && visit(twin / 3));
     }
     case PointLocation::Vertex:
       if (c.Id < 0 || c.Id >= mesh.GetNumberOfVertices())
       {
-        break;
+        return false;
       }
       for (int corner : mesh.GetVertexCorners(c.Id))
       {
-        out.push_back(corner / 3);
+        if (visit(corner / 3))
+        {
+          return true;
+        }
       }
-      break;
+      return false;
   }
+  return false;
+}
+} // namespace
+
+void TrianglesOf(const TriangleMesh& mesh, const CanonicalPoint& c, std::vector<int>& out)
+{
+  out.clear();
+  VisitTrianglesOf(mesh,
+    c,
+    [&out](int t)
+    {
+      out.push_back(t);
+      return false;
+    });
 }
 
 //------------------------------------------------------------------------------
 int SharedTriangle(const TriangleMesh& mesh, const CanonicalPoint& a, const CanonicalPoint& b)
 {
-  // Faces and edges have at most two triangles (the common case: tracing asks this for every
-  // point it writes); vertices need the fan, so reuse one vector per thread for them rather
-  // than allocating per call.
-  if (a.Location != PointLocation::Vertex)
-  {
-    int sides[2] = { -1, -1 };
-    if (a.Location == PointLocation::Face)
+  int best = -1;
+  VisitTrianglesOf(mesh,
+    a,
+    [&](int t)
     {
-      sides[0] = a.Id >= 0 && a.Id < mesh.GetNumberOfTriangles() && mesh.IsUsable(a.Id) ? a.Id : -1;
-    }
-    else if (a.Id >= 0 && a.Id < mesh.GetNumberOfEdges())
-    {
-      const int h = mesh.GetEdgeHalfEdge(a.Id);
-      const int twin = mesh.GetTwin(h);
-      sides[0] = h / 3;
-      sides[1] = twin >= 0 ? twin / 3 : -1;
-    }
-    int best = -1;
-    for (const int t : sides)
-    {
-      if (t >= 0 && TriangleContains(mesh, b, t) && (best < 0 || t < best))
+      if (TriangleContains(mesh, b, t) && (best < 0 || t < best))
       {
         best = t;
       }
-    }
-    return best;
-  }
-  thread_local std::vector<int> trianglesOfA;
-  TrianglesOf(mesh, a, trianglesOfA);
-  int best = -1;
-  for (int t : trianglesOfA)
-  {
-    if (TriangleContains(mesh, b, t) && (best < 0 || t < best))
-    {
-      best = t;
-    }
-  }
+      return false;
+    });
   return best;
 }
 
@@ -364,35 +352,6 @@ SurfacePoint WriteSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c
     return (c.Location == PointLocation::Edge && EdgeFormReadsBack(mesh, c, sp.Triangle)) ||
       LocateSurfacePoint(mesh, sp) == c;
   };
-  if (c.Location == PointLocation::Edge && c.Id >= 0 && c.Id < mesh.GetNumberOfEdges())
-  {
-    // The same search as below, over the edge's two triangles without a list (TrianglesOf's
-    // order: the edge's half-edge, then its twin).
-    const int h = mesh.GetEdgeHalfEdge(c.Id);
-    const int twin = mesh.GetTwin(h);
-    const int sides[2] = { h / 3, twin >= 0 ? twin / 3 : -1 };
-    if (preferred >= 0 && (preferred == sides[0] || preferred == sides[1]) &&
-      mesh.IsUsable(preferred))
-    {
-      const SurfacePoint sp = FormIn(mesh, c, preferred);
-      if (readsBack(sp))
-      {
-        return sp;
-      }
-    }
-    for (const int t : sides)
-    {
-      if (t >= 0)
-      {
-        const SurfacePoint sp = FormIn(mesh, c, t);
-        if (readsBack(sp))
-        {
-          return sp;
-        }
-      }
-    }
-    return FormIn(mesh, c, sides[0]); // ToSurfacePoint's form
-  }
   if (preferred >= 0 && TriangleContains(mesh, c, preferred))
   {
     const SurfacePoint sp = FormIn(mesh, c, preferred);
@@ -401,15 +360,16 @@ SurfacePoint WriteSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c
       return sp;
     }
   }
-  thread_local std::vector<int> triangles;
-  TrianglesOf(mesh, c, triangles);
-  for (const int t : triangles)
+  SurfacePoint found;
+  if (VisitTrianglesOf(mesh,
+        c,
+        [&](int t)
+        {
+          found = FormIn(mesh, c, t);
+          return readsBack(found);
+        }))
   {
-    const SurfacePoint sp = FormIn(mesh, c, t);
-    if (readsBack(sp))
-    {
-      return sp;
-    }
+    return found;
   }
   return ToSurfacePoint(mesh, c);
 }
