@@ -117,8 +117,6 @@ vtkExecutive* vtkBoolSurfAlgorithm::CreateDefaultExecutive()
 }
 
 //------------------------------------------------------------------------------
-
-//------------------------------------------------------------------------------
 int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
