@@ -12,6 +12,8 @@
 #include "vtkBoolSurfSceneReader.h"
 #include "vtkBoolSurfTraceCurves.h"
 
+#include "Support/SourceTree.h"
+
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
@@ -38,19 +40,9 @@ namespace
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-fs::path SourceDir()
-{
-  if (const char* dir = std::getenv("BOOLSURF_SOURCE_DIR"))
-  {
-    return dir;
-  }
-  // Testing/Cxx/Filters/<this file> -> the source tree (also at test discovery, without env).
-  return fs::path(__FILE__).parent_path().parent_path().parent_path().parent_path();
-}
-
 fs::path ExpectationsFile()
 {
-  return SourceDir() / "Testing" / "Data" / "scene_expectations.json";
+  return boolsurf::testing::SourceTree() / "Testing" / "Data" / "scene_expectations.json";
 }
 
 json Expectations()

@@ -5,6 +5,7 @@
 #include "Arrangement/PieceSplitting.h"
 #include "Arrangement/Predicates.h"
 #include "Arrangement/TriangleRefinement.h"
+#include "Support/SourceTree.h"
 
 #include <gtest/gtest.h>
 
@@ -20,17 +21,15 @@
 #include <utility>
 
 using namespace boolsurf;
-namespace fs = std::filesystem;
 
 namespace
 {
 
 std::string FixturePath()
 {
-  const fs::path source = std::getenv("BOOLSURF_SOURCE_DIR")
-    ? fs::path(std::getenv("BOOLSURF_SOURCE_DIR"))
-    : fs::path(__FILE__).parent_path().parent_path().parent_path().parent_path().parent_path();
-  return (source / "Testing/Data/Arrangement/CrowdedTriangle3torus200k.txt").string();
+  return (
+    boolsurf::testing::SourceTree() / "Testing/Data/Arrangement/CrowdedTriangle3torus200k.txt")
+    .string();
 }
 
 // The fixture: points (u, v as hexadecimal doubles, refined-surface id, where), the boundary,

@@ -11,6 +11,7 @@
 #include "Mesh/PlyReader.h"
 #include "Mesh/TriangleMesh.h"
 #include "Scene/SceneMeshLookup.h"
+#include "Support/SourceTree.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -53,22 +54,6 @@ const std::map<std::string, std::string>& MeshOfModel()
     { "data/models/floor.ply", "floor.ply" },
   };
   return map;
-}
-
-std::string SourceDir()
-{
-  if (const char* dir = std::getenv("BOOLSURF_SOURCE_DIR"))
-  {
-    return dir;
-  }
-  // Testing/Cxx/Core/Arrangement/this file -> the source tree
-  return fs::path(__FILE__)
-    .parent_path()
-    .parent_path()
-    .parent_path()
-    .parent_path()
-    .parent_path()
-    .string();
 }
 
 struct SceneResult
@@ -274,7 +259,8 @@ TEST(ReferenceScenes, CellCountsMatchExpectations)
   {
     GTEST_SKIP() << "shared data folder " << shared << " has no boolsurf-scenes/ or meshes/ folder";
   }
-  const fs::path expectedPath = fs::path(SourceDir()) / "Testing" / "Data" / "scene_cells.json";
+  const fs::path expectedPath =
+    boolsurf::testing::SourceTree() / "Testing" / "Data" / "scene_cells.json";
   const bool update = std::getenv("BOOLSURF_UPDATE_SCENE_CELLS") != nullptr;
 
   std::vector<std::string> files;
