@@ -7,8 +7,11 @@ is a non-trivial image, 1 otherwise (the GUI is closed either way).
 """
 import os
 import sys
-import tempfile
 import traceback
+
+# Run by the GUI as a string: no __file__.
+sys.path.insert(0, os.path.join(os.environ["BOOLSURF_SOURCE_DIR"], "Testing", "Python"))
+import scratch  # noqa: E402
 
 
 def main():
@@ -48,7 +51,7 @@ def main():
     ResetCamera(view)
     Render(view)
     png = os.environ.get("BOOLSURF_GUI_SCREENSHOT") or os.path.join(
-        tempfile.mkdtemp(prefix="boolsurf-gui-"), "gui_boolsurf.png")
+        scratch.folder("boolsurf-gui-"), "gui_boolsurf.png")
     SaveScreenshot(png, view, ImageResolution=[800, 600])
     from vtkmodules.vtkIOImage import vtkPNGReader
     reader = vtkPNGReader()
@@ -70,6 +73,7 @@ except Exception:
     # In the GUI, sys.stderr is the Output Messages window: also write to the terminal.
     traceback.print_exc(file=sys.__stderr__)
     code = 1
+scratch.remove()
 sys.stdout.flush()
 sys.stderr.flush()
 os._exit(code)  # close the GUI: ParaView would otherwise wait for the user

@@ -28,7 +28,8 @@ import signal
 import socket
 import subprocess
 import sys
-import tempfile
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("paraview")
@@ -38,7 +39,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 source_dir = os.environ.get("BOOLSURF_SOURCE_DIR", os.path.join(here, "..", ".."))
 baseline = os.path.join(source_dir, "Testing", "Data", "Baseline", "curve_editor.png")
 update = os.environ.get("BOOLSURF_UPDATE_BASELINE") == "1"
-out = tempfile.mkdtemp(prefix="boolsurf-editor-")
+out = scratch.folder("boolsurf-editor-")
 result_path = os.path.join(out, "result.json")
 # pvpython started MPI as a singleton: its OMPI_/PMIX_ variables would mislead mpiexec.
 env = {k: v for k, v in os.environ.items() if not re.match(r"(OMPI_|PMIX_|OPAL_)", k)}

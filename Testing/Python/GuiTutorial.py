@@ -21,14 +21,15 @@ import argparse
 import os
 import subprocess
 import sys
-import tempfile
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("paraview")
 args = parser.parse_args()
 here = os.path.dirname(os.path.abspath(__file__))
 source_dir = os.environ.get("BOOLSURF_SOURCE_DIR", os.path.join(here, "..", ".."))
-out = tempfile.mkdtemp(prefix="boolsurf-tutorial-")
+out = scratch.folder("boolsurf-tutorial-")
 env = dict(os.environ, BOOLSURF_GUI_RESULT=os.path.join(out, "result"),
            BOOLSURF_SOURCE_DIR=source_dir)
 run = subprocess.run([args.paraview, "--dr", "--script=" + os.path.join(here, "GuiTutorialSetup.py"),

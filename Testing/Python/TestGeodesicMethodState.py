@@ -13,11 +13,13 @@ deprecated ExactGeodesics property it replaces, through state files and scripts.
 The method is checked on the proxy and on the VTK object the server-manager pushed it to."""
 import os
 import shutil
-import tempfile
+import sys
 import xml.etree.ElementTree as ET
 
 import boolsurf  # noqa: F401 (the filters' Python wrapping: GetClientSideObject() is typed)
 from paraview.simple import *  # noqa: F401,F403
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
 
 BOUNDED, EXACT, LOCALLY_SHORTEST = 0, 1, 2
 NAMES = {BOUNDED: "Bounded", EXACT: "Exact", LOCALLY_SHORTEST: "Locally shortest"}
@@ -27,7 +29,7 @@ METHOD_ONLY = ("BoolSurfSurfaceCurves", "ResolveInconsistentShapes")
 
 plugin = os.environ["BOOLSURF_PLUGIN"]
 source_dir = os.environ["BOOLSURF_SOURCE_DIR"]
-folder = tempfile.mkdtemp(prefix="boolsurf-geodesic-method-")
+folder = scratch.folder("boolsurf-geodesic-method-")
 
 
 def load_plugin():

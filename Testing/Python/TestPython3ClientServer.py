@@ -9,7 +9,8 @@ import shutil
 import signal
 import subprocess
 import sys
-import tempfile
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
 
 source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
                             os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
@@ -20,7 +21,7 @@ if not all(tools.values()):
     sys.exit(0)
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1")
-out = tempfile.mkdtemp(prefix="boolsurf-cs-")
+out = scratch.folder("boolsurf-cs-")
 
 
 def client(json_path, server=None):

@@ -10,7 +10,8 @@ import os
 import shutil
 import subprocess
 import sys
-import tempfile
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
 
 source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
                             os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
@@ -22,7 +23,7 @@ if not mpiexec or not pvbatch:
     sys.exit(0)
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1")
-out = tempfile.mkdtemp(prefix="boolsurf-mpi-")
+out = scratch.folder("boolsurf-mpi-")
 
 
 def run(ranks, distribute):

@@ -8,13 +8,14 @@ import os
 import shutil
 import subprocess
 import sys
-import tempfile
 
 from vtkmodules.vtkTestingRendering import vtkTesting
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
 
 source_dir = os.environ["BOOLSURF_SOURCE_DIR"]
 baseline = os.path.join(source_dir, "Testing", "Data", "Baseline", "eight_union.png")
-out = tempfile.mkdtemp(prefix="boolsurf-baseline-")
+out = scratch.folder("boolsurf-baseline-")
 pvbatch = shutil.which("pvbatch") or "pvbatch"
 subprocess.check_call([pvbatch, os.path.join(source_dir, "Examples", "demo.py"), "--output", out,
                        "--operation", "Union"])

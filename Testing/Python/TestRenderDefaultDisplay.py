@@ -15,7 +15,6 @@
 """
 import os
 import sys
-import tempfile
 
 source_dir = os.environ["BOOLSURF_SOURCE_DIR"]
 sys.path.insert(0, os.path.join(source_dir, "Examples"))
@@ -23,6 +22,7 @@ from boolsurf_example_utils import SurfaceRays, curves_source, surface_circle  #
 from paraview.simple import *  # noqa: E402,F401,F403
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from render_pixels import chromaticity_spread, paint_unlit, view_pixels  # noqa: E402
+import scratch  # noqa: E402
 
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 mesh = PLYReader(FileNames=[os.path.join(source_dir, "Data", "eight.ply")])
@@ -59,7 +59,7 @@ camera.SetViewUp(0, 0, 1)
 ResetCamera(view)
 
 
-png = os.path.join(tempfile.mkdtemp(prefix="boolsurf-display-"), "view.png")
+png = os.path.join(scratch.folder("boolsurf-display-"), "view.png")
 
 
 def pixels():

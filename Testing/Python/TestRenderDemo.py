@@ -1,14 +1,16 @@
 """pvbatch under Xvfb: the README's main job (Examples/demo.py) runs the whole pipeline on
 Data/eight.ply and writes the Boolean's region as .vtp and a .png rendering."""
 import os
+import sys
 import shutil
 import subprocess
-import tempfile
 
 from paraview.simple import *  # noqa: F401,F403
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
 
 source_dir = os.environ["BOOLSURF_SOURCE_DIR"]
-out = tempfile.mkdtemp(prefix="boolsurf-demo-")
+out = scratch.folder("boolsurf-demo-")
 demo = os.path.join(source_dir, "Examples", "demo.py")
 # A separate pvbatch process, as Scripts/run-demo.sh runs it (same DISPLAY and environment).
 subprocess.check_call([shutil.which("pvbatch") or "pvbatch", demo, "--output", out])

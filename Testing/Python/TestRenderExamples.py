@@ -4,15 +4,17 @@ Examples/offset_margin.py) write a
 readable .vtp region and a non-trivial .png."""
 import os
 import shutil
+import sys
 import subprocess
-import tempfile
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager as sm
 from vtkmodules.vtkIOImage import vtkPNGReader
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
 
 source_dir = os.environ["BOOLSURF_SOURCE_DIR"]
-out = tempfile.mkdtemp(prefix="boolsurf-examples-")
+out = scratch.folder("boolsurf-examples-")
 pvbatch = shutil.which("pvbatch") or "pvbatch"
 expected = {
     "boolean_genus2.py": ("genus2_boolean", 0.03, 0.08),  # (S0 ^ S1) | band: 0.0516

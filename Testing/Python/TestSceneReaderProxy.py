@@ -2,14 +2,16 @@
 (two triangles-worth of control points around a vertex region), then the one-step filter."""
 import json
 import os
-import tempfile
+import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager as sm
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
 
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 source_dir = os.environ["BOOLSURF_SOURCE_DIR"]
-folder = tempfile.mkdtemp(prefix="boolsurf-scene-")
+folder = scratch.folder("boolsurf-scene-")
 scene = {
     "model": "./data/models/eight.ply",
     "points": [{"face": f, "uv": [0.3, 0.3]} for f in (10, 12, 30, 31, 50)],

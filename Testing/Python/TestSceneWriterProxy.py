@@ -3,14 +3,16 @@ scene opens again with the same surface points, curves, shapes and operations, a
 same one-step Boolean region, also after Subdivide Surface With Curves. Bad input (curves without surface points) writes nothing."""
 import json
 import os
-import tempfile
+import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager as sm
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
 
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 source_dir = os.environ["BOOLSURF_SOURCE_DIR"]
-folder = tempfile.mkdtemp(prefix="boolsurf-scene-writer-")
+folder = scratch.folder("boolsurf-scene-writer-")
 scene = {
     "model": "./data/models/eight.ply",
     # Two overlapping triangles inside triangle 10 (null-homologous on the genus-2 eight), uv

@@ -6,7 +6,7 @@ types and closure reach the output; a state file saved and loaded again gives th
 curves; port 1 holds the curves traced on the surface (Trace Surface Curves' output); bad
 properties give an empty output and an error naming the problem."""
 import os
-import tempfile
+import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager as sm
@@ -14,6 +14,8 @@ from vtkmodules.vtkCommonDataModel import vtkStaticCellLocator
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import mutable, reference
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
 
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 source_dir = os.environ["BOOLSURF_SOURCE_DIR"]
@@ -98,7 +100,7 @@ region = BoolSurf(Surface=mesh, Curves=curves, Operation="Expression", Expressio
 assert sm.Fetch(region).GetNumberOfCells() > 0
 
 # A state file keeps the drawing.
-state = os.path.join(tempfile.mkdtemp(prefix="boolsurf-curves-"), "drawing.pvsm")
+state = os.path.join(scratch.folder("boolsurf-curves-"), "drawing.pvsm")
 SaveState(state)
 ResetSession()
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())

@@ -15,28 +15,24 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
+#include "Support/ScratchDirectory.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 namespace
 {
 namespace fs = std::filesystem;
 
-/// A scratch folder per test process.
+/// A scratch folder per test process, removed at exit.
 fs::path Scratch()
 {
-  static const fs::path dir = []
-  {
-    fs::path d = fs::temp_directory_path() / ("boolsurf-scene-reader-" + std::to_string(getpid()));
-    fs::create_directories(d / "meshes");
-    return d;
-  }();
-  return dir;
+  static const boolsurf::testing::ScratchDirectory dir("boolsurf-scene-reader-", { "meshes" });
+  return dir.Path;
 }
 
 /// A 2x1 quad strip in z = 0 (two quads: the reader splits them into 4 triangles).

@@ -25,6 +25,8 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
+#include "Support/ScratchDirectory.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,22 +34,17 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 namespace
 {
 namespace fs = std::filesystem;
 
+/// A scratch folder per test process, removed at exit.
 fs::path Scratch()
 {
-  static const fs::path dir = []
-  {
-    fs::path d = fs::temp_directory_path() / ("boolsurf-scene-writer-" + std::to_string(getpid()));
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
+  static const boolsurf::testing::ScratchDirectory dir("boolsurf-scene-writer-");
+  return dir.Path;
 }
 
 /// Reads a scene; errors are collected, not printed.

@@ -4,12 +4,13 @@
 #include "Scene/SceneMeshLookup.h"
 #include "Scene/SceneModel.h"
 
+#include "Support/ScratchDirectory.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 using namespace boolsurf;
@@ -17,18 +18,12 @@ namespace fs = std::filesystem;
 
 namespace
 {
+/// A scratch folder per test process, removed at exit.
 fs::path Scratch()
 {
-  static const fs::path dir = []
-  {
-    const fs::path d =
-      fs::temp_directory_path() / ("boolsurf-scene-lookup-" + std::to_string(getpid()));
-    fs::create_directories(d / "repo" / "scenes");
-    fs::create_directories(d / "repo" / "meshes");
-    fs::create_directories(d / "other");
-    return d;
-  }();
-  return dir;
+  static const boolsurf::testing::ScratchDirectory dir(
+    "boolsurf-scene-lookup-", { "repo/scenes", "repo/meshes", "other" });
+  return dir.Path;
 }
 } // namespace
 
