@@ -381,6 +381,25 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   view.EdgeOfEdgePoint = &edgeOfEdgePoint;
   view.BlockedMeshSubEdges = &blockedMeshSubEdges;
   view.MeshEdgeHasBlocked = &meshEdgeHasBlocked;
+  std::unordered_map<int, std::unordered_map<std::uint64_t, int>> crowdedHalfEdges;
+  for (int s = 0; s < slots; ++s)
+  {
+    const int t = map.Triangles[s];
+    if (offset[t + 1] - offset[t] > RefinedSurfaceView::CrowdedSize)
+    {
+      std::unordered_map<std::uint64_t, int>& edges = crowdedHalfEdges[t];
+      edges.reserve(3 * static_cast<std::size_t>(offset[t + 1] - offset[t]));
+      for (int r = offset[t]; r < offset[t + 1]; ++r)
+      {
+        const std::array<int, 3>& v = out.Triangles[r];
+        for (int j = 0; j < 3; ++j)
+        {
+          edges.emplace(DirectedPointPair(v[j], v[(j + 1) % 3]), r);
+        }
+      }
+    }
+  }
+  view.CrowdedHalfEdges = crowdedHalfEdges.empty() ? nullptr : &crowdedHalfEdges;
   // Tiles of the mesh: built once per mesh (the persistent part of the dual graph); an edit
   // floods clean tiles as single nodes and only the triangles of tiles that curves touch.
   if (!work.Tiles || work.Tiles->MeshSerial != mesh.GetSerial() || mesh.GetSerial() == 0)

@@ -50,6 +50,15 @@ int LocalEdgesOfPoint(const RefinedSurfaceView& s, int t, int id)
 //------------------------------------------------------------------------------
 int RefinedSurfaceView::FindDirected(int t, int a, int b) const
 {
+  if (this->CrowdedHalfEdges && (*this->Offset)[t + 1] - (*this->Offset)[t] > CrowdedSize)
+  {
+    const auto crowded = this->CrowdedHalfEdges->find(t);
+    if (crowded != this->CrowdedHalfEdges->end())
+    {
+      const auto edge = crowded->second.find(DirectedPointPair(a, b));
+      return edge == crowded->second.end() ? -1 : edge->second;
+    }
+  }
   for (int r = (*this->Offset)[t]; r < (*this->Offset)[t + 1]; ++r)
   {
     const std::array<int, 3>& v = (*this->Triangles)[r];

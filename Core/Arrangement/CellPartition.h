@@ -25,6 +25,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -37,6 +38,12 @@ inline std::uint64_t UndirectedPointPair(int a, int b)
   const std::uint32_t lo = static_cast<std::uint32_t>(a < b ? a : b);
   const std::uint32_t hi = static_cast<std::uint32_t>(a < b ? b : a);
   return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
+inline std::uint64_t DirectedPointPair(int a, int b)
+{
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+    static_cast<std::uint32_t>(b);
 }
 
 /// The refined surface as the flood fill sees it.
@@ -63,6 +70,12 @@ struct RefinedSurfaceView
   /// per-mesh-edge flag telling whether to look there at all.
   const std::unordered_set<std::uint64_t>* BlockedMeshSubEdges = nullptr;
   const std::vector<char>* MeshEdgeHasBlocked = nullptr;
+
+  /// Per crowded source triangle (more than CrowdedSize refined triangles, where scanning them
+  /// for every neighbour would make the flood fill quadratic in their number): its refined
+  /// triangles' directed edges (DirectedPointPair) -> refined triangle. Null when none is.
+  const std::unordered_map<int, std::unordered_map<std::uint64_t, int>>* CrowdedHalfEdges = nullptr;
+  static constexpr int CrowdedSize = 64;
 
   /// Refined triangle among those of source triangle t holding the directed edge a -> b.
   int FindDirected(int t, int a, int b) const;

@@ -4,7 +4,9 @@
 #include "Arrangement/Predicates.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -26,8 +28,26 @@ inline EdgeKey Undirected(int a, int b)
   return a < b ? Directed(a, b) : Directed(b, a);
 }
 
-// A triangulation of a few dozen points, kept simple on purpose: every search is a linear
-// scan, which is faster than maintaining a point-location structure at these sizes.
+/// Whether d lies inside the circle through a, b, c (counter-clockwise), by more than the
+/// rounding of the determinant: points on the circle, or within rounding of it, are not.
+bool InCircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d)
+{
+  const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
+  const double cdx = c.x - d.x, cdy = c.y - d.y;
+  const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy, ab = adx * bdy - bdx * ady;
+  const double det = alift * bc + blift * ca + clift * ab;
+  const double permanent = alift * std::abs(bc) + blift * std::abs(ca) + clift * std::abs(ab);
+  return det > 1e-12 * permanent;
+}
+
+// A triangulation of a triangle's points. Small ones (the vast majority: a few dozen points)
+// are searched by linear scans, faster than maintaining any structure at these sizes. Large
+// ones (a triangle crowded with curve pieces: thousands of points and crossings) keep a map of
+// half-edges and a triangle per vertex, locate points by walking and find the vertices on a
+// piece along the walk, so that the cost per point and per piece does not grow with the
+// triangle's size.
 struct Crossing
 {
   double S; ///< parameter along the piece
@@ -40,7 +60,6 @@ struct TriangulationBuffers
 {
   std::vector<std::array<int, 3>> Tris;
   std::vector<char> Alive;
-  std::vector<char> IsInserted;
   std::vector<EdgeKey> ClosedEdges;
 };
 
@@ -57,13 +76,20 @@ public:
   LocalTriangulation(LocalArrangement& arrangement, TriangulationBuffers& buffers)
     : Arr(arrangement)
     , UseMap(arrangement.Points.size() > 24)
+    , Flip(arrangement.Points.size() > 1024)
     , Tris(buffers.Tris)
     , Alive(buffers.Alive)
-    , IsInserted(buffers.IsInserted)
   {
     this->Tris.clear();
     this->Alive.clear();
-    this->IsInserted.clear();
+    if (this->UseMap)
+    {
+      // About two points per cell: a walk from the cell's last triangle is a few steps long.
+      this->StartGridSize = std::max(
+        1, static_cast<int>(std::sqrt(0.5 * static_cast<double>(arrangement.Points.size()))));
+      this->WalkStarts.assign(
+        static_cast<std::size_t>(this->StartGridSize) * this->StartGridSize, -1);
+    }
   }
 
   Vec2 P(int i) const { return this->Arr.Points[i].P; }
@@ -79,7 +105,24 @@ public:
       this->HalfEdges[Directed(a, b)] = t;
       this->HalfEdges[Directed(b, c)] = t;
       this->HalfEdges[Directed(c, a)] = t;
+      const int most = std::max(a, std::max(b, c));
+      if (most >= static_cast<int>(this->VertexTriangle.size()))
+      {
+        this->VertexTriangle.resize(most + 1, -1);
+      }
+      this->VertexTriangle[a] = this->VertexTriangle[b] = this->VertexTriangle[c] = t;
+      this->LastAdded = t;
+      this->WalkStarts[this->StartCell((1.0 / 3.0) * (this->P(a) + this->P(b) + this->P(c)))] = t;
     }
+  }
+
+  /// Cell of the grid of walk starts that holds q (clamped to the unit square).
+  std::size_t StartCell(Vec2 q) const
+  {
+    const int n = this->StartGridSize;
+    const int i = std::min(n - 1, std::max(0, static_cast<int>(q.x * n)));
+    const int j = std::min(n - 1, std::max(0, static_cast<int>(q.y * n)));
+    return static_cast<std::size_t>(j) * n + i;
   }
 
   void Remove(int t)
@@ -214,30 +257,132 @@ public:
         }
       }
     }
+    if (this->Flip)
+    {
+      this->FlipTowardsDelaunay(p, { { z1, x }, { y, z1 }, { z2, y }, { x, z2 } });
+    }
     return true;
+  }
+
+  /// After inserting p: flips the edges opposite p (directed as in p's triangles) while the
+  /// vertex across one lies inside the circumcircle of p's triangle, as Lawson's algorithm
+  /// does. Incremental insertion alone leaves long slivers, which make walks long and cavities
+  /// large; near-Delaunay triangles keep both local. Constrained
+  /// and boundary edges are never flipped, a flip needs a strictly convex quadrilateral (exact
+  /// orientations), and their number is bounded, so ties on co-circular lattice points cannot
+  /// loop.
+  void FlipTowardsDelaunay(int p, std::initializer_list<std::pair<int, int>> opposite)
+  {
+    std::vector<std::pair<int, int>>& stack = this->FlipStack;
+    stack.assign(opposite.begin(), opposite.end());
+    for (int flips = 0; !stack.empty() && flips < 64;)
+    {
+      const auto [a, b] = stack.back();
+      stack.pop_back();
+      if (a < 0 || b < 0 || this->Constrained.count(Undirected(a, b)) > 0)
+      {
+        continue;
+      }
+      const int t = this->Find(a, b), u = this->Find(b, a);
+      if (t < 0 || u < 0 || this->CornerOf(t, p) < 0)
+      {
+        continue;
+      }
+      const std::array<int, 3>& w = this->Tris[u];
+      const int q = w[0] != a && w[0] != b ? w[0] : (w[1] != a && w[1] != b ? w[1] : w[2]);
+      if (!InCircle(this->P(a), this->P(b), this->P(p), this->P(q)) || this->Orient(a, q, p) <= 0 ||
+        this->Orient(q, b, p) <= 0)
+      {
+        continue;
+      }
+      this->Remove(t);
+      this->Remove(u);
+      this->Add(a, q, p);
+      this->Add(q, b, p);
+      stack.push_back({ a, q });
+      stack.push_back({ q, b });
+      ++flips;
+    }
+  }
+
+  /// Whether p lies in the closed triangle t, with the orientations of p to its edges.
+  bool Holds(int t, int p, int o[3]) const
+  {
+    const std::array<int, 3>& v = this->Tris[t];
+    for (int j = 0; j < 3; ++j)
+    {
+      o[j] = this->Orient(v[j], v[(j + 1) % 3], p);
+      if (o[j] < 0)
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  /// An alive triangle holding p (closed), by scanning them all; -1 if none.
+  int LocateByScan(int p, int o[3]) const
+  {
+    for (int t = 0; t < static_cast<int>(this->Tris.size()); ++t)
+    {
+      if (this->Alive[t] && this->Holds(t, p, o))
+      {
+        return t;
+      }
+    }
+    return -1;
+  }
+
+  /// An alive triangle holding p (closed), by walking from the last triangle added towards p:
+  /// across an edge that has p strictly on its other side, the edge tried first varying from
+  /// step to step (a visibility walk can cycle in a non-Delaunay triangulation; this one is
+  /// bounded, and the scan takes over when it does not arrive).
+  int LocateByWalk(int p, int o[3]) const
+  {
+    int t = this->WalkStarts[this->StartCell(this->P(p))];
+    if (t < 0 || !this->Alive[t])
+    {
+      t = this->LastAdded;
+    }
+    if (t < 0 || !this->Alive[t])
+    {
+      return this->LocateByScan(p, o);
+    }
+    const std::size_t limit = 2 * this->Tris.size() + 16;
+    for (std::size_t step = 0; step < limit; ++step)
+    {
+      const std::array<int, 3>& v = this->Tris[t];
+      int next = -1;
+      const int first = static_cast<int>((step * 2654435761u + static_cast<unsigned>(p)) % 3);
+      for (int k = 0; k < 3 && next < 0; ++k)
+      {
+        const int j = (first + k) % 3;
+        if (this->Orient(v[j], v[(j + 1) % 3], p) < 0)
+        {
+          next = this->Find(v[(j + 1) % 3], v[j]);
+          if (next < 0)
+          {
+            return this->LocateByScan(p, o); // beyond the boundary: not ours to decide here
+          }
+        }
+      }
+      if (next < 0)
+      {
+        return this->Holds(t, p, o) ? t : this->LocateByScan(p, o);
+      }
+      t = next;
+    }
+    return this->LocateByScan(p, o);
   }
 
   /// Inserts interior point p (or aliases it to an existing point with equal coordinates).
   bool InsertPoint(int p)
   {
-    for (int t = 0; t < static_cast<int>(this->Tris.size()); ++t)
+    int o[3];
+    const int t = this->UseMap ? this->LocateByWalk(p, o) : this->LocateByScan(p, o);
+    if (t >= 0)
     {
-      if (!this->Alive[t])
-      {
-        continue;
-      }
       const std::array<int, 3> v = this->Tris[t];
-      int o[3];
-      bool outside = false;
-      for (int j = 0; j < 3; ++j)
-      {
-        o[j] = this->Orient(v[j], v[(j + 1) % 3], p);
-        outside = outside || o[j] < 0;
-      }
-      if (outside)
-      {
-        continue;
-      }
       const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
       if (zeros >= 2)
       {
@@ -266,6 +411,10 @@ public:
       this->Add(v[0], v[1], p);
       this->Add(v[1], v[2], p);
       this->Add(v[2], v[0], p);
+      if (this->Flip)
+      {
+        this->FlipTowardsDelaunay(p, { { v[0], v[1] }, { v[1], v[2] }, { v[2], v[0] } });
+      }
       return true;
     }
     return this->Fail("an interior point lies in no sub-triangle");
@@ -290,25 +439,15 @@ public:
         this->Paths[pi].push_back(b);
         return true;
       }
-      // A vertex exactly on the open piece: go through it.
-      int on = -1;
-      double onParameter = 0.0;
+      // Edges the open piece crosses, in order from a, found by walking the triangles it
+      // passes through (ordering by computed parameters could disagree with the topology);
+      // or the first vertex exactly on the open piece, which the piece then goes through.
       const Vec2 pa = this->P(a), pb = this->P(b);
-      for (int v = 0; v < static_cast<int>(this->Arr.Points.size()); ++v)
+      std::vector<Crossing> crossings;
+      int on = -1;
+      if (!this->WalkCrossings(a, b, crossings, on))
       {
-        if (v == a || v == b || this->Arr.Alias[v] != v || !this->Inserted(v))
-        {
-          continue;
-        }
-        if (this->Orient(a, b, v) == 0 && StrictlyBetween(pa, pb, this->P(v)))
-        {
-          const double s = ParameterAlong(pa, pb, this->P(v));
-          if (on < 0 || s < onParameter)
-          {
-            on = v;
-            onParameter = s;
-          }
-        }
+        return false;
       }
       if (on >= 0)
       {
@@ -318,13 +457,6 @@ public:
         }
         a = on;
         continue;
-      }
-      // Edges the open piece crosses, in order from a, found by walking the triangles it
-      // passes through (ordering by computed parameters could disagree with the topology).
-      std::vector<Crossing> crossings;
-      if (!this->WalkCrossings(a, b, crossings))
-      {
-        return false;
       }
       const Crossing* blocking = nullptr;
       for (const Crossing& c : crossings)
@@ -358,12 +490,10 @@ public:
         const int np = static_cast<int>(this->Arr.Points.size());
         this->Arr.Points.push_back({ pa + blocking->S * (pb - pa), -1, -1 });
         this->Arr.Alias.push_back(np);
-        this->IsInserted.push_back(0);
         if (!this->InsertPoint(np))
         {
           return false;
         }
-        this->IsInserted[np] = 1;
         const int q = this->Arr.Alias[np];
         if (q != x && q != y && this->Constrained.count(Undirected(x, y)) > 0 &&
           !this->RerouteConstraint(x, y, q))
@@ -421,36 +551,109 @@ public:
     return true;
   }
 
-  /// Edges crossed by the open segment (a, b), which must contain no vertex, in order from a;
-  /// X is the endpoint on the right of a -> b, Y the one on the left.
-  bool WalkCrossings(int a, int b, std::vector<Crossing>& crossings)
+  /// Index of vertex a in triangle t, or -1.
+  int CornerOf(int t, int a) const
   {
-    int x = -1, y = -1;
-    for (int t = 0; t < static_cast<int>(this->Tris.size()) && x < 0; ++t)
+    const std::array<int, 3>& v = this->Tris[t];
+    return v[0] == a ? 0 : (v[1] == a ? 1 : (v[2] == a ? 2 : -1));
+  }
+
+  /// Visits the alive triangles around vertex a (with a's index in each) until `visit` returns
+  /// true: by turning around a through the half-edge map when the triangulation keeps one,
+  /// else by scanning.
+  template <class Visit>
+  void AroundVertex(int a, Visit&& visit) const
+  {
+    int start = -1;
+    if (this->UseMap && a < static_cast<int>(this->VertexTriangle.size()))
     {
-      if (!this->Alive[t])
+      start = this->VertexTriangle[a];
+      if (start >= 0 && (!this->Alive[start] || this->CornerOf(start, a) < 0))
       {
-        continue;
+        start = -1;
       }
-      for (int j = 0; j < 3; ++j)
+    }
+    if (start < 0)
+    {
+      for (int t = 0; t < static_cast<int>(this->Tris.size()); ++t)
       {
-        if (this->Tris[t][j] != a)
+        const int j = this->Alive[t] ? this->CornerOf(t, a) : -1;
+        if (j >= 0 && visit(t, j))
         {
-          continue;
+          return;
         }
-        const int u = this->Tris[t][(j + 1) % 3], v = this->Tris[t][(j + 2) % 3];
-        if (this->Orient(a, u, b) > 0 && this->Orient(a, v, b) < 0)
+      }
+      return;
+    }
+    // Counter-clockwise from `start` (the triangle after (a, u, w) holds a -> w), then, if the
+    // fan is open (a on the boundary), clockwise from it (the one before holds u -> a).
+    const std::size_t limit = this->Tris.size();
+    int t = start;
+    for (std::size_t k = 0; k < limit; ++k)
+    {
+      const int j = this->CornerOf(t, a);
+      if (visit(t, j))
+      {
+        return;
+      }
+      t = this->Find(a, this->Tris[t][(j + 2) % 3]);
+      if (t < 0 || t == start)
+      {
+        break;
+      }
+    }
+    if (t == start)
+    {
+      return;
+    }
+    t = start;
+    for (std::size_t k = 0; k < limit; ++k)
+    {
+      const int j = this->CornerOf(t, a);
+      t = this->Find(this->Tris[t][(j + 1) % 3], a);
+      if (t < 0 || t == start || visit(t, this->CornerOf(t, a)))
+      {
+        return;
+      }
+    }
+  }
+
+  /// Edges crossed by the open segment (a, b), in order from a; X is the endpoint on the right
+  /// of a -> b, Y the one on the left. If the open segment passes through a vertex, `on` is the
+  /// first one from a (and the crossings before it are of no use).
+  bool WalkCrossings(int a, int b, std::vector<Crossing>& crossings, int& on)
+  {
+    const Vec2 pa = this->P(a), pb = this->P(b);
+    int x = -1, y = -1;
+    on = -1;
+    this->AroundVertex(a,
+      [&](int t, int j)
+      {
+        const int u = this->Tris[t][(j + 1) % 3], w = this->Tris[t][(j + 2) % 3];
+        const int ou = this->Orient(a, u, b), ow = this->Orient(a, w, b);
+        if (ou > 0 && ow < 0)
         {
           x = u;
-          y = v;
+          y = w;
         }
-      }
+        else if (ou == 0 && StrictlyBetween(pa, pb, this->P(u)))
+        {
+          on = u;
+        }
+        else if (ow == 0 && StrictlyBetween(pa, pb, this->P(w)))
+        {
+          on = w;
+        }
+        return x >= 0 || on >= 0;
+      });
+    if (on >= 0)
+    {
+      return true;
     }
     if (x < 0)
     {
       return this->Fail("a curve piece leaves its start point through no triangle");
     }
-    const Vec2 pa = this->P(a), pb = this->P(b);
     for (size_t guard = 0; guard <= this->Tris.size(); ++guard)
     {
       const double oa = Orient2d(this->P(x), this->P(y), pa);
@@ -476,9 +679,14 @@ public:
       {
         x = z;
       }
+      else if (StrictlyBetween(pa, pb, this->P(z)))
+      {
+        on = z;
+        return true;
+      }
       else
       {
-        return this->Fail("a vertex on a curve piece was missed");
+        return this->Fail("a curve piece passes a vertex beyond its end");
       }
     }
     return this->Fail("walking along a curve piece does not end");
@@ -515,21 +723,27 @@ public:
     return this->EarClip(leftPolygon) && this->EarClip(rightPolygon);
   }
 
-  bool Inserted(int v) const
-  {
-    return v < static_cast<int>(this->IsInserted.size()) && this->IsInserted[v];
-  }
-
   LocalArrangement& Arr;
   /// Small triangulations (the vast majority) find half-edges by scanning, which beats
   /// maintaining a hash map; large ones keep the map.
   bool UseMap = false;
+  /// Very large triangulations (thousands of points) also flip towards Delaunay after each
+  /// point (FlipTowardsDelaunay); below that the flips cost more than the walks they shorten.
+  bool Flip = false;
   std::vector<std::array<int, 3>>& Tris;
   std::vector<char>& Alive;
   std::unordered_map<EdgeKey, int> HalfEdges;
+  /// With the map: an alive triangle at each vertex, and the last triangle added (where the
+  /// walk to the next point starts).
+  std::vector<int> VertexTriangle;
+  int LastAdded = -1;
+  /// A square grid over the unit triangle's (u, v) coordinates: per cell, the last triangle
+  /// added whose centroid is in it, where the walk to a point of that cell starts.
+  std::vector<int> WalkStarts;
+  std::vector<std::pair<int, int>> FlipStack; ///< edges FlipTowardsDelaunay has yet to look at
+  int StartGridSize = 1;
   std::unordered_set<EdgeKey> Constrained;
   std::vector<std::vector<int>> Paths;
-  std::vector<char>& IsInserted;
   /// Distance (unit-triangle coordinates) within which a rounded crossing is taken to be an
   /// existing point: far above the rounding of crossings (~1e-16), far below any feature
   /// the curves can resolve.
@@ -606,7 +820,6 @@ bool RefineOnce(LocalArrangement& arr)
   tri.StepBudget = 32 * static_cast<size_t>(n) + 1024;
   tri.Tris.reserve(4 * n);
   tri.Alive.reserve(4 * n);
-  tri.IsInserted.assign(n, 0);
   bool hasInterior = false;
   for (int i = 0; i < n; ++i)
   {
@@ -627,10 +840,6 @@ bool RefineOnce(LocalArrangement& arr)
     {
       return false;
     }
-    for (int b : arr.Boundary)
-    {
-      tri.IsInserted[b] = 1;
-    }
     for (int i = 0; i < n; ++i)
     {
       if (arr.Points[i].Where < 0)
@@ -639,7 +848,6 @@ bool RefineOnce(LocalArrangement& arr)
         {
           return false;
         }
-        tri.IsInserted[i] = 1;
       }
     }
     tri.Paths.resize(arr.Chains.size());
