@@ -229,9 +229,9 @@ TEST(DegenerateDrawingsFilter, RandomLatticeDrawingsMatchExactAreas)
 // Crowded triangles (issue 28): dense lattice drawings, with the pattern cases above (repeated
 // points, spikes, runs shared with earlier polygons), on a square of two mesh triangles, so that
 // about a hundred pieces and hundreds of crossings, many of them through lattice points other
-// pieces pass, fall in one triangle. Every operation answers with the exact planar area. Kept
-// small: the refinement's cost grows faster than the square of a triangle's pieces (drawings of
-// 24 to 48 such polygons on a 24 lattice take about a second per update; issue 28).
+// pieces pass, fall in one triangle. Every operation answers with the exact planar area,
+// through the filters. Larger drawings (hundreds of pieces, thousands of crossings per
+// triangle) are checked in Core: CrowdedLatticeDrawings.
 TEST(DegenerateDrawingsFilter, CrowdedTrianglesMatchExactAreas)
 {
   std::mt19937 rng(28);

@@ -1,0 +1,96 @@
+// A crowded triangle (issue 28): random lattice drawings (two shapes, with repeated points,
+// spikes and runs shared between polygons) on a square of two mesh triangles, so that all the
+// pieces and crossings fall in one or two triangles. Arguments: the lattice size and the number
+// of polygons; one thread. Counters: the arrangement's stages (refinement is the one that
+// used to be quadratic in a triangle's points), the drawing's segments and the most refined
+// triangles any mesh triangle was cut into.
+#include "Arrangement/Arrangement.h"
+#include "Mesh/ProceduralMeshes.h"
+#include "Support/PlanarWinding.h"
+#include "Support/SyntheticCurves.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <random>
+
+using namespace boolsurf;
+using namespace boolsurf::testing;
+
+namespace
+{
+
+void BM_CrowdedTriangle(benchmark::State& state)
+{
+  const int lattice = static_cast<int>(state.range(0));
+  const int polygons = static_cast<int>(state.range(1));
+  MeshData square = MakeFlatSquare(1, lattice + 2.0, 0.0, 0);
+  for (Vec3& p : square.Positions)
+  {
+    p.x -= 1;
+    p.y -= 1;
+  }
+  const TriangleMesh mesh(square.Positions, square.Triangles);
+  std::mt19937 rng(static_cast<std::uint32_t>(lattice * 1000 + polygons));
+  std::vector<LatticePolygon> drawing;
+  for (int p = 0; p < polygons; ++p)
+  {
+    drawing.push_back({ p % 2, LatticePolygonPoints(rng, lattice, drawing) });
+  }
+  FlatPolygonTracer tracer(mesh);
+  std::vector<TracedCurve> curves;
+  std::size_t segments = 0;
+  for (std::size_t i = 0; i < drawing.size(); ++i)
+  {
+    std::vector<Vec2> points;
+    for (const auto& q : drawing[i].Points)
+    {
+      points.push_back({ double(q[0]), double(q[1]) });
+    }
+    TracedCurve c;
+    if (tracer.Trace(points, true, drawing[i].Shape, static_cast<int>(i), c))
+    {
+      segments += points.size();
+      curves.push_back(std::move(c));
+    }
+  }
+  ArrangementOptions options;
+  options.Threads = 1;
+  Arrangement arr;
+  std::string error;
+  double refine = 0, intersect = 0, flood = 0, total = 0;
+  for (auto _ : state)
+  {
+    if (!ComputeArrangement(mesh, curves, options, arr, error))
+    {
+      state.SkipWithError(error.c_str());
+      return;
+    }
+    refine += arr.Times.Refinement;
+    intersect += arr.Times.Intersections;
+    flood += arr.Times.FloodFill;
+    total += arr.Times.Total;
+  }
+  int most = 0;
+  for (std::size_t t = 0; t + 1 < arr.TriangleOffset.size(); ++t)
+  {
+    most = std::max(most, arr.TriangleOffset[t + 1] - arr.TriangleOffset[t]);
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["segments"] = static_cast<double>(segments);
+  state.counters["refined_per_triangle"] = most;
+  state.counters["points"] = static_cast<double>(arr.Positions.size());
+  state.counters["intersect_ms"] = intersect / n;
+  state.counters["refine_ms"] = refine / n;
+  state.counters["flood_ms"] = flood / n;
+  state.counters["total_ms"] = total / n;
+}
+
+} // namespace
+
+BENCHMARK(BM_CrowdedTriangle)
+  ->Args({ 16, 16 })
+  ->Args({ 24, 48 })
+  ->Args({ 48, 96 })
+  ->Args({ 96, 192 })
+  ->Unit(benchmark::kMillisecond);
