@@ -25,6 +25,8 @@ struct vtkBoolSurfLabeling::Internals
   vtkNew<vtkPolyData> Generators;
   vtkWeakPointer<vtkAbstractArray> GeneratorKey;
   vtkMTimeType GeneratorTime = 0;
+  bool GeneratorsHadKey = false;
+  bool GeneratorsDrawn = false;
 };
 
 //------------------------------------------------------------------------------
@@ -85,13 +87,19 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   // surface: drawn again only when they are other arrays.
   vtkAbstractArray* key = input->GetFieldData()->GetAbstractArray("HomologyGeneratorPoints");
   Internals& in = *this->Internal;
-  if (!key || key != in.GeneratorKey.GetPointer() || key->GetMTime() != in.GeneratorTime)
+  // Without generator arrays (a genus-0 surface) the empty drawing is kept as well.
+  const bool unchanged = in.GeneratorsDrawn &&
+    (key ? key == in.GeneratorKey.GetPointer() && key->GetMTime() == in.GeneratorTime
+         : !in.GeneratorsHadKey);
+  if (!unchanged)
   {
     in.Generators->Initialize();
     boolsurf::WriteGeneratorPolylines(
       boolsurf::ReadHomologyFields(input->GetFieldData()), in.Generators);
     in.GeneratorKey = key;
     in.GeneratorTime = key ? key->GetMTime() : 0;
+    in.GeneratorsHadKey = key != nullptr;
+    in.GeneratorsDrawn = true;
   }
   generators->ShallowCopy(in.Generators);
   return true;

@@ -164,3 +164,37 @@ TEST(HomologyFilters, SphereHasNoGeneratorsAndNoExcess)
   EXPECT_EQ(p.Label->GetOutput(1)->GetNumberOfLines(), 0);
   EXPECT_TRUE(p.Warnings.empty()) << p.Warnings;
 }
+
+// Port 1 is drawn again only when the generators change: it follows the surface from a torus
+// to a sphere (none) and back, and stays right across edits in between.
+TEST(HomologyFilters, GeneratorsFollowTheSurface)
+{
+  const double R = 3.0, r = 1.0;
+  auto torus = testutils::ToPolyData(boolsurf::MakeTorus(R, r, 48, 24));
+  auto torusCurves = testutils::ToCurves({ Meridian(R, r, 0.2, 0, false) });
+  auto sphere = testutils::ToPolyData(boolsurf::MakeIcosphere(3));
+  ControlPolygon loop;
+  for (int k = 0; k < 8; ++k)
+  {
+    const double a = 2 * M_PI * k / 8, z = 0.37, rho = std::sqrt(1 - z * z);
+    loop.Points.push_back({ rho * std::cos(a), rho * std::sin(a), z });
+  }
+  auto sphereCurves = testutils::ToCurves({ loop });
+  Pipeline p(torus, torusCurves);
+  auto use = [&](vtkPolyData* surface, vtkPolyData* curves)
+  {
+    p.Trace->SetInputData(0, surface);
+    p.Trace->SetInputData(1, curves);
+    p.Arrange->SetInputData(0, surface);
+    p.Label->Update();
+    return p.Label->GetOutput(1)->GetNumberOfLines();
+  };
+  const vtkIdType onTorus = p.Label->GetOutput(1)->GetNumberOfLines();
+  EXPECT_EQ(onTorus, 4); // two generators and their shortened loops
+  EXPECT_EQ(use(sphere, sphereCurves), 0);
+  sphereCurves->Modified(); // an edit on the sphere
+  EXPECT_EQ(use(sphere, sphereCurves), 0);
+  EXPECT_EQ(use(torus, torusCurves), onTorus);
+  torusCurves->Modified();
+  EXPECT_EQ(use(torus, torusCurves), onTorus);
+}
