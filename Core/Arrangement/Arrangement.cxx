@@ -381,20 +381,24 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   view.EdgeOfEdgePoint = &edgeOfEdgePoint;
   view.BlockedMeshSubEdges = &blockedMeshSubEdges;
   view.MeshEdgeHasBlocked = &meshEdgeHasBlocked;
-  std::unordered_map<int, std::unordered_map<std::uint64_t, int>> crowdedHalfEdges;
+  std::unordered_map<int, EdgeIndex> crowdedHalfEdges;
   for (int s = 0; s < slots; ++s)
   {
     const int t = map.Triangles[s];
     if (offset[t + 1] - offset[t] > RefinedSurfaceView::CrowdedSize)
     {
-      std::unordered_map<std::uint64_t, int>& edges = crowdedHalfEdges[t];
-      edges.reserve(3 * static_cast<std::size_t>(offset[t + 1] - offset[t]));
+      EdgeIndex& edges = crowdedHalfEdges[t];
+      edges.Reset(3 * static_cast<std::size_t>(offset[t + 1] - offset[t]));
       for (int r = offset[t]; r < offset[t + 1]; ++r)
       {
         const std::array<int, 3>& v = out.Triangles[r];
         for (int j = 0; j < 3; ++j)
         {
-          edges.emplace(DirectedPointPair(v[j], v[(j + 1) % 3]), r);
+          const std::uint64_t key = DirectedPointPair(v[j], v[(j + 1) % 3]);
+          if (!edges.Contains(key)) // the first one, as a scan would find
+          {
+            edges.Set(key, r);
+          }
         }
       }
     }

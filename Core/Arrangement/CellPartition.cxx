@@ -55,8 +55,7 @@ int RefinedSurfaceView::FindDirected(int t, int a, int b) const
     const auto crowded = this->CrowdedHalfEdges->find(t);
     if (crowded != this->CrowdedHalfEdges->end())
     {
-      const auto edge = crowded->second.find(DirectedPointPair(a, b));
-      return edge == crowded->second.end() ? -1 : edge->second;
+      return crowded->second.Find(DirectedPointPair(a, b));
     }
   }
   for (int r = (*this->Offset)[t]; r < (*this->Offset)[t + 1]; ++r)

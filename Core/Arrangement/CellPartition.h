@@ -18,6 +18,7 @@
 #ifndef boolsurf_CellPartition_h
 #define boolsurf_CellPartition_h
 
+#include "Arrangement/EdgeIndex.h"
 #include "Geodesic/TracedCurve.h"
 #include "Mesh/SurfacePoint.h"
 
@@ -74,7 +75,7 @@ struct RefinedSurfaceView
   /// Per crowded source triangle (more than CrowdedSize refined triangles, where scanning them
   /// for every neighbour would make the flood fill quadratic in their number): its refined
   /// triangles' directed edges (DirectedPointPair) -> refined triangle. Null when none is.
-  const std::unordered_map<int, std::unordered_map<std::uint64_t, int>>* CrowdedHalfEdges = nullptr;
+  const std::unordered_map<int, EdgeIndex>* CrowdedHalfEdges = nullptr;
   static constexpr int CrowdedSize = 64;
 
   /// Refined triangle among those of source triangle t holding the directed edge a -> b.

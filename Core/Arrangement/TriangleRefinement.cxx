@@ -1,5 +1,6 @@
 #include "Arrangement/TriangleRefinement.h"
 
+#include "Arrangement/EdgeIndex.h"
 #include "Arrangement/PieceSplitting.h"
 #include "Arrangement/Predicates.h"
 
@@ -84,6 +85,8 @@ public:
     this->Alive.clear();
     if (this->UseMap)
     {
+      // Crossings add points: room for a few times the points' half-edges (it grows if not).
+      this->HalfEdges.Reset(4 * 6 * arrangement.Points.size());
       // About two points per cell: a walk from the cell's last triangle is a few steps long.
       this->StartGridSize = std::max(
         1, static_cast<int>(std::sqrt(0.5 * static_cast<double>(arrangement.Points.size()))));
@@ -102,9 +105,9 @@ public:
     this->Alive.push_back(1);
     if (this->UseMap)
     {
-      this->HalfEdges[Directed(a, b)] = t;
-      this->HalfEdges[Directed(b, c)] = t;
-      this->HalfEdges[Directed(c, a)] = t;
+      this->HalfEdges.Set(Directed(a, b), t);
+      this->HalfEdges.Set(Directed(b, c), t);
+      this->HalfEdges.Set(Directed(c, a), t);
       const int most = std::max(a, std::max(b, c));
       if (most >= static_cast<int>(this->VertexTriangle.size()))
       {
@@ -132,7 +135,7 @@ public:
     {
       for (int j = 0; j < 3; ++j)
       {
-        this->HalfEdges.erase(Directed(v[j], v[(j + 1) % 3]));
+        this->HalfEdges.Erase(Directed(v[j], v[(j + 1) % 3]));
       }
     }
     this->Alive[t] = 0;
@@ -153,8 +156,7 @@ public:
       }
       return -1;
     }
-    auto it = this->HalfEdges.find(Directed(a, b));
-    return it == this->HalfEdges.end() ? -1 : it->second;
+    return this->HalfEdges.Find(Directed(a, b));
   }
 
   bool Fail(const std::string& why)
@@ -732,7 +734,7 @@ public:
   bool Flip = false;
   std::vector<std::array<int, 3>>& Tris;
   std::vector<char>& Alive;
-  std::unordered_map<EdgeKey, int> HalfEdges;
+  EdgeIndex HalfEdges;
   /// With the map: an alive triangle at each vertex, and the last triangle added (where the
   /// walk to the next point starts).
   std::vector<int> VertexTriangle;
