@@ -2,6 +2,7 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
+#include "Mesh/ClosestTriangleGrid.h"
 #include "Svg/SvgSurfaceMap.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
@@ -9,7 +10,6 @@
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkGenericCell.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -20,7 +20,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStaticCellLocator.h"
 #include "vtkStringArray.h"
 
 #include <algorithm>
@@ -87,20 +86,16 @@ bool vtkBoolSurfSVGMapper::Execute(const std::vector<vtkPolyData*>& inputs,
   }
   else
   {
-    double closest[3], dist2;
-    vtkIdType cell = -1;
-    int sub;
-    vtkNew<vtkGenericCell> scratch;
-    this->GetSurfaceCache().GetLocator()->FindClosestPoint(
-      this->Center, closest, scratch, cell, sub, dist2);
-    if (cell < 0)
+    const boolsurf::ClosestTriangleGrid::Hit hit =
+      this->GetSurfaceCache().GetClosestTriangles().FindClosest(
+        { this->Center[0], this->Center[1], this->Center[2] });
+    if (hit.Triangle < 0)
     {
       error = "no surface point near Center";
       return false;
     }
-    const int t = static_cast<int>(cell);
-    options.Center =
-      boolsurf::PointInTriangle(mesh, t, boolsurf::Vec3{ closest[0], closest[1], closest[2] });
+    const double dist2 = hit.Distance2;
+    options.Center = boolsurf::PointInTriangle(mesh, hit.Triangle, hit.Point);
     // A center off the surface is projected, but one far from it is more likely a mistake (a
     // point in other units, another dataset's coordinates) than a choice: say so. The middle
     // of the bounding box, ParaView's default, is a deliberate "nearest to the middle".
@@ -119,7 +114,8 @@ bool vtkBoolSurfSVGMapper::Execute(const std::vector<vtkPolyData*>& inputs,
               << 100 * distance / diagonal << std::defaultfloat << std::setprecision(6)
               << "% of its bounding-box diagonal): the drawing is centered at the nearest "
                  "surface point ("
-              << closest[0] << ", " << closest[1] << ", " << closest[2] << "), triangle " << t;
+              << hit.Point.x << ", " << hit.Point.y << ", " << hit.Point.z << "), triangle "
+              << hit.Triangle;
       warnings.push_back(message.str());
     }
   }

@@ -10,14 +10,12 @@
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
-#include <vtkGenericCell.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
-#include <vtkStaticCellLocator.h>
 
 #include <cmath>
 #include <cstdio>
@@ -132,7 +130,7 @@ vtkSmartPointer<vtkPolyData> ControlCurvesOfTraced(vtkPolyData* curves, const Tr
 
 //------------------------------------------------------------------------------
 void ReadControlCurves(vtkPolyData* curves,
-  const std::function<vtkStaticCellLocator*()>& locator,
+  const std::function<const ClosestTriangleGrid&()>& closestTriangles,
   const TriangleMesh& mesh,
   const ControlCurveOptions& options,
   std::vector<ControlCurve>& out,
@@ -193,7 +191,6 @@ void ReadControlCurves(vtkPolyData* curves,
   {
     return;
   }
-  vtkNew<vtkGenericCell> cell;
   ForEachCurveCell(curves,
     [&](vtkIdType cellId, vtkIdType n, const vtkIdType* ids, bool polygon)
     {
@@ -279,7 +276,7 @@ void ReadControlCurves(vtkPolyData* curves,
         }
         else
         {
-          double x[3], closest[3], dist2 = 0;
+          double x[3];
           curves->GetPoint(pid, x);
           if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
           {
@@ -287,9 +284,9 @@ void ReadControlCurves(vtkPolyData* curves,
             ok = false;
             break;
           }
-          vtkIdType triangle = -1;
-          int subId = 0;
-          locator()->FindClosestPoint(x, closest, cell, triangle, subId, dist2);
+          const ClosestTriangleGrid::Hit hit = closestTriangles().FindClosest({ x[0], x[1], x[2] });
+          const int triangle = hit.Triangle;
+          const double dist2 = hit.Distance2;
           if (triangle < 0)
           {
             problems.push_back(
@@ -305,8 +302,7 @@ void ReadControlCurves(vtkPolyData* curves,
             ok = false;
             break;
           }
-          sp = PointInTriangle(
-            mesh, static_cast<int>(triangle), { closest[0], closest[1], closest[2] });
+          sp = PointInTriangle(mesh, triangle, hit.Point);
         }
         curve.Points.push_back(sp);
         curve.PointIds.push_back(pid);

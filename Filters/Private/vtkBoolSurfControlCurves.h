@@ -6,6 +6,7 @@
 #define vtkBoolSurfControlCurves_h
 
 #include "Geodesic/CurveTracer.h" // for CurveType
+#include "Mesh/ClosestTriangleGrid.h"
 #include "Mesh/SurfacePoint.h"
 
 #include <functional>
@@ -13,7 +14,6 @@
 #include <vector>
 
 class vtkPolyData;
-class vtkStaticCellLocator;
 
 namespace boolsurf
 {
@@ -39,11 +39,11 @@ struct ControlCurveOptions
 
 /// Reads every line and polygon cell of `curves` (vertex cells and strips are ignored with a
 /// note in `notes`). Each problem met (named by curve id and point id) is appended to
-/// `problems`; the curve it concerns is left out of `out`. `locator` gives a closest-cell
-/// locator on the triangles of `mesh` (same ids); it is asked for only when a control point
-/// must be projected, so curves given exactly never build one.
+/// `problems`; the curve it concerns is left out of `out`. `closest` gives the closest-point
+/// grid of `mesh`; it is asked for only when a control point must be projected, so curves
+/// given exactly never build one.
 void ReadControlCurves(vtkPolyData* curves,
-  const std::function<vtkStaticCellLocator*()>& locator,
+  const std::function<const ClosestTriangleGrid&()>& closest,
   const TriangleMesh& mesh,
   const ControlCurveOptions& options,
   std::vector<ControlCurve>& out,

@@ -4,6 +4,7 @@
 #include "Homology/HomologyBasis.h"
 
 #include "Geodesic/CurveTracer.h"
+#include "Mesh/ClosestTriangleGrid.h"
 #include "Offset/OffsetRegionOfCells.h"
 
 #include <vtkCellArray.h>
@@ -113,6 +114,7 @@ const vtkSurfaceInput& vtkSurfaceCache::Get(vtkPolyData* input,
   {
     // What was built on the old surface goes first: the tracer refers to its mesh.
     this->Locator = nullptr;
+    this->Closest.reset();
     this->Tracer.reset();
     this->Offset.reset();
     this->Surface = ConvertedSurface(input, options);
@@ -152,6 +154,16 @@ vtkStaticCellLocator* vtkSurfaceCache::GetLocator()
     this->Locator->BuildLocator();
   }
   return this->Locator;
+}
+
+//------------------------------------------------------------------------------
+const ClosestTriangleGrid& vtkSurfaceCache::GetClosestTriangles()
+{
+  if (!this->Closest)
+  {
+    this->Closest = std::make_unique<ClosestTriangleGrid>(*this->Surface->Mesh);
+  }
+  return *this->Closest;
 }
 
 //------------------------------------------------------------------------------

@@ -23,6 +23,7 @@ class vtkStaticCellLocator;
 namespace boolsurf
 {
 
+class ClosestTriangleGrid;
 class CurveTracer;
 class HomologyBasis;
 struct OffsetWorkspace;
@@ -48,6 +49,10 @@ public:
 
   /// Closest-cell locator on the triangles of the last Get() (built on first use).
   vtkStaticCellLocator* GetLocator();
+
+  /// Closest point of the mesh of the last Get() to a point of space (built on first use):
+  /// projecting control points and centers given by coordinates, at every edit.
+  const ClosestTriangleGrid& GetClosestTriangles();
 
   /// Curve tracer on the mesh of the last Get() (built on first use; its geodesic search
   /// state is reused by every path).
@@ -77,6 +82,7 @@ private:
   /// Shared with the other caches of the same surface (see the .cxx); never null.
   std::shared_ptr<const vtkSurfaceInput> Surface;
   vtkSmartPointer<vtkStaticCellLocator> Locator;
+  std::unique_ptr<ClosestTriangleGrid> Closest;
   std::unique_ptr<CurveTracer> Tracer;
   std::unique_ptr<OffsetWorkspace> Offset;
 };

@@ -284,7 +284,7 @@ void ReadSurfaceControlCurves(vtkSurfaceCache& cache,
   options.MaximumDistance = projectionTolerance * surface.Triangles->GetLength();
   ReadControlCurves(
     controlCurves,
-    [&cache] { return cache.GetLocator(); },
+    [&cache]() -> const ClosestTriangleGrid& { return cache.GetClosestTriangles(); },
     *surface.Mesh,
     options,
     controls,
