@@ -169,7 +169,7 @@ void TraceLeg(benchmark::State& state, const std::string& name, bool far)
 
 BENCHMARK_CAPTURE(TraceLeg, igea_1m_short, std::string("igea_1m.ply"), false)
   ->UseManualTime()
-  ->Iterations(std::getenv("XITER") ? std::atoi(std::getenv("XITER")) : 399)
+  ->Iterations(399)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(TraceLeg, igea_1m_far, std::string("igea_1m.ply"), true)
   ->UseManualTime()

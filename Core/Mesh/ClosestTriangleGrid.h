@@ -3,8 +3,9 @@
 // of cells, each listing the triangles whose bounding box meets it, searched in growing shells
 // of cells around the query until no unseen cell can hold anything closer; the distance to a
 // triangle is computed exactly (the closest point on the triangle, by its Voronoi regions).
-// On 1M triangles: built in about a tenth of a second, a query in microseconds (VTK's
-// vtkStaticCellLocator took a second to build and ~80 us per query through generic cells).
+// On 1M-triangle scans: built in 0.2-0.5 s, a query for a point near the surface in ~5 us
+// (VTK's vtkStaticCellLocator, used before: ~1 s to build, ~80 us per query through generic
+// cells). Benchmarks/BenchmarkClosestTriangle.cxx.
 #ifndef boolsurf_ClosestTriangleGrid_h
 #define boolsurf_ClosestTriangleGrid_h
 
