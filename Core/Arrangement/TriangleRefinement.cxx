@@ -43,12 +43,7 @@ bool InCircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d)
   return det > 1e-12 * permanent;
 }
 
-// A triangulation of a triangle's points. Small ones (the vast majority: a few dozen points)
-// are searched by linear scans, faster than maintaining any structure at these sizes. Large
-// ones (a triangle crowded with curve pieces: thousands of points and crossings) keep a map of
-// half-edges and a triangle per vertex, locate points by walking and find the vertices on a
-// piece along the walk, so that the cost per point and per piece does not grow with the
-// triangle's size.
+/// Where a piece crosses an edge of the triangulation.
 struct Crossing
 {
   double S; ///< parameter along the piece
@@ -70,6 +65,12 @@ TriangulationBuffers& ThreadTriangulationBuffers()
   return buffers;
 }
 
+// A triangulation of a triangle's points. Small ones (the vast majority: a few dozen points)
+// are searched by linear scans, faster than maintaining any structure at these sizes. Large
+// ones (a triangle crowded with curve pieces: thousands of points and crossings) keep a map of
+// half-edges and a triangle per vertex, locate points by walking and find the vertices on a
+// piece along the walk, so that the cost per point and per piece does not grow with the
+// triangle's size.
 class LocalTriangulation
 {
 public:
@@ -269,10 +270,9 @@ public:
   /// After inserting p: flips the edges opposite p (directed as in p's triangles) while the
   /// vertex across one lies inside the circumcircle of p's triangle, as Lawson's algorithm
   /// does. Incremental insertion alone leaves long slivers, which make walks long and cavities
-  /// large; near-Delaunay triangles keep both local. Constrained
-  /// and boundary edges are never flipped, a flip needs a strictly convex quadrilateral (exact
-  /// orientations), and their number is bounded, so ties on co-circular lattice points cannot
-  /// loop.
+  /// large; near-Delaunay triangles keep both local. Constrained and boundary edges are never
+  /// flipped, a flip needs a strictly convex quadrilateral (exact orientations), and their
+  /// number is bounded, so ties on co-circular lattice points cannot loop.
   void FlipTowardsDelaunay(int p, std::initializer_list<std::pair<int, int>> opposite)
   {
     std::vector<std::pair<int, int>>& stack = this->FlipStack;
@@ -335,10 +335,11 @@ public:
     return -1;
   }
 
-  /// An alive triangle holding p (closed), by walking from the last triangle added towards p:
-  /// across an edge that has p strictly on its other side, the edge tried first varying from
-  /// step to step (a visibility walk can cycle in a non-Delaunay triangulation; this one is
-  /// bounded, and the scan takes over when it does not arrive).
+  /// An alive triangle holding p (closed), by walking towards p from the last triangle made in
+  /// p's cell of the walk-start grid (else the last one made): across an edge that has p
+  /// strictly on its other side, the edge tried first varying from step to step (a visibility
+  /// walk can cycle in a non-Delaunay triangulation; this one is bounded, and the scan takes
+  /// over when it does not arrive).
   int LocateByWalk(int p, int o[3]) const
   {
     int t = this->WalkStarts[this->StartCell(this->P(p))];
