@@ -381,6 +381,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   view.EdgeOfEdgePoint = &edgeOfEdgePoint;
   view.BlockedMeshSubEdges = &blockedMeshSubEdges;
   view.MeshEdgeHasBlocked = &meshEdgeHasBlocked;
+  // Crowded mesh triangles (cut into hundreds or thousands of refined triangles): an index of
+  // their half-edges, so the flood fill's neighbour lookups do not scan them.
   std::unordered_map<int, EdgeIndex> crowdedHalfEdges;
   for (int s = 0; s < slots; ++s)
   {
