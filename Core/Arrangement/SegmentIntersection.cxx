@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace boolsurf
 {
@@ -44,6 +46,7 @@ struct Scratch
 {
   std::vector<int> EndA, EndB, Order;
   std::vector<std::vector<Hit>> Hits;
+  std::map<std::pair<double, double>, int> InteriorIds;
 };
 
 /// Empties `a` for the next triangle of its slot, keeping its buffers' capacity (the slot's
@@ -182,28 +185,45 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
     return -1;
   };
   const int firstInterior = static_cast<int>(out.Points.size());
+  const int first = map.SegmentOffset[slot];
+  const int count = map.SegmentOffset[slot + 1] - first;
+  // Per-call scratch, kept per thread: a few thousand crossed triangles per edit each
+  // allocated these anew.
+  thread_local Scratch scratch;
+  // Curve points inside the triangle, found again by their exact coordinates: by scanning the
+  // few of an ordinary triangle, through a map in a crowded one (thousands of curve points).
+  const bool mapInterior = count > 64;
+  std::map<std::pair<double, double>, int>& interiorIds = scratch.InteriorIds;
+  interiorIds.clear();
   auto localOf = [&](const CanonicalPoint& p, Vec2 p2) -> int
   {
     if (p.Location != PointLocation::Face)
     {
       return localOfBoundary(BoundaryPointId(mesh, map, p));
     }
-    for (int i = firstInterior; i < static_cast<int>(out.Points.size()); ++i)
+    const int next = static_cast<int>(out.Points.size());
+    if (mapInterior)
     {
-      if (out.Points[i].P.x == p2.x && out.Points[i].P.y == p2.y)
+      const auto found = interiorIds.emplace(std::make_pair(p2.x, p2.y), next);
+      if (!found.second)
       {
-        return i;
+        return found.first->second;
+      }
+    }
+    else
+    {
+      for (int i = firstInterior; i < next; ++i)
+      {
+        if (out.Points[i].P.x == p2.x && out.Points[i].P.y == p2.y)
+        {
+          return i;
+        }
       }
     }
     out.Points.push_back({ p2, -1, -1 });
-    return static_cast<int>(out.Points.size()) - 1;
+    return next;
   };
 
-  const int first = map.SegmentOffset[slot];
-  const int count = map.SegmentOffset[slot + 1] - first;
-  // Per-call scratch, kept per thread: a few thousand crossed triangles per edit each
-  // allocated these anew.
-  thread_local Scratch scratch;
   std::vector<int>& endA = scratch.EndA;
   std::vector<int>& endB = scratch.EndB;
   endA.assign(count, 0);
