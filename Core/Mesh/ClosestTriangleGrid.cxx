@@ -9,18 +9,6 @@ namespace boolsurf
 namespace
 {
 
-Vec3 ClosestPointOnSegment(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-  const Vec3 ab = b - a;
-  const double length2 = Dot(ab, ab);
-  if (!(length2 > 0.0))
-  {
-    return a;
-  }
-  const double t = std::min(1.0, std::max(0.0, Dot(p - a, ab) / length2));
-  return a + t * ab;
-}
-
 double Distance2(const Vec3& a, const Vec3& b)
 {
   const Vec3 d = a - b;
@@ -69,8 +57,8 @@ Vec3 ClosestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
   if (!(sum > 0.0) || !std::isfinite(sum))
   {
     // A degenerate (flat) triangle: the closest of its three sides.
-    Vec3 best = ClosestPointOnSegment(p, a, b);
-    for (const Vec3& q : { ClosestPointOnSegment(p, b, c), ClosestPointOnSegment(p, c, a) })
+    Vec3 best = ClosestPointOnSegment(a, b, p);
+    for (const Vec3& q : { ClosestPointOnSegment(b, c, p), ClosestPointOnSegment(c, a, p) })
     {
       if (Distance2(p, q) < Distance2(p, best))
       {
@@ -229,7 +217,7 @@ ClosestTriangleGrid::Hit ClosestTriangleGrid::FindClosest(const Vec3& p) const
         {
           if (c[0] - r >= 0)
             test(this->CellIndex(c[0] - r, j, k));
-          if (r > 0 && c[0] + r < this->Dims[0])
+          if (c[0] + r < this->Dims[0]) // r > 0 here: at r = 0 every row is a face row
             test(this->CellIndex(c[0] + r, j, k));
         }
       }

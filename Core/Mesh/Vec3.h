@@ -76,14 +76,20 @@ inline double Distance(Vec3 a, Vec3 b)
   return Length(a - b);
 }
 
-/// Distance from p to the segment [a, b] (a point when a == b).
-inline double SegmentPointDistance(const Vec3& a, const Vec3& b, const Vec3& p)
+/// The point of segment [a, b] closest to p (a when a == b).
+inline Vec3 ClosestPointOnSegment(const Vec3& a, const Vec3& b, const Vec3& p)
 {
   const Vec3 ab = b - a;
   const double l2 = Dot(ab, ab);
   double t = l2 > 0.0 ? Dot(p - a, ab) / l2 : 0.0;
   t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
-  return Distance(a + t * ab, p);
+  return a + t * ab;
+}
+
+/// Distance from p to the segment [a, b] (a point when a == b).
+inline double SegmentPointDistance(const Vec3& a, const Vec3& b, const Vec3& p)
+{
+  return Distance(ClosestPointOnSegment(a, b, p), p);
 }
 
 inline bool IsFinite(Vec3 a)
