@@ -57,6 +57,7 @@ struct TriangulationBuffers
   std::vector<std::array<int, 3>> Tris;
   std::vector<char> Alive;
   std::vector<EdgeKey> ClosedEdges;
+  EdgeIndex HalfEdges; ///< large triangulations only
 };
 
 TriangulationBuffers& ThreadTriangulationBuffers()
@@ -81,13 +82,15 @@ public:
     , Flip(arrangement.Points.size() > 1024)
     , Tris(buffers.Tris)
     , Alive(buffers.Alive)
+    , HalfEdges(buffers.HalfEdges)
   {
     this->Tris.clear();
     this->Alive.clear();
     if (this->UseMap)
     {
-      // Crossings add points: room for a few times the points' half-edges (it grows if not).
-      this->HalfEdges.Reset(4 * 6 * arrangement.Points.size());
+      // Room for the half-edges of the points' triangulation (about 6 per point); crossings
+      // found later add points, and the map grows for them.
+      this->HalfEdges.Reset(6 * arrangement.Points.size());
       // About two points per cell: a walk from the cell's last triangle is a few steps long.
       this->StartGridSize = std::max(
         1, static_cast<int>(std::sqrt(0.5 * static_cast<double>(arrangement.Points.size()))));
@@ -735,7 +738,7 @@ public:
   bool Flip = false;
   std::vector<std::array<int, 3>>& Tris;
   std::vector<char>& Alive;
-  EdgeIndex HalfEdges;
+  EdgeIndex& HalfEdges;
   /// With the map: an alive triangle at each vertex, and the last triangle added (where the
   /// walk to the next point starts).
   std::vector<int> VertexTriangle;
