@@ -2,8 +2,8 @@
 // centers, at every edit): the closest-point grid's build, once per surface, and a query for
 // points near the surface. Run: BoolSurfBenchmarks --benchmark_filter=ClosestTriangle
 #include "Mesh/ClosestTriangleGrid.h"
-#include "Mesh/PlyReader.h"
 #include "Mesh/TriangleMesh.h"
+#include "SharedMeshes.h"
 
 #include <benchmark/benchmark.h>
 
@@ -16,29 +16,31 @@
 namespace
 {
 
-const boolsurf::TriangleMesh* Load(const std::string& name, std::string& error)
+/// The shared mesh `name` with its adjacency, built once per process; null after reporting the
+/// reason to `state`.
+const boolsurf::TriangleMesh* MeshOrSkip(benchmark::State& state, const std::string& name)
 {
   static std::map<std::string, std::unique_ptr<boolsurf::TriangleMesh>> cache;
-  auto& mesh = cache[name];
+  std::unique_ptr<boolsurf::TriangleMesh>& mesh = cache[name];
   if (!mesh)
   {
-    boolsurf::MeshData data;
-    if (!boolsurf::ReadPly(std::string(BOOLSURF_SHARED_DATA_DIR) + "/meshes/" + name, data, error))
+    std::string error;
+    const boolsurf::MeshData* data = benchutil::LoadSharedMesh(name, error);
+    if (!data)
     {
+      state.SkipWithError(error.c_str());
       return nullptr;
     }
-    mesh = std::make_unique<boolsurf::TriangleMesh>(data.Positions, data.Triangles);
+    mesh = std::make_unique<boolsurf::TriangleMesh>(data->Positions, data->Triangles);
   }
   return mesh.get();
 }
 
 void BM_ClosestTriangleBuild(benchmark::State& state, const std::string& name)
 {
-  std::string error;
-  const boolsurf::TriangleMesh* mesh = Load(name, error);
+  const boolsurf::TriangleMesh* mesh = MeshOrSkip(state, name);
   if (!mesh)
   {
-    state.SkipWithError(error.c_str());
     return;
   }
   for (auto _ : state)
@@ -53,11 +55,9 @@ void BM_ClosestTriangleBuild(benchmark::State& state, const std::string& name)
 // or one read back from a file, lies on the surface up to rounding).
 void BM_ClosestTriangleQuery(benchmark::State& state, const std::string& name)
 {
-  std::string error;
-  const boolsurf::TriangleMesh* mesh = Load(name, error);
+  const boolsurf::TriangleMesh* mesh = MeshOrSkip(state, name);
   if (!mesh)
   {
-    state.SkipWithError(error.c_str());
     return;
   }
   const boolsurf::ClosestTriangleGrid grid(*mesh);

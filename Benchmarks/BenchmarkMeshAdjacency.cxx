@@ -1,32 +1,16 @@
 // Adjacency (the dual graph of adjacencies) and topology build times on the large meshes of
 // the shared collection. Run: BoolSurfBenchmarks --benchmark_filter=Adjacency
 #include "Mesh/MeshTopology.h"
-#include "Mesh/PlyReader.h"
 #include "Mesh/TriangleMesh.h"
+#include "SharedMeshes.h"
 
 #include <benchmark/benchmark.h>
 
-#include <map>
 #include <string>
 
 namespace
 {
-// Meshes are read once per process: the benchmark measures the build, not the file.
-const boolsurf::MeshData* LoadSharedMesh(const std::string& name, std::string& error)
-{
-  static std::map<std::string, boolsurf::MeshData> cache;
-  auto it = cache.find(name);
-  if (it == cache.end())
-  {
-    boolsurf::MeshData data;
-    if (!boolsurf::ReadPly(std::string(BOOLSURF_SHARED_DATA_DIR) + "/meshes/" + name, data, error))
-    {
-      return nullptr;
-    }
-    it = cache.emplace(name, std::move(data)).first;
-  }
-  return &it->second;
-}
+using benchutil::LoadSharedMesh;
 
 // The adjacency alone, or followed by the topology (components, fans, loops, genus).
 void BuildSharedMesh(benchmark::State& state, const std::string& name, bool withTopology)
