@@ -291,3 +291,23 @@ TEST(BadCurveInputs, ControlPointsWithinRoundingOfAnEdgeBoundTheirPolygon)
   }
   EXPECT_GT(checked, 20);
 }
+
+// Control points given by coordinates are projected onto the surface: one far from it (beyond
+// the projection tolerance) or with NaN coordinates is named with its curve and point, and one
+// just off the surface is projected and traced.
+TEST(BadCurveInputs, CoordinatesFarFromTheSurfaceOrNotFiniteAreNamed)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& [point, expected] : { std::pair<std::array<double, 3>, const char*>{
+                                           { 0.8, 0.25, 0.5 }, "curve 0, control point 1 is 0.5" },
+         { { 0.8, nan, 0.0 }, "curve 0, control point 1: NaN or infinite coordinates" } })
+  {
+    Scene s;
+    s.Curves->GetPoints()->SetPoint(1, point.data());
+    const std::string errors = s.Trace();
+    EXPECT_NE(errors.find(expected), std::string::npos) << errors;
+  }
+  Scene s;
+  s.Curves->GetPoints()->SetPoint(1, 0.8, 0.25, 1e-3); // 0.07 % of the diagonal above it
+  EXPECT_EQ(s.Trace(), "");
+}
