@@ -156,7 +156,8 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
   {
     boolsurf::ReserveArraySlots(outputs[p], this->ArrayCounts[p]);
   }
-  this->UpdateProgress(0.0);
+  // No UpdateProgress(0) here nor (1) at the end: the executive reports both around
+  // RequestData (vtkDemandDrivenPipeline::ExecuteDataStart/End), and each report is an event.
   std::string error;
   if (!this->Execute(inputs, outputs, error))
   {
@@ -175,7 +176,6 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
   {
     this->ArrayCounts[p] = boolsurf::CountArrays(outputs[p]);
   }
-  this->UpdateProgress(1.0);
   return 1;
 }
 

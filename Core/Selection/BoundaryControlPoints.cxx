@@ -52,10 +52,11 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
   {
     auto control = [&](long long k)
     { return source.Controls[static_cast<std::size_t>(((k % controls) + controls) % controls)]; };
-    points.push_back(
-      startsAtControl ? control(static_cast<long long>(k0)) : arrangement.PointSurface[first]);
     const long long from = static_cast<long long>(std::floor(t0 + SameParameter)) + 1;
     const long long to = static_cast<long long>(std::ceil(t1 - SameParameter)) - 1;
+    points.reserve(static_cast<std::size_t>(std::max(0LL, to - from + 1)) + 2);
+    points.push_back(
+      startsAtControl ? control(static_cast<long long>(k0)) : arrangement.PointSurface[first]);
     for (long long k = from; k <= to; ++k)
     {
       points.push_back(control(k));
@@ -198,6 +199,7 @@ TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
     c,
     out.Points);
   out.Positions.clear();
+  out.Positions.reserve(out.Points.size());
   for (const SurfacePoint& p : out.Points)
   {
     out.Positions.push_back(solver.GetMesh().Evaluate(p.Triangle, p.U, p.V));

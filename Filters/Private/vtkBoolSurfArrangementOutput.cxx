@@ -327,25 +327,39 @@ void WriteArrangementPatches(const Arrangement& arr,
   EmptyPolyData(patches);
   patches->SetPoints(refinedSurface->GetPoints());
   patches->GetPointData()->PassData(refinedSurface->GetPointData());
-  vtkNew<vtkCellArray> lines;
-  std::vector<int> patchId, shape, curve, left, right;
+  // Sized once and written in place (per-value insertion cost more than the patches' data).
+  const vtkIdType np = static_cast<vtkIdType>(arr.Patches.size());
+  vtkIdType corners = 0;
+  for (const ArrangementPatch& patch : arr.Patches)
+  {
+    corners += static_cast<vtkIdType>(patch.Points.size());
+  }
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfTuples(np + 1);
+  connectivity->SetNumberOfTuples(corners);
+  std::vector<int> patchId(np), shape(np), curve(np), left(np), right(np);
   vtkNew<vtkDoubleArray> length;
   length->SetName(boolsurf::names::Length);
-  for (size_t p = 0; p < arr.Patches.size(); ++p)
+  length->SetNumberOfTuples(np);
+  vtkIdType corner = 0;
+  for (vtkIdType p = 0; p < np; ++p)
   {
     const ArrangementPatch& patch = arr.Patches[p];
-    lines->InsertNextCell(static_cast<vtkIdType>(patch.Points.size()));
+    offsets->SetValue(p, corner);
     for (int id : patch.Points)
     {
-      lines->InsertCellPoint(id);
+      connectivity->SetValue(corner++, id);
     }
-    patchId.push_back(static_cast<int>(p));
-    shape.push_back(patch.ShapeId);
-    curve.push_back(patch.CurveId);
-    left.push_back(patch.LeftCell);
-    right.push_back(patch.RightCell);
-    length->InsertNextValue(patch.Length);
+    patchId[p] = static_cast<int>(p);
+    shape[p] = patch.ShapeId;
+    curve[p] = patch.CurveId;
+    left[p] = patch.LeftCell;
+    right[p] = patch.RightCell;
+    length->SetValue(p, patch.Length);
   }
+  offsets->SetValue(np, corner);
+  vtkNew<vtkCellArray> lines;
+  lines->SetData(offsets, connectivity);
   patches->SetLines(lines);
   vtkCellData* cd = patches->GetCellData();
   cd->AddArray(IntArray(boolsurf::names::PatchId, patchId));

@@ -14,9 +14,38 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 
 namespace boolsurf
 {
+
+//------------------------------------------------------------------------------
+namespace
+{
+/// A named array of `tuples` tuples, sized once (values are then written in place: VTK's
+/// per-value insertion costs tens of instructions a value, more than the sub-curves' own
+/// computation on a small edit).
+template <typename ArrayT>
+vtkSmartPointer<ArrayT> SizedArray(const char* name, int components, vtkIdType tuples)
+{
+  auto a = vtkSmartPointer<ArrayT>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(tuples);
+  return a;
+}
+
+/// Number of control points of all `curves`.
+vtkIdType CountPoints(const std::vector<ControlSubCurve>& curves)
+{
+  vtkIdType n = 0;
+  for (const ControlSubCurve& c : curves)
+  {
+    n += static_cast<vtkIdType>(c.Points.size());
+  }
+  return n;
+}
+} // namespace
 
 //------------------------------------------------------------------------------
 void WriteControlSubCurves(const std::vector<ControlSubCurve>& curves,
@@ -24,58 +53,69 @@ void WriteControlSubCurves(const std::vector<ControlSubCurve>& curves,
   bool boundary,
   vtkPolyData* output)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName(boolsurf::names::TriangleId);
-  vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName(boolsurf::names::Barycentric);
-  barycentric->SetNumberOfComponents(2);
-  vtkNew<vtkCellArray> lines;
-  auto intArray = [](const char* name)
-  {
-    auto a = vtkSmartPointer<vtkIntArray>::New();
-    a->SetName(name);
-    return a;
-  };
-  auto shape = intArray(boolsurf::names::ShapeId), type = intArray(boolsurf::names::CurveType),
-       closed = intArray(boolsurf::names::Closed), sourceCurve = intArray("SourceCurveId"),
-       sourceShape = intArray("SourceShapeId"), reversed = intArray("Reversed"),
-       group = intArray(groupName);
-  vtkNew<vtkDoubleArray> range;
-  range->SetName("ParameterRange");
-  range->SetNumberOfComponents(2);
+  const vtkIdType np = CountPoints(curves);
+  const vtkIdType nc = static_cast<vtkIdType>(curves.size());
+  vtkIdType corners = np;
   for (const ControlSubCurve& c : curves)
   {
-    const vtkIdType first = points->GetNumberOfPoints();
-    for (std::size_t i = 0; i < c.Points.size(); ++i)
+    corners += c.Whole ? 1 : 0;
+  }
+  auto coordinates = SizedArray<vtkDoubleArray>(nullptr, 3, np);
+  auto triangleId = SizedArray<vtkIdTypeArray>(boolsurf::names::TriangleId, 1, np);
+  auto barycentric = SizedArray<vtkDoubleArray>(boolsurf::names::Barycentric, 2, np);
+  auto offsets = SizedArray<vtkIdTypeArray>(nullptr, 1, nc + 1);
+  auto connectivity = SizedArray<vtkIdTypeArray>(nullptr, 1, corners);
+  auto shape = SizedArray<vtkIntArray>(boolsurf::names::ShapeId, 1, nc);
+  auto type = SizedArray<vtkIntArray>(boolsurf::names::CurveType, 1, nc);
+  auto closed = SizedArray<vtkIntArray>(boolsurf::names::Closed, 1, nc);
+  auto sourceCurve = SizedArray<vtkIntArray>("SourceCurveId", 1, nc);
+  auto sourceShape = SizedArray<vtkIntArray>("SourceShapeId", 1, nc);
+  auto reversed = SizedArray<vtkIntArray>("Reversed", 1, nc);
+  auto group = SizedArray<vtkIntArray>(groupName, 1, nc);
+  auto range = SizedArray<vtkDoubleArray>("ParameterRange", 2, nc);
+  double* xyz = coordinates->GetPointer(0);
+  vtkIdType* tri = triangleId->GetPointer(0);
+  double* uv = barycentric->GetPointer(0);
+  vtkIdType* offset = offsets->GetPointer(0);
+  vtkIdType* corner = connectivity->GetPointer(0);
+  vtkIdType point = 0, k = 0;
+  for (vtkIdType ci = 0; ci < nc; ++ci)
+  {
+    const ControlSubCurve& c = curves[ci];
+    const vtkIdType first = point;
+    offset[ci] = k;
+    for (std::size_t i = 0; i < c.Points.size(); ++i, ++point)
     {
       const SurfacePoint& p = c.Points[i];
       const Vec3& x = c.Positions[i];
-      points->InsertNextPoint(x.x, x.y, x.z);
-      triangleId->InsertNextValue(p.Triangle);
-      barycentric->InsertNextTuple2(p.U, p.V);
-    }
-    const vtkIdType n = static_cast<vtkIdType>(c.Points.size());
-    lines->InsertNextCell(n + (c.Whole ? 1 : 0));
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      lines->InsertCellPoint(first + i);
+      xyz[3 * point] = x.x;
+      xyz[3 * point + 1] = x.y;
+      xyz[3 * point + 2] = x.z;
+      tri[point] = p.Triangle;
+      uv[2 * point] = p.U;
+      uv[2 * point + 1] = p.V;
+      corner[k++] = point;
     }
     if (c.Whole)
     {
-      lines->InsertCellPoint(first);
+      corner[k++] = first;
     }
-    shape->InsertNextValue(boundary ? 0 : c.SourceShapeId);
-    type->InsertNextValue(static_cast<int>(c.Type));
-    closed->InsertNextValue(c.Whole ? 1 : 0);
-    sourceCurve->InsertNextValue(c.SourceCurveId);
-    sourceShape->InsertNextValue(c.SourceShapeId);
-    reversed->InsertNextValue(c.Reversed ? 1 : 0);
-    group->InsertNextValue(c.Group);
-    range->InsertNextTuple2(c.T0, c.T1);
+    shape->SetValue(ci, boundary ? 0 : c.SourceShapeId);
+    type->SetValue(ci, static_cast<int>(c.Type));
+    closed->SetValue(ci, c.Whole ? 1 : 0);
+    sourceCurve->SetValue(ci, c.SourceCurveId);
+    sourceShape->SetValue(ci, c.SourceShapeId);
+    reversed->SetValue(ci, c.Reversed ? 1 : 0);
+    group->SetValue(ci, c.Group);
+    range->SetTypedComponent(ci, 0, c.T0);
+    range->SetTypedComponent(ci, 1, c.T1);
   }
+  offset[nc] = k;
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
   output->SetPoints(points);
+  vtkNew<vtkCellArray> lines;
+  lines->SetData(offsets, connectivity);
   output->SetLines(lines);
   output->GetPointData()->AddArray(triangleId);
   output->GetPointData()->AddArray(barycentric);
@@ -154,10 +194,14 @@ bool ReadCurveSources(vtkPolyData* traced,
 //------------------------------------------------------------------------------
 void WritePatchControlCurves(const std::vector<ControlSubCurve>& perPatch, vtkFieldData* fd)
 {
-  vtkNew<vtkIntArray> offsets, info;
-  offsets->SetName("PatchControlOffsets");
-  info->SetName("PatchControlInfo");
-  info->SetNumberOfComponents(7);
+  const vtkIdType np = CountPoints(perPatch);
+  const vtkIdType nc = static_cast<vtkIdType>(perPatch.size());
+  if (nc == 0 || np == 0)
+  {
+    return; // never an empty numeric field array (VTK's XML reader cannot read it back)
+  }
+  auto offsets = SizedArray<vtkIntArray>("PatchControlOffsets", 1, nc + 1);
+  auto info = SizedArray<vtkIntArray>("PatchControlInfo", 7, nc);
   const char* names[] = { "CurveIndex",
     boolsurf::names::CurveType,
     "Segments",
@@ -169,39 +213,40 @@ void WritePatchControlCurves(const std::vector<ControlSubCurve>& perPatch, vtkFi
   {
     info->SetComponentName(k, names[k]);
   }
-  vtkNew<vtkIdTypeArray> triangles;
-  triangles->SetName("PatchControlTriangleId");
-  vtkNew<vtkDoubleArray> uv, position, range;
-  uv->SetName("PatchControlBarycentric");
-  uv->SetNumberOfComponents(2);
-  position->SetName("PatchControlPosition");
-  position->SetNumberOfComponents(3);
-  range->SetName("PatchParameterRange");
-  range->SetNumberOfComponents(2);
-  offsets->InsertNextValue(0);
-  for (const ControlSubCurve& c : perPatch)
+  auto triangles = SizedArray<vtkIdTypeArray>("PatchControlTriangleId", 1, np);
+  auto uv = SizedArray<vtkDoubleArray>("PatchControlBarycentric", 2, np);
+  auto position = SizedArray<vtkDoubleArray>("PatchControlPosition", 3, np);
+  auto range = SizedArray<vtkDoubleArray>("PatchParameterRange", 2, nc);
+  vtkIdType* tri = triangles->GetPointer(0);
+  double* bary = uv->GetPointer(0);
+  double* xyz = position->GetPointer(0);
+  int* values = info->GetPointer(0);
+  vtkIdType point = 0;
+  for (vtkIdType ci = 0; ci < nc; ++ci)
   {
-    for (std::size_t i = 0; i < c.Points.size(); ++i)
+    const ControlSubCurve& c = perPatch[ci];
+    offsets->SetValue(ci, static_cast<int>(point));
+    for (std::size_t i = 0; i < c.Points.size(); ++i, ++point)
     {
-      triangles->InsertNextValue(c.Points[i].Triangle);
-      uv->InsertNextTuple2(c.Points[i].U, c.Points[i].V);
-      position->InsertNextTuple3(c.Positions[i].x, c.Positions[i].y, c.Positions[i].z);
+      tri[point] = c.Points[i].Triangle;
+      bary[2 * point] = c.Points[i].U;
+      bary[2 * point + 1] = c.Points[i].V;
+      xyz[3 * point] = c.Positions[i].x;
+      xyz[3 * point + 1] = c.Positions[i].y;
+      xyz[3 * point + 2] = c.Positions[i].z;
     }
-    offsets->InsertNextValue(static_cast<int>(triangles->GetNumberOfTuples()));
-    const int values[7] = { c.Curve,
-      static_cast<int>(c.Type),
-      c.Segments,
-      c.CurveClosed ? 1 : 0,
-      c.SourceShapeId,
-      c.SourceCurveId,
-      c.Whole ? 1 : 0 };
-    info->InsertNextTypedTuple(values);
-    range->InsertNextTuple2(c.T0, c.T1);
+    int* v = values + 7 * ci;
+    v[0] = c.Curve;
+    v[1] = static_cast<int>(c.Type);
+    v[2] = c.Segments;
+    v[3] = c.CurveClosed ? 1 : 0;
+    v[4] = c.SourceShapeId;
+    v[5] = c.SourceCurveId;
+    v[6] = c.Whole ? 1 : 0;
+    range->SetTypedComponent(ci, 0, c.T0);
+    range->SetTypedComponent(ci, 1, c.T1);
   }
-  if (perPatch.empty() || triangles->GetNumberOfTuples() == 0)
-  {
-    return; // never an empty numeric field array (VTK's XML reader cannot read it back)
-  }
+  offsets->SetValue(nc, static_cast<int>(point));
   for (vtkDataArray* a : { static_cast<vtkDataArray*>(offsets),
          static_cast<vtkDataArray*>(info),
          static_cast<vtkDataArray*>(triangles),

@@ -181,23 +181,34 @@ void WriteTraces(const TriangleMesh& mesh,
   // The control points themselves (Bezier handles are not on the traced curve), so that the
   // arrangement and the Boolean can give results back as control points (field data:
   // ControlOffsets[c]..ControlOffsets[c + 1] index curve c's points).
+  vtkIdType nControls = 0;
+  for (const ControlCurve& control : controls)
+  {
+    nControls += static_cast<vtkIdType>(control.Points.size());
+  }
   vtkNew<vtkIntArray> controlOffsets;
   controlOffsets->SetName("ControlOffsets");
+  controlOffsets->SetNumberOfTuples(nc + 1);
   vtkNew<vtkIdTypeArray> controlTriangle;
   controlTriangle->SetName("ControlTriangleId");
+  controlTriangle->SetNumberOfTuples(nControls);
   vtkNew<vtkDoubleArray> controlUV;
   controlUV->SetName("ControlBarycentric");
   controlUV->SetNumberOfComponents(2);
-  controlOffsets->InsertNextValue(0);
-  for (const ControlCurve& control : controls)
+  controlUV->SetNumberOfTuples(nControls);
+  vtkIdType written = 0;
+  for (vtkIdType c = 0; c < nc; ++c)
   {
-    for (const SurfacePoint& p : control.Points)
+    controlOffsets->SetValue(c, static_cast<int>(written));
+    for (const SurfacePoint& p : controls[c].Points)
     {
-      controlTriangle->InsertNextValue(p.Triangle);
-      controlUV->InsertNextTuple2(p.U, p.V);
+      controlTriangle->SetValue(written, p.Triangle);
+      controlUV->SetTypedComponent(written, 0, p.U);
+      controlUV->SetTypedComponent(written, 1, p.V);
+      ++written;
     }
-    controlOffsets->InsertNextValue(static_cast<int>(controlTriangle->GetNumberOfTuples()));
   }
+  controlOffsets->SetValue(nc, static_cast<int>(written));
   output->GetFieldData()->AddArray(controlOffsets);
   if (controlTriangle->GetNumberOfTuples() > 0) // never an empty numeric field array
   {
@@ -342,9 +353,10 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   {
     return false;
   }
-  for (const CurveTrace& t : traces)
+  // Written first, so that the curves and their parameters can then be moved out, not copied.
+  if (output)
   {
-    traced.push_back(t.Curve);
+    WriteTraces(mesh, controls, traces, output);
   }
   if (sources)
   {
@@ -353,7 +365,7 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
     {
       CurveSource& s = (*sources)[c];
       s.Controls = controls[c].Points;
-      s.Parameter = traces[c].Parameter;
+      s.Parameter = std::move(traces[c].Parameter);
       s.Type = controls[c].Type;
       s.Closed = controls[c].Closed;
       s.ShapeId = controls[c].ShapeId;
@@ -361,9 +373,10 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
       s.InputCurveId = controls[c].InputCurveId;
     }
   }
-  if (output)
+  traced.reserve(traces.size());
+  for (CurveTrace& t : traces)
   {
-    WriteTraces(mesh, controls, traces, output);
+    traced.push_back(std::move(t.Curve));
   }
   return true;
 }
