@@ -109,6 +109,13 @@ private:
     std::array<CanonicalPoint, 4> Controls;
   };
   TraceStatus CutCurve(GeodesicPathSolver& solver, int curve);
+  TraceStatus SplitAtCuts(GeodesicPathSolver& solver,
+    const std::array<CanonicalPoint, 4>& polygon,
+    double from,
+    double to,
+    const double* first,
+    const double* last,
+    std::vector<Piece>& pieces);
 
   const Arrangement& Arranged;
   const std::vector<CurveSource>& Sources;

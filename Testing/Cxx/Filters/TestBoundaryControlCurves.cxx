@@ -411,38 +411,34 @@ TEST(BoundaryControlCurves, OpenCurvesAreClippedLikeClipperClipsOpenPaths)
   EXPECT_GT(pieces, 4);
 }
 
-TEST(BoundaryControlCurves, BezierPiecesArePiecesOfThePlanarCurve)
+/// Every Bezier piece of the boundary control curves of `spline` and `other` under each
+/// operation, against the planar spline `c` between the piece's parameters (on a flat mesh
+/// geodesic de Casteljau is the planar one, so they agree to rounding). Returns the number of
+/// points compared and, in `pieces`, the number of Bezier pieces seen.
+int CheckPlanarBezierPieces(vtkPolyData* mesh,
+  const std::vector<Point2>& c,
+  const ControlPolygon& spline,
+  const ControlPolygon& other,
+  int& pieces)
 {
-  // A closed cubic spline (two segments) crossed by a square; on a flat mesh geodesic
-  // de Casteljau is the planar one, so each piece's control points give exactly the original
-  // curve between the piece's parameters.
-  vtkSmartPointer<vtkPolyData> mesh =
-    testutils::ToPolyData(boolsurf::MakeFlatSquare(32, 1.0, 0.3, 8));
-  ControlPolygon spline;
-  spline.ShapeId = 0;
-  spline.Type = 1;
-  const std::vector<Point2> c = {
-    { 0.2, 0.5 }, { 0.2, 0.9 }, { 0.8, 0.9 }, { 0.8, 0.5 }, { 0.8, 0.1 }, { 0.2, 0.1 }
-  };
-  for (const Point2& p : c)
-  {
-    spline.Points.push_back({ p[0], p[1], 0.0 });
-  }
-  ControlPolygon square;
-  square.ShapeId = 1;
-  square.Points = { { 0.45, 0.3, 0 }, { 0.95, 0.3, 0 }, { 0.95, 0.95, 0 }, { 0.45, 0.95, 0 } };
   int checked = 0;
+  pieces = 0;
   for (int op = 0; op < 4; ++op)
   {
     vtkNew<vtkBoolSurf> f;
     f->SetInputData(0, mesh);
-    f->SetInputData(1, testutils::ToCurves({ spline, square }));
+    f->SetInputData(1, testutils::ToCurves({ spline, other }));
     f->SetOperation(op);
-    ASSERT_EQ(testutils::ErrorsOf(f), "");
+    EXPECT_EQ(testutils::ErrorsOf(f), "");
     vtkPolyData* out = f->GetBoundaryControlCurvesOutput();
     vtkDataArray* type = out->GetCellData()->GetArray("CurveType");
     vtkDataArray* range = out->GetCellData()->GetArray("ParameterRange");
     vtkDataArray* reversed = out->GetCellData()->GetArray("Reversed");
+    if (!type || !range || !reversed)
+    {
+      ADD_FAILURE() << "operation " << op << ": no control curves";
+      continue;
+    }
     auto it = vtk::TakeSmartPointer(out->GetLines()->NewIterator());
     for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
     {
@@ -451,6 +447,7 @@ TEST(BoundaryControlCurves, BezierPiecesArePiecesOfThePlanarCurve)
       {
         continue;
       }
+      ++pieces;
       vtkIdType n;
       const vtkIdType* ids;
       it->GetCurrentCell(n, ids);
@@ -463,7 +460,7 @@ TEST(BoundaryControlCurves, BezierPiecesArePiecesOfThePlanarCurve)
       {
         std::reverse(piece.begin(), piece.end());
       }
-      ASSERT_EQ(piece.size() % 3, 1u) << "an open spline piece has 3k + 1 control points";
+      EXPECT_EQ(piece.size() % 3, 1u) << "an open spline piece has 3k + 1 control points";
       // Breakpoints of the piece's segments: T0, the integers between, T1.
       const double t0 = range->GetComponent(cell, 0), t1 = range->GetComponent(cell, 1);
       std::vector<double> breaks = { t0 };
@@ -472,21 +469,88 @@ TEST(BoundaryControlCurves, BezierPiecesArePiecesOfThePlanarCurve)
         breaks.push_back(k);
       }
       breaks.push_back(t1);
-      ASSERT_EQ(breaks.size() - 1, (piece.size() - 1) / 3);
+      if (breaks.size() - 1 != (piece.size() - 1) / 3)
+      {
+        ADD_FAILURE() << "piece [" << t0 << ", " << t1 << "] has " << piece.size()
+                      << " control points";
+        continue;
+      }
       for (std::size_t s = 0; s + 1 < breaks.size(); ++s)
       {
         for (double u : { 0.0, 0.1, 0.37, 0.5, 0.81, 1.0 })
         {
           const Point2 x = Bezier(piece, false, s + u);
           const Point2 y = Bezier(c, true, breaks[s] + u * (breaks[s + 1] - breaks[s]));
-          EXPECT_NEAR(x[0], y[0], 1e-9);
-          EXPECT_NEAR(x[1], y[1], 1e-9);
+          EXPECT_NEAR(x[0], y[0], 1e-9) << "piece [" << t0 << ", " << t1 << "] at " << u;
+          EXPECT_NEAR(x[1], y[1], 1e-9) << "piece [" << t0 << ", " << t1 << "] at " << u;
           ++checked;
         }
       }
     }
   }
-  EXPECT_GT(checked, 20);
+  return checked;
+}
+
+/// A closed cubic spline of two segments on the unit square, and its control polygon.
+ControlPolygon TwoSegmentSpline(std::vector<Point2>& c)
+{
+  c = { { 0.2, 0.5 }, { 0.2, 0.9 }, { 0.8, 0.9 }, { 0.8, 0.5 }, { 0.8, 0.1 }, { 0.2, 0.1 } };
+  ControlPolygon spline;
+  spline.ShapeId = 0;
+  spline.Type = 1;
+  for (const Point2& p : c)
+  {
+    spline.Points.push_back({ p[0], p[1], 0.0 });
+  }
+  return spline;
+}
+
+TEST(BoundaryControlCurves, BezierPiecesArePiecesOfThePlanarCurve)
+{
+  // A closed cubic spline (two segments) crossed by a square; each piece's control points give
+  // exactly the original curve between the piece's parameters.
+  vtkSmartPointer<vtkPolyData> mesh =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(32, 1.0, 0.3, 8));
+  std::vector<Point2> c;
+  const ControlPolygon spline = TwoSegmentSpline(c);
+  ControlPolygon square;
+  square.ShapeId = 1;
+  square.Points = { { 0.45, 0.3, 0 }, { 0.95, 0.3, 0 }, { 0.95, 0.95, 0 }, { 0.45, 0.95, 0 } };
+  int pieces = 0;
+  EXPECT_GT(CheckPlanarBezierPieces(mesh, c, spline, square, pieces), 20);
+}
+
+TEST(BoundaryControlCurves, BezierSegmentCutManyTimes)
+{
+  // A comb whose 30 teeth cross the spline's upper segment 60 times: that segment is cut into
+  // 61 pieces (split by halving, BezierPieces::SplitAtCuts), each of which must still be
+  // exactly the original curve between its parameters.
+  vtkSmartPointer<vtkPolyData> mesh =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(32, 1.0, 0.3, 8));
+  std::vector<Point2> c;
+  const ControlPolygon spline = TwoSegmentSpline(c);
+  ControlPolygon comb;
+  comb.ShapeId = 1;
+  const int teeth = 30;
+  const double left = 0.26, pitch = 0.016, width = 0.008;
+  comb.Points.push_back({ left, 0.97, 0 });
+  for (int k = 0; k < teeth; ++k)
+  {
+    const double x = left + k * pitch;
+    comb.Points.push_back({ x, 0.6, 0 });
+    comb.Points.push_back({ x + width, 0.6, 0 });
+    comb.Points.push_back({ x + width, k + 1 < teeth ? 0.93 : 0.97, 0 });
+    if (k + 1 < teeth)
+    {
+      comb.Points.push_back({ x + pitch, 0.93, 0 });
+    }
+  }
+  int pieces = 0;
+  const int checked = CheckPlanarBezierPieces(mesh, c, spline, comb, pieces);
+  // Each operation's boundary holds the teeth's pieces of the upper segment (about half of the
+  // 61 pieces, alternately inside and outside a tooth).
+  EXPECT_GT(pieces, 4 * 25);
+  EXPECT_GT(checked, 6 * pieces - 1);
 }
 
 TEST(BoundaryControlCurves, BezierPiecesStayOnTheCurveOnASphere)
