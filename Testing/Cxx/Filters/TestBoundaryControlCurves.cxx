@@ -411,16 +411,31 @@ TEST(BoundaryControlCurves, OpenCurvesAreClippedLikeClipperClipsOpenPaths)
   EXPECT_GT(pieces, 4);
 }
 
-/// Every Bezier piece of the boundary control curves of `spline` and `other` under each
-/// operation, against the planar spline `c` between the piece's parameters (on a flat mesh
-/// geodesic de Casteljau is the planar one, so they agree to rounding). Returns the number of
-/// points compared and, in `pieces`, the number of Bezier pieces seen.
-int CheckPlanarBezierPieces(vtkPolyData* mesh,
-  const std::vector<Point2>& c,
-  const ControlPolygon& spline,
-  const ControlPolygon& other,
-  int& pieces)
+/// A closed cubic spline of two segments on the unit square, and its control polygon.
+ControlPolygon TwoSegmentSpline(std::vector<Point2>& c)
 {
+  c = { { 0.2, 0.5 }, { 0.2, 0.9 }, { 0.8, 0.9 }, { 0.8, 0.5 }, { 0.8, 0.1 }, { 0.2, 0.1 } };
+  ControlPolygon spline;
+  spline.ShapeId = 0;
+  spline.Type = 1;
+  for (const Point2& p : c)
+  {
+    spline.Points.push_back({ p[0], p[1], 0.0 });
+  }
+  return spline;
+}
+
+/// Every Bezier piece of the boundary control curves of TwoSegmentSpline and `other` under
+/// each operation, on a jittered flat square, against the planar spline between the piece's
+/// parameters (on a flat mesh geodesic de Casteljau is the planar one, so they agree to
+/// rounding). Returns the number of points compared and, in `pieces`, the number of Bezier
+/// pieces seen.
+int CheckPlanarBezierPieces(const ControlPolygon& other, int& pieces)
+{
+  vtkSmartPointer<vtkPolyData> mesh =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(32, 1.0, 0.3, 8));
+  std::vector<Point2> c;
+  const ControlPolygon spline = TwoSegmentSpline(c);
   int checked = 0;
   pieces = 0;
   for (int op = 0; op < 4; ++op)
@@ -491,33 +506,15 @@ int CheckPlanarBezierPieces(vtkPolyData* mesh,
   return checked;
 }
 
-/// A closed cubic spline of two segments on the unit square, and its control polygon.
-ControlPolygon TwoSegmentSpline(std::vector<Point2>& c)
-{
-  c = { { 0.2, 0.5 }, { 0.2, 0.9 }, { 0.8, 0.9 }, { 0.8, 0.5 }, { 0.8, 0.1 }, { 0.2, 0.1 } };
-  ControlPolygon spline;
-  spline.ShapeId = 0;
-  spline.Type = 1;
-  for (const Point2& p : c)
-  {
-    spline.Points.push_back({ p[0], p[1], 0.0 });
-  }
-  return spline;
-}
-
 TEST(BoundaryControlCurves, BezierPiecesArePiecesOfThePlanarCurve)
 {
   // A closed cubic spline (two segments) crossed by a square; each piece's control points give
   // exactly the original curve between the piece's parameters.
-  vtkSmartPointer<vtkPolyData> mesh =
-    testutils::ToPolyData(boolsurf::MakeFlatSquare(32, 1.0, 0.3, 8));
-  std::vector<Point2> c;
-  const ControlPolygon spline = TwoSegmentSpline(c);
   ControlPolygon square;
   square.ShapeId = 1;
   square.Points = { { 0.45, 0.3, 0 }, { 0.95, 0.3, 0 }, { 0.95, 0.95, 0 }, { 0.45, 0.95, 0 } };
   int pieces = 0;
-  EXPECT_GT(CheckPlanarBezierPieces(mesh, c, spline, square, pieces), 20);
+  EXPECT_GT(CheckPlanarBezierPieces(square, pieces), 20);
 }
 
 TEST(BoundaryControlCurves, BezierSegmentCutManyTimes)
@@ -525,10 +522,6 @@ TEST(BoundaryControlCurves, BezierSegmentCutManyTimes)
   // A comb whose 30 teeth cross the spline's upper segment 60 times: that segment is cut into
   // 61 pieces (split by halving, BezierPieces::SplitAtCuts), each of which must still be
   // exactly the original curve between its parameters.
-  vtkSmartPointer<vtkPolyData> mesh =
-    testutils::ToPolyData(boolsurf::MakeFlatSquare(32, 1.0, 0.3, 8));
-  std::vector<Point2> c;
-  const ControlPolygon spline = TwoSegmentSpline(c);
   ControlPolygon comb;
   comb.ShapeId = 1;
   const int teeth = 30;
@@ -546,7 +539,7 @@ TEST(BoundaryControlCurves, BezierSegmentCutManyTimes)
     }
   }
   int pieces = 0;
-  const int checked = CheckPlanarBezierPieces(mesh, c, spline, comb, pieces);
+  const int checked = CheckPlanarBezierPieces(comb, pieces);
   // Each operation's boundary holds the teeth's pieces of the upper segment (about half of the
   // 61 pieces, alternately inside and outside a tooth).
   EXPECT_GT(pieces, 4 * 25);
