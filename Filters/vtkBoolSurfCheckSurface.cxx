@@ -1,5 +1,6 @@
 #include "vtkBoolSurfCheckSurface.h"
 
+#include "vtkBoolSurfArrayView.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
 
 #include <vtkCellData.h>
@@ -20,9 +21,7 @@ namespace
 {
 vtkSmartPointer<vtkIntArray> NamedIntArray(const char* name, vtkIdType n, int fill)
 {
-  auto a = vtkSmartPointer<vtkIntArray>::New();
-  a->SetName(name);
-  a->SetNumberOfTuples(n);
+  auto a = boolsurf::NewSizedArray<vtkIntArray>(name, 1, n);
   a->FillValue(fill);
   return a;
 }

@@ -327,20 +327,16 @@ void WriteArrangementPatches(const Arrangement& arr,
   EmptyPolyData(patches);
   patches->SetPoints(refinedSurface->GetPoints());
   patches->GetPointData()->PassData(refinedSurface->GetPointData());
-  // Sized once and written in place (per-value insertion cost more than the patches' data).
   const vtkIdType np = static_cast<vtkIdType>(arr.Patches.size());
   vtkIdType corners = 0;
   for (const ArrangementPatch& patch : arr.Patches)
   {
     corners += static_cast<vtkIdType>(patch.Points.size());
   }
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(np + 1);
-  connectivity->SetNumberOfTuples(corners);
+  auto offsets = NewSizedArray<vtkIdTypeArray>(nullptr, 1, np + 1);
+  auto connectivity = NewSizedArray<vtkIdTypeArray>(nullptr, 1, corners);
   std::vector<int> patchId(np), shape(np), curve(np), left(np), right(np);
-  vtkNew<vtkDoubleArray> length;
-  length->SetName(boolsurf::names::Length);
-  length->SetNumberOfTuples(np);
+  auto length = NewSizedArray<vtkDoubleArray>(boolsurf::names::Length, 1, np);
   vtkIdType corner = 0;
   for (vtkIdType p = 0; p < np; ++p)
   {

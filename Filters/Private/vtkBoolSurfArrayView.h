@@ -1,7 +1,7 @@
 // VTK arrays that read memory owned by a Core result instead of a copy of it (a private header
 // of the module). Surface Arrangement hands its refined surface to VTK this way: the points,
 // triangles and per-triangle cells of a million-triangle arrangement are ~50 MB that a copy
-// would write on every edit.
+// would write on every edit. And arrays sized once, for outputs written in place.
 #ifndef vtkBoolSurfArrayView_h
 #define vtkBoolSurfArrayView_h
 
@@ -40,6 +40,19 @@ vtkSmartPointer<ArrayT> MakeArrayView(const typename ArrayT::ValueType* values,
   RegisterArrayView(data, std::move(owner));
   array->SetArray(data, tuples * components, /*save=*/0, ArrayT::VTK_DATA_ARRAY_USER_DEFINED);
   array->SetArrayFreeFunction(&ReleaseArrayView);
+  return array;
+}
+
+/// A new array named `name` (or unnamed) of `tuples` x `components` values, to be written in
+/// place: VTK's per-value insertion (InsertNextValue, InsertNextTuple) costs tens of
+/// instructions a value, more than many outputs' own computation on a small edit.
+template <class ArrayT>
+vtkSmartPointer<ArrayT> NewSizedArray(const char* name, int components, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<ArrayT>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
   return array;
 }
 

@@ -1,6 +1,7 @@
 #include "vtkBoolSurfControlOutput.h"
 
 #include "vtkBoolSurfArrayNames.h"
+#include "vtkBoolSurfArrayView.h"
 
 #include "vtkBoolSurfTracedCurves.h"
 
@@ -22,19 +23,6 @@ namespace boolsurf
 //------------------------------------------------------------------------------
 namespace
 {
-/// A named array of `tuples` tuples, sized once (values are then written in place: VTK's
-/// per-value insertion costs tens of instructions a value, more than the sub-curves' own
-/// computation on a small edit).
-template <typename ArrayT>
-vtkSmartPointer<ArrayT> SizedArray(const char* name, int components, vtkIdType tuples)
-{
-  auto a = vtkSmartPointer<ArrayT>::New();
-  a->SetName(name);
-  a->SetNumberOfComponents(components);
-  a->SetNumberOfTuples(tuples);
-  return a;
-}
-
 /// Number of control points of all `curves`.
 vtkIdType CountPoints(const std::vector<ControlSubCurve>& curves)
 {
@@ -60,19 +48,19 @@ void WriteControlSubCurves(const std::vector<ControlSubCurve>& curves,
   {
     corners += c.Whole ? 1 : 0;
   }
-  auto coordinates = SizedArray<vtkDoubleArray>(nullptr, 3, np);
-  auto triangleId = SizedArray<vtkIdTypeArray>(boolsurf::names::TriangleId, 1, np);
-  auto barycentric = SizedArray<vtkDoubleArray>(boolsurf::names::Barycentric, 2, np);
-  auto offsets = SizedArray<vtkIdTypeArray>(nullptr, 1, nc + 1);
-  auto connectivity = SizedArray<vtkIdTypeArray>(nullptr, 1, corners);
-  auto shape = SizedArray<vtkIntArray>(boolsurf::names::ShapeId, 1, nc);
-  auto type = SizedArray<vtkIntArray>(boolsurf::names::CurveType, 1, nc);
-  auto closed = SizedArray<vtkIntArray>(boolsurf::names::Closed, 1, nc);
-  auto sourceCurve = SizedArray<vtkIntArray>("SourceCurveId", 1, nc);
-  auto sourceShape = SizedArray<vtkIntArray>("SourceShapeId", 1, nc);
-  auto reversed = SizedArray<vtkIntArray>("Reversed", 1, nc);
-  auto group = SizedArray<vtkIntArray>(groupName, 1, nc);
-  auto range = SizedArray<vtkDoubleArray>("ParameterRange", 2, nc);
+  auto coordinates = NewSizedArray<vtkDoubleArray>(nullptr, 3, np);
+  auto triangleId = NewSizedArray<vtkIdTypeArray>(boolsurf::names::TriangleId, 1, np);
+  auto barycentric = NewSizedArray<vtkDoubleArray>(boolsurf::names::Barycentric, 2, np);
+  auto offsets = NewSizedArray<vtkIdTypeArray>(nullptr, 1, nc + 1);
+  auto connectivity = NewSizedArray<vtkIdTypeArray>(nullptr, 1, corners);
+  auto shape = NewSizedArray<vtkIntArray>(boolsurf::names::ShapeId, 1, nc);
+  auto type = NewSizedArray<vtkIntArray>(boolsurf::names::CurveType, 1, nc);
+  auto closed = NewSizedArray<vtkIntArray>(boolsurf::names::Closed, 1, nc);
+  auto sourceCurve = NewSizedArray<vtkIntArray>("SourceCurveId", 1, nc);
+  auto sourceShape = NewSizedArray<vtkIntArray>("SourceShapeId", 1, nc);
+  auto reversed = NewSizedArray<vtkIntArray>("Reversed", 1, nc);
+  auto group = NewSizedArray<vtkIntArray>(groupName, 1, nc);
+  auto range = NewSizedArray<vtkDoubleArray>("ParameterRange", 2, nc);
   double* xyz = coordinates->GetPointer(0);
   vtkIdType* tri = triangleId->GetPointer(0);
   double* uv = barycentric->GetPointer(0);
@@ -200,8 +188,8 @@ void WritePatchControlCurves(const std::vector<ControlSubCurve>& perPatch, vtkFi
   {
     return; // never an empty numeric field array (VTK's XML reader cannot read it back)
   }
-  auto offsets = SizedArray<vtkIntArray>("PatchControlOffsets", 1, nc + 1);
-  auto info = SizedArray<vtkIntArray>("PatchControlInfo", 7, nc);
+  auto offsets = NewSizedArray<vtkIntArray>("PatchControlOffsets", 1, nc + 1);
+  auto info = NewSizedArray<vtkIntArray>("PatchControlInfo", 7, nc);
   const char* names[] = { "CurveIndex",
     boolsurf::names::CurveType,
     "Segments",
@@ -213,10 +201,10 @@ void WritePatchControlCurves(const std::vector<ControlSubCurve>& perPatch, vtkFi
   {
     info->SetComponentName(k, names[k]);
   }
-  auto triangles = SizedArray<vtkIdTypeArray>("PatchControlTriangleId", 1, np);
-  auto uv = SizedArray<vtkDoubleArray>("PatchControlBarycentric", 2, np);
-  auto position = SizedArray<vtkDoubleArray>("PatchControlPosition", 3, np);
-  auto range = SizedArray<vtkDoubleArray>("PatchParameterRange", 2, nc);
+  auto triangles = NewSizedArray<vtkIdTypeArray>("PatchControlTriangleId", 1, np);
+  auto uv = NewSizedArray<vtkDoubleArray>("PatchControlBarycentric", 2, np);
+  auto position = NewSizedArray<vtkDoubleArray>("PatchControlPosition", 3, np);
+  auto range = NewSizedArray<vtkDoubleArray>("PatchParameterRange", 2, nc);
   vtkIdType* tri = triangles->GetPointer(0);
   double* bary = uv->GetPointer(0);
   double* xyz = position->GetPointer(0);

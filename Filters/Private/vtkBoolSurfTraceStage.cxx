@@ -1,6 +1,7 @@
 #include "vtkBoolSurfTraceStage.h"
 
 #include "vtkBoolSurfArrayNames.h"
+#include "vtkBoolSurfArrayView.h"
 
 #include "vtkBoolSurfControlCurves.h"
 
@@ -23,19 +24,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 
 namespace boolsurf
 {
 namespace
 {
-
-vtkSmartPointer<vtkIntArray> NewIntArray(const char* name)
-{
-  auto a = vtkSmartPointer<vtkIntArray>::New();
-  a->SetName(name);
-  return a;
-}
 
 void WriteTraces(const TriangleMesh& mesh,
   const std::vector<ControlCurve>& controls,
@@ -54,37 +47,19 @@ void WriteTraces(const TriangleMesh& mesh,
     firstCorner[c + 1] = firstCorner[c] + n + (isClosed ? 1 : 0);
   }
   const vtkIdType np = firstPoint[nc];
-  vtkNew<vtkDoubleArray> coordinates;
-  coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(np);
-  vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName(boolsurf::names::TriangleId);
-  triangleId->SetNumberOfTuples(np);
-  vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName(boolsurf::names::Barycentric);
-  barycentric->SetNumberOfComponents(2);
-  barycentric->SetNumberOfTuples(np);
-  vtkNew<vtkDoubleArray> parameter;
-  parameter->SetName(boolsurf::names::CurveParameter);
-  parameter->SetNumberOfTuples(np);
-  auto segment = NewIntArray(boolsurf::names::ControlSegment);
-  segment->SetNumberOfTuples(np);
-  auto controlPoint = NewIntArray(boolsurf::names::ControlPointId);
-  controlPoint->SetNumberOfTuples(np);
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(nc + 1);
-  connectivity->SetNumberOfTuples(firstCorner[nc]);
-  auto shape = NewIntArray(boolsurf::names::ShapeId);
-  auto curveId = NewIntArray(boolsurf::names::CurveId);
-  auto closed = NewIntArray(boolsurf::names::Closed);
-  auto type = NewIntArray(boolsurf::names::CurveType);
-  vtkNew<vtkDoubleArray> length;
-  length->SetName(boolsurf::names::Length);
-  for (vtkAbstractArray* perCurve :
-    std::initializer_list<vtkAbstractArray*>{ shape, curveId, closed, type, length })
-  {
-    perCurve->SetNumberOfTuples(nc);
-  }
+  auto coordinates = NewSizedArray<vtkDoubleArray>(nullptr, 3, np);
+  auto triangleId = NewSizedArray<vtkIdTypeArray>(boolsurf::names::TriangleId, 1, np);
+  auto barycentric = NewSizedArray<vtkDoubleArray>(boolsurf::names::Barycentric, 2, np);
+  auto parameter = NewSizedArray<vtkDoubleArray>(boolsurf::names::CurveParameter, 1, np);
+  auto segment = NewSizedArray<vtkIntArray>(boolsurf::names::ControlSegment, 1, np);
+  auto controlPoint = NewSizedArray<vtkIntArray>(boolsurf::names::ControlPointId, 1, np);
+  auto offsets = NewSizedArray<vtkIdTypeArray>(nullptr, 1, nc + 1);
+  auto connectivity = NewSizedArray<vtkIdTypeArray>(nullptr, 1, firstCorner[nc]);
+  auto shape = NewSizedArray<vtkIntArray>(boolsurf::names::ShapeId, 1, nc);
+  auto curveId = NewSizedArray<vtkIntArray>(boolsurf::names::CurveId, 1, nc);
+  auto closed = NewSizedArray<vtkIntArray>(boolsurf::names::Closed, 1, nc);
+  auto type = NewSizedArray<vtkIntArray>(boolsurf::names::CurveType, 1, nc);
+  auto length = NewSizedArray<vtkDoubleArray>(boolsurf::names::Length, 1, nc);
   // Point `i` of curve `c`, as output point `id`.
   const auto writePoint = [&](vtkIdType c, std::size_t i, vtkIdType id)
   {
@@ -186,16 +161,9 @@ void WriteTraces(const TriangleMesh& mesh,
   {
     nControls += static_cast<vtkIdType>(control.Points.size());
   }
-  vtkNew<vtkIntArray> controlOffsets;
-  controlOffsets->SetName("ControlOffsets");
-  controlOffsets->SetNumberOfTuples(nc + 1);
-  vtkNew<vtkIdTypeArray> controlTriangle;
-  controlTriangle->SetName("ControlTriangleId");
-  controlTriangle->SetNumberOfTuples(nControls);
-  vtkNew<vtkDoubleArray> controlUV;
-  controlUV->SetName("ControlBarycentric");
-  controlUV->SetNumberOfComponents(2);
-  controlUV->SetNumberOfTuples(nControls);
+  auto controlOffsets = NewSizedArray<vtkIntArray>("ControlOffsets", 1, nc + 1);
+  auto controlTriangle = NewSizedArray<vtkIdTypeArray>("ControlTriangleId", 1, nControls);
+  auto controlUV = NewSizedArray<vtkDoubleArray>("ControlBarycentric", 2, nControls);
   vtkIdType written = 0;
   for (vtkIdType c = 0; c < nc; ++c)
   {
