@@ -27,9 +27,12 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <vector>
 
 namespace
 {
@@ -336,22 +339,113 @@ void BM_StageChainScene(benchmark::State& state, benchutil::SceneFile file)
   }
   // No per-filter fault counts: their system calls would be charged to the chain's edit.
   benchutil::FilterUpdateTimer stages({ trace, arrange, label, boolean }, false);
-  double coreMs = 0; // the Core arrangement inside the arrangement filter (its StageTimes)
+  // The Core arrangement inside the arrangement filter, per stage (its StageTimes; the last
+  // component is its total).
+  std::map<std::string, double> core;
   for (auto _ : state)
   {
     scene.Curves->Modified();
     boolean->Update();
     if (vtkDataArray* t = arrange->GetOutput()->GetFieldData()->GetArray("StageTimes"))
     {
-      coreMs += t->GetComponent(0, t->GetNumberOfComponents() - 1);
+      for (int k = 0; k < t->GetNumberOfComponents(); ++k)
+      {
+        core[t->GetComponentName(k)] += t->GetComponent(0, k);
+      }
     }
   }
   const double n = static_cast<double>(state.iterations());
-  state.counters["CoreArrangement_ms"] = coreMs / n;
+  for (const auto& [name, sum] : core)
+  {
+    state.counters[(name == "Total" ? "CoreArrangement" : "Core" + name) + "_ms"] = sum / n;
+  }
   state.counters["Trace_ms"] = stages.Milliseconds(0) / n;
   state.counters["ArrangeLabel_ms"] = (stages.Milliseconds(1) + stages.Milliseconds(2)) / n;
   state.counters["Boolean_ms"] = stages.Milliseconds(3) / n;
   state.counters["cells"] = scene.Cells;
+}
+
+// The one-step filter and the stage chain on the same edits, updated in turn within each
+// iteration (the order alternating), so both see the same state of a shared machine: their
+// ratio is measured in pairs instead of across runs minutes apart, where this VM drifts by more
+// than the difference being measured. Counters: the medians over iterations of each
+// pipeline's edit (OneStep_ms, Chain_ms) and of the per-edit ratio (Ratio).
+// Benchmarks/VTK/chain_ratio.py sums them over the scenes.
+void BM_PairedSceneEdit(benchmark::State& state, benchutil::SceneFile file)
+{
+  const PreparedScene& scene = Prepare(file);
+  if (!scene.Error.empty() || scene.Expression.empty())
+  {
+    state.SkipWithError(scene.Error.empty() ? "no consistent shape" : scene.Error.c_str());
+    return;
+  }
+  const int threads = static_cast<int>(state.range(0));
+  vtkNew<vtkBoolSurf> one;
+  one->SetInputData(0, scene.Mesh);
+  one->SetInputData(1, scene.Curves);
+  one->SetOperationToExpression();
+  one->SetExpression(scene.Expression.c_str());
+  one->SetNumberOfThreads(threads);
+  vtkNew<vtkBoolSurfTraceCurves> trace;
+  trace->SetInputData(0, scene.Mesh);
+  trace->SetInputData(1, scene.Curves);
+  vtkNew<vtkBoolSurfArrangement> arrange;
+  arrange->SetInputData(0, scene.Mesh);
+  arrange->SetInputConnection(1, trace->GetOutputPort());
+  arrange->SetNumberOfThreads(threads);
+  vtkNew<vtkBoolSurfLabeling> label;
+  label->SetInputConnection(arrange->GetOutputPort(0));
+  vtkNew<vtkBoolSurfBoolean> chain;
+  chain->SetInputConnection(label->GetOutputPort(0));
+  chain->SetOperationToExpression();
+  chain->SetExpression(scene.Expression.c_str());
+  for (int warm = 0; warm < 3; ++warm) // surface conversions, first trace, both buffers
+  {
+    scene.Curves->Modified();
+    one->Update();
+    chain->Update();
+  }
+  using Clock = std::chrono::steady_clock;
+  const auto timedUpdate = [](vtkAlgorithm* filter)
+  {
+    const Clock::time_point start = Clock::now();
+    filter->Update();
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  };
+  std::vector<double> oneMs, chainMs, ratio;
+  bool chainFirst = false;
+  for (auto _ : state)
+  {
+    scene.Curves->Modified();
+    double a = 0, b = 0;
+    if (chainFirst)
+    {
+      b = timedUpdate(chain);
+      a = timedUpdate(one);
+    }
+    else
+    {
+      a = timedUpdate(one);
+      b = timedUpdate(chain);
+    }
+    chainFirst = !chainFirst;
+    oneMs.push_back(a);
+    chainMs.push_back(b);
+    ratio.push_back(b / a);
+  }
+  if (one->GetOutput()->GetNumberOfCells() != chain->GetOutput()->GetNumberOfCells())
+  {
+    state.SkipWithError("the chain's region differs from the one-step filter's");
+    return;
+  }
+  const auto median = [](std::vector<double>& v)
+  {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  state.counters["OneStep_ms"] = median(oneMs);
+  state.counters["Chain_ms"] = median(chainMs);
+  state.counters["Ratio"] = median(ratio);
 }
 
 // Registered at start-up: one benchmark per available scene.
@@ -369,7 +463,9 @@ const bool registered = []
       { benchmark::RegisterBenchmark(
           ("BM_OneStepScene/" + file.Scene).c_str(), BM_OneStepScene, file),
         benchmark::RegisterBenchmark(
-          ("BM_StageChainScene/" + file.Scene).c_str(), BM_StageChainScene, file) })
+          ("BM_StageChainScene/" + file.Scene).c_str(), BM_StageChainScene, file),
+        benchmark::RegisterBenchmark(
+          ("BM_PairedSceneEdit/" + file.Scene).c_str(), BM_PairedSceneEdit, file) })
     {
       edits->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
       // A fixed number of edits, for instruction counts under callgrind (where the timings

@@ -25,6 +25,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <random>
 #include <string>
@@ -165,17 +166,24 @@ void TraceLeg(benchmark::State& state, const std::string& name, bool far)
     state.counters["site_graph_MB"] = graph->GetComponent(0, 2);
   }
 }
+
+// A fixed number of legs; BOOLSURF_BENCHMARK_ITERATIONS sets another (under callgrind).
+int LegIterations(int fallback)
+{
+  const char* iterations = std::getenv("BOOLSURF_BENCHMARK_ITERATIONS");
+  return iterations ? std::atoi(iterations) : fallback;
+}
 } // namespace
 
 BENCHMARK_CAPTURE(TraceLeg, igea_1m_short, std::string("igea_1m.ply"), false)
   ->UseManualTime()
-  ->Iterations(399)
+  ->Iterations(LegIterations(399))
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(TraceLeg, igea_1m_far, std::string("igea_1m.ply"), true)
   ->UseManualTime()
-  ->Iterations(39)
+  ->Iterations(LegIterations(39))
   ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(TraceLeg, torus3_800k_far, std::string("3torus_800k.ply"), true)
   ->UseManualTime()
-  ->Iterations(39)
+  ->Iterations(LegIterations(39))
   ->Unit(benchmark::kMillisecond);
