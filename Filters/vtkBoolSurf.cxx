@@ -282,6 +282,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   traceOptions.Resolution = this->Resolution;
   traceOptions.ProjectionTolerance = this->ProjectionTolerance;
   traceOptions.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
+  traceOptions.Threads = this->NumberOfThreads;
   std::vector<std::string> notes;
   // Optional first step: resolve inconsistent shapes, then trace the resolved curves.
   in.ResolutionNotes.clear();

@@ -3,8 +3,16 @@
 #include "Geodesic/WrittenCurvePoints.h"
 
 #include <algorithm>
+#include <atomic>
 #include <functional>
 #include <iterator>
+#include <thread>
+
+#include <tbb/blocked_range.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
 #include <tuple>
 
 namespace boolsurf
@@ -261,8 +269,29 @@ TraceStatus CurveTracer::Trace(const std::vector<SurfacePoint>& points,
   int curveId)
 {
   out.Clear();
+  CurveKey key;
+  TraceStatus status = this->MakeKey(points, type, closed, curveId, key);
+  if (!status || this->Recall(key, out, curveId))
+  {
+    return status;
+  }
+  status = this->TraceNew(key, out, curveId);
+  if (status)
+  {
+    this->Remember(std::move(key), out);
+  }
+  return status;
+}
+
+//------------------------------------------------------------------------------
+TraceStatus CurveTracer::MakeKey(const std::vector<SurfacePoint>& points,
+  CurveType type,
+  bool closed,
+  int curveId,
+  CurveKey& key) const
+{
   const TriangleMesh& mesh = this->Solver.GetMesh();
-  std::vector<CanonicalPoint> canonical(points.size());
+  key.Points.resize(points.size());
   std::string problem;
   for (size_t i = 0; i < points.size(); ++i)
   {
@@ -275,58 +304,175 @@ TraceStatus CurveTracer::Trace(const std::vector<SurfacePoint>& points,
     // inside a triangle would make its paths cross that edge and come straight back, a
     // zero-length excursion that the arrangement cannot orient. Every reader of surface points
     // uses this same tolerance (SurfacePointSnap).
-    canonical[i] = LocateSurfacePoint(mesh, points[i]);
+    key.Points[i] = LocateSurfacePoint(mesh, points[i]);
   }
-  CurveKey key{ std::move(canonical), type, closed, this->Resolution, this->Solver.GetMethod() };
+  key.Type = type;
+  key.Closed = closed;
+  key.Resolution = this->Resolution;
+  key.Method = this->Solver.GetMethod();
+  return TraceStatus::Success();
+}
+
+//------------------------------------------------------------------------------
+bool CurveTracer::Recall(const CurveKey& key, CurveTrace& out, int curveId)
+{
   auto known = this->Memory.find(key);
-  if (known != this->Memory.end())
+  if (known == this->Memory.end())
   {
-    known->second.Pass = this->Pass;
-    if (this->KeepWrittenForms && known->second.Trace.Written.empty())
-    {
-      ComputeWrittenForms(mesh, known->second.Trace); // remembered before they were kept
-    }
-    out = known->second.Trace;
-    if (!this->KeepWrittenForms)
-    {
-      out.Positions.clear();
-      out.Written.clear();
-    }
-    out.Curve.CurveId = curveId;
-    ++this->Recalled;
-    return TraceStatus::Success();
+    return false;
   }
+  known->second.Pass = this->Pass;
+  if (this->KeepWrittenForms && known->second.Trace.Written.empty())
+  {
+    ComputeWrittenForms(this->Solver.GetMesh(), known->second.Trace); // remembered before
+  }
+  out = known->second.Trace;
+  if (!this->KeepWrittenForms)
+  {
+    out.Positions.clear();
+    out.Written.clear();
+  }
+  out.Curve.CurveId = curveId;
+  ++this->Recalled;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+TraceStatus CurveTracer::TraceNew(const CurveKey& key, CurveTrace& out, int curveId)
+{
   TraceStatus status;
-  switch (type)
+  switch (key.Type)
   {
     case CurveType::GeodesicPolygon:
-      status = this->TraceGeodesicPolygon(key.Points, closed, out, curveId);
+      status = this->TraceGeodesicPolygon(key.Points, key.Closed, out, curveId);
       break;
     case CurveType::CubicBezier:
-      status = this->TraceBezierSpline(key.Points, closed, out, curveId);
+      status = this->TraceBezierSpline(key.Points, key.Closed, out, curveId);
       break;
     default:
       return TraceStatus::Failure(CurveLabel(curveId) + ": unknown curve type " +
-        std::to_string(static_cast<int>(type)) + " (0: geodesic polygon, 1: cubic Bezier)");
+        std::to_string(static_cast<int>(key.Type)) + " (0: geodesic polygon, 1: cubic Bezier)");
   }
   if (status && this->KeepWrittenForms)
   {
-    ComputeWrittenForms(mesh, out);
-  }
-  constexpr std::size_t MemoryLimit = std::size_t(1) << 20;
-  if (status && out.Curve.Points.size() <= MemoryLimit)
-  {
-    if (this->MemoryPoints + out.Curve.Points.size() > MemoryLimit)
-    {
-      this->Memory.clear();
-      this->MemoryPoints = 0;
-    }
-    RememberedCurve& entry = this->Memory[std::move(key)];
-    this->MemoryPoints += out.Curve.Points.size() - entry.Trace.Curve.Points.size();
-    entry.Trace = out;
-    entry.Pass = this->Pass;
+    ComputeWrittenForms(this->Solver.GetMesh(), out);
   }
   return status;
+}
+
+//------------------------------------------------------------------------------
+void CurveTracer::Remember(CurveKey&& key, const CurveTrace& trace)
+{
+  constexpr std::size_t MemoryLimit = std::size_t(1) << 20;
+  if (trace.Curve.Points.size() > MemoryLimit)
+  {
+    return;
+  }
+  if (this->MemoryPoints + trace.Curve.Points.size() > MemoryLimit)
+  {
+    this->Memory.clear();
+    this->MemoryPoints = 0;
+  }
+  RememberedCurve& entry = this->Memory[std::move(key)];
+  this->MemoryPoints += trace.Curve.Points.size() - entry.Trace.Curve.Points.size();
+  entry.Trace = trace;
+  entry.Pass = this->Pass;
+}
+
+//------------------------------------------------------------------------------
+void CurveTracer::TraceCurves(const std::vector<CurveRequest>& curves,
+  int threads,
+  std::vector<CurveTrace>& out,
+  std::vector<TraceStatus>& statuses,
+  const std::function<bool(double)>& progress)
+{
+  const std::size_t n = curves.size();
+  out.assign(n, CurveTrace());
+  statuses.assign(n, TraceStatus::Success());
+  // Validation and the memory first, in order, on this thread.
+  std::vector<CurveKey> keys(n);
+  std::vector<std::size_t> todo;
+  for (std::size_t c = 0; c < n; ++c)
+  {
+    const CurveRequest& r = curves[c];
+    statuses[c] = this->MakeKey(*r.Points, r.Type, r.Closed, r.CurveId, keys[c]);
+    if (statuses[c] && !this->Recall(keys[c], out[c], r.CurveId))
+    {
+      todo.push_back(c);
+    }
+  }
+  // No more threads than cores (TBB would not give them) nor than curves to trace.
+  const int cores = std::max(1, tbb::info::default_concurrency());
+  int workers = threads > 0 ? std::min(threads, cores) : cores;
+  workers = std::min<int>(workers, static_cast<int>(todo.size()));
+  if (this->Solver.GetMethod() == GeodesicMethod::LocallyShortest)
+  {
+    workers = 1;
+  }
+  std::atomic<bool> stopped{ false };
+  std::atomic<std::size_t> done{ 0 };
+  const std::thread::id caller = std::this_thread::get_id();
+  const auto traceOne = [&](CurveTracer& tracer, std::size_t k, bool onCaller)
+  {
+    const std::size_t c = todo[k];
+    if (stopped.load(std::memory_order_relaxed))
+    {
+      statuses[c] = TraceStatus::Failure(CurveLabel(curves[c].CurveId) + ": not traced (aborted)");
+      return;
+    }
+    statuses[c] = tracer.TraceNew(keys[c], out[c], curves[c].CurveId);
+    const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
+    if (onCaller && progress && !progress(static_cast<double>(finished) / todo.size()))
+    {
+      stopped = true;
+    }
+  };
+  if (workers <= 1)
+  {
+    for (std::size_t k = 0; k < todo.size(); ++k)
+    {
+      traceOne(*this, k, true);
+    }
+  }
+  else
+  {
+    while (static_cast<int>(this->Helpers.size()) < workers - 1)
+    {
+      this->Helpers.push_back(std::make_unique<CurveTracer>(this->Solver.GetMesh()));
+    }
+    for (std::unique_ptr<CurveTracer>& helper : this->Helpers)
+    {
+      helper->Resolution = this->Resolution;
+      helper->KeepWrittenForms = this->KeepWrittenForms;
+      helper->Solver.CopySettings(this->Solver);
+    }
+    // One task per curve (their costs differ by orders of magnitude); each arena slot has its
+    // own tracer: this one for slot 0, a helper for each other.
+    tbb::task_arena arena(workers);
+    arena.execute(
+      [&]
+      {
+        tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, todo.size(), 1),
+          [&](const tbb::blocked_range<std::size_t>& range)
+          {
+            const int slot = tbb::this_task_arena::current_thread_index();
+            CurveTracer& tracer = slot <= 0 ? *this : *this->Helpers[slot - 1];
+            for (std::size_t k = range.begin(); k < range.end(); ++k)
+            {
+              traceOne(tracer, k, std::this_thread::get_id() == caller);
+            }
+          },
+          tbb::simple_partitioner());
+      });
+  }
+  for (std::size_t c : todo)
+  {
+    if (statuses[c])
+    {
+      this->Remember(CurveKey(keys[c]), out[c]);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -14,6 +14,8 @@
 #include "Geodesic/TracedCurve.h"
 
 #include <cstddef>
+#include <functional>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -82,6 +84,29 @@ public:
     CurveTrace& out,
     int curveId = 0);
 
+  /// One curve of TraceCurves().
+  struct CurveRequest
+  {
+    const std::vector<SurfacePoint>* Points = nullptr;
+    CurveType Type = CurveType::GeodesicPolygon;
+    bool Closed = true;
+    int CurveId = 0;
+  };
+  /// Trace() for every curve of `curves` (out[c] and statuses[c] as Trace() gives them one by
+  /// one, bit for bit), on up to `threads` threads (0: all cores). Curves the memory recalls
+  /// are recalled; the others are traced in parallel, by this tracer and helper tracers it
+  /// keeps on the same mesh with its settings, then remembered. A leg's geodesic does not
+  /// depend on which solver computes it: the Bounded and Exact methods are functions of the
+  /// leg's ends (the surface's site graph and path cache are shared and thread-safe). The
+  /// locally shortest method is not (its edge search breaks ties by a landmark table each
+  /// solver builds lazily), so it traces on this thread only. `progress` (may be empty) is
+  /// called on the calling thread with the fraction done; returning false stops the tracing
+  /// (the curves not traced get a failed status).
+  void TraceCurves(const std::vector<CurveRequest>& curves,
+    int threads,
+    std::vector<CurveTrace>& out,
+    std::vector<TraceStatus>& statuses,
+    const std::function<bool(double)>& progress = {});
   GeodesicPathSolver& GetPathSolver() { return this->Solver; }
 
   /// Trace() remembers the curves it traced: the same control points (bit for bit), type and
@@ -103,6 +128,18 @@ public:
   void SetKeepWrittenForms(bool keep) { this->KeepWrittenForms = keep; }
 
 private:
+  struct CurveKey;
+  /// Validates and canonicalizes a curve's control points into `key`.
+  TraceStatus MakeKey(const std::vector<SurfacePoint>& points,
+    CurveType type,
+    bool closed,
+    int curveId,
+    CurveKey& key) const;
+  /// The remembered trace of `key` into `out`, if any.
+  bool Recall(const CurveKey& key, CurveTrace& out, int curveId);
+  /// Traces `key` (without the memory).
+  TraceStatus TraceNew(const CurveKey& key, CurveTrace& out, int curveId);
+  void Remember(CurveKey&& key, const CurveTrace& trace);
   /// The geodesic between a and b, computed from whichever of the two comes first in a fixed
   /// order of surface points and reversed if needed: a leg traced both ways (two polygons
   /// sharing an edge, a spike, a curve and its reverse) is the same polyline bit for bit, so
@@ -154,6 +191,8 @@ private:
   std::size_t MemoryPoints = 0; ///< traced points held by Memory
   GeodesicPath Path;
   std::vector<CanonicalPoint> Refined;
+  /// TraceCurves()'s other tracers, one per extra thread (built on first use).
+  std::vector<std::unique_ptr<CurveTracer>> Helpers;
 };
 
 } // namespace boolsurf

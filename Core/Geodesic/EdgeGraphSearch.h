@@ -87,6 +87,7 @@ public:
   /// most as much on searches before it as the build costs (ski rental: never more than twice
   /// the better choice in hindsight). 0 builds on first use.
   void SetLandmarkBuildThreshold(double timesVertices) { this->BuildThreshold = timesVertices; }
+  double GetLandmarkBuildThreshold() const { return this->BuildThreshold; }
 
   /// Builds the landmark table now (no-op when built or disabled).
   void BuildLandmarks();

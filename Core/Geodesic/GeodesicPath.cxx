@@ -279,6 +279,23 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
 }
 
 //------------------------------------------------------------------------------
+void GeodesicPathSolver::CopySettings(const GeodesicPathSolver& other)
+{
+  this->MaximumRounds = other.MaximumRounds;
+  this->Search.SetHeuristicWeight(other.Search.GetHeuristicWeight());
+  if (this->EdgeSearch.GetNumberOfLandmarks() != other.EdgeSearch.GetNumberOfLandmarks())
+  {
+    this->EdgeSearch.SetNumberOfLandmarks(other.EdgeSearch.GetNumberOfLandmarks()); // drops a table
+  }
+  this->EdgeSearch.SetLandmarkBuildThreshold(other.EdgeSearch.GetLandmarkBuildThreshold());
+  this->UseEdgePathStrip = other.UseEdgePathStrip;
+  this->Method = other.Method;
+  this->ExactWindows = other.ExactWindows;
+  this->BoundedWindows = other.BoundedWindows;
+  this->RouteTolerance = other.RouteTolerance;
+}
+
+//------------------------------------------------------------------------------
 // The site graph's lengths are only as accurate as its cells are small (a route zigzags
 // through the sites), so where two homotopy classes are nearly as long it may pick the longer
 // one: a second route, kept away from the middle of the first (its sites there and their

@@ -173,6 +173,9 @@ public:
   /// homotopy class) is straightened too when its site-graph length is within this fraction
   /// of the first route's (default 0.15; 0 disables).
   void SetRouteTolerance(double f) { this->RouteTolerance = f; }
+  /// Takes every setting above from `other` (a solver on the same mesh): a second solver
+  /// then computes the same paths, for tracing on several threads.
+  void CopySettings(const GeodesicPathSolver& other);
   /// The surface's cache of costly legs (null before the first Compute).
   const GeodesicPathCache* GetPathCache() const { return this->Cache.get(); }
   /// The surface's site graph (built on the first routed leg; null before).

@@ -171,6 +171,7 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
   traceOptions.Resolution = options.Resolution;
   traceOptions.ProjectionTolerance = options.ProjectionTolerance;
   traceOptions.Method = options.Method;
+  traceOptions.Threads = options.Threads;
   std::vector<TracedCurve> traced;
   if (!TraceControlCurves(
         cache, curves, traceOptions, nullptr, traced, nullptr, problems, notes, nullptr, &controls))

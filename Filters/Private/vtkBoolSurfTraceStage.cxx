@@ -295,27 +295,41 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   tracer.SetKeepWrittenForms(output != nullptr); // see WriteTraces
   tracer.GetPathSolver().SetMethod(options.Method);
   tracer.StartPass(); // curves of the update before the last one are forgotten
-  std::vector<CurveTrace> traces(controls.size());
+  std::vector<CurveTracer::CurveRequest> requests(controls.size());
   for (size_t c = 0; c < controls.size(); ++c)
   {
-    if (progress)
-    {
-      progress->UpdateProgress(static_cast<double>(c) / controls.size());
-      if (progress->CheckAbort())
-      {
-        return false;
-      }
-    }
     const ControlCurve& control = controls[c];
-    TraceStatus status =
-      tracer.Trace(control.Points, control.Type, control.Closed, traces[c], control.CurveId);
-    if (!status)
+    requests[c] = { &control.Points, control.Type, control.Closed, control.CurveId };
+  }
+  std::vector<CurveTrace> traces;
+  std::vector<TraceStatus> statuses;
+  bool aborted = false;
+  tracer.TraceCurves(requests,
+    options.Threads,
+    traces,
+    statuses,
+    [&](double fraction)
     {
-      problems.push_back(status.Message);
+      if (progress)
+      {
+        progress->UpdateProgress(fraction);
+        aborted = aborted || progress->CheckAbort();
+      }
+      return !aborted;
+    });
+  if (aborted)
+  {
+    return false;
+  }
+  for (size_t c = 0; c < controls.size(); ++c)
+  {
+    if (!statuses[c])
+    {
+      problems.push_back(statuses[c].Message);
       continue;
     }
-    traces[c].Curve.ShapeId = control.ShapeId;
-    traces[c].Curve.CurveId = control.CurveId;
+    traces[c].Curve.ShapeId = controls[c].ShapeId;
+    traces[c].Curve.CurveId = controls[c].CurveId;
   }
   if (!problems.empty())
   {

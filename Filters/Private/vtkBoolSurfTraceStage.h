@@ -24,6 +24,8 @@ struct TraceOptions
   double ProjectionTolerance = 0.01; ///< fraction of the surface's bounding-box diagonal
   /// How each geodesic leg is computed (see GeodesicMethod in Geodesic/GeodesicPath.h).
   GeodesicMethod Method = GeodesicMethod::Bounded;
+  /// Curves traced at once (0: all cores; see CurveTracer::TraceCurves).
+  int Threads = 0;
 };
 
 /// Traces every curve of `controlCurves` on the cached surface. On success fills `traced`
