@@ -58,6 +58,12 @@ CurveTracer::CurveTracer(const TriangleMesh& mesh)
 }
 
 //------------------------------------------------------------------------------
+CurveTracer::CurveTracer(const CurveTracer& main, GeodesicPathSolver::HelperTag tag)
+  : Solver(main.Solver, tag)
+{
+}
+
+//------------------------------------------------------------------------------
 void CurveTracer::SetResolution(int levels)
 {
   this->Resolution = std::max(0, std::min(levels, 16));
@@ -438,7 +444,8 @@ void CurveTracer::TraceCurves(const std::vector<CurveRequest>& curves,
   {
     while (static_cast<int>(this->Helpers.size()) < workers - 1)
     {
-      this->Helpers.push_back(std::make_unique<CurveTracer>(this->Solver.GetMesh()));
+      this->Helpers.push_back(
+        std::unique_ptr<CurveTracer>(new CurveTracer(*this, GeodesicPathSolver::HelperTag())));
     }
     for (std::unique_ptr<CurveTracer>& helper : this->Helpers)
     {

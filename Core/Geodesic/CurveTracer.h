@@ -128,6 +128,8 @@ public:
   void SetKeepWrittenForms(bool keep) { this->KeepWrittenForms = keep; }
 
 private:
+  /// A helper of TraceCurves: a tracer on `main`'s mesh whose solver shares what `main`'s can.
+  CurveTracer(const CurveTracer& main, GeodesicPathSolver::HelperTag tag);
   struct CurveKey;
   /// Validates and canonicalizes a curve's control points into `key`.
   TraceStatus MakeKey(const std::vector<SurfacePoint>& points,

@@ -102,15 +102,84 @@ const char* GeodesicMethodName(GeodesicMethod method)
 
 //------------------------------------------------------------------------------
 GeodesicPathSolver::GeodesicPathSolver(const TriangleMesh& mesh)
-  : Search(mesh)
-  , EdgeSearch(mesh)
+  : Mesh(mesh)
+  , Search(std::make_unique<DualGraphSearch>(mesh))
+  , EdgeSearch(std::make_unique<EdgeGraphSearch>(mesh))
+  , Components(Search.get())
   , Exact(mesh)
   , StripPosition(mesh.GetNumberOfTriangles(), 0)
   , StripPositionStamp(mesh.GetNumberOfTriangles(), 0u)
 {
   // The dual search is only the fallback when no strip can be built along the edge path;
-  // greedy there, since any strip is straightened to a locally shortest path.
-  this->Search.SetHeuristicWeight(2.0);
+  // greedy there (HeuristicWeight 2), since any strip is straightened to a locally shortest
+  // path.
+  this->Search->SetHeuristicWeight(this->HeuristicWeight);
+  this->LandmarkCount = this->EdgeSearch->GetNumberOfLandmarks();
+  this->LandmarkBuildThreshold = this->EdgeSearch->GetLandmarkBuildThreshold();
+}
+
+//------------------------------------------------------------------------------
+GeodesicPathSolver::GeodesicPathSolver(const GeodesicPathSolver& main, HelperTag)
+  : Mesh(main.Mesh)
+  , Components(main.Components)
+  , Exact(main.Mesh)
+  , StripPosition(main.Mesh.GetNumberOfTriangles(), 0)
+  , StripPositionStamp(main.Mesh.GetNumberOfTriangles(), 0u)
+{
+  this->CopySettings(main);
+}
+
+//------------------------------------------------------------------------------
+DualGraphSearch& GeodesicPathSolver::Dual()
+{
+  if (!this->Search)
+  {
+    this->Search = std::make_unique<DualGraphSearch>(this->Mesh);
+    this->Search->SetHeuristicWeight(this->HeuristicWeight);
+  }
+  return *this->Search;
+}
+
+//------------------------------------------------------------------------------
+EdgeGraphSearch& GeodesicPathSolver::Edges()
+{
+  if (!this->EdgeSearch)
+  {
+    this->EdgeSearch = std::make_unique<EdgeGraphSearch>(this->Mesh);
+    this->EdgeSearch->SetNumberOfLandmarks(this->LandmarkCount);
+    this->EdgeSearch->SetLandmarkBuildThreshold(this->LandmarkBuildThreshold);
+  }
+  return *this->EdgeSearch;
+}
+
+//------------------------------------------------------------------------------
+void GeodesicPathSolver::SetHeuristicWeight(double w)
+{
+  this->HeuristicWeight = w;
+  if (this->Search)
+  {
+    this->Search->SetHeuristicWeight(w);
+  }
+}
+
+//------------------------------------------------------------------------------
+void GeodesicPathSolver::SetNumberOfLandmarks(int n)
+{
+  if (this->EdgeSearch && this->EdgeSearch->GetNumberOfLandmarks() != n)
+  {
+    this->EdgeSearch->SetNumberOfLandmarks(n); // drops a built table
+  }
+  this->LandmarkCount = n;
+}
+
+//------------------------------------------------------------------------------
+void GeodesicPathSolver::SetLandmarkBuildThreshold(double t)
+{
+  this->LandmarkBuildThreshold = t;
+  if (this->EdgeSearch)
+  {
+    this->EdgeSearch->SetLandmarkBuildThreshold(t);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -234,7 +303,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   }
   if (!haveStrip && !(this->UseEdgePathStrip && this->StripFromEdgePath(start, end)))
   {
-    if (!this->Search.FindStrip(this->StartTriangles,
+    if (!this->Dual().FindStrip(this->StartTriangles,
           PositionOf(mesh, start),
           this->EndTriangles,
           PositionOf(mesh, end),
@@ -243,7 +312,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
       return TraceStatus::Failure("no triangle strip joins " + Describe(start) + " and " +
         Describe(end) + " although they share a component (corrupt adjacency?)");
     }
-    this->Statistics.ExpandedTriangles = this->Search.GetLastExpandedCount();
+    this->Statistics.ExpandedTriangles = this->Dual().GetLastExpandedCount();
   }
   if (!this->Straighten(start, end))
   {
@@ -282,12 +351,9 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
 void GeodesicPathSolver::CopySettings(const GeodesicPathSolver& other)
 {
   this->MaximumRounds = other.MaximumRounds;
-  this->Search.SetHeuristicWeight(other.Search.GetHeuristicWeight());
-  if (this->EdgeSearch.GetNumberOfLandmarks() != other.EdgeSearch.GetNumberOfLandmarks())
-  {
-    this->EdgeSearch.SetNumberOfLandmarks(other.EdgeSearch.GetNumberOfLandmarks()); // drops a table
-  }
-  this->EdgeSearch.SetLandmarkBuildThreshold(other.EdgeSearch.GetLandmarkBuildThreshold());
+  this->SetHeuristicWeight(other.HeuristicWeight);
+  this->SetNumberOfLandmarks(other.LandmarkCount);
+  this->SetLandmarkBuildThreshold(other.LandmarkBuildThreshold);
   this->UseEdgePathStrip = other.UseEdgePathStrip;
   this->Method = other.Method;
   this->ExactWindows = other.ExactWindows;
@@ -500,9 +566,10 @@ bool GeodesicPathSolver::StripFromEdgePath(const CanonicalPoint& start, const Ca
 {
   const TriangleMesh& mesh = this->GetMesh();
   this->CollectTerminals(start, end);
-  const double length = this->EdgeSearch.FindPath(
+  EdgeGraphSearch& edges = this->Edges();
+  const double length = edges.FindPath(
     this->Sources, PositionOf(mesh, start), this->Targets, PositionOf(mesh, end), this->VertexPath);
-  this->Statistics.SettledVertices = this->EdgeSearch.GetLastSettledCount();
+  this->Statistics.SettledVertices = edges.GetLastSettledCount();
   if (length < 0.0)
   {
     return false;

@@ -119,6 +119,16 @@ public:
   /// `mesh` must outlive the solver.
   explicit GeodesicPathSolver(const TriangleMesh& mesh);
 
+  struct HelperTag
+  {
+  };
+  /// A solver for another thread, on `main`'s mesh with `main`'s settings (CopySettings). It
+  /// reads `main`'s connected components (never written after construction, so both may run
+  /// at once) and builds its fallback searches (dual strip, edge path) only if a leg needs
+  /// them: it holds the exact search's buffers, about 40 bytes per vertex, where a full
+  /// solver holds about 150 bytes per triangle. `main` must outlive it.
+  GeodesicPathSolver(const GeodesicPathSolver& main, HelperTag);
+
   /// Locally shortest path from `start` to `end`. Fails with a message on invalid points and
   /// on points lying on different connected components.
   TraceStatus Compute(const CanonicalPoint& start, const CanonicalPoint& end, GeodesicPath& path);
@@ -126,10 +136,10 @@ public:
   /// Same for raw triangle + barycentric points (validated, then canonicalized exactly).
   TraceStatus Compute(const SurfacePoint& start, const SurfacePoint& end, GeodesicPath& path);
 
-  const TriangleMesh& GetMesh() const { return this->Search.GetMesh(); }
+  const TriangleMesh& GetMesh() const { return this->Mesh; }
   /// Connected component of usable triangle t (edge adjacency), -1 for unusable triangles.
-  int GetComponent(int t) const { return this->Search.GetComponent(t); }
-  int GetNumberOfComponents() const { return this->Search.GetNumberOfComponents(); }
+  int GetComponent(int t) const { return this->Components->GetComponent(t); }
+  int GetNumberOfComponents() const { return this->Components->GetNumberOfComponents(); }
   const GeodesicPathStatistics& GetLastStatistics() const { return this->Statistics; }
 
   /// Upper bound on funnel runs per path (each run after the first shortens the path, so the
@@ -138,16 +148,16 @@ public:
 
   /// See DualGraphSearch::SetHeuristicWeight: the weight of the fallback dual search
   /// (default 2, greedy). The edge-path search is always exact.
-  void SetHeuristicWeight(double w) { this->Search.SetHeuristicWeight(w); }
+  void SetHeuristicWeight(double w);
 
   /// Landmarks of the exact edge-path search (see EdgeGraphSearch: ALT lower bounds, built
   /// once per mesh; default 16, 0 disables). The edge path found is as short either way.
-  void SetNumberOfLandmarks(int n) { this->EdgeSearch.SetNumberOfLandmarks(n); }
+  void SetNumberOfLandmarks(int n);
   /// See EdgeGraphSearch::SetLandmarkBuildThreshold (default 1; 0 builds on first use).
-  void SetLandmarkBuildThreshold(double t) { this->EdgeSearch.SetLandmarkBuildThreshold(t); }
+  void SetLandmarkBuildThreshold(double t);
   /// Builds the landmark table now rather than lazily.
-  void PrepareLandmarks() { this->EdgeSearch.BuildLandmarks(); }
-  const EdgeGraphSearch& GetEdgeSearch() const { return this->EdgeSearch; }
+  void PrepareLandmarks() { this->Edges().BuildLandmarks(); }
+  const EdgeGraphSearch& GetEdgeSearch() { return this->Edges(); }
 
   /// Seed with the dual-graph strip only (no edge-path bound); for benchmarks and tests.
   void SetUseEdgePathStrip(bool on) { this->UseEdgePathStrip = on; }
@@ -240,8 +250,18 @@ private:
     int last,
     std::vector<int>& swept) const;
 
-  DualGraphSearch Search;
-  EdgeGraphSearch EdgeSearch;
+  /// The fallback searches, built on first use (at construction, except in helpers).
+  DualGraphSearch& Dual();
+  EdgeGraphSearch& Edges();
+
+  const TriangleMesh& Mesh;
+  std::unique_ptr<DualGraphSearch> Search;
+  std::unique_ptr<EdgeGraphSearch> EdgeSearch;
+  const DualGraphSearch* Components; // Search, or the main solver's for a helper
+  // The fallback searches' settings, kept here for searches not built yet.
+  double HeuristicWeight = 2.0;
+  int LandmarkCount = 16;
+  double LandmarkBuildThreshold = 1.0;
   ExactGeodesicSearch Exact;
   std::shared_ptr<const SurfaceSiteGraph> SiteGraph;
   std::unique_ptr<EdgeGraphSearch> PlainEdgeSearch; // no landmarks: see TryEdgePathCandidate
