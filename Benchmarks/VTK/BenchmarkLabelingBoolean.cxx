@@ -304,6 +304,29 @@ void BM_OneStepScene(benchmark::State& state, benchutil::SceneFile file)
   state.counters["cells"] = scene.Cells;
 }
 
+/// The stage filters chained on a scene (Trace Surface Curves -> Surface Arrangement -> Label
+/// Arrangement Cells -> Surface Boolean of the scene's expression).
+struct SceneChain
+{
+  vtkNew<vtkBoolSurfTraceCurves> Trace;
+  vtkNew<vtkBoolSurfArrangement> Arrange;
+  vtkNew<vtkBoolSurfLabeling> Label;
+  vtkNew<vtkBoolSurfBoolean> Boolean;
+
+  SceneChain(const PreparedScene& scene, int threads)
+  {
+    this->Trace->SetInputData(0, scene.Mesh);
+    this->Trace->SetInputData(1, scene.Curves);
+    this->Arrange->SetInputData(0, scene.Mesh);
+    this->Arrange->SetInputConnection(1, this->Trace->GetOutputPort());
+    this->Arrange->SetNumberOfThreads(threads);
+    this->Label->SetInputConnection(this->Arrange->GetOutputPort(0));
+    this->Boolean->SetInputConnection(this->Label->GetOutputPort(0));
+    this->Boolean->SetOperationToExpression();
+    this->Boolean->SetExpression(scene.Expression.c_str());
+  }
+};
+
 // The same edits through the stage filters (Trace Surface Curves -> Surface Arrangement ->
 // Label Arrangement Cells -> Surface Boolean). The benchmark's time is the whole edit as the
 // user waits for it: one update of the last filter, as ParaView and pvpython update a pipeline
@@ -319,19 +342,11 @@ void BM_StageChainScene(benchmark::State& state, benchutil::SceneFile file)
     state.SkipWithError(scene.Error.empty() ? "no consistent shape" : scene.Error.c_str());
     return;
   }
-  vtkNew<vtkBoolSurfTraceCurves> trace;
-  trace->SetInputData(0, scene.Mesh);
-  trace->SetInputData(1, scene.Curves);
-  vtkNew<vtkBoolSurfArrangement> arrange;
-  arrange->SetInputData(0, scene.Mesh);
-  arrange->SetInputConnection(1, trace->GetOutputPort());
-  arrange->SetNumberOfThreads(static_cast<int>(state.range(0)));
-  vtkNew<vtkBoolSurfLabeling> label;
-  label->SetInputConnection(arrange->GetOutputPort(0));
-  vtkNew<vtkBoolSurfBoolean> boolean;
-  boolean->SetInputConnection(label->GetOutputPort(0));
-  boolean->SetOperationToExpression();
-  boolean->SetExpression(scene.Expression.c_str());
+  SceneChain chain(scene, static_cast<int>(state.range(0)));
+  vtkBoolSurfTraceCurves* trace = chain.Trace;
+  vtkBoolSurfArrangement* arrange = chain.Arrange;
+  vtkBoolSurfLabeling* label = chain.Label;
+  vtkBoolSurfBoolean* boolean = chain.Boolean;
   for (int warm = 0; warm < 3; ++warm) // surface conversions, first trace, both buffers
   {
     scene.Curves->Modified();
@@ -386,19 +401,8 @@ void BM_PairedSceneEdit(benchmark::State& state, benchutil::SceneFile file)
   one->SetOperationToExpression();
   one->SetExpression(scene.Expression.c_str());
   one->SetNumberOfThreads(threads);
-  vtkNew<vtkBoolSurfTraceCurves> trace;
-  trace->SetInputData(0, scene.Mesh);
-  trace->SetInputData(1, scene.Curves);
-  vtkNew<vtkBoolSurfArrangement> arrange;
-  arrange->SetInputData(0, scene.Mesh);
-  arrange->SetInputConnection(1, trace->GetOutputPort());
-  arrange->SetNumberOfThreads(threads);
-  vtkNew<vtkBoolSurfLabeling> label;
-  label->SetInputConnection(arrange->GetOutputPort(0));
-  vtkNew<vtkBoolSurfBoolean> chain;
-  chain->SetInputConnection(label->GetOutputPort(0));
-  chain->SetOperationToExpression();
-  chain->SetExpression(scene.Expression.c_str());
+  SceneChain stages(scene, threads);
+  vtkBoolSurfBoolean* chain = stages.Boolean;
   for (int warm = 0; warm < 3; ++warm) // surface conversions, first trace, both buffers
   {
     scene.Curves->Modified();
