@@ -2,6 +2,7 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
+#include "Geodesic/CurveTracer.h"
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Selection/RegionExtraction.h"
 #include "vtkBoolSurfBSCStage.h"
@@ -208,10 +209,13 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
   // The control points are traced as the curves were (the tracer is shared with the cache's
   // other users, which set their own method).
   boolsurf::GeodesicPathSolver* solver = nullptr;
+  std::vector<boolsurf::GeodesicPathSolver*> cutSolvers; // the Bezier cuts, on every thread
   if (this->ComputeControlCurves)
   {
-    solver = &this->GetSurfaceCache().GetTracer().GetPathSolver();
+    boolsurf::CurveTracer& tracer = this->GetSurfaceCache().GetTracer();
+    solver = &tracer.GetPathSolver();
     solver->SetMethod(static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod));
+    cutSolvers = tracer.GetSolvers(this->NumberOfThreads);
   }
   if (!boolsurf::WriteSelectedCells(*surface,
         in.Arrangement,
@@ -224,7 +228,8 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
         boundaryControls,
         clipped,
         error,
-        &times))
+        &times,
+        cutSolvers))
   {
     return false;
   }

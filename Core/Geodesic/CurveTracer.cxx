@@ -6,6 +6,7 @@
 #include <atomic>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <thread>
 
 #include <tbb/blocked_range.h>
@@ -386,6 +387,44 @@ void CurveTracer::Remember(CurveKey&& key, const CurveTrace& trace)
 }
 
 //------------------------------------------------------------------------------
+int CurveTracer::PrepareHelpers(int threads, std::size_t tasks)
+{
+  // No more threads than cores (TBB would not give them) nor than tasks.
+  const int cores = std::max(1, tbb::info::default_concurrency());
+  int workers = threads > 0 ? std::min(threads, cores) : cores;
+  workers = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(workers), tasks));
+  if (this->Solver.GetMethod() == GeodesicMethod::LocallyShortest)
+  {
+    workers = 1;
+  }
+  while (static_cast<int>(this->Helpers.size()) < workers - 1)
+  {
+    this->Helpers.push_back(
+      std::unique_ptr<CurveTracer>(new CurveTracer(*this, GeodesicPathSolver::HelperTag())));
+  }
+  for (int k = 0; k + 1 < workers; ++k)
+  {
+    CurveTracer& helper = *this->Helpers[k];
+    helper.Resolution = this->Resolution;
+    helper.KeepWrittenForms = this->KeepWrittenForms;
+    helper.Solver.CopySettings(this->Solver);
+  }
+  return std::max(1, workers);
+}
+
+//------------------------------------------------------------------------------
+std::vector<GeodesicPathSolver*> CurveTracer::GetSolvers(int threads)
+{
+  const int workers = this->PrepareHelpers(threads, std::numeric_limits<std::size_t>::max());
+  std::vector<GeodesicPathSolver*> solvers{ &this->Solver };
+  for (int k = 0; k + 1 < workers; ++k)
+  {
+    solvers.push_back(&this->Helpers[k]->Solver);
+  }
+  return solvers;
+}
+
+//------------------------------------------------------------------------------
 void CurveTracer::TraceCurves(const std::vector<CurveRequest>& curves,
   int threads,
   std::vector<CurveTrace>& out,
@@ -407,14 +446,7 @@ void CurveTracer::TraceCurves(const std::vector<CurveRequest>& curves,
       todo.push_back(c);
     }
   }
-  // No more threads than cores (TBB would not give them) nor than curves to trace.
-  const int cores = std::max(1, tbb::info::default_concurrency());
-  int workers = threads > 0 ? std::min(threads, cores) : cores;
-  workers = std::min<int>(workers, static_cast<int>(todo.size()));
-  if (this->Solver.GetMethod() == GeodesicMethod::LocallyShortest)
-  {
-    workers = 1;
-  }
+  const int workers = this->PrepareHelpers(threads, todo.size());
   std::atomic<bool> stopped{ false };
   std::atomic<std::size_t> done{ 0 };
   const std::thread::id caller = std::this_thread::get_id();
@@ -442,17 +474,6 @@ void CurveTracer::TraceCurves(const std::vector<CurveRequest>& curves,
   }
   else
   {
-    while (static_cast<int>(this->Helpers.size()) < workers - 1)
-    {
-      this->Helpers.push_back(
-        std::unique_ptr<CurveTracer>(new CurveTracer(*this, GeodesicPathSolver::HelperTag())));
-    }
-    for (std::unique_ptr<CurveTracer>& helper : this->Helpers)
-    {
-      helper->Resolution = this->Resolution;
-      helper->KeepWrittenForms = this->KeepWrittenForms;
-      helper->Solver.CopySettings(this->Solver);
-    }
     // One task per curve (their costs differ by orders of magnitude); each arena slot has its
     // own tracer: this one for slot 0, a helper for each other.
     tbb::task_arena arena(workers);

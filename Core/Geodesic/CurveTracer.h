@@ -108,6 +108,10 @@ public:
     std::vector<TraceStatus>& statuses,
     const std::function<bool(double)>& progress = {});
   GeodesicPathSolver& GetPathSolver() { return this->Solver; }
+  /// This tracer's solver then its helpers' (made as needed, given its settings): one per
+  /// thread, up to `threads` (0: all cores), for other work split over threads on the same
+  /// legs' terms (see TraceCurves; only this tracer's solver with the locally shortest method).
+  std::vector<GeodesicPathSolver*> GetSolvers(int threads);
 
   /// Trace() remembers the curves it traced: the same control points (bit for bit), type and
   /// closure, at the same resolution and geodesic method, give the same trace again without
@@ -142,6 +146,8 @@ private:
   /// Traces `key` (without the memory).
   TraceStatus TraceNew(const CurveKey& key, CurveTrace& out, int curveId);
   void Remember(CurveKey&& key, const CurveTrace& trace);
+  /// Threads to use for `threads` (0: all cores) on `tasks` tasks, with helpers ready for them.
+  int PrepareHelpers(int threads, std::size_t tasks);
   /// The geodesic between a and b, computed from whichever of the two comes first in a fixed
   /// order of surface points and reversed if needed: a leg traced both ways (two polygons
   /// sharing an edge, a spike, a curve and its reverse) is the same polyline bit for bit, so

@@ -7,6 +7,11 @@
 #include <memory>
 #include <unordered_map>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
 namespace boolsurf
 {
 
@@ -317,13 +322,13 @@ TraceStatus BezierPieces::SplitAtCuts(GeodesicPathSolver& solver,
   return this->SplitAtCuts(solver, right, *middle, to, middle + 1, last, pieces);
 }
 
-TraceStatus BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve)
+void BezierPieces::CollectCuts(const TriangleMesh& mesh, int curve, std::vector<SegmentCuts>& jobs)
 {
   this->CurveCut[curve] = 1;
   const CurveSource& source = this->Sources[curve];
   if (source.Type != CurveType::CubicBezier || source.Controls.empty())
   {
-    return TraceStatus::Success();
+    return;
   }
   const int segments = NumberOfSegments(source);
   const int controls = static_cast<int>(source.Controls.size());
@@ -353,7 +358,6 @@ TraceStatus BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve)
       }
     }
   }
-  const TriangleMesh& mesh = solver.GetMesh();
   for (int seg = 0; seg < segments; ++seg)
   {
     std::vector<double>& at = cuts[seg];
@@ -372,14 +376,29 @@ TraceStatus BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve)
       }
     }
     at.resize(kept);
-    std::vector<Piece>& pieces = this->Segments[(static_cast<long long>(curve) << 32) | seg];
-    std::array<CanonicalPoint, 4> whole;
+    SegmentCuts job;
+    job.Curve = curve;
+    job.Segment = seg;
     for (int k = 0; k < 4; ++k)
     {
-      whole[k] = LocateSurfacePoint(mesh, source.Controls[(3 * seg + k) % controls]);
+      job.Whole[k] = LocateSurfacePoint(mesh, source.Controls[(3 * seg + k) % controls]);
     }
-    TraceStatus status =
-      this->SplitAtCuts(solver, whole, 0.0, 1.0, at.data(), at.data() + kept, pieces);
+    job.At = std::move(at);
+    jobs.push_back(std::move(job));
+  }
+}
+
+//------------------------------------------------------------------------------
+TraceStatus BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve)
+{
+  std::vector<SegmentCuts> jobs;
+  this->CollectCuts(solver.GetMesh(), curve, jobs);
+  for (const SegmentCuts& job : jobs)
+  {
+    std::vector<Piece>& pieces =
+      this->Segments[(static_cast<long long>(job.Curve) << 32) | job.Segment];
+    TraceStatus status = this->SplitAtCuts(
+      solver, job.Whole, 0.0, 1.0, job.At.data(), job.At.data() + job.At.size(), pieces);
     if (!status)
     {
       return status;
@@ -388,6 +407,72 @@ TraceStatus BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve)
   return TraceStatus::Success();
 }
 
+//------------------------------------------------------------------------------
+// Segments are independent (each is split from its own control polygon), so each is one task;
+// a segment's pieces are what CutCurve gives them, since a leg does not depend on the solver.
+TraceStatus BezierPieces::CutCurves(const std::vector<int>& curves,
+  const std::vector<GeodesicPathSolver*>& solvers)
+{
+  if (solvers.empty())
+  {
+    return TraceStatus::Success();
+  }
+  std::vector<SegmentCuts> jobs;
+  for (int curve : curves)
+  {
+    if (curve >= 0 && curve < static_cast<int>(this->Sources.size()) && !this->CurveCut[curve])
+    {
+      this->CollectCuts(solvers[0]->GetMesh(), curve, jobs);
+    }
+  }
+  std::vector<std::vector<Piece>> pieces(jobs.size());
+  std::vector<TraceStatus> statuses(jobs.size());
+  const auto cut = [&](GeodesicPathSolver& solver, std::size_t j)
+  {
+    const SegmentCuts& job = jobs[j];
+    statuses[j] = this->SplitAtCuts(
+      solver, job.Whole, 0.0, 1.0, job.At.data(), job.At.data() + job.At.size(), pieces[j]);
+  };
+  if (solvers.size() == 1 || jobs.size() < 2)
+  {
+    for (std::size_t j = 0; j < jobs.size(); ++j)
+    {
+      cut(*solvers[0], j);
+    }
+  }
+  else
+  {
+    tbb::task_arena arena(static_cast<int>(solvers.size()));
+    arena.execute(
+      [&]
+      {
+        tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, jobs.size(), 1),
+          [&](const tbb::blocked_range<std::size_t>& range)
+          {
+            const int slot = std::max(0, tbb::this_task_arena::current_thread_index());
+            GeodesicPathSolver& solver = *solvers[static_cast<std::size_t>(slot) % solvers.size()];
+            for (std::size_t j = range.begin(); j < range.end(); ++j)
+            {
+              cut(solver, j);
+            }
+          },
+          tbb::simple_partitioner());
+      });
+  }
+  for (std::size_t j = 0; j < jobs.size(); ++j)
+  {
+    if (!statuses[j])
+    {
+      return statuses[j];
+    }
+    this->Segments[(static_cast<long long>(jobs[j].Curve) << 32) | jobs[j].Segment] =
+      std::move(pieces[j]);
+  }
+  return TraceStatus::Success();
+}
+
+//------------------------------------------------------------------------------
 TraceStatus BezierPieces::Get(GeodesicPathSolver& solver,
   int curve,
   int segment,

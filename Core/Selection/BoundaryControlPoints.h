@@ -102,12 +102,28 @@ public:
     std::array<CanonicalPoint, 4>& out,
     bool& found);
 
+  /// Cuts now the Bezier segments of `curves` that Get() would cut when first asked, into the
+  /// same pieces, segment by segment on several threads: `solvers` holds one solver per
+  /// thread (the arena slot's), all on the arrangement's mesh with the same settings and a
+  /// method whose legs do not depend on the solver (see CurveTracer::TraceCurves).
+  TraceStatus CutCurves(const std::vector<int>& curves,
+    const std::vector<GeodesicPathSolver*>& solvers);
+
 private:
   struct Piece
   {
     double A, B;
     std::array<CanonicalPoint, 4> Controls;
   };
+  /// One segment to cut: its control polygon and its cuts (sorted, distinct, inside (0, 1)).
+  struct SegmentCuts
+  {
+    int Curve = -1, Segment = -1;
+    std::array<CanonicalPoint, 4> Whole;
+    std::vector<double> At;
+  };
+  /// The segments of `curve` with cuts (the curve is marked cut).
+  void CollectCuts(const TriangleMesh& mesh, int curve, std::vector<SegmentCuts>& jobs);
   TraceStatus CutCurve(GeodesicPathSolver& solver, int curve);
   TraceStatus SplitAtCuts(GeodesicPathSolver& solver,
     const std::array<CanonicalPoint, 4>& polygon,

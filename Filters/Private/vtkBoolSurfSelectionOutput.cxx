@@ -32,7 +32,8 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
   vtkPolyData* controls,
   vtkPolyData* clipped,
   std::string& error,
-  SelectionOutputTimes* times)
+  SelectionOutputTimes* times,
+  const std::vector<GeodesicPathSolver*>& cutSolvers)
 {
   const Clock::time_point start = Clock::now();
   RegionExtractor::SelectedTriangles(selected, arr, buffers.RegionTriangles);
@@ -59,8 +60,51 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
   if (solver)
   {
     BezierPieces bezier(arr, sources); // each Bezier segment cut once for both outputs
-    TraceStatus status =
-      BoundaryControlCurves(*solver, arr, sources, loops, buffers.SubCurves, &bezier);
+    TraceStatus status = TraceStatus::Success();
+    if (cutSolvers.size() > 1)
+    {
+      // The curves both outputs need: those along the boundary and the open ones with a patch
+      // on a selected cell (a superset only costs cuts not used).
+      std::vector<char> needed(sources.size(), 0);
+      const auto need = [&](int curve)
+      {
+        if (curve >= 0 && curve < static_cast<int>(needed.size()))
+        {
+          needed[curve] = 1;
+        }
+      };
+      for (const BoundaryPolyline& loop : loops)
+      {
+        for (int p : loop.Patches)
+        {
+          need(arr.Patches[p].Curve);
+        }
+      }
+      for (const ArrangementPatch& p : arr.Patches)
+      {
+        const bool open =
+          p.Curve >= 0 && p.Curve < static_cast<int>(sources.size()) && !sources[p.Curve].Closed;
+        if (open &&
+          ((p.LeftCell >= 0 && selected[p.LeftCell]) ||
+            (p.RightCell >= 0 && selected[p.RightCell])))
+        {
+          need(p.Curve);
+        }
+      }
+      std::vector<int> curves;
+      for (std::size_t c = 0; c < needed.size(); ++c)
+      {
+        if (needed[c])
+        {
+          curves.push_back(static_cast<int>(c));
+        }
+      }
+      status = bezier.CutCurves(curves, cutSolvers);
+    }
+    if (status)
+    {
+      status = BoundaryControlCurves(*solver, arr, sources, loops, buffers.SubCurves, &bezier);
+    }
     if (status)
     {
       WriteControlSubCurves(buffers.SubCurves, "BoundaryLoop", true, controls);

@@ -44,7 +44,8 @@ struct SelectionOutputTimes
 /// `boundary` (oriented loops, region on the left) and, when `solver` is given, `controls` and
 /// `clipped`: the boundary and the clipped open curves as control points of the input curves
 /// `sources` (ports 2 and 3 of vtkBoolSurf). False with a message when those control points
-/// cannot be recovered; the outputs are then empty.
+/// cannot be recovered; the outputs are then empty. `cutSolvers` (optional: one per thread,
+/// see BezierPieces::CutCurves) cut the output's Bezier segments in parallel.
 bool WriteSelectedCells(const vtkSurfaceInput& surface,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
@@ -56,7 +57,8 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
   vtkPolyData* controls,
   vtkPolyData* clipped,
   std::string& error,
-  SelectionOutputTimes* times = nullptr);
+  SelectionOutputTimes* times = nullptr,
+  const std::vector<GeodesicPathSolver*>& cutSolvers = {});
 
 /// WriteSelectedCells on an arrangement handed over by Surface Arrangement (the stage filters'
 /// path to the one-step outputs): the control-point outputs are computed with `solver` when the

@@ -873,3 +873,60 @@ TEST(BoundaryControlCurves, ReversedWholeSplineLoopStartsAtAnAnchor)
     EXPECT_NEAR(PolylineLength(again), PolylineLength(boundary), 1e-9);
   }
 }
+
+TEST(BoundaryControlCurves, SameOnOneAndSeveralThreads)
+{
+  // The Bezier cuts of the control-point outputs run segment by segment on every thread (and
+  // the curves are traced so): the outputs must not depend on the number of threads.
+  auto sphere = testutils::ToPolyData(boolsurf::MakeIcosphere(4));
+  auto at = [](double theta, double phi) -> std::array<double, 3> {
+    return { std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta) };
+  };
+  std::vector<ControlPolygon> drawing;
+  for (int s = 0; s < 3; ++s)
+  {
+    ControlPolygon spline;
+    spline.Type = 1;
+    spline.ShapeId = s;
+    for (int k = 0; k < 6; ++k)
+    {
+      spline.Points.push_back(at(0.6 + 0.25 * (k % 2) + 0.1 * s, 2 * 3.14159265358979 * k / 6 + s));
+    }
+    drawing.push_back(spline);
+  }
+  auto curves = testutils::ToCurves(drawing);
+  vtkSmartPointer<vtkPolyData> outputs[2][2];
+  for (int run = 0; run < 2; ++run)
+  {
+    vtkNew<vtkBoolSurf> f;
+    f->SetInputData(0, sphere);
+    f->SetInputData(1, curves);
+    f->SetOperationToExpression();
+    f->SetExpression("S0 | S1 | S2");
+    f->SetNumberOfThreads(run == 0 ? 1 : 2);
+    ASSERT_EQ(testutils::ErrorsOf(f), "");
+    for (int port = 0; port < 2; ++port)
+    {
+      outputs[run][port] = vtkSmartPointer<vtkPolyData>::New();
+      outputs[run][port]->DeepCopy(
+        port == 0 ? f->GetBoundaryControlCurvesOutput() : f->GetOutput());
+    }
+  }
+  for (int port = 0; port < 2; ++port)
+  {
+    vtkPolyData* a = outputs[0][port];
+    vtkPolyData* b = outputs[1][port];
+    ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints()) << "port " << port;
+    ASSERT_EQ(a->GetNumberOfCells(), b->GetNumberOfCells()) << "port " << port;
+    ASSERT_GT(a->GetNumberOfPoints(), 20);
+    for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+    {
+      double x[3], y[3];
+      a->GetPoint(i, x);
+      b->GetPoint(i, y);
+      ASSERT_EQ(x[0], y[0]) << "port " << port << " point " << i;
+      ASSERT_EQ(x[1], y[1]);
+      ASSERT_EQ(x[2], y[2]);
+    }
+  }
+}
