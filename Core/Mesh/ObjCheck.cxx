@@ -44,7 +44,14 @@ bool CheckObjIndices(const std::string& path, std::string& error)
     std::string item;
     while (words >> item)
     {
-      // v, v/vt, v//vn or v/vt/vn; an empty field is absent.
+      // v, v/vt, v//vn or v/vt/vn; an empty field is absent. A slash that ends the item
+      // ("4/", "4/1/") announces a field that is not there: vtkOBJReader reads past it.
+      if (item.back() == '/')
+      {
+        error = "'" + path + "' line " + std::to_string(lineNumber) + ": '" + item.substr(0, 24) +
+          "' ends with '/' (write v, v/vt, v//vn or v/vt/vn)";
+        return false;
+      }
       std::size_t start = 0;
       for (int k = 0; k < 3 && start <= item.size(); ++k)
       {

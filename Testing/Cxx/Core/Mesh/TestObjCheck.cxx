@@ -54,6 +54,10 @@ TEST(ObjCheck, IndicesNamingNothingAreNamed)
   EXPECT_NE(Check("text", Square + "f 1 2 x\n").find("names vertex x"), std::string::npos);
   EXPECT_NE(Check("huge", Square + "f 1 2 99999999999999999999999\n").find("names vertex 9999"),
     std::string::npos);
+  // A trailing slash (found by the scene reader's fuzzer: vtkOBJReader crashed on `f 4/ 5 3`).
+  EXPECT_NE(Check("slash", Square + "f 1 2 3\nf 4/ 1 3\n").find("line 6: '4/' ends with '/'"),
+    std::string::npos);
+  EXPECT_NE(Check("slashes", Square + "f 1/ 2/ 3/\n").find("ends with '/'"), std::string::npos);
   // A vertex is named only after its line.
   EXPECT_NE(Check("early", "f 1 2 3\n" + Square).find("line 1"), std::string::npos);
 }
