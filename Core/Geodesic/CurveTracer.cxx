@@ -1,5 +1,7 @@
 #include "Geodesic/CurveTracer.h"
 
+#include "Geodesic/SlotTasks.h"
+
 #include "Geodesic/WrittenCurvePoints.h"
 
 #include <algorithm>
@@ -9,11 +11,7 @@
 #include <limits>
 #include <thread>
 
-#include <tbb/blocked_range.h>
 #include <tbb/info.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-#include <tbb/task_arena.h>
 #include <tuple>
 
 namespace boolsurf
@@ -465,35 +463,14 @@ void CurveTracer::TraceCurves(const std::vector<CurveRequest>& curves,
       stopped = true;
     }
   };
-  if (workers <= 1)
-  {
-    for (std::size_t k = 0; k < todo.size(); ++k)
+  // Each arena slot has its own tracer: this one for slot 0, a helper for each other.
+  RunTasksBySlot(workers,
+    todo.size(),
+    [&](int slot, std::size_t k)
     {
-      traceOne(*this, k, true);
-    }
-  }
-  else
-  {
-    // One task per curve (their costs differ by orders of magnitude); each arena slot has its
-    // own tracer: this one for slot 0, a helper for each other.
-    tbb::task_arena arena(workers);
-    arena.execute(
-      [&]
-      {
-        tbb::parallel_for(
-          tbb::blocked_range<std::size_t>(0, todo.size(), 1),
-          [&](const tbb::blocked_range<std::size_t>& range)
-          {
-            const int slot = tbb::this_task_arena::current_thread_index();
-            CurveTracer& tracer = slot <= 0 ? *this : *this->Helpers[slot - 1];
-            for (std::size_t k = range.begin(); k < range.end(); ++k)
-            {
-              traceOne(tracer, k, std::this_thread::get_id() == caller);
-            }
-          },
-          tbb::simple_partitioner());
-      });
-  }
+      traceOne(
+        slot == 0 ? *this : *this->Helpers[slot - 1], k, std::this_thread::get_id() == caller);
+    });
   for (std::size_t c : todo)
   {
     if (statuses[c])

@@ -1,16 +1,12 @@
 #include "Selection/BoundaryControlPoints.h"
 
 #include "Geodesic/GeodesicBezier.h"
+#include "Geodesic/SlotTasks.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <unordered_map>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-#include <tbb/task_arena.h>
 
 namespace boolsurf
 {
@@ -427,39 +423,20 @@ TraceStatus BezierPieces::CutCurves(const std::vector<int>& curves,
   }
   std::vector<std::vector<Piece>> pieces(jobs.size());
   std::vector<TraceStatus> statuses(jobs.size());
-  const auto cut = [&](GeodesicPathSolver& solver, std::size_t j)
-  {
-    const SegmentCuts& job = jobs[j];
-    statuses[j] = this->SplitAtCuts(
-      solver, job.Whole, 0.0, 1.0, job.At.data(), job.At.data() + job.At.size(), pieces[j]);
-  };
-  if (solvers.size() == 1 || jobs.size() < 2)
-  {
-    for (std::size_t j = 0; j < jobs.size(); ++j)
+  // One solver per arena slot.
+  RunTasksBySlot(static_cast<int>(solvers.size()),
+    jobs.size(),
+    [&](int slot, std::size_t j)
     {
-      cut(*solvers[0], j);
-    }
-  }
-  else
-  {
-    tbb::task_arena arena(static_cast<int>(solvers.size()));
-    arena.execute(
-      [&]
-      {
-        tbb::parallel_for(
-          tbb::blocked_range<std::size_t>(0, jobs.size(), 1),
-          [&](const tbb::blocked_range<std::size_t>& range)
-          {
-            const int slot = std::max(0, tbb::this_task_arena::current_thread_index());
-            GeodesicPathSolver& solver = *solvers[static_cast<std::size_t>(slot) % solvers.size()];
-            for (std::size_t j = range.begin(); j < range.end(); ++j)
-            {
-              cut(solver, j);
-            }
-          },
-          tbb::simple_partitioner());
-      });
-  }
+      const SegmentCuts& job = jobs[j];
+      statuses[j] = this->SplitAtCuts(*solvers[slot],
+        job.Whole,
+        0.0,
+        1.0,
+        job.At.data(),
+        job.At.data() + job.At.size(),
+        pieces[j]);
+    });
   for (std::size_t j = 0; j < jobs.size(); ++j)
   {
     if (!statuses[j])
