@@ -72,9 +72,9 @@ void BM_CrowdedTriangle(benchmark::State& state)
     total += arr.Times.Total;
   }
   int most = 0;
-  for (std::size_t t = 0; t + 1 < arr.TriangleOffset.size(); ++t)
+  for (int t = 0; t < arr.NumberOfMeshTriangles; ++t)
   {
-    most = std::max(most, arr.TriangleOffset[t + 1] - arr.TriangleOffset[t]);
+    most = std::max(most, CountRefinedTriangles(arr, t));
   }
   const double n = static_cast<double>(state.iterations());
   state.counters["segments"] = static_cast<double>(segments);

@@ -67,9 +67,9 @@ struct Arrangement::WorkBuffers
   TriangleSegmentMap Map;
   std::vector<LocalArrangement> Local;
   std::vector<std::vector<int>> EdgeSegmentPoints;
-  std::vector<int> NewPointBase, EdgeOfEdgePoint, SlotOfTriangle, BlockStart, SlotOfSegment;
+  std::vector<int> NewPointBase, EdgeOfEdgePoint, SlotOfSegment;
   std::vector<char> State, MeshEdgeHasBlocked;
-  /// Triangles and mesh edges whose State / SlotOfTriangle / MeshEdgeHasBlocked entries the
+  /// Triangles and mesh edges whose State / MeshEdgeHasBlocked entries the
   /// last call set: reset at the next call instead of clearing whole-mesh arrays.
   std::vector<int> TouchedTriangles, TouchedEdges;
   std::unordered_set<std::uint64_t> BlockedMeshSubEdges;
@@ -102,8 +102,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   const bool sameVertices = sameMesh && out.VerticesMeshSerial == mesh.GetSerial() &&
     static_cast<int>(out.Positions.size()) >= nv;
   // Results are cleared, keeping their capacity (the next edit needs about as much).
-  // Triangles, SourceTriangle, TriangleCell and the points keep their contents until
-  // overwritten: every entry is written again, and clearing first would zero them all once more.
+  // Triangles, SourceTriangle and the points keep their contents: an edit on the same mesh only
+  // rewrites the entries curves crossed before or cross now.
   out.NumberOfCells = 0;
   out.NumberOfRefinedSourceTriangles = 0;
   out.Patches.clear();
@@ -115,7 +115,6 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   if (!sameMesh)
   {
     work.State.assign(nt, 0);
-    work.SlotOfTriangle.assign(nt, -1);
     work.MeshEdgeHasBlocked.assign(mesh.GetNumberOfEdges(), 0);
   }
   else
@@ -123,7 +122,6 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     for (int t : work.TouchedTriangles)
     {
       work.State[t] = 0;
-      work.SlotOfTriangle[t] = -1;
     }
     for (int e : work.TouchedEdges)
     {
@@ -255,12 +253,10 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     });
 
   // Per source triangle: its state for the flood fill (refined, or next to a closed curve
-  // running along one of its edges), its slot, and its range of refined triangles.
+  // running along one of its edges).
   std::vector<char>& state = work.State;
-  std::vector<int>& slotOfTriangle = work.SlotOfTriangle;
   for (int s = 0; s < slots; ++s)
   {
-    slotOfTriangle[map.Triangles[s]] = s;
     state[map.Triangles[s]] = RefinedSurfaceView::RefinedBit;
     work.TouchedTriangles.push_back(map.Triangles[s]);
   }
@@ -291,73 +287,74 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       blockedMeshSubEdges.insert(UndirectedPointPair(ids[k], ids[k + 1]));
     }
   }
-  // Offsets: a prefix sum over fixed blocks (block sums in parallel, a short scan, then the
-  // blocks in parallel again).
-  std::vector<int>& offset = out.TriangleOffset;
-  offset.resize(nt + 1);
+  // The refined triangles: the mesh's own, in place, then the extra pieces of the refined ones.
+  // On the mesh of the previous call only the entries it refined are restored and those this
+  // call refines written, so an edit costs what the curves cross, not the mesh's size.
+  const bool layoutKept = out.LayoutMeshSerial != 0 && out.LayoutMeshSerial == mesh.GetSerial() &&
+    static_cast<int>(out.RefinedSlot.size()) == nt && static_cast<int>(out.Triangles.size()) >= nt;
+  out.LayoutMeshSerial = 0; // until the layout is consistent again
+  std::vector<int>& pieceOffset = out.PieceOffset;
+  pieceOffset.resize(slots + 1);
+  pieceOffset[0] = nt;
+  for (int s = 0; s < slots; ++s)
   {
-    const int blockSize = 1 << 16;
-    const int blocks = (nt + blockSize - 1) / blockSize;
-    std::vector<int>& blockStart = work.BlockStart;
-    blockStart.assign(blocks + 1, 0);
-    auto countOf = [&](int t)
+    if (local[s].Triangles.empty())
     {
-      const int s = slotOfTriangle[t];
-      return !mesh.IsUsable(t) ? 0 : (s >= 0 ? static_cast<int>(local[s].Triangles.size()) : 1);
-    };
-    ParallelFor(arena,
-      blocks,
-      [&](int b)
-      {
-        const int end = std::min(nt, (b + 1) * blockSize);
-        int sum = 0;
-        for (int t = b * blockSize; t < end; ++t)
-        {
-          sum += countOf(t);
-        }
-        blockStart[b + 1] = sum;
-      });
-    for (int b = 0; b < blocks; ++b)
-    {
-      blockStart[b + 1] += blockStart[b];
+      error = "internal error: triangle " + std::to_string(local[s].Triangle) +
+        " was refined into no triangle";
+      return false;
     }
-    ParallelFor(arena,
-      blocks,
-      [&](int b)
-      {
-        const int end = std::min(nt, (b + 1) * blockSize);
-        int sum = blockStart[b];
-        for (int t = b * blockSize; t < end; ++t)
-        {
-          offset[t] = sum;
-          sum += countOf(t);
-        }
-      });
-    offset[nt] = blockStart[blocks];
+    pieceOffset[s + 1] = pieceOffset[s] + static_cast<int>(local[s].Triangles.size()) - 1;
   }
-  const int refinedCount = offset[nt];
+  const int refinedCount = pieceOffset[slots];
   ResizeForEdits(out.Triangles, refinedCount);
   ResizeForEdits(out.SourceTriangle, refinedCount);
-  std::vector<unsigned char>& blocked = work.Blocked;
-  blocked.assign(refinedCount, 0);
-  ParallelRange(arena,
-    nt,
-    [&](int t)
+  std::vector<int>& refinedSlot = out.RefinedSlot;
+  if (!layoutKept)
+  {
+    refinedSlot.assign(nt, -1);
+    ParallelRange(arena,
+      nt,
+      [&](int t)
+      {
+        const bool usable = mesh.IsUsable(t);
+        out.Triangles[t] = usable ? mesh.GetTriangle(t) : std::array<int, 3>{ -1, -1, -1 };
+        out.SourceTriangle[t] = usable ? t : -1;
+      });
+    out.NumberOfHoles = 0;
+    for (int t = 0; t < nt; ++t)
     {
-      const int s = slotOfTriangle[t];
-      int r = offset[t];
-      if (s < 0)
-      {
-        if (offset[t + 1] > r)
-        {
-          out.Triangles[r] = mesh.GetTriangle(t);
-          out.SourceTriangle[r] = t;
-        }
-        return;
-      }
+      out.NumberOfHoles += !mesh.IsUsable(t);
+    }
+  }
+  else
+  {
+    for (int t : out.RefinedSources)
+    {
+      out.Triangles[t] = mesh.GetTriangle(t);
+      out.SourceTriangle[t] = t;
+      refinedSlot[t] = -1;
+    }
+  }
+  out.NumberOfMeshTriangles = nt;
+  out.RefinedSources.assign(map.Triangles.begin(), map.Triangles.end());
+  for (int s = 0; s < slots; ++s)
+  {
+    refinedSlot[map.Triangles[s]] = s;
+  }
+  // Per refined triangle, the sides that closed curves run along inside its source triangle:
+  // read only for pieces of refined triangles, so only those are written.
+  std::vector<unsigned char>& blocked = work.Blocked;
+  ResizeForEdits(blocked, refinedCount);
+  ParallelFor(arena,
+    slots,
+    [&](int s)
+    {
       const LocalArrangement& a = local[s];
-      for (size_t i = 0; i < a.Triangles.size(); ++i, ++r)
+      const int t = a.Triangle;
+      for (size_t i = 0; i < a.Triangles.size(); ++i)
       {
+        const int r = i == 0 ? t : pieceOffset[s] + static_cast<int>(i) - 1;
         for (int j = 0; j < 3; ++j)
         {
           out.Triangles[r][j] = a.Points[a.Triangles[i][j]].Global;
@@ -366,13 +363,15 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         blocked[r] = a.Blocked[i];
       }
     });
+  out.LayoutMeshSerial = mesh.GetSerial();
   out.NumberOfRefinedSourceTriangles = slots;
   const Clock::time_point refinedTime = Clock::now();
 
   // --- 4. flood fill
   RefinedSurfaceView view;
   view.Mesh = &mesh;
-  view.Offset = &offset;
+  view.SlotOfTriangle = &refinedSlot;
+  view.PieceOffset = &pieceOffset;
   view.Triangles = &out.Triangles;
   view.SourceTriangle = &out.SourceTriangle;
   view.Refined = &state;
@@ -387,22 +386,24 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   for (int s = 0; s < slots; ++s)
   {
     const int t = map.Triangles[s];
-    if (offset[t + 1] - offset[t] > RefinedSurfaceView::CrowdedSize)
+    const int pieces = view.CountPieces(t);
+    if (pieces > RefinedSurfaceView::CrowdedSize)
     {
       EdgeIndex& edges = crowdedHalfEdges[t];
-      edges.Reset(3 * static_cast<std::size_t>(offset[t + 1] - offset[t]));
-      for (int r = offset[t]; r < offset[t + 1]; ++r)
-      {
-        const std::array<int, 3>& v = out.Triangles[r];
-        for (int j = 0; j < 3; ++j)
+      edges.Reset(3 * static_cast<std::size_t>(pieces));
+      view.ForEachPiece(t,
+        [&](int r)
         {
-          const std::uint64_t key = DirectedPointPair(v[j], v[(j + 1) % 3]);
-          if (!edges.Contains(key)) // the first one, as a scan would find
+          const std::array<int, 3>& v = out.Triangles[r];
+          for (int j = 0; j < 3; ++j)
           {
-            edges.Set(key, r);
+            const std::uint64_t key = DirectedPointPair(v[j], v[(j + 1) % 3]);
+            if (!edges.Contains(key)) // the first one, as a scan would find
+            {
+              edges.Set(key, r);
+            }
           }
-        }
-      }
+        });
     }
   }
   view.CrowdedHalfEdges = crowdedHalfEdges.empty() ? nullptr : &crowdedHalfEdges;
@@ -421,7 +422,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       out.NumberOfCells = FloodFillCellsByTiles(view,
         *work.Tiles,
         work.TouchedTriangles,
-        out.TriangleCell,
+        out.TileCell,
+        out.LooseCell,
         &out.CellFirstTriangle,
         work.Flood,
         &out.Contents);
@@ -506,7 +508,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     refinedCurves,
     out.Positions,
     out.PointSurface,
-    out.TriangleCell,
+    out.GetCellLookup(),
     out.Patches,
     out.CellGraph,
     &work.PatchGraph);
@@ -519,6 +521,16 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   out.Times.CellGraph = Milliseconds(filled, done);
   out.Times.Total = Milliseconds(start, done);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void WriteTriangleCells(const Arrangement& arr, std::vector<int>& cells, int threads)
+{
+  const int count = static_cast<int>(arr.Triangles.size());
+  ResizeForEdits(cells, count);
+  const TriangleCellLookup lookup = arr.GetCellLookup();
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  ParallelRange(arena, count, [&](int r) { cells[r] = lookup(r); });
 }
 
 } // namespace boolsurf

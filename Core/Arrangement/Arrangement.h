@@ -44,13 +44,28 @@ struct Arrangement
   // --- refined surface. Points: the mesh vertices (same ids), then the curve points on mesh
   // edges, then the new points inside triangles.
   std::vector<Vec3> Positions;
-  std::vector<CanonicalPoint> PointOnMesh;   ///< canonical surface point of each refined point
-  std::vector<SurfacePoint> PointSurface;    ///< the same as triangle + barycentric (u, v)
+  std::vector<CanonicalPoint> PointOnMesh; ///< canonical surface point of each refined point
+  std::vector<SurfacePoint> PointSurface;  ///< the same as triangle + barycentric (u, v)
+  //
+  // Refined triangles keep the mesh's indices, so that an edit writes only what the curves
+  // cross: refined triangle t (t below the mesh's triangle count) is mesh triangle t when no
+  // curve crosses it, else the first piece of its triangulation; the other pieces follow the
+  // mesh's triangles (see ForEachRefinedTriangle). An unusable mesh triangle's entry is a hole:
+  // corners -1, SourceTriangle -1, no cell.
   std::vector<std::array<int, 3>> Triangles; ///< oriented like their source triangles
   std::vector<int> SourceTriangle;           ///< mesh triangle each refined triangle comes from
-  std::vector<int> TriangleCell;             ///< arrangement cell of each refined triangle
-  /// Refined triangles of mesh triangle t: [TriangleOffset[t], TriangleOffset[t + 1]).
-  std::vector<int> TriangleOffset;
+  int NumberOfMeshTriangles = 0;
+  int NumberOfHoles = 0; ///< unusable mesh triangles
+  /// Per mesh triangle: -1 when unrefined, else s, whose pieces other than refined triangle t
+  /// are [PieceOffset[s], PieceOffset[s + 1]); RefinedSources[s] is t.
+  std::vector<int> RefinedSlot;
+  std::vector<int> PieceOffset;
+  std::vector<int> RefinedSources;
+  /// Cells: per clean tile of the mesh (-1 for tiles curves touch), and per refined triangle
+  /// for the others; entries of LooseCell for clean tiles' triangles are stale. Read them with
+  /// CellOfTriangle(), or all at once with WriteTriangleCells().
+  std::vector<int> TileCell;
+  std::vector<int> LooseCell;
   int NumberOfCells = 0;
   /// The lowest refined triangle of each cell (cells are numbered in this order).
   std::vector<int> CellFirstTriangle;
@@ -83,12 +98,61 @@ struct Arrangement
   /// the same Arrangement on the same mesh writes them only once.
   std::uint64_t VerticesMeshSerial = 0;
 
+  /// The mesh whose triangles fill the first NumberOfMeshTriangles refined triangles outside
+  /// RefinedSources (0: none yet): an edit restores the entries the previous one refined and
+  /// writes those it refines, instead of all of them.
+  std::uint64_t LayoutMeshSerial = 0;
+
+  /// Cell of refined triangle r (-1 for a hole).
+  int CellOfTriangle(int r) const { return this->GetCellLookup()(r); }
+  TriangleCellLookup GetCellLookup() const
+  {
+    TriangleCellLookup lookup;
+    lookup.TileOfTriangle = this->Tiles ? this->Tiles->TileOfTriangle.data() : nullptr;
+    lookup.TileCell = this->TileCell.data();
+    lookup.LooseCell = this->LooseCell.data();
+    lookup.NumberOfMeshTriangles = this->NumberOfMeshTriangles;
+    return lookup;
+  }
+
   /// Work buffers kept between calls: computing again into the same Arrangement (an edit of
   /// the curves on the same mesh) reuses every allocation. Nothing of the result is in them, so
   /// arrangements computed one after the other may share them (assign one's Work to another).
   struct WorkBuffers;
   std::shared_ptr<WorkBuffers> Work;
 };
+
+/// Calls f(r) for every refined triangle r of mesh triangle t (none for an unusable one), t
+/// itself first, then its other pieces in order.
+template <class F>
+void ForEachRefinedTriangle(const Arrangement& arr, int t, F f)
+{
+  if (arr.SourceTriangle[t] < 0)
+  {
+    return;
+  }
+  f(t);
+  const int s = arr.RefinedSlot[t];
+  if (s >= 0)
+  {
+    for (int r = arr.PieceOffset[s]; r < arr.PieceOffset[s + 1]; ++r)
+    {
+      f(r);
+    }
+  }
+}
+
+/// Number of refined triangles of mesh triangle t.
+inline int CountRefinedTriangles(const Arrangement& arr, int t)
+{
+  const int s = arr.RefinedSlot[t];
+  return arr.SourceTriangle[t] < 0 ? 0
+                                   : (s < 0 ? 1 : 1 + arr.PieceOffset[s + 1] - arr.PieceOffset[s]);
+}
+
+/// The cell of every refined triangle (-1 for holes), written in parallel: for outputs that
+/// hand all of them over (the Surface Arrangement filter's ArrangementCell array).
+void WriteTriangleCells(const Arrangement& arr, std::vector<int>& cells, int threads = 0);
 
 /// Calls f(r) for every refined triangle r of cell c (clean tiles first, then loose triangles).
 template <class F>
@@ -101,7 +165,7 @@ void ForEachCellTriangle(const Arrangement& arr, int c, F f)
     const int k = in.Tiles[i];
     for (int m = tiles.Offset[k]; m < tiles.Offset[k + 1]; ++m)
     {
-      f(arr.TriangleOffset[tiles.Members[m]]);
+      f(tiles.Members[m]); // unrefined: refined index = mesh index
     }
   }
   for (int i = in.TriangleOffset[c]; i < in.TriangleOffset[c + 1]; ++i)

@@ -50,7 +50,18 @@ int LocalEdgesOfPoint(const RefinedSurfaceView& s, int t, int id)
 //------------------------------------------------------------------------------
 int RefinedSurfaceView::FindDirected(int t, int a, int b) const
 {
-  if (this->CrowdedHalfEdges && (*this->Offset)[t + 1] - (*this->Offset)[t] > CrowdedSize)
+  auto holds = [&](int r)
+  {
+    const std::array<int, 3>& v = (*this->Triangles)[r];
+    return (v[0] == a && v[1] == b) || (v[1] == a && v[2] == b) || (v[2] == a && v[0] == b);
+  };
+  const int s = (*this->SlotOfTriangle)[t];
+  if (s < 0)
+  {
+    return holds(t) ? t : -1; // an unusable triangle's entry holds no point
+  }
+  const int first = (*this->PieceOffset)[s], last = (*this->PieceOffset)[s + 1];
+  if (this->CrowdedHalfEdges && 1 + last - first > CrowdedSize)
   {
     const auto crowded = this->CrowdedHalfEdges->find(t);
     if (crowded != this->CrowdedHalfEdges->end())
@@ -58,10 +69,13 @@ int RefinedSurfaceView::FindDirected(int t, int a, int b) const
       return crowded->second.Find(DirectedPointPair(a, b));
     }
   }
-  for (int r = (*this->Offset)[t]; r < (*this->Offset)[t + 1]; ++r)
+  if (holds(t))
   {
-    const std::array<int, 3>& v = (*this->Triangles)[r];
-    if ((v[0] == a && v[1] == b) || (v[1] == a && v[2] == b) || (v[2] == a && v[0] == b))
+    return t;
+  }
+  for (int r = first; r < last; ++r)
+  {
+    if (holds(r))
     {
       return r;
     }
@@ -87,7 +101,7 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
       return -1;
     }
     blocked = this->IsMeshSubEdgeBlocked(t, j, x, y);
-    return ((*this->Refined)[n] & RefinedBit) ? this->FindDirected(n, y, x) : (*this->Offset)[n];
+    return ((*this->Refined)[n] & RefinedBit) ? this->FindDirected(n, y, x) : n;
   }
   else
   {
@@ -224,7 +238,7 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
   const TriangleMesh& mesh = *surface.Mesh;
   const int count = static_cast<int>(surface.Triangles->size());
   const int nt = mesh.GetNumberOfTriangles();
-  const int* offset = surface.Offset->data();
+  const int* source = surface.SourceTriangle->data();
   const char* state = surface.Refined->data();
   const Triangle* meshTriangles = mesh.GetTriangles().data();
   if (scratch.AtomicCapacity < static_cast<size_t>(count))
@@ -241,19 +255,6 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
       for (int r = range.begin(); r != range.end(); ++r)
       {
         parent[r].store(r, std::memory_order_relaxed);
-      }
-    });
-
-  // Per source triangle, its refined index when it is unrefined, else -1: one random read per
-  // neighbour on the fast path.
-  std::vector<int>& unrefinedIndex = scratch.UnrefinedIndex;
-  unrefinedIndex.resize(nt);
-  tbb::parallel_for(tbb::blocked_range<int>(0, nt, grain),
-    [&](const tbb::blocked_range<int>& range)
-    {
-      for (int t = range.begin(); t != range.end(); ++t)
-      {
-        unrefinedIndex[t] = (state[t] & RefinedSurfaceView::RefinedBit) ? -1 : offset[t];
       }
     });
 
@@ -277,11 +278,16 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
     [&](int b)
     {
       const int t0 = b * sourceBlock, t1 = std::min(nt, t0 + sourceBlock);
-      const int lo = offset[t0], hi = offset[t1];
       std::vector<std::pair<int, int>>& out = crossing[b];
+      // The block's nodes: its own mesh triangles and the pieces appended for them.
+      auto inBlock = [&](int y)
+      {
+        const int t = y < nt ? y : source[y];
+        return t >= t0 && t < t1;
+      };
       auto unite = [&](int x, int y)
       {
-        if (!serial && (y < lo || y >= hi))
+        if (!serial && !inBlock(y))
         {
           out.emplace_back(x, y);
           return;
@@ -295,10 +301,9 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
       };
       for (int t = t0; t < t1; ++t)
       {
-        const int r0 = offset[t], r1 = offset[t + 1];
-        if (r0 == r1)
+        if (!mesh.IsUsable(t))
         {
-          continue; // unusable triangle
+          continue;
         }
         const char st = state[t];
         if (st == 0)
@@ -307,13 +312,9 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
           for (int j = 0; j < 3; ++j)
           {
             const int n = mesh.GetNeighbor(t, j);
-            if (n > t)
+            if (n > t && !(state[n] & RefinedSurfaceView::RefinedBit))
             {
-              const int rn = unrefinedIndex[n];
-              if (rn >= 0)
-              {
-                unite(r0, rn);
-              }
+              unite(t, n);
             }
           }
         }
@@ -331,23 +332,24 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
             {
               continue;
             }
-            unite(r0, offset[n]);
+            unite(t, n);
           }
         }
         else
         {
-          for (int r = r0; r < r1; ++r)
-          {
-            for (int j = 0; j < 3; ++j)
+          surface.ForEachPiece(t,
+            [&](int r)
             {
-              bool blocked = false;
-              const int n = surface.Neighbor(r, j, blocked);
-              if (n >= 0 && !blocked)
+              for (int j = 0; j < 3; ++j)
               {
-                unite(r, n);
+                bool blocked = false;
+                const int n = surface.Neighbor(r, j, blocked);
+                if (n >= 0 && !blocked)
+                {
+                  unite(r, n);
+                }
               }
-            }
-          }
+            });
         }
       }
     });
@@ -378,7 +380,7 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
       {
         const int root = FindSet(parent, r);
         parent[r].store(root, std::memory_order_relaxed);
-        roots += root == r;
+        roots += root == r && source[r] >= 0; // not an unusable triangle's empty entry
       }
       blockRoots[b + 1] = roots;
     });
@@ -398,7 +400,11 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
       int next = blockRoots[b];
       for (int r = b * blockSize; r < end; ++r)
       {
-        if (parent[r].load(std::memory_order_relaxed) == r)
+        if (source[r] < 0)
+        {
+          cellOfTriangle[r] = -1;
+        }
+        else if (parent[r].load(std::memory_order_relaxed) == r)
         {
           if (cellFirstTriangle)
           {
@@ -447,13 +453,12 @@ inline void Unite(int* parent, int a, int b)
 //------------------------------------------------------------------------------
 int FloodFillTiles(const RefinedSurfaceView& surface,
   const MeshTiles& tiles,
-  std::vector<int>& cellOfTriangle,
+  std::vector<int>& looseCell,
   std::vector<int>* cellFirstTriangle,
   TileFloodBuffers& buffers)
 {
   const TriangleMesh& mesh = *surface.Mesh;
   const int count = static_cast<int>(surface.Triangles->size());
-  const int* offset = surface.Offset->data();
   const char* state = surface.Refined->data();
   const int* tileOf = tiles.TileOfTriangle.data();
   const int numberOfTiles = tiles.GetNumberOfTiles();
@@ -464,7 +469,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
     buffers.Parent.resize(count);
   }
   int* parent = buffers.Parent.data();
-  // A clean tile's node is the refined index of its lowest member (unrefined: one triangle).
+  // A clean tile's node is its lowest member (unrefined: refined index = mesh index).
   std::vector<int>& tileNode = buffers.TileNode;
   auto rep = [&](int k) { return tileNode[k]; };
   auto nodeOf = [&](int r)
@@ -476,7 +481,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   nodes.clear();
   for (int k = 0; k < numberOfTiles; ++k)
   {
-    const int r = offset[tiles.Members[tiles.Offset[k]]];
+    const int r = tiles.Members[tiles.Offset[k]];
     tileNode[k] = r;
     if (!dirty[k])
     {
@@ -488,12 +493,12 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   {
     for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
     {
-      const int t = tiles.Members[i];
-      for (int r = offset[t]; r < offset[t + 1]; ++r)
-      {
-        parent[r] = r;
-        nodes.push_back(r);
-      }
+      surface.ForEachPiece(tiles.Members[i],
+        [&](int r)
+        {
+          parent[r] = r;
+          nodes.push_back(r);
+        });
     }
   }
 
@@ -513,7 +518,6 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
     for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
     {
       const int t = tiles.Members[i];
-      const int r0 = offset[t], r1 = offset[t + 1];
       const char st = state[t];
       if (!(st & RefinedSurfaceView::RefinedBit))
       {
@@ -534,22 +538,23 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
           {
             continue;
           }
-          Unite(parent, r0, cleanNeighbor ? rep(tileOf[n]) : offset[n]);
+          Unite(parent, t, cleanNeighbor ? rep(tileOf[n]) : n);
         }
         continue;
       }
-      for (int r = r0; r < r1; ++r)
-      {
-        for (int j = 0; j < 3; ++j)
+      surface.ForEachPiece(t,
+        [&](int r)
         {
-          bool blocked = false;
-          const int n = surface.Neighbor(r, j, blocked);
-          if (n >= 0 && !blocked)
+          for (int j = 0; j < 3; ++j)
           {
-            Unite(parent, r, nodeOf(n));
+            bool blocked = false;
+            const int n = surface.Neighbor(r, j, blocked);
+            if (n >= 0 && !blocked)
+            {
+              Unite(parent, r, nodeOf(n));
+            }
           }
-        }
-      }
+        });
     }
   }
 
@@ -577,36 +582,21 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   {
     *cellFirstTriangle = roots;
   }
-  // Each tile's cell (clean tiles) then one streaming pass over the mesh triangles in order.
+  // Each clean tile's cell, then the triangles of the dirty tiles: nothing is written for the
+  // triangles of clean tiles (TriangleCellLookup reads their tile's cell).
   for (int k = 0; k < numberOfTiles; ++k)
   {
     tileNode[k] = dirty[k] ? -1 : cellOfRoot[parent[tileNode[k]]];
   }
-  ResizeForEdits(cellOfTriangle, count);
-  int* cell = cellOfTriangle.data();
-  const int nt = mesh.GetNumberOfTriangles();
-  tbb::parallel_for(tbb::blocked_range<int>(0, nt, 1 << 14),
-    [&](const tbb::blocked_range<int>& range)
+  ResizeForEdits(looseCell, count);
+  int* cell = looseCell.data();
+  for (int k : dirtyTiles)
+  {
+    for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
     {
-      for (int t = range.begin(); t != range.end(); ++t)
-      {
-        const int k = tileOf[t];
-        if (k < 0)
-        {
-          continue;
-        }
-        const int c = tileNode[k];
-        if (c >= 0)
-        {
-          cell[offset[t]] = c;
-          continue;
-        }
-        for (int r = offset[t]; r < offset[t + 1]; ++r)
-        {
-          cell[r] = cellOfRoot[parent[r]];
-        }
-      }
-    });
+      surface.ForEachPiece(tiles.Members[i], [&](int r) { cell[r] = cellOfRoot[parent[r]]; });
+    }
+  }
   return static_cast<int>(roots.size());
 }
 
@@ -634,8 +624,8 @@ void GroupByCell(int cells,
 // Each cell's clean tiles (in tile order) and loose triangles (those of dirty tiles, in tile
 // order). buffers.TileNode holds the cell of each clean tile, -1 for dirty ones.
 void ListCellContents(const MeshTiles& tiles,
-  const int* offset,
-  const std::vector<int>& cellOfTriangle,
+  const RefinedSurfaceView& surface,
+  const std::vector<int>& looseCell,
   int cells,
   const TileFloodBuffers& buffers,
   CellContents& contents)
@@ -663,11 +653,7 @@ void ListCellContents(const MeshTiles& tiles,
       {
         for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
         {
-          const int t = tiles.Members[i];
-          for (int r = offset[t]; r < offset[t + 1]; ++r)
-          {
-            f(cellOfTriangle[r], r);
-          }
+          surface.ForEachPiece(tiles.Members[i], [&](int r) { f(looseCell[r], r); });
         }
       }
     },
@@ -680,13 +666,13 @@ void ListCellContents(const MeshTiles& tiles,
 int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   const MeshTiles& tiles,
   const std::vector<int>& changedTriangles,
-  std::vector<int>& cellOfTriangle,
+  std::vector<int>& tileCell,
+  std::vector<int>& looseCell,
   std::vector<int>* cellFirstTriangle,
   TileFloodBuffers& buffers,
   CellContents* contents)
 {
   const int count = static_cast<int>(surface.Triangles->size());
-  const int* offset = surface.Offset->data();
   const int* tileOf = tiles.TileOfTriangle.data();
   const int numberOfTiles = tiles.GetNumberOfTiles();
   if (static_cast<int>(buffers.Dirty.size()) != numberOfTiles)
@@ -716,7 +702,7 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   {
     for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
     {
-      touched += offset[tiles.Members[i] + 1] - offset[tiles.Members[i]];
+      touched += surface.CountPieces(tiles.Members[i]);
     }
   }
   const int threads = tbb::this_task_arena::max_concurrency();
@@ -726,19 +712,20 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   if (buffers.Method == FloodFillMethod::Triangles ||
     (buffers.Method == FloodFillMethod::Automatic && touched * 2 * threads > count))
   {
-    cellCount = FloodFillAllTriangles(surface, cellOfTriangle, cellFirstTriangle, buffers);
+    cellCount = FloodFillAllTriangles(surface, looseCell, cellFirstTriangle, buffers);
     for (int k = 0; k < numberOfTiles; ++k)
     {
-      tileNode[k] = dirty[k] ? -1 : cellOfTriangle[offset[tiles.Members[tiles.Offset[k]]]];
+      tileNode[k] = dirty[k] ? -1 : looseCell[tiles.Members[tiles.Offset[k]]];
     }
   }
   else
   {
-    cellCount = FloodFillTiles(surface, tiles, cellOfTriangle, cellFirstTriangle, buffers);
+    cellCount = FloodFillTiles(surface, tiles, looseCell, cellFirstTriangle, buffers);
   }
+  tileCell.assign(tileNode.begin(), tileNode.end());
   if (contents)
   {
-    ListCellContents(tiles, offset, cellOfTriangle, cellCount, buffers, *contents);
+    ListCellContents(tiles, surface, looseCell, cellCount, buffers, *contents);
   }
   for (int k : dirtyTiles)
   {
@@ -753,7 +740,7 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   const std::vector<RefinedCurve>& refinedCurves,
   const std::vector<Vec3>& positions,
   const std::vector<SurfacePoint>& pointSurface,
-  const std::vector<int>& cellOfTriangle,
+  const TriangleCellLookup& cellOfTriangle,
   std::vector<ArrangementPatch>& patches,
   std::vector<CellGraphArc>& arcs,
   PatchGraphBuffers* buffers)
@@ -827,9 +814,9 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
       const int l = surface.FindDirected(t, p, q);
       const int r = surface.FindDirected(t, q, p);
       if (l >= 0)
-        left = cellOfTriangle[l];
+        left = cellOfTriangle(l);
       if (r >= 0)
-        right = cellOfTriangle[r];
+        right = cellOfTriangle(r);
     }
   };
 

@@ -47,12 +47,17 @@ inline std::uint64_t DirectedPointPair(int a, int b)
     static_cast<std::uint32_t>(b);
 }
 
-/// The refined surface as the flood fill sees it.
+/// The refined surface as the flood fill sees it. Refined triangles keep the mesh's indices: an
+/// unrefined mesh triangle t is refined triangle t, a refined one is refined triangle t (its first
+/// piece) plus its other pieces, appended after the mesh's triangles. An edit therefore writes
+/// only the triangles curves cross (and restores those the previous edit crossed).
 struct RefinedSurfaceView
 {
   const TriangleMesh* Mesh = nullptr;
-  /// Refined triangles of source triangle t: [Offset[t], Offset[t+1]).
-  const std::vector<int>* Offset = nullptr;
+  /// Per mesh triangle: -1 when unrefined, else its slot s, whose pieces other than the first
+  /// are the refined triangles [PieceOffset[s], PieceOffset[s + 1]).
+  const std::vector<int>* SlotOfTriangle = nullptr;
+  const std::vector<int>* PieceOffset = nullptr;
   const std::vector<std::array<int, 3>>* Triangles = nullptr;
   const std::vector<int>* SourceTriangle = nullptr;
   /// Per source triangle: bit 0 (RefinedBit) when it was refined, bit 1 (BlockedEdgeBit) when
@@ -78,6 +83,27 @@ struct RefinedSurfaceView
   const std::unordered_map<int, EdgeIndex>* CrowdedHalfEdges = nullptr;
   static constexpr int CrowdedSize = 64;
 
+  /// Number of refined triangles of mesh triangle t (0 for an unusable one).
+  int CountPieces(int t) const
+  {
+    const int s = (*this->SlotOfTriangle)[t];
+    return s < 0 ? (this->Mesh->IsUsable(t) ? 1 : 0)
+                 : 1 + (*this->PieceOffset)[s + 1] - (*this->PieceOffset)[s];
+  }
+  /// Calls f(r) for every refined triangle r of usable mesh triangle t, t itself first.
+  template <class F>
+  void ForEachPiece(int t, F f) const
+  {
+    f(t);
+    const int s = (*this->SlotOfTriangle)[t];
+    if (s >= 0)
+    {
+      for (int r = (*this->PieceOffset)[s]; r < (*this->PieceOffset)[s + 1]; ++r)
+      {
+        f(r);
+      }
+    }
+  }
   /// Refined triangle among those of source triangle t holding the directed edge a -> b.
   int FindDirected(int t, int a, int b) const;
   /// Neighbour across edge j of refined triangle r (-1 on the boundary); `blocked` tells
@@ -112,12 +138,40 @@ struct MeshTiles
 void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles);
 
 /// What each cell is made of: clean tiles (all their triangles are in the cell, each unrefined:
-/// refined index TriangleOffset[t] of member t) and loose refined triangles (those of tiles that
+/// member t is refined triangle t) and loose refined triangles (those of tiles that
 /// curves touch). Lists a cell's triangles without scanning the mesh.
 struct CellContents
 {
   std::vector<int> TileOffset, Tiles;         ///< tiles of cell c: [TileOffset[c], TileOffset[c+1])
   std::vector<int> TriangleOffset, Triangles; ///< loose refined triangles of cell c
+};
+
+/// The cell of each refined triangle, without a write per triangle: a clean tile's triangles
+/// (unrefined, so refined index = mesh index) take their tile's cell, the others (triangles of
+/// tiles curves touch, and the appended pieces) their own entry in LooseCell. LooseCell's other
+/// entries are stale.
+struct TriangleCellLookup
+{
+  const int* TileOfTriangle = nullptr;
+  const int* TileCell = nullptr; ///< -1 for tiles curves touch
+  const int* LooseCell = nullptr;
+  int NumberOfMeshTriangles = 0;
+  int operator()(int r) const
+  {
+    if (r < this->NumberOfMeshTriangles)
+    {
+      const int k = this->TileOfTriangle[r];
+      if (k < 0)
+      {
+        return -1; // unusable triangle
+      }
+      if (this->TileCell[k] >= 0)
+      {
+        return this->TileCell[k];
+      }
+    }
+    return this->LooseCell[r];
+  }
 };
 
 /// How FloodFillCellsByTiles floods: Automatic picks Tiles when curves touch few tiles and
@@ -149,18 +203,21 @@ struct TileFloodBuffers
 };
 
 /// Connected components of the DGA without the blocked arcs (the flood fill of the method),
-/// with clean tiles as single nodes: the cost is the tiles, plus the triangles of the tiles
-/// that curves touch, plus one streaming write of cellOfTriangle. Every set's root is its
-/// lowest refined triangle and cells are numbered in that order, so the result is that of a
-/// sequential breadth-first flood fill seeded in triangle order, whatever the number of
-/// threads. `changedTriangles` must list every mesh triangle whose state in
-/// `surface.Refined` is not 0 (repeats allowed). Returns the number of cells;
-/// `cellFirstTriangle`, when given, receives each cell's lowest triangle; `contents`, when
-/// given, each cell's tiles and loose triangles.
+/// with clean tiles as single nodes: the cost is the tiles plus the triangles of the tiles that
+/// curves touch, never a pass over the mesh's triangles. Every set's root is its lowest refined
+/// triangle and cells are numbered in that order, so the result is that of a sequential
+/// breadth-first flood fill seeded in refined-triangle order, whatever the number of threads.
+/// `changedTriangles` must list every mesh triangle whose state in `surface.Refined` is not 0
+/// (repeats allowed). Writes each clean tile's cell to `tileCell` (-1 for the others) and the
+/// cells of the other tiles' refined triangles and of the appended pieces to `looseCell` (read
+/// both through TriangleCellLookup). Returns the number of cells; `cellFirstTriangle`, when
+/// given, receives each cell's lowest triangle; `contents`, when given, each cell's tiles and
+/// loose triangles.
 int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   const MeshTiles& tiles,
   const std::vector<int>& changedTriangles,
-  std::vector<int>& cellOfTriangle,
+  std::vector<int>& tileCell,
+  std::vector<int>& looseCell,
   std::vector<int>* cellFirstTriangle,
   TileFloodBuffers& buffers,
   CellContents* contents = nullptr);
@@ -212,7 +269,7 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   const std::vector<RefinedCurve>& refinedCurves,
   const std::vector<Vec3>& positions,
   const std::vector<SurfacePoint>& pointSurface,
-  const std::vector<int>& cellOfTriangle,
+  const TriangleCellLookup& cellOfTriangle,
   std::vector<ArrangementPatch>& patches,
   std::vector<CellGraphArc>& arcs,
   PatchGraphBuffers* buffers = nullptr);

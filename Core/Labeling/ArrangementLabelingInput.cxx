@@ -106,20 +106,22 @@ std::vector<int> ZeroCellCandidates(const TriangleMesh& mesh,
       // The refined triangle of t holding the boundary sub-edge that starts at vertex a
       // (mesh vertices keep their ids in the refined surface; the next point is b or a
       // point on edge e).
-      for (int r = arr.TriangleOffset[t]; r < arr.TriangleOffset[t + 1] && result[c] < 0; ++r)
-      {
-        const auto& tri = arr.Triangles[r];
-        for (int k = 0; k < 3; ++k)
+      ForEachRefinedTriangle(arr,
+        t,
+        [&](int r)
         {
-          const int next = tri[(k + 1) % 3];
-          const CanonicalPoint& q = arr.PointOnMesh[next];
-          const bool onEdge = next == b || (q.Location == PointLocation::Edge && q.Id == e);
-          if (tri[k] == a && onEdge)
+          const auto& tri = arr.Triangles[r];
+          for (int k = 0; k < 3 && result[c] < 0; ++k)
           {
-            result[c] = arr.TriangleCell[r];
+            const int next = tri[(k + 1) % 3];
+            const CanonicalPoint& q = arr.PointOnMesh[next];
+            const bool onEdge = next == b || (q.Location == PointLocation::Edge && q.Id == e);
+            if (tri[k] == a && onEdge)
+            {
+              result[c] = arr.CellOfTriangle(r);
+            }
           }
-        }
-      }
+        });
     }
   }
   return result;
@@ -154,48 +156,49 @@ LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
 //------------------------------------------------------------------------------
 int CellAtSurfacePoint(const TriangleMesh& mesh, const Arrangement& arr, int t, double u, double v)
 {
-  if (t < 0 || t + 1 >= static_cast<int>(arr.TriangleOffset.size()))
+  if (t < 0 || t >= arr.NumberOfMeshTriangles)
   {
     return -1;
   }
-  const int r0 = arr.TriangleOffset[t], r1 = arr.TriangleOffset[t + 1];
-  if (r1 - r0 == 1)
+  if (CountRefinedTriangles(arr, t) <= 1)
   {
-    return arr.TriangleCell[r0];
+    return arr.CellOfTriangle(t);
   }
   // The sub-triangle whose smallest barycentric coordinate of (u, v) is largest: the one that
   // contains the point, or the nearest one when rounding puts it just outside all.
   int best = -1;
   double bestScore = -1e300;
-  for (int r = r0; r < r1; ++r)
-  {
-    double x[3], y[3];
-    for (int k = 0; k < 3; ++k)
+  ForEachRefinedTriangle(arr,
+    t,
+    [&](int r)
     {
-      const std::array<double, 3> w =
-        WeightsInTriangle(mesh, arr.PointOnMesh[arr.Triangles[r][k]], t);
-      x[k] = w[1];
-      y[k] = w[2];
-    }
-    const double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
-    if (area == 0)
-    {
-      continue;
-    }
-    double score = 1e300;
-    for (int k = 0; k < 3; ++k)
-    {
-      const int a = (k + 1) % 3, b = (k + 2) % 3;
-      const double wk = ((x[b] - x[a]) * (v - y[a]) - (y[b] - y[a]) * (u - x[a])) / area;
-      score = std::min(score, wk);
-    }
-    if (score > bestScore)
-    {
-      bestScore = score;
-      best = r;
-    }
-  }
-  return best >= 0 ? arr.TriangleCell[best] : -1;
+      double x[3], y[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::array<double, 3> w =
+          WeightsInTriangle(mesh, arr.PointOnMesh[arr.Triangles[r][k]], t);
+        x[k] = w[1];
+        y[k] = w[2];
+      }
+      const double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+      if (area == 0)
+      {
+        return;
+      }
+      double score = 1e300;
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = (k + 1) % 3, b = (k + 2) % 3;
+        const double wk = ((x[b] - x[a]) * (v - y[a]) - (y[b] - y[a]) * (u - x[a])) / area;
+        score = std::min(score, wk);
+      }
+      if (score > bestScore)
+      {
+        bestScore = score;
+        best = r;
+      }
+    });
+  return best >= 0 ? arr.CellOfTriangle(best) : -1;
 }
 
 } // namespace boolsurf

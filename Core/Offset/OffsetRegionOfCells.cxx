@@ -31,13 +31,20 @@ OffsetRegion MakeOffsetRegion(const TriangleMesh& mesh,
     for (int corner : m->GetVertexCorners(v))
     {
       const int t = corner / 3;
-      for (int r = arr->TriangleOffset[t]; r < arr->TriangleOffset[t + 1]; ++r)
-      {
-        const std::array<int, 3>& tri = arr->Triangles[r];
-        if (tri[0] == v || tri[1] == v || tri[2] == v)
+      int found = -1;
+      ForEachRefinedTriangle(*arr,
+        t,
+        [&](int r)
         {
-          return (*cells)[arr->TriangleCell[r]] != 0;
-        }
+          const std::array<int, 3>& tri = arr->Triangles[r];
+          if (found < 0 && (tri[0] == v || tri[1] == v || tri[2] == v))
+          {
+            found = r;
+          }
+        });
+      if (found >= 0)
+      {
+        return (*cells)[arr->CellOfTriangle(found)] != 0;
       }
     }
     return false;
@@ -45,12 +52,11 @@ OffsetRegion MakeOffsetRegion(const TriangleMesh& mesh,
   // Triangles left whole by the arrangement lie in one cell.
   region.TriangleSide = [arr, cells](int t)
   {
-    const int r = arr->TriangleOffset[t];
-    if (arr->TriangleOffset[t + 1] != r + 1)
+    if (CountRefinedTriangles(*arr, t) != 1)
     {
       return 0;
     }
-    return (*cells)[arr->TriangleCell[r]] != 0 ? 1 : -1;
+    return (*cells)[arr->CellOfTriangle(t)] != 0 ? 1 : -1;
   };
   return region;
 }

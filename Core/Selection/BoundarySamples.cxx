@@ -191,12 +191,11 @@ bool SelectBySamples(const Arrangement& arr,
   auto normalOf = [&](int p)
   {
     const int t = arr.PointSurface[p].Triangle;
-    if (t < 0 || t + 1 >= static_cast<int>(arr.TriangleOffset.size()) ||
-      arr.TriangleOffset[t] == arr.TriangleOffset[t + 1])
+    if (t < 0 || t >= arr.NumberOfMeshTriangles || arr.SourceTriangle[t] < 0)
     {
       return Vec3();
     }
-    const std::array<int, 3>& r = arr.Triangles[arr.TriangleOffset[t]];
+    const std::array<int, 3>& r = arr.Triangles[t]; // t itself or its first piece
     return UnitTriangleNormal(arr.Positions[r[0]], arr.Positions[r[1]], arr.Positions[r[2]]);
   };
   BscInput input;

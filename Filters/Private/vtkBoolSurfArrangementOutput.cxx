@@ -173,11 +173,38 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
   static_assert(sizeof(std::array<int, 3>) == 3 * sizeof(int), "triangles must be packed ints");
   const vtkIdType np = static_cast<vtkIdType>(arr.Positions.size());
-  const vtkIdType nt = static_cast<vtkIdType>(arr.Triangles.size());
   // Points, triangles and the per-triangle arrays read the arrangement in place: on a million
   // triangles a copy is ~50 MB written per edit. VTK takes a triangle list as a connectivity
   // array (the corners, as the arrangement stores them) and offsets 0, 3, 6, ..., which the
-  // result keeps and extends, with room for later edits, only when it grows.
+  // result keeps and extends, with room for later edits, only when it grows. Cells are kept per
+  // tile by the arrangement: they are written out per triangle here.
+  std::vector<int>& triangleCells = *memory.TriangleCells;
+  WriteTriangleCells(arr, triangleCells, threads);
+  const std::array<int, 3>* corners = arr.Triangles.data();
+  const int* sourceTriangle = arr.SourceTriangle.data();
+  vtkIdType nt = static_cast<vtkIdType>(arr.Triangles.size());
+  // Unusable mesh triangles leave holes in the refined triangles (their entries name no point):
+  // such meshes get compacted copies instead.
+  std::vector<std::array<int, 3>> compactCorners;
+  std::vector<int> compactSource;
+  if (arr.NumberOfHoles > 0)
+  {
+    std::vector<int> compactCells;
+    for (vtkIdType r = 0; r < nt; ++r)
+    {
+      if (arr.SourceTriangle[r] >= 0)
+      {
+        compactCorners.push_back(arr.Triangles[r]);
+        compactSource.push_back(arr.SourceTriangle[r]);
+        compactCells.push_back(triangleCells[r]);
+      }
+    }
+    triangleCells = std::move(compactCells);
+    corners = compactCorners.data();
+    sourceTriangle = compactSource.data();
+    nt = static_cast<vtkIdType>(compactCorners.size());
+  }
+  const bool compacted = arr.NumberOfHoles > 0;
   std::vector<int>& cellStarts = *memory.CellOffsets;
   const std::size_t known = cellStarts.size();
   if (known < static_cast<std::size_t>(nt) + 1)
@@ -190,10 +217,24 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   }
   auto coordinates = MakeArrayView<vtkDoubleArray>(&arr.Positions.data()->x, np, 3, memory.Owner);
   auto cellOffsets = MakeArrayView<vtkTypeInt32Array>(cellStarts.data(), nt + 1, 1, memory.Owner);
-  auto connectivity = MakeArrayView<vtkTypeInt32Array>(
-    reinterpret_cast<const int*>(arr.Triangles.data()), 3 * nt, 1, memory.Owner);
-  auto cellOf = MakeArrayView<vtkIntArray>(arr.TriangleCell.data(), nt, 1, memory.Owner);
-  auto source = MakeArrayView<vtkIntArray>(arr.SourceTriangle.data(), nt, 1, memory.Owner);
+  vtkSmartPointer<vtkTypeInt32Array> connectivity;
+  vtkSmartPointer<vtkIntArray> source;
+  if (compacted)
+  {
+    connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
+    connectivity->SetNumberOfValues(3 * nt);
+    std::copy_n(reinterpret_cast<const int*>(corners), 3 * nt, connectivity->GetPointer(0));
+    source = vtkSmartPointer<vtkIntArray>::New();
+    source->SetNumberOfValues(nt);
+    std::copy_n(sourceTriangle, nt, source->GetPointer(0));
+  }
+  else
+  {
+    connectivity = MakeArrayView<vtkTypeInt32Array>(
+      reinterpret_cast<const int*>(corners), 3 * nt, 1, memory.Owner);
+    source = MakeArrayView<vtkIntArray>(sourceTriangle, nt, 1, memory.Owner);
+  }
+  auto cellOf = MakeArrayView<vtkIntArray>(triangleCells.data(), nt, 1, memory.Owner);
   cellOf->SetName(boolsurf::names::ArrangementCell);
   source->SetName(boolsurf::names::SourceTriangle);
 
@@ -246,8 +287,11 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   polys->SetData(cellOffsets, connectivity);
   output->SetPolys(polys);
 
-  TransferSurfaceAttributes(
-    surface.Triangles, *surface.Mesh, arr.PointSurface, arr.SourceTriangle, output);
+  TransferSurfaceAttributes(surface.Triangles,
+    *surface.Mesh,
+    arr.PointSurface,
+    compacted ? compactSource : arr.SourceTriangle,
+    output);
   output->GetCellData()->AddArray(cellOf);
   output->GetCellData()->AddArray(source);
   output->GetPointData()->AddArray(triangleId);

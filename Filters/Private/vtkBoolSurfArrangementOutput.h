@@ -42,6 +42,7 @@ struct ArrangementMemory
   /// entries (0: none), updated here: the arrangement numbers the mesh vertices first and never
   /// changes them, so an edit on the same mesh fills only the curves' points.
   std::uint64_t* PointArraysMeshSerial = nullptr;
+  std::vector<int>* TriangleCells = nullptr;
 };
 
 /// The arrangement stage: computes the arrangement of `curves` into `arrangement` (reusing

@@ -148,7 +148,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
   {
     const int r = mesh.Triangles[t];
     sourceTriangle[t] = arr.SourceTriangle[r];
-    cell->SetValue(t, arr.TriangleCell[r]);
+    cell->SetValue(t, arr.CellOfTriangle(r));
     source->SetValue(t, sourceTriangle[t]);
   }
   // The surface's own arrays first (they skip BoolSurf's names), then ours.

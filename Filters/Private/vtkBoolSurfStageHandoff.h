@@ -85,6 +85,9 @@ struct ArrangementResult
   std::vector<vtkIdType> PointTriangle;
   std::vector<double> PointBarycentric;
   std::uint64_t PointArraysMeshSerial = 0;
+  /// Each refined triangle's cell: the arrangement keeps cells per tile of the mesh, the
+  /// ArrangementCell array needs one per triangle.
+  std::vector<int> TriangleCells;
 };
 
 /// Label Arrangement Cells -> Surface Boolean / Boundary Sampled Curves.

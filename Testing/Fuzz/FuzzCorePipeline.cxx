@@ -175,7 +175,10 @@ void CheckArrangement(const TriangleMesh& mesh, const Arrangement& arr, double s
 {
   const int points = static_cast<int>(arr.Positions.size());
   const std::size_t refined = arr.Triangles.size();
-  BOOLSURF_FUZZ_CHECK(arr.TriangleCell.size() == refined, "TriangleCell size");
+  std::vector<int> cells;
+  WriteTriangleCells(arr, cells);
+  BOOLSURF_FUZZ_CHECK(cells.size() == refined, "cells size");
+  int holes = 0;
   BOOLSURF_FUZZ_CHECK(arr.SourceTriangle.size() == refined, "SourceTriangle size");
   BOOLSURF_FUZZ_CHECK(arr.PointOnMesh.size() == arr.Positions.size(), "PointOnMesh size");
   for (const Vec3& p : arr.Positions)
@@ -186,11 +189,19 @@ void CheckArrangement(const TriangleMesh& mesh, const Arrangement& arr, double s
   double area = 0;
   for (std::size_t r = 0; r < refined; ++r)
   {
+    if (static_cast<int>(r) < mesh.GetNumberOfTriangles() && !mesh.IsUsable(static_cast<int>(r)))
+    {
+      // An unusable mesh triangle keeps its index as a hole: no points, no source, no cell.
+      BOOLSURF_FUZZ_CHECK(arr.SourceTriangle[r] < 0 && cells[r] < 0 && arr.Triangles[r][0] < 0,
+        "hole " + std::to_string(r));
+      ++holes;
+      continue;
+    }
     for (int v : arr.Triangles[r])
     {
       BOOLSURF_FUZZ_CHECK(v >= 0 && v < points, "refined triangle " + std::to_string(r));
     }
-    const int cell = arr.TriangleCell[r];
+    const int cell = cells[r];
     BOOLSURF_FUZZ_CHECK(cell >= 0 && cell < arr.NumberOfCells, "cell " + std::to_string(cell));
     const int source = arr.SourceTriangle[r];
     BOOLSURF_FUZZ_CHECK(
@@ -199,6 +210,7 @@ void CheckArrangement(const TriangleMesh& mesh, const Arrangement& arr, double s
     const auto& tri = arr.Triangles[r];
     area += TriangleArea(arr.Positions[tri[0]], arr.Positions[tri[1]], arr.Positions[tri[2]]);
   }
+  BOOLSURF_FUZZ_CHECK(holes == arr.NumberOfHoles, "hole count");
   // Unsigned areas: a folded or overlapping refinement has more area, a gap less.
   BOOLSURF_FUZZ_CHECK(std::fabs(area - surfaceArea) <= 1e-9 * surfaceArea,
     "refined area " + std::to_string(area) + " vs surface " + std::to_string(surfaceArea));

@@ -503,7 +503,7 @@ std::unique_ptr<Labeled> Label(const TriangleMesh& mesh,
   }
   for (size_t r = 0; r < out->Arr.Triangles.size(); ++r)
   {
-    if (out->Selected[out->Arr.TriangleCell[r]])
+    if (out->Selected[out->Arr.CellOfTriangle(static_cast<int>(r))])
     {
       const auto& t = out->Arr.Triangles[r];
       out->Area +=

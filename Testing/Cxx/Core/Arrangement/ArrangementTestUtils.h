@@ -46,7 +46,7 @@ inline std::vector<double> CellAreas(const Arrangement& arr)
   for (size_t r = 0; r < arr.Triangles.size(); ++r)
   {
     const auto& t = arr.Triangles[r];
-    areas[arr.TriangleCell[r]] +=
+    areas[arr.CellOfTriangle(static_cast<int>(r))] +=
       TriangleArea(arr.Positions[t[0]], arr.Positions[t[1]], arr.Positions[t[2]]);
   }
   return areas;
@@ -181,7 +181,7 @@ inline TracedCurve TraceOrDie(const FlatPolygonTracer& tracer,
 
 /// Independent check of the partition: a sequential breadth-first flood fill over refined
 /// triangles sharing an edge (exactly two of them) that no closed patch runs along, seeded in
-/// triangle order, must give exactly TriangleCell.
+/// triangle order, must give exactly the arrangement's cells.
 inline void ExpectCellsAreFloodFill(const Arrangement& arr)
 {
   auto key = [](int a, int b)
@@ -238,7 +238,9 @@ inline void ExpectCellsAreFloodFill(const Arrangement& arr)
     ++cells;
   }
   EXPECT_EQ(cells, arr.NumberOfCells);
-  EXPECT_TRUE(cell == arr.TriangleCell) << "partition differs from a sequential flood fill";
+  std::vector<int> cellOf;
+  WriteTriangleCells(arr, cellOf);
+  EXPECT_TRUE(cell == cellOf) << "partition differs from a sequential flood fill";
   // Each cell's contents (clean tiles, loose triangles) list exactly its triangles, once.
   std::vector<int> listed(arr.Triangles.size(), -1);
   int twice = 0;
@@ -253,7 +255,7 @@ inline void ExpectCellsAreFloodFill(const Arrangement& arr)
       });
   }
   EXPECT_EQ(twice, 0);
-  EXPECT_TRUE(listed == arr.TriangleCell) << "cell contents differ from the partition";
+  EXPECT_TRUE(listed == cellOf) << "cell contents differ from the partition";
 }
 
 inline Arrangement ArrangeOrDie(const TriangleMesh& mesh,

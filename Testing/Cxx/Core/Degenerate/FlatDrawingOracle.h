@@ -102,7 +102,7 @@ inline FlatDrawingAnswer AnswerDrawing(const TriangleMesh& mesh,
     const auto& t = answer.Arr.Triangles[r];
     const Vec3 &a = answer.Arr.Positions[t[0]], &b = answer.Arr.Positions[t[1]],
                &c = answer.Arr.Positions[t[2]];
-    answer.CellArea[answer.Arr.TriangleCell[r]] +=
+    answer.CellArea[answer.Arr.CellOfTriangle(static_cast<int>(r))] +=
       0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
   }
   answer.Ok = true;

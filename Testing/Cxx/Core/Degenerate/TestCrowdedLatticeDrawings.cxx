@@ -41,9 +41,9 @@ std::vector<LatticePolygon> CrowdedDrawing(std::uint32_t seed, int lattice, int 
 int MostRefinedTriangles(const Arrangement& arr)
 {
   int most = 0;
-  for (std::size_t t = 0; t + 1 < arr.TriangleOffset.size(); ++t)
+  for (int t = 0; t < arr.NumberOfMeshTriangles; ++t)
   {
-    most = std::max(most, arr.TriangleOffset[t + 1] - arr.TriangleOffset[t]);
+    most = std::max(most, CountRefinedTriangles(arr, t));
   }
   return most;
 }

@@ -81,7 +81,7 @@ void ExpectLabelsAreWindingNumbers(const FlatDrawingAnswer& a,
     const auto& t = a.Arr.Triangles[r];
     const Vec3 &p = a.Arr.Positions[t[0]], &q = a.Arr.Positions[t[1]], &s = a.Arr.Positions[t[2]];
     const double area = 0.5 * ((q.x - p.x) * (s.y - p.y) - (q.y - p.y) * (s.x - p.x));
-    const int c = a.Arr.TriangleCell[r];
+    const int c = a.Arr.CellOfTriangle(static_cast<int>(r));
     if (area > bestArea[c])
     {
       bestArea[c] = area;

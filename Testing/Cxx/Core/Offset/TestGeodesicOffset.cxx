@@ -55,7 +55,7 @@ Labeled Label(const TriangleMesh& mesh,
   }
   for (size_t r = 0; r < out.Arr.Triangles.size(); ++r)
   {
-    if (out.Selected[out.Arr.TriangleCell[r]])
+    if (out.Selected[out.Arr.CellOfTriangle(static_cast<int>(r))])
     {
       const auto& t = out.Arr.Triangles[r];
       out.Area += 0.5 *
@@ -267,7 +267,7 @@ TEST(GeodesicOffset, GrowThenShrinkIsAClosingThatContainsTheShape)
   double outside = 0;
   for (size_t r = 0; r < together.Arr.Triangles.size(); ++r)
   {
-    const int cell = together.Arr.TriangleCell[r];
+    const int cell = together.Arr.CellOfTriangle(static_cast<int>(r));
     if (together.Labels.GetLabel(cell, 0) != 0 && together.Labels.GetLabel(cell, 1) == 0)
     {
       const auto& t = together.Arr.Triangles[r];
