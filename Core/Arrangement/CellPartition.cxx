@@ -440,17 +440,28 @@ inline int FindRoot(int* parent, int x)
   return x;
 }
 
-inline void Unite(int* parent, int a, int b)
+//------------------------------------------------------------------------------
+// Union-find over compact nodes (clean tiles first, then the refined triangles of dirty tiles),
+// so that the tile-level work stays in cache: indexing it by refined triangle scattered one
+// cache miss per tile over a million-entry array. Each root keeps the lowest refined triangle of
+// its set (Key), which orders the cells.
+inline void UniteByKey(int* parent, const int* key, int a, int b)
 {
   a = FindRoot(parent, a);
   b = FindRoot(parent, b);
   if (a != b)
   {
-    parent[std::max(a, b)] = std::min(a, b);
+    if (key[a] < key[b])
+    {
+      parent[b] = a;
+    }
+    else
+    {
+      parent[a] = b;
+    }
   }
 }
 
-//------------------------------------------------------------------------------
 int FloodFillTiles(const RefinedSurfaceView& surface,
   const MeshTiles& tiles,
   std::vector<int>& looseCell,
@@ -464,30 +475,18 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   const int numberOfTiles = tiles.GetNumberOfTiles();
   const char* dirty = buffers.Dirty.data();
   const std::vector<int>& dirtyTiles = buffers.DirtyTiles;
-  if (static_cast<int>(buffers.Parent.size()) < count)
+  // Node of each refined triangle of a dirty tile (entries of other triangles are stale).
+  std::vector<int>& nodeOfTriangle = buffers.NodeOfTriangle;
+  if (static_cast<int>(nodeOfTriangle.size()) < count)
   {
-    buffers.Parent.resize(count);
+    nodeOfTriangle.resize(EditCapacity(count));
   }
-  int* parent = buffers.Parent.data();
-  // A clean tile's node is its lowest member (unrefined: refined index = mesh index).
-  std::vector<int>& tileNode = buffers.TileNode;
-  auto rep = [&](int k) { return tileNode[k]; };
-  auto nodeOf = [&](int r)
-  {
-    const int k = tileOf[(*surface.SourceTriangle)[r]];
-    return dirty[k] ? r : tileNode[k];
-  };
-  std::vector<int>& nodes = buffers.Nodes;
-  nodes.clear();
+  // Nodes: tile k is node k (used only when clean), then the dirty tiles' refined triangles.
+  std::vector<int>& key = buffers.NodeKey;
+  key.resize(numberOfTiles);
   for (int k = 0; k < numberOfTiles; ++k)
   {
-    const int r = tiles.Members[tiles.Offset[k]];
-    tileNode[k] = r;
-    if (!dirty[k])
-    {
-      parent[r] = r;
-      nodes.push_back(r);
-    }
+    key[k] = tiles.Members[tiles.Offset[k]]; // unrefined: refined index = mesh index
   }
   for (int k : dirtyTiles)
   {
@@ -496,18 +495,32 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
       surface.ForEachPiece(tiles.Members[i],
         [&](int r)
         {
-          parent[r] = r;
-          nodes.push_back(r);
+          nodeOfTriangle[r] = static_cast<int>(key.size());
+          key.push_back(r);
         });
     }
   }
+  const int nodes = static_cast<int>(key.size());
+  std::vector<int>& parentOfNode = buffers.NodeParent;
+  parentOfNode.resize(nodes);
+  for (int i = 0; i < nodes; ++i)
+  {
+    parentOfNode[i] = i;
+  }
+  int* parent = parentOfNode.data();
+  const int* keys = key.data();
+  auto nodeOf = [&](int r)
+  {
+    const int k = tileOf[(*surface.SourceTriangle)[r]];
+    return dirty[k] ? nodeOfTriangle[r] : k;
+  };
 
   // Arcs between clean tiles: precomputed with the tiles.
   for (const std::pair<int, int>& ab : tiles.Adjacent)
   {
     if (!dirty[ab.first] && !dirty[ab.second])
     {
-      Unite(parent, rep(ab.first), rep(ab.second));
+      UniteByKey(parent, keys, ab.first, ab.second);
     }
   }
   // Arcs from the triangles of dirty tiles, as in FloodFillAllTriangles; an arc between two
@@ -529,7 +542,8 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
           {
             continue;
           }
-          const bool cleanNeighbor = !dirty[tileOf[n]];
+          const int kn = tileOf[n];
+          const bool cleanNeighbor = !dirty[kn];
           if (!cleanNeighbor && n <= t)
           {
             continue;
@@ -538,7 +552,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
           {
             continue;
           }
-          Unite(parent, t, cleanNeighbor ? rep(tileOf[n]) : n);
+          UniteByKey(parent, keys, nodeOfTriangle[t], cleanNeighbor ? kn : nodeOfTriangle[n]);
         }
         continue;
       }
@@ -551,51 +565,61 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
             const int n = surface.Neighbor(r, j, blocked);
             if (n >= 0 && !blocked)
             {
-              Unite(parent, r, nodeOf(n));
+              UniteByKey(parent, keys, nodeOfTriangle[r], nodeOf(n));
             }
           }
         });
     }
   }
 
-  // Roots (lowest member of each set, hence its lowest triangle) numbered in increasing order.
+  // Roots (each holds its set's lowest refined triangle) numbered in increasing order of it.
   std::vector<int>& cellOfRoot = buffers.CellOfRoot;
-  if (static_cast<int>(cellOfRoot.size()) < count)
-  {
-    cellOfRoot.resize(count);
-  }
+  cellOfRoot.resize(nodes);
   std::vector<int> roots;
-  for (int r : nodes)
+  auto collect = [&](int i)
   {
-    parent[r] = FindRoot(parent, r);
-    if (parent[r] == r)
+    parent[i] = FindRoot(parent, i);
+    if (parent[i] == i)
     {
-      roots.push_back(r);
+      roots.push_back(i);
+    }
+  };
+  for (int k = 0; k < numberOfTiles; ++k)
+  {
+    if (!dirty[k])
+    {
+      collect(k);
     }
   }
-  std::sort(roots.begin(), roots.end());
+  for (int i = numberOfTiles; i < nodes; ++i)
+  {
+    collect(i);
+  }
+  std::sort(roots.begin(), roots.end(), [&](int a, int b) { return keys[a] < keys[b]; });
   for (size_t c = 0; c < roots.size(); ++c)
   {
     cellOfRoot[roots[c]] = static_cast<int>(c);
   }
   if (cellFirstTriangle)
   {
-    *cellFirstTriangle = roots;
+    cellFirstTriangle->resize(roots.size());
+    for (size_t c = 0; c < roots.size(); ++c)
+    {
+      (*cellFirstTriangle)[c] = keys[roots[c]];
+    }
   }
-  // Each clean tile's cell, then the triangles of the dirty tiles: nothing is written for the
-  // triangles of clean tiles (TriangleCellLookup reads their tile's cell).
-  for (int k = 0; k < numberOfTiles; ++k)
-  {
-    tileNode[k] = dirty[k] ? -1 : cellOfRoot[parent[tileNode[k]]];
-  }
+  // Each clean tile's cell (in TileNode), then the triangles of the dirty tiles: nothing is
+  // written for the triangles of clean tiles (TriangleCellLookup reads their tile's cell).
   ResizeForEdits(looseCell, count);
   int* cell = looseCell.data();
-  for (int k : dirtyTiles)
+  for (int i = numberOfTiles; i < nodes; ++i)
   {
-    for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
-    {
-      surface.ForEachPiece(tiles.Members[i], [&](int r) { cell[r] = cellOfRoot[parent[r]]; });
-    }
+    cell[keys[i]] = cellOfRoot[parent[i]];
+  }
+  std::vector<int>& tileCell = buffers.TileNode;
+  for (int k = 0; k < numberOfTiles; ++k)
+  {
+    tileCell[k] = dirty[k] ? -1 : cellOfRoot[parent[k]];
   }
   return static_cast<int>(roots.size());
 }

@@ -187,13 +187,14 @@ enum class FloodFillMethod
 struct TileFloodBuffers
 {
   FloodFillMethod Method = FloodFillMethod::Automatic;
-  // Tiled flood fill.
-  std::vector<int> Parent;   ///< indexed by refined triangle; only nodes in use are set
+  // Tiled flood fill: nodes are the tiles (node k: tile k), then the dirty tiles' triangles.
   std::vector<char> Dirty;   ///< per tile; reset after each call
-  std::vector<int> TileNode; ///< per tile: its node, then its cell (-1 when dirty)
+  std::vector<int> TileNode; ///< per tile: its cell (-1 when dirty)
   std::vector<int> DirtyTiles;
-  std::vector<int> Nodes; ///< union-find nodes of this call
-  std::vector<int> CellOfRoot;
+  std::vector<int> NodeOfTriangle; ///< per refined triangle of a dirty tile (others stale)
+  std::vector<int> NodeKey;        ///< per node: its lowest refined triangle
+  std::vector<int> NodeParent;     ///< union-find over nodes
+  std::vector<int> CellOfRoot;     ///< per node
   // Whole-surface flood fill.
   std::unique_ptr<std::atomic<int>[]> AtomicParent;
   size_t AtomicCapacity = 0;

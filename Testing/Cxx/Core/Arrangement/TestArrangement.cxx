@@ -357,6 +357,84 @@ TEST(Arrangement, EditsIntoTheSameArrangementEqualFreshOnes)
   ExpectSameArrangement(reused, ArrangeOrDie(other, curves));
 }
 
+// A refused edit leaves the refined triangles as the last good edit wrote them, and the next
+// edit restores only what that one refined: every later result still equals a fresh one.
+TEST(Arrangement, EditsAfterARefusedEditEqualFreshOnes)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(30, 1.0, 0.3, 5));
+  FlatPolygonTracer tracer(mesh);
+  Arrangement reused;
+  std::string error;
+  TracedCurve broken;
+  broken.Closed = false;
+  CanonicalPoint a, b;
+  a.Location = b.Location = PointLocation::Vertex;
+  a.Id = 0;
+  b.Id = mesh.GetNumberOfVertices() - 1; // far corner: no common triangle
+  broken.Points = { a, b };
+  for (std::uint32_t edit = 0; edit < 6; ++edit)
+  {
+    std::mt19937 rng(500 + edit);
+    std::vector<TracedCurve> curves{ TraceOrDie(tracer, RandomPolygon(rng, 6, 0.05, 0.95)),
+      TraceOrDie(tracer, RandomPolygon(rng, 4, 0.2, 0.8), true, 1, 1) };
+    SCOPED_TRACE("edit " + std::to_string(edit));
+    ASSERT_TRUE(ComputeArrangement(mesh, curves, ArrangementOptions(), reused, error)) << error;
+    ExpectCellsAreFloodFill(reused);
+    ExpectSameArrangement(reused, ArrangeOrDie(mesh, curves));
+    curves.push_back(broken);
+    EXPECT_FALSE(ComputeArrangement(mesh, curves, ArrangementOptions(), reused, error));
+  }
+}
+
+// Unusable mesh triangles (repeated or out-of-range corners) keep their index as holes: no
+// points, no source, no cell; the usable ones are arranged as without them.
+TEST(Arrangement, UnusableTrianglesAreHoles)
+{
+  MeshData square = MakeFlatSquare(12, 1.0, 0.2, 4);
+  MeshData holed = square;
+  const int at = static_cast<int>(holed.Triangles.size()) / 2;
+  holed.Triangles.insert(holed.Triangles.begin() + at, { 3, 3, 4 });
+  holed.Triangles.push_back({ 0, 1, 100000 });
+  const TriangleMesh plain = MeshOf(square), mesh = MeshOf(holed);
+  ASSERT_FALSE(mesh.IsUsable(at));
+  FlatPolygonTracer plainTracer(plain), tracer(mesh);
+  Arrangement reused;
+  std::string error;
+  for (std::uint32_t edit = 0; edit < 4; ++edit)
+  {
+    std::mt19937 rng(700 + edit), sameRng(700 + edit);
+    const std::vector<TracedCurve> curves{ TraceOrDie(tracer, RandomPolygon(rng, 6, 0.05, 0.95)) };
+    const std::vector<TracedCurve> plainCurves{ TraceOrDie(
+      plainTracer, RandomPolygon(sameRng, 6, 0.05, 0.95)) };
+    ASSERT_TRUE(ComputeArrangement(mesh, curves, ArrangementOptions(), reused, error)) << error;
+    const Arrangement expected = ArrangeOrDie(plain, plainCurves);
+    EXPECT_EQ(reused.NumberOfHoles, 2);
+    EXPECT_EQ(reused.NumberOfCells, expected.NumberOfCells);
+    for (int t : { at, mesh.GetNumberOfTriangles() - 1 })
+    {
+      EXPECT_EQ(reused.SourceTriangle[t], -1);
+      EXPECT_EQ(reused.Triangles[t][0], -1);
+      EXPECT_EQ(reused.CellOfTriangle(t), -1);
+      EXPECT_EQ(CountRefinedTriangles(reused, t), 0);
+    }
+    std::vector<double> areas(reused.NumberOfCells, 0.0);
+    for (std::size_t r = 0; r < reused.Triangles.size(); ++r)
+    {
+      if (reused.SourceTriangle[r] < 0)
+        continue;
+      const auto& t = reused.Triangles[r];
+      areas[reused.CellOfTriangle(static_cast<int>(r))] +=
+        TriangleArea(reused.Positions[t[0]], reused.Positions[t[1]], reused.Positions[t[2]]);
+    }
+    std::vector<double> want = CellAreas(expected);
+    std::sort(areas.begin(), areas.end());
+    std::sort(want.begin(), want.end());
+    ASSERT_EQ(areas.size(), want.size());
+    for (std::size_t c = 0; c < want.size(); ++c)
+      EXPECT_NEAR(areas[c], want[c], 1e-12);
+  }
+}
+
 // An edit that adds a few points and triangles (a curve moved or added over a few triangles)
 // computes in place: the buffers of the refined surface are not reallocated, since the first
 // edit that grew one by a single entry used to double it (a copy and fresh pages: ~30 ms on a
