@@ -10,6 +10,10 @@
 //   control-point step; every control point also moved by ~1e-12 so that no curve is
 //   recalled from the tracer's memory of earlier iterations) and updates: tracing,
 //   arrangement, labeling and Boolean all rerun.
+// - BM_OneStepCurveEditSubdivided/threads:N: the same ten circles (the same control point
+//   positions, snapped again) on igea_1m subdivided once (vtkLinearSubdivisionFilter: each
+//   triangle split into four in its own plane, 4.29M triangles, the same surface), the same
+//   edits: what an edit costs as the mesh grows under the same curves.
 // - BM_OneStepDragOneCurve/threads:N: same scene; each iteration moves one circle (the next
 //   one each time) and the other nine stay: a user dragging one curve among many (the tracer
 //   recalls the nine).
@@ -33,7 +37,9 @@
 // "as slow as copying the mesh") and EditOverDeepCopy (mean update time over it); PeakRSS_MB
 // (ru_maxrss, reset at the start of each benchmark on Linux so it is that benchmark's peak) and
 // PeakRSSGrowth_MB (that peak above the RSS the benchmark started from: meshes already loaded);
-// TracedVertices (paper-scale scene, from one vtkBoolSurfTraceCurves run outside the timing).
+// TracedVertices (paper-scale scene, from one vtkBoolSurfTraceCurves run outside the timing);
+// FirstUpdateMs (the warm-up update of a fresh filter on a surface it has not seen: surface
+// conversion, tiles, first tracing and labeling: what a user waits for when a pipeline opens).
 // Meshes come from BOOLSURF_SHARED_DATA_DIR/meshes; a missing mesh skips the benchmark.
 //
 // - BM_StageChainCurveEdit/threads:N: BM_OneStepCurveEdit's edits through the four stage
@@ -58,6 +64,7 @@
 #include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
+#include <vtkLinearSubdivisionFilter.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPLYReader.h>
@@ -171,6 +178,8 @@ struct Surface
   }
 };
 
+void PrepareSurface(Surface& s, const std::string& path);
+
 const Surface& LoadSurface(const std::string& name)
 {
   static std::map<std::string, Surface> cache;
@@ -190,12 +199,45 @@ const Surface& LoadSurface(const std::string& name)
   reader->SetFileName(path.c_str());
   reader->Update();
   s.Mesh = reader->GetOutput();
+  PrepareSurface(s, path);
+  return s;
+}
+
+/// The mesh `name` subdivided once, each triangle into four in its own plane (the same surface,
+/// four times the triangles; point arrays interpolated).
+const Surface& LoadSubdividedSurface(const std::string& name)
+{
+  static std::map<std::string, Surface> cache;
+  auto it = cache.find(name);
+  if (it != cache.end())
+  {
+    return it->second;
+  }
+  Surface& s = cache[name];
+  const Surface& coarse = LoadSurface(name);
+  if (!coarse.Error.empty())
+  {
+    s.Error = coarse.Error;
+    return s;
+  }
+  vtkNew<vtkLinearSubdivisionFilter> subdivide;
+  subdivide->SetInputData(coarse.Mesh);
+  subdivide->SetNumberOfSubdivisions(1);
+  subdivide->Update();
+  s.Mesh = vtkSmartPointer<vtkPolyData>::New();
+  s.Mesh->ShallowCopy(subdivide->GetOutput());
+  PrepareSurface(s, name + " subdivided once");
+  return s;
+}
+
+void PrepareSurface(Surface& s, const std::string& path)
+{
   // Exact control points name triangles by cell id: valid only if every cell is a triangle
   // (the filter then uses the cells as they are, with the same ids).
   if (s.Mesh->GetNumberOfPolys() == 0 || s.Mesh->GetNumberOfCells() != s.Mesh->GetNumberOfPolys())
   {
     s.Error = "no triangles (or other cells than polygons) in " + path;
-    return s;
+    return;
   }
   s.Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
   s.Locator->SetDataSet(s.Mesh);
@@ -214,7 +256,6 @@ const Surface& LoadSurface(const std::string& name)
   }
   std::nth_element(copies.begin(), copies.begin() + 2, copies.end());
   s.DeepCopyMs = copies[2];
-  return s;
 }
 
 /// A control point given exactly: triangle and the weights of its 2nd and 3rd vertex.
@@ -537,6 +578,45 @@ const Scene& HugeShapeId()
   return GetScene("huge", "bunny_npm.ply", 2, 0.1, 2, 12, 3, { 0, 1000000 });
 }
 
+/// TenCircles' circles on igea_1m subdivided once: the control points snapped again to the
+/// finer mesh, at the same positions (the subdivision keeps the surface).
+const Scene& TenCirclesSubdivided()
+{
+  static Scene scene;
+  static bool made = false;
+  if (made)
+  {
+    return scene;
+  }
+  made = true;
+  const Scene& coarse = TenCircles();
+  const Surface& s = LoadSubdividedSurface("igea_1m.ply");
+  scene.Error = !coarse.Error.empty() ? coarse.Error : s.Error;
+  if (!scene.Error.empty())
+  {
+    return scene;
+  }
+  vtkNew<vtkGenericCell> cell;
+  std::vector<int> ids;
+  for (const Circle& c : coarse.Placed)
+  {
+    if (!CircleVersions(s, c, 12, cell))
+    {
+      scene.Error = "a circle of the ten does not snap to the subdivided mesh";
+      return scene;
+    }
+    ids.push_back(static_cast<int>(ids.size()));
+  }
+  for (int v = 0; v < Versions; ++v)
+  {
+    scene.Curves.push_back(CurvesInput(s, coarse.Placed, ids, 12, v));
+  }
+  scene.Mesh = &s;
+  scene.Circles = coarse.Circles;
+  scene.Placed = coarse.Placed;
+  return scene;
+}
+
 /// A fresh filter on the scene's surface and first curve version, updated once: the surface
 /// conversion and the first labeling are not what an edit costs.
 vtkSmartPointer<vtkBoolSurf> WarmFilter(const Scene& scene, int operation, int threads)
@@ -659,7 +739,9 @@ void CurveEdits(benchmark::State& state,
     return;
   }
   const double startRss = ResetPeakRss();
+  const auto warm0 = std::chrono::steady_clock::now();
   vtkSmartPointer<vtkBoolSurf> filter = WarmFilter(scene, operation, threads);
+  const double firstUpdateMs = Milliseconds(warm0, std::chrono::steady_clock::now());
   if (filter->GetOutput(0)->GetNumberOfCells() == 0)
   {
     state.SkipWithError("the warm-up update produced no region");
@@ -705,11 +787,17 @@ void CurveEdits(benchmark::State& state,
   state.counters["EditOverDeepCopy"] =
     updateMs / static_cast<double>(state.iterations()) / scene.Mesh->DeepCopyMs;
   state.counters["MinorFaults"] = faults / static_cast<double>(state.iterations());
+  state.counters["FirstUpdateMs"] = firstUpdateMs;
 }
 
 void BM_OneStepCurveEdit(benchmark::State& state)
 {
   CurveEdits(state, TenCircles(), 0, static_cast<int>(state.range(0)));
+}
+
+void BM_OneStepCurveEditSubdivided(benchmark::State& state)
+{
+  CurveEdits(state, TenCirclesSubdivided(), 0, static_cast<int>(state.range(0)));
 }
 
 void BM_OneStepDragOneCurve(benchmark::State& state)
@@ -949,6 +1037,13 @@ void BM_OneStepHugeShapeId(benchmark::State& state)
 }
 
 BENCHMARK(BM_OneStepCurveEdit)
+  ->ArgName("threads")
+  ->Arg(1)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime()
+  ->Iterations(10);
+BENCHMARK(BM_OneStepCurveEditSubdivided)
   ->ArgName("threads")
   ->Arg(1)
   ->Arg(2)
