@@ -13,7 +13,6 @@ DualGraphSearch::DualGraphSearch(const TriangleMesh& mesh)
 {
   const int nt = mesh.GetNumberOfTriangles();
   this->Centroids.resize(nt);
-  this->Components.assign(nt, -1);
   this->Nodes.resize(nt);
   for (int t = 0; t < nt; ++t)
   {
@@ -22,33 +21,6 @@ DualGraphSearch::DualGraphSearch(const TriangleMesh& mesh)
       this->Centroids[t] = (1.0 / 3.0) *
         (mesh.GetCornerPosition(t, 0) + mesh.GetCornerPosition(t, 1) +
           mesh.GetCornerPosition(t, 2));
-    }
-  }
-  // Components by flood fill over the same arcs the search walks, so "different component"
-  // is exactly "no strip exists".
-  std::vector<int> stack;
-  for (int seed = 0; seed < nt; ++seed)
-  {
-    if (!mesh.IsUsable(seed) || this->Components[seed] >= 0)
-    {
-      continue;
-    }
-    const int id = this->NumberOfComponents++;
-    this->Components[seed] = id;
-    stack.push_back(seed);
-    while (!stack.empty())
-    {
-      const int t = stack.back();
-      stack.pop_back();
-      for (int k = 0; k < 3; ++k)
-      {
-        const int n = mesh.GetNeighbor(t, k);
-        if (n >= 0 && this->Components[n] < 0)
-        {
-          this->Components[n] = id;
-          stack.push_back(n);
-        }
-      }
     }
   }
 }

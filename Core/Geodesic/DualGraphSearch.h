@@ -23,8 +23,7 @@ namespace boolsurf
 class DualGraphSearch
 {
 public:
-  /// Precomputes centroids and connected components (edge adjacency) of `mesh`, which must
-  /// outlive this object.
+  /// Precomputes the centroids of `mesh`, which must outlive this object.
   explicit DualGraphSearch(const TriangleMesh& mesh);
 
   /// Shortest dual path from any of `sources` (triangles holding the start point `from`) to
@@ -35,10 +34,6 @@ public:
     const std::vector<int>& targets,
     const Vec3& to,
     std::vector<int>& strip);
-
-  /// Connected component (through manifold edges) of usable triangle t; -1 if unusable.
-  int GetComponent(int t) const { return this->Components[t]; }
-  int GetNumberOfComponents() const { return this->NumberOfComponents; }
 
   /// Triangles taken off the open set by the last FindStrip (a measure of its cost).
   int GetLastExpandedCount() const { return this->LastExpanded; }
@@ -65,8 +60,6 @@ private:
 
   const TriangleMesh& Mesh;
   std::vector<Vec3> Centroids;
-  std::vector<int> Components;
-  int NumberOfComponents = 0;
   std::vector<Node> Nodes;
   std::uint32_t Generation = 0;
   std::vector<std::pair<double, int>> Heap; // (estimated total cost, triangle); min-heap

@@ -103,19 +103,13 @@ const char* GeodesicMethodName(GeodesicMethod method)
 //------------------------------------------------------------------------------
 GeodesicPathSolver::GeodesicPathSolver(const TriangleMesh& mesh)
   : Mesh(mesh)
-  , Search(std::make_unique<DualGraphSearch>(mesh))
-  , EdgeSearch(std::make_unique<EdgeGraphSearch>(mesh))
-  , Components(Search.get())
+  , Components(std::make_shared<TriangleComponents>(mesh))
   , Exact(mesh)
   , StripPosition(mesh.GetNumberOfTriangles(), 0)
   , StripPositionStamp(mesh.GetNumberOfTriangles(), 0u)
 {
-  // The dual search is only the fallback when no strip can be built along the edge path;
-  // greedy there (HeuristicWeight 2), since any strip is straightened to a locally shortest
-  // path.
-  this->Search->SetHeuristicWeight(this->HeuristicWeight);
-  this->LandmarkCount = this->EdgeSearch->GetNumberOfLandmarks();
-  this->LandmarkBuildThreshold = this->EdgeSearch->GetLandmarkBuildThreshold();
+  // The edge-path and dual searches are built on first use (Edges(), Dual()): legs the exact
+  // search answers need neither, and on millions of triangles they cost seconds to build.
 }
 
 //------------------------------------------------------------------------------

@@ -37,6 +37,7 @@
 #include "Geodesic/GeodesicPathCache.h"
 #include "Geodesic/SurfaceSiteGraph.h"
 #include "Mesh/SurfacePoint.h"
+#include "Mesh/TriangleComponents.h"
 
 #include <array>
 #include <cstdint>
@@ -250,14 +251,14 @@ private:
     int last,
     std::vector<int>& swept) const;
 
-  /// The fallback searches, built on first use (at construction, except in helpers).
+  /// The fallback searches, built on first use.
   DualGraphSearch& Dual();
   EdgeGraphSearch& Edges();
 
   const TriangleMesh& Mesh;
   std::unique_ptr<DualGraphSearch> Search;
   std::unique_ptr<EdgeGraphSearch> EdgeSearch;
-  const DualGraphSearch* Components; // Search, or the main solver's for a helper
+  std::shared_ptr<const TriangleComponents> Components; // shared with helpers
   // The fallback searches' settings, kept here for searches not built yet.
   double HeuristicWeight = 2.0;
   int LandmarkCount = 16;
