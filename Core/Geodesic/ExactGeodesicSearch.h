@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace boolsurf
@@ -147,7 +148,8 @@ private:
 
   const TriangleMesh& Mesh;
   bool Prepared = false;
-  std::vector<char> PseudoSource; // saddle or boundary vertex
+  std::shared_ptr<const void> PseudoSourceFlags; // shared by the searches on one mesh
+  const char* PseudoSource = nullptr;            // per vertex: saddle or boundary vertex
   int MaximumWindows = 1 << 20;
   bool BudgetExceeded = false;
 
