@@ -83,13 +83,9 @@ int BoundaryPointId(const TriangleMesh& mesh,
   {
     return -1;
   }
-  auto it = map.EdgePointRange.find(p.Id);
-  if (it == map.EdgePointRange.end())
-  {
-    return -1;
-  }
-  auto first = map.EdgePoints.begin() + it->second.first;
-  auto last = map.EdgePoints.begin() + it->second.second;
+  const std::pair<int, int> range = map.FindEdgePoints(p.Id);
+  auto first = map.EdgePoints.begin() + range.first;
+  auto last = map.EdgePoints.begin() + range.second;
   auto at =
     std::lower_bound(first, last, p.T, [](const EdgePoint& e, double t) { return e.T < t; });
   if (at == last || at->T != p.T)
@@ -108,13 +104,13 @@ void SplitEdgeSegment(const TriangleMesh& mesh,
   const EdgeSegment& s = map.EdgeSegments[index];
   globalIds.clear();
   globalIds.push_back(BoundaryPointId(mesh, map, s.A));
-  auto it = map.EdgePointRange.find(s.Edge);
-  if (it != map.EdgePointRange.end())
+  const std::pair<int, int> range = map.FindEdgePoints(s.Edge);
+  if (range.first != range.second)
   {
     const int nv = mesh.GetNumberOfVertices();
     const double lo = std::min(s.T0, s.T1), hi = std::max(s.T0, s.T1);
     const size_t before = globalIds.size();
-    for (int i = it->second.first; i < it->second.second; ++i)
+    for (int i = range.first; i < range.second; ++i)
     {
       const double t = map.EdgePoints[i].T;
       if (lo < t && t < hi)

@@ -325,13 +325,13 @@ void TriangleSegmentMap::GetEdgePointsOnLocalEdge(const TriangleMesh& mesh,
 {
   out.clear();
   const int e = mesh.GetEdgeId(t, k);
-  auto it = this->EdgePointRange.find(e);
-  if (it == this->EdgePointRange.end())
+  const std::pair<int, int> range = this->FindEdgePoints(e);
+  if (range.first == range.second)
   {
     return;
   }
   const bool forward = mesh.GetEdgeVertices(e)[0] == mesh.GetTriangle(t)[k];
-  for (int i = it->second.first; i < it->second.second; ++i)
+  for (int i = range.first; i < range.second; ++i)
   {
     out.push_back(i);
   }
@@ -342,13 +342,44 @@ void TriangleSegmentMap::GetEdgePointsOnLocalEdge(const TriangleMesh& mesh,
 }
 
 //------------------------------------------------------------------------------
+std::pair<int, int> TriangleSegmentMap::FindEdgePoints(int e) const
+{
+  const auto at = std::lower_bound(this->PointEdges.begin(), this->PointEdges.end(), e);
+  if (at == this->PointEdges.end() || *at != e)
+  {
+    return { 0, 0 };
+  }
+  const std::size_t i = static_cast<std::size_t>(at - this->PointEdges.begin());
+  return { this->PointEdgeStart[i], this->PointEdgeStart[i + 1] };
+}
+
+//------------------------------------------------------------------------------
+int TriangleSegmentMap::FindSlot(int t) const
+{
+  const auto at = std::lower_bound(this->Triangles.begin(), this->Triangles.end(), t);
+  return at != this->Triangles.end() && *at == t ? static_cast<int>(at - this->Triangles.begin())
+                                                 : -1;
+}
+
+//------------------------------------------------------------------------------
 bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
   const std::vector<TracedCurve>& curves,
   TriangleSegmentMap& map,
   std::string& error,
   CurvePointRef* failed)
 {
-  map = TriangleSegmentMap();
+  // Cleared, not reallocated: an edit needs about as much as the last one.
+  map.Triangles.clear();
+  map.SegmentOffset.clear();
+  map.Segments.clear();
+  map.EdgeSegments.clear();
+  map.EdgePoints.clear();
+  map.PointEdges.clear();
+  map.PointEdgeStart.clear();
+  for (std::vector<SegmentLocation>& segments : map.CurveSegments)
+  {
+    segments.clear();
+  }
   const auto refuse = [failed](int curve, int point)
   {
     if (failed)
@@ -491,9 +522,11 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
     {
       ++j;
     }
-    map.EdgePointRange[map.EdgePoints[i].Edge] = { i, j };
+    map.PointEdges.push_back(map.EdgePoints[i].Edge);
+    map.PointEdgeStart.push_back(i);
     i = j;
   }
+  map.PointEdgeStart.push_back(static_cast<int>(map.EdgePoints.size()));
 
   // Triangles to refine: crossed ones, and both sides of every edge holding a point.
   std::vector<int> touched;
@@ -502,18 +535,13 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
   {
     touched.push_back(p.Triangle);
   }
-  for (const auto& range : map.EdgePointRange)
+  for (int e : map.PointEdges)
   {
-    TrianglesOfEdge(mesh, range.first, touched);
+    TrianglesOfEdge(mesh, e, touched);
   }
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   map.Triangles = touched;
-  map.SlotOfTriangle.reserve(2 * touched.size());
-  for (size_t s = 0; s < touched.size(); ++s)
-  {
-    map.SlotOfTriangle[touched[s]] = static_cast<int>(s);
-  }
 
   // Group segments by slot (stable: curve order inside a triangle).
   std::vector<int> sortedIndex(pending.size());
@@ -521,7 +549,7 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
   std::vector<int> slotOfPending(pending.size());
   for (size_t i = 0; i < pending.size(); ++i)
   {
-    slotOfPending[i] = map.SlotOfTriangle[pending[i].Triangle];
+    slotOfPending[i] = map.FindSlot(pending[i].Triangle);
     ++map.SegmentOffset[slotOfPending[i] + 1];
   }
   for (size_t s = 0; s < touched.size(); ++s)

@@ -66,8 +66,6 @@ struct TriangleSegmentMap
   /// Triangles that must be refined, in increasing id order: those crossed by a segment and
   /// those with a curve point on one of their edges (so that both sides of an edge conform).
   std::vector<int> Triangles;
-  /// Triangle id -> index ("slot") into Triangles. This is the hash map of the method.
-  std::unordered_map<int, int> SlotOfTriangle;
   /// Segments of slot s are Segments[SegmentOffset[s] .. SegmentOffset[s+1]), by curve order.
   std::vector<int> SegmentOffset;
   std::vector<TriangleSegment> Segments;
@@ -75,8 +73,14 @@ struct TriangleSegmentMap
   /// Every curve point on an edge interior, sorted by (edge, T), unique. The refined surface
   /// gives edge point i the id NumberOfMeshVertices + i.
   std::vector<EdgePoint> EdgePoints;
-  /// Edge id -> [first, last) range in EdgePoints.
-  std::unordered_map<int, std::pair<int, int>> EdgePointRange;
+  /// Distinct edges holding edge points, ascending, and the start of each one's run in
+  /// EdgePoints (one more entry at the end): the map from edge to points, looked up by binary
+  /// search, which beat a hash map on every edit measured (no allocation per entry).
+  std::vector<int> PointEdges, PointEdgeStart;
+  /// [first, last) range of edge e's points in EdgePoints (empty when it holds none).
+  std::pair<int, int> FindEdgePoints(int e) const;
+  /// Slot of triangle t in Triangles (-1 when t is not refined).
+  int FindSlot(int t) const;
   /// Per curve, its non-degenerate segments in order (zero-length segments are dropped).
   std::vector<std::vector<SegmentLocation>> CurveSegments;
 
