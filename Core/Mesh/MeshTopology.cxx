@@ -1,5 +1,7 @@
 #include "Mesh/MeshTopology.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 namespace boolsurf
@@ -60,68 +62,94 @@ void ComputeComponents(const TriangleMesh& mesh, MeshTopology& topo)
 }
 
 // Groups the corners at each vertex into fans (connected through edges at that vertex) and
-// counts one vertex per fan in the fan's component.
+// counts one vertex per fan in the fan's component. Vertices are independent: fixed blocks of
+// them run in parallel, and their results are merged in vertex order.
 void ComputeFans(const TriangleMesh& mesh, MeshTopology& topo)
 {
   const int nv = mesh.GetNumberOfVertices();
   topo.VertexFans.assign(nv, 0);
-  std::vector<int> localIndex(mesh.GetNumberOfTriangles(), -1);
-  std::vector<int> parent;
-  auto find = [&](int i)
-  {
-    while (parent[i] != i)
+  const int blockSize = 1 << 14;
+  const int blocks = (nv + blockSize - 1) / blockSize;
+  // Per block: the component of each fan (one entry per fan), the non-manifold vertices.
+  std::vector<std::vector<int>> fanComponents(blocks), nonManifold(blocks);
+  tbb::parallel_for(0,
+    blocks,
+    [&](int b)
     {
-      parent[i] = parent[parent[i]];
-      i = parent[i];
-    }
-    return i;
-  };
-  for (int v = 0; v < nv; ++v)
-  {
-    IntRange corners = mesh.GetVertexCorners(v);
-    const int d = corners.size();
-    if (d == 0)
-    {
-      continue;
-    }
-    parent.resize(d);
-    for (int i = 0; i < d; ++i)
-    {
-      parent[i] = i;
-      localIndex[corners[i] / 3] = i;
-    }
-    int fans = d;
-    for (int i = 0; i < d; ++i)
-    {
-      const int t = corners[i] / 3, j = corners[i] % 3;
-      for (int k : { j, (j + 2) % 3 }) // the two edges of t at v
+      std::vector<int> parent;
+      auto find = [&](int i)
       {
-        const int n = mesh.GetNeighbor(t, k);
-        if (n < 0 || localIndex[n] < 0)
+        while (parent[i] != i)
+        {
+          parent[i] = parent[parent[i]];
+          i = parent[i];
+        }
+        return i;
+      };
+      const int end = std::min(nv, (b + 1) * blockSize);
+      for (int v = b * blockSize; v < end; ++v)
+      {
+        const IntRange corners = mesh.GetVertexCorners(v);
+        const int d = corners.size();
+        if (d == 0)
         {
           continue;
         }
-        const int a = find(i), b = find(localIndex[n]);
-        if (a != b)
+        // Corners are listed in increasing order, hence by increasing triangle: the corner of
+        // a neighbouring triangle is found by binary search.
+        auto cornerOf = [&](int triangle)
         {
-          parent[a] = b;
-          --fans;
+          const int* at = std::lower_bound(corners.begin(), corners.end(), 3 * triangle);
+          return at != corners.end() && *at / 3 == triangle ? static_cast<int>(at - corners.begin())
+                                                            : -1;
+        };
+        parent.resize(d);
+        for (int i = 0; i < d; ++i)
+        {
+          parent[i] = i;
+        }
+        int fans = d;
+        for (int i = 0; i < d; ++i)
+        {
+          const int t = corners[i] / 3, j = corners[i] % 3;
+          for (int k : { j, (j + 2) % 3 }) // the two edges of t at v
+          {
+            const int n = mesh.GetNeighbor(t, k);
+            const int m = n < 0 ? -1 : cornerOf(n);
+            if (m < 0)
+            {
+              continue;
+            }
+            const int x = find(i), y = find(m);
+            if (x != y)
+            {
+              parent[x] = y;
+              --fans;
+            }
+          }
+        }
+        for (int i = 0; i < d; ++i)
+        {
+          if (find(i) == i) // one root per fan: credit the fan's component with a vertex
+          {
+            fanComponents[b].push_back(topo.TriangleComponent[corners[i] / 3]);
+          }
+        }
+        topo.VertexFans[v] = fans;
+        if (fans > 1)
+        {
+          nonManifold[b].push_back(v);
         }
       }
-    }
-    for (int i = 0; i < d; ++i)
+    });
+  for (int b = 0; b < blocks; ++b)
+  {
+    for (int c : fanComponents[b])
     {
-      localIndex[corners[i] / 3] = -1;
-      if (find(i) == i) // one root per fan: credit the fan's component with a vertex
-      {
-        ++topo.Components[topo.TriangleComponent[corners[i] / 3]].Vertices;
-      }
+      ++topo.Components[c].Vertices;
     }
-    topo.VertexFans[v] = fans;
-    if (fans > 1)
-    {
-      topo.NonManifoldVertices.push_back(v);
-    }
+    topo.NonManifoldVertices.insert(
+      topo.NonManifoldVertices.end(), nonManifold[b].begin(), nonManifold[b].end());
   }
 }
 
