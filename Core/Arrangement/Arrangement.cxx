@@ -524,6 +524,51 @@ bool ComputeArrangement(const TriangleMesh& mesh,
 }
 
 //------------------------------------------------------------------------------
+void UpdateTriangleCells(const Arrangement& arr,
+  std::vector<int>& cells,
+  WrittenTriangleCells& written,
+  int threads)
+{
+  const int count = static_cast<int>(arr.Triangles.size());
+  const MeshTiles* tiles = arr.Tiles.get();
+  const int nt = arr.NumberOfMeshTriangles;
+  if (!tiles || tiles->MeshSerial == 0 || written.TilesSerial != tiles->MeshSerial ||
+    written.TileCell.size() != arr.TileCell.size() || static_cast<int>(cells.size()) < nt)
+  {
+    WriteTriangleCells(arr, cells, threads);
+    written.TilesSerial = tiles ? tiles->MeshSerial : 0;
+    written.TileCell = arr.TileCell;
+    return;
+  }
+  written.TilesSerial = 0; // until consistent again
+  ResizeForEdits(cells, count);
+  const TriangleCellLookup lookup = arr.GetCellLookup();
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  ParallelRange(
+    arena,
+    tiles->GetNumberOfTiles(),
+    [&](int k)
+    {
+      const int now = arr.TileCell[k];
+      if (now >= 0 && written.TileCell[k] == now)
+      {
+        return; // clean then and now, in the same cell: its entries already hold it
+      }
+      for (int m = tiles->Offset[k]; m < tiles->Offset[k + 1]; ++m)
+      {
+        cells[tiles->Members[m]] = lookup(tiles->Members[m]);
+      }
+      written.TileCell[k] = now;
+    },
+    256);
+  for (int r = nt; r < count; ++r)
+  {
+    cells[r] = lookup(r);
+  }
+  written.TilesSerial = tiles->MeshSerial;
+}
+
+//------------------------------------------------------------------------------
 void WriteTriangleCells(const Arrangement& arr, std::vector<int>& cells, int threads)
 {
   const int count = static_cast<int>(arr.Triangles.size());

@@ -154,6 +154,22 @@ inline int CountRefinedTriangles(const Arrangement& arr, int t)
 /// hand all of them over (the Surface Arrangement filter's ArrangementCell array).
 void WriteTriangleCells(const Arrangement& arr, std::vector<int>& cells, int threads = 0);
 
+/// What a per-triangle cell array written by UpdateTriangleCells holds for clean tiles.
+struct WrittenTriangleCells
+{
+  std::uint64_t TilesSerial = 0; ///< MeshTiles::MeshSerial of the tiles (0: nothing written)
+  std::vector<int> TileCell;     ///< per tile: the cell its triangles hold, -1 when not uniform
+};
+
+/// WriteTriangleCells for a `cells` array kept from edit to edit (the stage filter's output):
+/// on the same mesh's tiles it rewrites only the triangles of tiles whose cell changed or that
+/// curves touch (now or when last written) and the appended pieces; the result equals
+/// WriteTriangleCells'.
+void UpdateTriangleCells(const Arrangement& arr,
+  std::vector<int>& cells,
+  WrittenTriangleCells& written,
+  int threads = 0);
+
 /// Calls f(r) for every refined triangle r of cell c (clean tiles first, then loose triangles).
 template <class F>
 void ForEachCellTriangle(const Arrangement& arr, int c, F f)

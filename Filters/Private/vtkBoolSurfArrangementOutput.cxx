@@ -179,7 +179,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   // result keeps and extends, with room for later edits, only when it grows. Cells are kept per
   // tile by the arrangement: they are written out per triangle here.
   std::vector<int>& triangleCells = *memory.TriangleCells;
-  WriteTriangleCells(arr, triangleCells, threads);
+  UpdateTriangleCells(arr, triangleCells, *memory.WrittenCells, threads);
   const std::array<int, 3>* corners = arr.Triangles.data();
   const int* sourceTriangle = arr.SourceTriangle.data();
   vtkIdType nt = static_cast<vtkIdType>(arr.Triangles.size());
@@ -200,6 +200,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
       }
     }
     triangleCells = std::move(compactCells);
+    *memory.WrittenCells = WrittenTriangleCells(); // compacted: written whole next time
     corners = compactCorners.data();
     sourceTriangle = compactSource.data();
     nt = static_cast<vtkIdType>(compactCorners.size());

@@ -43,6 +43,7 @@ struct ArrangementMemory
   /// changes them, so an edit on the same mesh fills only the curves' points.
   std::uint64_t* PointArraysMeshSerial = nullptr;
   std::vector<int>* TriangleCells = nullptr;
+  WrittenTriangleCells* WrittenCells = nullptr;
 };
 
 /// The arrangement stage: computes the arrangement of `curves` into `arrangement` (reusing

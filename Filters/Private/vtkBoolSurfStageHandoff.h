@@ -88,6 +88,7 @@ struct ArrangementResult
   /// Each refined triangle's cell: the arrangement keeps cells per tile of the mesh, the
   /// ArrangementCell array needs one per triangle.
   std::vector<int> TriangleCells;
+  WrittenTriangleCells WrittenCells; ///< what TriangleCells holds per tile (edits rewrite less)
 };
 
 /// Label Arrangement Cells -> Surface Boolean / Boundary Sampled Curves.

@@ -357,6 +357,34 @@ TEST(Arrangement, EditsIntoTheSameArrangementEqualFreshOnes)
   ExpectSameArrangement(reused, ArrangeOrDie(other, curves));
 }
 
+// A per-triangle cell array kept from edit to edit and updated only where tiles changed (the
+// Surface Arrangement filter's output) always equals one written whole, also across a change
+// of mesh and when an edit adds or removes cells (which renumbers them).
+TEST(Arrangement, UpdatedTriangleCellsEqualWrittenOnes)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(40, 1.0, 0.3, 11));
+  const TriangleMesh other = MeshOf(MakeFlatSquare(25, 1.0, 0.3, 12));
+  Arrangement arr;
+  std::vector<int> kept, whole;
+  WrittenTriangleCells written;
+  std::string error;
+  int step = 0;
+  for (const TriangleMesh* m : { &mesh, &mesh, &mesh, &mesh, &other, &other, &mesh, &mesh })
+  {
+    FlatPolygonTracer tracer(*m);
+    std::mt19937 rng(900 + step);
+    std::vector<TracedCurve> curves;
+    const int count = 1 + step % 3; // cells come and go
+    for (int c = 0; c < count; ++c)
+      curves.push_back(TraceOrDie(tracer, RandomPolygon(rng, 5, 0.1, 0.9), true, c, c));
+    SCOPED_TRACE("step " + std::to_string(step++));
+    ASSERT_TRUE(ComputeArrangement(*m, curves, ArrangementOptions(), arr, error)) << error;
+    UpdateTriangleCells(arr, kept, written);
+    WriteTriangleCells(arr, whole);
+    ASSERT_EQ(kept, whole);
+  }
+}
+
 // A refused edit leaves the refined triangles as the last good edit wrote them, and the next
 // edit restores only what that one refined: every later result still equals a fresh one.
 TEST(Arrangement, EditsAfterARefusedEditEqualFreshOnes)
