@@ -180,15 +180,36 @@ struct Surface
 
 void PrepareSurface(Surface& s, const std::string& path);
 
-const Surface& LoadSurface(const std::string& name)
+/// The mesh `name` of the shared collection, subdivided `subdivisions` times (each triangle
+/// into four in its own plane: the same surface, four times the triangles; point arrays
+/// interpolated).
+const Surface& LoadSurface(const std::string& name, int subdivisions = 0)
 {
   static std::map<std::string, Surface> cache;
-  auto it = cache.find(name);
+  const std::string key = name + "/" + std::to_string(subdivisions);
+  auto it = cache.find(key);
   if (it != cache.end())
   {
     return it->second;
   }
-  Surface& s = cache[name];
+  Surface& s = cache[key];
+  if (subdivisions > 0)
+  {
+    const Surface& coarse = LoadSurface(name, subdivisions - 1);
+    if (!coarse.Error.empty())
+    {
+      s.Error = coarse.Error;
+      return s;
+    }
+    vtkNew<vtkLinearSubdivisionFilter> subdivide;
+    subdivide->SetInputData(coarse.Mesh);
+    subdivide->SetNumberOfSubdivisions(1);
+    subdivide->Update();
+    s.Mesh = vtkSmartPointer<vtkPolyData>::New();
+    s.Mesh->ShallowCopy(subdivide->GetOutput());
+    PrepareSurface(s, name + " subdivided " + std::to_string(subdivisions) + " times");
+    return s;
+  }
   const std::string path = std::string(BOOLSURF_SHARED_DATA_DIR) + "/meshes/" + name;
   if (!vtkPLYReader::CanReadFile(path.c_str()))
   {
@@ -200,33 +221,6 @@ const Surface& LoadSurface(const std::string& name)
   reader->Update();
   s.Mesh = reader->GetOutput();
   PrepareSurface(s, path);
-  return s;
-}
-
-/// The mesh `name` subdivided once, each triangle into four in its own plane (the same surface,
-/// four times the triangles; point arrays interpolated).
-const Surface& LoadSubdividedSurface(const std::string& name)
-{
-  static std::map<std::string, Surface> cache;
-  auto it = cache.find(name);
-  if (it != cache.end())
-  {
-    return it->second;
-  }
-  Surface& s = cache[name];
-  const Surface& coarse = LoadSurface(name);
-  if (!coarse.Error.empty())
-  {
-    s.Error = coarse.Error;
-    return s;
-  }
-  vtkNew<vtkLinearSubdivisionFilter> subdivide;
-  subdivide->SetInputData(coarse.Mesh);
-  subdivide->SetNumberOfSubdivisions(1);
-  subdivide->Update();
-  s.Mesh = vtkSmartPointer<vtkPolyData>::New();
-  s.Mesh->ShallowCopy(subdivide->GetOutput());
-  PrepareSurface(s, name + " subdivided once");
   return s;
 }
 
@@ -590,7 +584,7 @@ const Scene& TenCirclesSubdivided()
   }
   made = true;
   const Scene& coarse = TenCircles();
-  const Surface& s = LoadSubdividedSurface("igea_1m.ply");
+  const Surface& s = LoadSurface("igea_1m.ply", 1);
   scene.Error = !coarse.Error.empty() ? coarse.Error : s.Error;
   if (!scene.Error.empty())
   {
@@ -1036,48 +1030,24 @@ void BM_OneStepHugeShapeId(benchmark::State& state)
   CurveEdits(state, HugeShapeId(), 0, 1);
 }
 
-BENCHMARK(BM_OneStepCurveEdit)
-  ->ArgName("threads")
-  ->Arg(1)
-  ->Arg(2)
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->Iterations(10);
-BENCHMARK(BM_OneStepCurveEditSubdivided)
-  ->ArgName("threads")
-  ->Arg(1)
-  ->Arg(2)
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->Iterations(10);
-BENCHMARK(BM_StageChainCurveEdit)
-  ->ArgName("threads")
-  ->Arg(1)
-  ->Arg(2)
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->Iterations(10);
-BENCHMARK(BM_OneStepDragOneCurve)
-  ->ArgName("threads")
-  ->Arg(1)
-  ->Arg(2)
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->Iterations(10);
-BENCHMARK(BM_OneStepOperationChange)
-  ->ArgName("threads")
-  ->Arg(1)
-  ->Arg(2)
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->Iterations(10);
-BENCHMARK(BM_OneStepPaperScaleXor)
-  ->ArgName("threads")
-  ->Arg(1)
-  ->Arg(2)
-  ->Unit(benchmark::kMillisecond)
-  ->UseRealTime()
-  ->Iterations(6);
+// Edits at one and two threads (NumberOfThreads), milliseconds of real time, `edits` each.
+template <int edits>
+void AtOneAndTwoThreads(benchmark::internal::Benchmark* b)
+{
+  b->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(edits);
+}
+
+BENCHMARK(BM_OneStepCurveEdit)->Apply(AtOneAndTwoThreads<10>);
+BENCHMARK(BM_OneStepCurveEditSubdivided)->Apply(AtOneAndTwoThreads<10>);
+BENCHMARK(BM_StageChainCurveEdit)->Apply(AtOneAndTwoThreads<10>);
+BENCHMARK(BM_OneStepDragOneCurve)->Apply(AtOneAndTwoThreads<10>);
+BENCHMARK(BM_OneStepOperationChange)->Apply(AtOneAndTwoThreads<10>);
+BENCHMARK(BM_OneStepPaperScaleXor)->Apply(AtOneAndTwoThreads<6>);
 BENCHMARK(BM_OneStepPaperScaleSelection)
   ->ArgName("bsc")
   ->Arg(0)

@@ -337,19 +337,7 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
         }
         else
         {
-          surface.ForEachPiece(t,
-            [&](int r)
-            {
-              for (int j = 0; j < 3; ++j)
-              {
-                bool blocked = false;
-                const int n = surface.Neighbor(r, j, blocked);
-                if (n >= 0 && !blocked)
-                {
-                  unite(r, n);
-                }
-              }
-            });
+          surface.ForEachOpenArcOfPieces(t, unite);
         }
       }
     });
@@ -556,19 +544,8 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
         }
         continue;
       }
-      surface.ForEachPiece(t,
-        [&](int r)
-        {
-          for (int j = 0; j < 3; ++j)
-          {
-            bool blocked = false;
-            const int n = surface.Neighbor(r, j, blocked);
-            if (n >= 0 && !blocked)
-            {
-              UniteByKey(parent, keys, nodeOfTriangle[r], nodeOf(n));
-            }
-          }
-        });
+      surface.ForEachOpenArcOfPieces(
+        t, [&](int r, int n) { UniteByKey(parent, keys, nodeOfTriangle[r], nodeOf(n)); });
     }
   }
 

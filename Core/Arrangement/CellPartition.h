@@ -104,6 +104,25 @@ struct RefinedSurfaceView
       }
     }
   }
+  /// Calls f(r, n) for every arc of the DGA from a piece r of refined mesh triangle t to a
+  /// neighbour n that no closed curve blocks.
+  template <class F>
+  void ForEachOpenArcOfPieces(int t, F f) const
+  {
+    this->ForEachPiece(t,
+      [&](int r)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          bool blocked = false;
+          const int n = this->Neighbor(r, j, blocked);
+          if (n >= 0 && !blocked)
+          {
+            f(r, n);
+          }
+        }
+      });
+  }
   /// Refined triangle among those of source triangle t holding the directed edge a -> b.
   int FindDirected(int t, int a, int b) const;
   /// Neighbour across edge j of refined triangle r (-1 on the boundary); `blocked` tells
