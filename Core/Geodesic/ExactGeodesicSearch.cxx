@@ -1,13 +1,13 @@
 #include "Geodesic/ExactGeodesicSearch.h"
 
+#include "Mesh/PerMeshRegistry.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <mutex>
 
 namespace boolsurf
 {
@@ -88,8 +88,7 @@ std::shared_ptr<const PseudoSources> ComputePseudoSources(const TriangleMesh& me
   return out;
 }
 
-std::mutex pseudoSourceLock;
-std::map<std::uint64_t, std::weak_ptr<const PseudoSources>> pseudoSourceRegistry;
+PerMeshRegistry<const PseudoSources> pseudoSourceRegistry;
 
 std::shared_ptr<const PseudoSources> PseudoSourcesOf(const TriangleMesh& mesh)
 {
@@ -97,19 +96,10 @@ std::shared_ptr<const PseudoSources> PseudoSourcesOf(const TriangleMesh& mesh)
   {
     return ComputePseudoSources(mesh);
   }
-  std::lock_guard<std::mutex> guard(pseudoSourceLock);
-  for (auto it = pseudoSourceRegistry.begin(); it != pseudoSourceRegistry.end();)
-  {
-    it = it->second.expired() ? pseudoSourceRegistry.erase(it) : std::next(it);
-  }
-  std::weak_ptr<const PseudoSources>& slot = pseudoSourceRegistry[mesh.GetSerial()];
-  std::shared_ptr<const PseudoSources> flags = slot.lock();
-  if (!flags || flags->Mesh != &mesh)
-  {
-    flags = ComputePseudoSources(mesh);
-    slot = flags;
-  }
-  return flags;
+  return pseudoSourceRegistry.Get(
+    mesh,
+    [&] { return ComputePseudoSources(mesh); },
+    [&](const PseudoSources& flags) { return flags.Mesh == &mesh; });
 }
 
 } // namespace

@@ -1,9 +1,9 @@
 #include "Geodesic/GeodesicPathCache.h"
 
+#include "Mesh/PerMeshRegistry.h"
 #include "Mesh/TriangleMesh.h"
 
 #include <functional>
-#include <map>
 
 namespace boolsurf
 {
@@ -11,26 +11,16 @@ namespace boolsurf
 namespace
 {
 // Weak references: a cache lives as long as a solver on its mesh holds it.
-std::mutex registryLock;
-std::map<std::uint64_t, std::weak_ptr<GeodesicPathCache>> registry;
+PerMeshRegistry<GeodesicPathCache> registry;
 } // namespace
 
 //------------------------------------------------------------------------------
 std::shared_ptr<GeodesicPathCache> GeodesicPathCache::Get(const TriangleMesh& mesh)
 {
-  std::lock_guard<std::mutex> guard(registryLock);
-  for (auto it = registry.begin(); it != registry.end();)
-  {
-    it = it->second.expired() ? registry.erase(it) : std::next(it);
-  }
-  std::weak_ptr<GeodesicPathCache>& slot = registry[mesh.GetSerial()];
-  std::shared_ptr<GeodesicPathCache> cache = slot.lock();
-  if (!cache)
-  {
-    cache = std::make_shared<GeodesicPathCache>();
-    slot = cache;
-  }
-  return cache;
+  return registry.Get(
+    mesh,
+    [] { return std::make_shared<GeodesicPathCache>(); },
+    [](const GeodesicPathCache&) { return true; });
 }
 
 //------------------------------------------------------------------------------

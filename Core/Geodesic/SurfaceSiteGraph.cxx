@@ -1,6 +1,7 @@
 #include "Geodesic/SurfaceSiteGraph.h"
 
 #include "Mesh/MeshTopology.h"
+#include "Mesh/PerMeshRegistry.h"
 
 #include <algorithm>
 #include <atomic>
@@ -8,8 +9,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <map>
-#include <mutex>
 #include <queue>
 #include <random>
 
@@ -80,36 +79,20 @@ int SurfaceSiteGraph::DefaultHops(int vertices)
 namespace
 {
 // Weak references: a graph lives as long as a solver on its mesh holds it.
-std::mutex registryLock;
-std::map<std::uint64_t, std::weak_ptr<const SurfaceSiteGraph>> registry;
+PerMeshRegistry<const SurfaceSiteGraph> registry;
 } // namespace
 
 std::shared_ptr<const SurfaceSiteGraph> SurfaceSiteGraph::Find(const TriangleMesh& mesh)
 {
-  std::lock_guard<std::mutex> guard(registryLock);
-  auto it = registry.find(mesh.GetSerial());
-  std::shared_ptr<const SurfaceSiteGraph> graph =
-    it == registry.end() ? nullptr : it->second.lock();
-  return graph && &graph->Mesh == &mesh ? graph : nullptr;
+  return registry.Find(mesh, [&](const SurfaceSiteGraph& g) { return &g.Mesh == &mesh; });
 }
 
 std::shared_ptr<const SurfaceSiteGraph> SurfaceSiteGraph::Get(const TriangleMesh& mesh)
 {
-  // Building happens under the lock, so concurrent first requests build once.
-  std::lock_guard<std::mutex> guard(registryLock);
-  auto& graphs = registry;
-  for (auto it = graphs.begin(); it != graphs.end();)
-  {
-    it = it->second.expired() ? graphs.erase(it) : std::next(it);
-  }
-  std::weak_ptr<const SurfaceSiteGraph>& slot = graphs[mesh.GetSerial()];
-  std::shared_ptr<const SurfaceSiteGraph> graph = slot.lock();
-  if (!graph || &graph->Mesh != &mesh)
-  {
-    graph = std::make_shared<const SurfaceSiteGraph>(mesh);
-    slot = graph;
-  }
-  return graph;
+  return registry.Get(
+    mesh,
+    [&] { return std::make_shared<const SurfaceSiteGraph>(mesh); },
+    [&](const SurfaceSiteGraph& g) { return &g.Mesh == &mesh; });
 }
 
 //------------------------------------------------------------------------------
