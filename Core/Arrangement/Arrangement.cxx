@@ -162,7 +162,18 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   const Clock::time_point intersected = Clock::now();
 
   // --- 3. refinement, then assembly of the refined surface
-  ParallelFor(arena, slots, [&](int s) { RefineTriangle(local[s]); });
+  ParallelFor(arena,
+    slots,
+    [&](int s)
+    {
+      if (!RefineTriangle(local[s]))
+      {
+        // Merging near points bent pieces across each other (SegmentIntersection.h): cut
+        // this triangle again exactly, which the refinement always triangulates.
+        IntersectTriangleSegments(mesh, map, curves, s, local[s], 0.0);
+        RefineTriangle(local[s]);
+      }
+    });
   for (int s = 0; s < slots; ++s)
   {
     if (!local[s].Error.empty())

@@ -31,22 +31,17 @@ Vec2 ClampInside(Vec2 p)
   return p;
 }
 
-// In unit-triangle coordinates: far above rounding noise (~1e-16), far below any curve
-// feature a user can draw.
-const double CrossingMergeDistance = 1e-13;
-
-struct Hit
-{
-  double Parameter;
-  int Point;
-};
-
 /// Scratch of IntersectTriangleSegments, per thread.
 struct Scratch
 {
-  std::vector<int> EndA, EndB, Order;
-  std::vector<std::vector<Hit>> Hits;
   std::map<std::pair<double, double>, int> InteriorIds;
+};
+
+/// Scratch of CutSegmentsAtIntersections, per thread.
+struct CutScratch
+{
+  std::vector<int> EndA, EndB, Order, Parent;
+  std::vector<std::vector<int>> Hits;
 };
 
 /// Empties `a` for the next triangle of its slot, keeping its buffers' capacity (the slot's
@@ -55,6 +50,7 @@ void ClearForReuse(LocalArrangement& a)
 {
   a.Triangle = -1;
   a.Points.clear();
+  a.Crossings.clear();
   a.Boundary.clear();
   for (std::vector<int>& chain : a.Chains)
   {
@@ -131,7 +127,8 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
   const TriangleSegmentMap& map,
   const std::vector<TracedCurve>& curves,
   int slot,
-  LocalArrangement& out)
+  LocalArrangement& out,
+  double mergeDistance)
 {
   const int t = map.Triangles[slot];
   const Triangle& tri = mesh.GetTriangle(t);
@@ -220,11 +217,40 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
     return next;
   };
 
+  out.Chains.resize(count); // cleared by ClearForReuse, capacity kept
+  out.ChainClosed.resize(count);
+  for (int i = 0; i < count; ++i)
+  {
+    const TriangleSegment& s = map.Segments[first + i];
+    const int a = localOf(s.A, s.A2), b = localOf(s.B, s.B2);
+    if (a < 0 || b < 0)
+    {
+      out.Error = "triangle " + std::to_string(t) + ": a segment endpoint of curve " +
+        std::to_string(s.Curve) + " is missing from the edge point set";
+      return;
+    }
+    out.Chains[i].push_back(a);
+    out.Chains[i].push_back(b);
+    out.ChainClosed[i] = curves[s.Curve].Closed ? 1 : 0;
+  }
+  CutSegmentsAtIntersections(out, mergeDistance);
+}
+
+//------------------------------------------------------------------------------
+void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
+{
+  thread_local CutScratch scratch;
+  const int count = static_cast<int>(out.Chains.size());
   std::vector<int>& endA = scratch.EndA;
   std::vector<int>& endB = scratch.EndB;
-  endA.assign(count, 0);
-  endB.assign(count, 0);
-  std::vector<std::vector<Hit>>& hits = scratch.Hits;
+  endA.resize(count);
+  endB.resize(count);
+  for (int i = 0; i < count; ++i)
+  {
+    endA[i] = out.Chains[i].front();
+    endB[i] = out.Chains[i].back();
+  }
+  std::vector<std::vector<int>>& hits = scratch.Hits;
   if (hits.size() < static_cast<std::size_t>(count))
   {
     hits.resize(count);
@@ -233,22 +259,9 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
   {
     hits[i].clear();
   }
-  out.ChainClosed.resize(count);
-  for (int i = 0; i < count; ++i)
-  {
-    const TriangleSegment& s = map.Segments[first + i];
-    endA[i] = localOf(s.A, s.A2);
-    endB[i] = localOf(s.B, s.B2);
-    if (endA[i] < 0 || endB[i] < 0)
-    {
-      out.Error = "triangle " + std::to_string(t) + ": a segment endpoint of curve " +
-        std::to_string(s.Curve) + " is missing from the edge point set";
-      return;
-    }
-    out.ChainClosed[i] = curves[s.Curve].Closed ? 1 : 0;
-  }
 
-  // Sweep over x: only segments whose x-ranges overlap are tested.
+  // Sweep over x: only segments whose x-ranges overlap are tested. Segment end points are
+  // explicit, so these decisions are plain exact orientations.
   std::vector<int>& order = scratch.Order;
   order.resize(count);
   for (int i = 0; i < count; ++i)
@@ -261,12 +274,7 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
     order.end(),
     [&](int i, int j) { return xmin(i) != xmin(j) ? xmin(i) < xmin(j) : i < j; });
 
-  auto addHit = [&](int segment, int point)
-  {
-    const Vec2 a = out.Points[endA[segment]].P, b = out.Points[endB[segment]].P;
-    hits[segment].push_back({ ParameterAlong(a, b, out.Points[point].P), point });
-  };
-
+  const int firstCrossing = static_cast<int>(out.Points.size());
   for (int oi = 0; oi < count; ++oi)
   {
     const int i = order[oi];
@@ -282,13 +290,13 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
       {
         // Collinear: each segment is cut at the other's endpoints that fall inside it.
         if (b0 != a0 && b0 != a1 && StrictlyBetween(p0, p1, q0))
-          addHit(i, b0);
+          hits[i].push_back(b0);
         if (b1 != a0 && b1 != a1 && StrictlyBetween(p0, p1, q1))
-          addHit(i, b1);
+          hits[i].push_back(b1);
         if (a0 != b0 && a0 != b1 && StrictlyBetween(q0, q1, p0))
-          addHit(j, a0);
+          hits[j].push_back(a0);
         if (a1 != b0 && a1 != b1 && StrictlyBetween(q0, q1, p1))
-          addHit(j, a1);
+          hits[j].push_back(a1);
         continue;
       }
       if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1)
@@ -305,67 +313,132 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
       // are distinct and the segments are not collinear).
       if (o1 == 0.0)
       {
-        addHit(i, b0);
+        hits[i].push_back(b0);
       }
       else if (o2 == 0.0)
       {
-        addHit(i, b1);
+        hits[i].push_back(b1);
       }
       else if (o3 == 0.0)
       {
-        addHit(j, a0);
+        hits[j].push_back(a0);
       }
       else if (o4 == 0.0)
       {
-        addHit(j, a1);
+        hits[j].push_back(a1);
       }
       else
       {
-        // Proper crossing: a new point, shared by both segments.
-        const double beta = o1 / (o1 - o2);
-        const Vec2 x = ClampInside(q0 + beta * (q1 - q0));
-        // Three or more curves through one point: each pair's rounded crossing lands a few
-        // ulps from the others, which would leave slivers of cells. Reuse an interior point
-        // already on either segment when it is that close.
-        int id = -1;
-        for (const std::vector<Hit>* h : { &hits[i], &hits[j] })
-        {
-          for (const Hit& e : *h)
-          {
-            const Vec2 d = out.Points[e.Point].P - x;
-            if (id < 0 && out.Points[e.Point].Where < 0 &&
-              std::fabs(d.x) + std::fabs(d.y) < CrossingMergeDistance)
-            {
-              id = e.Point;
-            }
-          }
-        }
-        if (id < 0)
-        {
-          id = static_cast<int>(out.Points.size());
-          out.Points.push_back({ x, -1, -1 });
-        }
-        addHit(i, id);
-        addHit(j, id);
+        // Proper crossing: a new point of both segments, kept as the pair of them. Points at
+        // the same place are merged below, once they are ordered along the segments.
+        const int id = static_cast<int>(out.Points.size());
+        out.Points.push_back({ ClampInside(RoundedCrossing({ p0, p1, q0, q1 })),
+          -1,
+          -1,
+          static_cast<int>(out.Crossings.size()) });
+        out.Crossings.push_back({ p0, p1, q0, q1 });
+        hits[i].push_back(id);
+        hits[j].push_back(id);
       }
     }
   }
 
-  out.Chains.resize(count); // cleared by ClearForReuse, capacity kept
+  // Order each segment's points exactly along it; equal neighbours are one point (three or
+  // more curves through a point, a crossing on another curve's point), and so are near
+  // interior neighbours unless merging is off. The point kept is an explicit one when there
+  // is one, else the first crossing made.
+  const auto near = [&out, mergeDistance](int x, int y)
+  {
+    const LocalPoint &a = out.Points[x], &b = out.Points[y];
+    return a.Where < 0 && b.Where < 0 && (a.Crossing >= 0 || b.Crossing >= 0) &&
+      std::fabs(a.P.x - b.P.x) + std::fabs(a.P.y - b.P.y) < mergeDistance;
+  };
+  std::vector<int>& parent = scratch.Parent;
+  parent.resize(out.Points.size());
+  for (std::size_t p = 0; p < parent.size(); ++p)
+  {
+    parent[p] = static_cast<int>(p);
+  }
+  auto find = [&parent](int x)
+  {
+    while (parent[x] != x)
+    {
+      x = parent[x] = parent[parent[x]];
+    }
+    return x;
+  };
+  auto kept = [&out](int x, int y)
+  {
+    const bool ex = out.Points[x].Crossing < 0, ey = out.Points[y].Crossing < 0;
+    return ex != ey ? (ex ? x : y) : std::min(x, y);
+  };
   for (int i = 0; i < count; ++i)
   {
-    std::vector<Hit>& h = hits[i];
+    std::vector<int>& h = hits[i];
+    if (h.empty())
+    {
+      continue;
+    }
+    const Vec2 a = out.Points[endA[i]].P, b = out.Points[endB[i]].P;
+    const int axis = std::fabs(b.x - a.x) >= std::fabs(b.y - a.y) ? 0 : 1;
+    const int direction = (axis == 0 ? b.x > a.x : b.y > a.y) ? 1 : -1;
     std::sort(h.begin(),
       h.end(),
-      [](const Hit& x, const Hit& y)
-      { return x.Parameter != y.Parameter ? x.Parameter < y.Parameter : x.Point < y.Point; });
-    std::vector<int>& chain = out.Chains[i];
-    chain.push_back(endA[i]);
-    for (const Hit& x : h)
-    {
-      if (x.Point != chain.back())
+      [&](int x, int y)
       {
-        chain.push_back(x.Point);
+        const int c = direction * ExactCompare(ExactPointOf(out, x), ExactPointOf(out, y), axis);
+        return c != 0 ? c < 0 : x < y;
+      });
+    for (std::size_t k = 1; k < h.size(); ++k)
+    {
+      if (h[k] != h[k - 1] &&
+        (near(h[k - 1], h[k]) ||
+          ExactCompare(ExactPointOf(out, h[k - 1]), ExactPointOf(out, h[k]), axis) == 0))
+      {
+        const int rx = find(h[k - 1]), ry = find(h[k]);
+        if (rx != ry)
+        {
+          const int keep = kept(rx, ry);
+          parent[rx == keep ? ry : rx] = keep;
+        }
+      }
+    }
+  }
+
+  // Crossings merged into another point are dropped; the others are renumbered in order.
+  std::vector<int>& renumber = scratch.Order; // the sweep order is no longer needed
+  const int total = static_cast<int>(out.Points.size());
+  renumber.assign(total, -1);
+  int next = firstCrossing;
+  for (int p = 0; p < total; ++p)
+  {
+    if (p < firstCrossing)
+    {
+      renumber[p] = p;
+    }
+    else if (find(p) == p)
+    {
+      const int crossing = next - firstCrossing;
+      out.Crossings[crossing] = out.Crossings[out.Points[p].Crossing];
+      out.Points[next] = out.Points[p];
+      out.Points[next].Crossing = crossing;
+      renumber[p] = next++;
+    }
+  }
+  out.Points.resize(next);
+  out.Crossings.resize(next - firstCrossing);
+
+  for (int i = 0; i < count; ++i)
+  {
+    std::vector<int>& chain = out.Chains[i];
+    chain.clear();
+    chain.push_back(endA[i]);
+    for (const int x : hits[i])
+    {
+      const int p = renumber[find(x)];
+      if (p != chain.back())
+      {
+        chain.push_back(p);
       }
     }
     if (chain.back() != endB[i])

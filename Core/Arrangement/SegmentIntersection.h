@@ -6,6 +6,21 @@
 // endpoints). All decisions use the exact Orient2d, on coordinates that place points of mesh
 // edges exactly on their edge's line, so the topology inside a triangle is consistent.
 //
+// A crossing is kept exact: as the two segments that define it (ExactCrossings.h), with its
+// rounded coordinates only for output. The points along a segment are ordered exactly, and
+// points found equal there (three or more curves through one point, a crossing on a curve
+// point) become one point shared by every segment through it. So consecutive points of a
+// segment bound pieces that never cross another piece nor hold a point inside.
+//
+// Near-coincident points are merged too, by default: three curves drawn through one point of
+// a curved surface meet in three crossings a rounding apart (the point's barycentric
+// coordinates are rounded), and a user expects one vertex there, not a cell of zero area.
+// Crossings and curve points inside the triangle that are neighbours along a segment and
+// within NearPointDistance of each other become one point (an explicit one if there is one).
+// That bends a few pieces by at most that distance, which can make two of them cross; stage 3
+// then fails on that triangle, and the arrangement cuts it again exactly (mergeDistance 0),
+// which stage 3 always triangulates.
+//
 // Intersections ON mesh edges are never computed here: a segment meets the triangle's boundary
 // only at its own endpoints, which are canonical points already shared with the neighbour
 // (TriangleSegmentMap::EdgePoints). Segments along a mesh edge are split at the edge's points
@@ -13,6 +28,7 @@
 #ifndef boolsurf_SegmentIntersection_h
 #define boolsurf_SegmentIntersection_h
 
+#include "Arrangement/ExactCrossings.h"
 #include "Arrangement/TriangleSegments.h"
 
 #include <array>
@@ -31,6 +47,9 @@ struct LocalPoint
   int Global = -1;
   /// -1: strictly inside the triangle; 0..2: on local edge k; 3..5: corner k - 3.
   int Where = -1;
+  /// Index in LocalArrangement::Crossings when the point is a crossing of two segments (P is
+  /// then its rounded position), else -1.
+  int Crossing = -1;
 };
 
 /// Everything known about one refined triangle. Stage 2 fills the points and the chains;
@@ -41,6 +60,8 @@ struct LocalArrangement
   /// Corners 0..2, then the edge points of local edges 0, 1, 2 (each in edge order), then the
   /// interior points: curve points inside the triangle and crossings.
   std::vector<LocalPoint> Points;
+  /// The exact definitions of the crossing points (LocalPoint::Crossing).
+  std::vector<SegmentCrossing> Crossings;
   /// The triangle's boundary, counter-clockwise: corner 0, points of edge 0, corner 1, ...
   std::vector<int> Boundary;
   /// Per segment of the slot (same order as in TriangleSegmentMap): local point ids from its
@@ -62,12 +83,32 @@ struct LocalArrangement
   std::string Error; ///< non-empty when the triangle could not be processed
 };
 
-/// Intersects the segments of slot `slot`, filling `out` (points, boundary, chains).
+/// Point i of `a` for the exact predicates.
+inline ExactPoint ExactPointOf(const LocalArrangement& a, int i)
+{
+  const LocalPoint& p = a.Points[i];
+  return { p.P, p.Crossing >= 0 ? &a.Crossings[p.Crossing] : nullptr };
+}
+
+/// Distance in unit-triangle coordinates (L1) within which neighbouring interior points of a
+/// segment are merged: far above the rounding of crossings (~1e-16), far below any curve
+/// feature a user can draw.
+constexpr double NearPointDistance = 1e-13;
+
+/// Stage 2 on a local arrangement whose Chains hold, per segment, its two end points (explicit
+/// points of `arr`, distinct): cuts every chain at every point where its segment meets
+/// another, adding the crossings as points. Exact when mergeDistance is 0; see the file
+/// comment.
+void CutSegmentsAtIntersections(LocalArrangement& arr, double mergeDistance = NearPointDistance);
+
+/// Intersects the segments of slot `slot`, filling `out` (points, boundary, chains); with
+/// near points merged within `mergeDistance` (0: exact).
 void IntersectTriangleSegments(const TriangleMesh& mesh,
   const TriangleSegmentMap& map,
   const std::vector<TracedCurve>& curves,
   int slot,
-  LocalArrangement& out);
+  LocalArrangement& out,
+  double mergeDistance = NearPointDistance);
 
 /// Refined-surface point ids along edge segment `index`, from its first to its last point,
 /// through every edge point strictly between them (sorted by T along the segment).

@@ -1,7 +1,6 @@
 #include "Arrangement/TriangleRefinement.h"
 
 #include "Arrangement/EdgeIndex.h"
-#include "Arrangement/PieceSplitting.h"
 #include "Arrangement/Predicates.h"
 
 #include <algorithm>
@@ -43,11 +42,10 @@ bool InCircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d)
   return det > 1e-12 * permanent;
 }
 
-/// Where a piece crosses an edge of the triangulation.
+/// An edge of the triangulation a piece crosses: X on the right of the piece, Y on its left.
 struct Crossing
 {
-  double S; ///< parameter along the piece
-  int X, Y; ///< crossed edge: X on the right of the piece, Y on its left
+  int X, Y;
 };
 
 /// The buffers of a LocalTriangulation, kept per thread: an edit refines a few thousand
@@ -100,7 +98,29 @@ public:
   }
 
   Vec2 P(int i) const { return this->Arr.Points[i].P; }
-  int Orient(int a, int b, int c) const { return Orient2dSign(this->P(a), this->P(b), this->P(c)); }
+  bool IsCrossing(int i) const { return this->Arr.Points[i].Crossing >= 0; }
+
+  /// Exact orientation of three points, crossings included (ExactCrossings.h).
+  int Orient(int a, int b, int c) const
+  {
+    if (!this->IsCrossing(a) && !this->IsCrossing(b) && !this->IsCrossing(c))
+    {
+      return Orient2dSign(this->P(a), this->P(b), this->P(c));
+    }
+    return ExactOrient(
+      ExactPointOf(this->Arr, a), ExactPointOf(this->Arr, b), ExactPointOf(this->Arr, c));
+  }
+
+  /// For q on the line through a and b: whether it lies strictly between them; exact.
+  bool Between(int a, int b, int q) const
+  {
+    if (!this->IsCrossing(a) && !this->IsCrossing(b) && !this->IsCrossing(q))
+    {
+      return StrictlyBetween(this->P(a), this->P(b), this->P(q));
+    }
+    return ExactStrictlyBetween(
+      ExactPointOf(this->Arr, a), ExactPointOf(this->Arr, b), ExactPointOf(this->Arr, q));
+  }
 
   void Add(int a, int b, int c)
   {
@@ -427,18 +447,13 @@ public:
   }
 
   /// Makes (a, b) a chain of triangulation edges, appending the points it passes through
-  /// (b included) to path `pi`.
+  /// (b included) to path `pi`. Stage 2's exact crossings guarantee that no constrained edge
+  /// crosses the open piece: a vertex on it is passed through, and each call ends after at
+  /// most one step per vertex on the piece.
   bool InsertConstraint(int a, int b, int pi)
   {
-    const size_t guardLimit = 4 * this->Arr.Points.size() + 64;
-    for (size_t guard = 0; a != b; ++guard)
+    while (a != b)
     {
-      // Every step of every insertion counts against one budget: detours around rounded
-      // crossings call this recursively, and must end.
-      if (guard > guardLimit || ++this->Steps > this->StepBudget)
-      {
-        return this->Fail("constraint insertion does not converge");
-      }
       if (this->Find(a, b) >= 0 || this->Find(b, a) >= 0)
       {
         this->Constrained.insert(Undirected(a, b));
@@ -446,9 +461,8 @@ public:
         return true;
       }
       // Edges the open piece crosses, in order from a, found by walking the triangles it
-      // passes through (ordering by computed parameters could disagree with the topology);
-      // or the first vertex exactly on the open piece, which the piece then goes through.
-      const Vec2 pa = this->P(a), pb = this->P(b);
+      // passes through; or the first vertex exactly on the open piece, which the piece then
+      // goes through.
       std::vector<Crossing> crossings;
       int on = -1;
       if (!this->WalkCrossings(a, b, crossings, on))
@@ -464,54 +478,15 @@ public:
         a = on;
         continue;
       }
-      const Crossing* blocking = nullptr;
       for (const Crossing& c : crossings)
       {
         if (this->Constrained.count(Undirected(c.X, c.Y)) > 0)
         {
-          blocking = &c;
-          break;
+          // Exact crossings make this impossible: it would be a bug in stage 2 or here.
+          return this->Fail("two curve pieces cross between points " + std::to_string(a) + "-" +
+            std::to_string(b) + " and " + std::to_string(c.X) + "-" + std::to_string(c.Y) +
+            " (inconsistent local arrangement)");
         }
-      }
-      if (blocking)
-      {
-        // Rounded crossings made two pieces cross after all. Such a crossing lies within
-        // rounding of a point already there (an end of the other piece, usually a rounded
-        // crossing itself): the piece goes through that point. Otherwise both pieces go
-        // through a new point at the crossing; its rounded coordinates may put it beside the
-        // other piece rather than on it, so it is inserted like any point and the other piece
-        // is bent through it.
-        const int x = blocking->X, y = blocking->Y;
-        const Vec2 at = pa + blocking->S * (pb - pa);
-        const int near = Length(this->P(x) - at) <= Length(this->P(y) - at) ? x : y;
-        if (near != a && Length(this->P(near) - at) <= SnapDistance)
-        {
-          if (!this->InsertConstraint(a, near, pi))
-          {
-            return false;
-          }
-          a = near;
-          continue;
-        }
-        const int np = static_cast<int>(this->Arr.Points.size());
-        this->Arr.Points.push_back({ pa + blocking->S * (pb - pa), -1, -1 });
-        this->Arr.Alias.push_back(np);
-        if (!this->InsertPoint(np))
-        {
-          return false;
-        }
-        const int q = this->Arr.Alias[np];
-        if (q != x && q != y && this->Constrained.count(Undirected(x, y)) > 0 &&
-          !this->RerouteConstraint(x, y, q))
-        {
-          return false;
-        }
-        if (q != a && !this->InsertConstraint(a, q, pi))
-        {
-          return false;
-        }
-        a = q;
-        continue;
       }
       if (!this->CavityInsert(a, b, crossings))
       {
@@ -520,39 +495,6 @@ public:
       this->Constrained.insert(Undirected(a, b));
       this->Paths[pi].push_back(b);
       return true;
-    }
-    return true;
-  }
-
-  /// Replaces constrained edge (x, y) by constrained pieces x -> q -> y, in the triangulation
-  /// and in every path that runs along it (either way).
-  bool RerouteConstraint(int x, int y, int q)
-  {
-    this->Constrained.erase(Undirected(x, y));
-    const int tmp = static_cast<int>(this->Paths.size());
-    this->Paths.push_back({ x });
-    if (!this->InsertConstraint(x, q, tmp) || !this->InsertConstraint(q, y, tmp))
-    {
-      return false;
-    }
-    const std::vector<int> chain = std::move(this->Paths[tmp]);
-    this->Paths.pop_back();
-    for (std::vector<int>& path : this->Paths)
-    {
-      for (size_t i = 0; i + 1 < path.size(); ++i)
-      {
-        const bool along = path[i] == x && path[i + 1] == y;
-        if (along || (path[i] == y && path[i + 1] == x))
-        {
-          std::vector<int> inner(chain.begin() + 1, chain.end() - 1);
-          if (!along)
-          {
-            std::reverse(inner.begin(), inner.end());
-          }
-          path.insert(path.begin() + i + 1, inner.begin(), inner.end());
-          i += inner.size();
-        }
-      }
     }
     return true;
   }
@@ -629,7 +571,6 @@ public:
   /// first one from a (and the crossings before it are of no use).
   bool WalkCrossings(int a, int b, std::vector<Crossing>& crossings, int& on)
   {
-    const Vec2 pa = this->P(a), pb = this->P(b);
     int x = -1, y = -1;
     on = -1;
     this->AroundVertex(a,
@@ -642,11 +583,11 @@ public:
           x = u;
           y = w;
         }
-        else if (ou == 0 && StrictlyBetween(pa, pb, this->P(u)))
+        else if (ou == 0 && this->Between(a, b, u))
         {
           on = u;
         }
-        else if (ow == 0 && StrictlyBetween(pa, pb, this->P(w)))
+        else if (ow == 0 && this->Between(a, b, w))
         {
           on = w;
         }
@@ -662,9 +603,7 @@ public:
     }
     for (size_t guard = 0; guard <= this->Tris.size(); ++guard)
     {
-      const double oa = Orient2d(this->P(x), this->P(y), pa);
-      const double ob = Orient2d(this->P(x), this->P(y), pb);
-      crossings.push_back({ oa / (oa - ob), x, y });
+      crossings.push_back({ x, y });
       const int twin = this->Find(y, x);
       if (twin < 0)
       {
@@ -685,7 +624,7 @@ public:
       {
         x = z;
       }
-      else if (StrictlyBetween(pa, pb, this->P(z)))
+      else if (this->Between(a, b, z))
       {
         on = z;
         return true;
@@ -750,12 +689,6 @@ public:
   int StartGridSize = 1;
   std::unordered_set<EdgeKey> Constrained;
   std::vector<std::vector<int>> Paths;
-  /// Distance (unit-triangle coordinates) within which a rounded crossing is taken to be an
-  /// existing point: far above the rounding of crossings (~1e-16), far below any feature
-  /// the curves can resolve.
-  static constexpr double SnapDistance = 1e-12;
-  size_t Steps = 0;
-  size_t StepBudget = 0;
 };
 
 // Fast path: chords only. Each chord splits the one convex polygon that holds both of its
@@ -823,7 +756,6 @@ bool RefineOnce(LocalArrangement& arr)
   }
   TriangulationBuffers& buffers = ThreadTriangulationBuffers();
   LocalTriangulation tri(arr, buffers);
-  tri.StepBudget = 32 * static_cast<size_t>(n) + 1024;
   tri.Tris.reserve(4 * n);
   tri.Alive.reserve(4 * n);
   bool hasInterior = false;
@@ -928,30 +860,7 @@ bool RefineTriangle(LocalArrangement& arr)
   {
     return false;
   }
-  const std::size_t firstPoints = arr.Points.size();
-  if (RefineOnce(arr))
-  {
-    return true;
-  }
-  // The incremental insertion failed (in practice: detours around rounded crossings that do
-  // not end, on a triangle crowded with pieces). Start again from stage 2's points and chains,
-  // split until no two pieces cross (PieceSplitting.h), and triangulate that: no constraint
-  // can then block another.
-  const std::string first = arr.Error;
-  arr.Error.clear();
-  arr.Points.resize(firstPoints);
-  std::string problem;
-  if (!SplitPiecesAtCrossings(arr, LocalTriangulation::SnapDistance, problem))
-  {
-    arr.Error = first + "; " + problem;
-    return false;
-  }
-  if (!RefineOnce(arr))
-  {
-    arr.Error = first + "; after splitting crossing pieces: " + arr.Error;
-    return false;
-  }
-  return true;
+  return RefineOnce(arr);
 }
 
 } // namespace boolsurf

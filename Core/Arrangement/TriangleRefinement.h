@@ -10,10 +10,12 @@
 //  * General path: triangulate the boundary polygon, insert the interior points (splitting the
 //    triangle or edge they fall in), then insert each chain piece as a constrained edge by
 //    removing the triangles it crosses and re-triangulating the two cavity polygons.
-// All decisions use the exact Orient2d on the coordinates fixed in stage 2. A rounded
-// crossing that lands exactly on another piece is merged or made a vertex of it, and if
-// rounding makes two pieces cross after all, they are split at a new point on both, so the
-// output is always a valid triangulation whose paths follow the curves.
+// All decisions are exact orientations: on the double coordinates of explicit points, and on
+// the defining segments of stage 2's crossings (ExactCrossings.h). Because stage 2 found every
+// crossing exactly and put it on every segment through it, no piece crosses another piece or
+// passes over a point it was not cut at: a constraint's insertion walks through the triangles
+// it crosses, through the vertices on it, and ends. No point is created here, nothing is
+// snapped, and no step budget is needed.
 #ifndef boolsurf_TriangleRefinement_h
 #define boolsurf_TriangleRefinement_h
 
