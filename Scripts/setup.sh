@@ -22,11 +22,14 @@ packages=(
   # libraries used by BoolSurf: parallel loops, max-flow (BSC), Clipper (2D test oracle),
   # JSON (scene files, test manifests)
   libtbb-dev libboost-graph-dev libpolyclipping-dev nlohmann-json3-dev
+  # GMP: exact rationals behind the arrangement's crossing predicates (when their filter
+  # cannot decide)
+  libgmp-dev
   # SVG drawings (Map SVG onto Surface): svgpp, header-only on Boost, with libxml2 as parser
   libsvgpp-dev libxml2-dev
   # CGAL (header-only) and its number types: the exact polyhedral shortest-path oracle
   # (Surface_mesh_shortest_path) of the geodesic tests and benchmark; never in the product
-  libcgal-dev libgmp-dev libmpfr-dev
+  libcgal-dev libmpfr-dev
   # shapely (GEOS): the exact oracle of the clipping test (length of line ∩ polygon)
   python3-shapely
   # headless rendering: Debian's ParaView renders only through X
