@@ -1,9 +1,15 @@
 #include "Arrangement/ExactCrossings.h"
 
+#include "Arrangement/Predicates.h"
+
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <utility>
 
 namespace boolsurf
 {
@@ -62,9 +68,81 @@ inline int CertainSign(const Filtered& f)
   return f.V > margin ? 1 : (f.V < -margin ? -1 : 0);
 }
 
-inline int Sign(const mpq_class& q)
+// The second filter: double-double numbers (an unevaluated sum hi + lo, about 106 bits), with
+// the same running bound. Near-degenerate configurations (three curves nearly through one
+// point, their crossings a rounding apart: common in drawings on lattices) have orientations
+// of about 1e-16 relative to their terms, which doubles cannot decide and double-doubles do,
+// at a fraction of the rationals' cost.
+inline void TwoSum(double a, double b, double& s, double& e)
 {
-  return sgn(q);
+  s = a + b;
+  const double bv = s - a;
+  e = (a - (s - bv)) + (b - bv);
+}
+
+inline void FastTwoSum(double a, double b, double& s, double& e)
+{
+  s = a + b;
+  e = b - (s - a);
+}
+
+struct DoubleDouble
+{
+  double Hi = 0.0, Lo = 0.0;
+  double E = 0.0; ///< bound on the distance to the exact value
+  DoubleDouble() = default;
+  explicit DoubleDouble(double v)
+    : Hi(v)
+  {
+  }
+  double Magnitude() const { return std::abs(this->Hi) + std::abs(this->Lo); }
+};
+
+// Relative rounding of one double-double operation: at most a few units of 2^-106 for the
+// accurate sum and the product below; 2^-100 leaves a wide margin.
+constexpr double DoubleDoubleUnit = 0x1p-100;
+
+inline DoubleDouble Add(const DoubleDouble& a, const DoubleDouble& b, double sign)
+{
+  DoubleDouble r;
+  double s, e, t, f;
+  TwoSum(a.Hi, sign * b.Hi, s, e);
+  TwoSum(a.Lo, sign * b.Lo, t, f);
+  e += t;
+  FastTwoSum(s, e, s, e);
+  e += f;
+  FastTwoSum(s, e, r.Hi, r.Lo);
+  r.E = a.E + b.E + DoubleDoubleUnit * (a.Magnitude() + b.Magnitude()) + Subnormal;
+  return r;
+}
+
+inline DoubleDouble operator+(const DoubleDouble& a, const DoubleDouble& b)
+{
+  return Add(a, b, 1.0);
+}
+
+inline DoubleDouble operator-(const DoubleDouble& a, const DoubleDouble& b)
+{
+  return Add(a, b, -1.0);
+}
+
+inline DoubleDouble operator*(const DoubleDouble& a, const DoubleDouble& b)
+{
+  DoubleDouble r;
+  const double p = a.Hi * b.Hi;
+  double e = std::fma(a.Hi, b.Hi, -p);
+  e += a.Hi * b.Lo + a.Lo * b.Hi;
+  FastTwoSum(p, e, r.Hi, r.Lo);
+  const double ma = a.Magnitude(), mb = b.Magnitude();
+  r.E = ma * b.E + mb * a.E + a.E * b.E + DoubleDoubleUnit * ma * mb + Subnormal;
+  return r;
+}
+
+inline int CertainSign(const DoubleDouble& f)
+{
+  const double margin = f.E * (1.0 + 1e-12) + Subnormal;
+  const double low = std::abs(f.Hi) - std::abs(f.Lo);
+  return low > margin ? (f.Hi > 0 ? 1 : -1) : 0;
 }
 
 template <class T>
@@ -76,21 +154,45 @@ struct Homogeneous
 /// Homogeneous coordinates of p: (x, y, 1) for explicit points; for a crossing, with
 /// d = P1 - P0, e = Q1 - Q0, w = d x e and n = (Q0 - P0) x e, the point P0 + d n / w is
 /// (P0 w + d n, w).
-template <class T>
-Homogeneous<T> HomogeneousOf(const ExactPoint& p)
+template <class T, class Convert>
+Homogeneous<T> ComputeHomogeneous(const ExactPoint& p, Convert&& to)
 {
   if (!p.Crossing)
   {
-    return { T(p.P.x), T(p.P.y), T(1.0) };
+    return { to(p.P.x), to(p.P.y), T(1.0) };
   }
   const SegmentCrossing& c = *p.Crossing;
-  const T p0x(c.P0.x), p0y(c.P0.y);
-  const T dx = T(c.P1.x) - p0x, dy = T(c.P1.y) - p0y;
-  const T ex = T(c.Q1.x) - T(c.Q0.x), ey = T(c.Q1.y) - T(c.Q0.y);
-  const T fx = T(c.Q0.x) - p0x, fy = T(c.Q0.y) - p0y;
+  const T p0x = to(c.P0.x), p0y = to(c.P0.y);
+  const T dx = to(c.P1.x) - p0x, dy = to(c.P1.y) - p0y;
+  const T ex = to(c.Q1.x) - to(c.Q0.x), ey = to(c.Q1.y) - to(c.Q0.y);
+  const T fx = to(c.Q0.x) - p0x, fy = to(c.Q0.y) - p0y;
   const T w = dx * ey - dy * ex;
   const T n = fx * ey - fy * ex;
   return { p0x * w + dx * n, p0y * w + dy * n, w };
+}
+
+template <class T>
+Homogeneous<T> ComputeHomogeneous(const ExactPoint& p)
+{
+  return ComputeHomogeneous<T>(p, [](double x) { return T(x); });
+}
+
+template <class T>
+Homogeneous<T> HomogeneousOf(const ExactPoint& p)
+{
+  return ComputeHomogeneous<T>(p);
+}
+
+/// The first filter reads a crossing's coordinates from its cache when it has one.
+template <>
+Homogeneous<Filtered> HomogeneousOf<Filtered>(const ExactPoint& p)
+{
+  if (p.Crossing && p.Crossing->Cached)
+  {
+    const SegmentCrossing& c = *p.Crossing;
+    return { { c.H[0], c.E[0] }, { c.H[1], c.E[1] }, { c.H[2], c.E[2] } };
+  }
+  return ComputeHomogeneous<Filtered>(p);
 }
 
 /// Determinant of the three points' homogeneous coordinates; its sign times the signs of the
@@ -110,21 +212,147 @@ T CompareDeterminant(const Homogeneous<T>& a, const Homogeneous<T>& b, int axis)
 
 std::atomic<long long> Fallbacks{ 0 };
 
+// The exact path: every double of the predicate is an integer times 2^e; with E the least such
+// exponent among them, all of them times 2^-E are integers, held exactly by GMP's mpz. Scaling
+// every point by one positive factor keeps every sign (the determinants scale by a positive
+// power of it), and integers need no fraction reduction, which dominated rationals' cost.
+class ScaledIntegers
+{
+public:
+  explicit ScaledIntegers(std::initializer_list<const ExactPoint*> points)
+  {
+    for (const ExactPoint* p : points)
+    {
+      if (!p->Crossing)
+      {
+        this->See(p->P.x);
+        this->See(p->P.y);
+        continue;
+      }
+      for (const Vec2 v : { p->Crossing->P0, p->Crossing->P1, p->Crossing->Q0, p->Crossing->Q1 })
+      {
+        this->See(v.x);
+        this->See(v.y);
+      }
+    }
+  }
+
+  mpz_class operator()(double x) const
+  {
+    int e = 0;
+    const double m = std::frexp(x, &e); // x = m 2^e, 0.5 <= |m| < 1
+    mpz_class z(std::ldexp(m, 53));     // an integer, exactly
+    mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), static_cast<mp_bitcnt_t>(e - 53 - this->Least));
+    return z;
+  }
+
+private:
+  void See(double x)
+  {
+    if (x != 0.0)
+    {
+      int e = 0;
+      std::frexp(x, &e);
+      this->Least = std::min(this->Least, e - 53);
+    }
+  }
+  int Least = std::numeric_limits<int>::max();
+};
+
+inline int Sign(const mpz_class& z)
+{
+  return sgn(z);
+}
+
 int ExactOrientSlow(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c)
 {
   ++Fallbacks;
-  const Homogeneous<mpq_class> ha = HomogeneousOf<mpq_class>(a);
-  const Homogeneous<mpq_class> hb = HomogeneousOf<mpq_class>(b);
-  const Homogeneous<mpq_class> hc = HomogeneousOf<mpq_class>(c);
+  const ScaledIntegers to{ &a, &b, &c };
+  const Homogeneous<mpz_class> ha = ComputeHomogeneous<mpz_class>(a, to);
+  const Homogeneous<mpz_class> hb = ComputeHomogeneous<mpz_class>(b, to);
+  const Homogeneous<mpz_class> hc = ComputeHomogeneous<mpz_class>(c, to);
   return Sign(OrientDeterminant(ha, hb, hc)) * Sign(ha.W) * Sign(hb.W) * Sign(hc.W);
 }
 
 int ExactCompareSlow(const ExactPoint& a, const ExactPoint& b, int axis)
 {
   ++Fallbacks;
-  const Homogeneous<mpq_class> ha = HomogeneousOf<mpq_class>(a);
-  const Homogeneous<mpq_class> hb = HomogeneousOf<mpq_class>(b);
+  const ScaledIntegers to{ &a, &b };
+  const Homogeneous<mpz_class> ha = ComputeHomogeneous<mpz_class>(a, to);
+  const Homogeneous<mpz_class> hb = ComputeHomogeneous<mpz_class>(b, to);
   return Sign(CompareDeterminant(ha, hb, axis)) * Sign(ha.W) * Sign(hb.W);
+}
+
+/// The orientation in filtered arithmetic T, or 0 when the filter cannot decide.
+template <class T>
+int FilteredOrient(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c)
+{
+  const Homogeneous<T> ha = HomogeneousOf<T>(a);
+  const Homogeneous<T> hb = HomogeneousOf<T>(b);
+  const Homogeneous<T> hc = HomogeneousOf<T>(c);
+  const int wa = CertainSign(ha.W), wb = CertainSign(hb.W), wc = CertainSign(hc.W);
+  const int d = CertainSign(OrientDeterminant(ha, hb, hc));
+  return d * wa * wb * wc;
+}
+
+/// a's coordinate minus b's in filtered arithmetic T, or 0 when the filter cannot decide.
+template <class T>
+int FilteredCompare(const ExactPoint& a, const ExactPoint& b, int axis)
+{
+  const Homogeneous<T> ha = HomogeneousOf<T>(a);
+  const Homogeneous<T> hb = HomogeneousOf<T>(b);
+  return CertainSign(CompareDeterminant(ha, hb, axis)) * CertainSign(ha.W) * CertainSign(hb.W);
+}
+
+/// Whether the lines through (l0, l1) and (m0, m1) are one line: exact orientations of explicit
+/// points (Predicates.h), fast.
+bool SameLine(Vec2 l0, Vec2 l1, Vec2 m0, Vec2 m1)
+{
+  return Orient2dSign(l0, l1, m0) == 0 && Orient2dSign(l0, l1, m1) == 0;
+}
+
+/// Whether p lies on the line through l0 and l1 by construction: an explicit point on it, or a
+/// crossing one of whose lines it is.
+bool OnLineByConstruction(const ExactPoint& p, Vec2 l0, Vec2 l1)
+{
+  if (!p.Crossing)
+  {
+    return Orient2dSign(l0, l1, p.P) == 0;
+  }
+  const SegmentCrossing& c = *p.Crossing;
+  return SameLine(l0, l1, c.P0, c.P1) || SameLine(l0, l1, c.Q0, c.Q1);
+}
+
+/// Whether a, b and c lie on one line by construction: the commonest exact zero by far (the
+/// points of one segment, or of segments along one line, met again and again while their
+/// pieces are inserted), decided with orientations of explicit points only.
+bool CollinearByConstruction(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c)
+{
+  for (const ExactPoint* p : { &a, &b, &c })
+  {
+    if (!p->Crossing)
+    {
+      continue;
+    }
+    const SegmentCrossing& d = *p->Crossing;
+    for (const auto& [l0, l1] : { std::make_pair(d.P0, d.P1), std::make_pair(d.Q0, d.Q1) })
+    {
+      if (OnLineByConstruction(a, l0, l1) && OnLineByConstruction(b, l0, l1) &&
+        OnLineByConstruction(c, l0, l1))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+/// Whether two crossings are the crossing of the same two lines (segments drawn twice, or
+/// along one line): equal, decided with orientations of explicit points only.
+bool SameCrossingByConstruction(const SegmentCrossing& x, const SegmentCrossing& y)
+{
+  return (SameLine(x.P0, x.P1, y.P0, y.P1) && SameLine(x.Q0, x.Q1, y.Q0, y.Q1)) ||
+    (SameLine(x.P0, x.P1, y.Q0, y.Q1) && SameLine(x.Q0, x.Q1, y.P0, y.P1));
 }
 
 } // namespace
@@ -132,16 +360,16 @@ int ExactCompareSlow(const ExactPoint& a, const ExactPoint& b, int axis)
 //------------------------------------------------------------------------------
 int ExactOrient(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c)
 {
-  const Homogeneous<Filtered> ha = HomogeneousOf<Filtered>(a);
-  const Homogeneous<Filtered> hb = HomogeneousOf<Filtered>(b);
-  const Homogeneous<Filtered> hc = HomogeneousOf<Filtered>(c);
-  const int wa = CertainSign(ha.W), wb = CertainSign(hb.W), wc = CertainSign(hc.W);
-  const int d = CertainSign(OrientDeterminant(ha, hb, hc));
-  if (wa != 0 && wb != 0 && wc != 0 && d != 0)
+  int s = FilteredOrient<Filtered>(a, b, c);
+  if (s == 0)
   {
-    return d * wa * wb * wc;
+    if (CollinearByConstruction(a, b, c))
+    {
+      return 0;
+    }
+    s = FilteredOrient<DoubleDouble>(a, b, c);
   }
-  return ExactOrientSlow(a, b, c);
+  return s != 0 ? s : ExactOrientSlow(a, b, c);
 }
 
 //------------------------------------------------------------------------------
@@ -152,15 +380,31 @@ int ExactCompare(const ExactPoint& a, const ExactPoint& b, int axis)
     const double x = axis == 0 ? a.P.x : a.P.y, y = axis == 0 ? b.P.x : b.P.y;
     return x < y ? -1 : (x > y ? 1 : 0);
   }
-  const Homogeneous<Filtered> ha = HomogeneousOf<Filtered>(a);
-  const Homogeneous<Filtered> hb = HomogeneousOf<Filtered>(b);
-  const int wa = CertainSign(ha.W), wb = CertainSign(hb.W);
-  const int d = CertainSign(CompareDeterminant(ha, hb, axis));
-  if (wa != 0 && wb != 0 && d != 0)
+  int s = FilteredCompare<Filtered>(a, b, axis);
+  if (s == 0)
   {
-    return d * wa * wb;
+    if (a.Crossing && b.Crossing && SameCrossingByConstruction(*a.Crossing, *b.Crossing))
+    {
+      return 0;
+    }
+    s = FilteredCompare<DoubleDouble>(a, b, axis);
   }
-  return ExactCompareSlow(a, b, axis);
+  return s != 0 ? s : ExactCompareSlow(a, b, axis);
+}
+
+//------------------------------------------------------------------------------
+SegmentCrossing MakeSegmentCrossing(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1)
+{
+  SegmentCrossing c{ p0, p1, q0, q1 };
+  const Homogeneous<Filtered> h = ComputeHomogeneous<Filtered>(ExactPoint{ p0, &c });
+  c.H[0] = h.X.V;
+  c.H[1] = h.Y.V;
+  c.H[2] = h.W.V;
+  c.E[0] = h.X.E;
+  c.E[1] = h.Y.E;
+  c.E[2] = h.W.E;
+  c.Cached = true;
+  return c;
 }
 
 //------------------------------------------------------------------------------

@@ -11,10 +11,17 @@
 // given, and needs no snapping, detour or step budget.
 //
 // Evaluation: in homogeneous coordinates (x, y, w) with w = the segments' cross product, the
-// orientation of three points is a polynomial of degree 9 in the end points' coordinates.
-// It is computed first in doubles with a running bound on its rounding error (a floating-point
-// filter); only when the bound does not settle the sign is it recomputed exactly in GMP's
-// rationals, which hold every double exactly. Generic configurations never leave the filter.
+// orientation of three points is a polynomial of degree up to 9 in the end points'
+// coordinates. It is decided by the first of these that can:
+//  1. doubles with a running bound on their rounding error (a floating-point filter; the
+//     crossing's own coordinates and bounds are computed once, MakeSegmentCrossing);
+//  2. exact zeros by construction: three points on one line of the drawing, two crossings of
+//     the same two lines (orientations of explicit points only);
+//  3. double-double numbers (about 106 bits) with the same bound: near-degenerate cases, such
+//     as three curves nearly through one point, whose values are about 1e-16 of their terms;
+//  4. GMP integers: every double of the predicate scaled by one power of two to an integer,
+//     which keeps every sign and needs no fraction reduction.
+// Generic configurations never leave step 1.
 #ifndef boolsurf_ExactCrossings_h
 #define boolsurf_ExactCrossings_h
 
@@ -28,7 +35,15 @@ namespace boolsurf
 struct SegmentCrossing
 {
   Vec2 P0, P1, Q0, Q1;
+  /// The first filter's homogeneous coordinates (x, y, w) and their error bounds, computed
+  /// once by MakeSegmentCrossing (every predicate on the crossing starts from them); without
+  /// Cached they are computed per predicate.
+  double H[3] = { 0.0, 0.0, 0.0 }, E[3] = { 0.0, 0.0, 0.0 };
+  bool Cached = false;
 };
+
+/// The crossing of the lines (p0, p1) and (q0, q1), with its filter's coordinates cached.
+SegmentCrossing MakeSegmentCrossing(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1);
 
 /// A point as the exact predicates see it: explicit coordinates P, or, when Crossing is set,
 /// that crossing (P is then only its rounded position and is not used).

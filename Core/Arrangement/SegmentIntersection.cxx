@@ -336,7 +336,7 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
           -1,
           -1,
           static_cast<int>(out.Crossings.size()) });
-        out.Crossings.push_back({ p0, p1, q0, q1 });
+        out.Crossings.push_back(MakeSegmentCrossing(p0, p1, q0, q1));
         hits[i].push_back(id);
         hits[j].push_back(id);
       }
@@ -382,13 +382,32 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
     const Vec2 a = out.Points[endA[i]].P, b = out.Points[endB[i]].P;
     const int axis = std::fabs(b.x - a.x) >= std::fabs(b.y - a.y) ? 0 : 1;
     const int direction = (axis == 0 ? b.x > a.x : b.y > a.y) ? 1 : -1;
-    std::sort(h.begin(),
-      h.end(),
-      [&](int x, int y)
-      {
-        const int c = direction * ExactCompare(ExactPointOf(out, x), ExactPointOf(out, y), axis);
-        return c != 0 ? c < 0 : x < y;
-      });
+    if (mergeDistance > 0.0)
+    {
+      // Merging: by the coordinates along the axis (exact for explicit points, rounded for
+      // crossings), which spares the exact comparison of equal crossings. Neighbours in the
+      // wrong order are a rounding apart, so they are near and merged; a crossing rounded far
+      // off (nearly parallel segments) can only make pieces cross, which stage 3 reports and
+      // the exact second pass repairs.
+      const auto key = [&](int x) { return axis == 0 ? out.Points[x].P.x : out.Points[x].P.y; };
+      std::sort(h.begin(),
+        h.end(),
+        [&](int x, int y)
+        {
+          const double kx = direction * key(x), ky = direction * key(y);
+          return kx != ky ? kx < ky : x < y;
+        });
+    }
+    else
+    {
+      std::sort(h.begin(),
+        h.end(),
+        [&](int x, int y)
+        {
+          const int c = direction * ExactCompare(ExactPointOf(out, x), ExactPointOf(out, y), axis);
+          return c != 0 ? c < 0 : x < y;
+        });
+    }
     for (std::size_t k = 1; k < h.size(); ++k)
     {
       if (h[k] != h[k - 1] &&
