@@ -380,6 +380,23 @@ int ExactCompare(const ExactPoint& a, const ExactPoint& b, int axis)
     const double x = axis == 0 ? a.P.x : a.P.y, y = axis == 0 ? b.P.x : b.P.y;
     return x < y ? -1 : (x > y ? 1 : 0);
   }
+  // Certified boxes first: explicit points are their own box.
+  const bool boxA = !a.Crossing || a.Crossing->Cached, boxB = !b.Crossing || b.Crossing->Cached;
+  if (boxA && boxB)
+  {
+    const Vec2 ca = a.Crossing ? a.Crossing->Center : a.P,
+               cb = b.Crossing ? b.Crossing->Center : b.P;
+    const double ra = a.Crossing ? a.Crossing->Radius : 0.0;
+    const double rb = b.Crossing ? b.Crossing->Radius : 0.0;
+    const double d = axis == 0 ? ca.x - cb.x : ca.y - cb.y;
+    const double r = ra + rb;
+    if (std::abs(d) > r * (1.0 + 1e-10) +
+        4.0 * RoundingUnit *
+          (std::abs(axis == 0 ? ca.x : ca.y) + std::abs(axis == 0 ? cb.x : cb.y)))
+    {
+      return d > 0 ? 1 : -1;
+    }
+  }
   int s = FilteredCompare<Filtered>(a, b, axis);
   if (s == 0)
   {
@@ -404,16 +421,36 @@ SegmentCrossing MakeSegmentCrossing(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1)
   c.E[1] = h.Y.E;
   c.E[2] = h.W.E;
   c.Cached = true;
+  // x = X / W with |X - X'| <= EX and |W - W'| <= EW: |x - X'/W'| <= (EX + |X'/W'| EW) /
+  // (|W'| - EW); the factor covers the rounding of these few operations.
+  const double w = std::abs(h.W.V);
+  if (w > 2.0 * h.W.E && std::isfinite(h.X.V / h.W.V) && std::isfinite(h.Y.V / h.W.V))
+  {
+    c.Center = { h.X.V / h.W.V, h.Y.V / h.W.V };
+    const double rx = (h.X.E + std::abs(c.Center.x) * h.W.E) / (w - h.W.E);
+    const double ry = (h.Y.E + std::abs(c.Center.y) * h.W.E) / (w - h.W.E);
+    c.Radius = (1.0 + 1e-10) * std::max(rx, ry) +
+      4.0 * RoundingUnit * std::max(std::abs(c.Center.x), std::abs(c.Center.y)) + Subnormal;
+  }
+  else
+  {
+    c.Radius = std::numeric_limits<double>::infinity();
+  }
   return c;
 }
 
 //------------------------------------------------------------------------------
 Vec2 RoundedCrossing(const SegmentCrossing& c)
 {
-  const Vec2 d = c.P1 - c.P0, e = c.Q1 - c.Q0, f = c.Q0 - c.P0;
-  const double w = d.x * e.y - d.y * e.x;
-  const double n = f.x * e.y - f.y * e.x;
-  return c.P0 + (n / w) * d;
+  // Along Q, from the orientations of its ends to line P: they have opposite signs for a
+  // proper crossing, so the ratio is finite even where the segments are nearly parallel
+  // (their cross product may round to zero there).
+  const double o0 = Orient2d(c.P0, c.P1, c.Q0), o1 = Orient2d(c.P0, c.P1, c.Q1);
+  if (o0 == o1)
+  {
+    return 0.5 * (c.Q0 + c.Q1); // parallel: no crossing; defined, not used
+  }
+  return c.Q0 + (o0 / (o0 - o1)) * (c.Q1 - c.Q0);
 }
 
 //------------------------------------------------------------------------------

@@ -40,6 +40,10 @@ struct SegmentCrossing
   /// Cached they are computed per predicate.
   double H[3] = { 0.0, 0.0, 0.0 }, E[3] = { 0.0, 0.0, 0.0 };
   bool Cached = false;
+  /// With Cached: the crossing lies within Radius of Center on each axis (a certified box),
+  /// which settles most comparisons of coordinates without arithmetic.
+  Vec2 Center{ 0.0, 0.0 };
+  double Radius = 0.0;
 };
 
 /// The crossing of the lines (p0, p1) and (q0, q1), with its filter's coordinates cached.

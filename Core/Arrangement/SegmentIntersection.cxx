@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
+#include <unordered_map>
 #include <utility>
 
 namespace boolsurf
@@ -40,9 +42,19 @@ struct Scratch
 /// Scratch of CutSegmentsAtIntersections, per thread.
 struct CutScratch
 {
-  std::vector<int> EndA, EndB, Order, Parent;
+  std::vector<int> EndA, EndB, Order, Parent, Line;
   std::vector<std::vector<int>> Hits;
+  std::unordered_map<std::uint64_t, int> CrossingOfLines;
 };
+
+int FindRoot(std::vector<int>& parent, int x)
+{
+  while (parent[x] != x)
+  {
+    x = parent[x] = parent[parent[x]];
+  }
+  return x;
+}
 
 /// Empties `a` for the next triangle of its slot, keeping its buffers' capacity (the slot's
 /// LocalArrangement lives on in the arrangement's work buffers from edit to edit).
@@ -274,6 +286,37 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
     order.end(),
     [&](int i, int j) { return xmin(i) != xmin(j) ? xmin(i) < xmin(j) : i < j; });
 
+  // A crowded triangle (a detailed drawing at small scale, many curves drawn along the same
+  // lines) meets the same crossing once per pair of segments on the same two lines: millions
+  // of copies for thousands of overlapping segments. So there, overlapping collinear segments
+  // are first grouped into lines, and a crossing is made once per pair of lines.
+  const bool crowded = count > 64;
+  std::vector<int>& line = scratch.Line;
+  std::unordered_map<std::uint64_t, int>& crossingOfLines = scratch.CrossingOfLines;
+  crossingOfLines.clear();
+  if (crowded)
+  {
+    line.resize(count);
+    for (int i = 0; i < count; ++i)
+    {
+      line[i] = i;
+    }
+    for (int oi = 0; oi < count; ++oi)
+    {
+      const int i = order[oi];
+      const Vec2 p0 = out.Points[endA[i]].P, p1 = out.Points[endB[i]].P;
+      for (int oj = oi + 1; oj < count && xmin(order[oj]) <= xmax(i); ++oj)
+      {
+        const int j = order[oj];
+        if (Orient2dSign(p0, p1, out.Points[endA[j]].P) == 0 &&
+          Orient2dSign(p0, p1, out.Points[endB[j]].P) == 0)
+        {
+          line[FindRoot(line, i)] = FindRoot(line, j);
+        }
+      }
+    }
+  }
+
   const int firstCrossing = static_cast<int>(out.Points.size());
   for (int oi = 0; oi < count; ++oi)
   {
@@ -331,12 +374,23 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
       {
         // Proper crossing: a new point of both segments, kept as the pair of them. Points at
         // the same place are merged below, once they are ordered along the segments.
-        const int id = static_cast<int>(out.Points.size());
-        out.Points.push_back({ ClampInside(RoundedCrossing({ p0, p1, q0, q1 })),
-          -1,
-          -1,
-          static_cast<int>(out.Crossings.size()) });
-        out.Crossings.push_back(MakeSegmentCrossing(p0, p1, q0, q1));
+        int id = static_cast<int>(out.Points.size());
+        if (crowded)
+        {
+          const auto li = static_cast<std::uint32_t>(FindRoot(line, i));
+          const auto lj = static_cast<std::uint32_t>(FindRoot(line, j));
+          const std::uint64_t key =
+            li < lj ? (std::uint64_t(li) << 32) | lj : (std::uint64_t(lj) << 32) | li;
+          id = crossingOfLines.emplace(key, id).first->second;
+        }
+        if (id == static_cast<int>(out.Points.size()))
+        {
+          out.Points.push_back({ ClampInside(RoundedCrossing({ p0, p1, q0, q1 })),
+            -1,
+            -1,
+            static_cast<int>(out.Crossings.size()) });
+          out.Crossings.push_back(MakeSegmentCrossing(p0, p1, q0, q1));
+        }
         hits[i].push_back(id);
         hits[j].push_back(id);
       }
@@ -408,19 +462,34 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
           return c != 0 ? c < 0 : x < y;
         });
     }
+    const auto unite = [&](int x, int y)
+    {
+      const int rx = find(x), ry = find(y);
+      if (rx != ry)
+      {
+        const int keep = kept(rx, ry);
+        parent[rx == keep ? ry : rx] = keep;
+      }
+    };
     for (std::size_t k = 1; k < h.size(); ++k)
     {
       if (h[k] != h[k - 1] &&
         (near(h[k - 1], h[k]) ||
           ExactCompare(ExactPointOf(out, h[k - 1]), ExactPointOf(out, h[k]), axis) == 0))
       {
-        const int rx = find(h[k - 1]), ry = find(h[k]);
-        if (rx != ry)
-        {
-          const int keep = kept(rx, ry);
-          parent[rx == keep ? ry : rx] = keep;
-        }
+        unite(h[k - 1], h[k]);
       }
+    }
+    // A crossing a rounding away from the segment's own end (a curve point where several
+    // curves meet, which this segment misses by a rounding) is that end. Never equal to it:
+    // crossings are strictly inside their segments.
+    if (near(endA[i], h.front()))
+    {
+      unite(endA[i], h.front());
+    }
+    if (near(h.back(), endB[i]))
+    {
+      unite(h.back(), endB[i]);
     }
   }
 

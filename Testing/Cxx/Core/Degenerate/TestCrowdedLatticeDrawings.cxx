@@ -4,6 +4,10 @@
 // thousands of crossings fall in one triangle. Every Boolean and fill rule must give the exact
 // planar area (the slab sweep of Support/PlanarWinding.h), with no refusal.
 //
+// And ten thousand segments in one mesh triangle: polygons on a 7 x 7 lattice, so that
+// thousands of segments run along the same lines and thousands of pairs cross at each lattice
+// point.
+//
 // BOOLSURF_CROWDED_SCALE=K multiplies the drawings' size by K (a longer hunt; the refinement
 // of one triangle is meant to stay near-linear in its points, see Docs/Decisions.md).
 #include "FlatDrawingOracle.h"
@@ -116,4 +120,25 @@ TEST(CrowdedLatticeDrawings, HundredsOfPiecesPerTriangleOfAnIrregularSquare)
     const TriangleMesh square = FlatMeshFor(-1, n + 1, 2, false, seed);
     ExpectExactAreas(square, drawing, 300, "irregular square, seed " + std::to_string(seed));
   }
+}
+
+// Ten thousand segments in ONE mesh triangle (issue 28, item 2): 1,500 random lattice polygons
+// on a 7 x 7 lattice, all inside a single triangle, so that every segment meets hundreds of
+// others, most of them along shared lines and through shared lattice points. About 100 s in a
+// release build; the sanitizer pass (BOOLSURF_SANITIZER_PASS) draws 300 polygons.
+TEST(CrowdedLatticeDrawings, TenThousandSegmentsInOneTriangle)
+{
+  const int n = 6;
+  const bool sanitizerPass = std::getenv("BOOLSURF_SANITIZER_PASS") != nullptr;
+  const std::vector<LatticePolygon> drawing = CrowdedDrawing(28, n, sanitizerPass ? 300 : 1500);
+  std::size_t segments = 0;
+  for (const LatticePolygon& p : drawing)
+  {
+    segments += p.Points.size();
+  }
+  ASSERT_GE(segments, sanitizerPass ? 2000u : 10000u);
+  const double far = 2.0 * n + 4.0;
+  const TriangleMesh one(
+    { { -1.0, -1.0, 0.0 }, { far, -1.0, 0.0 }, { -1.0, far, 0.0 } }, { { 0, 1, 2 } });
+  ExpectExactAreas(one, drawing, 1000, std::to_string(segments) + " segments in one triangle");
 }
