@@ -93,4 +93,6 @@ BENCHMARK(BM_CrowdedTriangle)
   ->Args({ 24, 48 })
   ->Args({ 48, 96 })
   ->Args({ 96, 192 })
+  // Ten thousand segments on a 7 x 7 lattice: thousands of segments along shared lines.
+  ->Args({ 6, 1500 })
   ->Unit(benchmark::kMillisecond);
