@@ -360,6 +360,37 @@ bool SameCrossingByConstruction(const SegmentCrossing& x, const SegmentCrossing&
 //------------------------------------------------------------------------------
 int ExactOrient(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c)
 {
+  // Certified boxes first (explicit points are their own): moving each point within its box
+  // moves the determinant by at most the bound below, first order in the radii plus the
+  // second-order terms, plus the rounding of these few operations.
+  const auto box = [](const ExactPoint& p, Vec2& center, double& radius)
+  {
+    if (!p.Crossing)
+    {
+      center = p.P;
+      radius = 0.0;
+      return true;
+    }
+    center = p.Crossing->Center;
+    radius = p.Crossing->Radius;
+    return p.Crossing->Cached && std::isfinite(radius);
+  };
+  Vec2 ca, cb, cc;
+  double ra, rb, rc;
+  if (box(a, ca, ra) && box(b, cb, rb) && box(c, cc, rc))
+  {
+    const Vec2 ab = cb - ca, ac = cc - ca, bc = cc - cb;
+    const double l1 = std::abs(ab.x) + std::abs(ab.y), l2 = std::abs(ac.x) + std::abs(ac.y);
+    const double l3 = std::abs(bc.x) + std::abs(bc.y), r = ra + rb + rc;
+    const double t1 = ab.x * ac.y, t2 = ab.y * ac.x;
+    const double bound = (r * (l1 + l2 + l3) + 4.0 * r * r) * (1.0 + 1e-10) +
+      8.0 * RoundingUnit * (std::abs(t1) + std::abs(t2) + r * (l1 + l2 + l3)) + Subnormal;
+    const double det = t1 - t2;
+    if (std::abs(det) > bound)
+    {
+      return det > 0 ? 1 : -1;
+    }
+  }
   int s = FilteredOrient<Filtered>(a, b, c);
   if (s == 0)
   {

@@ -43,6 +43,7 @@ struct Scratch
 struct CutScratch
 {
   std::vector<int> EndA, EndB, Order, Parent, Line;
+  std::vector<char> Bent;
   std::vector<std::vector<int>> Hits;
   std::unordered_map<std::uint64_t, int> CrossingOfLines;
 };
@@ -409,6 +410,8 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
   };
   std::vector<int>& parent = scratch.Parent;
   parent.resize(out.Points.size());
+  std::vector<char>& bent = scratch.Bent;
+  bent.assign(out.Points.size(), 0);
   for (std::size_t p = 0; p < parent.size(); ++p)
   {
     parent[p] = static_cast<int>(p);
@@ -462,22 +465,31 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
           return c != 0 ? c < 0 : x < y;
         });
     }
-    const auto unite = [&](int x, int y)
+    // `isNear`: merged for being near, not equal, so the point kept stands for points it is
+    // not exactly equal to.
+    const auto unite = [&](int x, int y, bool isNear)
     {
       const int rx = find(x), ry = find(y);
       if (rx != ry)
       {
         const int keep = kept(rx, ry);
         parent[rx == keep ? ry : rx] = keep;
+        bent[keep] = static_cast<char>(bent[keep] || bent[rx == keep ? ry : rx] || isNear);
       }
     };
     for (std::size_t k = 1; k < h.size(); ++k)
     {
-      if (h[k] != h[k - 1] &&
-        (near(h[k - 1], h[k]) ||
-          ExactCompare(ExactPointOf(out, h[k - 1]), ExactPointOf(out, h[k]), axis) == 0))
+      if (h[k] == h[k - 1])
       {
-        unite(h[k - 1], h[k]);
+        continue;
+      }
+      if (near(h[k - 1], h[k]))
+      {
+        unite(h[k - 1], h[k], true);
+      }
+      else if (ExactCompare(ExactPointOf(out, h[k - 1]), ExactPointOf(out, h[k]), axis) == 0)
+      {
+        unite(h[k - 1], h[k], false);
       }
     }
     // A crossing a rounding away from the segment's own end (a curve point where several
@@ -485,19 +497,23 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
     // crossings are strictly inside their segments.
     if (near(endA[i], h.front()))
     {
-      unite(endA[i], h.front());
+      unite(endA[i], h.front(), true);
     }
     if (near(h.back(), endB[i]))
     {
-      unite(h.back(), endB[i]);
+      unite(h.back(), endB[i], true);
     }
   }
 
-  // Crossings merged into another point are dropped; the others are renumbered in order.
+  // Crossings merged into another point are dropped; the others are renumbered in order. A
+  // crossing kept for near points is only near them, so its exact definition no longer says
+  // where the pieces through it run: it becomes an explicit point at its rounded position
+  // (plain orientations from then on; near-degenerate ones, which these clusters are full
+  // of, cost twenty times more on exact crossings).
   std::vector<int>& renumber = scratch.Order; // the sweep order is no longer needed
   const int total = static_cast<int>(out.Points.size());
   renumber.assign(total, -1);
-  int next = firstCrossing;
+  int next = firstCrossing, nextCrossing = 0;
   for (int p = 0; p < total; ++p)
   {
     if (p < firstCrossing)
@@ -506,15 +522,21 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
     }
     else if (find(p) == p)
     {
-      const int crossing = next - firstCrossing;
-      out.Crossings[crossing] = out.Crossings[out.Points[p].Crossing];
       out.Points[next] = out.Points[p];
-      out.Points[next].Crossing = crossing;
+      if (bent[p])
+      {
+        out.Points[next].Crossing = -1;
+      }
+      else
+      {
+        out.Crossings[nextCrossing] = out.Crossings[out.Points[p].Crossing];
+        out.Points[next].Crossing = nextCrossing++;
+      }
       renumber[p] = next++;
     }
   }
   out.Points.resize(next);
-  out.Crossings.resize(next - firstCrossing);
+  out.Crossings.resize(nextCrossing);
 
   for (int i = 0; i < count; ++i)
   {

@@ -445,10 +445,15 @@ TEST(CrowdedTriangle, ConcurrentCrossingsAreOnePoint)
     ExpectValidRefinement(cut, arr);
     LocalArrangement merged = segments;
     CutSegmentsAtIntersections(merged);
-    EXPECT_EQ(merged.Crossings.size(), 1u) << "shift " << shift;
+    // One point shared by the three chains: the crossing itself when they are concurrent,
+    // else an explicit point at its rounded position (it stands for points it is only near).
+    ASSERT_EQ(merged.Points.size(), segments.Points.size() + 1) << "shift " << shift;
+    EXPECT_EQ(merged.Crossings.size(), concurrent ? 1u : 0u) << "shift " << shift;
     for (const std::vector<int>& chain : merged.Chains)
     {
-      EXPECT_EQ(chain.size(), 3u);
+      ASSERT_EQ(chain.size(), 3u);
+      EXPECT_EQ(chain[1], static_cast<int>(segments.Points.size()));
     }
+    ASSERT_TRUE(RefineTriangle(merged)) << merged.Error;
   }
 }
