@@ -309,6 +309,11 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
       for (int oj = oi + 1; oj < count && xmin(order[oj]) <= xmax(i); ++oj)
       {
         const int j = order[oj];
+        // A segment of no length is collinear with everything: it must not join two lines.
+        if (endA[i] == endB[i] || endA[j] == endB[j])
+        {
+          continue;
+        }
         if (Orient2dSign(p0, p1, out.Points[endA[j]].P) == 0 &&
           Orient2dSign(p0, p1, out.Points[endB[j]].P) == 0)
         {
