@@ -239,6 +239,10 @@ public:
 
   mpz_class operator()(double x) const
   {
+    if (x == 0.0)
+    {
+      return mpz_class(0); // no exponent: not counted in Least, not to be shifted
+    }
     int e = 0;
     const double m = std::frexp(x, &e); // x = m 2^e, 0.5 <= |m| < 1
     mpz_class z(std::ldexp(m, 53));     // an integer, exactly

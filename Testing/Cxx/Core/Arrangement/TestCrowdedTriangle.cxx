@@ -4,6 +4,7 @@
 // the segments at exact crossings (checked against rationals computed here, independently of
 // the arrangement's filtered predicates) and the refinement must answer with a valid
 // triangulation in which every piece runs along edges where it was drawn.
+#include "Arrangement/ExactCrossings.h"
 #include "Arrangement/Predicates.h"
 #include "Arrangement/SegmentIntersection.h"
 #include "Arrangement/TriangleRefinement.h"
@@ -456,4 +457,87 @@ TEST(CrowdedTriangle, ConcurrentCrossingsAreOnePoint)
     }
     ASSERT_TRUE(RefineTriangle(merged)) << merged.Error;
   }
+}
+
+namespace
+{
+
+std::array<mpq_class, 2> RationalPoint(const ExactPoint& p)
+{
+  LocalArrangement one;
+  one.Points.push_back({ p.P, -1, -1, p.Crossing ? 0 : -1 });
+  if (p.Crossing)
+  {
+    one.Crossings.push_back(*p.Crossing);
+  }
+  return ExactCoordinates(one, 0);
+}
+
+} // namespace
+
+// The predicates against rationals computed here, on crossings of lines between points of a
+// dyadic lattice (exactly concurrent and collinear configurations: the exact zeros) and of the
+// same points moved by one ulp (near-degenerate: the double-double and integer stages), with
+// cached and uncached crossings.
+TEST(ExactCrossings, PredicatesAgreeWithRationals)
+{
+  std::mt19937 rng(2028);
+  std::uniform_int_distribution<int> coord(1, 7);
+  const auto latticePoint = [&](bool nudge)
+  {
+    Vec2 p{ coord(rng) / 16.0, coord(rng) / 16.0 };
+    if (nudge && rng() % 2)
+    {
+      p.x = std::nextafter(p.x, 1.0);
+    }
+    return p;
+  };
+  std::vector<SegmentCrossing> crossings;
+  while (crossings.size() < 60)
+  {
+    const bool nudge = crossings.size() % 3 == 2;
+    const Vec2 p0 = latticePoint(nudge), p1 = latticePoint(nudge);
+    const Vec2 q0 = latticePoint(nudge), q1 = latticePoint(nudge);
+    if (Orient2dSign(p0, p1, q0) * Orient2dSign(p0, p1, q1) >= 0 ||
+      Orient2dSign(q0, q1, p0) * Orient2dSign(q0, q1, p1) >= 0)
+    {
+      continue; // not a proper crossing
+    }
+    crossings.push_back(crossings.size() % 2 ? MakeSegmentCrossing(p0, p1, q0, q1)
+                                             : SegmentCrossing{ p0, p1, q0, q1 });
+  }
+  std::vector<ExactPoint> points;
+  for (const SegmentCrossing& c : crossings)
+  {
+    points.push_back({ RoundedCrossing(c), &c });
+    points.push_back({ c.P0, nullptr }); // explicit points on the crossing's lines
+  }
+  std::vector<std::array<mpq_class, 2>> exact;
+  for (const ExactPoint& p : points)
+  {
+    exact.push_back(RationalPoint(p));
+  }
+  const long long fallbacksBefore = ExactFallbackCount();
+  int zeros = 0, checked = 0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    for (std::size_t j = 0; j < points.size(); j += 3)
+    {
+      for (int axis = 0; axis < 2; ++axis)
+      {
+        const int expected = sgn(exact[i][axis] - exact[j][axis]);
+        ASSERT_EQ(ExactCompare(points[i], points[j], axis), expected) << i << " " << j;
+      }
+      for (std::size_t k = 0; k < points.size(); k += 7)
+      {
+        const int expected = Orientation(exact[i], exact[j], exact[k]);
+        ASSERT_EQ(ExactOrient(points[i], points[j], points[k]), expected)
+          << i << " " << j << " " << k;
+        zeros += expected == 0;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(zeros, checked / 100) << "the configurations must include exact zeros";
+  EXPECT_GT(ExactFallbackCount(), fallbacksBefore) << "and reach the exact stage";
 }
