@@ -359,6 +359,21 @@ bool SameCrossingByConstruction(const SegmentCrossing& x, const SegmentCrossing&
     (SameLine(x.P0, x.P1, y.Q0, y.Q1) && SameLine(x.Q0, x.Q1, y.P0, y.P1));
 }
 
+/// The certified box of p (MakeSegmentCrossing): its center and the radius within which p
+/// lies on each axis. Explicit points are their own box; false for a crossing without one.
+bool CertifiedBox(const ExactPoint& p, Vec2& center, double& radius)
+{
+  if (!p.Crossing)
+  {
+    center = p.P;
+    radius = 0.0;
+    return true;
+  }
+  center = p.Crossing->Center;
+  radius = p.Crossing->Radius;
+  return p.Crossing->Cached && std::isfinite(radius);
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -367,21 +382,9 @@ int ExactOrient(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c)
   // Certified boxes first (explicit points are their own): moving each point within its box
   // moves the determinant by at most the bound below, first order in the radii plus the
   // second-order terms, plus the rounding of these few operations.
-  const auto box = [](const ExactPoint& p, Vec2& center, double& radius)
-  {
-    if (!p.Crossing)
-    {
-      center = p.P;
-      radius = 0.0;
-      return true;
-    }
-    center = p.Crossing->Center;
-    radius = p.Crossing->Radius;
-    return p.Crossing->Cached && std::isfinite(radius);
-  };
   Vec2 ca, cb, cc;
   double ra, rb, rc;
-  if (box(a, ca, ra) && box(b, cb, rb) && box(c, cc, rc))
+  if (CertifiedBox(a, ca, ra) && CertifiedBox(b, cb, rb) && CertifiedBox(c, cc, rc))
   {
     const Vec2 ab = cb - ca, ac = cc - ca, bc = cc - cb;
     const double l1 = std::abs(ab.x) + std::abs(ab.y), l2 = std::abs(ac.x) + std::abs(ac.y);
@@ -416,13 +419,10 @@ int ExactCompare(const ExactPoint& a, const ExactPoint& b, int axis)
     return x < y ? -1 : (x > y ? 1 : 0);
   }
   // Certified boxes first: explicit points are their own box.
-  const bool boxA = !a.Crossing || a.Crossing->Cached, boxB = !b.Crossing || b.Crossing->Cached;
-  if (boxA && boxB)
+  Vec2 ca, cb;
+  double ra, rb;
+  if (CertifiedBox(a, ca, ra) && CertifiedBox(b, cb, rb))
   {
-    const Vec2 ca = a.Crossing ? a.Crossing->Center : a.P,
-               cb = b.Crossing ? b.Crossing->Center : b.P;
-    const double ra = a.Crossing ? a.Crossing->Radius : 0.0;
-    const double rb = b.Crossing ? b.Crossing->Radius : 0.0;
     const double d = axis == 0 ? ca.x - cb.x : ca.y - cb.y;
     const double r = ra + rb;
     if (std::abs(d) > r * (1.0 + 1e-10) +

@@ -42,14 +42,6 @@ inline bool StrictlyBetween(Vec2 a, Vec2 b, Vec2 q)
   return (a.y < q.y && q.y < b.y) || (b.y < q.y && q.y < a.y);
 }
 
-/// Position of q along segment (a, b), measured on the segment's dominant axis: 0 at a, 1 at
-/// b. For points exactly on the segment this orders them exactly.
-inline double ParameterAlong(Vec2 a, Vec2 b, Vec2 q)
-{
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return std::abs(dx) >= std::abs(dy) ? (q.x - a.x) / dx : (q.y - a.y) / dy;
-}
-
 } // namespace boolsurf
 
 #endif

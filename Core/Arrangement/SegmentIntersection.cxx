@@ -391,11 +391,12 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
         }
         if (id == static_cast<int>(out.Points.size()))
         {
-          out.Points.push_back({ ClampInside(RoundedCrossing({ p0, p1, q0, q1 })),
+          const SegmentCrossing crossing = MakeSegmentCrossing(p0, p1, q0, q1);
+          out.Points.push_back({ ClampInside(RoundedCrossing(crossing)),
             -1,
             -1,
             static_cast<int>(out.Crossings.size()) });
-          out.Crossings.push_back(MakeSegmentCrossing(p0, p1, q0, q1));
+          out.Crossings.push_back(crossing);
         }
         hits[i].push_back(id);
         hits[j].push_back(id);
@@ -421,14 +422,7 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
   {
     parent[p] = static_cast<int>(p);
   }
-  auto find = [&parent](int x)
-  {
-    while (parent[x] != x)
-    {
-      x = parent[x] = parent[parent[x]];
-    }
-    return x;
-  };
+  const auto find = [&parent](int x) { return FindRoot(parent, x); };
   auto kept = [&out](int x, int y)
   {
     const bool ex = out.Points[x].Crossing < 0, ey = out.Points[y].Crossing < 0;
