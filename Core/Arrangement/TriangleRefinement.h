@@ -7,15 +7,11 @@
 //  * Fast path, no interior point (the usual case: one or a few curves crossing from edge to
 //    edge without meeting): every chain is a chord of the convex boundary polygon; chords
 //    split convex polygons into convex polygons, which are then triangulated by ear clipping.
-//  * General path: triangulate the boundary polygon, insert the interior points (splitting the
-//    triangle or edge they fall in), then insert each chain piece as a constrained edge by
-//    removing the triangles it crosses and re-triangulating the two cavity polygons.
-// All decisions are exact orientations: on the double coordinates of explicit points, and on
-// the defining segments of stage 2's crossings (ExactCrossings.h). Because stage 2 found every
-// crossing exactly and put it on every segment through it, no piece crosses another piece or
-// passes over a point it was not cut at: a constraint's insertion walks through the triangles
-// it crosses, through the vertices on it, and ends. No point is created here, nothing is
-// snapped, and no step budget is needed.
+//  * General path: a plane sweep builds the constrained triangulation in O(k log k) for k
+//    points and pieces (SweepTriangulation.h), with exact predicates on explicit points and on
+//    stage 2's crossings (ExactCrossings.h). Because stage 2 found every crossing exactly and
+//    put it on every segment through it, no piece crosses another piece or passes over a point
+//    it was not cut at; the sweep creates no point, snaps nothing and needs no step budget.
 #ifndef boolsurf_TriangleRefinement_h
 #define boolsurf_TriangleRefinement_h
 
