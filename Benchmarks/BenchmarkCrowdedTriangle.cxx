@@ -96,3 +96,81 @@ BENCHMARK(BM_CrowdedTriangle)
   // Ten thousand segments on a 7 x 7 lattice: thousands of segments along shared lines.
   ->Args({ 6, 1500 })
   ->Unit(benchmark::kMillisecond);
+
+#include "Arrangement/SegmentIntersection.h"
+#include "Arrangement/TriangleRefinement.h"
+
+#include <cmath>
+
+namespace
+{
+
+// Stage 3 alone on one triangle, as the number of pieces k grows: random short segments (about
+// three crossings each), cut exactly by stage 2 once, then triangulated by the sweep on a fresh
+// copy per iteration. The counter ns_per_k_log_k stays flat when the cost is O(k log k).
+void BM_TriangleRefinementScaling(benchmark::State& state)
+{
+  const int segments = static_cast<int>(state.range(0));
+  std::mt19937 rng(28);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  LocalArrangement drawn;
+  drawn.Triangle = 0;
+  drawn.Points = { { { 0, 0 }, 0, 3 }, { { 1, 0 }, 1, 4 }, { { 0, 1 }, 2, 5 } };
+  drawn.Boundary = { 0, 1, 2 };
+  const double length = 2.0 / std::sqrt(static_cast<double>(segments));
+  for (int k = 0; k < segments; ++k)
+  {
+    double u = unit(rng), v = unit(rng);
+    if (u + v > 1)
+    {
+      u = 1 - u;
+      v = 1 - v;
+    }
+    const Vec2 a{ 0.01 + 0.9 * u, 0.01 + 0.9 * v };
+    const double angle = 6.283185307179586 * unit(rng);
+    Vec2 b{ a.x + length * std::cos(angle), a.y + length * std::sin(angle) };
+    b = { std::min(0.98, std::max(0.01, b.x)), std::min(0.98, std::max(0.01, b.y)) };
+    if (b.x + b.y > 0.98)
+    {
+      const double s = 0.98 / (b.x + b.y);
+      b = { b.x * s, b.y * s };
+    }
+    const int ia = static_cast<int>(drawn.Points.size());
+    drawn.Points.push_back({ a, -1, -1 });
+    drawn.Points.push_back({ b, -1, -1 });
+    drawn.Chains.push_back({ ia, ia + 1 });
+    drawn.ChainClosed.push_back(1);
+  }
+  CutSegmentsAtIntersections(drawn, 0.0);
+  std::size_t pieces = 0;
+  for (const std::vector<int>& chain : drawn.Chains)
+  {
+    pieces += chain.size() - 1;
+  }
+  std::size_t triangles = 0;
+  for (auto _ : state)
+  {
+    LocalArrangement arr = drawn;
+    if (!RefineTriangle(arr))
+    {
+      state.SkipWithError(arr.Error.c_str());
+      return;
+    }
+    triangles = arr.Triangles.size();
+    benchmark::DoNotOptimize(arr.Triangles.data());
+  }
+  const double k = static_cast<double>(pieces);
+  state.counters["pieces"] = k;
+  state.counters["points"] = static_cast<double>(drawn.Points.size());
+  state.counters["triangles"] = static_cast<double>(triangles);
+  state.counters["ns_per_k_log_k"] = benchmark::Counter(k * std::log2(k),
+    benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+} // namespace
+
+BENCHMARK(BM_TriangleRefinementScaling)
+  ->Arg(1000)
+  ->Arg(10000)
+  ->Arg(100000)
+  ->Unit(benchmark::kMillisecond);
