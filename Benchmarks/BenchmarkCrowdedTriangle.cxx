@@ -5,6 +5,8 @@
 // used to be quadratic in a triangle's points), the drawing's segments and the most refined
 // triangles any mesh triangle was cut into.
 #include "Arrangement/Arrangement.h"
+#include "Arrangement/SegmentIntersection.h"
+#include "Arrangement/TriangleRefinement.h"
 #include "Mesh/ProceduralMeshes.h"
 #include "Support/PlanarWinding.h"
 #include "Support/SyntheticCurves.h"
@@ -12,6 +14,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 using namespace boolsurf;
@@ -97,11 +100,6 @@ BENCHMARK(BM_CrowdedTriangle)
   ->Args({ 6, 1500 })
   ->Unit(benchmark::kMillisecond);
 
-#include "Arrangement/SegmentIntersection.h"
-#include "Arrangement/TriangleRefinement.h"
-
-#include <cmath>
-
 namespace
 {
 
@@ -163,8 +161,8 @@ void BM_TriangleRefinementScaling(benchmark::State& state)
   state.counters["pieces"] = k;
   state.counters["points"] = static_cast<double>(drawn.Points.size());
   state.counters["triangles"] = static_cast<double>(triangles);
-  state.counters["ns_per_k_log_k"] = benchmark::Counter(k * std::log2(k),
-    benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_k_log_k"] = benchmark::Counter(
+    k * std::log2(k), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 } // namespace
