@@ -208,7 +208,7 @@ void ExactGeodesicSearch::AddWindow(const Window& w)
   {
     return;
   }
-  if (this->FieldMode && this->Allowed && !this->Allowed(w.Face))
+  if (this->Allowed && !this->Allowed(w.Face))
   {
     return;
   }
@@ -450,7 +450,7 @@ void ExactGeodesicSearch::EmitFromVertex(int v)
   for (int corner : mesh.GetVertexCorners(v))
   {
     const int t = corner / 3, k = corner % 3;
-    if (this->FieldMode && this->Allowed && !this->Allowed(t))
+    if (this->Allowed && !this->Allowed(t))
     {
       continue;
     }

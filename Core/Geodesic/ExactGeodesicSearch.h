@@ -82,9 +82,10 @@ public:
   /// At barycentric weights `w` (of its corners in order) inside triangle `face`: the windows
   /// lighting it, the paths through its corners and the sources in it.
   double GetFieldDistanceInTriangle(int face, const std::array<double, 3>& w) const;
-  /// Field mode only: triangles for which `allowed` returns false are never entered (no window
-  /// lights them, no path crosses them), for a caller that needs the field on one side of its
-  /// sources only. Empty (default): every triangle.
+  /// Triangles for which `allowed` returns false are never entered (no window lights them, no
+  /// path crosses them), in both modes: for a caller that needs the field on one side of its
+  /// sources only, or the shortest path within a corridor of triangles (FindStrip then finds
+  /// the shortest path inside it, or none). Empty (default): every triangle.
   void SetFieldTriangleFilter(std::function<bool(int)> allowed)
   {
     this->Allowed = std::move(allowed);

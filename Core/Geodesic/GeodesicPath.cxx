@@ -248,8 +248,8 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   // The locally shortest method is not cached: its ties depend on whether the edge search's
   // landmark table exists yet.
   const bool cached = this->Method != GeodesicMethod::LocallyShortest;
-  const GeodesicPathCache::Settings settings{ static_cast<int>(this->Method) * 2 +
-      (this->UseEdgePathStrip ? 1 : 0),
+  const GeodesicPathCache::Settings settings{ static_cast<int>(this->Method) * 4 +
+      (this->UseEdgePathStrip ? 1 : 0) + (this->CorridorRefinement ? 2 : 0),
     this->ExactWindows,
     this->BoundedWindows,
     this->RouteTolerance };
@@ -329,6 +329,11 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   {
     this->TryEdgePathCandidate(start, end, path);
   }
+  if (this->Statistics.Routed && this->CorridorRefinement &&
+    mesh.GetNumberOfVertices() <= MaximumVerticesForEdgeCandidate)
+  {
+    this->RefineInCorridor(start, end, path);
+  }
   if (cached &&
     (this->Statistics.Windows >= GeodesicPathCache::MinimumWindows || this->Statistics.Routed))
   {
@@ -353,6 +358,7 @@ void GeodesicPathSolver::CopySettings(const GeodesicPathSolver& other)
   this->ExactWindows = other.ExactWindows;
   this->BoundedWindows = other.BoundedWindows;
   this->RouteTolerance = other.RouteTolerance;
+  this->CorridorRefinement = other.CorridorRefinement;
 }
 
 //------------------------------------------------------------------------------
@@ -454,6 +460,85 @@ void GeodesicPathSolver::TryEdgePathCandidate(const CanonicalPoint& start,
   }
   this->KeepShorterCandidate(kept, path);
   this->Statistics.EdgePathLength = length;
+}
+
+//------------------------------------------------------------------------------
+// A routed leg is a local geodesic, and on a scan others of nearly the same length run beside
+// it, one on each side of every small bump: the route's few-percent error cannot tell them
+// apart, and the shortest may be any of them (kitten's far pairs: within 2e-4 of the exact
+// length, rarely equal to it). The window search restricted to a corridor of triangles around
+// the path (CorridorRings rings of vertex-adjacent triangles, at most about
+// MaximumCorridorTriangles) is exact inside the corridor: it finds the shortest of them,
+// within the Bounded window budget, and its path is kept when shorter. Paths outside the
+// corridor are not seen (the other way round a handle is the second route's job), so the
+// leg is not marked exact.
+void GeodesicPathSolver::RefineInCorridor(const CanonicalPoint& start,
+  const CanonicalPoint& end,
+  GeodesicPath& path)
+{
+  const TriangleMesh& mesh = this->GetMesh();
+  const int nt = mesh.GetNumberOfTriangles();
+  if (static_cast<int>(this->CorridorStamp.size()) != nt || ++this->CorridorGeneration == 0)
+  {
+    this->CorridorStamp.assign(static_cast<std::size_t>(nt), 0);
+    this->CorridorGeneration = 1;
+  }
+  const std::uint32_t generation = this->CorridorGeneration;
+  std::vector<int>& corridor = this->Corridor;
+  corridor.clear();
+  const auto add = [&](int t)
+  {
+    if (this->CorridorStamp[t] != generation)
+    {
+      this->CorridorStamp[t] = generation;
+      corridor.push_back(t);
+    }
+  };
+  for (const CanonicalPoint& p : path.Points)
+  {
+    TrianglesOf(mesh, p, this->CorridorSeeds);
+    for (const int t : this->CorridorSeeds)
+    {
+      add(t);
+    }
+  }
+  std::size_t ringStart = 0;
+  for (int ring = 0;
+       ring < CorridorRings && static_cast<int>(corridor.size()) < MaximumCorridorTriangles;
+       ++ring)
+  {
+    const std::size_t ringEnd = corridor.size();
+    for (std::size_t i = ringStart; i < ringEnd; ++i)
+    {
+      const Triangle& tri = mesh.GetTriangle(corridor[i]);
+      for (int k = 0; k < 3; ++k)
+      {
+        for (const int corner : mesh.GetVertexCorners(tri[k]))
+        {
+          add(corner / 3);
+        }
+      }
+    }
+    ringStart = ringEnd;
+  }
+
+  const GeodesicPathStatistics kept = this->Statistics;
+  this->Exact.SetMaximumWindows(CorridorWindows);
+  this->Exact.SetFieldTriangleFilter(
+    [this, generation](int t) { return this->CorridorStamp[t] == generation; });
+  const double length =
+    this->Exact.FindStrip(start, this->StartTriangles, end, this->EndTriangles, this->Strip);
+  this->Exact.SetFieldTriangleFilter(nullptr);
+  const int windows = this->Exact.GetLastWindowCount();
+  if (length < 0.0 || !this->Straighten(start, end))
+  {
+    this->Statistics = kept;
+  }
+  else
+  {
+    this->KeepShorterCandidate(kept, path);
+  }
+  this->Statistics.CorridorWindows = windows;
 }
 
 //------------------------------------------------------------------------------

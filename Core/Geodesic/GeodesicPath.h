@@ -105,8 +105,12 @@ struct GeodesicPathStatistics
   bool Routed = false;
   double RouteLength = -1;
   /// ... and from this many other candidates too (a second route round a handle, the
-  /// straightened shortest edge path on meshes up to 100k vertices), the shortest kept.
+  /// straightened shortest edge path and the exact path inside a corridor around the route
+  /// on meshes up to 100k vertices), the shortest kept.
   int AlternativeRoutes = 0;
+  /// Windows of the exact search inside a corridor around a routed leg (RefineInCorridor;
+  /// meshes up to 100k vertices), budgeted apart from Windows.
+  int CorridorWindows = 0;
   /// The leg came from the surface's GeodesicPathCache (computed before by a solver on the
   /// same surface with the same settings); the work counters above are then zero.
   bool FromCache = false;
@@ -184,6 +188,9 @@ public:
   /// homotopy class) is straightened too when its site-graph length is within this fraction
   /// of the first route's (default 0.15; 0 disables).
   void SetRouteTolerance(double f) { this->RouteTolerance = f; }
+  /// Bounded method, on meshes up to 100k vertices: refine a routed leg by the exact search
+  /// inside a corridor of triangles around it (default on; off for comparisons).
+  void SetCorridorRefinement(bool on) { this->CorridorRefinement = on; }
   /// Takes every setting above from `other` (a solver on the same mesh): a second solver
   /// then computes the same paths, for tracing on several threads.
   void CopySettings(const GeodesicPathSolver& other);
@@ -231,6 +238,11 @@ private:
     const CanonicalPoint& end,
     GeodesicPath& path);
   bool KeepShorterCandidate(const GeodesicPathStatistics& kept, GeodesicPath& path);
+  /// Bounded method, after a routed leg: the exact window search inside a corridor of
+  /// triangles around `path`; `path` becomes its result when shorter.
+  void RefineInCorridor(const CanonicalPoint& start,
+    const CanonicalPoint& end,
+    GeodesicPath& path);
   void TryAlternativeRoute(const CanonicalPoint& start,
     const CanonicalPoint& end,
     GeodesicPath& path);
@@ -267,6 +279,15 @@ private:
   std::shared_ptr<const SurfaceSiteGraph> SiteGraph;
   std::unique_ptr<EdgeGraphSearch> PlainEdgeSearch; // no landmarks: see TryEdgePathCandidate
   static constexpr int MaximumVerticesForEdgeCandidate = 100000;
+  /// RefineInCorridor: rings of vertex-adjacent triangles around the path; no ring is added
+  /// once the corridor holds MaximumCorridorTriangles; the window budget inside it (the
+  /// search makes up to ~90 windows per corridor triangle on scans, about 0.4 us each).
+  static constexpr int CorridorRings = 5;
+  static constexpr int MaximumCorridorTriangles = 3000;
+  static constexpr int CorridorWindows = 1 << 18;
+  std::vector<std::uint32_t> CorridorStamp; // == CorridorGeneration: in the corridor
+  std::uint32_t CorridorGeneration = 0;
+  std::vector<int> Corridor, CorridorSeeds;
   std::shared_ptr<GeodesicPathCache> Cache;
   GeodesicPathCache::Leg CachedLeg;
   SurfaceSiteGraph::Scratch SiteScratch;
@@ -274,6 +295,7 @@ private:
   int ExactWindows = 1 << 20;
   int BoundedWindows = 1 << 15;
   double RouteTolerance = 0.15;
+  bool CorridorRefinement = true;
   double MeanEdgeLength = -1; // computed on first use
   std::vector<CanonicalPoint> Alternative;
   bool UseEdgePathStrip = true;

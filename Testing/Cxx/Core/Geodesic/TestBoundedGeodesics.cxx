@@ -212,6 +212,51 @@ TEST(BoundedGeodesics, FarLegsAreRoutedWithinTheBudget)
   EXPECT_EQ(traced, SurfaceSiteGraph::Get(mesh).get()) << "one graph per surface";
 }
 
+// A scanned surface has many locally shortest geodesics between far points, one on each side
+// of every small bump, within a fraction of a percent of each other: the route cannot tell
+// them apart, the exact search inside a corridor around it can. On a noisy square (bumps of a
+// third of an edge), far legs past the window budget equal the exact ones with the corridor,
+// far fewer without it; never shorter, always on the surface.
+TEST(BoundedGeodesics, CorridorRefinementFindsTheShortestOfNearbyGeodesics)
+{
+  MeshData data = MakeFlatSquare(40, 1.0, 0.2, 11);
+  std::mt19937 noise(5);
+  std::uniform_real_distribution<double> bump(-0.008, 0.008);
+  for (Vec3& p : data.Positions)
+  {
+    p.z = bump(noise);
+  }
+  const TriangleMesh mesh = ToMesh(data);
+  GeodesicPathSolver refined(mesh), plain(mesh), exact(mesh);
+  exact.SetMethod(GeodesicMethod::Exact);
+  exact.SetMaximumWindows(1 << 26);
+  refined.SetBoundedWindows(1 << 10);
+  plain.SetBoundedWindows(1 << 10);
+  plain.SetCorridorRefinement(false);
+  std::mt19937 rng(30);
+  int sameRefined = 0, samePlain = 0, legs = 0;
+  GeodesicPath r, p, e;
+  for (int i = 0; i < 12; ++i)
+  {
+    const CanonicalPoint a = FacePoint(mesh, rng);
+    const CanonicalPoint b = FarPoint(mesh, a, rng);
+    ASSERT_TRUE(refined.Compute(a, b, r).Ok);
+    ASSERT_TRUE(plain.Compute(a, b, p).Ok);
+    ASSERT_TRUE(exact.Compute(a, b, e).Ok);
+    ASSERT_TRUE(refined.GetLastStatistics().Routed);
+    EXPECT_GT(refined.GetLastStatistics().CorridorWindows, 0);
+    EXPECT_EQ(plain.GetLastStatistics().CorridorWindows, 0);
+    ExpectOnSurface(mesh, r);
+    EXPECT_GE(r.Length, e.Length * (1 - 1e-9));
+    EXPECT_LE(r.Length, p.Length * (1 + 1e-12)) << "the corridor never makes a leg longer";
+    sameRefined += std::abs(r.Length - e.Length) <= 1e-9 * e.Length;
+    samePlain += std::abs(p.Length - e.Length) <= 1e-9 * e.Length;
+    ++legs;
+  }
+  EXPECT_GE(sameRefined, legs - 1);
+  EXPECT_LT(samePlain, sameRefined);
+}
+
 // Short legs are exact under the Bounded method, whatever the budget's far legs do.
 TEST(BoundedGeodesics, ShortLegsAreExact)
 {
