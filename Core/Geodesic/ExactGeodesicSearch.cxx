@@ -579,7 +579,8 @@ double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
   this->Heap.clear();
   this->Target = PositionOf(mesh, end);
   this->End = end;
-  this->Best = Infinity;
+  this->Best = this->UpperBound > 0.0 ? this->UpperBound : Infinity;
+  this->UpperBound = 0.0;
   this->BestKind = this->BestId = -1;
   this->ForcedVertex = -1;
   this->LastVertexCount = 0;

@@ -53,6 +53,10 @@ public:
   /// far pairs need up to 0.8M) and for short paths on any mesh.
   void SetMaximumWindows(int n) { this->MaximumWindows = n; }
   int GetMaximumWindows() const { return this->MaximumWindows; }
+  /// The next FindStrip only looks for paths shorter than `length` (a path known to the
+  /// caller): windows that cannot lead to one are never made, and it returns -1 when none is
+  /// shorter. Applies to one search; 0 or below: no bound.
+  void SetUpperBound(double length) { this->UpperBound = length; }
   /// True when the last FindStrip stopped at the window budget.
   bool GetLastBudgetExceeded() const { return this->BudgetExceeded; }
 
@@ -153,6 +157,7 @@ private:
   const char* PseudoSource = nullptr;            // per vertex: saddle or boundary vertex
   int MaximumWindows = 1 << 20;
   bool BudgetExceeded = false;
+  double UpperBound = 0.0;
 
   // Per-vertex labels, valid where Stamp == CurrentStamp.
   std::vector<double> Distance;

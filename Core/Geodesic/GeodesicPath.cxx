@@ -524,6 +524,8 @@ void GeodesicPathSolver::RefineInCorridor(const CanonicalPoint& start,
 
   const GeodesicPathStatistics kept = this->Statistics;
   this->Exact.SetMaximumWindows(CorridorWindows);
+  // Only a shorter path is of use: windows that cannot lead to one are not made.
+  this->Exact.SetUpperBound(path.Length);
   this->Exact.SetFieldTriangleFilter(
     [this, generation](int t) { return this->CorridorStamp[t] == generation; });
   const double length =
