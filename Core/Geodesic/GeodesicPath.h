@@ -240,9 +240,7 @@ private:
   bool KeepShorterCandidate(const GeodesicPathStatistics& kept, GeodesicPath& path);
   /// Bounded method, after a routed leg: the exact window search inside a corridor of
   /// triangles around `path`; `path` becomes its result when shorter.
-  void RefineInCorridor(const CanonicalPoint& start,
-    const CanonicalPoint& end,
-    GeodesicPath& path);
+  void RefineInCorridor(const CanonicalPoint& start, const CanonicalPoint& end, GeodesicPath& path);
   void TryAlternativeRoute(const CanonicalPoint& start,
     const CanonicalPoint& end,
     GeodesicPath& path);
