@@ -19,11 +19,11 @@
  * (one polyline or polygon per curve, cell data ShapeId and CurveType, points projected or
  * given exactly as TriangleId/Barycentric). Curves without a ShapeId array are one shape, so
  * the Boundary output (port 1) of vtkBoolSurf, vtkBoolSurfBoolean or vtkBoolSurfBSC is offset
- * as the region it bounds: margins of any Boolean or BSC result. The output is control curves in that same form, so
- * it chains into vtkBoolSurfTraceCurves or the one-step vtkBoolSurf: the input curves
- * (KeepInputCurves), then the offset boundary as closed geodesic polygons of exact surface points
- * with ShapeId OutputShapeId (-1: one above the largest input ShapeId), one point per mesh edge
- * the boundary crosses plus OutputResolution points inside each crossed triangle. Cell data
+ * as the region it bounds: margins of any Boolean or BSC result. The output is control curves in
+ * that same form, so it chains into vtkBoolSurfTraceCurves or the one-step vtkBoolSurf: the input
+ * curves (KeepInputCurves), then the offset boundary as closed geodesic polygons of exact surface
+ * points with ShapeId OutputShapeId (-1: one above the largest input ShapeId), one point per mesh
+ * edge the boundary crosses plus OutputResolution points inside each crossed triangle. Cell data
  * OffsetCurve is 1 on offset loops, 0 on input curves; field data OffsetDistance,
  * OffsetShapeId, OffsetExpression and OffsetStatistics (boundary points, windows, reached
  * vertices, crossed triangles, slivers dropped, milliseconds).
