@@ -1,5 +1,6 @@
 #include "Arrangement/SegmentIntersection.h"
 
+#include "Arrangement/CrowdedCuts.h"
 #include "Arrangement/Predicates.h"
 
 #include <algorithm>
@@ -42,20 +43,10 @@ struct Scratch
 /// Scratch of CutSegmentsAtIntersections, per thread.
 struct CutScratch
 {
-  std::vector<int> EndA, EndB, Order, Parent, Line;
+  std::vector<int> EndA, EndB, Order, Parent;
   std::vector<char> Bent;
   std::vector<std::vector<int>> Hits;
-  std::unordered_map<std::uint64_t, int> CrossingOfLines;
 };
-
-int FindRoot(std::vector<int>& parent, int x)
-{
-  while (parent[x] != x)
-  {
-    x = parent[x] = parent[parent[x]];
-  }
-  return x;
-}
 
 /// Empties `a` for the next triangle of its slot, keeping its buffers' capacity (the slot's
 /// LocalArrangement lives on in the arrangement's work buffers from edit to edit).
@@ -75,6 +66,112 @@ void ClearForReuse(LocalArrangement& a)
   a.Alias.clear();
   a.NumberOfNewPoints = 0;
   a.Error.clear();
+}
+
+/// Stage 2's cuts in an ordinary triangle: every pair of segments whose x-ranges overlap
+/// (a sweep over x), tested with exact orientations of their explicit end points.
+void CutSegmentPairs(LocalArrangement& out,
+  const std::vector<int>& endA,
+  const std::vector<int>& endB,
+  std::vector<std::vector<int>>& hits,
+  std::vector<int>& order)
+{
+  const int count = static_cast<int>(endA.size());
+  order.resize(count);
+  for (int i = 0; i < count; ++i)
+  {
+    order[i] = i;
+  }
+  auto xmin = [&](int i) { return std::min(out.Points[endA[i]].P.x, out.Points[endB[i]].P.x); };
+  auto xmax = [&](int i) { return std::max(out.Points[endA[i]].P.x, out.Points[endB[i]].P.x); };
+  std::sort(order.begin(),
+    order.end(),
+    [&](int i, int j) { return xmin(i) != xmin(j) ? xmin(i) < xmin(j) : i < j; });
+  // A segment of no length is a point: it cuts the other segment where it lies strictly
+  // inside it (every orientation with it is zero, so the collinear case below would not do).
+  const auto pointCut = [&](int point, Vec2 q0, Vec2 q1, int b0, int b1, int other)
+  {
+    const Vec2 p = out.Points[point].P;
+    if (point != b0 && point != b1 && Orient2dSign(q0, q1, p) == 0 && StrictlyBetween(q0, q1, p))
+    {
+      hits[other].push_back(point);
+    }
+  };
+  for (int oi = 0; oi < count; ++oi)
+  {
+    const int i = order[oi];
+    const double reach = xmax(i);
+    for (int oj = oi + 1; oj < count && xmin(order[oj]) <= reach; ++oj)
+    {
+      const int j = order[oj];
+      const int a0 = endA[i], a1 = endB[i], b0 = endA[j], b1 = endB[j];
+      const Vec2 p0 = out.Points[a0].P, p1 = out.Points[a1].P;
+      const Vec2 q0 = out.Points[b0].P, q1 = out.Points[b1].P;
+      const bool iPoint = p0.x == p1.x && p0.y == p1.y, jPoint = q0.x == q1.x && q0.y == q1.y;
+      if (iPoint || jPoint)
+      {
+        if (iPoint && !jPoint)
+        {
+          pointCut(a0, q0, q1, b0, b1, j);
+        }
+        else if (jPoint && !iPoint)
+        {
+          pointCut(b0, p0, p1, a0, a1, i);
+        }
+        continue;
+      }
+      const double o1 = Orient2d(p0, p1, q0), o2 = Orient2d(p0, p1, q1);
+      if (o1 == 0.0 && o2 == 0.0)
+      {
+        // Collinear: each segment is cut at the other's endpoints that fall inside it.
+        if (b0 != a0 && b0 != a1 && StrictlyBetween(p0, p1, q0))
+          hits[i].push_back(b0);
+        if (b1 != a0 && b1 != a1 && StrictlyBetween(p0, p1, q1))
+          hits[i].push_back(b1);
+        if (a0 != b0 && a0 != b1 && StrictlyBetween(q0, q1, p0))
+          hits[j].push_back(a0);
+        if (a1 != b0 && a1 != b1 && StrictlyBetween(q0, q1, p1))
+          hits[j].push_back(a1);
+        continue;
+      }
+      if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1)
+      {
+        continue; // two non-collinear segments with a common endpoint meet only there
+      }
+      const double o3 = Orient2d(q0, q1, p0), o4 = Orient2d(q0, q1, p1);
+      if ((o1 > 0.0 && o2 > 0.0) || (o1 < 0.0 && o2 < 0.0) || (o3 > 0.0 && o4 > 0.0) ||
+        (o3 < 0.0 && o4 < 0.0))
+      {
+        continue; // disjoint
+      }
+      // T-junctions: an endpoint exactly on the other segment (its interior, since endpoints
+      // are distinct and the segments are not collinear).
+      if (o1 == 0.0)
+      {
+        hits[i].push_back(b0);
+      }
+      else if (o2 == 0.0)
+      {
+        hits[i].push_back(b1);
+      }
+      else if (o3 == 0.0)
+      {
+        hits[j].push_back(a0);
+      }
+      else if (o4 == 0.0)
+      {
+        hits[j].push_back(a1);
+      }
+      else
+      {
+        // Proper crossing: a new point of both segments, kept as the pair of them. Points at
+        // the same place are merged below, once they are ordered along the segments.
+        const int id = AddCrossingPoint(out, p0, p1, q0, q1);
+        hits[i].push_back(id);
+        hits[j].push_back(id);
+      }
+    }
+  }
 }
 
 } // namespace
@@ -250,6 +347,17 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
 }
 
 //------------------------------------------------------------------------------
+int AddCrossingPoint(LocalArrangement& out, Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1)
+{
+  const SegmentCrossing crossing = MakeSegmentCrossing(p0, p1, q0, q1);
+  const int id = static_cast<int>(out.Points.size());
+  out.Points.push_back(
+    { ClampInside(RoundedCrossing(crossing)), -1, -1, static_cast<int>(out.Crossings.size()) });
+  out.Crossings.push_back(crossing);
+  return id;
+}
+
+//------------------------------------------------------------------------------
 void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
 {
   thread_local CutScratch scratch;
@@ -273,135 +381,15 @@ void CutSegmentsAtIntersections(LocalArrangement& out, double mergeDistance)
     hits[i].clear();
   }
 
-  // Sweep over x: only segments whose x-ranges overlap are tested. Segment end points are
-  // explicit, so these decisions are plain exact orientations.
-  std::vector<int>& order = scratch.Order;
-  order.resize(count);
-  for (int i = 0; i < count; ++i)
-  {
-    order[i] = i;
-  }
-  auto xmin = [&](int i) { return std::min(out.Points[endA[i]].P.x, out.Points[endB[i]].P.x); };
-  auto xmax = [&](int i) { return std::max(out.Points[endA[i]].P.x, out.Points[endB[i]].P.x); };
-  std::sort(order.begin(),
-    order.end(),
-    [&](int i, int j) { return xmin(i) != xmin(j) ? xmin(i) < xmin(j) : i < j; });
-
-  // A crowded triangle (a detailed drawing at small scale, many curves drawn along the same
-  // lines) meets the same crossing once per pair of segments on the same two lines: millions
-  // of copies for thousands of overlapping segments. So there, overlapping collinear segments
-  // are first grouped into lines, and a crossing is made once per pair of lines.
-  const bool crowded = count > 64;
-  std::vector<int>& line = scratch.Line;
-  std::unordered_map<std::uint64_t, int>& crossingOfLines = scratch.CrossingOfLines;
-  crossingOfLines.clear();
-  if (crowded)
-  {
-    line.resize(count);
-    for (int i = 0; i < count; ++i)
-    {
-      line[i] = i;
-    }
-    for (int oi = 0; oi < count; ++oi)
-    {
-      const int i = order[oi];
-      const Vec2 p0 = out.Points[endA[i]].P, p1 = out.Points[endB[i]].P;
-      for (int oj = oi + 1; oj < count && xmin(order[oj]) <= xmax(i); ++oj)
-      {
-        const int j = order[oj];
-        // A segment of no length is collinear with everything: it must not join two lines.
-        if (endA[i] == endB[i] || endA[j] == endB[j])
-        {
-          continue;
-        }
-        if (Orient2dSign(p0, p1, out.Points[endA[j]].P) == 0 &&
-          Orient2dSign(p0, p1, out.Points[endB[j]].P) == 0)
-        {
-          line[FindRoot(line, i)] = FindRoot(line, j);
-        }
-      }
-    }
-  }
-
   const int firstCrossing = static_cast<int>(out.Points.size());
-  for (int oi = 0; oi < count; ++oi)
+  if (count > 64)
   {
-    const int i = order[oi];
-    const double reach = xmax(i);
-    for (int oj = oi + 1; oj < count && xmin(order[oj]) <= reach; ++oj)
-    {
-      const int j = order[oj];
-      const int a0 = endA[i], a1 = endB[i], b0 = endA[j], b1 = endB[j];
-      const Vec2 p0 = out.Points[a0].P, p1 = out.Points[a1].P;
-      const Vec2 q0 = out.Points[b0].P, q1 = out.Points[b1].P;
-      const double o1 = Orient2d(p0, p1, q0), o2 = Orient2d(p0, p1, q1);
-      if (o1 == 0.0 && o2 == 0.0)
-      {
-        // Collinear: each segment is cut at the other's endpoints that fall inside it.
-        if (b0 != a0 && b0 != a1 && StrictlyBetween(p0, p1, q0))
-          hits[i].push_back(b0);
-        if (b1 != a0 && b1 != a1 && StrictlyBetween(p0, p1, q1))
-          hits[i].push_back(b1);
-        if (a0 != b0 && a0 != b1 && StrictlyBetween(q0, q1, p0))
-          hits[j].push_back(a0);
-        if (a1 != b0 && a1 != b1 && StrictlyBetween(q0, q1, p1))
-          hits[j].push_back(a1);
-        continue;
-      }
-      if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1)
-      {
-        continue; // two non-collinear segments with a common endpoint meet only there
-      }
-      const double o3 = Orient2d(q0, q1, p0), o4 = Orient2d(q0, q1, p1);
-      if ((o1 > 0.0 && o2 > 0.0) || (o1 < 0.0 && o2 < 0.0) || (o3 > 0.0 && o4 > 0.0) ||
-        (o3 < 0.0 && o4 < 0.0))
-      {
-        continue; // disjoint
-      }
-      // T-junctions: an endpoint exactly on the other segment (its interior, since endpoints
-      // are distinct and the segments are not collinear).
-      if (o1 == 0.0)
-      {
-        hits[i].push_back(b0);
-      }
-      else if (o2 == 0.0)
-      {
-        hits[i].push_back(b1);
-      }
-      else if (o3 == 0.0)
-      {
-        hits[j].push_back(a0);
-      }
-      else if (o4 == 0.0)
-      {
-        hits[j].push_back(a1);
-      }
-      else
-      {
-        // Proper crossing: a new point of both segments, kept as the pair of them. Points at
-        // the same place are merged below, once they are ordered along the segments.
-        int id = static_cast<int>(out.Points.size());
-        if (crowded)
-        {
-          const auto li = static_cast<std::uint32_t>(FindRoot(line, i));
-          const auto lj = static_cast<std::uint32_t>(FindRoot(line, j));
-          const std::uint64_t key =
-            li < lj ? (std::uint64_t(li) << 32) | lj : (std::uint64_t(lj) << 32) | li;
-          id = crossingOfLines.emplace(key, id).first->second;
-        }
-        if (id == static_cast<int>(out.Points.size()))
-        {
-          const SegmentCrossing crossing = MakeSegmentCrossing(p0, p1, q0, q1);
-          out.Points.push_back({ ClampInside(RoundedCrossing(crossing)),
-            -1,
-            -1,
-            static_cast<int>(out.Crossings.size()) });
-          out.Crossings.push_back(crossing);
-        }
-        hits[i].push_back(id);
-        hits[j].push_back(id);
-      }
-    }
+    // A crowded triangle: cuts per pair of lines (CrowdedCuts.h).
+    CutCrowdedSegments(out, endA, endB, hits);
+  }
+  else
+  {
+    CutSegmentPairs(out, endA, endB, hits, scratch.Order);
   }
 
   // Order each segment's points exactly along it; equal neighbours are one point (three or

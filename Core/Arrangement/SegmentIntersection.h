@@ -101,6 +101,10 @@ constexpr double NearPointDistance = 1e-13;
 /// comment.
 void CutSegmentsAtIntersections(LocalArrangement& arr, double mergeDistance = NearPointDistance);
 
+/// Adds to `out` the crossing of the lines (p0, p1) and (q0, q1) as a point (kept exact, its
+/// rounded position strictly inside the triangle) and returns its local id.
+int AddCrossingPoint(LocalArrangement& out, Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1);
+
 /// Intersects the segments of slot `slot`, filling `out` (points, boundary, chains); with
 /// near points merged within `mergeDistance` (0: exact).
 void IntersectTriangleSegments(const TriangleMesh& mesh,

@@ -445,3 +445,39 @@ TEST(ExactCrossings, PredicatesAgreeWithRationals)
   EXPECT_GT(zeros, checked / 100) << "the configurations must include exact zeros";
   EXPECT_GT(ExactFallbackCount(), fallbacksBefore) << "and reach the exact stage";
 }
+
+// A segment of no length (a curve drawn through one point twice) is a point: it cuts the
+// segments it lies strictly inside and no other, in an ordinary triangle (pairs of segments)
+// and in a crowded one (pairs of lines), where it was once taken for collinear with every
+// segment whose x-range holds it.
+TEST(CrowdedTriangle, PointSegmentsCutOnlyWhatTheyLieOn)
+{
+  for (const int filler : { 0, 80 })
+  {
+    LocalArrangement arr;
+    arr.Points = { { { 0, 0 }, 0, 3 }, { { 1, 0 }, 1, 4 }, { { 0, 1 }, 2, 5 } };
+    arr.Boundary = { 0, 1, 2 };
+    const auto add = [&arr](Vec2 p)
+    {
+      arr.Points.push_back({ p, -1, -1 });
+      return static_cast<int>(arr.Points.size()) - 1;
+    };
+    const int a = add({ 0.1, 0.2 }), b = add({ 0.5, 0.2 }); // the segment it lies on
+    const int c = add({ 0.1, 0.4 }), d = add({ 0.5, 0.45 }); // one above it, not through it
+    const int on = add({ 0.3, 0.2 }), off = add({ 0.3, 0.3 });
+    arr.Chains = { { a, b }, { c, d }, { on, on }, { off, off } };
+    arr.ChainClosed = { 1, 1, 0, 0 };
+    for (int k = 0; k < filler; ++k)
+    {
+      // Short vertical segments far to the right: they make the triangle crowded and meet
+      // nothing above.
+      const double x = 0.6 + 0.003 * k;
+      arr.Chains.push_back({ add({ x, 0.01 }), add({ x, 0.02 }) });
+      arr.ChainClosed.push_back(0);
+    }
+    CutSegmentsAtIntersections(arr, 0.0);
+    EXPECT_EQ(arr.Chains[0], (std::vector<int>{ a, on, b })) << "filler " << filler;
+    EXPECT_EQ(arr.Chains[1], (std::vector<int>{ c, d })) << "filler " << filler;
+    EXPECT_TRUE(arr.Crossings.empty()) << "filler " << filler;
+  }
+}
