@@ -462,7 +462,7 @@ TEST(CrowdedTriangle, PointSegmentsCutOnlyWhatTheyLieOn)
       arr.Points.push_back({ p, -1, -1 });
       return static_cast<int>(arr.Points.size()) - 1;
     };
-    const int a = add({ 0.1, 0.2 }), b = add({ 0.5, 0.2 }); // the segment it lies on
+    const int a = add({ 0.1, 0.2 }), b = add({ 0.5, 0.2 });  // the segment it lies on
     const int c = add({ 0.1, 0.4 }), d = add({ 0.5, 0.45 }); // one above it, not through it
     const int on = add({ 0.3, 0.2 }), off = add({ 0.3, 0.3 });
     arr.Chains = { { a, b }, { c, d }, { on, on }, { off, off } };
