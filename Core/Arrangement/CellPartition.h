@@ -34,19 +34,6 @@
 namespace boolsurf
 {
 
-inline std::uint64_t UndirectedPointPair(int a, int b)
-{
-  const std::uint32_t lo = static_cast<std::uint32_t>(a < b ? a : b);
-  const std::uint32_t hi = static_cast<std::uint32_t>(a < b ? b : a);
-  return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
-
-inline std::uint64_t DirectedPointPair(int a, int b)
-{
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-    static_cast<std::uint32_t>(b);
-}
-
 /// The refined surface as the flood fill sees it. Refined triangles keep the mesh's indices: an
 /// unrefined mesh triangle t is refined triangle t, a refined one is refined triangle t (its first
 /// piece) plus its other pieces, appended after the mesh's triangles. An edit therefore writes

@@ -15,6 +15,21 @@
 namespace boolsurf
 {
 
+/// The key of the edge between points a and b, whichever way round.
+inline std::uint64_t UndirectedPointPair(int a, int b)
+{
+  const std::uint32_t lo = static_cast<std::uint32_t>(a < b ? a : b);
+  const std::uint32_t hi = static_cast<std::uint32_t>(a < b ? b : a);
+  return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
+/// The key of the edge from point a to point b.
+inline std::uint64_t DirectedPointPair(int a, int b)
+{
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+    static_cast<std::uint32_t>(b);
+}
+
 class EdgeIndex
 {
 public:

@@ -1,5 +1,6 @@
 #include "Arrangement/SweepTriangulation.h"
 
+#include "Arrangement/EdgeIndex.h"
 #include "Arrangement/Predicates.h"
 
 #include <algorithm>
@@ -19,13 +20,6 @@ namespace
 {
 
 using EdgeKey = std::uint64_t;
-
-inline EdgeKey Undirected(int a, int b)
-{
-  const int lo = std::min(a, b), hi = std::max(a, b);
-  return (static_cast<EdgeKey>(static_cast<std::uint32_t>(lo)) << 32) |
-    static_cast<std::uint32_t>(hi);
-}
 
 /// An edge of the sweep: a boundary edge or a curve piece, A visited before B.
 struct SweepEdge
@@ -264,8 +258,8 @@ private:
     for (int i = 0; i < nb; ++i)
     {
       const int a = boundary[i], b = boundary[(i + 1) % nb];
-      keys.push_back(
-        { Undirected(a, b), rank[a] < rank[b] ? BoundaryInsideAbove : BoundaryInsideBelow });
+      keys.push_back({ UndirectedPointPair(a, b),
+        rank[a] < rank[b] ? BoundaryInsideAbove : BoundaryInsideBelow });
     }
     for (const std::vector<int>& chain : this->Arr.Chains)
     {
@@ -274,7 +268,7 @@ private:
         const int a = alias[chain[i]], b = alias[chain[i + 1]];
         if (a != b && !this->AlongBoundary(a, b))
         {
-          keys.push_back({ Undirected(a, b), Piece });
+          keys.push_back({ UndirectedPointPair(a, b), Piece });
         }
       }
     }
@@ -642,7 +636,7 @@ private:
       for (int j = 0; j < 3; ++j)
       {
         const int a = t[j], b = t[(j + 1) % 3];
-        sides.push_back({ Undirected(a, b), a < b ? 1 : -1 });
+        sides.push_back({ UndirectedPointPair(a, b), a < b ? 1 : -1 });
         used[a] = 1;
       }
     }
@@ -651,7 +645,7 @@ private:
     for (int i = 0; i < nb; ++i)
     {
       const int a = boundary[i], b = boundary[(i + 1) % nb];
-      sides.push_back({ Undirected(a, b), a < b ? -1 : 1 }); // cancels the boundary's own
+      sides.push_back({ UndirectedPointPair(a, b), a < b ? -1 : 1 }); // cancels the boundary's own
     }
     std::sort(sides.begin(), sides.end());
     for (std::size_t i = 0; i < sides.size();)
@@ -682,7 +676,7 @@ private:
     {
       for (std::size_t i = 0; i + 1 < chain.size(); ++i)
       {
-        const EdgeKey key = Undirected(chain[i], chain[i + 1]);
+        const EdgeKey key = UndirectedPointPair(chain[i], chain[i + 1]);
         const auto it = std::lower_bound(
           sides.begin(), sides.end(), std::make_pair(key, std::numeric_limits<int>::min()));
         if (it == sides.end() || it->first != key)

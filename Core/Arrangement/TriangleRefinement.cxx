@@ -1,5 +1,6 @@
 #include "Arrangement/TriangleRefinement.h"
 
+#include "Arrangement/EdgeIndex.h"
 #include "Arrangement/Predicates.h"
 #include "Arrangement/SweepTriangulation.h"
 
@@ -15,13 +16,6 @@ namespace
 {
 
 using EdgeKey = std::uint64_t;
-
-inline EdgeKey Undirected(int a, int b)
-{
-  const int lo = std::min(a, b), hi = std::max(a, b);
-  return (static_cast<EdgeKey>(static_cast<std::uint32_t>(lo)) << 32) |
-    static_cast<std::uint32_t>(hi);
-}
 
 /// Ear clipping of the convex polygons the chords cut the triangle into (the fast path).
 class ChordTriangulation
@@ -163,7 +157,7 @@ void MarkClosedEdges(LocalArrangement& arr)
       const std::vector<int>& path = arr.Chains[c];
       for (size_t i = 0; i + 1 < path.size(); ++i)
       {
-        closedEdges.push_back(Undirected(path[i], path[i + 1]));
+        closedEdges.push_back(UndirectedPointPair(path[i], path[i + 1]));
       }
     }
   }
@@ -175,7 +169,7 @@ void MarkClosedEdges(LocalArrangement& arr)
     for (int j = 0; j < 3; ++j)
     {
       if (std::binary_search(
-            closedEdges.begin(), closedEdges.end(), Undirected(v[j], v[(j + 1) % 3])))
+            closedEdges.begin(), closedEdges.end(), UndirectedPointPair(v[j], v[(j + 1) % 3])))
       {
         arr.Blocked[t] |= static_cast<unsigned char>(1u << j);
       }

@@ -39,6 +39,18 @@ int Orientation(const std::array<mpq_class, 2>& a,
   return sgn(d);
 }
 
+Vec2 RandomTrianglePoint(std::mt19937& rng, double margin, double scale)
+{
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double u = unit(rng), v = unit(rng);
+  if (u + v > 1)
+  {
+    u = 1 - u;
+    v = 1 - v;
+  }
+  return { margin + scale * u, margin + scale * v };
+}
+
 double DistanceToSegment(Vec2 a, Vec2 b, Vec2 q)
 {
   const Vec2 d = b - a;

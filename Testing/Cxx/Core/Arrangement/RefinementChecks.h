@@ -9,6 +9,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <random>
 
 namespace boolsurf
 {
@@ -22,6 +23,10 @@ std::array<mpq_class, 2> ExactCoordinates(const LocalArrangement& arr, int i);
 int Orientation(const std::array<mpq_class, 2>& a,
   const std::array<mpq_class, 2>& b,
   const std::array<mpq_class, 2>& c);
+
+/// A uniformly random point of the unit triangle, scaled by `scale` and moved by `margin` on
+/// both axes: (margin, margin) + scale (u, v) with u, v >= 0 and u + v <= 1.
+Vec2 RandomTrianglePoint(std::mt19937& rng, double margin, double scale);
 
 /// Distance from q to the segment (a, b).
 double DistanceToSegment(Vec2 a, Vec2 b, Vec2 q);

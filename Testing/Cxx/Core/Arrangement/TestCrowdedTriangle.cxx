@@ -29,6 +29,7 @@ using namespace boolsurf;
 using boolsurf::testing::ExactCoordinates;
 using boolsurf::testing::ExpectValidRefinement;
 using boolsurf::testing::Orientation;
+using boolsurf::testing::RandomTrianglePoint;
 
 namespace
 {
@@ -248,13 +249,7 @@ LocalArrangement RandomSegments(std::mt19937& rng, int pieces, bool lattice)
   };
   const auto inside = [&]
   {
-    double u = unit(rng), v = unit(rng);
-    if (u + v > 1)
-    {
-      u = 1 - u;
-      v = 1 - v;
-    }
-    Vec2 p{ 0.05 + 0.8 * u, 0.05 + 0.8 * v }; // x + y <= 0.9
+    Vec2 p = RandomTrianglePoint(rng, 0.05, 0.8); // x + y <= 0.9
     if (lattice)
     {
       p = { std::round(p.x * 16) / 16, std::round(p.y * 16) / 16 };

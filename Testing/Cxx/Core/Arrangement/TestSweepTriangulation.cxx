@@ -18,6 +18,7 @@
 
 using namespace boolsurf;
 using boolsurf::testing::ExpectValidRefinement;
+using boolsurf::testing::RandomTrianglePoint;
 
 namespace
 {
@@ -153,13 +154,7 @@ TEST(SweepTriangulation, RandomPlanarSubdivisions)
     LocalArrangement arr = UnitTriangle({ { 0.5 }, { 0.5 }, { 0.5 } });
     const auto inside = [&]
     {
-      double u = unit(rng), v = unit(rng);
-      if (u + v > 1)
-      {
-        u = 1 - u;
-        v = 1 - v;
-      }
-      Vec2 p{ 0.02 + 0.85 * u, 0.02 + 0.85 * v }; // x + y <= 0.89
+      Vec2 p = RandomTrianglePoint(rng, 0.02, 0.85); // x + y <= 0.89
       if (lattice)
       {
         p = { std::floor(p.x * 8) / 8 + 1.0 / 32, std::floor(p.y * 8) / 8 + 1.0 / 32 };
