@@ -75,7 +75,7 @@ struct LocalArrangement
   /// Per sub-triangle: bit j set when its edge from vertex j to vertex j+1 lies on a closed
   /// curve inside the triangle (sub-edges on mesh edges are handled by edge segments).
   std::vector<unsigned char> Blocked;
-  /// Points merged into another (equal coordinates after rounding): Alias[i] != i.
+  /// Points merged into another (equal exact coordinates): Alias[i] != i.
   std::vector<int> Alias;
   /// Number of interior points that survive (Alias[i] == i), i.e. new refined-surface points.
   int NumberOfNewPoints = 0;
