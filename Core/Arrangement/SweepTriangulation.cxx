@@ -421,7 +421,7 @@ private:
 
   /// Whether z lies strictly above edge `below` and strictly below edge `above` (-1: none),
   /// as it must when its own edges are between them in the status.
-  bool StrictlyBetween(int below, int above, int z)
+  bool BetweenNeighbours(int below, int above, int z)
   {
     for (const int e : { below, above })
     {
@@ -495,7 +495,7 @@ private:
       const Status::iterator first = where[left.front()];
       below = first == this->Line.begin() ? -1 : *std::prev(first);
       hint = std::next(where[left.back()]);
-      if (!this->StrictlyBetween(below, hint == this->Line.end() ? -1 : *hint, z))
+      if (!this->BetweenNeighbours(below, hint == this->Line.end() ? -1 : *hint, z))
       {
         return false;
       }
