@@ -97,24 +97,18 @@ private:
     { return std::min(this->P(this->EndA[i]).x, this->P(this->EndB[i]).x); };
     const auto xmax = [&](int i)
     { return std::max(this->P(this->EndA[i]).x, this->P(this->EndB[i]).x); };
-    std::sort(order.begin(),
-      order.end(),
-      [&](int i, int j) { return xmin(i) != xmin(j) ? xmin(i) < xmin(j) : i < j; });
-    for (std::size_t oi = 0; oi < order.size(); ++oi)
-    {
-      const int i = order[oi];
-      const Vec2 p0 = this->P(this->EndA[i]), p1 = this->P(this->EndB[i]);
-      const double reach = xmax(i);
-      for (std::size_t oj = oi + 1; oj < order.size() && xmin(order[oj]) <= reach; ++oj)
+    ForEachXOverlappingPair(order,
+      xmin,
+      xmax,
+      [&](int i, int j)
       {
-        const int j = order[oj];
+        const Vec2 p0 = this->P(this->EndA[i]), p1 = this->P(this->EndB[i]);
         if (Orient2dSign(p0, p1, this->P(this->EndA[j])) == 0 &&
           Orient2dSign(p0, p1, this->P(this->EndB[j])) == 0)
         {
           parent[FindRoot(parent, i)] = FindRoot(parent, j);
         }
-      }
-    }
+      });
     std::vector<int> lineOfRoot(count, -1);
     for (const int i : order)
     {
@@ -209,8 +203,7 @@ private:
       {
         const int a = this->EndA[i], b = this->EndB[i];
         if (!this->NoLength(static_cast<int>(i)) && p != a && p != b &&
-          Orient2dSign(this->P(a), this->P(b), this->P(p)) == 0 &&
-          StrictlyBetween(this->P(a), this->P(b), this->P(p)))
+          StrictlyInsideSegment(this->P(a), this->P(b), this->P(p)))
         {
           this->Hits[i].push_back(p);
         }
@@ -259,23 +252,11 @@ private:
     {
       order[l] = static_cast<int>(l);
     }
-    std::sort(order.begin(),
-      order.end(),
-      [&](int a, int b)
-      {
-        return this->Lines[a].XMin != this->Lines[b].XMin
-          ? this->Lines[a].XMin < this->Lines[b].XMin
-          : a < b;
-      });
-    for (std::size_t oi = 0; oi < order.size(); ++oi)
-    {
-      const DrawnLine& first = this->Lines[order[oi]];
-      for (std::size_t oj = oi + 1; oj < order.size() && this->Lines[order[oj]].XMin <= first.XMax;
-           ++oj)
-      {
-        this->CutPair(first, this->Lines[order[oj]]);
-      }
-    }
+    ForEachXOverlappingPair(
+      order,
+      [&](int l) { return this->Lines[l].XMin; },
+      [&](int l) { return this->Lines[l].XMax; },
+      [&](int a, int b) { this->CutPair(this->Lines[a], this->Lines[b]); });
   }
 
   void CutPair(const DrawnLine& l1, const DrawnLine& l2)

@@ -22,6 +22,8 @@
 
 #include "Arrangement/SegmentIntersection.h"
 
+#include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace boolsurf
@@ -35,6 +37,27 @@ inline int FindRoot(std::vector<int>& parent, int x)
     x = parent[x] = parent[parent[x]];
   }
   return x;
+}
+
+/// Calls visit(i, j) once for every pair of items 0..n-1 whose x-ranges [xmin, xmax] overlap
+/// (a sweep over x; `order` is scratch, left sorted by xmin, ties by index). i comes first in
+/// that order.
+template <class XMin, class XMax, class Visit>
+void ForEachXOverlappingPair(std::vector<int>& order, XMin&& xmin, XMax&& xmax, Visit&& visit)
+{
+  std::sort(order.begin(),
+    order.end(),
+    [&](int i, int j) { return xmin(i) != xmin(j) ? xmin(i) < xmin(j) : i < j; });
+  const std::size_t n = order.size();
+  for (std::size_t oi = 0; oi < n; ++oi)
+  {
+    const int i = order[oi];
+    const double reach = xmax(i);
+    for (std::size_t oj = oi + 1; oj < n && xmin(order[oj]) <= reach; ++oj)
+    {
+      visit(i, order[oj]);
+    }
+  }
 }
 
 /// For the segments from point endA[i] to point endB[i] of `out` (explicit points): appends to

@@ -489,20 +489,6 @@ Vec2 RoundedCrossing(const SegmentCrossing& c)
 }
 
 //------------------------------------------------------------------------------
-bool ExactStrictlyBetween(const ExactPoint& a, const ExactPoint& b, const ExactPoint& q)
-{
-  int axis = 0;
-  int ab = ExactCompare(a, b, 0);
-  if (ab == 0)
-  {
-    axis = 1;
-    ab = ExactCompare(a, b, 1);
-  }
-  const int aq = ExactCompare(a, q, axis), qb = ExactCompare(q, b, axis);
-  return ab != 0 && aq == ab && qb == ab;
-}
-
-//------------------------------------------------------------------------------
 long long ExactFallbackCount()
 {
   return Fallbacks.load();

@@ -66,10 +66,6 @@ int ExactCompare(const ExactPoint& a, const ExactPoint& b, int axis);
 /// The crossing's coordinates, rounded (a few ulps from the exact point).
 Vec2 RoundedCrossing(const SegmentCrossing& c);
 
-/// For q on the line through a and b (orientation zero), whether it lies strictly between
-/// them; exact.
-bool ExactStrictlyBetween(const ExactPoint& a, const ExactPoint& b, const ExactPoint& q);
-
 /// Number of predicate evaluations the floating-point filter could not decide (exact
 /// fallbacks), since the process started; for tests and benchmarks.
 long long ExactFallbackCount();

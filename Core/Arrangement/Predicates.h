@@ -42,6 +42,12 @@ inline bool StrictlyBetween(Vec2 a, Vec2 b, Vec2 q)
   return (a.y < q.y && q.y < b.y) || (b.y < q.y && q.y < a.y);
 }
 
+/// Whether q lies strictly inside the segment (a, b) (of some length); exact.
+inline bool StrictlyInsideSegment(Vec2 a, Vec2 b, Vec2 q)
+{
+  return Orient2dSign(a, b, q) == 0 && StrictlyBetween(a, b, q);
+}
+
 } // namespace boolsurf
 
 #endif

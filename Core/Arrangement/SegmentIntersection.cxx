@@ -82,28 +82,24 @@ void CutSegmentPairs(LocalArrangement& out,
   {
     order[i] = i;
   }
-  auto xmin = [&](int i) { return std::min(out.Points[endA[i]].P.x, out.Points[endB[i]].P.x); };
-  auto xmax = [&](int i) { return std::max(out.Points[endA[i]].P.x, out.Points[endB[i]].P.x); };
-  std::sort(order.begin(),
-    order.end(),
-    [&](int i, int j) { return xmin(i) != xmin(j) ? xmin(i) < xmin(j) : i < j; });
+  const auto xmin = [&](int i)
+  { return std::min(out.Points[endA[i]].P.x, out.Points[endB[i]].P.x); };
+  const auto xmax = [&](int i)
+  { return std::max(out.Points[endA[i]].P.x, out.Points[endB[i]].P.x); };
   // A segment of no length is a point: it cuts the other segment where it lies strictly
   // inside it (every orientation with it is zero, so the collinear case below would not do).
   const auto pointCut = [&](int point, Vec2 q0, Vec2 q1, int b0, int b1, int other)
   {
-    const Vec2 p = out.Points[point].P;
-    if (point != b0 && point != b1 && Orient2dSign(q0, q1, p) == 0 && StrictlyBetween(q0, q1, p))
+    if (point != b0 && point != b1 && StrictlyInsideSegment(q0, q1, out.Points[point].P))
     {
       hits[other].push_back(point);
     }
   };
-  for (int oi = 0; oi < count; ++oi)
-  {
-    const int i = order[oi];
-    const double reach = xmax(i);
-    for (int oj = oi + 1; oj < count && xmin(order[oj]) <= reach; ++oj)
+  ForEachXOverlappingPair(order,
+    xmin,
+    xmax,
+    [&](int i, int j)
     {
-      const int j = order[oj];
       const int a0 = endA[i], a1 = endB[i], b0 = endA[j], b1 = endB[j];
       const Vec2 p0 = out.Points[a0].P, p1 = out.Points[a1].P;
       const Vec2 q0 = out.Points[b0].P, q1 = out.Points[b1].P;
@@ -118,7 +114,7 @@ void CutSegmentPairs(LocalArrangement& out,
         {
           pointCut(b0, p0, p1, a0, a1, i);
         }
-        continue;
+        return;
       }
       const double o1 = Orient2d(p0, p1, q0), o2 = Orient2d(p0, p1, q1);
       if (o1 == 0.0 && o2 == 0.0)
@@ -132,17 +128,17 @@ void CutSegmentPairs(LocalArrangement& out,
           hits[j].push_back(a0);
         if (a1 != b0 && a1 != b1 && StrictlyBetween(q0, q1, p1))
           hits[j].push_back(a1);
-        continue;
+        return;
       }
       if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1)
       {
-        continue; // two non-collinear segments with a common endpoint meet only there
+        return; // two non-collinear segments with a common endpoint meet only there
       }
       const double o3 = Orient2d(q0, q1, p0), o4 = Orient2d(q0, q1, p1);
       if ((o1 > 0.0 && o2 > 0.0) || (o1 < 0.0 && o2 < 0.0) || (o3 > 0.0 && o4 > 0.0) ||
         (o3 < 0.0 && o4 < 0.0))
       {
-        continue; // disjoint
+        return; // disjoint
       }
       // T-junctions: an endpoint exactly on the other segment (its interior, since endpoints
       // are distinct and the segments are not collinear).
@@ -170,8 +166,7 @@ void CutSegmentPairs(LocalArrangement& out,
         hits[i].push_back(id);
         hits[j].push_back(id);
       }
-    }
-  }
+    });
 }
 
 } // namespace
