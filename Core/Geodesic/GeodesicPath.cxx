@@ -478,6 +478,10 @@ void GeodesicPathSolver::RefineInCorridor(const CanonicalPoint& start,
 {
   const TriangleMesh& mesh = this->GetMesh();
   const int nt = mesh.GetNumberOfTriangles();
+  if (nt <= WholeMeshRefinementTriangles && this->SearchShorterPath(start, end, path, false))
+  {
+    return;
+  }
   if (static_cast<int>(this->CorridorStamp.size()) != nt || ++this->CorridorGeneration == 0)
   {
     this->CorridorStamp.assign(static_cast<std::size_t>(nt), 0);
@@ -521,17 +525,34 @@ void GeodesicPathSolver::RefineInCorridor(const CanonicalPoint& start,
     }
     ringStart = ringEnd;
   }
+  this->SearchShorterPath(start, end, path, true);
+}
 
+//------------------------------------------------------------------------------
+// The exact window search for a path shorter than `path` (kept when found), over the whole
+// mesh or only the corridor's triangles (CorridorStamp), within CorridorWindows windows.
+// A whole-mesh search that ends within its budget certifies the kept path as the shortest:
+// the leg is then marked exact. Returns whether the search ended within its budget.
+bool GeodesicPathSolver::SearchShorterPath(const CanonicalPoint& start,
+  const CanonicalPoint& end,
+  GeodesicPath& path,
+  bool inCorridor)
+{
   const GeodesicPathStatistics kept = this->Statistics;
   this->Exact.SetMaximumWindows(CorridorWindows);
   // Only a shorter path is of use: windows that cannot lead to one are not made.
   this->Exact.SetUpperBound(path.Length);
-  this->Exact.SetFieldTriangleFilter(
-    [this, generation](int t) { return this->CorridorStamp[t] == generation; });
+  if (inCorridor)
+  {
+    const std::uint32_t generation = this->CorridorGeneration;
+    this->Exact.SetFieldTriangleFilter(
+      [this, generation](int t) { return this->CorridorStamp[t] == generation; });
+  }
   const double length =
     this->Exact.FindStrip(start, this->StartTriangles, end, this->EndTriangles, this->Strip);
   this->Exact.SetFieldTriangleFilter(nullptr);
   const int windows = this->Exact.GetLastWindowCount();
+  const bool complete = !this->Exact.GetLastBudgetExceeded();
   if (length < 0.0 || !this->Straighten(start, end))
   {
     this->Statistics = kept;
@@ -540,7 +561,12 @@ void GeodesicPathSolver::RefineInCorridor(const CanonicalPoint& start,
   {
     this->KeepShorterCandidate(kept, path);
   }
-  this->Statistics.CorridorWindows = windows;
+  this->Statistics.CorridorWindows += windows;
+  if (complete && !inCorridor)
+  {
+    this->Statistics.Exact = true;
+  }
+  return complete;
 }
 
 //------------------------------------------------------------------------------

@@ -241,6 +241,10 @@ private:
   /// Bounded method, after a routed leg: the exact window search inside a corridor of
   /// triangles around `path`; `path` becomes its result when shorter.
   void RefineInCorridor(const CanonicalPoint& start, const CanonicalPoint& end, GeodesicPath& path);
+  bool SearchShorterPath(const CanonicalPoint& start,
+    const CanonicalPoint& end,
+    GeodesicPath& path,
+    bool inCorridor);
   void TryAlternativeRoute(const CanonicalPoint& start,
     const CanonicalPoint& end,
     GeodesicPath& path);
@@ -283,6 +287,9 @@ private:
   static constexpr int CorridorRings = 5;
   static constexpr int MaximumCorridorTriangles = 3000;
   static constexpr int CorridorWindows = 1 << 18;
+  /// Meshes up to this many triangles (a corridor would hold a quarter of them or more) are
+  /// searched whole first, which certifies the leg when it fits the window budget.
+  static constexpr int WholeMeshRefinementTriangles = 4 * MaximumCorridorTriangles;
   std::vector<std::uint32_t> CorridorStamp; // == CorridorGeneration: in the corridor
   std::uint32_t CorridorGeneration = 0;
   std::vector<int> Corridor, CorridorSeeds;

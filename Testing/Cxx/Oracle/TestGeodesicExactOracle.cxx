@@ -22,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -158,6 +159,7 @@ struct OracleStats
   int Compared = 0;
   int Exact = 0;
   double WorstRelative = 0;
+  double Milliseconds = 0; ///< summed Compute time of these pairs (reported, never asserted)
   void Add(double relative)
   {
     ++this->Compared;
@@ -218,7 +220,11 @@ OracleRun CompareWithOracle(const TriangleMesh& mesh,
                                 .shortest_distance_to_source_points(
                                   Locate(mesh, *cgal, b).first, Locate(mesh, *cgal, b).second)
                                 .first;
+      const auto computeStart = std::chrono::steady_clock::now();
       const TraceStatus status = solver.Compute(a, b, path);
+      const double computeMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - computeStart)
+          .count();
       if (expected < 0)
       {
         EXPECT_FALSE(status.Ok) << name << ": no oracle path, yet traced";
@@ -233,7 +239,16 @@ OracleRun CompareWithOracle(const TriangleMesh& mesh,
       const double relative = std::abs(path.Length - expected) / std::max(expected, 1e-300);
       run.WorstRelative = std::max(run.WorstRelative, relative);
       run.Exact += relative <= 1e-9;
-      (kind == 0 ? run.Far : kind == 1 ? run.Random : run.Short).Add(relative);
+      OracleStats& stats = kind == 0 ? run.Far : kind == 1 ? run.Random : run.Short;
+      stats.Add(relative);
+      stats.Milliseconds += computeMs;
+      if (method != GeodesicMethod::Exact && relative > 1e-9)
+      {
+        const GeodesicPathStatistics& st = solver.GetLastStatistics();
+        std::cout << name << ": " << Describe(a) << " -> " << Describe(b) << " excess " << relative
+                  << " routed " << st.Routed << " route " << st.RouteLength << " candidates "
+                  << st.AlternativeRoutes << " corridor windows " << st.CorridorWindows << "\n";
+      }
       if (method == GeodesicMethod::Exact)
       {
         EXPECT_LE(relative, 1e-9) << name << ": " << Describe(a) << " -> " << Describe(b)
@@ -355,6 +370,10 @@ TEST(GeodesicExactOracle, SharedScans)
     "kitten.ply", "fertility.ply", "spot.ply", "torus.ply", "bob.ply", "camelhead.ply"
   };
   int meshes = 0, farExact = 0, farCompared = 0;
+  // Start points per mesh for the Bounded run, 30 pairs each (10 far); more for a longer
+  // measurement (BOOLSURF_ORACLE_SOURCES=4 gave Docs/Decisions.md's 240 far pairs).
+  const char* sourcesVariable = std::getenv("BOOLSURF_ORACLE_SOURCES");
+  const int sources = sourcesVariable ? std::max(1, std::atoi(sourcesVariable)) : 2;
   for (const char* file : files)
   {
     const std::string path = SharedMesh(file);
@@ -369,16 +388,18 @@ TEST(GeodesicExactOracle, SharedScans)
     const OracleRun run = CompareWithOracle(mesh, 1, 10, 19, file); // one CGAL tree per mesh
     EXPECT_EQ(run.Exact, run.Compared) << file << " worst relative " << run.WorstRelative;
     // The default, Bounded: short pairs exact; far pairs on these scans mostly past the
-    // window budget, routed and straightened: never shorter, within a few percent (the
-    // measured worst over 280 far pairs on these meshes is 3.5 %, see Docs/Decisions.md).
-    const OracleRun bounded =
-      CompareWithOracle(mesh, 1, 30, 29, std::string(file) + " bounded", GeodesicMethod::Bounded);
+    // window budget, routed, straightened and refined by the exact search (on the whole mesh
+    // up to 12k triangles, else in a corridor): never shorter, within 0.5 % (issue 27's
+    // bound; the measured worst over 240 far pairs is 0.27 %, see Docs/Decisions.md).
+    const OracleRun bounded = CompareWithOracle(
+      mesh, sources, 30, 29, std::string(file) + " bounded", GeodesicMethod::Bounded);
     EXPECT_EQ(bounded.Short.Exact, bounded.Short.Compared) << file;
-    EXPECT_LE(bounded.WorstRelative, 0.05) << file;
+    EXPECT_LE(bounded.WorstRelative, 0.005) << file;
     farExact += bounded.Far.Exact;
     farCompared += bounded.Far.Compared;
     std::cout << file << " bounded: far pairs exact " << bounded.Far.Exact << " of "
-              << bounded.Far.Compared << ", worst " << bounded.Far.WorstRelative
+              << bounded.Far.Compared << ", worst " << bounded.Far.WorstRelative << ", "
+              << bounded.Far.Milliseconds / std::max(bounded.Far.Compared, 1) << " ms each"
               << "; random exact " << bounded.Random.Exact << " of " << bounded.Random.Compared
               << "; short exact " << bounded.Short.Exact << " of " << bounded.Short.Compared
               << "\n";
@@ -387,7 +408,7 @@ TEST(GeodesicExactOracle, SharedScans)
   {
     GTEST_SKIP() << "shared meshes not found (set BOOLSURF_SHARED_DATA to the shared data folder)";
   }
-  // Far pairs equal to the exact ones (1e-9): 58 of 60 since routed legs are refined by the
-  // exact search inside a corridor around them (30 of 60 before; Docs/Decisions.md).
-  EXPECT_GE(farExact, 0.9 * farCompared) << farExact << " of " << farCompared;
+  // Far pairs equal to the exact ones (1e-9): 234 of 240 since small meshes are refined by
+  // the whole-mesh search (226 with the corridor alone, 137 before it; Docs/Decisions.md).
+  EXPECT_GE(farExact, 0.95 * farCompared) << farExact << " of " << farCompared;
 }

@@ -215,13 +215,14 @@ TEST(BoundedGeodesics, FarLegsAreRoutedWithinTheBudget)
 // A scanned surface has many locally shortest geodesics between far points, one on each side
 // of every small bump, within a fraction of a percent of each other: the route cannot tell
 // them apart, the exact search inside a corridor around it can. On a noisy square (bumps of a
-// third of an edge), far legs past the window budget equal the exact ones with the corridor,
-// far fewer without it; never shorter, always on the surface.
+// third of an edge; 12.8k triangles, above the whole-mesh search's limit), far legs past the
+// window budget equal the exact ones with the corridor, far fewer without it; never shorter,
+// always on the surface.
 TEST(BoundedGeodesics, CorridorRefinementFindsTheShortestOfNearbyGeodesics)
 {
-  MeshData data = MakeFlatSquare(40, 1.0, 0.2, 11);
+  MeshData data = MakeFlatSquare(80, 1.0, 0.2, 11);
   std::mt19937 noise(5);
-  std::uniform_real_distribution<double> bump(-0.008, 0.008);
+  std::uniform_real_distribution<double> bump(-0.004, 0.004);
   for (Vec3& p : data.Positions)
   {
     p.z = bump(noise);
@@ -254,7 +255,45 @@ TEST(BoundedGeodesics, CorridorRefinementFindsTheShortestOfNearbyGeodesics)
     ++legs;
   }
   EXPECT_GE(sameRefined, legs - 1);
-  EXPECT_LT(samePlain, sameRefined);
+  EXPECT_LT(samePlain, sameRefined) << samePlain << " of " << legs << " without the corridor";
+}
+
+// On a mesh of at most 12k triangles a routed leg is refined by the exact search over the
+// whole mesh, bounded by the routed length: when that search fits its budget the leg is the
+// shortest and says so (Exact), whichever way round the handles the route went. A torus
+// whose route is forced (tiny window budget, no second route) against the Exact method.
+TEST(BoundedGeodesics, WholeMeshRefinementCertifiesRoutedLegsOnSmallMeshes)
+{
+  const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 48, 20));
+  ASSERT_LE(mesh.GetNumberOfTriangles(), 12000);
+  GeodesicPathSolver refined(mesh), plain(mesh), exact(mesh);
+  exact.SetMethod(GeodesicMethod::Exact);
+  for (GeodesicPathSolver* solver : { &refined, &plain })
+  {
+    solver->SetBoundedWindows(1 << 6);
+    solver->SetRouteTolerance(0.0);
+  }
+  plain.SetCorridorRefinement(false);
+  std::mt19937 rng(31);
+  int samePlain = 0, legs = 0;
+  GeodesicPath r, p, e;
+  for (int i = 0; i < 16; ++i)
+  {
+    const CanonicalPoint a = FacePoint(mesh, rng);
+    const CanonicalPoint b = FarPoint(mesh, a, rng);
+    ASSERT_TRUE(refined.Compute(a, b, r).Ok);
+    ASSERT_TRUE(plain.Compute(a, b, p).Ok);
+    ASSERT_TRUE(exact.Compute(a, b, e).Ok);
+    ASSERT_TRUE(refined.GetLastStatistics().Routed);
+    EXPECT_TRUE(refined.GetLastStatistics().Exact) << "the whole-mesh search fits its budget";
+    EXPECT_FALSE(plain.GetLastStatistics().Exact);
+    ExpectOnSurface(mesh, r);
+    EXPECT_NEAR(r.Length, e.Length, 1e-9 * e.Length) << Describe(a) << " -> " << Describe(b);
+    EXPECT_LE(r.Length, p.Length * (1 + 1e-12));
+    samePlain += std::abs(p.Length - e.Length) <= 1e-9 * e.Length;
+    ++legs;
+  }
+  EXPECT_LT(samePlain, legs) << "the route and the funnel alone are not always the shortest";
 }
 
 // Short legs are exact under the Bounded method, whatever the budget's far legs do.
