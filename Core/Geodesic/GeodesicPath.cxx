@@ -415,13 +415,18 @@ bool GeodesicPathSolver::ExceedsBoundedWindows(const CanonicalPoint& start,
   const TriangleMesh& mesh = this->GetMesh();
   if (this->MeanEdgeLength < 0.0)
   {
+    // An estimate is all this test needs: every edge up to 2^16 of them, else a fixed stride
+    // through the edge list (a full pass cost 65 ms per solver on 4.3M triangles).
+    const int ne = mesh.GetNumberOfEdges();
+    const int stride = std::max(1, ne >> 16);
     double sum = 0.0;
-    for (int e = 0; e < mesh.GetNumberOfEdges(); ++e)
+    int count = 0;
+    for (int e = 0; e < ne; e += stride, ++count)
     {
       const std::array<int, 2> v = mesh.GetEdgeVertices(e);
       sum += Distance(mesh.GetPosition(v[0]), mesh.GetPosition(v[1]));
     }
-    this->MeanEdgeLength = mesh.GetNumberOfEdges() > 0 ? sum / mesh.GetNumberOfEdges() : 0.0;
+    this->MeanEdgeLength = count > 0 ? sum / count : 0.0;
   }
   if (!(this->MeanEdgeLength > 0.0))
   {

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <utility>
+
+#include <tbb/parallel_for.h>
 
 namespace boolsurf
 {
@@ -76,89 +79,215 @@ void TriangleMesh::BuildVertexCorners()
 }
 
 //------------------------------------------------------------------------------
-// For half-edge a->b, the partners are the other triangles at a that also contain b. The
-// first half-edge of an edge (in corner-id order) finds all partners at once and assigns the
-// edge id, the twins and any problem; the partners then skip the edge.
+// For half-edge a->b, the partners are the other triangles at a that also contain b: with
+// h itself, the edge's half-edges. An edge belongs to its lowest half-edge (corner id) and
+// edge ids follow that order, as a serial pass over the triangles would meet them, so the
+// result is the same on any number of threads. The work runs over fixed blocks of
+// triangles, each block independent, in passes:
+// 1. the lowest ascending half-edge of each edge (a < b; a properly oriented edge has one)
+//    finds the partners once, marks the group's half-edges (Covered, the owner Owned) and
+//    sets the twins of a two-triangle edge;
+// 2. half-edges left unmarked (edges with no ascending half-edge: boundary edges and flipped
+//    pairs running from the higher vertex; rare) find their partners, and the owner marks
+//    itself and sets the twins;
+// 3. a prefix sum over the blocks' owner counts gives each block its first edge id, and each
+//    owner numbers its edge and its partners; non-manifold and misoriented edges are merged
+//    in owner order.
+// Within a pass each entry is written by one thread, and nothing a pass writes is read in it.
 void TriangleMesh::BuildTwins()
 {
   const int nt = this->GetNumberOfTriangles();
   this->Twin.assign(3 * static_cast<size_t>(nt), -1);
   this->HalfEdgeEdge.assign(3 * static_cast<size_t>(nt), -1);
-  this->EdgeHalfEdge.clear();
-  this->EdgeHalfEdge.reserve(3 * static_cast<size_t>(nt) / 2 + 1);
-  this->EdgeValence.clear();
-  this->EdgeValence.reserve(3 * static_cast<size_t>(nt) / 2 + 1);
+  this->NonManifold.clear();
+  this->Misoriented.clear();
+  enum : std::uint8_t
+  {
+    Unmarked,
+    Covered,
+    Owned
+  };
+  std::vector<std::uint8_t> mark(3 * static_cast<size_t>(nt), Unmarked);
 
   struct Partner
   {
     int HalfEdge;
     bool SameDirection;
   };
-  std::vector<Partner> partners;
-  for (int t = 0; t < nt; ++t)
+  const auto findPartners = [this](int h, std::vector<Partner>& partners)
   {
-    if (!this->Usable[t])
-    {
-      continue;
-    }
+    partners.clear();
+    const int t = h / 3, k = h % 3;
     const Triangle& tri = this->Triangles[t];
-    for (int k = 0; k < 3; ++k)
+    const int a = tri[k];
+    const int b = tri[(k + 1) % 3];
+    for (int c : this->GetVertexCorners(a))
     {
-      const int h = 3 * t + k;
-      if (this->HalfEdgeEdge[h] >= 0)
+      const int t2 = c / 3;
+      if (t2 == t)
       {
         continue;
       }
-      const int a = tri[k];
-      const int b = tri[(k + 1) % 3];
-      partners.clear();
-      for (int c : this->GetVertexCorners(a))
+      const int j = c % 3;
+      const Triangle& tri2 = this->Triangles[t2];
+      if (tri2[(j + 2) % 3] == b)
       {
-        const int t2 = c / 3;
-        if (t2 == t)
+        partners.push_back({ 3 * t2 + (j + 2) % 3, false }); // edge b->a: properly oriented
+      }
+      else if (tri2[(j + 1) % 3] == b)
+      {
+        partners.push_back({ c, true }); // edge a->b again: flipped neighbour
+      }
+    }
+  };
+  const auto setTwins = [this](int h, const std::vector<Partner>& partners)
+  {
+    if (partners.size() == 1)
+    {
+      this->Twin[h] = partners[0].HalfEdge;
+      this->Twin[partners[0].HalfEdge] = h;
+    }
+  };
+  const auto ascending = [this](int h)
+  {
+    const Triangle& tri = this->Triangles[h / 3];
+    return tri[h % 3] < tri[(h % 3 + 1) % 3];
+  };
+
+  constexpr int blockSize = 1 << 13;
+  const int blocks = (nt + blockSize - 1) / blockSize;
+  const auto forEachBlock = [&](auto&& visit)
+  {
+    tbb::parallel_for(0,
+      blocks,
+      [&](int b)
+      {
+        std::vector<Partner> partners;
+        const int end = 3 * std::min(nt, (b + 1) * blockSize);
+        for (int h = 3 * b * blockSize; h < end; ++h)
         {
-          continue;
+          if (this->Usable[h / 3])
+          {
+            visit(b, h, partners);
+          }
         }
-        const int j = c % 3;
-        const Triangle& tri2 = this->Triangles[t2];
-        if (tri2[(j + 2) % 3] == b)
+      });
+  };
+  forEachBlock(
+    [&](int, int h, std::vector<Partner>& partners)
+    {
+      if (!ascending(h))
+      {
+        return;
+      }
+      findPartners(h, partners);
+      int owner = h;
+      for (const Partner& p : partners)
+      {
+        if (p.SameDirection && p.HalfEdge < h)
         {
-          partners.push_back({ 3 * t2 + (j + 2) % 3, false }); // edge b->a: properly oriented
+          return; // a lower ascending half-edge finds this group
         }
-        else if (tri2[(j + 1) % 3] == b)
+        owner = std::min(owner, p.HalfEdge);
+      }
+      mark[h] = h == owner ? Owned : Covered;
+      for (const Partner& p : partners)
+      {
+        mark[p.HalfEdge] = p.HalfEdge == owner ? Owned : Covered;
+      }
+      setTwins(h, partners);
+    });
+  forEachBlock(
+    [&](int, int h, std::vector<Partner>& partners)
+    {
+      if (mark[h] != Unmarked)
+      {
+        return;
+      }
+      findPartners(h, partners); // all unmarked too: none is ascending
+      for (const Partner& p : partners)
+      {
+        if (p.HalfEdge < h)
         {
-          partners.push_back({ c, true }); // edge a->b again: flipped neighbour
+          return;
         }
       }
-      const int e = static_cast<int>(this->EdgeHalfEdge.size());
-      this->EdgeHalfEdge.push_back(h);
-      this->EdgeValence.push_back(static_cast<int>(partners.size()) + 1);
+      mark[h] = Owned;
+      setTwins(h, partners);
+    });
+
+  std::vector<int> blockFirstEdge(static_cast<size_t>(blocks) + 1, 0);
+  tbb::parallel_for(0,
+    blocks,
+    [&](int b)
+    {
+      const int end = 3 * std::min(nt, (b + 1) * blockSize);
+      blockFirstEdge[b + 1] =
+        static_cast<int>(std::count(mark.begin() + 3 * b * blockSize, mark.begin() + end, Owned));
+    });
+  for (int b = 0; b < blocks; ++b)
+  {
+    blockFirstEdge[b + 1] += blockFirstEdge[b];
+  }
+  const int edgeCount = blockFirstEdge[blocks];
+  this->EdgeHalfEdge.assign(static_cast<size_t>(edgeCount), -1);
+  this->EdgeValence.assign(static_cast<size_t>(edgeCount), 0);
+  std::vector<std::vector<int>> blockSpecial(static_cast<size_t>(blocks)); // odd edges' owners
+  std::vector<int> nextEdge(blockFirstEdge.begin(), blockFirstEdge.end() - 1);
+  forEachBlock(
+    [&](int b, int h, std::vector<Partner>& partners)
+    {
+      if (mark[h] != Owned)
+      {
+        return;
+      }
+      const int twin = this->Twin[h];
+      if (twin >= 0)
+      {
+        partners.assign(
+          1, { twin, this->Triangles[twin / 3][twin % 3] == this->Triangles[h / 3][h % 3] });
+      }
+      else
+      {
+        findPartners(h, partners); // a boundary or non-manifold edge
+      }
+      const int e = nextEdge[b]++;
+      this->EdgeHalfEdge[e] = h;
+      this->EdgeValence[e] = static_cast<int>(partners.size()) + 1;
       this->HalfEdgeEdge[h] = e;
       for (const Partner& p : partners)
       {
         this->HalfEdgeEdge[p.HalfEdge] = e;
       }
+      if (partners.size() > 1 || (partners.size() == 1 && partners[0].SameDirection))
+      {
+        blockSpecial[b].push_back(h);
+      }
+    });
+
+  std::vector<Partner> partners;
+  for (const std::vector<int>& special : blockSpecial)
+  {
+    for (const int h : special)
+    {
+      const int t = h / 3, k = h % 3;
+      const int a = this->Triangles[t][k];
+      const int b = this->Triangles[t][(k + 1) % 3];
+      findPartners(h, partners);
       if (partners.size() == 1)
       {
-        this->Twin[h] = partners[0].HalfEdge;
-        this->Twin[partners[0].HalfEdge] = h;
-        if (partners[0].SameDirection)
-        {
-          this->Misoriented.push_back({ a, b, t, partners[0].HalfEdge / 3 });
-        }
+        this->Misoriented.push_back({ a, b, t, partners[0].HalfEdge / 3 });
+        continue;
       }
-      else if (partners.size() > 1)
+      NonManifoldEdge nm;
+      nm.V0 = std::min(a, b);
+      nm.V1 = std::max(a, b);
+      nm.Triangles.push_back(t);
+      for (const Partner& p : partners)
       {
-        NonManifoldEdge nm;
-        nm.V0 = std::min(a, b);
-        nm.V1 = std::max(a, b);
-        nm.Triangles.push_back(t);
-        for (const Partner& p : partners)
-        {
-          nm.Triangles.push_back(p.HalfEdge / 3);
-        }
-        this->NonManifold.push_back(std::move(nm));
+        nm.Triangles.push_back(p.HalfEdge / 3);
       }
+      this->NonManifold.push_back(std::move(nm));
     }
   }
 }

@@ -9,6 +9,9 @@
 #include <vtkPolyData.h>
 #include <vtkTriangleFilter.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <limits>
 #include <utility>
 
@@ -180,29 +183,60 @@ void ConvertSurface(vtkPolyData* input, vtkSurfaceInput& out, const SurfaceCheck
     }
   }
 
+  // Copied in parallel blocks (a mesh of millions of triangles is opened once, and this copy
+  // is part of what the user waits for): reading tuples into a local buffer is thread-safe.
   std::vector<Vec3> positions;
   std::vector<Triangle> triangles;
   if (vtkPoints* points = out.Triangles->GetPoints())
   {
+    vtkDataArray* coordinates = points->GetData();
     positions.resize(points->GetNumberOfPoints());
-    double p[3];
-    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    tbb::parallel_for(tbb::blocked_range<vtkIdType>(0, points->GetNumberOfPoints(), 1 << 14),
+      [&](const tbb::blocked_range<vtkIdType>& range)
+      {
+        double p[3];
+        for (vtkIdType i = range.begin(); i != range.end(); ++i)
+        {
+          coordinates->GetTuple(i, p);
+          positions[i] = { p[0], p[1], p[2] };
+        }
+      });
+  }
+  // vtkTriangleFilter drops polygons it cannot triangulate, so every cell here has 3 ids:
+  // cell i is connectivity entries 3i .. 3i + 2.
+  vtkCellArray* polys = out.Triangles->GetPolys();
+  vtkDataArray* connectivity = polys->GetConnectivityArray();
+  triangles.resize(polys->GetNumberOfCells());
+  if (connectivity->GetNumberOfValues() != 3 * polys->GetNumberOfCells())
+  {
+    // Not expected after the checks above; cells are then read one by one, their first three
+    // ids each.
+    vtkIdType i = 0;
+    auto it = vtk::TakeSmartPointer(polys->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++i)
     {
-      points->GetPoint(i, p);
-      positions[i] = { p[0], p[1], p[2] };
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      for (int k = 0; k < 3; ++k)
+      {
+        triangles[i][k] = k < n ? static_cast<int>(ids[k]) : -1;
+      }
     }
   }
-  vtkCellArray* polys = out.Triangles->GetPolys();
-  triangles.reserve(polys->GetNumberOfCells());
-  auto it = vtk::TakeSmartPointer(polys->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  else
   {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    // vtkTriangleFilter drops polygons it cannot triangulate, so every cell here has 3 ids.
-    triangles.push_back(
-      { static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
+    tbb::parallel_for(tbb::blocked_range<vtkIdType>(0, polys->GetNumberOfCells(), 1 << 14),
+      [&](const tbb::blocked_range<vtkIdType>& range)
+      {
+        for (vtkIdType i = range.begin(); i != range.end(); ++i)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            triangles[i][k] = static_cast<int>(connectivity->GetComponent(3 * i + k, 0));
+          }
+        }
+      });
   }
   auto mesh = std::make_shared<TriangleMesh>(std::move(positions), std::move(triangles));
   auto topology = std::make_shared<MeshTopology>(MeshTopology::Compute(*mesh));
