@@ -450,6 +450,9 @@ inline void UniteByKey(int* parent, const int* key, int a, int b)
   }
 }
 
+// Dirty tiles per parallel task of FloodFillTiles (about 64 triangles each).
+constexpr int DirtyTileGrain = 16;
+
 int FloodFillTiles(const RefinedSurfaceView& surface,
   const MeshTiles& tiles,
   std::vector<int>& looseCell,
@@ -476,18 +479,57 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   {
     key[k] = tiles.Members[tiles.Offset[k]]; // unrefined: refined index = mesh index
   }
-  for (int k : dirtyTiles)
+  // The dirty tiles' nodes, numbered tile after tile (first node of dirty tile d: firstNode[d]);
+  // tiles are independent, so blocks of them run in parallel, here and for the arcs below.
+  const int dirtyCount = static_cast<int>(dirtyTiles.size());
+  std::vector<int>& firstNode = buffers.DirtyTileFirstNode;
+  firstNode.assign(static_cast<size_t>(dirtyCount) + 1, 0);
+  // body(d, dirty tile, block) for each dirty tile d; block b holds d in
+  // [b * DirtyTileGrain, (b + 1) * DirtyTileGrain) and runs on one thread.
+  const int blocks = (dirtyCount + DirtyTileGrain - 1) / DirtyTileGrain;
+  const auto forDirtyTiles = [&](auto&& body)
   {
-    for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
-    {
-      surface.ForEachPiece(tiles.Members[i],
-        [&](int r)
+    tbb::parallel_for(0,
+      blocks,
+      [&](int block)
+      {
+        const int end = std::min(dirtyCount, (block + 1) * DirtyTileGrain);
+        for (int d = block * DirtyTileGrain; d < end; ++d)
         {
-          nodeOfTriangle[r] = static_cast<int>(key.size());
-          key.push_back(r);
-        });
-    }
+          body(d, dirtyTiles[d], block);
+        }
+      });
+  };
+  forDirtyTiles(
+    [&](int d, int k, int)
+    {
+      int pieces = 0;
+      for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
+      {
+        pieces += surface.CountPieces(tiles.Members[i]);
+      }
+      firstNode[d + 1] = pieces;
+    });
+  firstNode[0] = numberOfTiles;
+  for (int d = 0; d < dirtyCount; ++d)
+  {
+    firstNode[d + 1] += firstNode[d];
   }
+  key.resize(firstNode[dirtyCount]);
+  forDirtyTiles(
+    [&](int d, int k, int)
+    {
+      int node = firstNode[d];
+      for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
+      {
+        surface.ForEachPiece(tiles.Members[i],
+          [&](int r)
+          {
+            nodeOfTriangle[r] = node;
+            key[node++] = r;
+          });
+      }
+    });
   const int nodes = static_cast<int>(key.size());
   std::vector<int>& parentOfNode = buffers.NodeParent;
   parentOfNode.resize(nodes);
@@ -513,39 +555,72 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   }
   // Arcs from the triangles of dirty tiles, as in FloodFillAllTriangles; an arc between two
   // unrefined triangles of dirty tiles is united from the lower one, an arc into a clean tile from
-  // the dirty side, an arc touching a refined triangle from each refined side.
-  for (int k : dirtyTiles)
+  // the dirty side, an arc touching a refined triangle from each refined side. An arc inside one
+  // dirty tile joins nodes of that tile only, so the tiles are united in parallel; an arc to
+  // another tile is kept and united afterwards (sets keep their lowest key as root, so the
+  // order of the unions does not change the result).
+  std::vector<std::vector<std::pair<int, int>>>& crossing = buffers.TileCrossing;
+  if (static_cast<int>(crossing.size()) < blocks)
   {
-    for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
+    crossing.resize(blocks);
+  }
+  forDirtyTiles(
+    [&](int d, int k, int block)
     {
-      const int t = tiles.Members[i];
-      const char st = state[t];
-      if (!(st & RefinedSurfaceView::RefinedBit))
+      std::vector<std::pair<int, int>>& across = crossing[block];
+      if (d % DirtyTileGrain == 0)
       {
-        const Triangle& tri = mesh.GetTriangle(t);
-        for (int j = 0; j < 3; ++j)
-        {
-          const int n = mesh.GetNeighbor(t, j);
-          if (n < 0 || (state[n] & RefinedSurfaceView::RefinedBit))
-          {
-            continue;
-          }
-          const int kn = tileOf[n];
-          const bool cleanNeighbor = !dirty[kn];
-          if (!cleanNeighbor && n <= t)
-          {
-            continue;
-          }
-          if (st != 0 && surface.IsMeshSubEdgeBlocked(t, j, tri[j], tri[(j + 1) % 3]))
-          {
-            continue;
-          }
-          UniteByKey(parent, keys, nodeOfTriangle[t], cleanNeighbor ? kn : nodeOfTriangle[n]);
-        }
-        continue;
+        across.clear();
       }
-      surface.ForEachOpenArcOfPieces(
-        t, [&](int r, int n) { UniteByKey(parent, keys, nodeOfTriangle[r], nodeOf(n)); });
+      const int first = firstNode[d], end = firstNode[d + 1];
+      const auto unite = [&](int a, int b)
+      {
+        if (b >= first && b < end)
+        {
+          UniteByKey(parent, keys, a, b);
+        }
+        else
+        {
+          across.emplace_back(a, b);
+        }
+      };
+      for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
+      {
+        const int t = tiles.Members[i];
+        const char st = state[t];
+        if (!(st & RefinedSurfaceView::RefinedBit))
+        {
+          const Triangle& tri = mesh.GetTriangle(t);
+          for (int j = 0; j < 3; ++j)
+          {
+            const int n = mesh.GetNeighbor(t, j);
+            if (n < 0 || (state[n] & RefinedSurfaceView::RefinedBit))
+            {
+              continue;
+            }
+            const int kn = tileOf[n];
+            const bool cleanNeighbor = !dirty[kn];
+            if (!cleanNeighbor && n <= t)
+            {
+              continue;
+            }
+            if (st != 0 && surface.IsMeshSubEdgeBlocked(t, j, tri[j], tri[(j + 1) % 3]))
+            {
+              continue;
+            }
+            unite(nodeOfTriangle[t], cleanNeighbor ? kn : nodeOfTriangle[n]);
+          }
+          continue;
+        }
+        surface.ForEachOpenArcOfPieces(
+          t, [&](int r, int n) { unite(nodeOfTriangle[r], nodeOf(n)); });
+      }
+    });
+  for (int block = 0; block < blocks; ++block)
+  {
+    for (const std::pair<int, int>& ab : crossing[block])
+    {
+      UniteByKey(parent, keys, ab.first, ab.second);
     }
   }
 

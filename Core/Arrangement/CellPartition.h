@@ -197,10 +197,12 @@ struct TileFloodBuffers
   std::vector<char> Dirty;   ///< per tile; reset after each call
   std::vector<int> TileNode; ///< per tile: its cell (-1 when dirty)
   std::vector<int> DirtyTiles;
-  std::vector<int> NodeOfTriangle; ///< per refined triangle of a dirty tile (others stale)
-  std::vector<int> NodeKey;        ///< per node: its lowest refined triangle
-  std::vector<int> NodeParent;     ///< union-find over nodes
-  std::vector<int> CellOfRoot;     ///< per node
+  std::vector<int> NodeOfTriangle;     ///< per refined triangle of a dirty tile (others stale)
+  std::vector<int> NodeKey;            ///< per node: its lowest refined triangle
+  std::vector<int> NodeParent;         ///< union-find over nodes
+  std::vector<int> CellOfRoot;         ///< per node
+  std::vector<int> DirtyTileFirstNode; ///< per dirty tile, and the end
+  std::vector<std::vector<std::pair<int, int>>> TileCrossing; ///< arcs between tiles, per task
   // Whole-surface flood fill.
   std::unique_ptr<std::atomic<int>[]> AtomicParent;
   size_t AtomicCapacity = 0;

@@ -2,11 +2,10 @@
 
 #include "Mesh/PerMeshRegistry.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace boolsurf
@@ -48,43 +47,66 @@ double CrossingOf(Vec2 s, Vec2 x)
   return den > 0.0 ? s.x + (x.x - s.x) * (-s.y) / den : x.x;
 }
 
-// Per mesh vertex: 1 for a saddle (angle sum above 2 pi) or boundary vertex, the vertices
-// from which windows restart. Computed once per mesh and shared by every search on it (the
-// solver and its helpers): on 4M triangles it is 13M atan2 calls, half a second.
-struct PseudoSources
+// Whether vertex v is a saddle (angle sum above 2 pi) or a boundary vertex, one of the
+// vertices from which windows restart. The angle sum is added over v's corners in increasing
+// order, as a loop over triangles would, bit for bit.
+bool ComputeIsPseudoSource(const TriangleMesh& mesh, int v)
 {
+  double angle = 0.0;
+  bool boundary = false;
+  for (int corner : mesh.GetVertexCorners(v))
+  {
+    const int t = corner / 3, k = corner % 3;
+    const Triangle& tri = mesh.GetTriangle(t);
+    const Vec3 p = mesh.GetPosition(tri[k]);
+    const Vec3 a = mesh.GetPosition(tri[(k + 1) % 3]) - p;
+    const Vec3 b = mesh.GetPosition(tri[(k + 2) % 3]) - p;
+    angle += std::atan2(Length(Cross(a, b)), Dot(a, b));
+    boundary = boundary || mesh.GetNeighbor(t, k) < 0 || mesh.GetNeighbor(t, (k + 2) % 3) < 0;
+  }
+  return boundary || angle > 2.0 * Pi + SaddleTolerance;
+}
+
+} // namespace
+
+// Per mesh vertex, decided on first use and shared by every search on the mesh (the solver
+// and its helpers): Unknown, then No or Yes. Searches touch a small part of a large mesh, and
+// deciding every vertex up front was 13M atan2 calls on 4M triangles (a third of a second of
+// the first update on two threads). Threads that decide the same vertex at once store the same
+// value.
+struct ExactGeodesicSearch::PseudoSources
+{
+  enum : std::uint8_t
+  {
+    Unknown,
+    No,
+    Yes
+  };
   const TriangleMesh* Mesh = nullptr;
-  std::vector<char> Flags;
+  std::unique_ptr<std::atomic<std::uint8_t>[]> Flags;
+
+  bool Is(int v) const
+  {
+    std::uint8_t flag = this->Flags[v].load(std::memory_order_relaxed);
+    if (flag == Unknown)
+    {
+      flag = ComputeIsPseudoSource(*this->Mesh, v) ? Yes : No;
+      this->Flags[v].store(flag, std::memory_order_relaxed);
+    }
+    return flag == Yes;
+  }
 };
+
+namespace
+{
+using PseudoSources = ExactGeodesicSearch::PseudoSources;
 
 std::shared_ptr<const PseudoSources> ComputePseudoSources(const TriangleMesh& mesh)
 {
   auto out = std::make_shared<PseudoSources>();
   out->Mesh = &mesh;
-  const int nv = mesh.GetNumberOfVertices();
-  out->Flags.assign(nv, 0);
-  // Per vertex over its corners in increasing order: the angle sum is added in the same order
-  // as a loop over triangles would, bit for bit.
-  tbb::parallel_for(tbb::blocked_range<int>(0, nv, 4096),
-    [&](const tbb::blocked_range<int>& range)
-    {
-      for (int v = range.begin(); v != range.end(); ++v)
-      {
-        double angle = 0.0;
-        bool boundary = false;
-        for (int corner : mesh.GetVertexCorners(v))
-        {
-          const int t = corner / 3, k = corner % 3;
-          const Triangle& tri = mesh.GetTriangle(t);
-          const Vec3 p = mesh.GetPosition(tri[k]);
-          const Vec3 a = mesh.GetPosition(tri[(k + 1) % 3]) - p;
-          const Vec3 b = mesh.GetPosition(tri[(k + 2) % 3]) - p;
-          angle += std::atan2(Length(Cross(a, b)), Dot(a, b));
-          boundary = boundary || mesh.GetNeighbor(t, k) < 0 || mesh.GetNeighbor(t, (k + 2) % 3) < 0;
-        }
-        out->Flags[v] = boundary || angle > 2.0 * Pi + SaddleTolerance;
-      }
-    });
+  out->Flags = std::make_unique<std::atomic<std::uint8_t>[]>(
+    static_cast<std::size_t>(mesh.GetNumberOfVertices())); // value-initialized: Unknown
   return out;
 }
 
@@ -120,15 +142,13 @@ void ExactGeodesicSearch::Prepare()
   const TriangleMesh& mesh = this->Mesh;
   const int nv = mesh.GetNumberOfVertices();
   const int nt = mesh.GetNumberOfTriangles();
-  std::shared_ptr<const PseudoSources> flags = PseudoSourcesOf(mesh);
-  this->PseudoSource = flags->Flags.data();
-  this->PseudoSourceFlags = std::move(flags);
-  this->Distance.assign(nv, Infinity);
-  this->VertexKind.assign(nv, -1);
-  this->VertexParent.assign(nv, -1);
-  this->VertexArrival.assign(nv, -1);
-  this->Stamp.assign(nv, 0u);
-  this->EndMark.assign(nt, 0u);
+  this->PseudoSource = PseudoSourcesOf(mesh);
+  this->Distance.Reset(nv);
+  this->VertexKind.Reset(nv);
+  this->VertexParent.Reset(nv);
+  this->VertexArrival.Reset(nv);
+  this->Stamp.Reset(nv);
+  this->EndMark.Reset(nt);
   this->Prepared = true;
 }
 
@@ -137,8 +157,8 @@ void ExactGeodesicSearch::ResetMarks()
 {
   if (++this->CurrentStamp == 0)
   {
-    std::fill(this->Stamp.begin(), this->Stamp.end(), 0u);
-    std::fill(this->EndMark.begin(), this->EndMark.end(), 0u);
+    this->Stamp.Zero();
+    this->EndMark.Zero();
     this->CurrentStamp = 1;
   }
 }
@@ -460,7 +480,7 @@ void ExactGeodesicSearch::EmitFromVertex(int v)
       const int u = tri[(k + j) % 3];
       this->Relax(u, d + ::boolsurf::Distance(pv, mesh.GetPosition(u)), FromVertex, v, t);
     }
-    if (!this->PseudoSource[v] && v != this->ForcedVertex &&
+    if (!this->PseudoSource->Is(v) && v != this->ForcedVertex &&
       !(this->FieldMode && this->ForcedMark[v] == this->CurrentStamp))
     {
       continue;

@@ -17,6 +17,7 @@
 #define boolsurf_ExactGeodesicSearch_h
 
 #include "Mesh/SurfacePoint.h"
+#include "Mesh/ZeroPageArray.h"
 
 #include <array>
 #include <cstdint>
@@ -153,17 +154,23 @@ private:
 
   const TriangleMesh& Mesh;
   bool Prepared = false;
-  std::shared_ptr<const void> PseudoSourceFlags; // shared by the searches on one mesh
-  const char* PseudoSource = nullptr;            // per vertex: saddle or boundary vertex
+
+public:
+  struct PseudoSources; // per vertex: saddle or boundary vertex, decided on first use
+
+private:
+  std::shared_ptr<const PseudoSources> PseudoSource; // shared by the searches on one mesh
   int MaximumWindows = 1 << 20;
   bool BudgetExceeded = false;
   double UpperBound = 0.0;
 
   // Per-vertex labels, valid where Stamp == CurrentStamp.
-  std::vector<double> Distance;
-  std::vector<int> VertexKind, VertexParent, VertexArrival;
-  std::vector<std::uint32_t> Stamp;
-  std::vector<std::uint32_t> EndMark; // == CurrentStamp: triangle holds the end point
+  // Per vertex, valid where Stamp == CurrentStamp (zero-page arrays: a search's memory is the
+  // part of the mesh it reaches).
+  ZeroPageArray<double> Distance;
+  ZeroPageArray<int> VertexKind, VertexParent, VertexArrival;
+  ZeroPageArray<std::uint32_t> Stamp;
+  ZeroPageArray<std::uint32_t> EndMark; // == CurrentStamp: triangle holds the end point
   std::uint32_t CurrentStamp = 0;
 
   std::vector<Window> Windows;

@@ -105,11 +105,11 @@ GeodesicPathSolver::GeodesicPathSolver(const TriangleMesh& mesh)
   : Mesh(mesh)
   , Components(std::make_shared<TriangleComponents>(mesh))
   , Exact(mesh)
-  , StripPosition(mesh.GetNumberOfTriangles(), 0)
-  , StripPositionStamp(mesh.GetNumberOfTriangles(), 0u)
 {
   // The edge-path and dual searches are built on first use (Edges(), Dual()): legs the exact
   // search answers need neither, and on millions of triangles they cost seconds to build.
+  this->StripPosition.Reset(mesh.GetNumberOfTriangles());
+  this->StripPositionStamp.Reset(mesh.GetNumberOfTriangles());
 }
 
 //------------------------------------------------------------------------------
@@ -117,9 +117,9 @@ GeodesicPathSolver::GeodesicPathSolver(const GeodesicPathSolver& main, HelperTag
   : Mesh(main.Mesh)
   , Components(main.Components)
   , Exact(main.Mesh)
-  , StripPosition(main.Mesh.GetNumberOfTriangles(), 0)
-  , StripPositionStamp(main.Mesh.GetNumberOfTriangles(), 0u)
 {
+  this->StripPosition.Reset(main.Mesh.GetNumberOfTriangles());
+  this->StripPositionStamp.Reset(main.Mesh.GetNumberOfTriangles());
   this->CopySettings(main);
 }
 
@@ -815,7 +815,7 @@ void GeodesicPathSolver::TrimStrip(const CanonicalPoint& start, const CanonicalP
   // the short cut, so cut the loop out. StripPosition is mesh-sized but stamped, not cleared.
   if (++this->PositionStamp == 0)
   {
-    std::fill(this->StripPositionStamp.begin(), this->StripPositionStamp.end(), 0u);
+    this->StripPositionStamp.Zero();
     this->PositionStamp = 1;
   }
   size_t kept = 0;

@@ -38,6 +38,7 @@
 #include "Geodesic/SurfaceSiteGraph.h"
 #include "Mesh/SurfacePoint.h"
 #include "Mesh/TriangleComponents.h"
+#include "Mesh/ZeroPageArray.h"
 
 #include <array>
 #include <cstdint>
@@ -319,8 +320,8 @@ private:
   Vec2 StartPosition, EndPosition;
   std::vector<Corner> Corners;
   std::vector<PathPoint> Points;
-  std::vector<int> StripPosition;                // index in Strip, valid where stamped
-  std::vector<std::uint32_t> StripPositionStamp; // == PositionStamp: StripPosition is valid
+  ZeroPageArray<int> StripPosition;                // index in Strip, valid where stamped
+  ZeroPageArray<std::uint32_t> StripPositionStamp; // == PositionStamp: StripPosition is valid
   std::uint32_t PositionStamp = 0;
 };
 
