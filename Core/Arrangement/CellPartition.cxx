@@ -1,6 +1,7 @@
 #include "Arrangement/CellPartition.h"
 
 #include "Arrangement/EditBuffers.h"
+#include "Mesh/ConcurrentUnionFind.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -184,49 +185,6 @@ void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles)
 
 namespace
 {
-// Lock-free union-find over refined triangles. A parent is never above its child, so the root of
-// a set is its lowest member; unions link the higher root below the lower one by CAS, and
-// path halving only ever stores ancestors, so concurrent finds stay correct.
-inline int FindSet(std::atomic<int>* parent, int x)
-{
-  for (;;)
-  {
-    const int p = parent[x].load(std::memory_order_relaxed);
-    if (p == x)
-    {
-      return x;
-    }
-    const int g = parent[p].load(std::memory_order_relaxed);
-    if (g != p)
-    {
-      parent[x].store(g, std::memory_order_relaxed);
-    }
-    x = g;
-  }
-}
-
-inline void UniteSets(std::atomic<int>* parent, int a, int b)
-{
-  for (;;)
-  {
-    a = FindSet(parent, a);
-    b = FindSet(parent, b);
-    if (a == b)
-    {
-      return;
-    }
-    if (a < b)
-    {
-      std::swap(a, b);
-    }
-    int expected = a;
-    if (parent[a].compare_exchange_strong(expected, b, std::memory_order_acq_rel))
-    {
-      return;
-    }
-  }
-}
-
 // The whole refined surface as one union-find, in parallel over fixed blocks of source
 // triangles (used when curves touch most tiles: then tiles save nothing and this scales with
 // threads). Same sets, roots and numbering as the tiled flood fill.

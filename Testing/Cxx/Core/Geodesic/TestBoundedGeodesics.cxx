@@ -11,6 +11,8 @@
 #include <cmath>
 #include <queue>
 #include <random>
+#include <utility>
+#include <vector>
 
 using namespace boolsurf;
 
@@ -81,6 +83,28 @@ std::vector<int> Hops(const TriangleMesh& mesh, int from)
     }
   }
   return hops;
+}
+
+/// A random face point a and a far point b from it, traced by each solver into its path;
+/// false (with the failure recorded) when a solver fails.
+bool TraceFarLeg(const TriangleMesh& mesh,
+  std::mt19937& rng,
+  const std::vector<std::pair<GeodesicPathSolver*, GeodesicPath*>>& runs,
+  CanonicalPoint& a,
+  CanonicalPoint& b)
+{
+  a = FacePoint(mesh, rng);
+  b = FarPoint(mesh, a, rng);
+  for (const auto& run : runs)
+  {
+    const TraceStatus status = run.first->Compute(a, b, *run.second);
+    if (!status.Ok)
+    {
+      ADD_FAILURE() << Describe(a) << " -> " << Describe(b) << ": " << status.Message;
+      return false;
+    }
+  }
+  return true;
 }
 } // namespace
 
@@ -239,11 +263,8 @@ TEST(BoundedGeodesics, CorridorRefinementFindsTheShortestOfNearbyGeodesics)
   GeodesicPath r, p, e;
   for (int i = 0; i < 12; ++i)
   {
-    const CanonicalPoint a = FacePoint(mesh, rng);
-    const CanonicalPoint b = FarPoint(mesh, a, rng);
-    ASSERT_TRUE(refined.Compute(a, b, r).Ok);
-    ASSERT_TRUE(plain.Compute(a, b, p).Ok);
-    ASSERT_TRUE(exact.Compute(a, b, e).Ok);
+    CanonicalPoint a, b;
+    ASSERT_TRUE(TraceFarLeg(mesh, rng, { { &refined, &r }, { &plain, &p }, { &exact, &e } }, a, b));
     ASSERT_TRUE(refined.GetLastStatistics().Routed);
     EXPECT_GT(refined.GetLastStatistics().CorridorWindows, 0);
     EXPECT_EQ(plain.GetLastStatistics().CorridorWindows, 0);
@@ -279,11 +300,8 @@ TEST(BoundedGeodesics, WholeMeshRefinementCertifiesRoutedLegsOnSmallMeshes)
   GeodesicPath r, p, e;
   for (int i = 0; i < 16; ++i)
   {
-    const CanonicalPoint a = FacePoint(mesh, rng);
-    const CanonicalPoint b = FarPoint(mesh, a, rng);
-    ASSERT_TRUE(refined.Compute(a, b, r).Ok);
-    ASSERT_TRUE(plain.Compute(a, b, p).Ok);
-    ASSERT_TRUE(exact.Compute(a, b, e).Ok);
+    CanonicalPoint a, b;
+    ASSERT_TRUE(TraceFarLeg(mesh, rng, { { &refined, &r }, { &plain, &p }, { &exact, &e } }, a, b));
     ASSERT_TRUE(refined.GetLastStatistics().Routed);
     EXPECT_TRUE(refined.GetLastStatistics().Exact) << "the whole-mesh search fits its budget";
     EXPECT_FALSE(plain.GetLastStatistics().Exact);
