@@ -231,7 +231,7 @@ void TriangleMesh::BuildTwins()
   }
   const int edgeCount = blockFirstEdge[blocks];
   this->EdgeHalfEdge.assign(static_cast<size_t>(edgeCount), -1);
-  this->EdgeValence.assign(static_cast<size_t>(edgeCount), 0);
+  this->NonManifoldValence.clear();
   std::vector<std::vector<int>> blockSpecial(static_cast<size_t>(blocks)); // odd edges' owners
   std::vector<int> nextEdge(blockFirstEdge.begin(), blockFirstEdge.end() - 1);
   forEachBlock(
@@ -253,7 +253,6 @@ void TriangleMesh::BuildTwins()
       }
       const int e = nextEdge[b]++;
       this->EdgeHalfEdge[e] = h;
-      this->EdgeValence[e] = static_cast<int>(partners.size()) + 1;
       this->HalfEdgeEdge[h] = e;
       for (const Partner& p : partners)
       {
@@ -279,6 +278,8 @@ void TriangleMesh::BuildTwins()
         this->Misoriented.push_back({ a, b, t, partners[0].HalfEdge / 3 });
         continue;
       }
+      this->NonManifoldValence.emplace_back(
+        this->HalfEdgeEdge[h], static_cast<int>(partners.size()) + 1); // in edge order
       NonManifoldEdge nm;
       nm.V0 = std::min(a, b);
       nm.V1 = std::max(a, b);
@@ -290,6 +291,19 @@ void TriangleMesh::BuildTwins()
       this->NonManifold.push_back(std::move(nm));
     }
   }
+}
+
+//------------------------------------------------------------------------------
+int TriangleMesh::GetEdgeValence(int e) const
+{
+  const int h = this->EdgeHalfEdge[e];
+  if (this->Twin[h] >= 0)
+  {
+    return 2;
+  }
+  const auto at = std::lower_bound(
+    this->NonManifoldValence.begin(), this->NonManifoldValence.end(), std::make_pair(e, 0));
+  return at != this->NonManifoldValence.end() && at->first == e ? at->second : 1;
 }
 
 } // namespace boolsurf

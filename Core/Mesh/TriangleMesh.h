@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace boolsurf
@@ -113,8 +114,10 @@ public:
     return { tri[h % 3], tri[(h % 3 + 1) % 3] };
   }
   /// Number of triangles on edge e (1 on the boundary, 2 inside, more if non-manifold).
-  int GetEdgeValence(int e) const { return this->EdgeValence[e]; }
-  bool IsBoundaryEdge(int e) const { return this->EdgeValence[e] == 1; }
+  /// (Derived: 2 where the edge has a twin pair, else 1 or the non-manifold edge's count; no
+  /// per-edge array.)
+  int GetEdgeValence(int e) const;
+  bool IsBoundaryEdge(int e) const { return this->GetEdgeValence(e) == 1; }
   ///@}
 
   /// Corner ids (3*t + k) at vertex v, in increasing order. Empty for unreferenced vertices.
@@ -140,12 +143,12 @@ private:
   std::vector<Vec3> Positions;
   std::vector<Triangle> Triangles;
   std::vector<char> Usable;
-  std::vector<int> CornerOffset; // size V+1
-  std::vector<int> CornerList;   // corner ids grouped by vertex
-  std::vector<int> Twin;         // size 3T, -1 when none
-  std::vector<int> HalfEdgeEdge; // size 3T, -1 for unusable triangles
-  std::vector<int> EdgeHalfEdge; // size E
-  std::vector<int> EdgeValence;  // size E
+  std::vector<int> CornerOffset;                       // size V+1
+  std::vector<int> CornerList;                         // corner ids grouped by vertex
+  std::vector<int> Twin;                               // size 3T, -1 when none
+  std::vector<int> HalfEdgeEdge;                       // size 3T, -1 for unusable triangles
+  std::vector<int> EdgeHalfEdge;                       // size E
+  std::vector<std::pair<int, int>> NonManifoldValence; // (edge, valence), ascending edges
   std::vector<NonManifoldEdge> NonManifold;
   std::vector<MisorientedEdge> Misoriented;
 };
