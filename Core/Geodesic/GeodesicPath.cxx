@@ -558,8 +558,11 @@ bool GeodesicPathSolver::SearchShorterPath(const CanonicalPoint& start,
   this->Exact.SetFieldTriangleFilter(nullptr);
   const int windows = this->Exact.GetLastWindowCount();
   const bool complete = !this->Exact.GetLastBudgetExceeded();
+  // Certified: no shorter path exists, or the shorter one found was straightened.
+  bool certified = complete && !inCorridor;
   if (length < 0.0 || !this->Straighten(start, end))
   {
+    certified = certified && length < 0.0;
     this->Statistics = kept;
   }
   else
@@ -567,7 +570,7 @@ bool GeodesicPathSolver::SearchShorterPath(const CanonicalPoint& start,
     this->KeepShorterCandidate(kept, path);
   }
   this->Statistics.CorridorWindows += windows;
-  if (complete && !inCorridor)
+  if (certified)
   {
     this->Statistics.Exact = true;
   }
