@@ -88,7 +88,7 @@ LoadedMesh& Load(const std::string& name)
       }
     }
   };
-  while (m.ShortPairs.size() < 32)
+  while (m.ShortPairs.size() < 320)
   {
     const int a = usable();
     for (int tries = 0; tries < 2000000; ++tries)
@@ -103,7 +103,7 @@ LoadedMesh& Load(const std::string& name)
       }
     }
   }
-  while (m.LongPairs.size() < 8)
+  while (m.LongPairs.size() < 24)
   {
     const int a = usable();
     int best = -1;
@@ -143,8 +143,8 @@ void BenchmarkPaths(benchmark::State& state,
   GeodesicPath path;
   size_t i = 0;
   double settled = 0, expanded = 0, strip = 0, rounds = 0, length = 0, ratio = 0, windows = 0;
-  double routed = 0, exactShare = 0;
-  std::vector<double> times;
+  double routed = 0, exactShare = 0, cached = 0;
+  std::vector<double> times, windowCounts;
   for (auto _ : state)
   {
     const auto& pair = pairs[i++ % pairs.size()];
@@ -163,6 +163,8 @@ void BenchmarkPaths(benchmark::State& state,
     routed += s.Routed;
     exactShare += s.Exact;
     windows += s.Windows;
+    windowCounts.push_back(s.Windows);
+    cached += s.FromCache;
     expanded += s.ExpandedTriangles;
     ratio += s.EdgePathLength > 0 ? path.Length / s.EdgePathLength : 0.0;
     strip += s.StripTriangles;
@@ -174,6 +176,10 @@ void BenchmarkPaths(benchmark::State& state,
   state.counters["median_ms"] = times.empty() ? 0.0 : times[times.size() / 2];
   state.counters["max_ms"] = times.empty() ? 0.0 : times.back();
   state.counters["windows"] = windows / n;
+  std::sort(windowCounts.begin(), windowCounts.end());
+  state.counters["median_windows"] =
+    windowCounts.empty() ? 0.0 : windowCounts[windowCounts.size() / 2];
+  state.counters["cached"] = cached / n;
   state.counters["triangles"] = m.Mesh->GetNumberOfTriangles();
   state.counters["settled"] = settled / n;
   state.counters["expanded"] = expanded / n;

@@ -122,7 +122,7 @@ private:
   {
     double Key;
     int Id;   // window id, or -(vertex + 1)
-    double D; // vertex events: distance when pushed (stale check)
+    double D; // vertex events: distance when pushed (stale check); windows: WindowKey
     bool operator<(const Event& o) const { return this->Key > o.Key; }
   };
 
@@ -131,6 +131,7 @@ private:
   void Relax(int v, double d, int kind, int parent, int arrival);
   bool Dominated(const Window& w, const std::array<int, 2>& ev, double length) const;
   void AddWindow(const Window& w);
+  double WindowKey(const Window& w, const Vec3& p0, const Vec3& p1, double length) const;
   Window WholeEdgeWindow(int edge,
     int face,
     int origin,
@@ -163,6 +164,12 @@ private:
   int MaximumWindows = 1 << 20;
   bool BudgetExceeded = false;
   double UpperBound = 0.0;
+  // Queue order of windows. Without a known path, by the lower bound of any path through the
+  // window (WindowKey): the target is reached, and the search ends, soonest. With an upper
+  // bound the search must visit every window below it anyway; there the looser key, closer
+  // to distance order, settles vertices earlier and their labels filter more windows (one of
+  // torus.ply's far pairs needs 2^18 windows or more in bound order, fewer in the looser one).
+  bool OrderByBound = true;
 
   // Per-vertex labels, valid where Stamp == CurrentStamp.
   // Per vertex, valid where Stamp == CurrentStamp (zero-page arrays: a search's memory is the
