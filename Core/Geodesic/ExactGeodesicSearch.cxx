@@ -241,7 +241,18 @@ void ExactGeodesicSearch::AddWindow(const Window& w)
   const TriangleMesh& mesh = this->Mesh;
   const std::array<int, 2> ev = mesh.GetEdgeVertices(w.Edge);
   const Vec3 p0 = mesh.GetPosition(ev[0]), p1 = mesh.GetPosition(ev[1]);
-  const double length = ::boolsurf::Distance(p0, p1);
+  this->AddWindowOnEdge(w, ev, p0, p1, ::boolsurf::Distance(p0, p1));
+}
+
+//------------------------------------------------------------------------------
+// AddWindow with the edge's vertices, their positions and its length already at hand (a
+// window's children: Propagate has loaded them).
+void ExactGeodesicSearch::AddWindowOnEdge(const Window& w,
+  const std::array<int, 2>& ev,
+  const Vec3& p0,
+  const Vec3& p1,
+  double length)
+{
   if (!(w.B1 - w.B0 > MinimumWidth * length))
   {
     return;
@@ -454,7 +465,11 @@ void ExactGeodesicSearch::Propagate(int id)
     const double t1 = (nv[0] == c ? 1.0 - u0 : u1) * newLength;
     child.B0 = t0;
     child.B1 = t1;
-    this->AddWindow(child);
+    // The new edge joins xv and c: its positions and length are those of this triangle's
+    // sides (Distance is symmetric bit for bit, so AddWindow would compute the same length).
+    const Vec3& px = side == 0 ? p0 : p1;
+    this->AddWindowOnEdge(
+      child, nv, nv[0] == c ? pc : px, nv[0] == c ? px : pc, side == 0 ? l0 : l1);
   }
 }
 

@@ -131,6 +131,11 @@ private:
   void Relax(int v, double d, int kind, int parent, int arrival);
   bool Dominated(const Window& w, const std::array<int, 2>& ev, double length) const;
   void AddWindow(const Window& w);
+  void AddWindowOnEdge(const Window& w,
+    const std::array<int, 2>& ev,
+    const Vec3& p0,
+    const Vec3& p1,
+    double length);
   double WindowKey(const Window& w, const Vec3& p0, const Vec3& p1, double length) const;
   Window WholeEdgeWindow(int edge,
     int face,
