@@ -191,31 +191,13 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   }
   const int totalPoints = newPointBase[slots];
   ResizeForEdits(out.Positions, totalPoints);
-  ResizeForEdits(out.PointOnMesh, totalPoints);
-  ResizeForEdits(out.PointSurface, totalPoints);
+  ResizeForEdits(out.CurvePointOnMesh, totalPoints - nv);
+  ResizeForEdits(out.CurvePointSurface, totalPoints - nv);
+  out.NumberOfMeshVertices = nv;
   // Mesh vertices keep their ids: written once per mesh, then reused by every edit.
   if (!sameVertices)
   {
-    ParallelRange(arena,
-      nv,
-      [&](int v)
-      {
-        CanonicalPoint c;
-        c.Location = PointLocation::Vertex;
-        c.Id = v;
-        out.Positions[v] = mesh.GetPosition(v);
-        out.PointOnMesh[v] = c;
-        const IntRange corners = mesh.GetVertexCorners(v);
-        SurfacePoint sp;
-        if (corners.size() > 0)
-        {
-          const int k = corners[0] % 3;
-          sp.Triangle = corners[0] / 3;
-          sp.U = k == 1 ? 1.0 : 0.0;
-          sp.V = k == 2 ? 1.0 : 0.0;
-        }
-        out.PointSurface[v] = sp;
-      });
+    ParallelRange(arena, nv, [&](int v) { out.Positions[v] = mesh.GetPosition(v); });
   }
   work.MeshSerial = mesh.GetSerial();
   out.VerticesMeshSerial = mesh.GetSerial();
@@ -231,8 +213,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       c.T = map.EdgePoints[i].T;
       edgeOfEdgePoint[i] = c.Id;
       out.Positions[nv + i] = PositionOf(mesh, c);
-      out.PointOnMesh[nv + i] = c;
-      out.PointSurface[nv + i] = ToSurfacePoint(mesh, c);
+      out.CurvePointOnMesh[i] = c;
+      out.CurvePointSurface[i] = ToSurfacePoint(mesh, c);
     });
   ParallelFor(arena,
     slots,
@@ -254,8 +236,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         c.U = p.P.x;
         c.V = p.P.y;
         out.Positions[p.Global] = mesh.Evaluate(a.Triangle, c.U, c.V);
-        out.PointOnMesh[p.Global] = c;
-        out.PointSurface[p.Global] = { a.Triangle, c.U, c.V };
+        out.CurvePointOnMesh[p.Global - nv] = c;
+        out.CurvePointSurface[p.Global - nv] = { a.Triangle, c.U, c.V };
       }
       for (size_t i = 0; i < a.Points.size(); ++i)
       {
@@ -518,7 +500,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     curves,
     refinedCurves,
     out.Positions,
-    out.PointSurface,
+    out.CurvePointSurface,
     out.GetCellLookup(),
     out.Patches,
     out.CellGraph,

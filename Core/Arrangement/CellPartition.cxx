@@ -773,13 +773,14 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   const std::vector<TracedCurve>& curves,
   const std::vector<RefinedCurve>& refinedCurves,
   const std::vector<Vec3>& positions,
-  const std::vector<SurfacePoint>& pointSurface,
+  const std::vector<SurfacePoint>& curvePointSurface,
   const TriangleCellLookup& cellOfTriangle,
   std::vector<ArrangementPatch>& patches,
   std::vector<CellGraphArc>& arcs,
   PatchGraphBuffers* buffers)
 {
   const TriangleMesh& mesh = *surface.Mesh;
+  const int nv = mesh.GetNumberOfVertices();
   patches.clear();
   arcs.clear();
 
@@ -906,7 +907,8 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
       }
       for (int p : patch.Points)
       {
-        patch.SurfacePoints.push_back(pointSurface[p]);
+        patch.SurfacePoints.push_back(
+          p < nv ? VertexSurfacePoint(mesh, p) : curvePointSurface[p - nv]);
       }
       const int id = static_cast<int>(patches.size());
       if (patch.Closed && patch.LeftCell >= 0 && patch.RightCell >= 0)

@@ -114,7 +114,7 @@ std::vector<int> ZeroCellCandidates(const TriangleMesh& mesh,
           for (int k = 0; k < 3 && result[c] < 0; ++k)
           {
             const int next = tri[(k + 1) % 3];
-            const CanonicalPoint& q = arr.PointOnMesh[next];
+            const CanonicalPoint q = arr.GetPointOnMesh(next);
             const bool onEdge = next == b || (q.Location == PointLocation::Edge && q.Id == e);
             if (tri[k] == a && onEdge)
             {
@@ -176,7 +176,7 @@ int CellAtSurfacePoint(const TriangleMesh& mesh, const Arrangement& arr, int t, 
       for (int k = 0; k < 3; ++k)
       {
         const std::array<double, 3> w =
-          WeightsInTriangle(mesh, arr.PointOnMesh[arr.Triangles[r][k]], t);
+          WeightsInTriangle(mesh, arr.GetPointOnMesh(arr.Triangles[r][k]), t);
         x[k] = w[1];
         y[k] = w[2];
       }

@@ -17,7 +17,7 @@ OffsetRegion MakeOffsetRegion(const TriangleMesh& mesh,
     loop.reserve(line.Points.size());
     for (int p : line.Points)
     {
-      loop.push_back(arrangement.PointOnMesh[p]);
+      loop.push_back(arrangement.GetPointOnMesh(p));
     }
     region.Boundary.push_back(std::move(loop));
   }

@@ -180,7 +180,9 @@ void CheckArrangement(const TriangleMesh& mesh, const Arrangement& arr, double s
   BOOLSURF_FUZZ_CHECK(cells.size() == refined, "cells size");
   int holes = 0;
   BOOLSURF_FUZZ_CHECK(arr.SourceTriangle.size() == refined, "SourceTriangle size");
-  BOOLSURF_FUZZ_CHECK(arr.PointOnMesh.size() == arr.Positions.size(), "PointOnMesh size");
+  BOOLSURF_FUZZ_CHECK(arr.NumberOfMeshVertices == mesh.GetNumberOfVertices() &&
+      arr.CurvePointOnMesh.size() + arr.NumberOfMeshVertices == arr.Positions.size(),
+    "CurvePointOnMesh size");
   for (const Vec3& p : arr.Positions)
   {
     BOOLSURF_FUZZ_CHECK(

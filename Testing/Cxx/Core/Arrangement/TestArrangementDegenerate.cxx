@@ -87,7 +87,7 @@ TEST(ArrangementDegenerate, CrossingExactlyOnMeshEdge)
     if (Distance(arr.Positions[p], { 0.5, 1.0, 0.0 }) < 1e-15)
       shared = static_cast<int>(p);
   ASSERT_GE(shared, 0);
-  EXPECT_EQ(arr.PointOnMesh[shared].Location, PointLocation::Edge);
+  EXPECT_EQ(arr.GetPointOnMesh(shared).Location, PointLocation::Edge);
   EXPECT_TRUE(CurveVisits(arr, 0, shared));
   EXPECT_TRUE(CurveVisits(arr, 1, shared));
 }
