@@ -192,12 +192,18 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   const int totalPoints = newPointBase[slots];
   ResizeForEdits(out.Positions, totalPoints);
   ResizeForEdits(out.CurvePointOnMesh, totalPoints - nv);
-  ResizeForEdits(out.CurvePointSurface, totalPoints - nv);
+  ResizeForEdits(out.PointSurface, totalPoints);
   out.NumberOfMeshVertices = nv;
   // Mesh vertices keep their ids: written once per mesh, then reused by every edit.
   if (!sameVertices)
   {
-    ParallelRange(arena, nv, [&](int v) { out.Positions[v] = mesh.GetPosition(v); });
+    ParallelRange(arena,
+      nv,
+      [&](int v)
+      {
+        out.Positions[v] = mesh.GetPosition(v);
+        out.PointSurface[v] = VertexSurfacePoint(mesh, v);
+      });
   }
   work.MeshSerial = mesh.GetSerial();
   out.VerticesMeshSerial = mesh.GetSerial();
@@ -214,7 +220,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       edgeOfEdgePoint[i] = c.Id;
       out.Positions[nv + i] = PositionOf(mesh, c);
       out.CurvePointOnMesh[i] = c;
-      out.CurvePointSurface[i] = ToSurfacePoint(mesh, c);
+      out.PointSurface[nv + i] = ToSurfacePoint(mesh, c);
     });
   ParallelFor(arena,
     slots,
@@ -237,7 +243,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         c.V = p.P.y;
         out.Positions[p.Global] = mesh.Evaluate(a.Triangle, c.U, c.V);
         out.CurvePointOnMesh[p.Global - nv] = c;
-        out.CurvePointSurface[p.Global - nv] = { a.Triangle, c.U, c.V };
+        out.PointSurface[p.Global] = { a.Triangle, c.U, c.V };
       }
       for (size_t i = 0; i < a.Points.size(); ++i)
       {
@@ -500,7 +506,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     curves,
     refinedCurves,
     out.Positions,
-    out.CurvePointSurface,
+    out.PointSurface,
     out.GetCellLookup(),
     out.Patches,
     out.CellGraph,

@@ -773,14 +773,13 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   const std::vector<TracedCurve>& curves,
   const std::vector<RefinedCurve>& refinedCurves,
   const std::vector<Vec3>& positions,
-  const std::vector<SurfacePoint>& curvePointSurface,
+  const std::vector<SurfacePoint>& pointSurface,
   const TriangleCellLookup& cellOfTriangle,
   std::vector<ArrangementPatch>& patches,
   std::vector<CellGraphArc>& arcs,
   PatchGraphBuffers* buffers)
 {
   const TriangleMesh& mesh = *surface.Mesh;
-  const int nv = mesh.GetNumberOfVertices();
   patches.clear();
   arcs.clear();
 
@@ -907,8 +906,7 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
       }
       for (int p : patch.Points)
       {
-        patch.SurfacePoints.push_back(
-          p < nv ? VertexSurfacePoint(mesh, p) : curvePointSurface[p - nv]);
+        patch.SurfacePoints.push_back(pointSurface[p]);
       }
       const int id = static_cast<int>(patches.size());
       if (patch.Closed && patch.LeftCell >= 0 && patch.RightCell >= 0)

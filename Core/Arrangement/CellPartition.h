@@ -272,13 +272,12 @@ struct PatchGraphBuffers
 
 /// Cuts the curves into patches and builds the cell graph (one arc per patch of a closed
 /// curve whose two sides are cells). Returns the number of patch-graph vertices (distinct
-/// patch end points). `curvePointSurface` holds the surface points of the refined points past
-/// the mesh's vertices (Arrangement::CurvePointSurface).
+/// patch end points).
 int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   const std::vector<TracedCurve>& curves,
   const std::vector<RefinedCurve>& refinedCurves,
   const std::vector<Vec3>& positions,
-  const std::vector<SurfacePoint>& curvePointSurface,
+  const std::vector<SurfacePoint>& pointSurface,
   const TriangleCellLookup& cellOfTriangle,
   std::vector<ArrangementPatch>& patches,
   std::vector<CellGraphArc>& arcs,

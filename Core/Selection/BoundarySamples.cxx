@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 
 namespace boolsurf
 {
@@ -188,30 +187,10 @@ bool SelectBySamples(const Arrangement& arr,
     points.push_back(&p.Points);
   }
   // The surface normal at a refined point: that of the mesh triangle its surface point names,
-  // so the cost is per sample, not per triangle. Samples snap to patch points, whose surface
-  // points the patches keep (the arrangement does not store those of mesh vertices).
-  std::unordered_map<int, int> vertexTriangle;
-  for (const ArrangementPatch& patch : arr.Patches)
-  {
-    for (std::size_t k = 0; k < patch.Points.size(); ++k)
-    {
-      if (patch.Points[k] < arr.NumberOfMeshVertices)
-      {
-        vertexTriangle.emplace(patch.Points[k], patch.SurfacePoints[k].Triangle);
-      }
-    }
-  }
+  // so the cost is per sample, not per triangle.
   auto normalOf = [&](int p)
   {
-    int t = -1;
-    if (p >= arr.NumberOfMeshVertices)
-    {
-      t = arr.CurvePointSurface[p - arr.NumberOfMeshVertices].Triangle;
-    }
-    else if (const auto found = vertexTriangle.find(p); found != vertexTriangle.end())
-    {
-      t = found->second;
-    }
+    const int t = arr.PointSurface[p].Triangle;
     if (t < 0 || t >= arr.NumberOfMeshTriangles || arr.SourceTriangle[t] < 0)
     {
       return Vec3();

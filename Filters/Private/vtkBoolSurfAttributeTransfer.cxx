@@ -47,8 +47,7 @@ bool IsBoolSurfArray(const char* name)
 //------------------------------------------------------------------------------
 void TransferSurfaceAttributes(vtkPolyData* source,
   const TriangleMesh& mesh,
-  vtkIdType numberOfPoints,
-  const std::function<SurfacePoint(vtkIdType)>& pointSurface,
+  const std::vector<SurfacePoint>& pointSurface,
   const std::vector<int>& sourceTriangle,
   vtkPolyData* target)
 {
@@ -76,7 +75,7 @@ void TransferSurfaceAttributes(vtkPolyData* source,
   }
   vtkPointData* outPD = target->GetPointData();
   vtkCellData* outCD = target->GetCellData();
-  const vtkIdType np = numberOfPoints;
+  const vtkIdType np = static_cast<vtkIdType>(pointSurface.size());
   const vtkIdType nc = static_cast<vtkIdType>(sourceTriangle.size());
   outPD->InterpolateAllocate(inPD, np);
   outCD->CopyAllocate(inCD, nc);
@@ -85,7 +84,7 @@ void TransferSurfaceAttributes(vtkPolyData* source,
   double weights[3];
   for (vtkIdType p = 0; p < np; ++p)
   {
-    const SurfacePoint sp = pointSurface(p);
+    const SurfacePoint& sp = pointSurface[p];
     const Triangle& tri = mesh.GetTriangle(sp.Triangle);
     for (int k = 0; k < 3; ++k)
     {

@@ -7,10 +7,7 @@
 
 #include "Mesh/SurfacePoint.h"
 
-#include <vtkType.h>
-
 #include <array>
-#include <functional>
 #include <vector>
 
 class vtkPolyData;
@@ -19,13 +16,11 @@ namespace boolsurf
 {
 
 /// `source` is the triangulated input surface (cell ids = mesh triangle ids); `target` gets
-/// its point data (one tuple per point p < numberOfPoints, interpolated at pointSurface(p)) and
-/// cell data (one tuple per entry of sourceTriangle). Arrays whose names are in `skip` are not
-/// carried (names BoolSurf writes).
+/// its point data (one tuple per entry of pointSurface) and cell data (one tuple per entry of
+/// sourceTriangle). Arrays whose names are in `skip` are not carried (names BoolSurf writes).
 void TransferSurfaceAttributes(vtkPolyData* source,
   const TriangleMesh& mesh,
-  vtkIdType numberOfPoints,
-  const std::function<SurfacePoint(vtkIdType)>& pointSurface,
+  const std::vector<SurfacePoint>& pointSurface,
   const std::vector<int>& sourceTriangle,
   vtkPolyData* target);
 

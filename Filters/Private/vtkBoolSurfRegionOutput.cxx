@@ -130,7 +130,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
     xyz[3 * i] = x.x;
     xyz[3 * i + 1] = x.y;
     xyz[3 * i + 2] = x.z;
-    pointSurface[i] = arr.GetPointSurface(*surface.Mesh, p);
+    pointSurface[i] = arr.PointSurface[p];
   }
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
@@ -152,13 +152,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
     source->SetValue(t, sourceTriangle[t]);
   }
   // The surface's own arrays first (they skip BoolSurf's names), then ours.
-  TransferSurfaceAttributes(
-    surface.Triangles,
-    *surface.Mesh,
-    static_cast<vtkIdType>(pointSurface.size()),
-    [&](vtkIdType p) { return pointSurface[p]; },
-    sourceTriangle,
-    region);
+  TransferSurfaceAttributes(surface.Triangles, *surface.Mesh, pointSurface, sourceTriangle, region);
   region->GetCellData()->AddArray(cell);
   region->GetCellData()->AddArray(source);
   AddSurfacePointArrays(pointSurface, region->GetPointData());

@@ -53,7 +53,7 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
       x[1] = arr.Positions[p].y;
       x[2] = arr.Positions[p].z;
     },
-    [&](int p) { return arr.GetPointSurface(*surface.Mesh, p); },
+    [&](int p) { return arr.PointSurface[p]; },
     true,
     boundary);
   const Clock::time_point written = Clock::now();
