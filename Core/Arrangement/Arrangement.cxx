@@ -202,7 +202,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       [&](int v)
       {
         out.Positions[v] = mesh.GetPosition(v);
-        out.PointSurface[v] = VertexSurfacePoint(mesh, v);
+        out.PointSurface[v] = ToSurfacePoint(mesh, out.GetPointOnMesh(v));
       });
   }
   work.MeshSerial = mesh.GetSerial();

@@ -49,7 +49,7 @@ struct Arrangement
   /// on 4.3M triangles). Read any point with GetPointOnMesh.
   std::vector<CanonicalPoint> CurvePointOnMesh;
   /// Each refined point as triangle + barycentric (u, v), mesh vertices included: the region
-  /// output reads it per point, and deriving a vertex's (VertexSurfacePoint) there costs a
+  /// output reads it per point, and deriving a vertex's (ToSurfacePoint) there costs a
   /// second cache miss per point (+0.8 ms on a 10-circle edit of igea_1m, tried).
   std::vector<SurfacePoint> PointSurface;
   int NumberOfMeshVertices = 0; ///< refined points below it are the mesh's vertices

@@ -281,21 +281,6 @@ SurfacePoint ToSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c)
 }
 
 //------------------------------------------------------------------------------
-SurfacePoint VertexSurfacePoint(const TriangleMesh& mesh, int v)
-{
-  SurfacePoint sp;
-  const IntRange corners = mesh.GetVertexCorners(v);
-  if (corners.size() > 0)
-  {
-    const int k = corners[0] % 3;
-    sp.Triangle = corners[0] / 3;
-    sp.U = k == 1 ? 1.0 : 0.0;
-    sp.V = k == 2 ? 1.0 : 0.0;
-  }
-  return sp;
-}
-
-//------------------------------------------------------------------------------
 SurfacePoint SnapWeights(SurfacePoint p)
 {
   double w[3] = { 1.0 - p.U - p.V, p.U, p.V };

@@ -164,10 +164,6 @@ SurfacePoint SnapWeights(SurfacePoint p);
 /// is (1, 0, 0) in some order).
 SurfacePoint ToSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c);
 
-/// Mesh vertex v as a surface point: the corner of its lowest corner's triangle (weight
-/// exactly 1 there); Triangle -1 for a vertex no triangle uses.
-SurfacePoint VertexSurfacePoint(const TriangleMesh& mesh, int v);
-
 /// The canonical form of c as written in an output array: in `preferred` when that triangle
 /// contains c (so a curve point is written in a triangle it shares with its neighbours), else
 /// in AnyTriangleOf(c). When that form would not read back (LocateSurfacePoint) to c bit for
