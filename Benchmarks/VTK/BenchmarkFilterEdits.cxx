@@ -83,6 +83,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <random>
@@ -1034,16 +1035,18 @@ void BM_OneStepHugeShapeId(benchmark::State& state)
   CurveEdits(state, HugeShapeId(), 0, 1);
 }
 
-// Edits at one and two threads (NumberOfThreads), milliseconds of real time, `edits` each.
+// Edits at one and two threads (NumberOfThreads), milliseconds of real time, `edits` each
+// (BOOLSURF_BENCHMARK_ITERATIONS sets another number, e.g. for a profiler).
 template <int edits>
 void AtOneAndTwoThreads(benchmark::internal::Benchmark* b)
 {
+  const char* iterations = std::getenv("BOOLSURF_BENCHMARK_ITERATIONS");
   b->ArgName("threads")
     ->Arg(1)
     ->Arg(2)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
-    ->Iterations(edits);
+    ->Iterations(iterations ? std::atoi(iterations) : edits);
 }
 
 BENCHMARK(BM_OneStepCurveEdit)->Apply(AtOneAndTwoThreads<10>);

@@ -8,17 +8,24 @@
 // Counters: median_ms / max_ms (per update), sites / site_graph_ms / site_graph_MB (the
 // per-surface structure of the Bounded method, built on the first far leg, outside the timed
 // loop).
-// Run: BoolSurfVTKBenchmarks --benchmark_filter=TraceLeg
+// PassCurvesYardstick: the same updates through a filter that only passes its curves through,
+// i.e. what VTK's pipeline itself costs per update, the floor under the in-triangle legs.
+// Run: BoolSurfVTKBenchmarks --benchmark_filter='TraceLeg|PassCurves'
 #include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
 #include <vtkNew.h>
+#include <vtkObjectFactory.h>
 #include <vtkPLYReader.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataAlgorithm.h>
 #include <vtkSmartPointer.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <benchmark/benchmark.h>
 
@@ -190,6 +197,59 @@ void TraceLeg(benchmark::State& state, const std::string& name, LegKind kind)
   }
 }
 
+/// The yardstick of the in-triangle legs: a filter with Trace Surface Curves' two inputs that
+/// only passes its curves through, so an update is VTK's own pipeline work (requests up and
+/// down both inputs, the output emptied and refilled) and nothing of BoolSurf's.
+class PassCurvesFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static PassCurvesFilter* New();
+  vtkTypeMacro(PassCurvesFilter, vtkPolyDataAlgorithm);
+
+protected:
+  PassCurvesFilter() { this->SetNumberOfInputPorts(2); }
+  // The executive BoolSurf's filters use outside ParaView (vtkBoolSurfAlgorithm).
+  vtkExecutive* CreateDefaultExecutive() override
+  {
+    return vtkStreamingDemandDrivenPipeline::New();
+  }
+  int RequestData(vtkInformation*,
+    vtkInformationVector** inputs,
+    vtkInformationVector* outputs) override
+  {
+    vtkPolyData::GetData(outputs)->ShallowCopy(vtkPolyData::GetData(inputs[1]));
+    return 1;
+  }
+};
+vtkStandardNewMacro(PassCurvesFilter);
+
+/// A fresh update of PassCurvesFilter per in-triangle leg: counter median_ms.
+void PassCurvesYardstick(benchmark::State& state, const std::string& name)
+{
+  LegMesh& m = Load(name);
+  if (!m.Surface)
+  {
+    state.SkipWithError(m.Error.c_str());
+    return;
+  }
+  vtkNew<PassCurvesFilter> pass;
+  pass->SetInputData(0, m.Surface);
+  std::vector<double> times;
+  std::size_t i = 0;
+  for (auto _ : state)
+  {
+    const auto& pair = m.InTriangle[i++ % (m.InTriangle.size() - 1)];
+    pass->SetInputData(1, Leg(pair.first, pair.second));
+    const auto t0 = std::chrono::steady_clock::now();
+    pass->Update();
+    times.push_back(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    state.SetIterationTime(times.back() / 1000.0);
+  }
+  std::sort(times.begin(), times.end());
+  state.counters["median_ms"] = times.empty() ? 0.0 : times[times.size() / 2];
+}
+
 // A fixed number of legs; BOOLSURF_BENCHMARK_ITERATIONS sets another (under callgrind).
 int LegIterations(int fallback)
 {
@@ -199,6 +259,14 @@ int LegIterations(int fallback)
 } // namespace
 
 BENCHMARK_CAPTURE(TraceLeg, igea_1m_in_triangle, std::string("igea_1m.ply"), LegKind::InTriangle)
+  ->UseManualTime()
+  ->Iterations(LegIterations(399))
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(PassCurvesYardstick, igea_1m, std::string("igea_1m.ply"))
+  ->UseManualTime()
+  ->Iterations(LegIterations(399))
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(PassCurvesYardstick, kitten, std::string("kitten.ply"))
   ->UseManualTime()
   ->Iterations(LegIterations(399))
   ->Unit(benchmark::kMillisecond);

@@ -74,6 +74,7 @@ struct Arrangement::WorkBuffers
   std::vector<int> TouchedTriangles, TouchedEdges;
   std::unordered_set<std::uint64_t> BlockedMeshSubEdges;
   std::vector<unsigned char> Blocked;
+  std::vector<std::array<int, 3>> PieceAcross;
   std::shared_ptr<MeshTiles> Tiles;
   TileFloodBuffers Flood;
   PatchGraphBuffers PatchGraph;
@@ -140,7 +141,9 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   TriangleSegmentMap& map = work.Map;
   CurvePointRef failed;
   out.FailedCurve = out.FailedPoint = -1;
-  if (!BuildTriangleSegmentMap(mesh, curves, map, error, &failed))
+  bool mapped = false;
+  arena.execute([&] { mapped = BuildTriangleSegmentMap(mesh, curves, map, error, &failed); });
+  if (!mapped)
   {
     out.FailedCurve = failed.Curve;
     out.FailedPoint = failed.Point;
@@ -343,17 +346,22 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   }
   // Per refined triangle, the sides that closed curves run along inside its source triangle:
   // read only for pieces of refined triangles, so only those are written.
+  // And what lies across each piece's edges (RefinedSurfaceView::PieceAcross), found here
+  // from the local triangulation, where the points' places on the triangle are known.
   std::vector<unsigned char>& blocked = work.Blocked;
   ResizeForEdits(blocked, refinedCount);
+  std::vector<std::array<int, 3>>& pieceAcross = work.PieceAcross;
+  ResizeForEdits(pieceAcross, refinedCount - nt + slots);
   ParallelFor(arena,
     slots,
     [&](int s)
     {
       const LocalArrangement& a = local[s];
       const int t = a.Triangle;
+      const auto piece = [&](int i) { return i == 0 ? t : pieceOffset[s] + i - 1; };
       for (size_t i = 0; i < a.Triangles.size(); ++i)
       {
-        const int r = i == 0 ? t : pieceOffset[s] + static_cast<int>(i) - 1;
+        const int r = piece(static_cast<int>(i));
         for (int j = 0; j < 3; ++j)
         {
           out.Triangles[r][j] = a.Points[a.Triangles[i][j]].Global;
@@ -361,6 +369,26 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         out.SourceTriangle[r] = t;
         blocked[r] = a.Blocked[i];
       }
+      // Local point places (LocalPoint::Where) as bits of the local edges they lie on.
+      const auto edgeBits = [&](int i, int j)
+      {
+        const int where = a.Points[a.Alias[a.Triangles[i][j]]].Where;
+        if (where < 0)
+        {
+          return 0;
+        }
+        if (where < 3)
+        {
+          return 1 << where;
+        }
+        const int corner = where - 3; // edges corner and corner - 1 meet there
+        return (1 << corner) | (1 << ((corner + 2) % 3));
+      };
+      SetPieceNeighbors(static_cast<int>(a.Triangles.size()),
+        piece,
+        out.Triangles,
+        edgeBits,
+        &pieceAcross[pieceOffset[s] - nt + s]);
     });
   out.LayoutMeshSerial = mesh.GetSerial();
   out.NumberOfRefinedSourceTriangles = slots;
@@ -406,6 +434,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     }
   }
   view.CrowdedHalfEdges = crowdedHalfEdges.empty() ? nullptr : &crowdedHalfEdges;
+  view.PieceAcross = &pieceAcross;
   // Tiles of the mesh: built once per mesh (the persistent part of the dual graph); an edit
   // floods clean tiles as single nodes and only the triangles of tiles that curves touch.
   if (!work.Tiles || work.Tiles->MeshSerial != mesh.GetSerial() || mesh.GetSerial() == 0)
@@ -439,68 +468,83 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       slotOfSegment[g] = s;
     }
   }
+  // Each curve's refined points and stations, curves in parallel: the pieces' chains were
+  // written by other threads in the refinement, so reading them is mostly cache misses
+  // (about a millisecond for ten circles on 1M triangles, serially).
   std::vector<RefinedCurve>& refinedCurves = work.RefinedCurves;
   refinedCurves.resize(curves.size());
-  std::vector<int> ids;
-  std::vector<double> stations;
-  for (size_t ci = 0; ci < curves.size(); ++ci)
+  out.CurvePoints.resize(curves.size());
+  out.CurveStations.resize(curves.size());
+  std::vector<std::string> curveErrors(curves.size());
+  ParallelFor(arena,
+    static_cast<int>(curves.size()),
+    [&](int ci)
+    {
+      RefinedCurve& rc = refinedCurves[ci];
+      std::vector<double>& stations = out.CurveStations[ci];
+      rc.Points.clear();
+      rc.SubEdgeSource.clear();
+      stations.clear();
+      std::vector<int> ids;
+      for (const SegmentLocation& loc : map.CurveSegments[ci])
+      {
+        int source, traced;
+        ids.clear();
+        if (loc.AlongEdge)
+        {
+          ids = edgeSegmentPoints[loc.Index];
+          source = -map.EdgeSegments[loc.Index].Edge - 1;
+          traced = map.EdgeSegments[loc.Index].Segment;
+        }
+        else
+        {
+          const int s = slotOfSegment[loc.Index];
+          const LocalArrangement& a = local[s];
+          for (int p : a.Chains[loc.Index - map.SegmentOffset[s]])
+          {
+            ids.push_back(a.Points[p].Global);
+          }
+          source = a.Triangle;
+          traced = map.Segments[loc.Index].Segment;
+        }
+        size_t from = 0;
+        if (!rc.Points.empty())
+        {
+          if (rc.Points.back() != ids.front())
+          {
+            curveErrors[ci] = "internal error: curve " + std::to_string(ci) + " is not continuous";
+            return;
+          }
+          from = 1;
+        }
+        // The traced segment is straight on its triangle or edge: the fraction of its length
+        // is the fraction of the way between its two traced points.
+        const Vec3& first = out.Positions[ids.front()];
+        const double whole = Distance(first, out.Positions[ids.back()]);
+        for (size_t k = from; k < ids.size(); ++k)
+        {
+          rc.Points.push_back(ids[k]);
+          const double f = k + 1 == ids.size()
+            ? 1.0
+            : (whole > 0 ? std::min(1.0, Distance(first, out.Positions[ids[k]]) / whole) : 0.0);
+          stations.push_back(k == 0 ? traced : traced + f);
+        }
+        rc.SubEdgeSource.insert(rc.SubEdgeSource.end(), ids.size() - 1, source);
+      }
+      if (curves[ci].Closed && rc.Points.size() > 1 && rc.Points.front() == rc.Points.back())
+      {
+        rc.Points.pop_back();
+        stations.pop_back();
+      }
+      out.CurvePoints[ci] = rc.Points;
+    });
+  for (const std::string& curveError : curveErrors)
   {
-    RefinedCurve& rc = refinedCurves[ci];
-    rc.Points.clear();
-    rc.SubEdgeSource.clear();
-    stations.clear();
-    for (const SegmentLocation& loc : map.CurveSegments[ci])
+    if (!curveError.empty())
     {
-      int source, traced;
-      ids.clear();
-      if (loc.AlongEdge)
-      {
-        ids = edgeSegmentPoints[loc.Index];
-        source = -map.EdgeSegments[loc.Index].Edge - 1;
-        traced = map.EdgeSegments[loc.Index].Segment;
-      }
-      else
-      {
-        const int s = slotOfSegment[loc.Index];
-        const LocalArrangement& a = local[s];
-        for (int p : a.Chains[loc.Index - map.SegmentOffset[s]])
-        {
-          ids.push_back(a.Points[p].Global);
-        }
-        source = a.Triangle;
-        traced = map.Segments[loc.Index].Segment;
-      }
-      size_t from = 0;
-      if (!rc.Points.empty())
-      {
-        if (rc.Points.back() != ids.front())
-        {
-          error = "internal error: curve " + std::to_string(ci) + " is not continuous";
-          return false;
-        }
-        from = 1;
-      }
-      // The traced segment is straight on its triangle or edge: the fraction of its length is
-      // the fraction of the way between its two traced points.
-      const Vec3& first = out.Positions[ids.front()];
-      const double whole = Distance(first, out.Positions[ids.back()]);
-      for (size_t k = from; k < ids.size(); ++k)
-      {
-        rc.Points.push_back(ids[k]);
-        const double f = k + 1 == ids.size()
-          ? 1.0
-          : (whole > 0 ? std::min(1.0, Distance(first, out.Positions[ids[k]]) / whole) : 0.0);
-        stations.push_back(k == 0 ? traced : traced + f);
-      }
-      rc.SubEdgeSource.insert(rc.SubEdgeSource.end(), ids.size() - 1, source);
+      error = curveError;
+      return false;
     }
-    if (curves[ci].Closed && rc.Points.size() > 1 && rc.Points.front() == rc.Points.back())
-    {
-      rc.Points.pop_back();
-      stations.pop_back();
-    }
-    out.CurvePoints.push_back(rc.Points);
-    out.CurveStations.push_back(stations);
   }
   out.NumberOfPatchGraphVertices = BuildPatchesAndCellGraph(view,
     curves,

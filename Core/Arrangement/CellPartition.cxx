@@ -12,41 +12,6 @@
 
 namespace boolsurf
 {
-namespace
-{
-
-// Bit k set when refined point id lies on (the closure of) local edge k of source triangle t.
-int LocalEdgesOfPoint(const RefinedSurfaceView& s, int t, int id)
-{
-  const TriangleMesh& mesh = *s.Mesh;
-  if (id < mesh.GetNumberOfVertices())
-  {
-    const Triangle& tri = mesh.GetTriangle(t);
-    for (int k = 0; k < 3; ++k)
-    {
-      if (tri[k] == id)
-      {
-        return (1 << k) | (1 << ((k + 2) % 3)); // edges k and k-1 meet at corner k
-      }
-    }
-    return 0;
-  }
-  if (id >= s.FirstInteriorPoint)
-  {
-    return 0;
-  }
-  const int e = (*s.EdgeOfEdgePoint)[id - mesh.GetNumberOfVertices()];
-  for (int k = 0; k < 3; ++k)
-  {
-    if (mesh.GetEdgeId(t, k) == e)
-    {
-      return 1 << k;
-    }
-  }
-  return 0;
-}
-
-} // namespace
 
 //------------------------------------------------------------------------------
 int RefinedSurfaceView::FindDirected(int t, int a, int b) const
@@ -106,13 +71,14 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
   }
   else
   {
-    const int common = LocalEdgesOfPoint(*this, t, x) & LocalEdgesOfPoint(*this, t, y);
-    if (common == 0)
+    const int across =
+      (*this->PieceAcross)[this->PieceAcrossIndex(r, (*this->SlotOfTriangle)[t])][j];
+    if (across >= 0 || across == AcrossNothing)
     {
       blocked = ((*this->Blocked)[r] >> j) & 1;
-      return this->FindDirected(t, y, x);
+      return across >= 0 ? across : -1;
     }
-    k = common & 1 ? 0 : (common & 2 ? 1 : 2);
+    k = -1 - across;
   }
   const int n = mesh.GetNeighbor(t, k);
   if (n < 0)

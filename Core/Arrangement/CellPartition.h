@@ -22,6 +22,7 @@
 #include "Geodesic/TracedCurve.h"
 #include "Mesh/SurfacePoint.h"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -69,6 +70,22 @@ struct RefinedSurfaceView
   /// triangles' directed edges (DirectedPointPair) -> refined triangle. Null when none is.
   const std::unordered_map<int, EdgeIndex>* CrowdedHalfEdges = nullptr;
   static constexpr int CrowdedSize = 64;
+
+  /// Per piece of a refined source triangle, what lies across each of its edges, found once
+  /// when the triangle is refined (SetPieceNeighbors) so the flood fill does not search the
+  /// triangle's pieces for every edge: a refined triangle of the same source triangle (>= 0),
+  /// AcrossMeshEdge(k) when the edge lies on the source triangle's local edge k, AcrossNothing
+  /// when no piece holds the reversed edge. Piece i of slot s (ForEachPiece order) is entry
+  /// PieceOffset[s] - NumberOfMeshTriangles + s + i.
+  const std::vector<std::array<int, 3>>* PieceAcross = nullptr;
+  static constexpr int AcrossNothing = -4;
+  static constexpr int AcrossMeshEdge(int k) { return -1 - k; }
+  /// Entry of refined triangle r, a piece of the source triangle in slot s, in PieceAcross.
+  int PieceAcrossIndex(int r, int s) const
+  {
+    const int nt = this->Mesh->GetNumberOfTriangles();
+    return (r >= nt ? r + 1 : (*this->PieceOffset)[s]) - nt + s;
+  }
 
   /// Number of refined triangles of mesh triangle t (0 for an unusable one).
   int CountPieces(int t) const
@@ -142,6 +159,18 @@ struct MeshTiles
 };
 
 void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles);
+
+/// Fills RefinedSurfaceView::PieceAcross for the `count` pieces of one refined source triangle.
+/// `piece(i)`: the refined id of piece i (ForEachPiece order); `triangles`: the refined
+/// triangles (global point ids); `edgeBits(i, j)`: the local edges of the source triangle that
+/// vertex j of piece i lies on (bit k for edge k, two bits at a corner). `across` receives one
+/// entry per piece.
+template <class PieceId, class EdgeBits>
+void SetPieceNeighbors(int count,
+  const PieceId& piece,
+  const std::vector<std::array<int, 3>>& triangles,
+  const EdgeBits& edgeBits,
+  std::array<int, 3>* across);
 
 /// What each cell is made of: clean tiles (all their triangles are in the cell, each unrefined:
 /// member t is refined triangle t) and loose refined triangles (those of tiles that
@@ -282,6 +311,75 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   std::vector<ArrangementPatch>& patches,
   std::vector<CellGraphArc>& arcs,
   PatchGraphBuffers* buffers = nullptr);
+
+//------------------------------------------------------------------------------
+template <class PieceId, class EdgeBits>
+void SetPieceNeighbors(int count,
+  const PieceId& piece,
+  const std::vector<std::array<int, 3>>& triangles,
+  const EdgeBits& edgeBits,
+  std::array<int, 3>* across)
+{
+  // The piece holding the reversed edge: the first one in ForEachPiece order, as a scan would
+  // find. A few pieces (the usual crossed triangle) are scanned; many (a crowded triangle)
+  // are looked up in their half-edges sorted by (directed point pair, piece).
+  constexpr int ScannedPieces = 16;
+  struct HalfEdge
+  {
+    std::uint64_t Key;
+    int Piece;
+  };
+  std::vector<HalfEdge> halfEdges;
+  if (count > ScannedPieces)
+  {
+    halfEdges.reserve(3 * static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i)
+    {
+      const std::array<int, 3>& v = triangles[piece(i)];
+      for (int j = 0; j < 3; ++j)
+      {
+        halfEdges.push_back({ DirectedPointPair(v[j], v[(j + 1) % 3]), i });
+      }
+    }
+    std::sort(halfEdges.begin(),
+      halfEdges.end(),
+      [](const HalfEdge& a, const HalfEdge& b)
+      { return a.Key != b.Key ? a.Key < b.Key : a.Piece < b.Piece; });
+  }
+  const auto holder = [&](int x, int y)
+  {
+    if (count <= ScannedPieces)
+    {
+      for (int i = 0; i < count; ++i)
+      {
+        const std::array<int, 3>& v = triangles[piece(i)];
+        if ((v[0] == x && v[1] == y) || (v[1] == x && v[2] == y) || (v[2] == x && v[0] == y))
+        {
+          return piece(i);
+        }
+      }
+      return RefinedSurfaceView::AcrossNothing;
+    }
+    const std::uint64_t key = DirectedPointPair(x, y);
+    const auto at = std::lower_bound(halfEdges.begin(),
+      halfEdges.end(),
+      key,
+      [](const HalfEdge& h, std::uint64_t k) { return h.Key < k; });
+    return at != halfEdges.end() && at->Key == key ? piece(at->Piece)
+                                                   : RefinedSurfaceView::AcrossNothing;
+  };
+  for (int i = 0; i < count; ++i)
+  {
+    const std::array<int, 3>& v = triangles[piece(i)];
+    for (int j = 0; j < 3; ++j)
+    {
+      const int common = edgeBits(i, j) & edgeBits(i, (j + 1) % 3);
+      across[i][j] = common != 0
+        ? RefinedSurfaceView::AcrossMeshEdge(common & 1 ? 0 : (common & 2 ? 1 : 2))
+        : holder(v[(j + 1) % 3], v[j]);
+    }
+  }
+}
 
 } // namespace boolsurf
 
