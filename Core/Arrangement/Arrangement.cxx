@@ -75,6 +75,7 @@ struct Arrangement::WorkBuffers
   std::unordered_set<std::uint64_t> BlockedMeshSubEdges;
   std::vector<unsigned char> Blocked;
   std::vector<std::array<int, 3>> PieceAcross;
+  std::vector<EdgeIndex> CrowdedHalfEdges; ///< per slot, see RefinedSurfaceView
   std::shared_ptr<MeshTiles> Tiles;
   TileFloodBuffers Flood;
   PatchGraphBuffers PatchGraph;
@@ -347,11 +348,13 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   // Per refined triangle, the sides that closed curves run along inside its source triangle:
   // read only for pieces of refined triangles, so only those are written.
   // And what lies across each piece's edges (RefinedSurfaceView::PieceAcross), found here
-  // from the local triangulation, where the points' places on the triangle are known.
+  // from the local triangulation, where the points' places on the triangle are known, with
+  // the half-edge index of crowded triangles (CrowdedHalfEdges).
   std::vector<unsigned char>& blocked = work.Blocked;
   ResizeForEdits(blocked, refinedCount);
   std::vector<std::array<int, 3>>& pieceAcross = work.PieceAcross;
   ResizeForEdits(pieceAcross, refinedCount - nt + slots);
+  work.CrowdedHalfEdges.resize(slots);
   ParallelFor(arena,
     slots,
     [&](int s)
@@ -388,7 +391,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         piece,
         out.Triangles,
         edgeBits,
-        &pieceAcross[pieceOffset[s] - nt + s]);
+        &pieceAcross[pieceOffset[s] - nt + s],
+        work.CrowdedHalfEdges[s]);
     });
   out.LayoutMeshSerial = mesh.GetSerial();
   out.NumberOfRefinedSourceTriangles = slots;
@@ -407,33 +411,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   view.EdgeOfEdgePoint = &edgeOfEdgePoint;
   view.BlockedMeshSubEdges = &blockedMeshSubEdges;
   view.MeshEdgeHasBlocked = &meshEdgeHasBlocked;
-  // Crowded mesh triangles (cut into hundreds or thousands of refined triangles): an index of
-  // their half-edges, so the flood fill's neighbour lookups do not scan them.
-  std::unordered_map<int, EdgeIndex> crowdedHalfEdges;
-  for (int s = 0; s < slots; ++s)
-  {
-    const int t = map.Triangles[s];
-    const int pieces = view.CountPieces(t);
-    if (pieces > RefinedSurfaceView::CrowdedSize)
-    {
-      EdgeIndex& edges = crowdedHalfEdges[t];
-      edges.Reset(3 * static_cast<std::size_t>(pieces));
-      view.ForEachPiece(t,
-        [&](int r)
-        {
-          const std::array<int, 3>& v = out.Triangles[r];
-          for (int j = 0; j < 3; ++j)
-          {
-            const std::uint64_t key = DirectedPointPair(v[j], v[(j + 1) % 3]);
-            if (!edges.Contains(key)) // the first one, as a scan would find
-            {
-              edges.Set(key, r);
-            }
-          }
-        });
-    }
-  }
-  view.CrowdedHalfEdges = crowdedHalfEdges.empty() ? nullptr : &crowdedHalfEdges;
+  view.CrowdedHalfEdges = &work.CrowdedHalfEdges;
   view.PieceAcross = &pieceAcross;
   // Tiles of the mesh: built once per mesh (the persistent part of the dual graph); an edit
   // floods clean tiles as single nodes and only the triangles of tiles that curves touch.

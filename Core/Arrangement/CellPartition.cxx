@@ -29,11 +29,7 @@ int RefinedSurfaceView::FindDirected(int t, int a, int b) const
   const int first = (*this->PieceOffset)[s], last = (*this->PieceOffset)[s + 1];
   if (this->CrowdedHalfEdges && 1 + last - first > CrowdedSize)
   {
-    const auto crowded = this->CrowdedHalfEdges->find(t);
-    if (crowded != this->CrowdedHalfEdges->end())
-    {
-      return crowded->second.Find(DirectedPointPair(a, b));
-    }
+    return (*this->CrowdedHalfEdges)[s].Find(DirectedPointPair(a, b));
   }
   if (holds(t))
   {

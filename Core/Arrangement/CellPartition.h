@@ -65,11 +65,12 @@ struct RefinedSurfaceView
   const std::unordered_set<std::uint64_t>* BlockedMeshSubEdges = nullptr;
   const std::vector<char>* MeshEdgeHasBlocked = nullptr;
 
-  /// Per crowded source triangle (more than CrowdedSize refined triangles, where scanning them
-  /// for every neighbour would make the flood fill quadratic in their number): its refined
-  /// triangles' directed edges (DirectedPointPair) -> refined triangle. Null when none is.
-  const std::unordered_map<int, EdgeIndex>* CrowdedHalfEdges = nullptr;
-  static constexpr int CrowdedSize = 64;
+  /// Per slot: for a crowded source triangle (more than CrowdedSize refined triangles, where
+  /// scanning them for every neighbour would make the flood fill quadratic in their number),
+  /// its refined triangles' directed edges (DirectedPointPair) -> refined triangle; empty for
+  /// the others. Filled by SetPieceNeighbors.
+  const std::vector<EdgeIndex>* CrowdedHalfEdges = nullptr;
+  static constexpr int CrowdedSize = 16;
 
   /// Per piece of a refined source triangle, what lies across each of its edges, found once
   /// when the triangle is refined (SetPieceNeighbors) so the flood fill does not search the
@@ -164,13 +165,14 @@ void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles);
 /// `piece(i)`: the refined id of piece i (ForEachPiece order); `triangles`: the refined
 /// triangles (global point ids); `edgeBits(i, j)`: the local edges of the source triangle that
 /// vertex j of piece i lies on (bit k for edge k, two bits at a corner). `across` receives one
-/// entry per piece.
+/// entry per piece; `crowded` the triangle's entry of RefinedSurfaceView::CrowdedHalfEdges.
 template <class PieceId, class EdgeBits>
 void SetPieceNeighbors(int count,
   const PieceId& piece,
   const std::vector<std::array<int, 3>>& triangles,
   const EdgeBits& edgeBits,
-  std::array<int, 3>* across);
+  std::array<int, 3>* across,
+  EdgeIndex& crowded);
 
 /// What each cell is made of: clean tiles (all their triangles are in the cell, each unrefined:
 /// member t is refined triangle t) and loose refined triangles (those of tiles that
@@ -318,55 +320,48 @@ void SetPieceNeighbors(int count,
   const PieceId& piece,
   const std::vector<std::array<int, 3>>& triangles,
   const EdgeBits& edgeBits,
-  std::array<int, 3>* across)
+  std::array<int, 3>* across,
+  EdgeIndex& crowded)
 {
   // The piece holding the reversed edge: the first one in ForEachPiece order, as a scan would
   // find. A few pieces (the usual crossed triangle) are scanned; many (a crowded triangle)
-  // are looked up in their half-edges sorted by (directed point pair, piece).
-  constexpr int ScannedPieces = 16;
-  struct HalfEdge
+  // are looked up in the index of their half-edges, filled in piece order, which the flood
+  // fill's lookups from neighbouring triangles use too.
+  const bool isCrowded = count > RefinedSurfaceView::CrowdedSize;
+  crowded = EdgeIndex();
+  if (isCrowded)
   {
-    std::uint64_t Key;
-    int Piece;
-  };
-  std::vector<HalfEdge> halfEdges;
-  if (count > ScannedPieces)
-  {
-    halfEdges.reserve(3 * static_cast<std::size_t>(count));
+    crowded.Reset(3 * static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i)
     {
-      const std::array<int, 3>& v = triangles[piece(i)];
+      const int r = piece(i);
+      const std::array<int, 3>& v = triangles[r];
       for (int j = 0; j < 3; ++j)
       {
-        halfEdges.push_back({ DirectedPointPair(v[j], v[(j + 1) % 3]), i });
+        const std::uint64_t key = DirectedPointPair(v[j], v[(j + 1) % 3]);
+        if (!crowded.Contains(key))
+        {
+          crowded.Set(key, r);
+        }
       }
     }
-    std::sort(halfEdges.begin(),
-      halfEdges.end(),
-      [](const HalfEdge& a, const HalfEdge& b)
-      { return a.Key != b.Key ? a.Key < b.Key : a.Piece < b.Piece; });
   }
   const auto holder = [&](int x, int y)
   {
-    if (count <= ScannedPieces)
+    if (isCrowded)
     {
-      for (int i = 0; i < count; ++i)
-      {
-        const std::array<int, 3>& v = triangles[piece(i)];
-        if ((v[0] == x && v[1] == y) || (v[1] == x && v[2] == y) || (v[2] == x && v[0] == y))
-        {
-          return piece(i);
-        }
-      }
-      return RefinedSurfaceView::AcrossNothing;
+      const int r = crowded.Find(DirectedPointPair(x, y));
+      return r >= 0 ? r : RefinedSurfaceView::AcrossNothing;
     }
-    const std::uint64_t key = DirectedPointPair(x, y);
-    const auto at = std::lower_bound(halfEdges.begin(),
-      halfEdges.end(),
-      key,
-      [](const HalfEdge& h, std::uint64_t k) { return h.Key < k; });
-    return at != halfEdges.end() && at->Key == key ? piece(at->Piece)
-                                                   : RefinedSurfaceView::AcrossNothing;
+    for (int i = 0; i < count; ++i)
+    {
+      const std::array<int, 3>& v = triangles[piece(i)];
+      if ((v[0] == x && v[1] == y) || (v[1] == x && v[2] == y) || (v[2] == x && v[0] == y))
+      {
+        return piece(i);
+      }
+    }
+    return RefinedSurfaceView::AcrossNothing;
   };
   for (int i = 0; i < count; ++i)
   {
