@@ -346,6 +346,15 @@ void SetPieceNeighbors(int count,
       }
     }
   }
+  // A few pieces: their corners copied next to each other for the scans.
+  std::array<std::array<int, 3>, RefinedSurfaceView::CrowdedSize> corners;
+  if (!isCrowded)
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      corners[i] = triangles[piece(i)];
+    }
+  }
   const auto holder = [&](int x, int y)
   {
     if (isCrowded)
@@ -355,7 +364,7 @@ void SetPieceNeighbors(int count,
     }
     for (int i = 0; i < count; ++i)
     {
-      const std::array<int, 3>& v = triangles[piece(i)];
+      const std::array<int, 3>& v = corners[i];
       if ((v[0] == x && v[1] == y) || (v[1] == x && v[2] == y) || (v[2] == x && v[0] == y))
       {
         return piece(i);
@@ -365,10 +374,11 @@ void SetPieceNeighbors(int count,
   };
   for (int i = 0; i < count; ++i)
   {
-    const std::array<int, 3>& v = triangles[piece(i)];
+    const std::array<int, 3>& v = isCrowded ? triangles[piece(i)] : corners[i];
+    const int bits[3] = { edgeBits(i, 0), edgeBits(i, 1), edgeBits(i, 2) };
     for (int j = 0; j < 3; ++j)
     {
-      const int common = edgeBits(i, j) & edgeBits(i, (j + 1) % 3);
+      const int common = bits[j] & bits[(j + 1) % 3];
       across[i][j] = common != 0
         ? RefinedSurfaceView::AcrossMeshEdge(common & 1 ? 0 : (common & 2 ? 1 : 2))
         : holder(v[(j + 1) % 3], v[j]);
