@@ -147,6 +147,36 @@ vtkSmartPointer<vtkPolyData> Leg(const Point& a, const Point& b)
   return curves;
 }
 
+/// Fresh updates of `filter` (its surface input already set), one per iteration, each on the
+/// next pair as a two-point curve: each update's real time is the iteration's, counters
+/// median_ms / max_ms. False (and stops) when an output has fewer than `minimumPoints` points.
+bool TimeLegUpdates(benchmark::State& state,
+  vtkPolyDataAlgorithm* filter,
+  const std::vector<std::pair<Point, Point>>& pairs,
+  vtkIdType minimumPoints)
+{
+  std::vector<double> times;
+  std::size_t i = 0;
+  for (auto _ : state)
+  {
+    const auto& pair = pairs[i++ % (pairs.size() - 1)];
+    filter->SetInputData(1, Leg(pair.first, pair.second));
+    const auto t0 = std::chrono::steady_clock::now();
+    filter->Update();
+    times.push_back(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    state.SetIterationTime(times.back() / 1000.0);
+    if (filter->GetOutput()->GetNumberOfPoints() < minimumPoints)
+    {
+      return false;
+    }
+  }
+  std::sort(times.begin(), times.end());
+  state.counters["median_ms"] = times.empty() ? 0.0 : times[times.size() / 2];
+  state.counters["max_ms"] = times.empty() ? 0.0 : times.back();
+  return true;
+}
+
 enum class LegKind
 {
   InTriangle,
@@ -169,26 +199,11 @@ void TraceLeg(benchmark::State& state, const std::string& name, LegKind kind)
   trace->Update();
   const auto& pairs =
     kind == LegKind::Far ? m.Far : (kind == LegKind::Short ? m.Short : m.InTriangle);
-  std::vector<double> times;
-  std::size_t i = 0;
-  for (auto _ : state)
+  if (!TimeLegUpdates(state, trace, pairs, 2))
   {
-    const auto& pair = pairs[i++ % (pairs.size() - 1)];
-    trace->SetInputData(1, Leg(pair.first, pair.second));
-    const auto t0 = std::chrono::steady_clock::now();
-    trace->Update();
-    times.push_back(
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-    state.SetIterationTime(times.back() / 1000.0);
-    if (trace->GetOutput()->GetNumberOfPoints() < 2)
-    {
-      state.SkipWithError("the leg was not traced");
-      return;
-    }
+    state.SkipWithError("the leg was not traced");
+    return;
   }
-  std::sort(times.begin(), times.end());
-  state.counters["median_ms"] = times.empty() ? 0.0 : times[times.size() / 2];
-  state.counters["max_ms"] = times.empty() ? 0.0 : times.back();
   if (vtkDataArray* graph = trace->GetOutput()->GetFieldData()->GetArray("GeodesicSiteGraph"))
   {
     state.counters["sites"] = graph->GetComponent(0, 0);
@@ -234,20 +249,7 @@ void PassCurvesYardstick(benchmark::State& state, const std::string& name)
   }
   vtkNew<PassCurvesFilter> pass;
   pass->SetInputData(0, m.Surface);
-  std::vector<double> times;
-  std::size_t i = 0;
-  for (auto _ : state)
-  {
-    const auto& pair = m.InTriangle[i++ % (m.InTriangle.size() - 1)];
-    pass->SetInputData(1, Leg(pair.first, pair.second));
-    const auto t0 = std::chrono::steady_clock::now();
-    pass->Update();
-    times.push_back(
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-    state.SetIterationTime(times.back() / 1000.0);
-  }
-  std::sort(times.begin(), times.end());
-  state.counters["median_ms"] = times.empty() ? 0.0 : times[times.size() / 2];
+  TimeLegUpdates(state, pass, m.InTriangle, 0);
 }
 
 // A fixed number of legs; BOOLSURF_BENCHMARK_ITERATIONS sets another (under callgrind).

@@ -172,7 +172,70 @@ void SetPieceNeighbors(int count,
   const std::vector<std::array<int, 3>>& triangles,
   const EdgeBits& edgeBits,
   std::array<int, 3>* across,
-  EdgeIndex& crowded);
+  EdgeIndex& crowded)
+{
+  // The piece holding the reversed edge: the first one in ForEachPiece order, as a scan would
+  // find. A few pieces (the usual crossed triangle) are scanned; many (a crowded triangle)
+  // are looked up in the index of their half-edges, filled in piece order, which the flood
+  // fill's lookups from neighbouring triangles use too.
+  const bool isCrowded = count > RefinedSurfaceView::CrowdedSize;
+  crowded = EdgeIndex();
+  if (isCrowded)
+  {
+    crowded.Reset(3 * static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i)
+    {
+      const int r = piece(i);
+      const std::array<int, 3>& v = triangles[r];
+      for (int j = 0; j < 3; ++j)
+      {
+        const std::uint64_t key = DirectedPointPair(v[j], v[(j + 1) % 3]);
+        if (!crowded.Contains(key))
+        {
+          crowded.Set(key, r);
+        }
+      }
+    }
+  }
+  // A few pieces: their corners copied next to each other for the scans.
+  std::array<std::array<int, 3>, RefinedSurfaceView::CrowdedSize> corners;
+  if (!isCrowded)
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      corners[i] = triangles[piece(i)];
+    }
+  }
+  const auto holder = [&](int x, int y)
+  {
+    if (isCrowded)
+    {
+      const int r = crowded.Find(DirectedPointPair(x, y));
+      return r >= 0 ? r : RefinedSurfaceView::AcrossNothing;
+    }
+    for (int i = 0; i < count; ++i)
+    {
+      const std::array<int, 3>& v = corners[i];
+      if ((v[0] == x && v[1] == y) || (v[1] == x && v[2] == y) || (v[2] == x && v[0] == y))
+      {
+        return piece(i);
+      }
+    }
+    return RefinedSurfaceView::AcrossNothing;
+  };
+  for (int i = 0; i < count; ++i)
+  {
+    const std::array<int, 3>& v = isCrowded ? triangles[piece(i)] : corners[i];
+    const int bits[3] = { edgeBits(i, 0), edgeBits(i, 1), edgeBits(i, 2) };
+    for (int j = 0; j < 3; ++j)
+    {
+      const int common = bits[j] & bits[(j + 1) % 3];
+      across[i][j] = common != 0
+        ? RefinedSurfaceView::AcrossMeshEdge(common & 1 ? 0 : (common & 2 ? 1 : 2))
+        : holder(v[(j + 1) % 3], v[j]);
+    }
+  }
+}
 
 /// What each cell is made of: clean tiles (all their triangles are in the cell, each unrefined:
 /// member t is refined triangle t) and loose refined triangles (those of tiles that
@@ -313,78 +376,6 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   std::vector<ArrangementPatch>& patches,
   std::vector<CellGraphArc>& arcs,
   PatchGraphBuffers* buffers = nullptr);
-
-//------------------------------------------------------------------------------
-template <class PieceId, class EdgeBits>
-void SetPieceNeighbors(int count,
-  const PieceId& piece,
-  const std::vector<std::array<int, 3>>& triangles,
-  const EdgeBits& edgeBits,
-  std::array<int, 3>* across,
-  EdgeIndex& crowded)
-{
-  // The piece holding the reversed edge: the first one in ForEachPiece order, as a scan would
-  // find. A few pieces (the usual crossed triangle) are scanned; many (a crowded triangle)
-  // are looked up in the index of their half-edges, filled in piece order, which the flood
-  // fill's lookups from neighbouring triangles use too.
-  const bool isCrowded = count > RefinedSurfaceView::CrowdedSize;
-  crowded = EdgeIndex();
-  if (isCrowded)
-  {
-    crowded.Reset(3 * static_cast<std::size_t>(count));
-    for (int i = 0; i < count; ++i)
-    {
-      const int r = piece(i);
-      const std::array<int, 3>& v = triangles[r];
-      for (int j = 0; j < 3; ++j)
-      {
-        const std::uint64_t key = DirectedPointPair(v[j], v[(j + 1) % 3]);
-        if (!crowded.Contains(key))
-        {
-          crowded.Set(key, r);
-        }
-      }
-    }
-  }
-  // A few pieces: their corners copied next to each other for the scans.
-  std::array<std::array<int, 3>, RefinedSurfaceView::CrowdedSize> corners;
-  if (!isCrowded)
-  {
-    for (int i = 0; i < count; ++i)
-    {
-      corners[i] = triangles[piece(i)];
-    }
-  }
-  const auto holder = [&](int x, int y)
-  {
-    if (isCrowded)
-    {
-      const int r = crowded.Find(DirectedPointPair(x, y));
-      return r >= 0 ? r : RefinedSurfaceView::AcrossNothing;
-    }
-    for (int i = 0; i < count; ++i)
-    {
-      const std::array<int, 3>& v = corners[i];
-      if ((v[0] == x && v[1] == y) || (v[1] == x && v[2] == y) || (v[2] == x && v[0] == y))
-      {
-        return piece(i);
-      }
-    }
-    return RefinedSurfaceView::AcrossNothing;
-  };
-  for (int i = 0; i < count; ++i)
-  {
-    const std::array<int, 3>& v = isCrowded ? triangles[piece(i)] : corners[i];
-    const int bits[3] = { edgeBits(i, 0), edgeBits(i, 1), edgeBits(i, 2) };
-    for (int j = 0; j < 3; ++j)
-    {
-      const int common = bits[j] & bits[(j + 1) % 3];
-      across[i][j] = common != 0
-        ? RefinedSurfaceView::AcrossMeshEdge(common & 1 ? 0 : (common & 2 ? 1 : 2))
-        : holder(v[(j + 1) % 3], v[j]);
-    }
-  }
-}
 
 } // namespace boolsurf
 
