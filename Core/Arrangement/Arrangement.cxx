@@ -67,7 +67,7 @@ struct Arrangement::WorkBuffers
   TriangleSegmentMap Map;
   std::vector<LocalArrangement> Local;
   std::vector<std::vector<int>> EdgeSegmentPoints;
-  std::vector<int> NewPointBase, EdgeOfEdgePoint, SlotOfSegment;
+  std::vector<int> NewPointBase, SlotOfSegment;
   std::vector<char> State, MeshEdgeHasBlocked;
   /// Triangles and mesh edges whose State / MeshEdgeHasBlocked entries the
   /// last call set: reset at the next call instead of clearing whole-mesh arrays.
@@ -211,8 +211,6 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   }
   work.MeshSerial = mesh.GetSerial();
   out.VerticesMeshSerial = mesh.GetSerial();
-  std::vector<int>& edgeOfEdgePoint = work.EdgeOfEdgePoint;
-  edgeOfEdgePoint.resize(edgePoints);
   ParallelFor(arena,
     edgePoints,
     [&](int i)
@@ -221,7 +219,6 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       c.Location = PointLocation::Edge;
       c.Id = map.EdgePoints[i].Edge;
       c.T = map.EdgePoints[i].T;
-      edgeOfEdgePoint[i] = c.Id;
       out.Positions[nv + i] = PositionOf(mesh, c);
       out.CurvePointOnMesh[i] = c;
       out.PointSurface[nv + i] = ToSurfacePoint(mesh, c);
@@ -372,21 +369,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         out.SourceTriangle[r] = t;
         blocked[r] = a.Blocked[i];
       }
-      // Local point places (LocalPoint::Where) as bits of the local edges they lie on.
       const auto edgeBits = [&](int i, int j)
-      {
-        const int where = a.Points[a.Alias[a.Triangles[i][j]]].Where;
-        if (where < 0)
-        {
-          return 0;
-        }
-        if (where < 3)
-        {
-          return 1 << where;
-        }
-        const int corner = where - 3; // edges corner and corner - 1 meet there
-        return (1 << corner) | (1 << ((corner + 2) % 3));
-      };
+      { return a.Points[a.Alias[a.Triangles[i][j]]].Sides(); };
       SetPieceNeighbors(static_cast<int>(a.Triangles.size()),
         piece,
         out.Triangles,
@@ -407,8 +391,6 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   view.SourceTriangle = &out.SourceTriangle;
   view.Refined = &state;
   view.Blocked = &blocked;
-  view.FirstInteriorPoint = nv + edgePoints;
-  view.EdgeOfEdgePoint = &edgeOfEdgePoint;
   view.BlockedMeshSubEdges = &blockedMeshSubEdges;
   view.MeshEdgeHasBlocked = &meshEdgeHasBlocked;
   view.CrowdedHalfEdges = &work.CrowdedHalfEdges;

@@ -56,10 +56,6 @@ struct RefinedSurfaceView
   /// Per refined triangle: bit j when its edge j (vertex j -> j+1) lies on a closed curve
   /// inside its source triangle.
   const std::vector<unsigned char>* Blocked = nullptr;
-  /// Refined point ids at or above this value are interior points (not on mesh edges).
-  int FirstInteriorPoint = 0;
-  /// Mesh edge of each edge point id (id - NumberOfMeshVertices).
-  const std::vector<int>* EdgeOfEdgePoint = nullptr;
   /// Sub-edges on mesh edges covered by closed curves (undirected refined point pairs), and a
   /// per-mesh-edge flag telling whether to look there at all.
   const std::unordered_set<std::uint64_t>* BlockedMeshSubEdges = nullptr;

@@ -50,6 +50,21 @@ struct LocalPoint
   /// Index in LocalArrangement::Crossings when the point is a crossing of two segments (P is
   /// then its rounded position), else -1.
   int Crossing = -1;
+  /// Bit k set when the point lies on the triangle's side k (from corner k to corner k + 1):
+  /// one bit on a side, two at a corner (sides k and k - 1 meet at corner k), none inside.
+  int Sides() const
+  {
+    if (this->Where < 0)
+    {
+      return 0;
+    }
+    if (this->Where < 3)
+    {
+      return 1 << this->Where;
+    }
+    const int corner = this->Where - 3;
+    return (1 << corner) | (1 << ((corner + 2) % 3));
+  }
 };
 
 /// Everything known about one refined triangle. Stage 2 fills the points and the chains;

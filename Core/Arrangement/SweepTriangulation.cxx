@@ -228,20 +228,7 @@ private:
   }
 
   /// Bit k set when point p lies on the triangle's side k (from corner k to corner k + 1).
-  int Sides(int p) const
-  {
-    const int where = this->Arr.Points[p].Where;
-    if (where < 0)
-    {
-      return 0;
-    }
-    if (where < 3)
-    {
-      return 1 << where;
-    }
-    const int corner = where - 3;
-    return (1 << corner) | (1 << ((corner + 2) % 3));
-  }
+  int Sides(int p) const { return this->Arr.Points[p].Sides(); }
 
   /// Whether the piece a-b runs along the triangle's boundary (both ends on one side).
   bool AlongBoundary(int a, int b) const { return (this->Sides(a) & this->Sides(b)) != 0; }
