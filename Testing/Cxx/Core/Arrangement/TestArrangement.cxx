@@ -334,6 +334,51 @@ TEST(Arrangement, ErrorsNameCurveAndPoint)
   EXPECT_EQ(arr.Triangles.size(), static_cast<size_t>(mesh.GetNumberOfTriangles()));
 }
 
+// The segment map is built per curve in parallel: among many curves, several of them bad, the
+// error must still name the first bad one in curve order, and a bad point (checked first) must
+// be named before a later step's failure (two points sharing no triangle) of an earlier curve.
+TEST(Arrangement, ErrorsNameTheFirstBadCurveInOrder)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(4, 4.0));
+  const auto vertex = [](int id)
+  {
+    CanonicalPoint p;
+    p.Location = PointLocation::Vertex;
+    p.Id = id;
+    return p;
+  };
+  TracedCurve good;
+  good.Closed = false;
+  good.Points = { vertex(0), vertex(1) }; // along one mesh edge
+  TracedCurve farApart = good;
+  farApart.Points = { vertex(0), vertex(24) }; // opposite corners: no common triangle
+  TracedCurve outOfRange = good;
+  outOfRange.Points = { vertex(0), vertex(1), vertex(999) };
+
+  std::vector<TracedCurve> curves(64, good);
+  curves[23] = farApart;
+  curves[41] = farApart;
+  curves[57] = farApart;
+  Arrangement arr;
+  std::string error;
+  EXPECT_FALSE(ComputeArrangement(mesh, curves, {}, arr, error));
+  EXPECT_NE(error.find("curve 23 "), std::string::npos) << error;
+  EXPECT_NE(error.find("share no triangle"), std::string::npos) << error;
+  EXPECT_EQ(arr.FailedCurve, 23);
+  EXPECT_EQ(arr.FailedPoint, 0);
+
+  curves[50] = outOfRange;
+  EXPECT_FALSE(ComputeArrangement(mesh, curves, {}, arr, error));
+  EXPECT_NE(error.find("curve 50 "), std::string::npos) << error;
+  EXPECT_NE(error.find("point 2"), std::string::npos) << error;
+  EXPECT_EQ(arr.FailedCurve, 50);
+  EXPECT_EQ(arr.FailedPoint, 2);
+
+  curves[23] = curves[41] = curves[57] = good;
+  curves[50] = good;
+  EXPECT_TRUE(ComputeArrangement(mesh, curves, {}, arr, error)) << error;
+}
+
 // An edit computes into the Arrangement of the previous one (its buffers, its per-triangle
 // states reset where the last curves set them, its mesh-vertex points kept): every result must
 // equal that of a fresh Arrangement, whatever came before.
