@@ -217,6 +217,7 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
     solver->SetMethod(static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod));
     cutSolvers = tracer.GetSolvers(this->NumberOfThreads);
   }
+  in.Output.Threads = this->NumberOfThreads;
   if (!boolsurf::WriteSelectedCells(*surface,
         in.Arrangement,
         in.Sources,

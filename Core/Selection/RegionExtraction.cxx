@@ -1,23 +1,122 @@
 #include "Selection/RegionExtraction.h"
 
+#include "Arrangement/EditBuffers.h"
+
 #include <algorithm>
 
 namespace boolsurf
 {
+namespace
+{
+template <class Body>
+void InArena(int threads, const Body& body)
+{
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute(body);
+}
+} // namespace
 
 //------------------------------------------------------------------------------
 void RegionExtractor::SelectedTriangles(const std::vector<char>& selected,
   const Arrangement& arrangement,
-  std::vector<int>& triangles)
+  std::vector<int>& triangles,
+  int threads)
 {
   triangles.clear();
   const int cells = std::min(static_cast<int>(selected.size()), arrangement.NumberOfCells);
+  const CellContents& in = arrangement.Contents;
+  const MeshTiles& tiles = *arrangement.Tiles;
+  // The region as runs of consecutive ids: a clean tile's members, or a cell's loose
+  // triangles; each run's place in the output, then the runs copied in parallel.
+  struct Run
+  {
+    const int* First;
+    int Count;
+    std::size_t At;
+  };
+  std::vector<Run> runs;
+  std::size_t total = 0;
+  const auto add = [&](const int* first, int count)
+  {
+    if (count > 0)
+    {
+      runs.push_back({ first, count, total });
+      total += count;
+    }
+  };
   for (int c = 0; c < cells; ++c)
   {
-    if (selected[c])
+    if (!selected[c])
     {
-      ForEachCellTriangle(arrangement, c, [&](int r) { triangles.push_back(r); });
+      continue;
     }
+    for (int i = in.TileOffset[c]; i < in.TileOffset[c + 1]; ++i)
+    {
+      const int k = in.Tiles[i]; // unrefined: refined index = mesh index
+      add(tiles.Members.data() + tiles.Offset[k], tiles.Offset[k + 1] - tiles.Offset[k]);
+    }
+    add(
+      in.Triangles.data() + in.TriangleOffset[c], in.TriangleOffset[c + 1] - in.TriangleOffset[c]);
+  }
+  triangles.resize(total);
+  const auto copy = [&](std::size_t first, std::size_t last)
+  {
+    for (std::size_t i = first; i < last; ++i)
+    {
+      std::copy_n(runs[i].First, runs[i].Count, triangles.data() + runs[i].At);
+    }
+  };
+  if (total < ParallelTriangles)
+  {
+    copy(0, runs.size());
+    return;
+  }
+  InArena(threads,
+    [&]
+    {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, runs.size(), 16),
+        [&](const tbb::blocked_range<std::size_t>& r) { copy(r.begin(), r.end()); });
+    });
+}
+
+//------------------------------------------------------------------------------
+void RegionExtractor::EnsurePointMap(int numberOfPoints)
+{
+  const std::size_t n = static_cast<std::size_t>(numberOfPoints);
+  // Room for an eighth more points: an edit adds or removes a few (EditBuffers.h).
+  if (this->PointMap.size() < n)
+  {
+    if (this->PointMap.capacity() < n)
+    {
+      this->PointMap.reserve(EditCapacity(n));
+    }
+    this->PointMap.resize(n, -1);
+  }
+}
+
+//------------------------------------------------------------------------------
+void RegionExtractor::RenumberCorners(int numberOfPoints, RegionMesh& out)
+{
+  this->EnsurePointMap(numberOfPoints);
+  std::vector<int>& points = out.Points;
+  points.clear();
+  int* map = this->PointMap.data();
+  // One thread, in corner order. Renumbering on several threads (each point's first corner as an
+  // atomic minimum, then numbered block by block) gave the same ids but read the per-point maps
+  // four times instead of once, and was slower on two threads (Docs/Benchmarks.md).
+  for (int& corner : out.Connectivity)
+  {
+    int& id = map[corner];
+    if (id < 0)
+    {
+      id = static_cast<int>(points.size());
+      points.push_back(corner);
+    }
+    corner = id;
+  }
+  for (int p : points)
+  {
+    map[p] = -1;
   }
 }
 

@@ -1,13 +1,18 @@
 // The selected region as a small mesh of its own (BoolSurf step 7): the triangles of the
 // selected cells and the points they use, renumbered. The cost is the size of the region:
-// the triangles come from each cell's contents (clean tiles and loose triangles),
-// and the point map is kept between calls and reset only where it was written.
+// the triangles come from each cell's contents (clean tiles and loose triangles), and the
+// per-point map is kept between calls and reset only where it was written. A large region's
+// triangles and corners are gathered on several threads (reading the refined triangles is the
+// cost); its points are numbered on one thread, in order of first use.
 #ifndef boolsurf_RegionExtraction_h
 #define boolsurf_RegionExtraction_h
 
 #include "Arrangement/Arrangement.h"
 
-#include <array>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <cstddef>
 #include <vector>
 
@@ -24,49 +29,65 @@ struct RegionMesh
 class RegionExtractor
 {
 public:
-  /// The refined triangles of the cells with selected[c] != 0 (from the cells' contents: the
-  /// cost is the selection's size).
+  /// Regions with fewer triangles than this are written on the calling thread (waking other
+  /// threads costs more than the work).
+  static constexpr std::size_t ParallelTriangles = 1 << 13;
+
+  /// The refined triangles of the cells with selected[c] != 0, cell after cell, each cell's
+  /// clean tiles then its loose triangles (from the cells' contents: the cost is the
+  /// selection's size). `threads`: at most that many threads (0: all).
   static void SelectedTriangles(const std::vector<char>& selected,
     const Arrangement& arrangement,
-    std::vector<int>& triangles);
+    std::vector<int>& triangles,
+    int threads = 0);
 
   /// Renumbers the points of `triangles` (corner(t, k) = point id of corner k of triangle t,
-  /// below numberOfPoints) into `out`.
+  /// below numberOfPoints) into `out`. `corner` is called from several threads on a large
+  /// region, so it must not write shared state.
   template <class CornerOf>
   void Extract(const std::vector<int>& triangles,
     int numberOfPoints,
     CornerOf corner,
-    RegionMesh& out)
+    RegionMesh& out,
+    int threads = 0)
   {
-    if (static_cast<int>(this->PointMap.size()) < numberOfPoints)
-    {
-      this->PointMap.resize(numberOfPoints, -1);
-    }
     out.Triangles = triangles;
-    out.Points.clear();
     out.Connectivity.resize(3 * triangles.size());
-    int* map = this->PointMap.data();
-    for (std::size_t i = 0; i < triangles.size(); ++i)
+    int* corners = out.Connectivity.data();
+    const auto gather = [&](std::size_t first, std::size_t last)
     {
-      for (int k = 0; k < 3; ++k)
+      for (std::size_t i = first; i < last; ++i)
       {
-        const int p = corner(triangles[i], k);
-        int& m = map[p];
-        if (m < 0)
+        for (int k = 0; k < 3; ++k)
         {
-          m = static_cast<int>(out.Points.size());
-          out.Points.push_back(p);
+          corners[3 * i + k] = corner(triangles[i], k);
         }
-        out.Connectivity[3 * i + k] = m;
       }
-    }
-    for (int p : out.Points)
+    };
+    if (triangles.size() < ParallelTriangles)
     {
-      map[p] = -1;
+      gather(0, triangles.size());
     }
+    else
+    {
+      tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+      arena.execute(
+        [&]
+        {
+          tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), 1024),
+            [&](const tbb::blocked_range<std::size_t>& r) { gather(r.begin(), r.end()); });
+        });
+    }
+    this->RenumberCorners(numberOfPoints, out);
   }
 
+  /// `out.Connectivity` holds the point ids (below numberOfPoints) of the corners of
+  /// out.Triangles; replaces them by indices into out.Points, the ids in order of first use.
+  void RenumberCorners(int numberOfPoints, RegionMesh& out);
+
 private:
+  void EnsurePointMap(int numberOfPoints);
+
   std::vector<int> PointMap; ///< -1 everywhere between calls
 };
 

@@ -9,6 +9,10 @@
 #include <vtkIdList.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 
 namespace boolsurf
@@ -71,32 +75,31 @@ void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPol
       triangles.push_back(static_cast<int>(t));
     }
   }
+  // The corners, read here on one thread (vtkIdList and the cell array's iteration state are
+  // not shared across threads), then renumbered.
   vtkCellArray* polys = input->GetPolys();
   const bool onlyPolys = input->GetNumberOfPolys() == nt;
   vtkNew<vtkIdList> pts;
-  int fetched = -1; // the triangle whose points `pts` holds (asked for corner by corner)
-  RegionExtractor extractor;
   RegionMesh mesh;
-  extractor.Extract(
-    triangles,
-    static_cast<int>(input->GetNumberOfPoints()),
-    [&](int t, int k)
+  mesh.Triangles = triangles;
+  mesh.Connectivity.resize(3 * triangles.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    if (onlyPolys)
     {
-      if (t != fetched)
-      {
-        if (onlyPolys)
-        {
-          polys->GetCellAtId(t, pts);
-        }
-        else
-        {
-          input->GetCellPoints(t, pts);
-        }
-        fetched = t;
-      }
-      return static_cast<int>(pts->GetId(k));
-    },
-    mesh);
+      polys->GetCellAtId(triangles[i], pts);
+    }
+    else
+    {
+      input->GetCellPoints(triangles[i], pts);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh.Connectivity[3 * i + k] = static_cast<int>(pts->GetId(k));
+    }
+  }
+  RegionExtractor extractor;
+  extractor.RenumberCorners(static_cast<int>(input->GetNumberOfPoints()), mesh);
 
   vtkSmartPointer<vtkIdList> pointIds = IdList(mesh.Points);
   vtkNew<vtkPoints> points;
@@ -114,7 +117,8 @@ void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPol
 void WriteRegion(const vtkSurfaceInput& surface,
   const Arrangement& arr,
   const RegionMesh& mesh,
-  vtkPolyData* region)
+  vtkPolyData* region,
+  int threads)
 {
   const vtkIdType np = static_cast<vtkIdType>(mesh.Points.size());
   const vtkIdType nt = static_cast<vtkIdType>(mesh.Triangles.size());
@@ -123,34 +127,56 @@ void WriteRegion(const vtkSurfaceInput& surface,
   coordinates->SetNumberOfTuples(np);
   double* xyz = coordinates->GetPointer(0);
   std::vector<SurfacePoint> pointSurface(np);
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    const int p = mesh.Points[i];
-    const Vec3& x = arr.Positions[p];
-    xyz[3 * i] = x.x;
-    xyz[3 * i + 1] = x.y;
-    xyz[3 * i + 2] = x.z;
-    pointSurface[i] = arr.PointSurface[p];
-  }
-  vtkNew<vtkPoints> points;
-  points->SetData(coordinates);
-  region->SetPoints(points);
-  SetTriangles(mesh.Connectivity.data(), static_cast<vtkIdType>(mesh.Triangles.size()), region);
-
-  std::vector<int> sourceTriangle(nt);
   vtkNew<vtkIntArray> cell;
   cell->SetName(boolsurf::names::ArrangementCell);
   cell->SetNumberOfTuples(nt);
   vtkNew<vtkIntArray> source; // int, as on the refined surface (mesh triangle ids are ints)
   source->SetName(boolsurf::names::SourceTriangle);
   source->SetNumberOfTuples(nt);
-  for (vtkIdType t = 0; t < nt; ++t)
+  std::vector<int> sourceTriangle(nt);
+  const TriangleCellLookup cellOf = arr.GetCellLookup();
+  int* cellValue = cell->GetPointer(0);
+  int* sourceValue = source->GetPointer(0);
+  // Points, then triangles, as ranges of one index: each range reads the arrangement's entries
+  // of its own points or triangles and writes its own slots.
+  const auto write = [&](vtkIdType first, vtkIdType last)
   {
-    const int r = mesh.Triangles[t];
-    sourceTriangle[t] = arr.SourceTriangle[r];
-    cell->SetValue(t, arr.CellOfTriangle(r));
-    source->SetValue(t, sourceTriangle[t]);
+    for (vtkIdType i = first; i < std::min(last, np); ++i)
+    {
+      const int p = mesh.Points[i];
+      const Vec3& x = arr.Positions[p];
+      xyz[3 * i] = x.x;
+      xyz[3 * i + 1] = x.y;
+      xyz[3 * i + 2] = x.z;
+      pointSurface[i] = arr.PointSurface[p];
+    }
+    for (vtkIdType t = std::max(first, np) - np; t < last - np; ++t)
+    {
+      const int r = mesh.Triangles[t];
+      sourceTriangle[t] = arr.SourceTriangle[r];
+      cellValue[t] = cellOf(r);
+      sourceValue[t] = sourceTriangle[t];
+    }
+  };
+  if (nt < static_cast<vtkIdType>(RegionExtractor::ParallelTriangles))
+  {
+    write(0, np + nt);
   }
+  else
+  {
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    arena.execute(
+      [&]
+      {
+        tbb::parallel_for(tbb::blocked_range<vtkIdType>(0, np + nt, 4096),
+          [&](const tbb::blocked_range<vtkIdType>& r) { write(r.begin(), r.end()); });
+      });
+  }
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  region->SetPoints(points);
+  SetTriangles(mesh.Connectivity.data(), static_cast<vtkIdType>(mesh.Triangles.size()), region);
+
   // The surface's own arrays first (they skip BoolSurf's names), then ours.
   TransferSurfaceAttributes(surface.Triangles, *surface.Mesh, pointSurface, sourceTriangle, region);
   region->GetCellData()->AddArray(cell);

@@ -33,11 +33,13 @@ void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPol
 
 /// The region `mesh` (refined triangles and points of `arrangement`) as polydata: cell data
 /// ArrangementCell, SourceTriangle and the surface's own cell arrays; point data
-/// TriangleId/Barycentric and the surface's own point arrays (interpolated).
+/// TriangleId/Barycentric and the surface's own point arrays (interpolated). A large region is
+/// written on at most `threads` threads (0: all).
 void WriteRegion(const vtkSurfaceInput& surface,
   const Arrangement& arrangement,
   const RegionMesh& mesh,
-  vtkPolyData* region);
+  vtkPolyData* region,
+  int threads = 0);
 
 /// Boundary polylines (closed loops repeat their first point id), cell data `Closed`, and point
 /// data TriangleId/Barycentric when `withSurfacePoints`. positionOf(p, double[3]) and

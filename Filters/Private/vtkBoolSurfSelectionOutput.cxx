@@ -36,14 +36,15 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
   const std::vector<GeodesicPathSolver*>& cutSolvers)
 {
   const Clock::time_point start = Clock::now();
-  RegionExtractor::SelectedTriangles(selected, arr, buffers.RegionTriangles);
+  RegionExtractor::SelectedTriangles(selected, arr, buffers.RegionTriangles, buffers.Threads);
   buffers.Extractor.Extract(
     buffers.RegionTriangles,
     static_cast<int>(arr.Positions.size()),
     [&](int t, int k) { return arr.Triangles[t][k]; },
-    buffers.Region);
+    buffers.Region,
+    buffers.Threads);
   const Clock::time_point extracted = Clock::now();
-  WriteRegion(surface, arr, buffers.Region, region);
+  WriteRegion(surface, arr, buffers.Region, region, buffers.Threads);
   const std::vector<BoundaryPolyline> loops = ExtractRegionBoundary(arr.Patches, selected);
   WriteBoundary(
     loops,

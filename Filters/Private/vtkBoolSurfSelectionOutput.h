@@ -29,6 +29,8 @@ struct SelectionOutputBuffers
   RegionExtractor Extractor;
   RegionMesh Region;
   std::vector<ControlSubCurve> SubCurves;
+  /// At most this many threads list, renumber and write a large region (0: all).
+  int Threads = 0;
 };
 
 /// Milliseconds spent in WriteSelectedCells.
