@@ -86,7 +86,7 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
 }
 
 //------------------------------------------------------------------------------
-void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles)
+void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles, int groupSize)
 {
   const int nt = mesh.GetNumberOfTriangles();
   tiles.MeshSerial = mesh.GetSerial();
@@ -123,7 +123,7 @@ void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles)
     std::sort(tiles.Members.begin() + start, tiles.Members.end());
     tiles.Offset.push_back(static_cast<int>(tiles.Members.size()));
   }
-  tiles.Adjacent.clear();
+  std::vector<std::pair<int, int>> adjacent; // tile pairs (a < b) sharing an edge, distinct
   for (int t = 0; t < nt; ++t)
   {
     for (int j = 0; j < 3; ++j)
@@ -136,13 +136,135 @@ void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles)
       const int a = tiles.TileOfTriangle[t], b = tiles.TileOfTriangle[n];
       if (a >= 0 && b >= 0 && a < b)
       {
-        tiles.Adjacent.emplace_back(a, b);
+        adjacent.emplace_back(a, b);
       }
     }
   }
-  std::sort(tiles.Adjacent.begin(), tiles.Adjacent.end());
-  tiles.Adjacent.erase(
-    std::unique(tiles.Adjacent.begin(), tiles.Adjacent.end()), tiles.Adjacent.end());
+  std::sort(adjacent.begin(), adjacent.end());
+  adjacent.erase(std::unique(adjacent.begin(), adjacent.end()), adjacent.end());
+  BuildTileGroups(adjacent, groupSize, tiles);
+}
+
+//------------------------------------------------------------------------------
+void BuildTileGroups(const std::vector<std::pair<int, int>>& adjacent,
+  int groupSize,
+  MeshTiles& tiles)
+{
+  const int count = tiles.GetNumberOfTiles();
+  // Tile adjacency as lists, for growing the groups like the tiles.
+  std::vector<int> degree(static_cast<size_t>(count) + 1, 0);
+  for (const std::pair<int, int>& ab : adjacent)
+  {
+    ++degree[ab.first + 1];
+    ++degree[ab.second + 1];
+  }
+  for (int k = 0; k < count; ++k)
+  {
+    degree[k + 1] += degree[k];
+  }
+  std::vector<int> neighbors(degree[count]);
+  {
+    std::vector<int> cursor(degree.begin(), degree.end() - 1);
+    for (const std::pair<int, int>& ab : adjacent)
+    {
+      neighbors[cursor[ab.first]++] = ab.second;
+      neighbors[cursor[ab.second]++] = ab.first;
+    }
+  }
+  tiles.GroupOf.assign(count, -1);
+  tiles.GroupOffset.assign(1, 0);
+  tiles.GroupTiles.clear();
+  tiles.GroupTiles.reserve(count);
+  for (int seed = 0; seed < count; ++seed)
+  {
+    if (tiles.GroupOf[seed] >= 0)
+    {
+      continue;
+    }
+    const int g = tiles.GetNumberOfGroups();
+    const size_t start = tiles.GroupTiles.size();
+    auto full = [&] { return static_cast<int>(tiles.GroupTiles.size() - start) >= groupSize; };
+    tiles.GroupOf[seed] = g;
+    tiles.GroupTiles.push_back(seed);
+    for (size_t head = start; head < tiles.GroupTiles.size() && !full(); ++head)
+    {
+      const int k = tiles.GroupTiles[head];
+      for (int i = degree[k]; i < degree[k + 1] && !full(); ++i)
+      {
+        const int n = neighbors[i];
+        if (tiles.GroupOf[n] < 0)
+        {
+          tiles.GroupOf[n] = g;
+          tiles.GroupTiles.push_back(n);
+        }
+      }
+    }
+    std::sort(tiles.GroupTiles.begin() + start, tiles.GroupTiles.end());
+    tiles.GroupOffset.push_back(static_cast<int>(tiles.GroupTiles.size()));
+  }
+  // Arcs inside each group (grouped by a counting sort, each group's in `adjacent` order) and
+  // between groups.
+  const int groups = tiles.GetNumberOfGroups();
+  tiles.GroupArcOffset.assign(static_cast<size_t>(groups) + 1, 0);
+  tiles.CrossGroupArcs.clear();
+  for (const std::pair<int, int>& ab : adjacent)
+  {
+    const int g = tiles.GroupOf[ab.first];
+    if (g == tiles.GroupOf[ab.second])
+    {
+      ++tiles.GroupArcOffset[g + 1];
+    }
+    else
+    {
+      tiles.CrossGroupArcs.push_back(ab);
+    }
+  }
+  for (int g = 0; g < groups; ++g)
+  {
+    tiles.GroupArcOffset[g + 1] += tiles.GroupArcOffset[g];
+  }
+  tiles.GroupArcs.resize(tiles.GroupArcOffset[groups]);
+  {
+    std::vector<int> cursor(tiles.GroupArcOffset.begin(), tiles.GroupArcOffset.end() - 1);
+    for (const std::pair<int, int>& ab : adjacent)
+    {
+      const int g = tiles.GroupOf[ab.first];
+      if (g == tiles.GroupOf[ab.second])
+      {
+        tiles.GroupArcs[cursor[g]++] = ab;
+      }
+    }
+  }
+  // Each group's components with every tile clean, rooted at their lowest tile (the lowest
+  // triangle too: tiles are ordered by lowest member), the state the flood fill of an edit
+  // starts from in groups it does not touch.
+  tiles.GroupRoot.resize(count);
+  for (int k = 0; k < count; ++k)
+  {
+    tiles.GroupRoot[k] = k;
+  }
+  int* root = tiles.GroupRoot.data();
+  const auto find = [&](int x)
+  {
+    while (root[x] != x)
+    {
+      root[x] = root[root[x]];
+      x = root[x];
+    }
+    return x;
+  };
+  for (const std::pair<int, int>& ab : tiles.GroupArcs)
+  {
+    const int a = find(ab.first), b = find(ab.second);
+    if (a != b)
+    {
+      root[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  for (int k = 0; k < count; ++k)
+  {
+    root[k] = find(k);
+  }
 }
 
 namespace
@@ -453,10 +575,6 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   const int nodes = static_cast<int>(key.size());
   std::vector<int>& parentOfNode = buffers.NodeParent;
   parentOfNode.resize(nodes);
-  for (int i = 0; i < nodes; ++i)
-  {
-    parentOfNode[i] = i;
-  }
   int* parent = parentOfNode.data();
   const int* keys = key.data();
   auto nodeOf = [&](int r)
@@ -465,8 +583,52 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
     return dirty[k] ? nodeOfTriangle[r] : k;
   };
 
-  // Arcs between clean tiles: precomputed with the tiles.
-  for (const std::pair<int, int>& ab : tiles.Adjacent)
+  // Arcs between clean tiles. Tile nodes start from their groups' precomputed components
+  // (roots are the lowest tiles, so the lowest keys: tiles are ordered by lowest member); a
+  // group with a dirty tile starts from single tiles instead and unites its own arcs between
+  // clean tiles. Then the arcs between groups: what an edit pays for the tile graph is those
+  // and the touched groups, not every arc of it.
+  std::copy(tiles.GroupRoot.begin(), tiles.GroupRoot.end(), parent);
+  for (int i = numberOfTiles; i < nodes; ++i)
+  {
+    parent[i] = i;
+  }
+  std::vector<char>& dirtyGroup = buffers.DirtyGroup;
+  if (static_cast<int>(dirtyGroup.size()) != tiles.GetNumberOfGroups())
+  {
+    dirtyGroup.assign(tiles.GetNumberOfGroups(), 0);
+  }
+  std::vector<int>& dirtyGroups = buffers.DirtyGroups;
+  dirtyGroups.clear();
+  for (int k : dirtyTiles)
+  {
+    const int g = tiles.GroupOf[k];
+    if (!dirtyGroup[g])
+    {
+      dirtyGroup[g] = 1;
+      dirtyGroups.push_back(g);
+    }
+  }
+  for (int g : dirtyGroups)
+  {
+    for (int i = tiles.GroupOffset[g]; i < tiles.GroupOffset[g + 1]; ++i)
+    {
+      parent[tiles.GroupTiles[i]] = tiles.GroupTiles[i];
+    }
+  }
+  for (int g : dirtyGroups)
+  {
+    for (int i = tiles.GroupArcOffset[g]; i < tiles.GroupArcOffset[g + 1]; ++i)
+    {
+      const std::pair<int, int>& ab = tiles.GroupArcs[i];
+      if (!dirty[ab.first] && !dirty[ab.second])
+      {
+        UniteByKey(parent, keys, ab.first, ab.second);
+      }
+    }
+    dirtyGroup[g] = 0;
+  }
+  for (const std::pair<int, int>& ab : tiles.CrossGroupArcs)
   {
     if (!dirty[ab.first] && !dirty[ab.second])
     {

@@ -148,14 +148,32 @@ struct MeshTiles
   std::vector<int> TileOfTriangle; ///< -1 for unusable triangles
   std::vector<int> Offset;         ///< members of tile k: Members[Offset[k] .. Offset[k + 1])
   std::vector<int> Members;        ///< ascending within each tile
-  std::vector<std::pair<int, int>> Adjacent; ///< tile pairs (a < b) sharing an edge, distinct
+  // Tiles in groups of about `groupSize` (grown breadth-first over tile adjacency from the
+  // lowest unassigned tile), so that an edit unites the arcs between clean tiles group by
+  // group: a group with no dirty tile starts from its precomputed components (GroupRoot) and
+  // only the arcs between groups are united, instead of every arc of the tile graph.
+  std::vector<int> GroupOffset;    ///< tiles of group g: GroupTiles[GroupOffset[g] .. [g + 1])
+  std::vector<int> GroupTiles;     ///< ascending within each group
+  std::vector<int> GroupOf;        ///< per tile
+  std::vector<int> GroupRoot;      ///< per tile: the lowest tile of its component in its group
+  std::vector<int> GroupArcOffset; ///< arcs inside group g: GroupArcs[GroupArcOffset[g] ..)
+  std::vector<std::pair<int, int>> GroupArcs; ///< tile pairs (a < b) of one group sharing an edge
+  std::vector<std::pair<int, int>> CrossGroupArcs; ///< the other tile pairs sharing an edge
   int GetNumberOfTiles() const
   {
     return this->Offset.empty() ? 0 : static_cast<int>(this->Offset.size()) - 1;
   }
+  int GetNumberOfGroups() const
+  {
+    return this->GroupOffset.empty() ? 0 : static_cast<int>(this->GroupOffset.size()) - 1;
+  }
 };
 
-void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles);
+void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles, int groupSize = 32);
+/// The groups of BuildMeshTiles from the tile pairs sharing an edge (a < b, distinct, sorted).
+void BuildTileGroups(const std::vector<std::pair<int, int>>& adjacent,
+  int groupSize,
+  MeshTiles& tiles);
 
 /// Fills RefinedSurfaceView::PieceAcross for the `count` pieces of one refined source triangle.
 /// `piece(i)`: the refined id of piece i (ForEachPiece order); `triangles`: the refined
@@ -287,6 +305,8 @@ struct TileFloodBuffers
   std::vector<char> Dirty;   ///< per tile; reset after each call
   std::vector<int> TileNode; ///< per tile: its cell (-1 when dirty)
   std::vector<int> DirtyTiles;
+  std::vector<char> DirtyGroup; ///< per tile group; reset after each call
+  std::vector<int> DirtyGroups;
   std::vector<int> NodeOfTriangle;     ///< per refined triangle of a dirty tile (others stale)
   std::vector<int> NodeKey;            ///< per node: its lowest refined triangle
   std::vector<int> NodeParent;         ///< union-find over nodes

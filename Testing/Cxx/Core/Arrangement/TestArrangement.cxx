@@ -624,36 +624,109 @@ TEST(Arrangement, MeshTilesAreConnectedAndOrdered)
   EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
 }
 
+// Tile groups partition the tiles into groups connected over tile adjacency; the arcs inside
+// groups and between them are exactly the tile pairs sharing an edge, and each group's
+// precomputed root of a tile is the lowest tile of its component inside the group.
+TEST(Arrangement, TileGroupsPartitionTheTileGraph)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(60, 1.0, 0.3, 8));
+  for (int groupSize : { 1, 4, 32 })
+  {
+    SCOPED_TRACE("group size " + std::to_string(groupSize));
+    MeshTiles tiles;
+    BuildMeshTiles(mesh, 16, tiles, groupSize);
+    const int count = tiles.GetNumberOfTiles();
+    ASSERT_GT(tiles.GetNumberOfGroups(), 3);
+    // The tile graph, from the triangles.
+    std::set<std::pair<int, int>> adjacent;
+    for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+      for (int j = 0; j < 3; ++j)
+      {
+        const int n = mesh.GetNeighbor(t, j);
+        const int a = tiles.TileOfTriangle[t], b = n >= 0 ? tiles.TileOfTriangle[n] : -1;
+        if (b >= 0 && a != b)
+          adjacent.emplace(std::min(a, b), std::max(a, b));
+      }
+    std::set<std::pair<int, int>> listed;
+    for (int g = 0; g < tiles.GetNumberOfGroups(); ++g)
+      for (int i = tiles.GroupArcOffset[g]; i < tiles.GroupArcOffset[g + 1]; ++i)
+      {
+        const std::pair<int, int>& ab = tiles.GroupArcs[i];
+        EXPECT_EQ(tiles.GroupOf[ab.first], g);
+        EXPECT_EQ(tiles.GroupOf[ab.second], g);
+        EXPECT_TRUE(listed.insert(ab).second);
+      }
+    for (const std::pair<int, int>& ab : tiles.CrossGroupArcs)
+    {
+      EXPECT_NE(tiles.GroupOf[ab.first], tiles.GroupOf[ab.second]);
+      EXPECT_TRUE(listed.insert(ab).second);
+    }
+    EXPECT_EQ(listed, adjacent);
+    // Groups: a partition, at most groupSize tiles, each connected; the root of a tile is the
+    // lowest tile a search inside its group reaches from it.
+    std::vector<int> seen(count, 0);
+    for (int g = 0; g < tiles.GetNumberOfGroups(); ++g)
+    {
+      const int begin = tiles.GroupOffset[g], end = tiles.GroupOffset[g + 1];
+      ASSERT_GT(end, begin);
+      ASSERT_LE(end - begin, groupSize);
+      for (int i = begin; i < end; ++i)
+      {
+        const int k = tiles.GroupTiles[i];
+        ++seen[k];
+        EXPECT_EQ(tiles.GroupOf[k], g);
+        std::vector<int> queue{ k };
+        std::set<int> reached{ k };
+        for (size_t head = 0; head < queue.size(); ++head)
+          for (const std::pair<int, int>& ab : adjacent)
+          {
+            const int other =
+              ab.first == queue[head] ? ab.second : (ab.second == queue[head] ? ab.first : -1);
+            if (other >= 0 && tiles.GroupOf[other] == g && reached.insert(other).second)
+              queue.push_back(other);
+          }
+        EXPECT_EQ(static_cast<int>(reached.size()), end - begin) << "group " << g;
+        EXPECT_EQ(tiles.GroupRoot[k], *reached.begin()) << "tile " << k;
+      }
+    }
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+  }
+}
+
 // The tiled flood fill (few tiles touched) and the whole-surface one (most touched) give the
 // same cells, numbering and cell contents, with one thread and two.
 TEST(Arrangement, TiledAndWholeSurfaceFloodFillsAgree)
 {
-  const TriangleMesh mesh = MeshOf(MakeFlatSquare(48, 1.0, 0.3, 6));
-  FlatPolygonTracer tracer(mesh);
-  for (int curvesCount : { 1, 12 }) // a few tiles touched, then most of them
+  // 72 tiles in 3 groups, then 700 tiles in 22 groups (most of them untouched by one curve).
+  for (int n : { 48, 150 })
   {
-    std::mt19937 rng(31 + curvesCount);
-    std::vector<TracedCurve> curves;
-    for (int c = 0; c < curvesCount; ++c)
-      curves.push_back(TraceOrDie(tracer, RandomPolygon(rng, 6, 0.05, 0.95), true, c, c));
-    SCOPED_TRACE(std::to_string(curvesCount) + " curves");
-    std::vector<Arrangement> results;
-    for (FloodFillMethod method : { FloodFillMethod::Tiles, FloodFillMethod::Triangles })
-      for (int threads : { 1, 2 })
-      {
-        ArrangementOptions options;
-        options.Threads = threads;
-        options.FloodFill = method;
-        Arrangement arr;
-        std::string error;
-        ASSERT_TRUE(ComputeArrangement(mesh, curves, options, arr, error)) << error;
-        ExpectCellsAreFloodFill(arr);
-        results.push_back(std::move(arr));
-      }
-    for (size_t i = 1; i < results.size(); ++i)
+    const TriangleMesh mesh = MeshOf(MakeFlatSquare(n, 1.0, 0.3, 6));
+    FlatPolygonTracer tracer(mesh);
+    for (int curvesCount : { 1, 12 }) // a few tiles touched, then most of them
     {
-      SCOPED_TRACE("variant " + std::to_string(i));
-      ExpectSameArrangement(results[i], results[0]);
+      std::mt19937 rng(31 + curvesCount);
+      std::vector<TracedCurve> curves;
+      for (int c = 0; c < curvesCount; ++c)
+        curves.push_back(TraceOrDie(tracer, RandomPolygon(rng, 6, 0.05, 0.95), true, c, c));
+      SCOPED_TRACE(std::to_string(curvesCount) + " curves");
+      std::vector<Arrangement> results;
+      for (FloodFillMethod method : { FloodFillMethod::Tiles, FloodFillMethod::Triangles })
+        for (int threads : { 1, 2 })
+        {
+          ArrangementOptions options;
+          options.Threads = threads;
+          options.FloodFill = method;
+          Arrangement arr;
+          std::string error;
+          ASSERT_TRUE(ComputeArrangement(mesh, curves, options, arr, error)) << error;
+          ExpectCellsAreFloodFill(arr);
+          results.push_back(std::move(arr));
+        }
+      for (size_t i = 1; i < results.size(); ++i)
+      {
+        SCOPED_TRACE("variant " + std::to_string(i));
+        ExpectSameArrangement(results[i], results[0]);
+      }
     }
   }
 }
