@@ -524,8 +524,8 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   // The dirty tiles' nodes, numbered tile after tile (first node of dirty tile d: firstNode[d]);
   // tiles are independent, so blocks of them run in parallel, here and for the arcs below.
   const int dirtyCount = static_cast<int>(dirtyTiles.size());
+  // Holds each dirty tile's piece count at d + 1 (FloodFillCellsByTiles counted them).
   std::vector<int>& firstNode = buffers.DirtyTileFirstNode;
-  firstNode.assign(static_cast<size_t>(dirtyCount) + 1, 0);
   // body(d, dirty tile, block) for each dirty tile d; block b holds d in
   // [b * DirtyTileGrain, (b + 1) * DirtyTileGrain) and runs on one thread.
   const int blocks = (dirtyCount + DirtyTileGrain - 1) / DirtyTileGrain;
@@ -542,16 +542,6 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
         }
       });
   };
-  forDirtyTiles(
-    [&](int d, int k, int)
-    {
-      int pieces = 0;
-      for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
-      {
-        pieces += surface.CountPieces(tiles.Members[i]);
-      }
-      firstNode[d + 1] = pieces;
-    });
   firstNode[0] = numberOfTiles;
   for (int d = 0; d < dirtyCount; ++d)
   {
@@ -744,17 +734,29 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   }
   // Each clean tile's cell (in TileNode), then the triangles of the dirty tiles: nothing is
   // written for the triangles of clean tiles (TriangleCellLookup reads their tile's cell).
+  // Every parent is now a root, so these are independent writes, in parallel; the dirty tiles'
+  // nodes keep their cells (NodeCell) for listing the cells' contents.
   ResizeForEdits(looseCell, count);
   int* cell = looseCell.data();
-  for (int i = numberOfTiles; i < nodes; ++i)
-  {
-    cell[keys[i]] = cellOfRoot[parent[i]];
-  }
+  std::vector<int>& nodeCell = buffers.NodeCell;
+  nodeCell.resize(nodes);
   std::vector<int>& tileCell = buffers.TileNode;
-  for (int k = 0; k < numberOfTiles; ++k)
-  {
-    tileCell[k] = dirty[k] ? -1 : cellOfRoot[parent[k]];
-  }
+  constexpr int grain = 1 << 14;
+  tbb::parallel_for(tbb::blocked_range<int>(0, nodes, grain),
+    [&](const tbb::blocked_range<int>& range)
+    {
+      for (int i = range.begin(); i != range.end(); ++i)
+      {
+        if (i < numberOfTiles)
+        {
+          tileCell[i] = dirty[i] ? -1 : cellOfRoot[parent[i]];
+        }
+        else
+        {
+          nodeCell[i] = cell[keys[i]] = cellOfRoot[parent[i]];
+        }
+      }
+    });
   return static_cast<int>(roots.size());
 }
 
@@ -780,12 +782,16 @@ void GroupByCell(int cells,
 
 //------------------------------------------------------------------------------
 // Each cell's clean tiles (in tile order) and loose triangles (those of dirty tiles, in tile
-// order). buffers.TileNode holds the cell of each clean tile, -1 for dirty ones.
+// order). buffers.TileNode holds the cell of each clean tile, -1 for dirty ones. `byNodes`:
+// the tiled flood fill ran, so the loose triangles are its nodes after the tiles' (NodeKey),
+// already in that order, with their cells in NodeCell: two passes over those arrays instead
+// of enumerating the dirty tiles' pieces twice.
 void ListCellContents(const MeshTiles& tiles,
   const RefinedSurfaceView& surface,
   const std::vector<int>& looseCell,
   int cells,
   const TileFloodBuffers& buffers,
+  bool byNodes,
   CellContents& contents)
 {
   const std::vector<int>& tileNode = buffers.TileNode;
@@ -803,6 +809,22 @@ void ListCellContents(const MeshTiles& tiles,
     },
     contents.TileOffset,
     contents.Tiles);
+  if (byNodes)
+  {
+    const int first = tiles.GetNumberOfTiles(), nodes = static_cast<int>(buffers.NodeKey.size());
+    GroupByCell(
+      cells,
+      [&](const auto& f)
+      {
+        for (int i = first; i < nodes; ++i)
+        {
+          f(buffers.NodeCell[i], buffers.NodeKey[i]);
+        }
+      },
+      contents.TriangleOffset,
+      contents.Triangles);
+    return;
+  }
   GroupByCell(
     cells,
     [&](const auto& f)
@@ -855,18 +877,34 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   // triangles, the tiled fill wins up to about a quarter of the triangles touched with two
   // threads (and beyond with one); a flat square with a third touched floods in 24 ms on two
   // threads this way against 36 ms tiled.
-  long long touched = 0;
-  for (int k : dirtyTiles)
-  {
-    for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
+  // Pieces per dirty tile (at d + 1, for FloodFillTiles's node numbering), in parallel.
+  const int dirtyCount = static_cast<int>(dirtyTiles.size());
+  std::vector<int>& pieces = buffers.DirtyTileFirstNode;
+  pieces.assign(static_cast<size_t>(dirtyCount) + 1, 0);
+  tbb::parallel_for(tbb::blocked_range<int>(0, dirtyCount, DirtyTileGrain),
+    [&](const tbb::blocked_range<int>& range)
     {
-      touched += surface.CountPieces(tiles.Members[i]);
-    }
+      for (int d = range.begin(); d != range.end(); ++d)
+      {
+        const int k = dirtyTiles[d];
+        int n = 0;
+        for (int i = tiles.Offset[k]; i < tiles.Offset[k + 1]; ++i)
+        {
+          n += surface.CountPieces(tiles.Members[i]);
+        }
+        pieces[d + 1] = n;
+      }
+    });
+  long long touched = 0;
+  for (int d = 0; d < dirtyCount; ++d)
+  {
+    touched += pieces[d + 1];
   }
   const int threads = tbb::this_task_arena::max_concurrency();
   std::vector<int>& tileNode = buffers.TileNode;
   tileNode.resize(numberOfTiles);
   int cellCount = 0;
+  bool tiled = false;
   if (buffers.Method == FloodFillMethod::Triangles ||
     (buffers.Method == FloodFillMethod::Automatic && touched * 2 * threads > count))
   {
@@ -879,11 +917,12 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   else
   {
     cellCount = FloodFillTiles(surface, tiles, looseCell, cellFirstTriangle, buffers);
+    tiled = true;
   }
   tileCell.assign(tileNode.begin(), tileNode.end());
   if (contents)
   {
-    ListCellContents(tiles, surface, looseCell, cellCount, buffers, *contents);
+    ListCellContents(tiles, surface, looseCell, cellCount, buffers, tiled, *contents);
   }
   for (int k : dirtyTiles)
   {

@@ -311,7 +311,8 @@ struct TileFloodBuffers
   std::vector<int> NodeKey;            ///< per node: its lowest refined triangle
   std::vector<int> NodeParent;         ///< union-find over nodes
   std::vector<int> CellOfRoot;         ///< per node
-  std::vector<int> DirtyTileFirstNode; ///< per dirty tile, and the end
+  std::vector<int> NodeCell;           ///< per node of a dirty tile: its cell
+  std::vector<int> DirtyTileFirstNode; ///< per dirty tile, and the end (first its piece counts)
   std::vector<std::vector<std::pair<int, int>>> TileCrossing; ///< arcs between tiles, per task
   // Whole-surface flood fill.
   std::unique_ptr<std::atomic<int>[]> AtomicParent;
