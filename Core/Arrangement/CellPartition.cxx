@@ -86,43 +86,79 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// Cuts the usable items 0 .. count - 1 into connected groups of at most `size`, each grown
+// breadth-first (forEachNeighbor(i, visit) calls visit(n) for each usable neighbour n of i)
+// from the lowest item not yet in a group. Seeds come in increasing order, so every item below
+// a seed is already in a group: a group's seed is its lowest member and groups are ordered by
+// lowest member. groupOf: per item (-1: unusable); members of group g:
+// members[offset[g] .. offset[g + 1]), ascending.
+template <class Usable, class ForEachNeighbor>
+void GrowGroups(int count,
+  int size,
+  const Usable& usable,
+  const ForEachNeighbor& forEachNeighbor,
+  std::vector<int>& groupOf,
+  std::vector<int>& offset,
+  std::vector<int>& members)
+{
+  groupOf.assign(count, -1);
+  offset.assign(1, 0);
+  members.clear();
+  members.reserve(count);
+  for (int seed = 0; seed < count; ++seed)
+  {
+    if (!usable(seed) || groupOf[seed] >= 0)
+    {
+      continue;
+    }
+    const int g = static_cast<int>(offset.size()) - 1;
+    const size_t start = members.size();
+    const auto full = [&] { return static_cast<int>(members.size() - start) >= size; };
+    groupOf[seed] = g;
+    members.push_back(seed);
+    for (size_t head = start; head < members.size() && !full(); ++head)
+    {
+      forEachNeighbor(members[head],
+        [&](int n)
+        {
+          if (!full() && groupOf[n] < 0)
+          {
+            groupOf[n] = g;
+            members.push_back(n);
+          }
+        });
+    }
+    std::sort(members.begin() + start, members.end());
+    offset.push_back(static_cast<int>(members.size()));
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
 void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles, int groupSize)
 {
   const int nt = mesh.GetNumberOfTriangles();
   tiles.MeshSerial = mesh.GetSerial();
-  tiles.TileOfTriangle.assign(nt, -1);
-  tiles.Offset.assign(1, 0);
-  tiles.Members.clear();
-  tiles.Members.reserve(nt);
-  // Seeds in increasing order: every triangle below a seed is already in a tile, so a tile's
-  // seed is its lowest member and tiles are ordered by lowest member.
-  for (int seed = 0; seed < nt; ++seed)
-  {
-    if (!mesh.IsUsable(seed) || tiles.TileOfTriangle[seed] >= 0)
+  GrowGroups(
+    nt,
+    size,
+    [&](int t) { return mesh.IsUsable(t); },
+    [&](int t, const auto& visit)
     {
-      continue;
-    }
-    const int k = tiles.GetNumberOfTiles();
-    const size_t start = tiles.Members.size();
-    auto full = [&] { return static_cast<int>(tiles.Members.size() - start) >= size; };
-    tiles.TileOfTriangle[seed] = k;
-    tiles.Members.push_back(seed);
-    for (size_t head = start; head < tiles.Members.size() && !full(); ++head)
-    {
-      const int t = tiles.Members[head];
-      for (int j = 0; j < 3 && !full(); ++j)
+      for (int j = 0; j < 3; ++j)
       {
         const int n = mesh.GetNeighbor(t, j);
-        if (n >= 0 && mesh.IsUsable(n) && tiles.TileOfTriangle[n] < 0)
+        if (n >= 0 && mesh.IsUsable(n))
         {
-          tiles.TileOfTriangle[n] = k;
-          tiles.Members.push_back(n);
+          visit(n);
         }
       }
-    }
-    std::sort(tiles.Members.begin() + start, tiles.Members.end());
-    tiles.Offset.push_back(static_cast<int>(tiles.Members.size()));
-  }
+    },
+    tiles.TileOfTriangle,
+    tiles.Offset,
+    tiles.Members);
   std::vector<std::pair<int, int>> adjacent; // tile pairs (a < b) sharing an edge, distinct
   for (int t = 0; t < nt; ++t)
   {
@@ -171,37 +207,20 @@ void BuildTileGroups(const std::vector<std::pair<int, int>>& adjacent,
       neighbors[cursor[ab.second]++] = ab.first;
     }
   }
-  tiles.GroupOf.assign(count, -1);
-  tiles.GroupOffset.assign(1, 0);
-  tiles.GroupTiles.clear();
-  tiles.GroupTiles.reserve(count);
-  for (int seed = 0; seed < count; ++seed)
-  {
-    if (tiles.GroupOf[seed] >= 0)
+  GrowGroups(
+    count,
+    groupSize,
+    [](int) { return true; },
+    [&](int k, const auto& visit)
     {
-      continue;
-    }
-    const int g = tiles.GetNumberOfGroups();
-    const size_t start = tiles.GroupTiles.size();
-    auto full = [&] { return static_cast<int>(tiles.GroupTiles.size() - start) >= groupSize; };
-    tiles.GroupOf[seed] = g;
-    tiles.GroupTiles.push_back(seed);
-    for (size_t head = start; head < tiles.GroupTiles.size() && !full(); ++head)
-    {
-      const int k = tiles.GroupTiles[head];
-      for (int i = degree[k]; i < degree[k + 1] && !full(); ++i)
+      for (int i = degree[k]; i < degree[k + 1]; ++i)
       {
-        const int n = neighbors[i];
-        if (tiles.GroupOf[n] < 0)
-        {
-          tiles.GroupOf[n] = g;
-          tiles.GroupTiles.push_back(n);
-        }
+        visit(neighbors[i]);
       }
-    }
-    std::sort(tiles.GroupTiles.begin() + start, tiles.GroupTiles.end());
-    tiles.GroupOffset.push_back(static_cast<int>(tiles.GroupTiles.size()));
-  }
+    },
+    tiles.GroupOf,
+    tiles.GroupOffset,
+    tiles.GroupTiles);
   // Arcs inside each group (grouped by a counting sort, each group's in `adjacent` order) and
   // between groups.
   const int groups = tiles.GetNumberOfGroups();
