@@ -5,6 +5,7 @@
 #include "Arrangement/SegmentIntersection.h"
 #include "Arrangement/TriangleRefinement.h"
 #include "Arrangement/TriangleSegments.h"
+#include "Mesh/ParallelRange.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -27,33 +28,6 @@ constexpr int TileSize = 64;
 double Milliseconds(Clock::time_point from, Clock::time_point to)
 {
   return std::chrono::duration<double, std::milli>(to - from).count();
-}
-
-// Runs body(i) for i in [0, n) on the arena's threads, in chunks of at least `grain` (the
-// default suits cheap bodies over the whole mesh). Every body writes only its own slot, so
-// results never depend on scheduling.
-template <class Body>
-void ParallelRange(tbb::task_arena& arena, int n, const Body& body, int grain = 4096)
-{
-  arena.execute(
-    [&]
-    {
-      tbb::parallel_for(tbb::blocked_range<int>(0, n, grain),
-        [&](const tbb::blocked_range<int>& range)
-        {
-          for (int i = range.begin(); i != range.end(); ++i)
-          {
-            body(i);
-          }
-        });
-    });
-}
-
-// ParallelRange for bodies that do real work per index (triangles, segments, blocks).
-template <class Body>
-void ParallelFor(tbb::task_arena& arena, int n, const Body& body)
-{
-  ParallelRange(arena, n, body, 1);
 }
 
 } // namespace

@@ -189,24 +189,35 @@ void UpdateTriangleCells(const Arrangement& arr,
   WrittenTriangleCells& written,
   int threads = 0);
 
-/// Calls f(r) for every refined triangle r of cell c (clean tiles first, then loose triangles).
+/// Calls f(first, count) for each run of refined triangle ids first[0 .. count) making up cell
+/// c: each clean tile's members (unrefined: refined index = mesh index), then the cell's loose
+/// triangles.
 template <class F>
-void ForEachCellTriangle(const Arrangement& arr, int c, F f)
+void ForEachCellRun(const Arrangement& arr, int c, F f)
 {
   const CellContents& in = arr.Contents;
   const MeshTiles& tiles = *arr.Tiles;
   for (int i = in.TileOffset[c]; i < in.TileOffset[c + 1]; ++i)
   {
     const int k = in.Tiles[i];
-    for (int m = tiles.Offset[k]; m < tiles.Offset[k + 1]; ++m)
+    f(tiles.Members.data() + tiles.Offset[k], tiles.Offset[k + 1] - tiles.Offset[k]);
+  }
+  f(in.Triangles.data() + in.TriangleOffset[c], in.TriangleOffset[c + 1] - in.TriangleOffset[c]);
+}
+
+/// Calls f(r) for every refined triangle r of cell c (clean tiles first, then loose triangles).
+template <class F>
+void ForEachCellTriangle(const Arrangement& arr, int c, F f)
+{
+  ForEachCellRun(arr,
+    c,
+    [&](const int* first, int count)
     {
-      f(tiles.Members[m]); // unrefined: refined index = mesh index
-    }
-  }
-  for (int i = in.TriangleOffset[c]; i < in.TriangleOffset[c + 1]; ++i)
-  {
-    f(in.Triangles[i]);
-  }
+      for (int i = 0; i < count; ++i)
+      {
+        f(first[i]);
+      }
+    });
 }
 
 /// Computes the arrangement into `out`, reusing its buffers (on failure its contents are

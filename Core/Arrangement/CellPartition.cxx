@@ -88,6 +88,17 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
 //------------------------------------------------------------------------------
 namespace
 {
+// Plain union-find whose roots are the lowest members (single-threaded use).
+inline int FindRoot(int* parent, int x)
+{
+  while (parent[x] != x)
+  {
+    parent[x] = parent[parent[x]];
+    x = parent[x];
+  }
+  return x;
+}
+
 // Cuts the usable items 0 .. count - 1 into connected groups of at most `size`, each grown
 // breadth-first (forEachNeighbor(i, visit) calls visit(n) for each usable neighbour n of i)
 // from the lowest item not yet in a group. Seeds come in increasing order, so every item below
@@ -263,18 +274,9 @@ void BuildTileGroups(const std::vector<std::pair<int, int>>& adjacent,
     tiles.GroupRoot[k] = k;
   }
   int* root = tiles.GroupRoot.data();
-  const auto find = [&](int x)
-  {
-    while (root[x] != x)
-    {
-      root[x] = root[root[x]];
-      x = root[x];
-    }
-    return x;
-  };
   for (const std::pair<int, int>& ab : tiles.GroupArcs)
   {
-    const int a = find(ab.first), b = find(ab.second);
+    const int a = FindRoot(root, ab.first), b = FindRoot(root, ab.second);
     if (a != b)
     {
       root[std::max(a, b)] = std::min(a, b);
@@ -282,7 +284,7 @@ void BuildTileGroups(const std::vector<std::pair<int, int>>& adjacent,
   }
   for (int k = 0; k < count; ++k)
   {
-    root[k] = find(k);
+    root[k] = FindRoot(root, k);
   }
 }
 
@@ -476,17 +478,6 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
       }
     });
   return blockRoots[blocks];
-}
-
-// Plain union-find whose roots are the lowest members (single-threaded use).
-inline int FindRoot(int* parent, int x)
-{
-  while (parent[x] != x)
-  {
-    parent[x] = parent[parent[x]];
-    x = parent[x];
-  }
-  return x;
 }
 
 //------------------------------------------------------------------------------

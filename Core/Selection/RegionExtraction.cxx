@@ -6,16 +6,6 @@
 
 namespace boolsurf
 {
-namespace
-{
-template <class Body>
-void InArena(int threads, const Body& body)
-{
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute(body);
-}
-} // namespace
-
 //------------------------------------------------------------------------------
 void RegionExtractor::SelectedTriangles(const std::vector<char>& selected,
   const Arrangement& arrangement,
@@ -24,8 +14,6 @@ void RegionExtractor::SelectedTriangles(const std::vector<char>& selected,
 {
   triangles.clear();
   const int cells = std::min(static_cast<int>(selected.size()), arrangement.NumberOfCells);
-  const CellContents& in = arrangement.Contents;
-  const MeshTiles& tiles = *arrangement.Tiles;
   // The region as runs of consecutive ids: a clean tile's members, or a cell's loose
   // triangles; each run's place in the output, then the runs copied in parallel.
   struct Run
@@ -46,37 +34,18 @@ void RegionExtractor::SelectedTriangles(const std::vector<char>& selected,
   };
   for (int c = 0; c < cells; ++c)
   {
-    if (!selected[c])
+    if (selected[c])
     {
-      continue;
+      ForEachCellRun(arrangement, c, add);
     }
-    for (int i = in.TileOffset[c]; i < in.TileOffset[c + 1]; ++i)
-    {
-      const int k = in.Tiles[i]; // unrefined: refined index = mesh index
-      add(tiles.Members.data() + tiles.Offset[k], tiles.Offset[k + 1] - tiles.Offset[k]);
-    }
-    add(
-      in.Triangles.data() + in.TriangleOffset[c], in.TriangleOffset[c + 1] - in.TriangleOffset[c]);
   }
   triangles.resize(total);
-  const auto copy = [&](std::size_t first, std::size_t last)
-  {
-    for (std::size_t i = first; i < last; ++i)
-    {
-      std::copy_n(runs[i].First, runs[i].Count, triangles.data() + runs[i].At);
-    }
-  };
-  if (total < ParallelTriangles)
-  {
-    copy(0, runs.size());
-    return;
-  }
-  InArena(threads,
-    [&]
-    {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, runs.size(), 16),
-        [&](const tbb::blocked_range<std::size_t>& r) { copy(r.begin(), r.end()); });
-    });
+  ParallelRange(
+    threads,
+    total >= ParallelTriangles,
+    static_cast<int>(runs.size()),
+    [&](int i) { std::copy_n(runs[i].First, runs[i].Count, triangles.data() + runs[i].At); },
+    16);
 }
 
 //------------------------------------------------------------------------------

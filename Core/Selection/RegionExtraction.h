@@ -8,10 +8,7 @@
 #define boolsurf_RegionExtraction_h
 
 #include "Arrangement/Arrangement.h"
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
+#include "Mesh/ParallelRange.h"
 
 #include <cstddef>
 #include <vector>
@@ -54,30 +51,18 @@ public:
     out.Triangles = triangles;
     out.Connectivity.resize(3 * triangles.size());
     int* corners = out.Connectivity.data();
-    const auto gather = [&](std::size_t first, std::size_t last)
-    {
-      for (std::size_t i = first; i < last; ++i)
+    ParallelRange(
+      threads,
+      triangles.size() >= ParallelTriangles,
+      static_cast<int>(triangles.size()),
+      [&](int i)
       {
         for (int k = 0; k < 3; ++k)
         {
           corners[3 * i + k] = corner(triangles[i], k);
         }
-      }
-    };
-    if (triangles.size() < ParallelTriangles)
-    {
-      gather(0, triangles.size());
-    }
-    else
-    {
-      tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-      arena.execute(
-        [&]
-        {
-          tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), 1024),
-            [&](const tbb::blocked_range<std::size_t>& r) { gather(r.begin(), r.end()); });
-        });
-    }
+      },
+      1024);
     this->RenumberCorners(numberOfPoints, out);
   }
 

@@ -5,13 +5,11 @@
 #include "vtkBoolSurfArrangementOutput.h"
 #include "vtkBoolSurfAttributeTransfer.h"
 
+#include "Mesh/ParallelRange.h"
+
 #include <vtkDataArray.h>
 #include <vtkIdList.h>
 #include <vtkUnsignedCharArray.h>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 
@@ -139,9 +137,9 @@ void WriteRegion(const vtkSurfaceInput& surface,
   int* sourceValue = source->GetPointer(0);
   // Points, then triangles, as ranges of one index: each range reads the arrangement's entries
   // of its own points or triangles and writes its own slots.
-  const auto write = [&](vtkIdType first, vtkIdType last)
+  const auto write = [&](int first, int last)
   {
-    for (vtkIdType i = first; i < std::min(last, np); ++i)
+    for (vtkIdType i = first; i < std::min<vtkIdType>(last, np); ++i)
     {
       const int p = mesh.Points[i];
       const Vec3& x = arr.Positions[p];
@@ -150,7 +148,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
       xyz[3 * i + 2] = x.z;
       pointSurface[i] = arr.PointSurface[p];
     }
-    for (vtkIdType t = std::max(first, np) - np; t < last - np; ++t)
+    for (vtkIdType t = std::max<vtkIdType>(first, np) - np; t < last - np; ++t)
     {
       const int r = mesh.Triangles[t];
       sourceTriangle[t] = arr.SourceTriangle[r];
@@ -158,20 +156,11 @@ void WriteRegion(const vtkSurfaceInput& surface,
       sourceValue[t] = sourceTriangle[t];
     }
   };
-  if (nt < static_cast<vtkIdType>(RegionExtractor::ParallelTriangles))
-  {
-    write(0, np + nt);
-  }
-  else
-  {
-    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-    arena.execute(
-      [&]
-      {
-        tbb::parallel_for(tbb::blocked_range<vtkIdType>(0, np + nt, 4096),
-          [&](const tbb::blocked_range<vtkIdType>& r) { write(r.begin(), r.end()); });
-      });
-  }
+  ParallelBlocks(threads,
+    nt >= static_cast<vtkIdType>(RegionExtractor::ParallelTriangles),
+    static_cast<int>(np + nt),
+    write,
+    4096);
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
   region->SetPoints(points);
