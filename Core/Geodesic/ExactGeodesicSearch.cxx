@@ -53,7 +53,7 @@ double CrossingOf(Vec2 s, Vec2 x)
 bool ComputeIsPseudoSource(const TriangleMesh& mesh, int v)
 {
   double angle = 0.0;
-  bool boundary = false;
+  int boundaryEdges = 0;
   for (int corner : mesh.GetVertexCorners(v))
   {
     const int t = corner / 3, k = corner % 3;
@@ -62,9 +62,17 @@ bool ComputeIsPseudoSource(const TriangleMesh& mesh, int v)
     const Vec3 a = mesh.GetPosition(tri[(k + 1) % 3]) - p;
     const Vec3 b = mesh.GetPosition(tri[(k + 2) % 3]) - p;
     angle += std::atan2(Length(Cross(a, b)), Dot(a, b));
-    boundary = boundary || mesh.GetNeighbor(t, k) < 0 || mesh.GetNeighbor(t, (k + 2) % 3) < 0;
+    boundaryEdges += (mesh.GetNeighbor(t, k) < 0) + (mesh.GetNeighbor(t, (k + 2) % 3) < 0);
   }
-  return boundary || angle > 2.0 * Pi + SaddleTolerance;
+  if (boundaryEdges == 0)
+  {
+    return angle > 2.0 * Pi + SaddleTolerance;
+  }
+  // A shortest path through a boundary vertex keeps at least pi of surface on one side (else
+  // a shortcut inside the angle exists), so a vertex with one fan and less than pi around it
+  // is never on one: only boundary corners of pi or more (and every vertex of several fans)
+  // restart windows. On scans with holes this removes about half the boundary sources.
+  return boundaryEdges > 2 || angle > Pi - SaddleTolerance;
 }
 
 } // namespace
@@ -149,12 +157,18 @@ void ExactGeodesicSearch::Prepare()
   this->VertexArrival.Reset(nv);
   this->Stamp.Reset(nv);
   this->EndMark.Reset(nt);
+  this->EdgeSlot.Reset(mesh.GetNumberOfEdges());
   this->Prepared = true;
 }
 
 //------------------------------------------------------------------------------
 void ExactGeodesicSearch::ResetMarks()
 {
+  for (const EdgeSampleSlot& slot : this->SamplePool)
+  {
+    this->EdgeSlot[slot.Edge] = 0;
+  }
+  this->SamplePool.clear();
   if (++this->CurrentStamp == 0)
   {
     this->Stamp.Zero();
@@ -214,6 +228,106 @@ bool ExactGeodesicSearch::Dominated(const Window& w,
 }
 
 //------------------------------------------------------------------------------
+// Filtering and trimming by the edge's own points. Besides its two vertices, each edge keeps
+// the shortest distance kept windows gave at EdgeSamples interior points q (real paths). Any
+// point p of the edge is then reached within D(q) + |p - q| (to q, then along the edge): a
+// cone of slope 1. The window's distance g(p) = sigma + |S p| has slope below 1 in magnitude,
+// so g minus a cone grows towards q and falls away from it: each cone beats the window on one
+// interval around q (or nowhere). Those intervals are cut off the window's ends, as long as
+// one covers an end; the window is useless when nothing is left. Cuts stop short of the
+// crossing by a margin: a window never loses a point it reaches first.
+bool ExactGeodesicSearch::TrimOnEdge(Window& w, const std::array<int, 2>& ev, double length) const
+{
+  constexpr int n = EdgeSamples;
+  const int slot = this->EdgeSlot[w.Edge];
+  const double* samples = slot > 0 ? this->SamplePool[slot - 1].D : nullptr;
+  double q[n + 2], d[n + 2];
+  q[0] = 0.0;
+  d[0] = this->Stamp[ev[0]] == this->CurrentStamp ? this->Distance[ev[0]] : Infinity;
+  for (int j = 1; j <= n; ++j)
+  {
+    q[j] = length * j / (n + 1);
+    d[j] = samples ? samples[j - 1] : Infinity;
+  }
+  q[n + 1] = length;
+  d[n + 1] = this->Stamp[ev[1]] == this->CurrentStamp ? this->Distance[ev[1]] : Infinity;
+  const double margin = 1e-9 * length;
+  const double s2 = w.Sx * w.Sx + w.Sy * w.Sy;
+  // The interval [lo, hi] where cone j is shorter than the window (lo > hi: nowhere).
+  double lo[n + 2], hi[n + 2];
+  int cones = 0;
+  for (int j = 0; j <= n + 1; ++j)
+  {
+    lo[j] = 1.0;
+    hi[j] = 0.0;
+    if (d[j] == Infinity || !(d[j] < w.Sigma + Hypot(q[j] - w.Sx, w.Sy)))
+    {
+      continue;
+    }
+    ++cones;
+    // Right of q: sigma + |S p| = d + p - q, i.e. |S p| = p + c.
+    const double c = d[j] - q[j] - w.Sigma;
+    const double right = c + w.Sx > 0.0 ? (s2 - c * c) / (2.0 * (c + w.Sx)) : Infinity;
+    // Left of q: |S p| = e - p.
+    const double e = d[j] + q[j] - w.Sigma;
+    const double left = e - w.Sx > 0.0 ? (e * e - s2) / (2.0 * (e - w.Sx)) : -Infinity;
+    lo[j] = std::min(q[j], left) + margin;
+    hi[j] = std::max(q[j], right) - margin;
+  }
+  if (cones == 0)
+  {
+    return true;
+  }
+  for (int round = 0; round < n + 2 && w.B0 < w.B1; ++round)
+  {
+    bool cut = false;
+    for (int j = 0; j <= n + 1; ++j)
+    {
+      if (lo[j] <= w.B0 && w.B0 < hi[j])
+      {
+        w.B0 = hi[j];
+        cut = true;
+      }
+      if (lo[j] < w.B1 && w.B1 <= hi[j])
+      {
+        w.B1 = lo[j];
+        cut = true;
+      }
+    }
+    if (!cut)
+    {
+      break;
+    }
+  }
+  return w.B0 < w.B1;
+}
+
+//------------------------------------------------------------------------------
+// A kept window lowers its edge's samples that it lights.
+void ExactGeodesicSearch::RecordOnEdge(const Window& w, double length)
+{
+  constexpr int n = EdgeSamples;
+  int& slot = this->EdgeSlot[w.Edge];
+  if (slot == 0)
+  {
+    EdgeSampleSlot fresh;
+    fresh.Edge = w.Edge;
+    std::fill(fresh.D, fresh.D + n, Infinity);
+    this->SamplePool.push_back(fresh);
+    slot = static_cast<int>(this->SamplePool.size());
+  }
+  double* samples = this->SamplePool[slot - 1].D;
+  for (int j = 1; j <= n; ++j)
+  {
+    const double q = length * j / (n + 1);
+    if (q >= w.B0 && q <= w.B1)
+    {
+      samples[j - 1] = std::min(samples[j - 1], w.Sigma + Hypot(q - w.Sx, w.Sy));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 // A lower bound of every path through the window to the target: min over the lit points p of
 // (the window's distance at p) + |p - target|. In the edge frame the source S lies below the
 // edge (Sy <= 0); the target, at height h from the edge's line and abscissa tx, can be turned
@@ -247,7 +361,7 @@ void ExactGeodesicSearch::AddWindow(const Window& w)
 //------------------------------------------------------------------------------
 // AddWindow with the edge's vertices, their positions and its length already at hand (a
 // window's children: Propagate has loaded them).
-void ExactGeodesicSearch::AddWindowOnEdge(const Window& w,
+void ExactGeodesicSearch::AddWindowOnEdge(Window w,
   const std::array<int, 2>& ev,
   const Vec3& p0,
   const Vec3& p1,
@@ -258,6 +372,13 @@ void ExactGeodesicSearch::AddWindowOnEdge(const Window& w,
     return;
   }
   if (this->Dominated(w, ev, length))
+  {
+    return;
+  }
+  // Searches that stay small keep the cheaper filter alone (see TrimAfterWindows).
+  const bool trim =
+    this->Pruning && !this->FieldMode && static_cast<int>(this->Windows.size()) >= TrimAfterWindows;
+  if (trim && !this->TrimOnEdge(w, ev, length))
   {
     return;
   }
@@ -287,6 +408,10 @@ void ExactGeodesicSearch::AddWindowOnEdge(const Window& w,
   if (bound >= this->Best)
   {
     return;
+  }
+  if (trim)
+  {
+    this->RecordOnEdge(w, length);
   }
   const int id = static_cast<int>(this->Windows.size());
   this->Windows.push_back(w);
@@ -511,6 +636,11 @@ void ExactGeodesicSearch::EmitFromVertex(int v)
   const TriangleMesh& mesh = this->Mesh;
   const double d = this->Distance[v];
   const Vec3 pv = mesh.GetPosition(v);
+  const bool source = this->PseudoSource->Is(v) || v == this->ForcedVertex ||
+    (this->FieldMode && this->ForcedMark[v] == this->CurrentStamp);
+  // A saddle reached along a known path restarts windows only into its shadow (ShadowFan).
+  const bool shadowOnly = this->Pruning && source && !this->FieldMode && v != this->ForcedVertex &&
+    this->ShadowFan(v, this->ShadowTriangles);
   for (int corner : mesh.GetVertexCorners(v))
   {
     const int t = corner / 3, k = corner % 3;
@@ -524,19 +654,229 @@ void ExactGeodesicSearch::EmitFromVertex(int v)
       const int u = tri[(k + j) % 3];
       this->Relax(u, d + ::boolsurf::Distance(pv, mesh.GetPosition(u)), FromVertex, v, t);
     }
-    if (!this->PseudoSource->Is(v) && v != this->ForcedVertex &&
-      !(this->FieldMode && this->ForcedMark[v] == this->CurrentStamp))
+    if (source && !shadowOnly)
     {
-      continue;
+      this->EmitAcrossOpposite(v, t, k, pv, d, 0.0, Pi);
     }
-    const int local = (k + 1) % 3; // the edge opposite v
-    const int next = mesh.GetNeighbor(t, local);
-    if (next < 0)
-    {
-      continue;
-    }
-    this->AddWindow(this->WholeEdgeWindow(mesh.GetEdgeId(t, local), next, t, pv, d, FromVertex, v));
   }
+  if (shadowOnly)
+  {
+    for (const ShadowCorner& corner : this->ShadowTriangles)
+    {
+      if (!this->Allowed || this->Allowed(corner.Corner / 3))
+      {
+        this->EmitAcrossOpposite(
+          v, corner.Corner / 3, corner.Corner % 3, pv, d, corner.From, corner.To);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// A window from source vertex v (corner k of triangle t) over the side of t opposite v, or the
+// part of it that the rays from v at angles [from, to] reach (measured in t from its side
+// towards the corner after v; 0 and the corner's angle: the whole side).
+void ExactGeodesicSearch::EmitAcrossOpposite(int v,
+  int t,
+  int k,
+  const Vec3& pv,
+  double d,
+  double from,
+  double to)
+{
+  const TriangleMesh& mesh = this->Mesh;
+  const int local = (k + 1) % 3; // the edge opposite v
+  const int next = mesh.GetNeighbor(t, local);
+  if (next < 0)
+  {
+    return;
+  }
+  const int edge = mesh.GetEdgeId(t, local);
+  Window w = this->WholeEdgeWindow(edge, next, t, pv, d, FromVertex, v);
+  if (from > 0.0 || to < Pi)
+  {
+    // In t's plane, v at the origin, the side towards a = tri[k + 1] along x, b above.
+    const Triangle& tri = mesh.GetTriangle(t);
+    const Vec3 ea = mesh.GetPosition(tri[(k + 1) % 3]) - pv;
+    const Vec3 eb = mesh.GetPosition(tri[(k + 2) % 3]) - pv;
+    const double la = Length(ea);
+    const Vec3 n = Cross(ea, eb);
+    const double nl = Length(n);
+    if (la > 0.0 && nl > 0.0)
+    {
+      const Vec2 a{ la, 0.0 };
+      const Vec2 b{ Dot(eb, ea) / la, nl / la };
+      // Fraction u along a -> b where the ray at angle phi meets the side.
+      const auto hit = [&](double phi)
+      {
+        const Vec2 r{ std::cos(phi), std::sin(phi) };
+        const double den = Cross(b - a, r);
+        return den != 0.0 ? std::min(1.0, std::max(0.0, -Cross(a, r) / den)) : 0.0;
+      };
+      constexpr double Margin = 1e-9;
+      const double u0 = std::max(0.0, hit(from) - Margin), u1 = std::min(1.0, hit(to) + Margin);
+      // The window's parameter runs from the edge's canonical vertex 0.
+      const bool fromA = mesh.GetEdgeVertices(edge)[0] == tri[(k + 1) % 3];
+      w.B0 = (fromA ? u0 : 1.0 - u1) * w.B1;
+      w.B1 = (fromA ? u1 : 1.0 - u0) * w.B1;
+    }
+  }
+  this->AddWindow(w);
+}
+
+//------------------------------------------------------------------------------
+// A shortest path bends at a saddle v only where it keeps at least pi of angle on both sides:
+// measured around v from the direction back along the path that reached it, a path leaving at
+// angle a is shortened inside the fan unless pi <= a <= (angle sum) - pi (Chen-Han). On a
+// noisy scan that shadow is a few hundredths of a radian wide, so instead of a window over
+// every side opposite v, only the triangles of v's fan that meet it get one. False (restart
+// everywhere) when v's triangles do not close into one fan or the way back is unknown; else
+// `corners` lists those triangles' corners at v.
+bool ExactGeodesicSearch::ShadowFan(int v, std::vector<ShadowCorner>& corners) const
+{
+  const TriangleMesh& mesh = this->Mesh;
+  corners.clear();
+  const int t0 = this->VertexArrival[v];
+  if (t0 < 0)
+  {
+    return false;
+  }
+  const int k0 = CornerOf(mesh.GetTriangle(t0), v);
+  double back = 0.0;
+  if (k0 < 0 || !this->BackAngle(v, t0, k0, back))
+  {
+    return false;
+  }
+  // The fan counter-clockwise from t0 (the triangles' own orientation), with each corner's
+  // angle at v.
+  thread_local std::vector<std::pair<int, double>> fan;
+  fan.clear();
+  const Vec3 pv = mesh.GetPosition(v);
+  const int limit = static_cast<int>(mesh.GetVertexCorners(v).size());
+  double total = 0.0;
+  int t = t0, k = k0;
+  for (;;)
+  {
+    const Triangle& tri = mesh.GetTriangle(t);
+    const Vec3 a = mesh.GetPosition(tri[(k + 1) % 3]) - pv;
+    const Vec3 b = mesh.GetPosition(tri[(k + 2) % 3]) - pv;
+    const double angle = std::atan2(Length(Cross(a, b)), Dot(a, b));
+    fan.push_back({ 3 * t + k, angle });
+    total += angle;
+    const int next = mesh.GetNeighbor(t, (k + 2) % 3); // across the side (v, tri[k + 2])
+    if (next < 0 || static_cast<int>(fan.size()) > limit)
+    {
+      return false;
+    }
+    if (next == t0)
+    {
+      break;
+    }
+    k = CornerOf(mesh.GetTriangle(next), v);
+    if (k < 0)
+    {
+      return false;
+    }
+    t = next;
+  }
+  if (static_cast<int>(fan.size()) != limit)
+  {
+    return false; // more than one fan
+  }
+  // The way back crosses t0 (a window through the side opposite v, a start inside t0, a
+  // parent vertex of t0): its angle lies within t0's corner.
+  constexpr double Margin = 1e-7;
+  if (back < -Margin || back > fan.front().second + Margin)
+  {
+    return false;
+  }
+  // Directions at angles [pi, total - pi] from the way back, widened by a margin for rounding
+  // (a wider shadow only costs windows).
+  const double from = Pi - Margin, to = total - Pi + Margin;
+  double start = -back;
+  for (const auto& [corner, angle] : fan)
+  {
+    if (start <= to && start + angle >= from)
+    {
+      corners.push_back({ corner, std::max(0.0, from - start), std::min(angle, to - start) });
+    }
+    start += angle;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The direction from v back along the path that set its distance, as an angle at v
+// counter-clockwise (in the orientation of triangle t0, v's arrival triangle and its corner k0)
+// from the side towards the corner after v. The path reached v inside t0 or through one of
+// its sides, so the angle is that of the unfolded plane of t0 and its neighbours.
+bool ExactGeodesicSearch::BackAngle(int v, int t0, int k0, double& angle) const
+{
+  const TriangleMesh& mesh = this->Mesh;
+  const Triangle& tri = mesh.GetTriangle(t0);
+  const int kind = this->VertexKind[v];
+  if (kind == FromWindow)
+  {
+    // In the window's frame: its edge from (0, 0) to (L, 0), t0 above, the source below.
+    const Window& w = this->Windows[this->VertexParent[v]];
+    if (w.Face != t0)
+    {
+      return false;
+    }
+    const std::array<int, 2> ev = mesh.GetEdgeVertices(w.Edge);
+    const int i0 = CornerOf(tri, ev[0]);
+    if (i0 < 0)
+    {
+      return false;
+    }
+    const bool forward = tri[(i0 + 1) % 3] == ev[1];
+    const int c = forward ? tri[(i0 + 2) % 3] : tri[(i0 + 1) % 3];
+    const Vec3 p0 = mesh.GetPosition(ev[0]), p1 = mesh.GetPosition(ev[1]);
+    const Vec3 pc = mesh.GetPosition(c);
+    const double length = ::boolsurf::Distance(p0, p1);
+    const double l0 = ::boolsurf::Distance(p0, pc), l1 = ::boolsurf::Distance(p1, pc);
+    const double cx = (length * length + l0 * l0 - l1 * l1) / (2.0 * length);
+    const Vec2 C{ cx, std::sqrt(std::max(0.0, l0 * l0 - cx * cx)) };
+    if (v != c)
+    {
+      // An end of the window's edge, reached by the window's end ray: that ray may graze the
+      // vertex from another triangle of its fan, whose angle this frame does not give.
+      return false;
+    }
+    const auto place = [&](int u) {
+      return u == ev[0] ? Vec2{ 0.0, 0.0 } : (u == ev[1] ? Vec2{ length, 0.0 } : C);
+    };
+    const Vec2 p = C;
+    const Vec2 a = place(tri[(k0 + 1) % 3]) - p, s = Vec2{ w.Sx, w.Sy } - p;
+    // (0,0), (L,0), C run counter-clockwise in the frame: t0's own order when forward.
+    angle = (forward ? 1.0 : -1.0) * std::atan2(Cross(a, s), Dot(a, s));
+    return true;
+  }
+  Vec3 from;
+  if (kind == FromVertex)
+  {
+    from = mesh.GetPosition(this->VertexParent[v]);
+  }
+  else if (kind == FromSource && this->HasStartPoint)
+  {
+    from = this->StartPoint;
+  }
+  else
+  {
+    return false;
+  }
+  const Vec3 pv = mesh.GetPosition(v);
+  const Vec3 e1 = mesh.GetPosition(tri[(k0 + 1) % 3]) - pv;
+  const Vec3 n = Cross(e1, mesh.GetPosition(tri[(k0 + 2) % 3]) - pv);
+  const double nl = Length(n);
+  if (!(nl > 0.0))
+  {
+    return false;
+  }
+  const Vec3 back = from - pv;
+  // atan2 of the components along e1 and along n x e1 (|n x e1| = |n| |e1|).
+  angle = std::atan2(Dot(back, Cross(n, e1)) / nl, Dot(back, e1));
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -561,6 +901,8 @@ void ExactGeodesicSearch::SeedFromPoint(const CanonicalPoint& start,
     return;
   }
   const Vec3 source = PositionOf(mesh, start);
+  this->StartPoint = source;
+  this->HasStartPoint = true;
   for (int t : startTriangles)
   {
     const Triangle& tri = mesh.GetTriangle(t);
@@ -652,6 +994,7 @@ double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
   this->UpperBound = 0.0;
   this->BestKind = this->BestId = -1;
   this->ForcedVertex = -1;
+  this->HasStartPoint = false;
   this->LastVertexCount = 0;
   this->BudgetExceeded = false;
   strip.clear();

@@ -58,6 +58,11 @@ public:
   /// caller): windows that cannot lead to one are never made, and it returns -1 when none is
   /// shorter. Applies to one search; 0 or below: no bound.
   void SetUpperBound(double length) { this->UpperBound = length; }
+  /// Path searches restart windows at a saddle only into its shadow and trim windows by
+  /// their edge's known distances (see ShadowFan, TrimOnEdge); off: the plain filter of Xin
+  /// and Wang, for comparison. Same lengths either way; on (default) makes 2 to 8 times fewer
+  /// windows on scans. The distance field mode always runs plain.
+  void SetPruning(bool on) { this->Pruning = on; }
   /// True when the last FindStrip stopped at the window budget.
   bool GetLastBudgetExceeded() const { return this->BudgetExceeded; }
 
@@ -130,8 +135,10 @@ private:
   void ResetMarks();
   void Relax(int v, double d, int kind, int parent, int arrival);
   bool Dominated(const Window& w, const std::array<int, 2>& ev, double length) const;
+  bool TrimOnEdge(Window& w, const std::array<int, 2>& ev, double length) const;
+  void RecordOnEdge(const Window& w, double length);
   void AddWindow(const Window& w);
-  void AddWindowOnEdge(const Window& w,
+  void AddWindowOnEdge(Window w,
     const std::array<int, 2>& ev,
     const Vec3& p0,
     const Vec3& p1,
@@ -146,6 +153,14 @@ private:
     int parent) const;
   void Propagate(int id);
   void EmitFromVertex(int v);
+  struct ShadowCorner
+  {
+    int Corner;      // 3 t + k: v is corner k of triangle t
+    double From, To; // angles of the shadow inside the corner, from its side towards k + 1
+  };
+  void EmitAcrossOpposite(int v, int t, int k, const Vec3& pv, double d, double from, double to);
+  bool ShadowFan(int v, std::vector<ShadowCorner>& corners) const;
+  bool BackAngle(int v, int t0, int k0, double& angle) const;
   bool Backtrack(std::vector<int>& strip);
   bool FanWalk(int v, int from, int to, std::vector<int>& out) const;
   void OfferTarget(double length, int kind, int id);
@@ -167,6 +182,7 @@ public:
 private:
   std::shared_ptr<const PseudoSources> PseudoSource; // shared by the searches on one mesh
   int MaximumWindows = 1 << 20;
+  bool Pruning = true;
   bool BudgetExceeded = false;
   double UpperBound = 0.0;
   // Queue order of windows. Without a known path, by the lower bound of any path through the
@@ -183,6 +199,22 @@ private:
   ZeroPageArray<int> VertexKind, VertexParent, VertexArrival;
   ZeroPageArray<std::uint32_t> Stamp;
   ZeroPageArray<std::uint32_t> EndMark; // == CurrentStamp: triangle holds the end point
+  // The shortest distance kept windows gave at EdgeSamples evenly spaced interior points of
+  // each edge they lit (see TrimOnEdge), in a pool the next search empties: EdgeSlot is the
+  // edge's entry plus one (0: none), so a search touches 4 bytes per edge it reaches.
+  static constexpr int EdgeSamples = 7;
+  // Trimming costs about a tenth more per window and saves little on a short leg (~600
+  // windows on igea_1m: 10 % fewer); past this many windows a search has met enough saddle
+  // sources for it to halve the windows (noisy scans: 27.7M to 13.7M windows, 13.8 to
+  // 7.8 s, over ten far pairs of face.ply).
+  static constexpr int TrimAfterWindows = 2048;
+  struct EdgeSampleSlot
+  {
+    int Edge;
+    double D[EdgeSamples];
+  };
+  ZeroPageArray<int> EdgeSlot;
+  std::vector<EdgeSampleSlot> SamplePool;
   std::uint32_t CurrentStamp = 0;
 
   std::vector<Window> Windows;
@@ -190,6 +222,9 @@ private:
   Vec3 Target;
   CanonicalPoint End;
   int ForcedVertex = -1; // the start, when it is a vertex: a source whatever its angle
+  Vec3 StartPoint;       // the start, when it is not a vertex (HasStartPoint)
+  bool HasStartPoint = false;
+  std::vector<ShadowCorner> ShadowTriangles; // EmitFromVertex's, kept for its memory
   double Best = 0;
   int BestKind = -1, BestId = -1;
   int LastVertexCount = 0;

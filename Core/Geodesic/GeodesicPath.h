@@ -177,6 +177,8 @@ public:
     this->Method = on ? GeodesicMethod::Exact : GeodesicMethod::LocallyShortest;
   }
   const ExactGeodesicSearch& GetExactSearch() const { return this->Exact; }
+  /// See ExactGeodesicSearch::SetPruning (tests compare both).
+  void SetExactPruning(bool on) { this->Exact.SetPruning(on); }
   /// Window budget of the Exact method's search (see ExactGeodesicSearch::SetMaximumWindows;
   /// default 2^20); past it the path falls back to the locally shortest one and
   /// GetLastStatistics().Exact is false.

@@ -366,15 +366,25 @@ TEST(GeodesicExactOracle, PrismNearOppositePairs)
 // have genus 1, fertility genus 4) on the shared scans issue 19 was reported on.
 TEST(GeodesicExactOracle, SharedScans)
 {
-  const char* files[] = {
+  // Other shared meshes for a longer check: BOOLSURF_ORACLE_MESHES=armadillo.ply,face.ply
+  std::vector<std::string> files = {
     "kitten.ply", "fertility.ply", "spot.ply", "torus.ply", "bob.ply", "camelhead.ply"
   };
+  if (const char* chosen = std::getenv("BOOLSURF_ORACLE_MESHES"))
+  {
+    files.clear();
+    std::stringstream list(chosen);
+    for (std::string file; std::getline(list, file, ',');)
+    {
+      files.push_back(file);
+    }
+  }
   int meshes = 0, farExact = 0, farCompared = 0;
   // Start points per mesh for the Bounded run, 30 pairs each (10 far); more for a longer
   // measurement (BOOLSURF_ORACLE_SOURCES=4 gave Docs/Decisions.md's 240 far pairs).
   const char* sourcesVariable = std::getenv("BOOLSURF_ORACLE_SOURCES");
   const int sources = sourcesVariable ? std::max(1, std::atoi(sourcesVariable)) : 2;
-  for (const char* file : files)
+  for (const std::string& file : files)
   {
     const std::string path = SharedMesh(file);
     MeshData data;
