@@ -40,6 +40,14 @@ double LineHit(Vec2 p, Vec2 q, Vec2 a, Vec2 c)
   return den != 0.0 ? Cross(q - p, p - a) / den : 0.0;
 }
 
+// The corner of a triangle opposite its side of length `length`, l0 and l1 from the side's
+// ends, in the side's frame: end 0 at the origin, end 1 on +x, the corner above.
+Vec2 OppositeCorner(double length, double l0, double l1)
+{
+  const double cx = (length * length + l0 * l0 - l1 * l1) / (2.0 * length);
+  return { cx, std::sqrt(std::max(0.0, l0 * l0 - cx * cx)) };
+}
+
 // Where the segment from source s (y <= 0) to point x (y > 0) crosses the line y = 0.
 double CrossingOf(Vec2 s, Vec2 x)
 {
@@ -449,8 +457,7 @@ void ExactGeodesicSearch::Propagate(int id)
     return; // vertex distances improved since the window was queued
   }
   const double l0 = ::boolsurf::Distance(p0, pc), l1 = ::boolsurf::Distance(p1, pc);
-  const double cx = (length * length + l0 * l0 - l1 * l1) / (2.0 * length);
-  const Vec2 C{ cx, std::sqrt(std::max(0.0, l0 * l0 - cx * cx)) };
+  const Vec2 C = OppositeCorner(length, l0, l1);
   const Vec2 E0{ 0.0, 0.0 }, E1{ length, 0.0 };
   const Vec2 S{ w.Sx, w.Sy };
 
@@ -830,24 +837,19 @@ bool ExactGeodesicSearch::BackAngle(int v, int t0, int k0, double& angle) const
       return false;
     }
     const bool forward = tri[(i0 + 1) % 3] == ev[1];
-    const int c = forward ? tri[(i0 + 2) % 3] : tri[(i0 + 1) % 3];
-    const Vec3 p0 = mesh.GetPosition(ev[0]), p1 = mesh.GetPosition(ev[1]);
-    const Vec3 pc = mesh.GetPosition(c);
-    const double length = ::boolsurf::Distance(p0, p1);
-    const double l0 = ::boolsurf::Distance(p0, pc), l1 = ::boolsurf::Distance(p1, pc);
-    const double cx = (length * length + l0 * l0 - l1 * l1) / (2.0 * length);
-    const Vec2 C{ cx, std::sqrt(std::max(0.0, l0 * l0 - cx * cx)) };
-    if (v != c)
+    if (v != (forward ? tri[(i0 + 2) % 3] : tri[(i0 + 1) % 3]))
     {
       // An end of the window's edge, reached by the window's end ray: that ray may graze the
       // vertex from another triangle of its fan, whose angle this frame does not give.
       return false;
     }
-    const auto place = [&](int u) {
-      return u == ev[0] ? Vec2{ 0.0, 0.0 } : (u == ev[1] ? Vec2{ length, 0.0 } : C);
-    };
-    const Vec2 p = C;
-    const Vec2 a = place(tri[(k0 + 1) % 3]) - p, s = Vec2{ w.Sx, w.Sy } - p;
+    const Vec3 p0 = mesh.GetPosition(ev[0]), p1 = mesh.GetPosition(ev[1]);
+    const Vec3 pc = mesh.GetPosition(v);
+    const double length = ::boolsurf::Distance(p0, p1);
+    const Vec2 C =
+      OppositeCorner(length, ::boolsurf::Distance(p0, pc), ::boolsurf::Distance(p1, pc));
+    const Vec2 next = tri[(k0 + 1) % 3] == ev[0] ? Vec2{ 0.0, 0.0 } : Vec2{ length, 0.0 };
+    const Vec2 a = next - C, s = Vec2{ w.Sx, w.Sy } - C;
     // (0,0), (L,0), C run counter-clockwise in the frame: t0's own order when forward.
     angle = (forward ? 1.0 : -1.0) * std::atan2(Cross(a, s), Dot(a, s));
     return true;

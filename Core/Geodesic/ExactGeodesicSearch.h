@@ -203,10 +203,9 @@ private:
   // each edge they lit (see TrimOnEdge), in a pool the next search empties: EdgeSlot is the
   // edge's entry plus one (0: none), so a search touches 4 bytes per edge it reaches.
   static constexpr int EdgeSamples = 7;
-  // Trimming costs about a tenth more per window and saves little on a short leg (~600
-  // windows on igea_1m: 10 % fewer); past this many windows a search has met enough saddle
-  // sources for it to halve the windows (noisy scans: 27.7M to 13.7M windows, 13.8 to
-  // 7.8 s, over ten far pairs of face.ply).
+  // Trimming costs about a fifth more per window and saves a tenth of a short leg's windows
+  // (igea_1m, legs of 2-4 % of the diagonal); past this many windows a search has met enough
+  // saddles for it to pay (with the shadow restarts: 2-3.4x fewer windows on scans).
   static constexpr int TrimAfterWindows = 2048;
   struct EdgeSampleSlot
   {
