@@ -203,10 +203,12 @@ private:
   // each edge they lit (see TrimOnEdge), in a pool the next search empties: EdgeSlot is the
   // edge's entry plus one (0: none), so a search touches 4 bytes per edge it reaches.
   static constexpr int EdgeSamples = 7;
-  // Trimming costs about a fifth more per window and saves a tenth of a short leg's windows
-  // (igea_1m, legs of 2-4 % of the diagonal); past this many windows a search has met enough
-  // saddles for it to pay (with the shadow restarts: 2-3.4x fewer windows on scans).
-  static constexpr int TrimAfterWindows = 2048;
+  // Trimming costs about a fifth more per window. It pays on scans full of saddles (a search
+  // 15-35 % faster on face, kitten and stanford-bunny) but not on the legs of up to 2^15
+  // windows that the Bounded method runs (the random SVG benchmark's p90 on igea_1m and
+  // 3torus_800k: 10 % slower than without it), so it starts once a search is past that: in
+  // the Exact method's searches and the refinements of routed legs.
+  static constexpr int TrimAfterWindows = 1 << 15;
   struct EdgeSampleSlot
   {
     int Edge;

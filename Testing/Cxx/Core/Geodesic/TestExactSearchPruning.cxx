@@ -124,9 +124,10 @@ TEST(ExactSearchPruning, SameDistancesOnSurfacesFullOfSaddles)
   const TriangleMesh field = ToMesh(NoisyField(40));
   const PruningRun noisy = ComparePruning(field, 60, 5);
   EXPECT_GE(noisy.Pairs, 50);
-  // The point of pruning: on this surface the plain filter makes far more windows (1.8 times
-  // as many when written).
-  EXPECT_LT(10 * noisy.PrunedWindows, 7 * noisy.PlainWindows)
+  // The point of pruning: on this surface the plain filter makes far more windows (1.4 times
+  // as many when written: these searches stay below the windows where trimming starts, so
+  // this is the shadow restarts alone).
+  EXPECT_LT(5 * noisy.PrunedWindows, 4 * noisy.PlainWindows)
     << noisy.PrunedWindows << " windows pruned, " << noisy.PlainWindows << " plain";
 
   const TriangleMesh torus = ToMesh(MakeTorus(1.0, 0.35, 48, 20));
