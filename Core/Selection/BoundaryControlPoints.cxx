@@ -476,11 +476,18 @@ TraceStatus BezierPieces::Get(GeodesicPathSolver& solver,
   {
     return TraceStatus::Success();
   }
-  for (const Piece& piece : it->second)
+  // The pieces tile the segment left to right (SplitAtCuts): a binary search, not a scan, since
+  // a segment that another curve runs along holds thousands of them and every patch asks.
+  const std::vector<Piece>& pieces = it->second;
+  auto piece = std::lower_bound(pieces.begin(),
+    pieces.end(),
+    a - SameParameter,
+    [](const Piece& p, double value) { return p.A < value; });
+  for (; piece != pieces.end() && piece->A <= a + SameParameter; ++piece)
   {
-    if (std::abs(piece.A - a) <= SameParameter && std::abs(piece.B - b) <= SameParameter)
+    if (std::abs(piece->B - b) <= SameParameter)
     {
-      out = piece.Controls;
+      out = piece->Controls;
       found = true;
       break;
     }

@@ -34,14 +34,35 @@ std::vector<BoundaryPolyline> ExtractRegionBoundary(const std::vector<PatchType>
     const int last = reversed ? patch.Points.front() : patch.Points.back();
     pieces.push_back({ p, reversed, first, last });
   }
-  // Pieces starting at each point. At a point where several boundary pieces meet (curves
-  // crossing at a corner of the region) the pieces are taken in input order, which still
-  // gives closed loops since every point has as many pieces in as out.
-  std::unordered_multimap<int, int> startingAt;
-  for (int i = 0; i < static_cast<int>(pieces.size()); ++i)
+  // Pieces starting at each point, the last one first. At a point where several boundary
+  // pieces meet (curves crossing at a corner of the region) they are taken in that order (the
+  // one the multimap used here before gave, so loops are grouped as they were), which still
+  // gives closed loops since every point has as many pieces in as out. Each point keeps a
+  // cursor past its used pieces: where hundreds of pieces meet at one point (drawings whose
+  // curves run along each other), looking each next one up from the start was quadratic.
+  std::unordered_map<int, int> groupOf; // point -> its group
+  std::vector<int> groupSize;
+  for (const Piece& piece : pieces)
   {
-    startingAt.emplace(pieces[i].First, i);
+    const auto [it, added] = groupOf.emplace(piece.First, static_cast<int>(groupSize.size()));
+    if (added)
+    {
+      groupSize.push_back(0);
+    }
+    ++groupSize[it->second];
   }
+  std::vector<int> groupStart(groupSize.size() + 1, 0);
+  for (std::size_t g = 0; g < groupSize.size(); ++g)
+  {
+    groupStart[g + 1] = groupStart[g] + groupSize[g];
+  }
+  std::vector<int> cursor(groupStart.begin(), groupStart.end() - 1);
+  std::vector<int> startingAt(pieces.size());
+  for (int i = static_cast<int>(pieces.size()) - 1; i >= 0; --i)
+  {
+    startingAt[cursor[groupOf[pieces[i].First]]++] = i;
+  }
+  cursor.assign(groupStart.begin(), groupStart.end() - 1);
   std::vector<char> used(pieces.size(), 0);
   std::vector<BoundaryPolyline> result;
   auto append = [&](BoundaryPolyline& line, const Piece& piece)
@@ -58,16 +79,23 @@ std::vector<BoundaryPolyline> ExtractRegionBoundary(const std::vector<PatchType>
   };
   auto takeNext = [&](int point)
   {
-    auto range = startingAt.equal_range(point);
-    for (auto it = range.first; it != range.second; ++it)
+    const auto found = groupOf.find(point);
+    if (found == groupOf.end())
     {
-      if (!used[it->second])
-      {
-        used[it->second] = 1;
-        return it->second;
-      }
+      return -1;
     }
-    return -1;
+    const int g = found->second;
+    while (cursor[g] < groupStart[g + 1] && used[startingAt[cursor[g]]])
+    {
+      ++cursor[g];
+    }
+    if (cursor[g] == groupStart[g + 1])
+    {
+      return -1;
+    }
+    const int next = startingAt[cursor[g]++];
+    used[next] = 1;
+    return next;
   };
   for (int i = 0; i < static_cast<int>(pieces.size()); ++i)
   {
