@@ -48,6 +48,15 @@ Vec2 OppositeCorner(double length, double l0, double l1)
   return { cx, std::sqrt(std::max(0.0, l0 * l0 - cx * cx)) };
 }
 
+// The angle of triangle `tri` at its corner k.
+double CornerAngle(const TriangleMesh& mesh, const Triangle& tri, int k)
+{
+  const Vec3 p = mesh.GetPosition(tri[k]);
+  const Vec3 a = mesh.GetPosition(tri[(k + 1) % 3]) - p;
+  const Vec3 b = mesh.GetPosition(tri[(k + 2) % 3]) - p;
+  return std::atan2(Length(Cross(a, b)), Dot(a, b));
+}
+
 // Where the segment from source s (y <= 0) to point x (y > 0) crosses the line y = 0.
 double CrossingOf(Vec2 s, Vec2 x)
 {
@@ -65,11 +74,7 @@ bool ComputeIsPseudoSource(const TriangleMesh& mesh, int v)
   for (int corner : mesh.GetVertexCorners(v))
   {
     const int t = corner / 3, k = corner % 3;
-    const Triangle& tri = mesh.GetTriangle(t);
-    const Vec3 p = mesh.GetPosition(tri[k]);
-    const Vec3 a = mesh.GetPosition(tri[(k + 1) % 3]) - p;
-    const Vec3 b = mesh.GetPosition(tri[(k + 2) % 3]) - p;
-    angle += std::atan2(Length(Cross(a, b)), Dot(a, b));
+    angle += CornerAngle(mesh, mesh.GetTriangle(t), k);
     boundaryEdges += (mesh.GetNeighbor(t, k) < 0) + (mesh.GetNeighbor(t, (k + 2) % 3) < 0);
   }
   if (boundaryEdges == 0)
@@ -236,6 +241,13 @@ bool ExactGeodesicSearch::Dominated(const Window& w,
 }
 
 //------------------------------------------------------------------------------
+// Where sample j (1 .. EdgeSamples) of an edge of length `length` lies on it.
+double ExactGeodesicSearch::EdgeSampleAt(double length, int j)
+{
+  return length * j / (EdgeSamples + 1);
+}
+
+//------------------------------------------------------------------------------
 // Filtering and trimming by the edge's own points. Besides its two vertices, each edge keeps
 // the shortest distance kept windows gave at EdgeSamples interior points q (real paths). Any
 // point p of the edge is then reached within D(q) + |p - q| (to q, then along the edge): a
@@ -254,7 +266,7 @@ bool ExactGeodesicSearch::TrimOnEdge(Window& w, const std::array<int, 2>& ev, do
   d[0] = this->Stamp[ev[0]] == this->CurrentStamp ? this->Distance[ev[0]] : Infinity;
   for (int j = 1; j <= n; ++j)
   {
-    q[j] = length * j / (n + 1);
+    q[j] = EdgeSampleAt(length, j);
     d[j] = samples ? samples[j - 1] : Infinity;
   }
   q[n + 1] = length;
@@ -327,7 +339,7 @@ void ExactGeodesicSearch::RecordOnEdge(const Window& w, double length)
   double* samples = this->SamplePool[slot - 1].D;
   for (int j = 1; j <= n; ++j)
   {
-    const double q = length * j / (n + 1);
+    const double q = EdgeSampleAt(length, j);
     if (q >= w.B0 && q <= w.B1)
     {
       samples[j - 1] = std::min(samples[j - 1], w.Sigma + Hypot(q - w.Sx, w.Sy));
@@ -758,16 +770,12 @@ bool ExactGeodesicSearch::ShadowFan(int v, std::vector<ShadowCorner>& corners) c
   // angle at v.
   thread_local std::vector<std::pair<int, double>> fan;
   fan.clear();
-  const Vec3 pv = mesh.GetPosition(v);
   const int limit = static_cast<int>(mesh.GetVertexCorners(v).size());
   double total = 0.0;
   int t = t0, k = k0;
   for (;;)
   {
-    const Triangle& tri = mesh.GetTriangle(t);
-    const Vec3 a = mesh.GetPosition(tri[(k + 1) % 3]) - pv;
-    const Vec3 b = mesh.GetPosition(tri[(k + 2) % 3]) - pv;
-    const double angle = std::atan2(Length(Cross(a, b)), Dot(a, b));
+    const double angle = CornerAngle(mesh, mesh.GetTriangle(t), k);
     fan.push_back({ 3 * t + k, angle });
     total += angle;
     const int next = mesh.GetNeighbor(t, (k + 2) % 3); // across the side (v, tri[k + 2])
