@@ -321,9 +321,9 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
     path.Points.push_back(p.Point);
   }
   path.Length = PolylineLength(mesh, path.Points);
-  if (this->Statistics.Routed && !this->SiteGraph->IsAllSpheres())
+  if (this->Statistics.Routed)
   {
-    this->TryAlternativeRoute(start, end, path);
+    this->TryAlternativeRoutes(start, end, path);
   }
   if (this->Statistics.Routed && mesh.GetNumberOfVertices() <= MaximumVerticesForEdgeCandidate)
   {
@@ -363,12 +363,18 @@ void GeodesicPathSolver::CopySettings(const GeodesicPathSolver& other)
 
 //------------------------------------------------------------------------------
 // The site graph's lengths are only as accurate as its cells are small (a route zigzags
-// through the sites), so where two homotopy classes are nearly as long it may pick the longer
-// one: a second route, kept away from the middle of the first (its sites there and their
-// neighbours), is straightened too when its length is within RouteTolerance of the first's,
-// and the shorter path is kept. Going round an obstacle on the other side (a bump, a handle,
-// the other way round a tube) is exactly such a second route.
-void GeodesicPathSolver::TryAlternativeRoute(const CanonicalPoint& start,
+// through the sites, 1-6 % longer than the geodesic it stands for), so where two local
+// geodesics are nearly as long it may pick the longer one: one on each side of a bump (a nose,
+// a cheek, a fold of a statue) or the other way round a handle or a hole. Other routes, each
+// kept out of a band round the middle of the first, are straightened too when their length is
+// within RouteTolerance of the first's, and the shortest path is kept. The bands: the first
+// route's sites there and their neighbours (the other side of a handle or a hole; on closed
+// genus-0 surfaces it runs beside the first and straightens to the same geodesic, so they skip
+// it), then, on meshes up to MaximumVerticesForEdgeCandidate vertices, every site within 3 %
+// and within 10 % of the first route's length of them (the other side of a bump: on face.ply a
+// far pair's shortest path ran 29 % of its length away from the first route's, which was
+// 0.99 % longer).
+void GeodesicPathSolver::TryAlternativeRoutes(const CanonicalPoint& start,
   const CanonicalPoint& end,
   GeodesicPath& path)
 {
@@ -380,25 +386,45 @@ void GeodesicPathSolver::TryAlternativeRoute(const CanonicalPoint& start,
   {
     return; // the route crosses too few cells to go round anything
   }
-  this->AvoidSites.assign(static_cast<std::size_t>(graph.GetNumberOfSites()), 0);
-  for (int i = margin; i < n - margin; ++i)
-  {
-    graph.FlagNeighbourhood(first[i], this->AvoidSites);
-  }
+  const std::vector<int> middle(first.begin() + margin, first.end() - margin);
   const double firstRoute = this->Statistics.RouteLength;
-  const GeodesicPathStatistics kept = this->Statistics;
-  const bool routed = this->StripFromSiteRoute(start, end);
-  const double secondRoute = this->Statistics.RouteLength;
-  this->AvoidSites.clear();
-  if (!routed || secondRoute > (1.0 + this->RouteTolerance) * firstRoute ||
-    !this->Straighten(start, end))
+  constexpr double bands[] = { 0.0, 0.02, 0.05, 0.12 };
+  for (const double band : bands)
   {
-    this->Statistics = kept;
-    return;
-  }
-  if (this->KeepShorterCandidate(kept, path))
-  {
-    this->Statistics.RouteLength = secondRoute;
+    // Each band costs a route and a straightening: on meshes above
+    // MaximumVerticesForEdgeCandidate vertices a far leg's straightening is most of its cost
+    // (on igea_1m the two wider bands took far legs from 26 to 63 ms), so they keep the first.
+    if ((band == 0.0 && graph.IsAllSpheres()) ||
+      (band > 0.0 && this->GetMesh().GetNumberOfVertices() > MaximumVerticesForEdgeCandidate))
+    {
+      continue;
+    }
+    this->AvoidSites.assign(static_cast<std::size_t>(graph.GetNumberOfSites()), 0);
+    if (band == 0.0)
+    {
+      for (const int s : middle)
+      {
+        graph.FlagNeighbourhood(s, this->AvoidSites);
+      }
+    }
+    else
+    {
+      graph.FlagWithin(middle, band * firstRoute, this->AvoidSites);
+    }
+    const GeodesicPathStatistics kept = this->Statistics;
+    const bool routed = this->StripFromSiteRoute(start, end);
+    const double route = this->Statistics.RouteLength;
+    this->AvoidSites.clear();
+    if (!routed || route > (1.0 + this->RouteTolerance) * firstRoute ||
+      !this->Straighten(start, end))
+    {
+      this->Statistics = kept;
+      continue;
+    }
+    if (this->KeepShorterCandidate(kept, path))
+    {
+      this->Statistics.RouteLength = route;
+    }
   }
 }
 

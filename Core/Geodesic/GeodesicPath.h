@@ -187,9 +187,9 @@ public:
   /// core); past it the leg is routed on the surface's site graph and straightened.
   void SetBoundedWindows(int n) { this->BoundedWindows = n; }
   int GetBoundedWindows() const { return this->BoundedWindows; }
-  /// Bounded method, on surfaces with handles or boundaries: a second route (another
-  /// homotopy class) is straightened too when its site-graph length is within this fraction
-  /// of the first route's (default 0.15; 0 disables).
+  /// Bounded method: other routes (round a handle or a hole, or the other side of a bump;
+  /// see TryAlternativeRoutes) are straightened too when their site-graph length is within
+  /// this fraction of the first route's (default 0.15; 0 disables).
   void SetRouteTolerance(double f) { this->RouteTolerance = f; }
   /// Bounded method, on meshes up to 100k vertices: refine a routed leg by the exact search
   /// inside a corridor of triangles around it (default on; off for comparisons).
@@ -233,8 +233,6 @@ private:
   bool ExceedsBoundedWindows(const CanonicalPoint& start, const CanonicalPoint& end);
   /// Funnel and vertex rerouting on Strip until locally shortest; the result in Points.
   bool Straighten(const CanonicalPoint& start, const CanonicalPoint& end);
-  /// Bounded method, after a routed leg: a second route round the middle of the first,
-  /// straightened too when nearly as long; `path` becomes the shorter.
   /// Bounded method, after a routed leg on a mesh of at most MaximumVerticesForEdgeCandidate
   /// vertices: the straightened shortest edge path too; `path` becomes the shorter.
   void TryEdgePathCandidate(const CanonicalPoint& start,
@@ -248,7 +246,9 @@ private:
     const CanonicalPoint& end,
     GeodesicPath& path,
     bool inCorridor);
-  void TryAlternativeRoute(const CanonicalPoint& start,
+  /// Bounded method, after a routed leg: other routes, kept out of bands round the middle of
+  /// the first, straightened too when nearly as long; `path` becomes the shortest.
+  void TryAlternativeRoutes(const CanonicalPoint& start,
     const CanonicalPoint& end,
     GeodesicPath& path);
   void TrimStrip(const CanonicalPoint& start, const CanonicalPoint& end);

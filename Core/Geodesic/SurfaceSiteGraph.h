@@ -15,7 +15,8 @@
 //   arc remembers that edge.
 //
 // A route is an A* search over the sites (straight-line bound to the end point, admissible
-// because every arc is a mesh-edge path) expanded into a mesh-edge path: start -> a corner of
+// because no step is shorter than the straight distance it spans) expanded into a mesh-edge
+// path: start -> a corner of
 // its triangle -> up its cell's parents to the site -> along each arc's edge path -> down to
 // a corner of the end's triangle -> end, with any loop cut out. The caller straightens it
 // (funnel and vertex rerouting), which keeps its homotopy class except across mesh vertices:
@@ -23,9 +24,19 @@
 //
 // Cost: building is a few passes over the mesh (about 16 bytes per vertex); a route costs
 // O(S log S) for S sites plus the length of the path, whatever the distance between its ends.
-// What it gives up: a coarse arc is longer than the geodesic it stands for (by up to about
-// the cells' diameter), so where two homotopy classes differ in length by less than that,
-// the route may pick the longer one (see GeodesicPathSolver: it then straightens both).
+// Steps: an arc to an adjacent cell's site (its straight length), or two arcs at once, a -> m
+// -> b, whose length is the two arcs unfolded into m's tangent plane (the angle between them
+// seen along the normal of m's cell), never below |ab|. Single arcs turn only where cells
+// meet, about every 60 degrees, and a route of them zigzags 5-7 % longer than the geodesic
+// (5.5 % on average, 8.5 % at worst between far sites of a jittered flat square); two-arc
+// steps turn every 30 degrees or less: 0.9 % on average, 2 % at worst. Unfolding at the middle
+// site keeps a step over a ridge as long as its two arcs, where the straight distance would
+// cut through the ridge.
+//
+// What it gives up: a route is still a little longer or shorter than the geodesic it stands
+// for, so where two homotopy classes (or the two sides of a bump) differ in length by less
+// than that, the route may pick the longer one (see GeodesicPathSolver: it then straightens
+// other routes too and keeps the shortest).
 #ifndef boolsurf_SurfaceSiteGraph_h
 #define boolsurf_SurfaceSiteGraph_h
 
@@ -63,6 +74,7 @@ public:
   {
     std::vector<double> Cost;
     std::vector<int> Parent, ArcIn, Source;
+    std::vector<int> SecondArc; // two-site step: the arc from the middle site, else -1
     std::vector<std::uint32_t> Stamp;
     std::uint32_t Generation = 0;
     std::vector<std::pair<double, int>> Heap;
@@ -70,14 +82,15 @@ public:
     std::vector<std::uint32_t> PositionStamp;
     std::uint32_t PositionGeneration = 0;
     std::vector<int> Sites; // the last route's sites, start to end
+    std::vector<int> Arcs;  // Arcs[i]: the arc into Sites[i] (-1 for the first)
   };
 
   /// A mesh-edge path from the point `from` (joined to the mesh vertices of `sources`) to the
   /// point `to` (joined to `targets`) along the cheapest route of sites; `vertices` receives
   /// its mesh vertices (consecutive ones share an edge, none repeats). Sites flagged in
   /// `avoid` (size GetNumberOfSites(), or empty) are not crossed, except the cells of the
-  /// ends. Returns the route's length (an upper bound of the geodesic distance), or a negative
-  /// value when the ends are not connected.
+  /// ends. Returns the route's length (an estimate of the geodesic distance, within a few percent),
+  /// or a negative value when the ends are not connected.
   double FindRoute(const std::vector<EdgeGraphSearch::Terminal>& sources,
     const Vec3& from,
     const std::vector<EdgeGraphSearch::Terminal>& targets,
@@ -85,6 +98,9 @@ public:
     const std::vector<char>& avoid,
     Scratch& scratch,
     std::vector<int>& vertices) const;
+
+  /// Sets flags[w] for every site w within `radius` of one of `seeds` along arcs.
+  void FlagWithin(const std::vector<int>& seeds, double radius, std::vector<char>& flags) const;
 
   /// Sets flags[s] and flags[w] for every site w adjacent to site s.
   void FlagNeighbourhood(int s, std::vector<char>& flags) const;
@@ -110,6 +126,10 @@ private:
   void ChooseSites(const std::vector<int>& offsets, const std::vector<int>& neighbors, int hops);
   void GrowCells(const std::vector<int>& offsets, const std::vector<int>& neighbors);
   void BuildArcs(const std::vector<int>& offsets, const std::vector<int>& neighbors);
+  void ComputeSiteNormals();
+  /// Length of the step a -> m -> b over two arcs: the two arcs unfolded into m's tangent plane
+  /// (the angle between them as seen along m's normal), never below the straight distance.
+  double TwoArcLength(int a, int m, int b) const;
   /// Appends v's parents up to its site (v first), or the reverse (site first) when `down`.
   void AppendChain(int v, bool down, std::vector<int>& out) const;
 
@@ -123,6 +143,7 @@ private:
   std::vector<int> ArcTarget;
   std::vector<double> ArcLength;
   std::vector<int> ArcFrom, ArcTo; // the mesh edge (u in the source cell, v in the target's)
+  std::vector<Vec3> SiteNormal;    // unit area-weighted normal of the site's cell (0: none)
   double BuildSeconds = 0;
   std::uint64_t BuildNumber = 0;
   bool AllSpheres = false;
