@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace boolsurf
 {
@@ -321,8 +322,10 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
     path.Points.push_back(p.Point);
   }
   path.Length = PolylineLength(mesh, path.Points);
+  this->Candidates.clear();
   if (this->Statistics.Routed)
   {
+    this->Candidates.emplace_back(path.Length, path.Points);
     this->TryAlternativeRoutes(start, end, path);
   }
   if (this->Statistics.Routed && mesh.GetNumberOfVertices() <= MaximumVerticesForEdgeCandidate)
@@ -529,32 +532,47 @@ void GeodesicPathSolver::RefineInCorridor(const CanonicalPoint& start,
       corridor.push_back(t);
     }
   };
-  for (const CanonicalPoint& p : path.Points)
+  // The triangles of `points`, grown by up to `rings` rings of vertex-adjacent triangles
+  // while the corridor holds fewer than `cap`; returns the rings added.
+  const auto grow = [&](const std::vector<CanonicalPoint>& points, int rings, int cap)
   {
-    TrianglesOf(mesh, p, this->CorridorSeeds);
-    for (const int t : this->CorridorSeeds)
+    std::size_t ringStart = corridor.size();
+    for (const CanonicalPoint& p : points)
     {
-      add(t);
-    }
-  }
-  std::size_t ringStart = 0;
-  for (int ring = 0;
-       ring < CorridorRings && static_cast<int>(corridor.size()) < MaximumCorridorTriangles;
-       ++ring)
-  {
-    const std::size_t ringEnd = corridor.size();
-    for (std::size_t i = ringStart; i < ringEnd; ++i)
-    {
-      const Triangle& tri = mesh.GetTriangle(corridor[i]);
-      for (int k = 0; k < 3; ++k)
+      TrianglesOf(mesh, p, this->CorridorSeeds);
+      for (const int t : this->CorridorSeeds)
       {
-        for (const int corner : mesh.GetVertexCorners(tri[k]))
-        {
-          add(corner / 3);
-        }
+        add(t);
       }
     }
-    ringStart = ringEnd;
+    int ring = 0;
+    for (; ring < rings && static_cast<int>(corridor.size()) < cap; ++ring)
+    {
+      const std::size_t ringEnd = corridor.size();
+      for (std::size_t i = ringStart; i < ringEnd; ++i)
+      {
+        const Triangle& tri = mesh.GetTriangle(corridor[i]);
+        for (int k = 0; k < 3; ++k)
+        {
+          for (const int corner : mesh.GetVertexCorners(tri[k]))
+          {
+            add(corner / 3);
+          }
+        }
+      }
+      ringStart = ringEnd;
+    }
+    return ring;
+  };
+  const int rings = grow(path.Points, CorridorRings, MaximumCorridorTriangles);
+  // The other candidates nearly as short (another side of a bump the corridor would not
+  // reach), with as many rings.
+  for (const auto& candidate : this->Candidates)
+  {
+    if (candidate.first <= (1.0 + CorridorCandidateSlack) * path.Length)
+    {
+      grow(candidate.second, rings, std::numeric_limits<int>::max());
+    }
   }
   this->SearchShorterPath(start, end, path, true);
 }
@@ -616,6 +634,7 @@ bool GeodesicPathSolver::KeepShorterCandidate(const GeodesicPathStatistics& kept
     this->Alternative.push_back(p.Point);
   }
   const double length = PolylineLength(this->GetMesh(), this->Alternative);
+  this->Candidates.emplace_back(length, this->Alternative);
   const int rounds = this->Statistics.StraighteningRounds;
   const int strip = static_cast<int>(this->Strip.size());
   this->Statistics = kept;

@@ -44,6 +44,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace boolsurf
@@ -290,6 +291,8 @@ private:
   static constexpr int CorridorRings = 5;
   static constexpr int MaximumCorridorTriangles = 3000;
   static constexpr int CorridorWindows = 1 << 18;
+  /// Straightened candidates within this fraction of the kept path's length join its corridor.
+  static constexpr double CorridorCandidateSlack = 0.01;
   /// Meshes up to this many triangles (a corridor would hold a quarter of them or more) are
   /// searched whole first, which certifies the leg when it fits the window budget.
   static constexpr int WholeMeshRefinementTriangles = 4 * MaximumCorridorTriangles;
@@ -306,6 +309,8 @@ private:
   bool CorridorRefinement = true;
   double MeanEdgeLength = -1; // computed on first use
   std::vector<CanonicalPoint> Alternative;
+  /// A routed leg's straightened candidates (length, points), for the corridor.
+  std::vector<std::pair<double, std::vector<CanonicalPoint>>> Candidates;
   bool UseEdgePathStrip = true;
   GeodesicMethod Method = GeodesicMethod::Bounded;
   std::vector<EdgeGraphSearch::Terminal> Sources, Targets;
