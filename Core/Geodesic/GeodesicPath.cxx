@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace boolsurf
 {
@@ -503,22 +502,75 @@ void GeodesicPathSolver::TryEdgePathCandidate(const CanonicalPoint& start,
 // length, rarely equal to it). The window search restricted to a corridor of triangles around
 // the path (CorridorRings rings of vertex-adjacent triangles, at most about
 // MaximumCorridorTriangles) is exact inside the corridor: it finds the shortest of them,
-// within the Bounded window budget, and its path is kept when shorter. Paths outside the
-// corridor are not seen (the other way round a handle is the second route's job), so the
-// leg is not marked exact.
+// within CorridorWindows windows, and its path is kept when shorter; the other candidates'
+// corridors follow (below). Paths outside the corridors are not seen, so the leg is not
+// marked exact.
 void GeodesicPathSolver::RefineInCorridor(const CanonicalPoint& start,
   const CanonicalPoint& end,
   GeodesicPath& path)
 {
   const TriangleMesh& mesh = this->GetMesh();
   const int nt = mesh.GetNumberOfTriangles();
-  if (nt <= WholeMeshRefinementTriangles && this->SearchShorterPath(start, end, path, false))
+  if (nt <= WholeMeshRefinementTriangles &&
+    this->SearchShorterPath(start, end, path, false, CorridorWindows))
   {
     return;
   }
+  // The kept path's corridor first; then, with what its search left of the budget, the
+  // corridor of each other straightened candidate within CorridorCandidateSlack of the kept
+  // length that leaves the corridors searched so far (the other side of a small bump: on
+  // armadillo five far pairs from one start point were 0.05 % long, their shortest paths 4 %
+  // of their length beside the kept path, outside its corridor, but on a band route's).
+  const int before = this->Statistics.CorridorWindows;
+  this->BuildCorridor(path.Points);
+  const bool complete = this->SearchShorterPath(start, end, path, true, CorridorWindows);
+  if (!complete)
+  {
+    return;
+  }
+  std::vector<std::uint32_t>& searched = this->SearchedStamp;
+  if (searched.size() != static_cast<std::size_t>(nt))
+  {
+    searched.assign(static_cast<std::size_t>(nt), 0);
+  }
+  for (const int t : this->Corridor)
+  {
+    searched[t] = this->CorridorGeneration;
+  }
+  const std::uint32_t first = this->CorridorGeneration;
+  for (const auto& candidate : this->Candidates)
+  {
+    const int left = CorridorWindows - (this->Statistics.CorridorWindows - before);
+    if (left < MinimumCandidateCorridorWindows)
+    {
+      break;
+    }
+    if (candidate.first > (1.0 + CorridorCandidateSlack) * path.Length ||
+      this->InsideSearched(candidate.second, first))
+    {
+      continue;
+    }
+    this->BuildCorridor(candidate.second);
+    for (const int t : this->Corridor)
+    {
+      searched[t] = first;
+    }
+    this->SearchShorterPath(start, end, path, true, left);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Corridor (and CorridorStamp == CorridorGeneration): the triangles of `points`, grown by up to
+// CorridorRings rings of vertex-adjacent triangles while it holds fewer than
+// MaximumCorridorTriangles.
+void GeodesicPathSolver::BuildCorridor(const std::vector<CanonicalPoint>& points)
+{
+  const TriangleMesh& mesh = this->GetMesh();
+  const int nt = mesh.GetNumberOfTriangles();
   if (static_cast<int>(this->CorridorStamp.size()) != nt || ++this->CorridorGeneration == 0)
   {
     this->CorridorStamp.assign(static_cast<std::size_t>(nt), 0);
+    this->SearchedStamp.assign(static_cast<std::size_t>(nt), 0);
     this->CorridorGeneration = 1;
   }
   const std::uint32_t generation = this->CorridorGeneration;
@@ -532,63 +584,66 @@ void GeodesicPathSolver::RefineInCorridor(const CanonicalPoint& start,
       corridor.push_back(t);
     }
   };
-  // The triangles of `points`, grown by up to `rings` rings of vertex-adjacent triangles
-  // while the corridor holds fewer than `cap`; returns the rings added.
-  const auto grow = [&](const std::vector<CanonicalPoint>& points, int rings, int cap)
+  for (const CanonicalPoint& p : points)
   {
-    std::size_t ringStart = corridor.size();
-    for (const CanonicalPoint& p : points)
+    TrianglesOf(mesh, p, this->CorridorSeeds);
+    for (const int t : this->CorridorSeeds)
     {
-      TrianglesOf(mesh, p, this->CorridorSeeds);
-      for (const int t : this->CorridorSeeds)
-      {
-        add(t);
-      }
-    }
-    int ring = 0;
-    for (; ring < rings && static_cast<int>(corridor.size()) < cap; ++ring)
-    {
-      const std::size_t ringEnd = corridor.size();
-      for (std::size_t i = ringStart; i < ringEnd; ++i)
-      {
-        const Triangle& tri = mesh.GetTriangle(corridor[i]);
-        for (int k = 0; k < 3; ++k)
-        {
-          for (const int corner : mesh.GetVertexCorners(tri[k]))
-          {
-            add(corner / 3);
-          }
-        }
-      }
-      ringStart = ringEnd;
-    }
-    return ring;
-  };
-  const int rings = grow(path.Points, CorridorRings, MaximumCorridorTriangles);
-  // The other candidates nearly as short (another side of a bump the corridor would not
-  // reach), with as many rings.
-  for (const auto& candidate : this->Candidates)
-  {
-    if (candidate.first <= (1.0 + CorridorCandidateSlack) * path.Length)
-    {
-      grow(candidate.second, rings, std::numeric_limits<int>::max());
+      add(t);
     }
   }
-  this->SearchShorterPath(start, end, path, true);
+  std::size_t ringStart = 0;
+  for (int ring = 0;
+       ring < CorridorRings && static_cast<int>(corridor.size()) < MaximumCorridorTriangles;
+       ++ring)
+  {
+    const std::size_t ringEnd = corridor.size();
+    for (std::size_t i = ringStart; i < ringEnd; ++i)
+    {
+      const Triangle& tri = mesh.GetTriangle(corridor[i]);
+      for (int k = 0; k < 3; ++k)
+      {
+        for (const int corner : mesh.GetVertexCorners(tri[k]))
+        {
+          add(corner / 3);
+        }
+      }
+    }
+    ringStart = ringEnd;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool GeodesicPathSolver::InsideSearched(const std::vector<CanonicalPoint>& points,
+  std::uint32_t stamp)
+{
+  for (const CanonicalPoint& p : points)
+  {
+    TrianglesOf(this->GetMesh(), p, this->CorridorSeeds);
+    for (const int t : this->CorridorSeeds)
+    {
+      if (this->SearchedStamp[t] != stamp)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
 // The exact window search for a path shorter than `path` (kept when found), over the whole
-// mesh or only the corridor's triangles (CorridorStamp), within CorridorWindows windows.
+// mesh or only the corridor's triangles (CorridorStamp), within `budget` windows.
 // A whole-mesh search that ends within its budget certifies the kept path as the shortest:
 // the leg is then marked exact. Returns whether the search ended within its budget.
 bool GeodesicPathSolver::SearchShorterPath(const CanonicalPoint& start,
   const CanonicalPoint& end,
   GeodesicPath& path,
-  bool inCorridor)
+  bool inCorridor,
+  int budget)
 {
   const GeodesicPathStatistics kept = this->Statistics;
-  this->Exact.SetMaximumWindows(CorridorWindows);
+  this->Exact.SetMaximumWindows(budget);
   // Only a shorter path is of use: windows that cannot lead to one are not made.
   this->Exact.SetUpperBound(path.Length);
   if (inCorridor)

@@ -241,12 +241,17 @@ private:
     GeodesicPath& path);
   bool KeepShorterCandidate(const GeodesicPathStatistics& kept, GeodesicPath& path);
   /// Bounded method, after a routed leg: the exact window search inside a corridor of
-  /// triangles around `path`; `path` becomes its result when shorter.
+  /// triangles around `path`, then around the other candidates nearly as short; `path`
+  /// becomes the shortest result.
   void RefineInCorridor(const CanonicalPoint& start, const CanonicalPoint& end, GeodesicPath& path);
   bool SearchShorterPath(const CanonicalPoint& start,
     const CanonicalPoint& end,
     GeodesicPath& path,
-    bool inCorridor);
+    bool inCorridor,
+    int budget);
+  void BuildCorridor(const std::vector<CanonicalPoint>& points);
+  /// Whether every triangle of `points` has SearchedStamp == stamp.
+  bool InsideSearched(const std::vector<CanonicalPoint>& points, std::uint32_t stamp);
   /// Bounded method, after a routed leg: other routes, kept out of bands round the middle of
   /// the first, straightened too when nearly as long; `path` becomes the shortest.
   void TryAlternativeRoutes(const CanonicalPoint& start,
@@ -291,12 +296,16 @@ private:
   static constexpr int CorridorRings = 5;
   static constexpr int MaximumCorridorTriangles = 3000;
   static constexpr int CorridorWindows = 1 << 18;
-  /// Straightened candidates within this fraction of the kept path's length join its corridor.
+  /// Straightened candidates within this fraction of the kept path's length that leave its
+  /// corridor are searched in their own corridors, while at least
+  /// MinimumCandidateCorridorWindows of the budget are left.
   static constexpr double CorridorCandidateSlack = 0.01;
+  static constexpr int MinimumCandidateCorridorWindows = 1 << 14;
   /// Meshes up to this many triangles (a corridor would hold a quarter of them or more) are
   /// searched whole first, which certifies the leg when it fits the window budget.
   static constexpr int WholeMeshRefinementTriangles = 4 * MaximumCorridorTriangles;
   std::vector<std::uint32_t> CorridorStamp; // == CorridorGeneration: in the corridor
+  std::vector<std::uint32_t> SearchedStamp; // a generation: in a corridor searched for this leg
   std::uint32_t CorridorGeneration = 0;
   std::vector<int> Corridor, CorridorSeeds;
   std::shared_ptr<GeodesicPathCache> Cache;
