@@ -13,6 +13,7 @@
 #include "Geodesic/GeodesicPath.h"
 #include "Mesh/PlyReader.h"
 #include "Mesh/ProceduralMeshes.h"
+#include "Support/CanonicalPoints.h"
 #include "Support/UnrolledPrism.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -438,22 +439,13 @@ TEST(GeodesicExactOracle, FarPairsRoundTheOtherSideOfABump)
     std::string File;
     CanonicalPoint A, B;
   };
-  auto face = [](int t, double u, double v)
-  {
-    CanonicalPoint c;
-    c.Location = PointLocation::Face;
-    c.Id = t;
-    c.U = u;
-    c.V = v;
-    return c;
-  };
-  CanonicalPoint vertex;
-  vertex.Location = PointLocation::Vertex;
-  vertex.Id = 24081;
+  using boolsurf::testing::FacePoint;
   const std::vector<Pair> pairs = {
-    { "face.ply", face(48936, 0.278068, 0.0789269), vertex },
-    { "bimba.ply", face(79782, 0.6516, 0.0811534), face(88227, 0.393359, 0.183211) },
-    { "armadillo.ply", face(41462, 0.278068, 0.0789269), face(11261, 0.337627, 0.165265) },
+    { "face.ply", FacePoint(48936, 0.278068, 0.0789269), boolsurf::testing::VertexPoint(24081) },
+    { "bimba.ply", FacePoint(79782, 0.6516, 0.0811534), FacePoint(88227, 0.393359, 0.183211) },
+    { "armadillo.ply",
+      FacePoint(41462, 0.278068, 0.0789269),
+      FacePoint(11261, 0.337627, 0.165265) },
   };
   int tested = 0;
   for (const Pair& pair : pairs)

@@ -3,6 +3,7 @@
 #include "Geodesic/GeodesicPath.h"
 #include "Mesh/PlyReader.h"
 #include "Mesh/ProceduralMeshes.h"
+#include "Support/CanonicalPoints.h"
 #include "Support/UnrolledPrism.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,9 @@
 #include <random>
 
 using namespace boolsurf;
+using boolsurf::testing::EdgePoint;
+using boolsurf::testing::FacePoint;
+using boolsurf::testing::VertexPoint;
 
 namespace
 {
@@ -23,33 +27,6 @@ constexpr double Pi = 3.14159265358979323846;
 TriangleMesh ToMesh(const MeshData& d)
 {
   return TriangleMesh(d.Positions, d.Triangles);
-}
-
-CanonicalPoint VertexPoint(int v)
-{
-  CanonicalPoint c;
-  c.Location = PointLocation::Vertex;
-  c.Id = v;
-  return c;
-}
-
-CanonicalPoint EdgePoint(int e, double t)
-{
-  CanonicalPoint c;
-  c.Location = PointLocation::Edge;
-  c.Id = e;
-  c.T = t;
-  return c;
-}
-
-CanonicalPoint FacePoint(int t, double u, double v)
-{
-  CanonicalPoint c;
-  c.Location = PointLocation::Face;
-  c.Id = t;
-  c.U = u;
-  c.V = v;
-  return c;
 }
 
 /// A random face, edge or vertex point (one kind in three).
