@@ -461,7 +461,10 @@ double SurfaceSiteGraph::FindRoute(const std::vector<EdgeGraphSearch::Terminal>&
   while (!heap.empty())
   {
     std::pop_heap(heap.begin(), heap.end(), std::greater<>());
-    const auto [key, s] = heap.back();
+    // Not a structured binding: the step lambdas below capture the site (C++17 forbids
+    // capturing bindings, and clang, which builds the fuzz targets, enforces it).
+    const double key = heap.back().first;
+    const int s = heap.back().second;
     heap.pop_back();
     if (key >= best)
     {
