@@ -245,7 +245,7 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
   long long vertexCount = 0;
   for (const Element& e : elements)
   {
-    if (e.Name == "face" && e.Count > 0 &&
+    if (e.Name == "face" &&
       std::none_of(e.Properties.begin(),
         e.Properties.end(),
         [](const Property& p) {
@@ -253,7 +253,8 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
         }))
     {
       // Faces of no vertex list are not a mesh (and crash vtkPLYReader, which the scene reader
-      // runs after this check).
+      // runs after this check), even zero of them: vtkPLYReader crashed on "element face 0"
+      // whose property line was misspelt (the fuzz target found it).
       error = "'" + path + "': element 'face' has no list property vertex_indices";
       return false;
     }

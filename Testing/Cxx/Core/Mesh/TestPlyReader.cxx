@@ -103,6 +103,14 @@ TEST(PlyReader, FacesWithoutAVertexListAreAnError)
   EXPECT_FALSE(r.Ok);
   EXPECT_NE(r.Error.find("element 'face' has no list property vertex_indices"), std::string::npos)
     << r.Error;
+  // Even zero faces need their list: vtkPLYReader crashed on "element face 0" whose property
+  // line was misspelt (so the header named no list), after this check passed.
+  r = ReadText("zero-faces-no-list",
+    Triangle + "element face 0\nproper)ty list uchar int vertex_indices\nend_header\n" +
+      "0 0 0\n1 0 0\n0 1 0\n");
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("element 'face' has no list property vertex_indices"), std::string::npos)
+    << r.Error;
   // vertex_index (the other common name) is read.
   r = ReadText("vertex-index",
     Triangle + "element face 1\nproperty list uchar int vertex_index\n" + TriangleBody);
