@@ -529,15 +529,8 @@ void GeodesicPathSolver::RefineInCorridor(const CanonicalPoint& start,
   {
     return;
   }
-  std::vector<std::uint32_t>& searched = this->SearchedStamp;
-  if (searched.size() != static_cast<std::size_t>(nt))
-  {
-    searched.assign(static_cast<std::size_t>(nt), 0);
-  }
-  for (const int t : this->Corridor)
-  {
-    searched[t] = this->CorridorGeneration;
-  }
+  // Corridors get increasing generations, so the triangles of every corridor searched for
+  // this leg are those stamped `first` or later.
   const std::uint32_t first = this->CorridorGeneration;
   // By index, over the candidates so far: a search that finds a shorter path appends it.
   const std::size_t candidates = this->Candidates.size();
@@ -554,10 +547,6 @@ void GeodesicPathSolver::RefineInCorridor(const CanonicalPoint& start,
       continue;
     }
     this->BuildCorridor(this->Candidates[i].second);
-    for (const int t : this->Corridor)
-    {
-      searched[t] = first;
-    }
     this->SearchShorterPath(start, end, path, true, left);
   }
 }
@@ -573,7 +562,6 @@ void GeodesicPathSolver::BuildCorridor(const std::vector<CanonicalPoint>& points
   if (static_cast<int>(this->CorridorStamp.size()) != nt || ++this->CorridorGeneration == 0)
   {
     this->CorridorStamp.assign(static_cast<std::size_t>(nt), 0);
-    this->SearchedStamp.assign(static_cast<std::size_t>(nt), 0);
     this->CorridorGeneration = 1;
   }
   const std::uint32_t generation = this->CorridorGeneration;
@@ -618,14 +606,14 @@ void GeodesicPathSolver::BuildCorridor(const std::vector<CanonicalPoint>& points
 
 //------------------------------------------------------------------------------
 bool GeodesicPathSolver::InsideSearched(const std::vector<CanonicalPoint>& points,
-  std::uint32_t stamp)
+  std::uint32_t first)
 {
   for (const CanonicalPoint& p : points)
   {
     TrianglesOf(this->GetMesh(), p, this->CorridorSeeds);
     for (const int t : this->CorridorSeeds)
     {
-      if (this->SearchedStamp[t] != stamp)
+      if (this->CorridorStamp[t] < first)
       {
         return false;
       }

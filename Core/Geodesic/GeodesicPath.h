@@ -250,8 +250,8 @@ private:
     bool inCorridor,
     int budget);
   void BuildCorridor(const std::vector<CanonicalPoint>& points);
-  /// Whether every triangle of `points` has SearchedStamp == stamp.
-  bool InsideSearched(const std::vector<CanonicalPoint>& points, std::uint32_t stamp);
+  /// Whether every triangle of `points` lies in a corridor of generation `first` or later.
+  bool InsideSearched(const std::vector<CanonicalPoint>& points, std::uint32_t first);
   /// Bounded method, after a routed leg: other routes, kept out of bands round the middle of
   /// the first, straightened too when nearly as long; `path` becomes the shortest.
   void TryAlternativeRoutes(const CanonicalPoint& start,
@@ -305,7 +305,6 @@ private:
   /// searched whole first, which certifies the leg when it fits the window budget.
   static constexpr int WholeMeshRefinementTriangles = 4 * MaximumCorridorTriangles;
   std::vector<std::uint32_t> CorridorStamp; // == CorridorGeneration: in the corridor
-  std::vector<std::uint32_t> SearchedStamp; // a generation: in a corridor searched for this leg
   std::uint32_t CorridorGeneration = 0;
   std::vector<int> Corridor, CorridorSeeds;
   std::shared_ptr<GeodesicPathCache> Cache;
