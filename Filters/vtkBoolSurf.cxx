@@ -259,7 +259,8 @@ bool vtkBoolSurf::SelectBySamples(const boolsurf::vtkSurfaceInput& surface,
   Internals& in = *this->Internal;
   std::vector<boolsurf::SampleQuery> queries;
   if (!boolsurf::ReadSampleQueries(samples, surface.Mesh.get(), queries, error) ||
-    !boolsurf::SelectBySamples(in.Arrangement,
+    !boolsurf::SelectBySamples(*surface.Mesh,
+      in.Arrangement,
       queries,
       boolsurf::SnapDistance(surfaceInput, this->SnapTolerance),
       this->MaxSearchStates,

@@ -106,7 +106,8 @@ bool vtkBoolSurfBSC::SelectFromCore(const boolsurf::ArrangementResult& arranged,
   Internals& in = *this->Internal;
   std::vector<boolsurf::SampleQuery> queries;
   if (!boolsurf::ReadSampleQueries(samples, arranged.Surface.Mesh.get(), queries, error) ||
-    !boolsurf::SelectBySamples(arranged.Arrangement,
+    !boolsurf::SelectBySamples(*arranged.Surface.Mesh,
+      arranged.Arrangement,
       queries,
       boolsurf::SnapDistance(arranged.Surface.Triangles, this->SnapTolerance),
       this->MaxSearchStates,

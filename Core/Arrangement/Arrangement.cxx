@@ -42,12 +42,12 @@ struct Arrangement::WorkBuffers
   std::vector<LocalArrangement> Local;
   std::vector<std::vector<int>> EdgeSegmentPoints;
   std::vector<int> NewPointBase, SlotOfSegment;
-  std::vector<char> State, MeshEdgeHasBlocked;
+  ZeroPageVector<char> State, MeshEdgeHasBlocked;
   /// Triangles and mesh edges whose State / MeshEdgeHasBlocked entries the
   /// last call set: reset at the next call instead of clearing whole-mesh arrays.
   std::vector<int> TouchedTriangles, TouchedEdges;
   std::unordered_set<std::uint64_t> BlockedMeshSubEdges;
-  std::vector<unsigned char> Blocked;
+  ZeroPageVector<unsigned char> Blocked;
   std::vector<std::array<int, 3>> PieceAcross;
   std::vector<EdgeIndex> CrowdedHalfEdges; ///< per slot, see RefinedSurfaceView
   std::shared_ptr<MeshTiles> Tiles;
@@ -90,8 +90,11 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   out.Times = ArrangementStageTimes();
   if (!sameMesh)
   {
-    work.State.assign(nt, 0);
-    work.MeshEdgeHasBlocked.assign(mesh.GetNumberOfEdges(), 0);
+    // Fresh zero pages: an edit writes the entries of the triangles and edges curves touch.
+    work.State = ZeroPageVector<char>();
+    work.State.resize(nt);
+    work.MeshEdgeHasBlocked = ZeroPageVector<char>();
+    work.MeshEdgeHasBlocked.resize(mesh.GetNumberOfEdges());
   }
   else
   {
@@ -170,18 +173,12 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   const int totalPoints = newPointBase[slots];
   ResizeForEdits(out.Positions, totalPoints);
   ResizeForEdits(out.CurvePointOnMesh, totalPoints - nv);
-  ResizeForEdits(out.PointSurface, totalPoints);
+  ResizeForEdits(out.CurvePointSurface, totalPoints - nv);
   out.NumberOfMeshVertices = nv;
   // Mesh vertices keep their ids: written once per mesh, then reused by every edit.
   if (!sameVertices)
   {
-    ParallelRange(arena,
-      nv,
-      [&](int v)
-      {
-        out.Positions[v] = mesh.GetPosition(v);
-        out.PointSurface[v] = ToSurfacePoint(mesh, out.GetPointOnMesh(v));
-      });
+    ParallelRange(arena, nv, [&](int v) { out.Positions[v] = mesh.GetPosition(v); });
   }
   work.MeshSerial = mesh.GetSerial();
   out.VerticesMeshSerial = mesh.GetSerial();
@@ -195,7 +192,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       c.T = map.EdgePoints[i].T;
       out.Positions[nv + i] = PositionOf(mesh, c);
       out.CurvePointOnMesh[i] = c;
-      out.PointSurface[nv + i] = ToSurfacePoint(mesh, c);
+      out.CurvePointSurface[i] = ToSurfacePoint(mesh, c);
     });
   ParallelFor(arena,
     slots,
@@ -218,7 +215,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         c.V = p.P.y;
         out.Positions[p.Global] = mesh.Evaluate(a.Triangle, c.U, c.V);
         out.CurvePointOnMesh[p.Global - nv] = c;
-        out.PointSurface[p.Global] = { a.Triangle, c.U, c.V };
+        out.CurvePointSurface[p.Global - nv] = { a.Triangle, c.U, c.V };
       }
       for (size_t i = 0; i < a.Points.size(); ++i)
       {
@@ -228,7 +225,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
 
   // Per source triangle: its state for the flood fill (refined, or next to a closed curve
   // running along one of its edges).
-  std::vector<char>& state = work.State;
+  ZeroPageVector<char>& state = work.State;
   for (int s = 0; s < slots; ++s)
   {
     state[map.Triangles[s]] = RefinedSurfaceView::RefinedBit;
@@ -236,7 +233,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   }
   std::unordered_set<std::uint64_t>& blockedMeshSubEdges = work.BlockedMeshSubEdges;
   blockedMeshSubEdges.clear();
-  std::vector<char>& meshEdgeHasBlocked = work.MeshEdgeHasBlocked;
+  ZeroPageVector<char>& meshEdgeHasBlocked = work.MeshEdgeHasBlocked;
   for (size_t i = 0; i < map.EdgeSegments.size(); ++i)
   {
     const EdgeSegment& es = map.EdgeSegments[i];
@@ -283,10 +280,11 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   const int refinedCount = pieceOffset[slots];
   ResizeForEdits(out.Triangles, refinedCount);
   ResizeForEdits(out.SourceTriangle, refinedCount);
-  std::vector<int>& refinedSlot = out.RefinedSlot;
+  ZeroPageVector<int>& refinedSlot = out.RefinedSlot;
   if (!layoutKept)
   {
-    refinedSlot.assign(nt, -1);
+    refinedSlot = ZeroPageVector<int>(); // fresh zero pages: no triangle refined
+    refinedSlot.resize(nt);
     ParallelRange(arena,
       nt,
       [&](int t)
@@ -307,21 +305,21 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     {
       out.Triangles[t] = mesh.GetTriangle(t);
       out.SourceTriangle[t] = t;
-      refinedSlot[t] = -1;
+      refinedSlot[t] = 0;
     }
   }
   out.NumberOfMeshTriangles = nt;
   out.RefinedSources.assign(map.Triangles.begin(), map.Triangles.end());
   for (int s = 0; s < slots; ++s)
   {
-    refinedSlot[map.Triangles[s]] = s;
+    refinedSlot[map.Triangles[s]] = s + 1;
   }
   // Per refined triangle, the sides that closed curves run along inside its source triangle:
   // read only for pieces of refined triangles, so only those are written.
   // And what lies across each piece's edges (RefinedSurfaceView::PieceAcross), found here
   // from the local triangulation, where the points' places on the triangle are known, with
   // the half-edge index of crowded triangles (CrowdedHalfEdges).
-  std::vector<unsigned char>& blocked = work.Blocked;
+  ZeroPageVector<unsigned char>& blocked = work.Blocked;
   ResizeForEdits(blocked, refinedCount);
   std::vector<std::array<int, 3>>& pieceAcross = work.PieceAcross;
   ResizeForEdits(pieceAcross, refinedCount - nt + slots);
@@ -484,7 +482,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     curves,
     refinedCurves,
     out.Positions,
-    out.PointSurface,
+    out.CurvePointSurface,
     out.GetCellLookup(),
     out.Patches,
     out.CellGraph,

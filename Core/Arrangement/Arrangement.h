@@ -48,11 +48,17 @@ struct Arrangement
   /// point p; a mesh vertex is its own canonical point, not stored: 32 bytes per vertex, 69 MB
   /// on 4.3M triangles). Read any point with GetPointOnMesh.
   std::vector<CanonicalPoint> CurvePointOnMesh;
-  /// Each refined point as triangle + barycentric (u, v), mesh vertices included: the region
-  /// output reads it per point, and deriving a vertex's (ToSurfacePoint) there costs a
-  /// second cache miss per point (+0.8 ms on a 10-circle edit of igea_1m, tried).
-  std::vector<SurfacePoint> PointSurface;
+  /// Each refined point past the mesh's vertices as triangle + barycentric (u, v) (entry
+  /// p - nv; a mesh vertex's is derived from its corners, not stored: 24 bytes per vertex,
+  /// 52 MB on 4.3M triangles). Read any point with GetPointSurface.
+  std::vector<SurfacePoint> CurvePointSurface;
   int NumberOfMeshVertices = 0; ///< refined points below it are the mesh's vertices
+  /// Refined point p as triangle + barycentric, on the mesh this arrangement was computed on.
+  SurfacePoint GetPointSurface(const TriangleMesh& mesh, int p) const
+  {
+    return p < this->NumberOfMeshVertices ? VertexSurfacePoint(mesh, p)
+                                          : this->CurvePointSurface[p - this->NumberOfMeshVertices];
+  }
   /// Canonical surface point of refined point p.
   CanonicalPoint GetPointOnMesh(int p) const
   {
@@ -75,16 +81,20 @@ struct Arrangement
   std::vector<int> SourceTriangle;           ///< mesh triangle each refined triangle comes from
   int NumberOfMeshTriangles = 0;
   int NumberOfHoles = 0; ///< unusable mesh triangles
-  /// Per mesh triangle: -1 when unrefined, else s, whose pieces other than refined triangle t
-  /// are [PieceOffset[s], PieceOffset[s + 1]); RefinedSources[s] is t.
-  std::vector<int> RefinedSlot;
+  /// Slot of mesh triangle t among the refined ones, -1 when unrefined.
+  int GetRefinedSlot(int t) const { return this->RefinedSlot[t] - 1; }
+  /// Per mesh triangle: 0 when unrefined, else s + 1, where s is its slot: its pieces other
+  /// than refined triangle t are [PieceOffset[s], PieceOffset[s + 1]) and RefinedSources[s] is
+  /// t. Zero pages (ZeroPageVector), so an edit writes the entries of what it refines only.
+  /// Read it with GetRefinedSlot().
+  ZeroPageVector<int> RefinedSlot;
   std::vector<int> PieceOffset;
   std::vector<int> RefinedSources;
   /// Cells: per clean tile of the mesh (-1 for tiles curves touch), and per refined triangle
   /// for the others; entries of LooseCell for clean tiles' triangles are stale. Read them with
   /// CellOfTriangle(), or all at once with WriteTriangleCells().
   std::vector<int> TileCell;
-  std::vector<int> LooseCell;
+  ZeroPageVector<int> LooseCell; ///< written only where cells are loose (ZeroPageVector)
   int NumberOfCells = 0;
   /// The lowest refined triangle of each cell (cells are numbered in this order).
   std::vector<int> CellFirstTriangle;
@@ -151,7 +161,7 @@ void ForEachRefinedTriangle(const Arrangement& arr, int t, F f)
     return;
   }
   f(t);
-  const int s = arr.RefinedSlot[t];
+  const int s = arr.GetRefinedSlot(t);
   if (s >= 0)
   {
     for (int r = arr.PieceOffset[s]; r < arr.PieceOffset[s + 1]; ++r)
@@ -164,7 +174,7 @@ void ForEachRefinedTriangle(const Arrangement& arr, int t, F f)
 /// Number of refined triangles of mesh triangle t.
 inline int CountRefinedTriangles(const Arrangement& arr, int t)
 {
-  const int s = arr.RefinedSlot[t];
+  const int s = arr.GetRefinedSlot(t);
   return arr.SourceTriangle[t] < 0 ? 0
                                    : (s < 0 ? 1 : 1 + arr.PieceOffset[s + 1] - arr.PieceOffset[s]);
 }

@@ -21,7 +21,7 @@ int RefinedSurfaceView::FindDirected(int t, int a, int b) const
     const std::array<int, 3>& v = (*this->Triangles)[r];
     return (v[0] == a && v[1] == b) || (v[1] == a && v[2] == b) || (v[2] == a && v[0] == b);
   };
-  const int s = (*this->SlotOfTriangle)[t];
+  const int s = this->SlotOf(t);
   if (s < 0)
   {
     return holds(t) ? t : -1; // an unusable triangle's entry holds no point
@@ -67,8 +67,7 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
   }
   else
   {
-    const int across =
-      (*this->PieceAcross)[this->PieceAcrossIndex(r, (*this->SlotOfTriangle)[t])][j];
+    const int across = (*this->PieceAcross)[this->PieceAcrossIndex(r, this->SlotOf(t))][j];
     if (across >= 0 || across == AcrossNothing)
     {
       blocked = ((*this->Blocked)[r] >> j) & 1;
@@ -294,7 +293,7 @@ namespace
 // triangles (used when curves touch most tiles: then tiles save nothing and this scales with
 // threads). Same sets, roots and numbering as the tiled flood fill.
 int FloodFillAllTriangles(const RefinedSurfaceView& surface,
-  std::vector<int>& cellOfTriangle,
+  ZeroPageVector<int>& cellOfTriangle,
   std::vector<int>* cellFirstTriangle,
   TileFloodBuffers& scratch)
 {
@@ -507,7 +506,7 @@ constexpr int DirtyTileGrain = 16;
 
 int FloodFillTiles(const RefinedSurfaceView& surface,
   const MeshTiles& tiles,
-  std::vector<int>& looseCell,
+  ZeroPageVector<int>& looseCell,
   std::vector<int>* cellFirstTriangle,
   TileFloodBuffers& buffers)
 {
@@ -519,7 +518,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   const char* dirty = buffers.Dirty.data();
   const std::vector<int>& dirtyTiles = buffers.DirtyTiles;
   // Node of each refined triangle of a dirty tile (entries of other triangles are stale).
-  std::vector<int>& nodeOfTriangle = buffers.NodeOfTriangle;
+  ZeroPageVector<int>& nodeOfTriangle = buffers.NodeOfTriangle;
   if (static_cast<int>(nodeOfTriangle.size()) < count)
   {
     nodeOfTriangle.resize(EditCapacity(count));
@@ -798,7 +797,7 @@ void GroupByCell(int cells,
 // of enumerating the dirty tiles' pieces twice.
 void ListCellContents(const MeshTiles& tiles,
   const RefinedSurfaceView& surface,
-  const std::vector<int>& looseCell,
+  const ZeroPageVector<int>& looseCell,
   int cells,
   const TileFloodBuffers& buffers,
   bool byNodes,
@@ -857,7 +856,7 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   const MeshTiles& tiles,
   const std::vector<int>& changedTriangles,
   std::vector<int>& tileCell,
-  std::vector<int>& looseCell,
+  ZeroPageVector<int>& looseCell,
   std::vector<int>* cellFirstTriangle,
   TileFloodBuffers& buffers,
   CellContents* contents)
@@ -946,13 +945,14 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   const std::vector<TracedCurve>& curves,
   const std::vector<RefinedCurve>& refinedCurves,
   const std::vector<Vec3>& positions,
-  const std::vector<SurfacePoint>& pointSurface,
+  const std::vector<SurfacePoint>& curvePointSurface,
   const TriangleCellLookup& cellOfTriangle,
   std::vector<ArrangementPatch>& patches,
   std::vector<CellGraphArc>& arcs,
   PatchGraphBuffers* buffers)
 {
   const TriangleMesh& mesh = *surface.Mesh;
+  const int nv = mesh.GetNumberOfVertices();
   patches.clear();
   arcs.clear();
 
@@ -962,12 +962,12 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   PatchGraphBuffers& marks = buffers ? *buffers : localBuffers;
   if (marks.Visits.size() < positions.size())
   {
-    marks.Visits.resize(positions.size(), 0);
-    marks.IsEnd.resize(positions.size(), 0);
+    marks.Visits.resize(positions.size()); // zero pages, or entries reset at the end
+    marks.IsEnd.resize(positions.size());
   }
   // Visits per point over all curves: a point visited twice is where curves meet (crossing,
   // touching, overlap end, or a curve meeting itself).
-  std::vector<int>& visits = marks.Visits;
+  ZeroPageVector<int>& visits = marks.Visits;
   for (size_t ci = 0; ci < refinedCurves.size(); ++ci)
   {
     const std::vector<int>& pts = refinedCurves[ci].Points;
@@ -989,7 +989,7 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
       }
     }
   }
-  std::vector<char>& isEnd = marks.IsEnd;
+  ZeroPageVector<char>& isEnd = marks.IsEnd;
   int graphVertices = 0;
   auto markEnd = [&](int p)
   {
@@ -1079,7 +1079,8 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
       }
       for (int p : patch.Points)
       {
-        patch.SurfacePoints.push_back(pointSurface[p]);
+        patch.SurfacePoints.push_back(
+          p < nv ? VertexSurfacePoint(mesh, p) : curvePointSurface[p - nv]);
       }
       const int id = static_cast<int>(patches.size());
       if (patch.Closed && patch.LeftCell >= 0 && patch.RightCell >= 0)

@@ -21,6 +21,7 @@
 #include "Arrangement/EdgeIndex.h"
 #include "Geodesic/TracedCurve.h"
 #include "Mesh/SurfacePoint.h"
+#include "Mesh/ZeroPageArray.h"
 
 #include <algorithm>
 #include <array>
@@ -42,24 +43,25 @@ namespace boolsurf
 struct RefinedSurfaceView
 {
   const TriangleMesh* Mesh = nullptr;
-  /// Per mesh triangle: -1 when unrefined, else its slot s, whose pieces other than the first
-  /// are the refined triangles [PieceOffset[s], PieceOffset[s + 1]).
-  const std::vector<int>* SlotOfTriangle = nullptr;
+  /// Per mesh triangle: 0 when unrefined, else its slot s + 1 (Arrangement::RefinedSlot); the
+  /// slot's pieces other than the first are the refined triangles [PieceOffset[s],
+  /// PieceOffset[s + 1]). Read it with SlotOf().
+  const ZeroPageVector<int>* SlotOfTriangle = nullptr;
   const std::vector<int>* PieceOffset = nullptr;
   const std::vector<std::array<int, 3>>* Triangles = nullptr;
   const std::vector<int>* SourceTriangle = nullptr;
   /// Per source triangle: bit 0 (RefinedBit) when it was refined, bit 1 (BlockedEdgeBit) when
   /// one of its mesh edges carries a closed curve running along it.
-  const std::vector<char>* Refined = nullptr;
+  const ZeroPageVector<char>* Refined = nullptr;
   static constexpr char RefinedBit = 1;
   static constexpr char BlockedEdgeBit = 2;
   /// Per refined triangle: bit j when its edge j (vertex j -> j+1) lies on a closed curve
   /// inside its source triangle.
-  const std::vector<unsigned char>* Blocked = nullptr;
+  const ZeroPageVector<unsigned char>* Blocked = nullptr;
   /// Sub-edges on mesh edges covered by closed curves (undirected refined point pairs), and a
   /// per-mesh-edge flag telling whether to look there at all.
   const std::unordered_set<std::uint64_t>* BlockedMeshSubEdges = nullptr;
-  const std::vector<char>* MeshEdgeHasBlocked = nullptr;
+  const ZeroPageVector<char>* MeshEdgeHasBlocked = nullptr;
 
   /// Per slot: for a crowded source triangle (more than CrowdedSize refined triangles, where
   /// scanning them for every neighbour would make the flood fill quadratic in their number),
@@ -84,10 +86,12 @@ struct RefinedSurfaceView
     return (r >= nt ? r + 1 : (*this->PieceOffset)[s]) - nt + s;
   }
 
+  /// Slot of mesh triangle t, -1 when unrefined.
+  int SlotOf(int t) const { return (*this->SlotOfTriangle)[t] - 1; }
   /// Number of refined triangles of mesh triangle t (0 for an unusable one).
   int CountPieces(int t) const
   {
-    const int s = (*this->SlotOfTriangle)[t];
+    const int s = this->SlotOf(t);
     return s < 0 ? (this->Mesh->IsUsable(t) ? 1 : 0)
                  : 1 + (*this->PieceOffset)[s + 1] - (*this->PieceOffset)[s];
   }
@@ -96,7 +100,7 @@ struct RefinedSurfaceView
   void ForEachPiece(int t, F f) const
   {
     f(t);
-    const int s = (*this->SlotOfTriangle)[t];
+    const int s = this->SlotOf(t);
     if (s >= 0)
     {
       for (int r = (*this->PieceOffset)[s]; r < (*this->PieceOffset)[s + 1]; ++r)
@@ -307,7 +311,7 @@ struct TileFloodBuffers
   std::vector<int> DirtyTiles;
   std::vector<char> DirtyGroup; ///< per tile group; reset after each call
   std::vector<int> DirtyGroups;
-  std::vector<int> NodeOfTriangle;     ///< per refined triangle of a dirty tile (others stale)
+  ZeroPageVector<int> NodeOfTriangle;  ///< per refined triangle of a dirty tile (others stale)
   std::vector<int> NodeKey;            ///< per node: its lowest refined triangle
   std::vector<int> NodeParent;         ///< union-find over nodes
   std::vector<int> CellOfRoot;         ///< per node
@@ -337,7 +341,7 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   const MeshTiles& tiles,
   const std::vector<int>& changedTriangles,
   std::vector<int>& tileCell,
-  std::vector<int>& looseCell,
+  ZeroPageVector<int>& looseCell,
   std::vector<int>* cellFirstTriangle,
   TileFloodBuffers& buffers,
   CellContents* contents = nullptr);
@@ -377,18 +381,19 @@ struct CellGraphArc
 /// callers that arrange repeatedly.
 struct PatchGraphBuffers
 {
-  std::vector<int> Visits;
-  std::vector<char> IsEnd;
+  ZeroPageVector<int> Visits;
+  ZeroPageVector<char> IsEnd;
 };
 
 /// Cuts the curves into patches and builds the cell graph (one arc per patch of a closed
 /// curve whose two sides are cells). Returns the number of patch-graph vertices (distinct
-/// patch end points).
+/// patch end points). `curvePointSurface` holds the surface points of the refined points past
+/// the mesh's vertices (Arrangement::CurvePointSurface).
 int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   const std::vector<TracedCurve>& curves,
   const std::vector<RefinedCurve>& refinedCurves,
   const std::vector<Vec3>& positions,
-  const std::vector<SurfacePoint>& pointSurface,
+  const std::vector<SurfacePoint>& curvePointSurface,
   const TriangleCellLookup& cellOfTriangle,
   std::vector<ArrangementPatch>& patches,
   std::vector<CellGraphArc>& arcs,

@@ -164,6 +164,23 @@ SurfacePoint SnapWeights(SurfacePoint p);
 /// is (1, 0, 0) in some order).
 SurfacePoint ToSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c);
 
+/// ToSurfacePoint of vertex v, bit for bit (its lowest corner's triangle, weight 1 at that
+/// corner; triangle -1 for an unreferenced vertex), read from the vertex's corner list alone:
+/// outputs derive it per point instead of storing 24 bytes per mesh vertex.
+inline SurfacePoint VertexSurfacePoint(const TriangleMesh& mesh, int v)
+{
+  SurfacePoint p;
+  const IntRange corners = mesh.GetVertexCorners(v);
+  if (corners.size() > 0)
+  {
+    const int corner = corners[0];
+    p.Triangle = corner / 3;
+    p.U = corner % 3 == 1 ? 1.0 : 0.0;
+    p.V = corner % 3 == 2 ? 1.0 : 0.0;
+  }
+  return p;
+}
+
 /// The canonical form of c as written in an output array: in `preferred` when that triangle
 /// contains c (so a curve point is written in a triangle it shares with its neighbours), else
 /// in AnyTriangleOf(c). When that form would not read back (LocateSurfacePoint) to c bit for

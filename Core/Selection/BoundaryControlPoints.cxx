@@ -56,16 +56,16 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
     const long long from = static_cast<long long>(std::floor(t0 + SameParameter)) + 1;
     const long long to = static_cast<long long>(std::ceil(t1 - SameParameter)) - 1;
     points.reserve(static_cast<std::size_t>(std::max(0LL, to - from + 1)) + 2);
-    points.push_back(
-      startsAtControl ? control(static_cast<long long>(k0)) : arrangement.PointSurface[first]);
+    points.push_back(startsAtControl ? control(static_cast<long long>(k0))
+                                     : arrangement.GetPointSurface(mesh, first));
     for (long long k = from; k <= to; ++k)
     {
       points.push_back(control(k));
     }
     if (!whole)
     {
-      points.push_back(
-        endsAtControl ? control(static_cast<long long>(k1)) : arrangement.PointSurface[last]);
+      points.push_back(endsAtControl ? control(static_cast<long long>(k1))
+                                     : arrangement.GetPointSurface(mesh, last));
     }
     return TraceStatus::Success();
   }

@@ -172,7 +172,8 @@ bool SelectBySamples(const std::vector<Vec3>& positions,
 }
 
 //------------------------------------------------------------------------------
-bool SelectBySamples(const Arrangement& arr,
+bool SelectBySamples(const TriangleMesh& mesh,
+  const Arrangement& arr,
   const std::vector<SampleQuery>& queries,
   double tolerance,
   int maxSearchStates,
@@ -190,7 +191,7 @@ bool SelectBySamples(const Arrangement& arr,
   // so the cost is per sample, not per triangle.
   auto normalOf = [&](int p)
   {
-    const int t = arr.PointSurface[p].Triangle;
+    const int t = arr.GetPointSurface(mesh, p).Triangle;
     if (t < 0 || t >= arr.NumberOfMeshTriangles || arr.SourceTriangle[t] < 0)
     {
       return Vec3();

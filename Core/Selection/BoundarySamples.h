@@ -118,14 +118,17 @@ bool SelectBySamples(const std::vector<Vec3>& positions,
   std::string& error);
 
 struct Arrangement;
+class TriangleMesh;
 
 /// BSC's view of an arrangement's patches.
 std::vector<BscPatch> BscPatchesOf(const Arrangement& arrangement);
 
 /// The whole BSC stage on a Core arrangement: snap `queries` to its patches (within
 /// `tolerance`), orient them with the refined surface's normals, select. snaps[k] is where
-/// sample k landed. False with a message naming the bad sample.
-bool SelectBySamples(const Arrangement& arrangement,
+/// sample k landed. False with a message naming the bad sample. `mesh` is the mesh the
+/// arrangement was computed on.
+bool SelectBySamples(const TriangleMesh& mesh,
+  const Arrangement& arrangement,
   const std::vector<SampleQuery>& queries,
   double tolerance,
   int maxSearchStates,

@@ -55,11 +55,7 @@ void RegionExtractor::EnsurePointMap(int numberOfPoints)
   // Room for an eighth more points: an edit adds or removes a few (EditBuffers.h).
   if (this->PointMap.size() < n)
   {
-    if (this->PointMap.capacity() < n)
-    {
-      this->PointMap.reserve(EditCapacity(n));
-    }
-    this->PointMap.resize(n, -1);
+    ResizeForEdits(this->PointMap, n); // the new entries are zero, or reset by the last call
   }
 }
 
@@ -75,17 +71,17 @@ void RegionExtractor::RenumberCorners(int numberOfPoints, RegionMesh& out)
   // four times instead of once, and was slower on two threads (Docs/Benchmarks.md).
   for (int& corner : out.Connectivity)
   {
-    int& id = map[corner];
-    if (id < 0)
+    int& idPlusOne = map[corner];
+    if (idPlusOne == 0)
     {
-      id = static_cast<int>(points.size());
       points.push_back(corner);
+      idPlusOne = static_cast<int>(points.size());
     }
-    corner = id;
+    corner = idPlusOne - 1;
   }
   for (int p : points)
   {
-    map[p] = -1;
+    map[p] = 0;
   }
 }
 

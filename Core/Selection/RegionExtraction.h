@@ -73,7 +73,9 @@ public:
 private:
   void EnsurePointMap(int numberOfPoints);
 
-  std::vector<int> PointMap; ///< -1 everywhere between calls
+  /// Region point id + 1 of each refined point, 0 (unmapped) everywhere between calls: zero
+  /// pages, so its memory is the part of the surface regions reach.
+  ZeroPageVector<int> PointMap;
 };
 
 } // namespace boolsurf

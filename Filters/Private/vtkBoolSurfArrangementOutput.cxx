@@ -255,7 +255,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   {
     for (vtkIdType i = first; i < last; ++i)
     {
-      const SurfacePoint& p = arr.PointSurface[i];
+      const SurfacePoint p = arr.GetPointSurface(*surface.Mesh, static_cast<int>(i));
       pointTriangle[i] = p.Triangle;
       pointBarycentric[2 * i] = p.U;
       pointBarycentric[2 * i + 1] = p.V;
@@ -288,9 +288,11 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   polys->SetData(cellOffsets, connectivity);
   output->SetPolys(polys);
 
-  TransferSurfaceAttributes(surface.Triangles,
+  TransferSurfaceAttributes(
+    surface.Triangles,
     *surface.Mesh,
-    arr.PointSurface,
+    np,
+    [&](vtkIdType p) { return arr.GetPointSurface(*surface.Mesh, static_cast<int>(p)); },
     compacted ? compactSource : arr.SourceTriangle,
     output);
   output->GetCellData()->AddArray(cellOf);

@@ -47,7 +47,8 @@ bool IsBoolSurfArray(const char* name)
 //------------------------------------------------------------------------------
 void TransferSurfaceAttributes(vtkPolyData* source,
   const TriangleMesh& mesh,
-  const std::vector<SurfacePoint>& pointSurface,
+  vtkIdType numberOfPoints,
+  const std::function<SurfacePoint(vtkIdType)>& pointSurface,
   const std::vector<int>& sourceTriangle,
   vtkPolyData* target)
 {
@@ -75,7 +76,7 @@ void TransferSurfaceAttributes(vtkPolyData* source,
   }
   vtkPointData* outPD = target->GetPointData();
   vtkCellData* outCD = target->GetCellData();
-  const vtkIdType np = static_cast<vtkIdType>(pointSurface.size());
+  const vtkIdType np = numberOfPoints;
   const vtkIdType nc = static_cast<vtkIdType>(sourceTriangle.size());
   outPD->InterpolateAllocate(inPD, np);
   outCD->CopyAllocate(inCD, nc);
@@ -84,7 +85,7 @@ void TransferSurfaceAttributes(vtkPolyData* source,
   double weights[3];
   for (vtkIdType p = 0; p < np; ++p)
   {
-    const SurfacePoint& sp = pointSurface[p];
+    const SurfacePoint sp = pointSurface(p);
     const Triangle& tri = mesh.GetTriangle(sp.Triangle);
     for (int k = 0; k < 3; ++k)
     {

@@ -7,7 +7,10 @@
 
 #include "Mesh/SurfacePoint.h"
 
+#include <vtkType.h>
+
 #include <array>
+#include <functional>
 #include <vector>
 
 class vtkPolyData;
@@ -16,11 +19,14 @@ namespace boolsurf
 {
 
 /// `source` is the triangulated input surface (cell ids = mesh triangle ids); `target` gets
-/// its point data (one tuple per entry of pointSurface) and cell data (one tuple per entry of
-/// sourceTriangle). Arrays whose names are in `skip` are not carried (names BoolSurf writes).
+/// its point data (numberOfPoints tuples, point p interpolated at pointSurface(p)) and cell
+/// data (one tuple per entry of sourceTriangle). Arrays whose names are in `skip` are not
+/// carried (names BoolSurf writes). pointSurface is called only when the source has arrays to
+/// carry.
 void TransferSurfaceAttributes(vtkPolyData* source,
   const TriangleMesh& mesh,
-  const std::vector<SurfacePoint>& pointSurface,
+  vtkIdType numberOfPoints,
+  const std::function<SurfacePoint(vtkIdType)>& pointSurface,
   const std::vector<int>& sourceTriangle,
   vtkPolyData* target);
 

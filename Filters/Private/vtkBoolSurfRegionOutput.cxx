@@ -146,7 +146,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
       xyz[3 * i] = x.x;
       xyz[3 * i + 1] = x.y;
       xyz[3 * i + 2] = x.z;
-      pointSurface[i] = arr.PointSurface[p];
+      pointSurface[i] = arr.GetPointSurface(*surface.Mesh, p);
     }
     for (vtkIdType t = std::max<vtkIdType>(first, np) - np; t < last - np; ++t)
     {
@@ -167,7 +167,13 @@ void WriteRegion(const vtkSurfaceInput& surface,
   SetTriangles(mesh.Connectivity.data(), static_cast<vtkIdType>(mesh.Triangles.size()), region);
 
   // The surface's own arrays first (they skip BoolSurf's names), then ours.
-  TransferSurfaceAttributes(surface.Triangles, *surface.Mesh, pointSurface, sourceTriangle, region);
+  TransferSurfaceAttributes(
+    surface.Triangles,
+    *surface.Mesh,
+    np,
+    [&](vtkIdType i) { return pointSurface[i]; },
+    sourceTriangle,
+    region);
   region->GetCellData()->AddArray(cell);
   region->GetCellData()->AddArray(source);
   AddSurfacePointArrays(pointSurface, region->GetPointData());

@@ -54,7 +54,7 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
       x[1] = arr.Positions[p].y;
       x[2] = arr.Positions[p].z;
     },
-    [&](int p) { return arr.PointSurface[p]; },
+    [&](int p) { return arr.GetPointSurface(*surface.Mesh, p); },
     true,
     boundary);
   const Clock::time_point written = Clock::now();

@@ -174,7 +174,7 @@ TEST(BoundarySampledCurves, OverlappingSquaresOnAFlatMesh)
     std::vector<PatchSnap> snaps;
     BscResult r;
     std::string error;
-    ASSERT_TRUE(SelectBySamples(arr, c.Samples, 1e-6, 64, snaps, r, error)) << error;
+    ASSERT_TRUE(SelectBySamples(mesh, arr, c.Samples, 1e-6, 64, snaps, r, error)) << error;
     EXPECT_NEAR(SelectedArea(arr, r.Selected), c.Area, 1e-12);
     for (char kept : r.SampleOnBoundary)
       EXPECT_EQ(kept, 1);
@@ -208,7 +208,7 @@ TEST(BoundarySampledCurves, BadSamplesAreNamed)
     std::vector<PatchSnap> snaps;
     BscResult r;
     std::string error;
-    EXPECT_FALSE(SelectBySamples(arr, { good, c.Bad }, 0.01, 64, snaps, r, error));
+    EXPECT_FALSE(SelectBySamples(mesh, arr, { good, c.Bad }, 0.01, 64, snaps, r, error));
     EXPECT_NE(error.find(c.Message), std::string::npos) << error;
   }
 }
@@ -235,7 +235,7 @@ TEST(BoundarySampledCurves, TorusMeridiansBoundABand)
     std::vector<PatchSnap> snaps;
     BscResult r;
     std::string error;
-    ASSERT_TRUE(SelectBySamples(arr, samples, 1e-3, 64, snaps, r, error)) << error;
+    ASSERT_TRUE(SelectBySamples(mesh, arr, samples, 1e-3, 64, snaps, r, error)) << error;
     EXPECT_NEAR(SelectedArea(arr, r.Selected), 0.5 * total, 1e-9 * total);
     EXPECT_EQ(r.SampleOnBoundary, (std::vector<char>{ 1, 1 }));
     // The selected band is on the side the samples point to.
@@ -250,8 +250,14 @@ TEST(BoundarySampledCurves, TorusMeridiansBoundABand)
   std::vector<PatchSnap> snaps;
   BscResult r;
   std::string error;
-  ASSERT_TRUE(SelectBySamples(
-    single, { { single.Positions[single.CurvePoints[0][0]], normal } }, 1e-3, 64, snaps, r, error))
+  ASSERT_TRUE(SelectBySamples(mesh,
+    single,
+    { { single.Positions[single.CurvePoints[0][0]], normal } },
+    1e-3,
+    64,
+    snaps,
+    r,
+    error))
     << error;
   EXPECT_EQ(r.Selected, std::vector<char>{ 0 });
   EXPECT_EQ(r.SampleOnBoundary, std::vector<char>{ 0 });
