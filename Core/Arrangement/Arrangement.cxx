@@ -320,7 +320,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   // from the local triangulation, where the points' places on the triangle are known, with
   // the half-edge index of crowded triangles (CrowdedHalfEdges).
   ZeroPageVector<unsigned char>& blocked = work.Blocked;
-  ResizeForEdits(blocked, refinedCount);
+  ResizeDiscardingForEdits(blocked, refinedCount); // pieces' entries are rewritten below
   std::vector<std::array<int, 3>>& pieceAcross = work.PieceAcross;
   ResizeForEdits(pieceAcross, refinedCount - nt + slots);
   work.CrowdedHalfEdges.resize(slots);

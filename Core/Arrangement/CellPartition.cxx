@@ -309,7 +309,7 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
     scratch.AtomicParent.reset(new std::atomic<int>[scratch.AtomicCapacity]);
   }
   std::atomic<int>* parent = scratch.AtomicParent.get();
-  ResizeForEdits(cellOfTriangle, count);
+  ResizeDiscardingForEdits(cellOfTriangle, count); // every entry is written below
   const int grain = 4096;
   tbb::parallel_for(tbb::blocked_range<int>(0, count, grain),
     [&](const tbb::blocked_range<int>& range)
@@ -519,10 +519,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   const std::vector<int>& dirtyTiles = buffers.DirtyTiles;
   // Node of each refined triangle of a dirty tile (entries of other triangles are stale).
   ZeroPageVector<int>& nodeOfTriangle = buffers.NodeOfTriangle;
-  if (static_cast<int>(nodeOfTriangle.size()) < count)
-  {
-    nodeOfTriangle.resize(EditCapacity(count));
-  }
+  ResizeDiscardingForEdits(nodeOfTriangle, count);
   // Nodes: tile k is node k (used only when clean), then the dirty tiles' refined triangles.
   std::vector<int>& key = buffers.NodeKey;
   key.resize(numberOfTiles);
@@ -745,7 +742,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   // written for the triangles of clean tiles (TriangleCellLookup reads their tile's cell).
   // Every parent is now a root, so these are independent writes, in parallel; the dirty tiles'
   // nodes keep their cells (NodeCell) for listing the cells' contents.
-  ResizeForEdits(looseCell, count);
+  ResizeDiscardingForEdits(looseCell, count); // the entries read are written below
   int* cell = looseCell.data();
   std::vector<int>& nodeCell = buffers.NodeCell;
   nodeCell.resize(nodes);
@@ -962,8 +959,9 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   PatchGraphBuffers& marks = buffers ? *buffers : localBuffers;
   if (marks.Visits.size() < positions.size())
   {
-    marks.Visits.resize(positions.size()); // zero pages, or entries reset at the end
-    marks.IsEnd.resize(positions.size());
+    // Zero pages, or entries reset at the end of the last call.
+    ResizeDiscardingForEdits(marks.Visits, positions.size());
+    ResizeDiscardingForEdits(marks.IsEnd, positions.size());
   }
   // Visits per point over all curves: a point visited twice is where curves meet (crossing,
   // touching, overlap end, or a curve meeting itself).

@@ -2,6 +2,8 @@
 #ifndef boolsurf_EditBuffers_h
 #define boolsurf_EditBuffers_h
 
+#include "Mesh/ZeroPageArray.h"
+
 #include <cstddef>
 
 namespace boolsurf
@@ -25,6 +27,23 @@ void ResizeForEdits(Vector& v, std::size_t n)
   if (n > v.capacity())
   {
     v.reserve(EditCapacity(n));
+  }
+  v.resize(n);
+}
+
+/// Resizes a zero-page buffer whose contents need not survive the call (scratch, or entries the
+/// caller rewrites before reading them) to `n` elements. Growing past the capacity takes a
+/// fresh block of EditCapacity(n) zero entries instead of copying the old ones: a copy would
+/// write every page of the new block (on 4.3M triangles, 17 MB and 8 ms in one edit, measured).
+/// Within the capacity, the entries keep their values (ZeroPageAllocator).
+template <class T>
+void ResizeDiscardingForEdits(ZeroPageVector<T>& v, std::size_t n)
+{
+  if (n > v.capacity())
+  {
+    ZeroPageVector<T> fresh;
+    fresh.reserve(EditCapacity(n));
+    v.swap(fresh);
   }
   v.resize(n);
 }

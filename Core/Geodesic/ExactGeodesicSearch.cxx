@@ -450,8 +450,13 @@ void ExactGeodesicSearch::Propagate(int id)
   const Window w = this->Windows[id];
   const int face = w.Face;
   const Triangle& tri = mesh.GetTriangle(face);
+  // The window's side of its face, by the edge's vertices (one vertex pair is one edge): edge
+  // ids are derived (TriangleMesh::GetEdgeId), and the vertices are needed below anyway.
+  const std::array<int, 2> ev = mesh.GetEdgeVertices(w.Edge);
   int k = 0;
-  while (k < 3 && mesh.GetEdgeId(face, k) != w.Edge)
+  while (k < 3 &&
+    !((tri[k] == ev[0] && tri[(k + 1) % 3] == ev[1]) ||
+      (tri[k] == ev[1] && tri[(k + 1) % 3] == ev[0])))
   {
     ++k;
   }
@@ -459,7 +464,6 @@ void ExactGeodesicSearch::Propagate(int id)
   {
     return;
   }
-  const std::array<int, 2> ev = mesh.GetEdgeVertices(w.Edge);
   const int c = tri[(k + 2) % 3];
   const Vec3 p0 = mesh.GetPosition(ev[0]), p1 = mesh.GetPosition(ev[1]);
   const Vec3 pc = mesh.GetPosition(c);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <limits>
 #include <utility>
 
 #include <tbb/parallel_for.h>
@@ -98,7 +99,6 @@ void TriangleMesh::BuildTwins()
 {
   const int nt = this->GetNumberOfTriangles();
   this->Twin.assign(3 * static_cast<size_t>(nt), -1);
-  this->HalfEdgeEdge.assign(3 * static_cast<size_t>(nt), -1);
   this->NonManifold.clear();
   this->Misoriented.clear();
   enum : std::uint8_t
@@ -232,7 +232,33 @@ void TriangleMesh::BuildTwins()
   const int edgeCount = blockFirstEdge[blocks];
   this->EdgeHalfEdge.assign(static_cast<size_t>(edgeCount), -1);
   this->NonManifoldValence.clear();
+  // Edge ids by rank: the owner bits of each 64 half-edges and the first edge id among them
+  // (triangle blocks hold 3 * 2^13 half-edges, a multiple of 64, so each rank block lies in
+  // one triangle block and is written by its thread).
+  this->EdgeRank.assign((3 * static_cast<size_t>(nt) + 63) / 64, OwnerBlock());
+  tbb::parallel_for(0,
+    blocks,
+    [&](int b)
+    {
+      const int begin = 3 * b * blockSize;
+      const int end = 3 * std::min(nt, (b + 1) * blockSize);
+      int edge = blockFirstEdge[b];
+      for (int first = begin; first < end; first += 64)
+      {
+        OwnerBlock& block = this->EdgeRank[first >> 6];
+        block.FirstEdge = edge;
+        for (int h = first; h < std::min(end, first + 64); ++h)
+        {
+          if (mark[h] == Owned)
+          {
+            block.Owners |= std::uint64_t(1) << (h - first);
+            ++edge;
+          }
+        }
+      }
+    });
   std::vector<std::vector<int>> blockSpecial(static_cast<size_t>(blocks)); // odd edges' owners
+  std::vector<std::vector<std::pair<int, int>>> blockLoose(static_cast<size_t>(blocks));
   std::vector<int> nextEdge(blockFirstEdge.begin(), blockFirstEdge.end() - 1);
   forEachBlock(
     [&](int b, int h, std::vector<Partner>& partners)
@@ -253,16 +279,26 @@ void TriangleMesh::BuildTwins()
       }
       const int e = nextEdge[b]++;
       this->EdgeHalfEdge[e] = h;
-      this->HalfEdgeEdge[h] = e;
-      for (const Partner& p : partners)
+      if (twin < 0)
       {
-        this->HalfEdgeEdge[p.HalfEdge] = e;
+        // The other half-edges of a non-manifold edge have no twin to find their owner by.
+        for (const Partner& p : partners)
+        {
+          blockLoose[b].emplace_back(p.HalfEdge, e);
+        }
       }
       if (partners.size() > 1 || (partners.size() == 1 && partners[0].SameDirection))
       {
         blockSpecial[b].push_back(h);
       }
     });
+
+  this->NonManifoldHalfEdge.clear();
+  for (const std::vector<std::pair<int, int>>& loose : blockLoose)
+  {
+    this->NonManifoldHalfEdge.insert(this->NonManifoldHalfEdge.end(), loose.begin(), loose.end());
+  }
+  std::sort(this->NonManifoldHalfEdge.begin(), this->NonManifoldHalfEdge.end());
 
   std::vector<Partner> partners;
   for (const std::vector<int>& special : blockSpecial)
@@ -279,7 +315,7 @@ void TriangleMesh::BuildTwins()
         continue;
       }
       this->NonManifoldValence.emplace_back(
-        this->HalfEdgeEdge[h], static_cast<int>(partners.size()) + 1); // in edge order
+        this->RankOfOwner(h), static_cast<int>(partners.size()) + 1); // in edge order
       NonManifoldEdge nm;
       nm.V0 = std::min(a, b);
       nm.V1 = std::max(a, b);
@@ -291,6 +327,23 @@ void TriangleMesh::BuildTwins()
       this->NonManifold.push_back(std::move(nm));
     }
   }
+}
+
+//------------------------------------------------------------------------------
+int TriangleMesh::GetLooseEdgeId(int h) const
+{
+  if (!this->Usable[h / 3])
+  {
+    return -1;
+  }
+  if (this->EdgeRank[h >> 6].Owners >> (h & 63) & 1)
+  {
+    return this->RankOfOwner(h); // a boundary edge, or the owner of a non-manifold one
+  }
+  const auto at = std::lower_bound(this->NonManifoldHalfEdge.begin(),
+    this->NonManifoldHalfEdge.end(),
+    std::make_pair(h, std::numeric_limits<int>::min()));
+  return at != this->NonManifoldHalfEdge.end() && at->first == h ? at->second : -1;
 }
 
 //------------------------------------------------------------------------------

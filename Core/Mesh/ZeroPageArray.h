@@ -65,10 +65,14 @@ struct ZeroPages
   }
 };
 
-/// Fixed-size array of a trivial type, zeroed, in zero pages (ZeroPages): a search state
-/// indexed by vertex or triangle, of which one search touches a small part (a short geodesic on
-/// a million-triangle mesh touches a few hundred entries), then costs memory and page faults
-/// for that part only. Readers must not rely on any value but zero before their own writes.
+/// Fixed-size array of a trivial type, zeroed, from calloc: a search state indexed by vertex or
+/// triangle, of which one search touches a small part (a short geodesic on a million-triangle
+/// mesh touches a few hundred entries). Where calloc maps fresh pages it costs memory and page
+/// faults for that part only; where it reuses freed memory it writes the zeros up front. Not
+/// ZeroPages: there every first touch of a page is a fault, about 45 us more per short leg
+/// through Trace Surface Curves on igea_1m (0.56 -> 0.61 ms, measured), where searches run
+/// many times over the same arrays. Readers must not rely on any value but zero before their
+/// own writes.
 template <class T>
 class ZeroPageArray
 {
@@ -85,19 +89,23 @@ public:
     this->Swap(other);
     return *this;
   }
-  ~ZeroPageArray() { ZeroPages::Free(this->Data, this->Size * sizeof(T)); }
+  ~ZeroPageArray() { std::free(this->Data); }
 
   /// n zeroed entries (the previous block is released).
   void Reset(std::size_t n)
   {
-    ZeroPages::Free(this->Data, this->Size * sizeof(T));
+    std::free(this->Data);
     this->Data = nullptr;
     this->Size = 0;
     if (n == 0)
     {
       return;
     }
-    this->Data = static_cast<T*>(ZeroPages::Allocate(n * sizeof(T)));
+    this->Data = static_cast<T*>(std::calloc(n, sizeof(T)));
+    if (!this->Data)
+    {
+      throw std::bad_alloc();
+    }
     this->Size = n;
   }
   /// Every entry back to zero (touches the whole block).

@@ -55,7 +55,7 @@ void RegionExtractor::EnsurePointMap(int numberOfPoints)
   // Room for an eighth more points: an edit adds or removes a few (EditBuffers.h).
   if (this->PointMap.size() < n)
   {
-    ResizeForEdits(this->PointMap, n); // the new entries are zero, or reset by the last call
+    ResizeDiscardingForEdits(this->PointMap, n); // zero, or reset by the last call
   }
 }
 
