@@ -51,8 +51,9 @@ void CurveTrace::DropRepeatedClosingPoint()
 }
 
 //------------------------------------------------------------------------------
-CurveTracer::CurveTracer(const TriangleMesh& mesh)
-  : Solver(mesh)
+CurveTracer::CurveTracer(const TriangleMesh& mesh,
+  std::shared_ptr<const TriangleComponents> components)
+  : Solver(mesh, std::move(components))
 {
 }
 

@@ -55,8 +55,10 @@ struct CurveTrace
 class CurveTracer
 {
 public:
-  /// `mesh` must outlive the tracer. One tracer per thread.
-  explicit CurveTracer(const TriangleMesh& mesh);
+  /// `mesh` must outlive the tracer. One tracer per thread. `components`: see
+  /// GeodesicPathSolver.
+  explicit CurveTracer(const TriangleMesh& mesh,
+    std::shared_ptr<const TriangleComponents> components = nullptr);
 
   /// De Casteljau subdivision levels for Beziers (default 4: 16 pieces per segment); clamped
   /// to [0, 16].

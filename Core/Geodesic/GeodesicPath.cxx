@@ -101,9 +101,10 @@ const char* GeodesicMethodName(GeodesicMethod method)
 }
 
 //------------------------------------------------------------------------------
-GeodesicPathSolver::GeodesicPathSolver(const TriangleMesh& mesh)
+GeodesicPathSolver::GeodesicPathSolver(const TriangleMesh& mesh,
+  std::shared_ptr<const TriangleComponents> components)
   : Mesh(mesh)
-  , Components(std::make_shared<TriangleComponents>(mesh))
+  , Components(components ? std::move(components) : std::make_shared<TriangleComponents>(mesh))
   , Exact(mesh)
 {
   // The edge-path and dual searches are built on first use (Edges(), Dual()): legs the exact

@@ -123,8 +123,10 @@ struct GeodesicPathStatistics
 class GeodesicPathSolver
 {
 public:
-  /// `mesh` must outlive the solver.
-  explicit GeodesicPathSolver(const TriangleMesh& mesh);
+  /// `mesh` must outlive the solver. `components`, when given, are the mesh's triangle
+  /// components already at hand (TriangleComponents of its MeshTopology), else computed.
+  explicit GeodesicPathSolver(const TriangleMesh& mesh,
+    std::shared_ptr<const TriangleComponents> components = nullptr);
 
   struct HelperTag
   {

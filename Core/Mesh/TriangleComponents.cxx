@@ -1,6 +1,7 @@
 #include "Mesh/TriangleComponents.h"
 
 #include "Mesh/ConcurrentUnionFind.h"
+#include "Mesh/MeshTopology.h"
 
 #include <atomic>
 #include <memory>
@@ -21,10 +22,21 @@ constexpr int BlockSize = 1 << 14;
 // Mesh/ConcurrentUnionFind): a set's root is its lowest triangle, so numbering the roots in
 // increasing order gives the components the ids a breadth-first pass from the lowest
 // unassigned triangle would, on any number of threads.
+TriangleComponents::TriangleComponents(std::shared_ptr<const MeshTopology> topology)
+  : Owner(topology, &topology->TriangleComponent)
+  , Component(topology->TriangleComponent.data())
+  , NumberOfComponents(topology->GetNumberOfComponents())
+{
+}
+
+//------------------------------------------------------------------------------
 TriangleComponents::TriangleComponents(const TriangleMesh& mesh)
 {
   const int nt = mesh.GetNumberOfTriangles();
-  this->Component.assign(nt, -1);
+  auto owned = std::make_shared<std::vector<int>>(nt, -1);
+  this->Owner = owned;
+  int* component = owned->data();
+  this->Component = component;
   if (nt == 0)
   {
     return;
@@ -59,7 +71,7 @@ TriangleComponents::TriangleComponents(const TriangleMesh& mesh)
   {
     if (mesh.IsUsable(t) && parent[t].load(std::memory_order_relaxed) == t)
     {
-      this->Component[t] = this->NumberOfComponents++;
+      component[t] = this->NumberOfComponents++;
     }
   }
   tbb::parallel_for(all,
@@ -70,7 +82,7 @@ TriangleComponents::TriangleComponents(const TriangleMesh& mesh)
         const int root = FindSet(parent.get(), t);
         if (mesh.IsUsable(t) && root != t) // roots were numbered above (and are read here)
         {
-          this->Component[t] = this->Component[root];
+          component[t] = component[root];
         }
       }
     });

@@ -5,23 +5,32 @@
 
 #include "Mesh/TriangleMesh.h"
 
+#include <memory>
 #include <vector>
 
 namespace boolsurf
 {
+
+struct MeshTopology;
 
 class TriangleComponents
 {
 public:
   /// Flood fill over TriangleMesh::GetNeighbor, components numbered by their lowest triangle.
   explicit TriangleComponents(const TriangleMesh& mesh);
+  /// The same components read from the topology of the same mesh, whose TriangleComponent is
+  /// this numbering (a breadth-first pass over GetNeighbor from the lowest unassigned
+  /// triangle): its array is shared, not computed again (a mesh-sized array, 17 MB on 4.3M
+  /// triangles).
+  explicit TriangleComponents(std::shared_ptr<const MeshTopology> topology);
 
   /// Component of usable triangle t; -1 if unusable.
   int GetComponent(int t) const { return this->Component[t]; }
   int GetNumberOfComponents() const { return this->NumberOfComponents; }
 
 private:
-  std::vector<int> Component;
+  std::shared_ptr<const std::vector<int>> Owner; ///< the array Component points into
+  const int* Component = nullptr;
   int NumberOfComponents = 0;
 };
 

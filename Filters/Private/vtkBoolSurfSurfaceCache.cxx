@@ -181,7 +181,10 @@ CurveTracer& vtkSurfaceCache::GetTracer()
 {
   if (!this->Tracer)
   {
-    this->Tracer = std::make_unique<CurveTracer>(*this->Surface->Mesh);
+    // The solver's triangle components are the topology's, shared.
+    this->Tracer = std::make_unique<CurveTracer>(*this->Surface->Mesh,
+      this->Surface->Topology ? std::make_shared<TriangleComponents>(this->Surface->Topology)
+                              : nullptr);
   }
   return *this->Tracer;
 }

@@ -1,3 +1,4 @@
+#include "Mesh/MeshTopology.h"
 #include "Mesh/ProceduralMeshes.h"
 #include "Mesh/TriangleComponents.h"
 #include "Mesh/TriangleMesh.h"
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -94,11 +96,17 @@ TEST(TriangleMesh, EdgesNumberedByLowestHalfEdgeOnAnyDefects)
   const TriangleMesh mesh(data.Positions, triangles);
 
   std::map<std::pair<int, int>, std::vector<int>> halfEdgesOf; // sorted vertex pair -> corners
+  int unusable = 0;
   for (std::size_t t = 0; t < nt; ++t)
   {
     const Triangle& tri = triangles[t];
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0])
     {
+      ++unusable;
+      for (int k = 0; k < 3; ++k)
+      {
+        EXPECT_EQ(mesh.GetEdgeId(static_cast<int>(t), k), -1) << "unusable triangle " << t;
+      }
       continue;
     }
     for (int k = 0; k < 3; ++k)
@@ -134,6 +142,7 @@ TEST(TriangleMesh, EdgesNumberedByLowestHalfEdgeOnAnyDefects)
   }
   EXPECT_GT(misoriented, 0);
   EXPECT_GT(nonManifold, 0);
+  EXPECT_GT(unusable, 0);
   EXPECT_EQ(static_cast<int>(mesh.GetMisorientedEdges().size()), misoriented);
   EXPECT_EQ(static_cast<int>(mesh.GetNonManifoldEdges().size()), nonManifold);
   // Reported in owner order, as a serial pass meets them.
@@ -203,8 +212,13 @@ TEST(TriangleComponents, NumberedByLowestTriangleAsABreadthFirstPass)
   }
   EXPECT_GE(count, 4) << "three tori, one cut in two, and isolated pieces";
   EXPECT_EQ(components.GetNumberOfComponents(), count);
+  // The topology's components are the same numbering, and can stand in for them.
+  const TriangleComponents fromTopology(
+    std::make_shared<const MeshTopology>(MeshTopology::Compute(mesh)));
+  EXPECT_EQ(fromTopology.GetNumberOfComponents(), count);
   for (int t = 0; t < nt; ++t)
   {
+    ASSERT_EQ(fromTopology.GetComponent(t), expected[t]) << "triangle " << t;
     ASSERT_EQ(components.GetComponent(t), expected[t]) << "triangle " << t;
   }
 }
