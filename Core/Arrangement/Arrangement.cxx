@@ -91,10 +91,8 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   if (!sameMesh)
   {
     // Fresh zero pages: an edit writes the entries of the triangles and edges curves touch.
-    work.State = ZeroPageVector<char>();
-    work.State.resize(nt);
-    work.MeshEdgeHasBlocked = ZeroPageVector<char>();
-    work.MeshEdgeHasBlocked.resize(mesh.GetNumberOfEdges());
+    AssignFreshZeroPages(work.State, nt);
+    AssignFreshZeroPages(work.MeshEdgeHasBlocked, mesh.GetNumberOfEdges());
   }
   else
   {
@@ -283,8 +281,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   ZeroPageVector<int>& refinedSlot = out.RefinedSlot;
   if (!layoutKept)
   {
-    refinedSlot = ZeroPageVector<int>(); // fresh zero pages: no triangle refined
-    refinedSlot.resize(nt);
+    AssignFreshZeroPages(refinedSlot, nt); // no triangle refined
     ParallelRange(arena,
       nt,
       [&](int t)

@@ -18,10 +18,6 @@ constexpr int BlockSize = 1 << 14;
 } // namespace
 
 //------------------------------------------------------------------------------
-// A parallel union-find over the manifold edges (each linked once, from its lower triangle;
-// Mesh/ConcurrentUnionFind): a set's root is its lowest triangle, so numbering the roots in
-// increasing order gives the components the ids a breadth-first pass from the lowest
-// unassigned triangle would, on any number of threads.
 TriangleComponents::TriangleComponents(std::shared_ptr<const MeshTopology> topology)
   : Owner(topology, &topology->TriangleComponent)
   , Component(topology->TriangleComponent.data())
@@ -30,6 +26,10 @@ TriangleComponents::TriangleComponents(std::shared_ptr<const MeshTopology> topol
 }
 
 //------------------------------------------------------------------------------
+// A parallel union-find over the manifold edges (each linked once, from its lower triangle;
+// Mesh/ConcurrentUnionFind): a set's root is its lowest triangle, so numbering the roots in
+// increasing order gives the components the ids a breadth-first pass from the lowest
+// unassigned triangle would, on any number of threads.
 TriangleComponents::TriangleComponents(const TriangleMesh& mesh)
 {
   const int nt = mesh.GetNumberOfTriangles();

@@ -80,32 +80,21 @@ class ZeroPageArray
     "ZeroPageArray holds plain values");
 
 public:
-  ZeroPageArray() = default;
-  ZeroPageArray(const ZeroPageArray&) = delete;
-  ZeroPageArray& operator=(const ZeroPageArray&) = delete;
-  ZeroPageArray(ZeroPageArray&& other) noexcept { this->Swap(other); }
-  ZeroPageArray& operator=(ZeroPageArray&& other) noexcept
-  {
-    this->Swap(other);
-    return *this;
-  }
-  ~ZeroPageArray() { std::free(this->Data); }
-
   /// n zeroed entries (the previous block is released).
   void Reset(std::size_t n)
   {
-    std::free(this->Data);
-    this->Data = nullptr;
+    this->Data.reset();
     this->Size = 0;
     if (n == 0)
     {
       return;
     }
-    this->Data = static_cast<T*>(std::calloc(n, sizeof(T)));
-    if (!this->Data)
+    T* block = static_cast<T*>(std::calloc(n, sizeof(T)));
+    if (!block)
     {
       throw std::bad_alloc();
     }
+    this->Data.reset(block);
     this->Size = n;
   }
   /// Every entry back to zero (touches the whole block).
@@ -113,22 +102,20 @@ public:
   {
     for (std::size_t i = 0; i < this->Size; ++i)
     {
-      this->Data[i] = T{};
+      this->Data.get()[i] = T{};
     }
   }
 
   std::size_t size() const { return this->Size; }
-  T& operator[](std::size_t i) { return this->Data[i]; }
-  const T& operator[](std::size_t i) const { return this->Data[i]; }
+  T& operator[](std::size_t i) { return this->Data.get()[i]; }
+  const T& operator[](std::size_t i) const { return this->Data.get()[i]; }
 
 private:
-  void Swap(ZeroPageArray& other) noexcept
+  struct Free
   {
-    std::swap(this->Data, other.Data);
-    std::swap(this->Size, other.Size);
-  }
-
-  T* Data = nullptr;
+    void operator()(T* p) const { std::free(p); }
+  };
+  std::unique_ptr<T, Free> Data;
   std::size_t Size = 0;
 };
 

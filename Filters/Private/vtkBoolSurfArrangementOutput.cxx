@@ -292,7 +292,12 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
     surface.Triangles,
     *surface.Mesh,
     np,
-    [&](vtkIdType p) { return arr.GetPointSurface(*surface.Mesh, static_cast<int>(p)); },
+    [&](vtkIdType p) // the surface points just written, not derived again
+    {
+      return SurfacePoint{
+        static_cast<int>(pointTriangle[p]), pointBarycentric[2 * p], pointBarycentric[2 * p + 1]
+      };
+    },
     compacted ? compactSource : arr.SourceTriangle,
     output);
   output->GetCellData()->AddArray(cellOf);

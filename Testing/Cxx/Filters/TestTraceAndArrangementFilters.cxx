@@ -404,4 +404,30 @@ TEST(ArrangementFilter, InputArraysAreCarriedToTheResult)
   }
   EXPECT_NEAR(signedArea, testutils::Area(region), 1e-12);
   EXPECT_NE(boundary->GetPointData()->GetArray("TriangleId"), nullptr);
+
+  // The same through the stage filters: Surface Arrangement's refined surface carries the
+  // field at every point, mesh vertices and curve points, on a first update and on an edit
+  // (which keeps the vertices' surface points from the update before).
+  vtkNew<vtkBoolSurfTraceCurves> trace;
+  trace->SetInputData(0, mesh);
+  trace->SetInputData(1, testutils::ToCurves({ a }));
+  vtkNew<vtkBoolSurfArrangement> arrangement;
+  arrangement->SetInputData(0, mesh);
+  arrangement->SetInputConnection(1, trace->GetOutputPort());
+  ControlPolygon moved{ { { 0.25, 0.2, 0 }, { 0.8, 0.35, 0 }, { 0.4, 0.85, 0 } }, 0, true };
+  for (const ControlPolygon& drawn : { a, moved })
+  {
+    trace->SetInputData(1, testutils::ToCurves({ drawn }));
+    arrangement->Update();
+    vtkPolyData* refined = arrangement->GetOutput(0);
+    ASSERT_GT(refined->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+    auto* carried = refined->GetPointData()->GetArray("Height");
+    ASSERT_NE(carried, nullptr);
+    for (vtkIdType p = 0; p < refined->GetNumberOfPoints(); ++p)
+    {
+      double x[3];
+      refined->GetPoint(p, x);
+      ASSERT_NEAR(carried->GetComponent(p, 0), 2 * x[0] - 3 * x[1] + 1, 1e-12) << "point " << p;
+    }
+  }
 }
