@@ -77,12 +77,12 @@ void BM_CrowdedTriangle(benchmark::State& state)
   int most = 0;
   for (int t = 0; t < arr.NumberOfMeshTriangles; ++t)
   {
-    most = std::max(most, CountRefinedTriangles(arr, t));
+    most = std::max(most, CountRefinedTriangles(mesh, arr, t));
   }
   const double n = static_cast<double>(state.iterations());
   state.counters["segments"] = static_cast<double>(segments);
   state.counters["refined_per_triangle"] = most;
-  state.counters["points"] = static_cast<double>(arr.Positions.size());
+  state.counters["points"] = static_cast<double>(arr.GetNumberOfPoints());
   state.counters["intersect_ms"] = intersect / n;
   state.counters["refine_ms"] = refine / n;
   state.counters["flood_ms"] = flood / n;

@@ -58,7 +58,7 @@ bool vtkBoolSurfCheckSurface::Execute(const std::vector<vtkPolyData*>& inputs,
   auto loopId = NamedIntArray("BoundaryLoopId", mesh.GetNumberOfVertices(), -1);
   for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
   {
-    loopId->SetValue(v, topo.VertexBoundaryLoop[v]);
+    loopId->SetValue(v, topo.GetVertexBoundaryLoop(v));
   }
   output->GetPointData()->AddArray(loopId);
 

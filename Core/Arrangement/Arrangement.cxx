@@ -75,11 +75,9 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   // results computes them in turn): whether they belong to this mesh, and whether this result's
   // first refined points already are this mesh's vertices, are two questions.
   const bool sameMesh = work.MeshSerial != 0 && work.MeshSerial == mesh.GetSerial();
-  const bool sameVertices = sameMesh && out.VerticesMeshSerial == mesh.GetSerial() &&
-    static_cast<int>(out.Positions.size()) >= nv;
   // Results are cleared, keeping their capacity (the next edit needs about as much).
-  // Triangles, SourceTriangle and the points keep their contents: an edit on the same mesh only
-  // rewrites the entries curves crossed before or cross now.
+  // RefinedSlot keeps its contents: an edit on the same mesh only rewrites the entries curves
+  // crossed before or cross now.
   out.NumberOfCells = 0;
   out.NumberOfRefinedSourceTriangles = 0;
   out.Patches.clear();
@@ -107,8 +105,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   }
   work.TouchedTriangles.clear();
   work.TouchedEdges.clear();
-  work.MeshSerial = 0;        // until the buffers are known clean again
-  out.VerticesMeshSerial = 0; // until the vertex part of the refined points is written again
+  work.MeshSerial = 0; // until the buffers are known clean again
 
   tbb::task_arena arena(options.Threads > 0 ? options.Threads : tbb::task_arena::automatic);
   const Clock::time_point start = Clock::now();
@@ -169,17 +166,12 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     newPointBase[s + 1] = newPointBase[s] + local[s].NumberOfNewPoints;
   }
   const int totalPoints = newPointBase[slots];
-  ResizeForEdits(out.Positions, totalPoints);
+  // Mesh vertices keep their ids and are not stored: the curves' points follow them.
+  ResizeForEdits(out.CurvePositions, totalPoints - nv);
   ResizeForEdits(out.CurvePointOnMesh, totalPoints - nv);
   ResizeForEdits(out.CurvePointSurface, totalPoints - nv);
   out.NumberOfMeshVertices = nv;
-  // Mesh vertices keep their ids: written once per mesh, then reused by every edit.
-  if (!sameVertices)
-  {
-    ParallelRange(arena, nv, [&](int v) { out.Positions[v] = mesh.GetPosition(v); });
-  }
   work.MeshSerial = mesh.GetSerial();
-  out.VerticesMeshSerial = mesh.GetSerial();
   ParallelFor(arena,
     edgePoints,
     [&](int i)
@@ -188,7 +180,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       c.Location = PointLocation::Edge;
       c.Id = map.EdgePoints[i].Edge;
       c.T = map.EdgePoints[i].T;
-      out.Positions[nv + i] = PositionOf(mesh, c);
+      out.CurvePositions[i] = PositionOf(mesh, c);
       out.CurvePointOnMesh[i] = c;
       out.CurvePointSurface[i] = ToSurfacePoint(mesh, c);
     });
@@ -211,7 +203,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         c.Id = a.Triangle;
         c.U = p.P.x;
         c.V = p.P.y;
-        out.Positions[p.Global] = mesh.Evaluate(a.Triangle, c.U, c.V);
+        out.CurvePositions[p.Global - nv] = mesh.Evaluate(a.Triangle, c.U, c.V);
         out.CurvePointOnMesh[p.Global - nv] = c;
         out.CurvePointSurface[p.Global - nv] = { a.Triangle, c.U, c.V };
       }
@@ -256,11 +248,12 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       blockedMeshSubEdges.insert(UndirectedPointPair(ids[k], ids[k + 1]));
     }
   }
-  // The refined triangles: the mesh's own, in place, then the extra pieces of the refined ones.
-  // On the mesh of the previous call only the entries it refined are restored and those this
-  // call refines written, so an edit costs what the curves cross, not the mesh's size.
+  // The refined triangles: the mesh's own, in place (read from the mesh), then the extra pieces
+  // of the refined ones. On the mesh of the previous call only the slots it refined are cleared
+  // and those this call refines written, so an edit costs what the curves cross, not the
+  // mesh's size.
   const bool layoutKept = out.LayoutMeshSerial != 0 && out.LayoutMeshSerial == mesh.GetSerial() &&
-    static_cast<int>(out.RefinedSlot.size()) == nt && static_cast<int>(out.Triangles.size()) >= nt;
+    static_cast<int>(out.RefinedSlot.size()) == nt;
   out.LayoutMeshSerial = 0; // until the layout is consistent again
   std::vector<int>& pieceOffset = out.PieceOffset;
   pieceOffset.resize(slots + 1);
@@ -276,20 +269,13 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     pieceOffset[s + 1] = pieceOffset[s] + static_cast<int>(local[s].Triangles.size()) - 1;
   }
   const int refinedCount = pieceOffset[slots];
-  ResizeForEdits(out.Triangles, refinedCount);
-  ResizeForEdits(out.SourceTriangle, refinedCount);
+  ResizeForEdits(out.FirstPieces, slots);
+  ResizeForEdits(out.AppendedPieces, refinedCount - nt);
+  ResizeForEdits(out.AppendedSources, refinedCount - nt);
   ZeroPageVector<int>& refinedSlot = out.RefinedSlot;
   if (!layoutKept)
   {
     AssignFreshZeroPages(refinedSlot, nt); // no triangle refined
-    ParallelRange(arena,
-      nt,
-      [&](int t)
-      {
-        const bool usable = mesh.IsUsable(t);
-        out.Triangles[t] = usable ? mesh.GetTriangle(t) : std::array<int, 3>{ -1, -1, -1 };
-        out.SourceTriangle[t] = usable ? t : -1;
-      });
     out.NumberOfHoles = 0;
     for (int t = 0; t < nt; ++t)
     {
@@ -300,8 +286,6 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   {
     for (int t : out.RefinedSources)
     {
-      out.Triangles[t] = mesh.GetTriangle(t);
-      out.SourceTriangle[t] = t;
       refinedSlot[t] = 0;
     }
   }
@@ -328,21 +312,31 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       const LocalArrangement& a = local[s];
       const int t = a.Triangle;
       const auto piece = [&](int i) { return i == 0 ? t : pieceOffset[s] + i - 1; };
+      thread_local std::vector<Triangle> pieces;
+      pieces.resize(a.Triangles.size());
       for (size_t i = 0; i < a.Triangles.size(); ++i)
       {
         const int r = piece(static_cast<int>(i));
         for (int j = 0; j < 3; ++j)
         {
-          out.Triangles[r][j] = a.Points[a.Triangles[i][j]].Global;
+          pieces[i][j] = a.Points[a.Triangles[i][j]].Global;
         }
-        out.SourceTriangle[r] = t;
+        if (i == 0)
+        {
+          out.FirstPieces[s] = pieces[0];
+        }
+        else
+        {
+          out.AppendedPieces[r - nt] = pieces[i];
+          out.AppendedSources[r - nt] = t;
+        }
         blocked[r] = a.Blocked[i];
       }
       const auto edgeBits = [&](int i, int j)
       { return a.Points[a.Alias[a.Triangles[i][j]]].Sides(); };
       SetPieceNeighbors(static_cast<int>(a.Triangles.size()),
         piece,
-        out.Triangles,
+        pieces.data(),
         edgeBits,
         &pieceAcross[pieceOffset[s] - nt + s],
         work.CrowdedHalfEdges[s]);
@@ -356,8 +350,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   view.Mesh = &mesh;
   view.SlotOfTriangle = &refinedSlot;
   view.PieceOffset = &pieceOffset;
-  view.Triangles = &out.Triangles;
-  view.SourceTriangle = &out.SourceTriangle;
+  view.Layout = &out;
   view.Refined = &state;
   view.Blocked = &blocked;
   view.BlockedMeshSubEdges = &blockedMeshSubEdges;
@@ -448,14 +441,15 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         }
         // The traced segment is straight on its triangle or edge: the fraction of its length
         // is the fraction of the way between its two traced points.
-        const Vec3& first = out.Positions[ids.front()];
-        const double whole = Distance(first, out.Positions[ids.back()]);
+        const Vec3 first = out.GetPosition(mesh, ids.front());
+        const double whole = Distance(first, out.GetPosition(mesh, ids.back()));
         for (size_t k = from; k < ids.size(); ++k)
         {
           rc.Points.push_back(ids[k]);
           const double f = k + 1 == ids.size()
             ? 1.0
-            : (whole > 0 ? std::min(1.0, Distance(first, out.Positions[ids[k]]) / whole) : 0.0);
+            : (whole > 0 ? std::min(1.0, Distance(first, out.GetPosition(mesh, ids[k])) / whole)
+                         : 0.0);
           stations.push_back(k == 0 ? traced : traced + f);
         }
         rc.SubEdgeSource.insert(rc.SubEdgeSource.end(), ids.size() - 1, source);
@@ -478,7 +472,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   out.NumberOfPatchGraphVertices = BuildPatchesAndCellGraph(view,
     curves,
     refinedCurves,
-    out.Positions,
+    out.CurvePositions,
     out.CurvePointSurface,
     out.GetCellLookup(),
     out.Patches,
@@ -501,7 +495,7 @@ void UpdateTriangleCells(const Arrangement& arr,
   WrittenTriangleCells& written,
   int threads)
 {
-  const int count = static_cast<int>(arr.Triangles.size());
+  const int count = arr.GetNumberOfTriangles();
   const MeshTiles* tiles = arr.Tiles.get();
   const int nt = arr.NumberOfMeshTriangles;
   if (!tiles || tiles->MeshSerial == 0 || written.TilesSerial != tiles->MeshSerial ||
@@ -543,7 +537,7 @@ void UpdateTriangleCells(const Arrangement& arr,
 //------------------------------------------------------------------------------
 void WriteTriangleCells(const Arrangement& arr, std::vector<int>& cells, int threads)
 {
-  const int count = static_cast<int>(arr.Triangles.size());
+  const int count = arr.GetNumberOfTriangles();
   ResizeForEdits(cells, count);
   const TriangleCellLookup lookup = arr.GetCellLookup();
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);

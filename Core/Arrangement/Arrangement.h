@@ -16,6 +16,7 @@
 #define boolsurf_Arrangement_h
 
 #include "Arrangement/CellPartition.h"
+#include "Arrangement/RefinedTriangles.h"
 #include "Geodesic/TracedCurve.h"
 
 #include <cstdint>
@@ -39,20 +40,33 @@ struct ArrangementStageTimes
   double Hash = 0, Intersections = 0, Refinement = 0, FloodFill = 0, CellGraph = 0, Total = 0;
 };
 
-struct Arrangement
+/// The refined triangles are the RefinedTriangles base (the pieces of what curves cross; the
+/// rest is the mesh's): read them with GetTriangle(mesh, r) and GetSourceTriangle(mesh, r).
+struct Arrangement : RefinedTriangles
 {
   // --- refined surface. Points: the mesh vertices (same ids), then the curve points on mesh
-  // edges, then the new points inside triangles.
-  std::vector<Vec3> Positions;
-  /// Canonical surface point of each refined point past the mesh's vertices (entry p - nv for
-  /// point p; a mesh vertex is its own canonical point, not stored: 32 bytes per vertex, 69 MB
-  /// on 4.3M triangles). Read any point with GetPointOnMesh.
+  // edges, then the new points inside triangles. Only the points past the mesh's vertices are
+  // stored (entry p - NumberOfMeshVertices): read any point with GetPosition, GetPointOnMesh
+  // and GetPointSurface.
+  std::vector<Vec3> CurvePositions;
+  /// Canonical surface point of each refined point past the mesh's vertices (a mesh vertex is
+  /// its own canonical point, not stored: 32 bytes per vertex, 69 MB on 4.3M triangles).
   std::vector<CanonicalPoint> CurvePointOnMesh;
-  /// Each refined point past the mesh's vertices as triangle + barycentric (u, v) (entry
-  /// p - nv; a mesh vertex's is derived from its corners, not stored: 24 bytes per vertex,
-  /// 52 MB on 4.3M triangles). Read any point with GetPointSurface.
+  /// Each refined point past the mesh's vertices as triangle + barycentric (u, v) (a mesh
+  /// vertex's is derived from its corners, not stored: 24 bytes per vertex, 52 MB on 4.3M
+  /// triangles).
   std::vector<SurfacePoint> CurvePointSurface;
   int NumberOfMeshVertices = 0; ///< refined points below it are the mesh's vertices
+  int GetNumberOfPoints() const
+  {
+    return this->NumberOfMeshVertices + static_cast<int>(this->CurvePositions.size());
+  }
+  /// Position of refined point p, on the mesh this arrangement was computed on.
+  Vec3 GetPosition(const TriangleMesh& mesh, int p) const
+  {
+    return p < this->NumberOfMeshVertices ? mesh.GetPosition(p)
+                                          : this->CurvePositions[p - this->NumberOfMeshVertices];
+  }
   /// Refined point p as triangle + barycentric, on the mesh this arrangement was computed on.
   SurfacePoint GetPointSurface(const TriangleMesh& mesh, int p) const
   {
@@ -71,25 +85,6 @@ struct Arrangement
     }
     return this->CurvePointOnMesh[p - this->NumberOfMeshVertices];
   }
-  //
-  // Refined triangles keep the mesh's indices, so that an edit writes only what the curves
-  // cross: refined triangle t (t below the mesh's triangle count) is mesh triangle t when no
-  // curve crosses it, else the first piece of its triangulation; the other pieces follow the
-  // mesh's triangles (see ForEachRefinedTriangle). An unusable mesh triangle's entry is a hole:
-  // corners -1, SourceTriangle -1, no cell.
-  std::vector<std::array<int, 3>> Triangles; ///< oriented like their source triangles
-  std::vector<int> SourceTriangle;           ///< mesh triangle each refined triangle comes from
-  int NumberOfMeshTriangles = 0;
-  int NumberOfHoles = 0; ///< unusable mesh triangles
-  /// Slot of mesh triangle t among the refined ones, -1 when unrefined.
-  int GetRefinedSlot(int t) const { return this->RefinedSlot[t] - 1; }
-  /// Per mesh triangle: 0 when unrefined, else s + 1, where s is its slot: its pieces other
-  /// than refined triangle t are [PieceOffset[s], PieceOffset[s + 1]) and RefinedSources[s] is
-  /// t. Zero pages (ZeroPageVector), so an edit writes the entries of what it refines only.
-  /// Read it with GetRefinedSlot().
-  ZeroPageVector<int> RefinedSlot;
-  std::vector<int> PieceOffset;
-  std::vector<int> RefinedSources;
   /// Cells: per clean tile of the mesh (-1 for tiles curves touch), and per refined triangle
   /// for the others; entries of LooseCell for clean tiles' triangles are stale. Read them with
   /// CellOfTriangle(), or all at once with WriteTriangleCells().
@@ -123,13 +118,8 @@ struct Arrangement
   /// not about one, so callers can name the point as their user knows it.
   int FailedCurve = -1, FailedPoint = -1;
 
-  /// The mesh whose vertices fill the first refined points (0: none yet): computing again into
-  /// the same Arrangement on the same mesh writes them only once.
-  std::uint64_t VerticesMeshSerial = 0;
-
-  /// The mesh whose triangles fill the first NumberOfMeshTriangles refined triangles outside
-  /// RefinedSources (0: none yet): an edit restores the entries the previous one refined and
-  /// writes those it refines, instead of all of them.
+  /// The mesh whose triangles RefinedSlot indexes (0: none yet): an edit clears the entries
+  /// the previous one refined and writes those it refines, instead of all of them.
   std::uint64_t LayoutMeshSerial = 0;
 
   /// Cell of refined triangle r (-1 for a hole).
@@ -154,14 +144,14 @@ struct Arrangement
 /// Calls f(r) for every refined triangle r of mesh triangle t (none for an unusable one), t
 /// itself first, then its other pieces in order.
 template <class F>
-void ForEachRefinedTriangle(const Arrangement& arr, int t, F f)
+void ForEachRefinedTriangle(const TriangleMesh& mesh, const Arrangement& arr, int t, F f)
 {
-  if (arr.SourceTriangle[t] < 0)
+  const int s = arr.GetRefinedSlot(t);
+  if (s < 0 && !mesh.IsUsable(t))
   {
     return;
   }
   f(t);
-  const int s = arr.GetRefinedSlot(t);
   if (s >= 0)
   {
     for (int r = arr.PieceOffset[s]; r < arr.PieceOffset[s + 1]; ++r)
@@ -172,11 +162,10 @@ void ForEachRefinedTriangle(const Arrangement& arr, int t, F f)
 }
 
 /// Number of refined triangles of mesh triangle t.
-inline int CountRefinedTriangles(const Arrangement& arr, int t)
+inline int CountRefinedTriangles(const TriangleMesh& mesh, const Arrangement& arr, int t)
 {
   const int s = arr.GetRefinedSlot(t);
-  return arr.SourceTriangle[t] < 0 ? 0
-                                   : (s < 0 ? 1 : 1 + arr.PieceOffset[s + 1] - arr.PieceOffset[s]);
+  return s >= 0 ? 1 + arr.PieceOffset[s + 1] - arr.PieceOffset[s] : (mesh.IsUsable(t) ? 1 : 0);
 }
 
 /// The cell of every refined triangle (-1 for holes), written in parallel: for outputs that

@@ -18,7 +18,7 @@ int RefinedSurfaceView::FindDirected(int t, int a, int b) const
 {
   auto holds = [&](int r)
   {
-    const std::array<int, 3>& v = (*this->Triangles)[r];
+    const Triangle v = this->Corners(r);
     return (v[0] == a && v[1] == b) || (v[1] == a && v[2] == b) || (v[2] == a && v[0] == b);
   };
   const int s = this->SlotOf(t);
@@ -49,8 +49,8 @@ int RefinedSurfaceView::FindDirected(int t, int a, int b) const
 int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
 {
   const TriangleMesh& mesh = *this->Mesh;
-  const int t = (*this->SourceTriangle)[r];
-  const std::array<int, 3>& v = (*this->Triangles)[r];
+  const int t = this->SourceOf(r);
+  const Triangle v = this->Corners(r);
   const int x = v[j], y = v[(j + 1) % 3];
   int k = j; // an unrefined triangle's edge j is the mesh edge j
   blocked = false;
@@ -169,25 +169,34 @@ void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles, int gr
     tiles.TileOfTriangle,
     tiles.Offset,
     tiles.Members);
-  std::vector<std::pair<int, int>> adjacent; // tile pairs (a < b) sharing an edge, distinct
-  for (int t = 0; t < nt; ++t)
+  // Tile pairs (a < b) sharing an edge, distinct, in order: gathered tile by tile, so that
+  // only the distinct pairs are kept (a list of every edge between tiles, sorted, was 10-20 MB
+  // of the first update at 4.3M triangles).
+  std::vector<std::pair<int, int>> adjacent;
+  std::vector<int> above; // the tiles above tile a next to it
+  for (int a = 0; a < tiles.GetNumberOfTiles(); ++a)
   {
-    for (int j = 0; j < 3; ++j)
+    above.clear();
+    for (int m = tiles.Offset[a]; m < tiles.Offset[a + 1]; ++m)
     {
-      const int n = mesh.GetNeighbor(t, j);
-      if (n < 0)
+      const int t = tiles.Members[m];
+      for (int j = 0; j < 3; ++j)
       {
-        continue;
-      }
-      const int a = tiles.TileOfTriangle[t], b = tiles.TileOfTriangle[n];
-      if (a >= 0 && b >= 0 && a < b)
-      {
-        adjacent.emplace_back(a, b);
+        const int n = mesh.GetNeighbor(t, j);
+        const int b = n < 0 ? -1 : tiles.TileOfTriangle[n];
+        if (b > a)
+        {
+          above.push_back(b);
+        }
       }
     }
+    std::sort(above.begin(), above.end());
+    above.erase(std::unique(above.begin(), above.end()), above.end());
+    for (int b : above)
+    {
+      adjacent.emplace_back(a, b);
+    }
   }
-  std::sort(adjacent.begin(), adjacent.end());
-  adjacent.erase(std::unique(adjacent.begin(), adjacent.end()), adjacent.end());
   BuildTileGroups(adjacent, groupSize, tiles);
 }
 
@@ -298,9 +307,9 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
   TileFloodBuffers& scratch)
 {
   const TriangleMesh& mesh = *surface.Mesh;
-  const int count = static_cast<int>(surface.Triangles->size());
+  const int count = surface.GetNumberOfTriangles();
   const int nt = mesh.GetNumberOfTriangles();
-  const int* source = surface.SourceTriangle->data();
+  const auto source = [&](int r) { return surface.SourceOf(r); };
   const char* state = surface.Refined->data();
   const Triangle* meshTriangles = mesh.GetTriangles().data();
   if (scratch.AtomicCapacity < static_cast<size_t>(count))
@@ -344,7 +353,7 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
       // The block's nodes: its own mesh triangles and the pieces appended for them.
       auto inBlock = [&](int y)
       {
-        const int t = y < nt ? y : source[y];
+        const int t = y < nt ? y : source(y);
         return t >= t0 && t < t1;
       };
       auto unite = [&](int x, int y)
@@ -430,7 +439,7 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
       {
         const int root = FindSet(parent, r);
         parent[r].store(root, std::memory_order_relaxed);
-        roots += root == r && source[r] >= 0; // not an unusable triangle's empty entry
+        roots += root == r && source(r) >= 0; // not an unusable triangle's empty entry
       }
       blockRoots[b + 1] = roots;
     });
@@ -450,7 +459,7 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
       int next = blockRoots[b];
       for (int r = b * blockSize; r < end; ++r)
       {
-        if (source[r] < 0)
+        if (source(r) < 0)
         {
           cellOfTriangle[r] = -1;
         }
@@ -511,7 +520,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   TileFloodBuffers& buffers)
 {
   const TriangleMesh& mesh = *surface.Mesh;
-  const int count = static_cast<int>(surface.Triangles->size());
+  const int count = surface.GetNumberOfTriangles();
   const char* state = surface.Refined->data();
   const int* tileOf = tiles.TileOfTriangle.data();
   const int numberOfTiles = tiles.GetNumberOfTiles();
@@ -575,7 +584,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   const int* keys = key.data();
   auto nodeOf = [&](int r)
   {
-    const int k = tileOf[(*surface.SourceTriangle)[r]];
+    const int k = tileOf[surface.SourceOf(r)];
     return dirty[k] ? nodeOfTriangle[r] : k;
   };
 
@@ -858,7 +867,7 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
   TileFloodBuffers& buffers,
   CellContents* contents)
 {
-  const int count = static_cast<int>(surface.Triangles->size());
+  const int count = surface.GetNumberOfTriangles();
   const int* tileOf = tiles.TileOfTriangle.data();
   const int numberOfTiles = tiles.GetNumberOfTiles();
   if (static_cast<int>(buffers.Dirty.size()) != numberOfTiles)
@@ -941,7 +950,7 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
 int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   const std::vector<TracedCurve>& curves,
   const std::vector<RefinedCurve>& refinedCurves,
-  const std::vector<Vec3>& positions,
+  const std::vector<Vec3>& curvePositions,
   const std::vector<SurfacePoint>& curvePointSurface,
   const TriangleCellLookup& cellOfTriangle,
   std::vector<ArrangementPatch>& patches,
@@ -950,6 +959,9 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
 {
   const TriangleMesh& mesh = *surface.Mesh;
   const int nv = mesh.GetNumberOfVertices();
+  const std::size_t numberOfPoints = nv + curvePositions.size();
+  const auto position = [&](int p)
+  { return p < nv ? mesh.GetPosition(p) : curvePositions[p - nv]; };
   patches.clear();
   arcs.clear();
 
@@ -957,11 +969,11 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   // at the end instead of filling arrays over every refined point on each edit.
   PatchGraphBuffers localBuffers;
   PatchGraphBuffers& marks = buffers ? *buffers : localBuffers;
-  if (marks.Visits.size() < positions.size())
+  if (marks.Visits.size() < numberOfPoints)
   {
     // Zero pages, or entries reset at the end of the last call.
-    ResizeDiscardingForEdits(marks.Visits, positions.size());
-    ResizeDiscardingForEdits(marks.IsEnd, positions.size());
+    ResizeDiscardingForEdits(marks.Visits, numberOfPoints);
+    ResizeDiscardingForEdits(marks.IsEnd, numberOfPoints);
   }
   // Visits per point over all curves: a point visited twice is where curves meet (crossing,
   // touching, overlap end, or a curve meeting itself).
@@ -1073,7 +1085,7 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
       markEnd(patch.Points.back());
       for (size_t k = 0; k + 1 < patch.Points.size(); ++k)
       {
-        patch.Length += Distance(positions[patch.Points[k]], positions[patch.Points[k + 1]]);
+        patch.Length += Distance(position(patch.Points[k]), position(patch.Points[k + 1]));
       }
       for (int p : patch.Points)
       {

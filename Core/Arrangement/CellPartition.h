@@ -19,6 +19,7 @@
 #define boolsurf_CellPartition_h
 
 #include "Arrangement/EdgeIndex.h"
+#include "Arrangement/RefinedTriangles.h"
 #include "Geodesic/TracedCurve.h"
 #include "Mesh/SurfacePoint.h"
 #include "Mesh/ZeroPageArray.h"
@@ -48,8 +49,11 @@ struct RefinedSurfaceView
   /// PieceOffset[s + 1]). Read it with SlotOf().
   const ZeroPageVector<int>* SlotOfTriangle = nullptr;
   const std::vector<int>* PieceOffset = nullptr;
-  const std::vector<std::array<int, 3>>* Triangles = nullptr;
-  const std::vector<int>* SourceTriangle = nullptr;
+  /// The refined triangles (the pieces; the rest read from Mesh).
+  const RefinedTriangles* Layout = nullptr;
+  Triangle Corners(int r) const { return this->Layout->GetTriangle(*this->Mesh, r); }
+  int SourceOf(int r) const { return this->Layout->GetSourceTriangle(*this->Mesh, r); }
+  int GetNumberOfTriangles() const { return this->Layout->GetNumberOfTriangles(); }
   /// Per source triangle: bit 0 (RefinedBit) when it was refined, bit 1 (BlockedEdgeBit) when
   /// one of its mesh edges carries a closed curve running along it.
   const ZeroPageVector<char>* Refined = nullptr;
@@ -180,14 +184,14 @@ void BuildTileGroups(const std::vector<std::pair<int, int>>& adjacent,
   MeshTiles& tiles);
 
 /// Fills RefinedSurfaceView::PieceAcross for the `count` pieces of one refined source triangle.
-/// `piece(i)`: the refined id of piece i (ForEachPiece order); `triangles`: the refined
-/// triangles (global point ids); `edgeBits(i, j)`: the local edges of the source triangle that
+/// `piece(i)`: the refined id of piece i (ForEachPiece order); `pieces[i]`: its corners (global
+/// point ids); `edgeBits(i, j)`: the local edges of the source triangle that
 /// vertex j of piece i lies on (bit k for edge k, two bits at a corner). `across` receives one
 /// entry per piece; `crowded` the triangle's entry of RefinedSurfaceView::CrowdedHalfEdges.
 template <class PieceId, class EdgeBits>
 void SetPieceNeighbors(int count,
   const PieceId& piece,
-  const std::vector<std::array<int, 3>>& triangles,
+  const Triangle* pieces,
   const EdgeBits& edgeBits,
   std::array<int, 3>* across,
   EdgeIndex& crowded)
@@ -204,7 +208,7 @@ void SetPieceNeighbors(int count,
     for (int i = 0; i < count; ++i)
     {
       const int r = piece(i);
-      const std::array<int, 3>& v = triangles[r];
+      const std::array<int, 3>& v = pieces[i];
       for (int j = 0; j < 3; ++j)
       {
         const std::uint64_t key = DirectedPointPair(v[j], v[(j + 1) % 3]);
@@ -221,7 +225,7 @@ void SetPieceNeighbors(int count,
   {
     for (int i = 0; i < count; ++i)
     {
-      corners[i] = triangles[piece(i)];
+      corners[i] = pieces[i];
     }
   }
   const auto holder = [&](int x, int y)
@@ -243,7 +247,7 @@ void SetPieceNeighbors(int count,
   };
   for (int i = 0; i < count; ++i)
   {
-    const std::array<int, 3>& v = isCrowded ? triangles[piece(i)] : corners[i];
+    const std::array<int, 3>& v = isCrowded ? pieces[i] : corners[i];
     const int bits[3] = { edgeBits(i, 0), edgeBits(i, 1), edgeBits(i, 2) };
     for (int j = 0; j < 3; ++j)
     {
@@ -387,12 +391,13 @@ struct PatchGraphBuffers
 
 /// Cuts the curves into patches and builds the cell graph (one arc per patch of a closed
 /// curve whose two sides are cells). Returns the number of patch-graph vertices (distinct
-/// patch end points). `curvePointSurface` holds the surface points of the refined points past
-/// the mesh's vertices (Arrangement::CurvePointSurface).
+/// patch end points). `curvePositions` and `curvePointSurface` hold the positions and surface
+/// points of the refined points past the mesh's vertices (Arrangement::CurvePositions,
+/// CurvePointSurface).
 int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
   const std::vector<TracedCurve>& curves,
   const std::vector<RefinedCurve>& refinedCurves,
-  const std::vector<Vec3>& positions,
+  const std::vector<Vec3>& curvePositions,
   const std::vector<SurfacePoint>& curvePointSurface,
   const TriangleCellLookup& cellOfTriangle,
   std::vector<ArrangementPatch>& patches,

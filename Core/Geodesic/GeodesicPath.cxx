@@ -109,8 +109,6 @@ GeodesicPathSolver::GeodesicPathSolver(const TriangleMesh& mesh,
 {
   // The edge-path and dual searches are built on first use (Edges(), Dual()): legs the exact
   // search answers need neither, and on millions of triangles they cost seconds to build.
-  this->StripPosition.Reset(mesh.GetNumberOfTriangles());
-  this->StripPositionStamp.Reset(mesh.GetNumberOfTriangles());
 }
 
 //------------------------------------------------------------------------------
@@ -119,8 +117,6 @@ GeodesicPathSolver::GeodesicPathSolver(const GeodesicPathSolver& main, HelperTag
   , Components(main.Components)
   , Exact(main.Mesh)
 {
-  this->StripPosition.Reset(main.Mesh.GetNumberOfTriangles());
-  this->StripPositionStamp.Reset(main.Mesh.GetNumberOfTriangles());
   this->CopySettings(main);
 }
 
@@ -907,25 +903,22 @@ void GeodesicPathSolver::TrimStrip(const CanonicalPoint& start, const CanonicalP
 
   // A strip that comes back to a triangle it already crossed holds a loop (rerouting a
   // vertex next to earlier reroutes can sweep all the way round it). The path can always take
-  // the short cut, so cut the loop out. StripPosition is mesh-sized but stamped, not cleared.
-  if (++this->PositionStamp == 0)
-  {
-    this->StripPositionStamp.Zero();
-    this->PositionStamp = 1;
-  }
+  // the short cut, so cut the loop out. Positions in a hash map of the strip's size: a
+  // mesh-sized stamped array per solver touched pages all over the mesh (scattered triangle
+  // ids), megabytes on a large mesh for a few hundred triangles per strip.
+  EdgeIndex& position = this->StripPosition;
+  position.Reset(this->Strip.size());
   size_t kept = 0;
   for (size_t i = 0; i < this->Strip.size(); ++i)
   {
     const int t = this->Strip[i];
-    const int seen = this->StripPosition[t];
-    if (this->StripPositionStamp[t] == this->PositionStamp && seen < static_cast<int>(kept) &&
-      this->Strip[seen] == t)
+    const int seen = position.Find(static_cast<EdgeIndex::Key>(t));
+    if (seen >= 0 && seen < static_cast<int>(kept) && this->Strip[seen] == t)
     {
       kept = seen + 1;
       continue;
     }
-    this->StripPositionStamp[t] = this->PositionStamp;
-    this->StripPosition[t] = static_cast<int>(kept);
+    position.Set(static_cast<EdgeIndex::Key>(t), static_cast<int>(kept));
     this->Strip[kept++] = t;
   }
   this->Strip.resize(kept);

@@ -31,6 +31,7 @@
 #ifndef boolsurf_GeodesicPath_h
 #define boolsurf_GeodesicPath_h
 
+#include "Arrangement/EdgeIndex.h"
 #include "Geodesic/DualGraphSearch.h"
 #include "Geodesic/EdgeGraphSearch.h"
 #include "Geodesic/ExactGeodesicSearch.h"
@@ -337,9 +338,7 @@ private:
   Vec2 StartPosition, EndPosition;
   std::vector<Corner> Corners;
   std::vector<PathPoint> Points;
-  ZeroPageArray<int> StripPosition;                // index in Strip, valid where stamped
-  ZeroPageArray<std::uint32_t> StripPositionStamp; // == PositionStamp: StripPosition is valid
-  std::uint32_t PositionStamp = 0;
+  EdgeIndex StripPosition; ///< triangle -> its index in Strip (keyed by triangle id)
 };
 
 /// The point at fraction t in [0, 1] of the path's length (t is clamped), found in the

@@ -65,12 +65,15 @@ std::vector<PatchPlace> PatchPlaces(const std::vector<ArrangementPatch>& patches
 }
 
 //------------------------------------------------------------------------------
-std::vector<int> CellComponents(const MeshTopology& topology, const Arrangement& arr)
+std::vector<int> CellComponents(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const Arrangement& arr)
 {
   std::vector<int> component(arr.NumberOfCells, 0);
   for (int c = 0; c < arr.NumberOfCells && c < static_cast<int>(arr.CellFirstTriangle.size()); ++c)
   {
-    component[c] = topology.TriangleComponent[arr.SourceTriangle[arr.CellFirstTriangle[c]]];
+    component[c] =
+      topology.TriangleComponent[arr.GetSourceTriangle(mesh, arr.CellFirstTriangle[c])];
   }
   return component;
 }
@@ -106,11 +109,12 @@ std::vector<int> ZeroCellCandidates(const TriangleMesh& mesh,
       // The refined triangle of t holding the boundary sub-edge that starts at vertex a
       // (mesh vertices keep their ids in the refined surface; the next point is b or a
       // point on edge e).
-      ForEachRefinedTriangle(arr,
+      ForEachRefinedTriangle(mesh,
+        arr,
         t,
         [&](int r)
         {
-          const auto& tri = arr.Triangles[r];
+          const Triangle tri = arr.GetTriangle(mesh, r);
           for (int k = 0; k < 3 && result[c] < 0; ++k)
           {
             const int next = tri[(k + 1) % 3];
@@ -148,7 +152,7 @@ LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
       place.Location,
       place.Direction });
   }
-  in.CellComponent = CellComponents(topology, arr);
+  in.CellComponent = CellComponents(mesh, topology, arr);
   in.ZeroCells = ZeroCellCandidates(mesh, topology, arr);
   return in;
 }
@@ -160,7 +164,7 @@ int CellAtSurfacePoint(const TriangleMesh& mesh, const Arrangement& arr, int t, 
   {
     return -1;
   }
-  if (CountRefinedTriangles(arr, t) <= 1)
+  if (CountRefinedTriangles(mesh, arr, t) <= 1)
   {
     return arr.CellOfTriangle(t);
   }
@@ -168,7 +172,8 @@ int CellAtSurfacePoint(const TriangleMesh& mesh, const Arrangement& arr, int t, 
   // contains the point, or the nearest one when rounding puts it just outside all.
   int best = -1;
   double bestScore = -1e300;
-  ForEachRefinedTriangle(arr,
+  ForEachRefinedTriangle(mesh,
+    arr,
     t,
     [&](int r)
     {
@@ -176,7 +181,7 @@ int CellAtSurfacePoint(const TriangleMesh& mesh, const Arrangement& arr, int t, 
       for (int k = 0; k < 3; ++k)
       {
         const std::array<double, 3> w =
-          WeightsInTriangle(mesh, arr.GetPointOnMesh(arr.Triangles[r][k]), t);
+          WeightsInTriangle(mesh, arr.GetPointOnMesh(arr.GetTriangle(mesh, r)[k]), t);
         x[k] = w[1];
         y[k] = w[2];
       }

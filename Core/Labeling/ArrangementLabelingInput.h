@@ -35,7 +35,9 @@ struct PatchPlace
 std::vector<PatchPlace> PatchPlaces(const std::vector<ArrangementPatch>& patches);
 
 /// Surface component of each cell (that of its lowest triangle).
-std::vector<int> CellComponents(const MeshTopology& topology, const Arrangement& arrangement);
+std::vector<int> CellComponents(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const Arrangement& arrangement);
 
 /// Per surface component, a cell touching its longest boundary loop, or -1 for closed
 /// components: the zero cell of the labeling (plugged holes are outside every shape).

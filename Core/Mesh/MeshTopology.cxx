@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <deque>
 
 namespace boolsurf
 {
@@ -14,13 +15,23 @@ namespace
 void ComputeComponents(const TriangleMesh& mesh, MeshTopology& topo)
 {
   const int nt = mesh.GetNumberOfTriangles();
-  topo.TriangleComponent.assign(nt, -1);
-  std::vector<char> flip(nt, 0);
-  std::vector<int> queue;
-  queue.reserve(nt);
+  // Zero pages: component 0, most surfaces' only one, is never written, so the array costs
+  // memory where a surface has other components or unusable triangles only (17 MB at 4.3M
+  // triangles). Bits and a queue that drops what it has visited (a breadth-first front is a
+  // small part of a surface) for the rest: a byte per triangle and a queue of every triangle
+  // were 21 MB more.
+  topo.TriangleComponent = ZeroPageVector<int>();
+  topo.TriangleComponent.resize(nt);
+  std::vector<bool> reached(nt, false), flip(nt, false);
+  std::deque<int> queue;
   for (int seed = 0; seed < nt; ++seed)
   {
-    if (!mesh.IsUsable(seed) || topo.TriangleComponent[seed] >= 0)
+    if (!mesh.IsUsable(seed))
+    {
+      topo.TriangleComponent[seed] = -1;
+      continue;
+    }
+    if (reached[seed])
     {
       continue;
     }
@@ -29,10 +40,15 @@ void ComputeComponents(const TriangleMesh& mesh, MeshTopology& topo)
     ComponentTopology& comp = topo.Components.back();
     queue.clear();
     queue.push_back(seed);
-    topo.TriangleComponent[seed] = c;
-    for (size_t head = 0; head < queue.size(); ++head)
+    reached[seed] = true;
+    if (c != 0)
     {
-      const int t = queue[head];
+      topo.TriangleComponent[seed] = c;
+    }
+    while (!queue.empty())
+    {
+      const int t = queue.front();
+      queue.pop_front();
       ++comp.Triangles;
       for (int k = 0; k < 3; ++k)
       {
@@ -45,10 +61,14 @@ void ComputeComponents(const TriangleMesh& mesh, MeshTopology& topo)
         const Triangle& tri = mesh.GetTriangle(t);
         const Triangle& ntri = mesh.GetTriangle(n);
         const bool same = ntri[mesh.GetNeighborEdge(t, k)] == tri[k];
-        const char nflip = static_cast<char>(flip[t] ^ (same ? 1 : 0));
-        if (topo.TriangleComponent[n] < 0)
+        const bool nflip = flip[t] != same;
+        if (!reached[n])
         {
-          topo.TriangleComponent[n] = c;
+          reached[n] = true;
+          if (c != 0)
+          {
+            topo.TriangleComponent[n] = c;
+          }
           flip[n] = nflip;
           queue.push_back(n);
         }
@@ -67,11 +87,11 @@ void ComputeComponents(const TriangleMesh& mesh, MeshTopology& topo)
 void ComputeFans(const TriangleMesh& mesh, MeshTopology& topo)
 {
   const int nv = mesh.GetNumberOfVertices();
-  topo.VertexFans.assign(nv, 0);
   const int blockSize = 1 << 14;
   const int blocks = (nv + blockSize - 1) / blockSize;
   // Per block: the component of each fan (one entry per fan), the non-manifold vertices.
-  std::vector<std::vector<int>> fanComponents(blocks), nonManifold(blocks);
+  std::vector<std::vector<std::pair<int, int>>> fanComponents(blocks);
+  std::vector<std::vector<int>> nonManifold(blocks);
   tbb::parallel_for(0,
     blocks,
     [&](int b)
@@ -132,10 +152,17 @@ void ComputeFans(const TriangleMesh& mesh, MeshTopology& topo)
         {
           if (find(i) == i) // one root per fan: credit the fan's component with a vertex
           {
-            fanComponents[b].push_back(topo.TriangleComponent[corners[i] / 3]);
+            // Runs of (component, fans): consecutive vertices are mostly in one component,
+            // so a block keeps a few runs instead of an entry per fan (8.6 MB at 4.3M).
+            std::vector<std::pair<int, int>>& runs = fanComponents[b];
+            const int c = topo.TriangleComponent[corners[i] / 3];
+            if (runs.empty() || runs.back().first != c)
+            {
+              runs.emplace_back(c, 0);
+            }
+            ++runs.back().second;
           }
         }
-        topo.VertexFans[v] = fans;
         if (fans > 1)
         {
           nonManifold[b].push_back(v);
@@ -144,9 +171,9 @@ void ComputeFans(const TriangleMesh& mesh, MeshTopology& topo)
     });
   for (int b = 0; b < blocks; ++b)
   {
-    for (int c : fanComponents[b])
+    for (const std::pair<int, int>& run : fanComponents[b])
     {
-      ++topo.Components[c].Vertices;
+      topo.Components[run.first].Vertices += run.second;
     }
     topo.NonManifoldVertices.insert(
       topo.NonManifoldVertices.end(), nonManifold[b].begin(), nonManifold[b].end());
@@ -184,8 +211,10 @@ int NextBoundaryHalfEdge(const TriangleMesh& mesh, int h)
 void ComputeBoundaryLoops(const TriangleMesh& mesh, MeshTopology& topo)
 {
   const int nt = mesh.GetNumberOfTriangles();
-  topo.VertexBoundaryLoop.assign(mesh.GetNumberOfVertices(), -1);
-  std::vector<char> visited(3 * static_cast<size_t>(nt), 0);
+  // Zero pages, loop + 1 written at boundary vertices only (Get/SetVertexBoundaryLoop).
+  topo.VertexBoundaryLoopPlusOne = ZeroPageVector<int>();
+  topo.VertexBoundaryLoopPlusOne.resize(mesh.GetNumberOfVertices());
+  std::vector<bool> visited(3 * static_cast<size_t>(nt), false); // bits: 13 MB as bytes at 4.3M
   auto isBoundary = [&](int h)
   {
     const int e = mesh.GetEdgeId(h / 3, h % 3);
@@ -220,9 +249,9 @@ void ComputeBoundaryLoops(const TriangleMesh& mesh, MeshTopology& topo)
       loop.Vertices.push_back(a);
       loop.HalfEdges.push_back(h);
       loop.Length += Distance(mesh.GetPosition(a), mesh.GetPosition(b));
-      if (topo.VertexBoundaryLoop[a] < 0)
+      if (topo.GetVertexBoundaryLoop(a) < 0)
       {
-        topo.VertexBoundaryLoop[a] = id;
+        topo.VertexBoundaryLoopPlusOne[a] = id + 1;
       }
       int next = NextBoundaryHalfEdge(mesh, h);
       if (next < 0 || visited[next])

@@ -9,6 +9,7 @@
 #define boolsurf_MeshTopology_h
 
 #include "Mesh/TriangleMesh.h"
+#include "Mesh/ZeroPageArray.h"
 
 #include <vector>
 
@@ -37,12 +38,18 @@ struct ComponentTopology
 
 struct MeshTopology
 {
-  std::vector<int> TriangleComponent; ///< -1 for unusable triangles
+  /// Per triangle, -1 for unusable ones. Zero pages (ZeroPageVector): on a surface of one
+  /// component only the unusable triangles' entries take memory.
+  ZeroPageVector<int> TriangleComponent;
   std::vector<ComponentTopology> Components;
   std::vector<BoundaryLoop> BoundaryLoops;
-  std::vector<int> VertexBoundaryLoop;  ///< loop of each vertex, -1 inside or unreferenced
-  std::vector<int> VertexFans;          ///< number of triangle fans at each vertex
+  /// Per vertex: its boundary loop + 1, 0 inside or unreferenced (zero pages: only boundary
+  /// vertices take memory). Read it with GetVertexBoundaryLoop().
+  ZeroPageVector<int> VertexBoundaryLoopPlusOne;
   std::vector<int> NonManifoldVertices; ///< vertices with more than one fan
+
+  /// Boundary loop of vertex v, -1 inside or unreferenced.
+  int GetVertexBoundaryLoop(int v) const { return this->VertexBoundaryLoopPlusOne[v] - 1; }
 
   int GetNumberOfComponents() const { return static_cast<int>(this->Components.size()); }
   int GetEulerCharacteristic() const;

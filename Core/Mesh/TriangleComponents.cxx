@@ -19,7 +19,7 @@ constexpr int BlockSize = 1 << 14;
 
 //------------------------------------------------------------------------------
 TriangleComponents::TriangleComponents(std::shared_ptr<const MeshTopology> topology)
-  : Owner(topology, &topology->TriangleComponent)
+  : Owner(topology)
   , Component(topology->TriangleComponent.data())
   , NumberOfComponents(topology->GetNumberOfComponents())
 {

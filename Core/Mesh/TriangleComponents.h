@@ -29,7 +29,7 @@ public:
   int GetNumberOfComponents() const { return this->NumberOfComponents; }
 
 private:
-  std::shared_ptr<const std::vector<int>> Owner; ///< the array Component points into
+  std::shared_ptr<const void> Owner; ///< what the array Component points into belongs to
   const int* Component = nullptr;
   int NumberOfComponents = 0;
 };

@@ -32,11 +32,12 @@ OffsetRegion MakeOffsetRegion(const TriangleMesh& mesh,
     {
       const int t = corner / 3;
       int found = -1;
-      ForEachRefinedTriangle(*arr,
+      ForEachRefinedTriangle(*m,
+        *arr,
         t,
         [&](int r)
         {
-          const std::array<int, 3>& tri = arr->Triangles[r];
+          const Triangle tri = arr->GetTriangle(*m, r);
           if (found < 0 && (tri[0] == v || tri[1] == v || tri[2] == v))
           {
             found = r;
@@ -50,9 +51,9 @@ OffsetRegion MakeOffsetRegion(const TriangleMesh& mesh,
     return false;
   };
   // Triangles left whole by the arrangement lie in one cell.
-  region.TriangleSide = [arr, cells](int t)
+  region.TriangleSide = [m, arr, cells](int t)
   {
-    if (CountRefinedTriangles(*arr, t) != 1)
+    if (CountRefinedTriangles(*m, *arr, t) != 1)
     {
       return 0;
     }

@@ -10,9 +10,9 @@ namespace boolsurf
 {
 
 //------------------------------------------------------------------------------
-PatchSnapper::PatchSnapper(const std::vector<Vec3>& positions,
+PatchSnapper::PatchSnapper(PointPositions positionOf,
   const std::vector<const std::vector<int>*>& patchPoints)
-  : Positions(positions)
+  : PositionOf(std::move(positionOf))
   , Points(patchPoints)
 {
   const double inf = std::numeric_limits<double>::infinity();
@@ -22,7 +22,7 @@ PatchSnapper::PatchSnapper(const std::vector<Vec3>& positions,
   {
     for (int p : *patchPoints[i])
     {
-      const Vec3 x = positions[p];
+      const Vec3 x = this->PositionOf(p);
       Vec3& lo = this->BoxMin[i];
       Vec3& hi = this->BoxMax[i];
       lo = { std::min(lo.x, x.x), std::min(lo.y, x.y), std::min(lo.z, x.z) };
@@ -50,7 +50,7 @@ PatchSnap PatchSnapper::Snap(Vec3 query, double tolerance) const
     const std::vector<int>& pts = *this->Points[i];
     for (std::size_t s = 0; s + 1 < pts.size(); ++s)
     {
-      const Vec3 a = this->Positions[pts[s]], b = this->Positions[pts[s + 1]];
+      const Vec3 a = this->PositionOf(pts[s]), b = this->PositionOf(pts[s + 1]);
       const Vec3 ab = b - a;
       const double len2 = Dot(ab, ab);
       double t = len2 > 0 ? Dot(query - a, ab) / len2 : 0;
@@ -152,7 +152,7 @@ Vec3 UnitTriangleNormal(Vec3 a, Vec3 b, Vec3 c)
 }
 
 //------------------------------------------------------------------------------
-bool SelectBySamples(const std::vector<Vec3>& positions,
+bool SelectBySamples(const PointPositions& positionOf,
   const std::vector<const std::vector<int>*>& patchPoints,
   const std::function<Vec3(int)>& normalOf,
   const std::vector<SampleQuery>& queries,
@@ -162,9 +162,9 @@ bool SelectBySamples(const std::vector<Vec3>& positions,
   BscResult& result,
   std::string& error)
 {
-  const PatchSnapper snapper(positions, patchPoints);
+  const PatchSnapper snapper(positionOf, patchPoints);
   if (!SnapSamples(snapper, queries, tolerance, snaps, error) ||
-    !OrientSamples(positions, patchPoints, queries, snaps, normalOf, input.Samples, error))
+    !OrientSamples(positionOf, patchPoints, queries, snaps, normalOf, input.Samples, error))
   {
     return false;
   }
@@ -192,20 +192,28 @@ bool SelectBySamples(const TriangleMesh& mesh,
   auto normalOf = [&](int p)
   {
     const int t = arr.GetPointSurface(mesh, p).Triangle;
-    if (t < 0 || t >= arr.NumberOfMeshTriangles || arr.SourceTriangle[t] < 0)
+    if (t < 0 || t >= arr.NumberOfMeshTriangles || arr.GetSourceTriangle(mesh, t) < 0)
     {
       return Vec3();
     }
-    const std::array<int, 3>& r = arr.Triangles[t]; // t itself or its first piece
-    return UnitTriangleNormal(arr.Positions[r[0]], arr.Positions[r[1]], arr.Positions[r[2]]);
+    const Triangle r = arr.GetTriangle(mesh, t); // t itself or its first piece
+    return UnitTriangleNormal(
+      arr.GetPosition(mesh, r[0]), arr.GetPosition(mesh, r[1]), arr.GetPosition(mesh, r[2]));
   };
   BscInput input;
   input.NumberOfCells = arr.NumberOfCells;
   input.Patches = BscPatchesOf(arr);
   input.MaxSearchStates = maxSearchStates;
   input.Abort = abort;
-  return SelectBySamples(
-    arr.Positions, points, normalOf, queries, tolerance, input, snaps, result, error);
+  return SelectBySamples([&](int p) { return arr.GetPosition(mesh, p); },
+    points,
+    normalOf,
+    queries,
+    tolerance,
+    input,
+    snaps,
+    result,
+    error);
 }
 
 } // namespace boolsurf

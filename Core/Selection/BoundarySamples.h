@@ -23,21 +23,25 @@ struct PatchSnap
   double Distance = 0;
 };
 
+/// The position of a point given by its id (a refined point of an arrangement, a point of a
+/// polydata).
+using PointPositions = std::function<Vec3(int)>;
+
 /// Nearest patch segment to a point, among patch polylines given as point-id lists. Each
 /// patch's bounding box is built once, so a query reads the segments of the patches near it.
 class PatchSnapper
 {
 public:
-  /// patchPoints[i]: patch i's point ids into `positions` (both must outlive the snapper).
-  PatchSnapper(const std::vector<Vec3>& positions,
-    const std::vector<const std::vector<int>*>& patchPoints);
+  /// patchPoints[i]: patch i's point ids (it must outlive the snapper); positionOf(id): the
+  /// point's position.
+  PatchSnapper(PointPositions positionOf, const std::vector<const std::vector<int>*>& patchPoints);
 
   /// Patch = -1 when no segment is within `tolerance`. Ties go to the lower patch, then
   /// segment.
   PatchSnap Snap(Vec3 query, double tolerance) const;
 
 private:
-  const std::vector<Vec3>& Positions;
+  PointPositions PositionOf;
   std::vector<const std::vector<int>*> Points;
   std::vector<Vec3> BoxMin, BoxMax;
 };
@@ -68,7 +72,7 @@ bool SnapSamples(const PatchSnapper& snapper,
 /// point (only the end points of the snapped segments are asked for). False with a message
 /// naming the sample whose direction runs along its curve.
 template <class NormalOf>
-bool OrientSamples(const std::vector<Vec3>& positions,
+bool OrientSamples(const PointPositions& positionOf,
   const std::vector<const std::vector<int>*>& patchPoints,
   const std::vector<SampleQuery>& queries,
   const std::vector<PatchSnap>& snaps,
@@ -81,8 +85,8 @@ bool OrientSamples(const std::vector<Vec3>& positions,
   {
     const std::vector<int>& pts = *patchPoints[snaps[k].Patch];
     const int a = pts[snaps[k].Segment], b = pts[snaps[k].Segment + 1];
-    const int side =
-      SideOfDirection(queries[k].Direction, positions[b] - positions[a], normalOf(a) + normalOf(b));
+    const int side = SideOfDirection(
+      queries[k].Direction, positionOf(b) - positionOf(a), normalOf(a) + normalOf(b));
     if (side == 0)
     {
       error = "sample " + std::to_string(k) + ": its Direction runs along patch " +
@@ -107,7 +111,7 @@ Vec3 UnitTriangleNormal(Vec3 a, Vec3 b, Vec3 c);
 /// segments' ends), select. `input` holds the patches (in the order of `patchPoints`), the
 /// number of cells and the search settings; its samples are filled here. False with a message
 /// naming the bad sample.
-bool SelectBySamples(const std::vector<Vec3>& positions,
+bool SelectBySamples(const PointPositions& positionOf,
   const std::vector<const std::vector<int>*>& patchPoints,
   const std::function<Vec3(int)>& normalOf,
   const std::vector<SampleQuery>& queries,

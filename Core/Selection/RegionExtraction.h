@@ -38,13 +38,13 @@ public:
     std::vector<int>& triangles,
     int threads = 0);
 
-  /// Renumbers the points of `triangles` (corner(t, k) = point id of corner k of triangle t,
-  /// below numberOfPoints) into `out`. `corner` is called from several threads on a large
-  /// region, so it must not write shared state.
-  template <class CornerOf>
+  /// Renumbers the points of `triangles` (cornersOf(t) = the point ids of triangle t's
+  /// corners, below numberOfPoints) into `out`. `cornersOf` is called from several threads on a
+  /// large region, so it must not write shared state.
+  template <class CornersOf>
   void Extract(const std::vector<int>& triangles,
     int numberOfPoints,
-    CornerOf corner,
+    CornersOf cornersOf,
     RegionMesh& out,
     int threads = 0)
   {
@@ -57,9 +57,10 @@ public:
       static_cast<int>(triangles.size()),
       [&](int i)
       {
+        const auto v = cornersOf(triangles[i]);
         for (int k = 0; k < 3; ++k)
         {
-          corners[3 * i + k] = corner(triangles[i], k);
+          corners[3 * i + k] = v[k];
         }
       },
       1024);

@@ -172,17 +172,20 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   EmptyPolyData(output);
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
   static_assert(sizeof(std::array<int, 3>) == 3 * sizeof(int), "triangles must be packed ints");
-  const vtkIdType np = static_cast<vtkIdType>(arr.Positions.size());
-  // Points, triangles and the per-triangle arrays read the arrangement in place: on a million
-  // triangles a copy is ~50 MB written per edit. VTK takes a triangle list as a connectivity
-  // array (the corners, as the arrangement stores them) and offsets 0, 3, 6, ..., which the
-  // result keeps and extends, with room for later edits, only when it grows. Cells are kept per
-  // tile by the arrangement: they are written out per triangle here.
+  const vtkIdType np = arr.GetNumberOfPoints();
+  // Points, triangles and the per-triangle arrays are written into the result's buffers, kept
+  // from edit to edit (RefinedSurfaceArrays: an edit rewrites what curves cross), and read in
+  // place by VTK: on a million triangles a fresh copy is ~50 MB written per edit. VTK takes a
+  // triangle list as a connectivity array (the corners, as the arrangement stores them) and offsets
+  // 0, 3, 6, ..., which the result keeps and extends, with room for later edits, only when it
+  // grows. Cells are kept per tile by the arrangement: they are written out per triangle here.
   std::vector<int>& triangleCells = *memory.TriangleCells;
   UpdateTriangleCells(arr, triangleCells, *memory.WrittenCells, threads);
-  const std::array<int, 3>* corners = arr.Triangles.data();
-  const int* sourceTriangle = arr.SourceTriangle.data();
-  vtkIdType nt = static_cast<vtkIdType>(arr.Triangles.size());
+  RefinedSurfaceArrays& whole = *memory.Surface;
+  whole.Update(*surface.Mesh, arr, threads);
+  const std::array<int, 3>* corners = whole.Triangles.data();
+  const int* sourceTriangle = whole.SourceTriangle.data();
+  vtkIdType nt = static_cast<vtkIdType>(whole.Triangles.size());
   // Unusable mesh triangles leave holes in the refined triangles (their entries name no point):
   // such meshes get compacted copies instead.
   std::vector<std::array<int, 3>> compactCorners;
@@ -192,10 +195,10 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
     std::vector<int> compactCells;
     for (vtkIdType r = 0; r < nt; ++r)
     {
-      if (arr.SourceTriangle[r] >= 0)
+      if (whole.SourceTriangle[r] >= 0)
       {
-        compactCorners.push_back(arr.Triangles[r]);
-        compactSource.push_back(arr.SourceTriangle[r]);
+        compactCorners.push_back(whole.Triangles[r]);
+        compactSource.push_back(whole.SourceTriangle[r]);
         compactCells.push_back(triangleCells[r]);
       }
     }
@@ -216,7 +219,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
       cellStarts[t] = static_cast<int>(3 * t);
     }
   }
-  auto coordinates = MakeArrayView<vtkDoubleArray>(&arr.Positions.data()->x, np, 3, memory.Owner);
+  auto coordinates = MakeArrayView<vtkDoubleArray>(&whole.Positions.data()->x, np, 3, memory.Owner);
   auto cellOffsets = MakeArrayView<vtkTypeInt32Array>(cellStarts.data(), nt + 1, 1, memory.Owner);
   vtkSmartPointer<vtkTypeInt32Array> connectivity;
   vtkSmartPointer<vtkIntArray> source;
@@ -298,7 +301,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
         static_cast<int>(pointTriangle[p]), pointBarycentric[2 * p], pointBarycentric[2 * p + 1]
       };
     },
-    compacted ? compactSource : arr.SourceTriangle,
+    compacted ? compactSource : whole.SourceTriangle,
     output);
   output->GetCellData()->AddArray(cellOf);
   output->GetCellData()->AddArray(source);
@@ -331,7 +334,7 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   AddField(fd, IntArray("CellGraphLocation", arcLocation));
   AddField(fd, IntArray("CellGraphDirection", arcDirection));
 
-  AddField(fd, IntArray("CellComponent", CellComponents(*surface.Topology, arr)));
+  AddField(fd, IntArray("CellComponent", CellComponents(*surface.Mesh, *surface.Topology, arr)));
   AddField(
     fd, IntArray("ZeroCellCandidates", ZeroCellCandidates(*surface.Mesh, *surface.Topology, arr)));
 

@@ -5,6 +5,7 @@
 #define vtkBoolSurfArrangementOutput_h
 
 #include "Arrangement/Arrangement.h"
+#include "Arrangement/RefinedSurfaceArrays.h"
 #include "Labeling/CellLabeling.h"
 #include "Selection/RegionBoundary.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
@@ -44,6 +45,8 @@ struct ArrangementMemory
   std::uint64_t* PointArraysMeshSerial = nullptr;
   std::vector<int>* TriangleCells = nullptr;
   WrittenTriangleCells* WrittenCells = nullptr;
+  /// The refined surface's points, triangles and source triangles, updated per edit.
+  RefinedSurfaceArrays* Surface = nullptr;
 };
 
 /// The arrangement stage: computes the arrangement of `curves` into `arrangement` (reusing

@@ -184,8 +184,15 @@ bool SelectSampledCells(vtkPolyData* refined,
     }
     return UnitTriangleNormal(corner[0], corner[1], corner[2]);
   };
-  return SelectBySamples(
-    positions, points, normalOf, queries, tolerance, input, snaps, result, error);
+  return SelectBySamples([&](int p) { return positions[p]; },
+    points,
+    normalOf,
+    queries,
+    tolerance,
+    input,
+    snaps,
+    result,
+    error);
 }
 
 //------------------------------------------------------------------------------

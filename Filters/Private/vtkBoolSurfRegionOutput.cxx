@@ -142,7 +142,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
     for (vtkIdType i = first; i < std::min<vtkIdType>(last, np); ++i)
     {
       const int p = mesh.Points[i];
-      const Vec3& x = arr.Positions[p];
+      const Vec3 x = arr.GetPosition(*surface.Mesh, p);
       xyz[3 * i] = x.x;
       xyz[3 * i + 1] = x.y;
       xyz[3 * i + 2] = x.z;
@@ -151,7 +151,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
     for (vtkIdType t = std::max<vtkIdType>(first, np) - np; t < last - np; ++t)
     {
       const int r = mesh.Triangles[t];
-      sourceTriangle[t] = arr.SourceTriangle[r];
+      sourceTriangle[t] = arr.GetSourceTriangle(*surface.Mesh, r);
       cellValue[t] = cellOf(r);
       sourceValue[t] = sourceTriangle[t];
     }

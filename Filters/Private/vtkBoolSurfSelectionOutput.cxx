@@ -39,8 +39,8 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
   RegionExtractor::SelectedTriangles(selected, arr, buffers.RegionTriangles, buffers.Threads);
   buffers.Extractor.Extract(
     buffers.RegionTriangles,
-    static_cast<int>(arr.Positions.size()),
-    [&](int t, int k) { return arr.Triangles[t][k]; },
+    arr.GetNumberOfPoints(),
+    [&](int t) { return arr.GetTriangle(*surface.Mesh, t); },
     buffers.Region,
     buffers.Threads);
   const Clock::time_point extracted = Clock::now();
@@ -50,9 +50,10 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
     loops,
     [&](int p, double x[3])
     {
-      x[0] = arr.Positions[p].x;
-      x[1] = arr.Positions[p].y;
-      x[2] = arr.Positions[p].z;
+      const Vec3 position = arr.GetPosition(*surface.Mesh, p);
+      x[0] = position.x;
+      x[1] = position.y;
+      x[2] = position.z;
     },
     [&](int p) { return arr.GetPointSurface(*surface.Mesh, p); },
     true,

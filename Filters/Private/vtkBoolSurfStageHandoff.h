@@ -18,6 +18,7 @@
 #define vtkBoolSurfStageHandoff_h
 
 #include "Arrangement/Arrangement.h"
+#include "Arrangement/RefinedSurfaceArrays.h"
 #include "Labeling/CellLabeling.h"
 #include "Selection/BoundaryControlPoints.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
@@ -79,8 +80,8 @@ struct ArrangementResult
   /// The traced curves' method (Bounded for curves read from arrays), for the control points.
   GeodesicMethod Method = GeodesicMethod::Bounded;
   boolsurf::Arrangement Arrangement;
-  /// What the refined surface's VTK arrays read in place besides the arrangement: the cell
-  /// offsets 0, 3, 6, ... and each point's TriangleId and Barycentric (ArrangementMemory).
+  /// What the refined surface's VTK arrays read in place: the points and triangles (Whole), the
+  /// cell offsets 0, 3, 6, ... and each point's TriangleId and Barycentric (ArrangementMemory).
   std::vector<int> CellOffsets;
   std::vector<vtkIdType> PointTriangle;
   std::vector<double> PointBarycentric;
@@ -89,6 +90,7 @@ struct ArrangementResult
   /// ArrangementCell array needs one per triangle.
   std::vector<int> TriangleCells;
   WrittenTriangleCells WrittenCells; ///< what TriangleCells holds per tile (edits rewrite less)
+  RefinedSurfaceArrays Whole; ///< port 0's points, triangles and sources (edits rewrite less)
 };
 
 /// Label Arrangement Cells -> Surface Boolean / Boundary Sampled Curves.

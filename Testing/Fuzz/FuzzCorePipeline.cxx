@@ -17,6 +17,7 @@
 #include "FuzzSupport.h"
 
 #include "Arrangement/Arrangement.h"
+#include "Arrangement/RefinedSurfaceArrays.h"
 #include "Geodesic/CurveTracer.h"
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Labeling/CellLabeling.h"
@@ -157,33 +158,41 @@ std::vector<DecodedCurve> DecodeCurves(ByteReader& in, int numberOfTriangles)
 }
 
 /// Area of the refined triangles of the selected cells.
-double RegionArea(const Arrangement& arr, const std::vector<char>& selected)
+double RegionArea(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const std::vector<char>& selected)
 {
   std::vector<int> triangles;
   RegionExtractor::SelectedTriangles(selected, arr, triangles);
   double area = 0;
   for (int r : triangles)
   {
-    BOOLSURF_FUZZ_CHECK(r >= 0 && r < static_cast<int>(arr.Triangles.size()), std::to_string(r));
-    const auto& tri = arr.Triangles[r];
-    area += TriangleArea(arr.Positions[tri[0]], arr.Positions[tri[1]], arr.Positions[tri[2]]);
+    BOOLSURF_FUZZ_CHECK(r >= 0 && r < arr.GetNumberOfTriangles(), std::to_string(r));
+    const Triangle tri = arr.GetTriangle(mesh, r);
+    area += TriangleArea(
+      arr.GetPosition(mesh, tri[0]), arr.GetPosition(mesh, tri[1]), arr.GetPosition(mesh, tri[2]));
   }
   return area;
 }
 
 void CheckArrangement(const TriangleMesh& mesh, const Arrangement& arr, double surfaceArea)
 {
-  const int points = static_cast<int>(arr.Positions.size());
-  const std::size_t refined = arr.Triangles.size();
+  // The whole refined surface as an output writes it (RefinedSurfaceArrays).
+  const RefinedSurfaceArrays whole = RefinedSurfaceArrays::Of(mesh, arr);
+  const int points = arr.GetNumberOfPoints();
+  const std::size_t refined = arr.GetNumberOfTriangles();
+  BOOLSURF_FUZZ_CHECK(
+    whole.Positions.size() == static_cast<std::size_t>(points) && whole.Triangles.size() == refined,
+    "whole arrays size");
   std::vector<int> cells;
   WriteTriangleCells(arr, cells);
   BOOLSURF_FUZZ_CHECK(cells.size() == refined, "cells size");
   int holes = 0;
-  BOOLSURF_FUZZ_CHECK(arr.SourceTriangle.size() == refined, "SourceTriangle size");
+  BOOLSURF_FUZZ_CHECK(whole.SourceTriangle.size() == refined, "SourceTriangle size");
   BOOLSURF_FUZZ_CHECK(arr.NumberOfMeshVertices == mesh.GetNumberOfVertices() &&
-      arr.CurvePointOnMesh.size() + arr.NumberOfMeshVertices == arr.Positions.size(),
+      arr.CurvePointOnMesh.size() + arr.NumberOfMeshVertices == whole.Positions.size(),
     "CurvePointOnMesh size");
-  for (const Vec3& p : arr.Positions)
+  for (const Vec3& p : whole.Positions)
   {
     BOOLSURF_FUZZ_CHECK(
       std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z), "non-finite refined point");
@@ -194,23 +203,23 @@ void CheckArrangement(const TriangleMesh& mesh, const Arrangement& arr, double s
     if (static_cast<int>(r) < mesh.GetNumberOfTriangles() && !mesh.IsUsable(static_cast<int>(r)))
     {
       // An unusable mesh triangle keeps its index as a hole: no points, no source, no cell.
-      BOOLSURF_FUZZ_CHECK(arr.SourceTriangle[r] < 0 && cells[r] < 0 && arr.Triangles[r][0] < 0,
+      BOOLSURF_FUZZ_CHECK(whole.SourceTriangle[r] < 0 && cells[r] < 0 && whole.Triangles[r][0] < 0,
         "hole " + std::to_string(r));
       ++holes;
       continue;
     }
-    for (int v : arr.Triangles[r])
+    for (int v : whole.Triangles[r])
     {
       BOOLSURF_FUZZ_CHECK(v >= 0 && v < points, "refined triangle " + std::to_string(r));
     }
     const int cell = cells[r];
     BOOLSURF_FUZZ_CHECK(cell >= 0 && cell < arr.NumberOfCells, "cell " + std::to_string(cell));
-    const int source = arr.SourceTriangle[r];
+    const int source = whole.SourceTriangle[r];
     BOOLSURF_FUZZ_CHECK(
       source >= 0 && source < mesh.GetNumberOfTriangles() && mesh.IsUsable(source),
       "source " + std::to_string(source));
-    const auto& tri = arr.Triangles[r];
-    area += TriangleArea(arr.Positions[tri[0]], arr.Positions[tri[1]], arr.Positions[tri[2]]);
+    const auto& tri = whole.Triangles[r];
+    area += TriangleArea(whole.Positions[tri[0]], whole.Positions[tri[1]], whole.Positions[tri[2]]);
   }
   BOOLSURF_FUZZ_CHECK(holes == arr.NumberOfHoles, "hole count");
   // Unsigned areas: a folded or overlapping refinement has more area, a gap less.
@@ -360,7 +369,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   BOOLSURF_FUZZ_CHECK(selected.size() == static_cast<std::size_t>(arr.NumberOfCells) &&
       rest.size() == selected.size(),
     "selection size");
-  const double area = RegionArea(arr, selected), restArea = RegionArea(arr, rest);
+  const double area = RegionArea(mesh, arr, selected), restArea = RegionArea(mesh, arr, rest);
   BOOLSURF_FUZZ_CHECK(area <= surfaceArea * (1 + 1e-9), std::to_string(area));
   BOOLSURF_FUZZ_CHECK(std::fabs(area + restArea - surfaceArea) <= 1e-9 * surfaceArea,
     text + ": " + std::to_string(area) + " + " + std::to_string(restArea) + " vs " +
@@ -372,10 +381,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   RegionExtractor extractor;
   RegionMesh region;
   extractor.Extract(
-    triangles,
-    static_cast<int>(arr.Positions.size()),
-    [&](int t, int k) { return arr.Triangles[t][k]; },
-    region);
+    triangles, arr.GetNumberOfPoints(), [&](int t) { return arr.GetTriangle(mesh, t); }, region);
   BOOLSURF_FUZZ_CHECK(region.Connectivity.size() == 3 * triangles.size(), "region size");
   for (int p : region.Connectivity)
   {
@@ -385,7 +391,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     for (int p : line.Points)
     {
-      BOOLSURF_FUZZ_CHECK(p >= 0 && p < static_cast<int>(arr.Positions.size()), "boundary point");
+      BOOLSURF_FUZZ_CHECK(p >= 0 && p < arr.GetNumberOfPoints(), "boundary point");
     }
   }
   Reached(arr.NumberOfCells > 1 ? "region (several cells)" : "region (one cell)");

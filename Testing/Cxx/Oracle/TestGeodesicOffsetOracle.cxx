@@ -501,13 +501,14 @@ std::unique_ptr<Labeled> Label(const TriangleMesh& mesh,
   {
     out->Selected[c] = out->Labels.GetLabel(c, 0) != 0;
   }
-  for (size_t r = 0; r < out->Arr.Triangles.size(); ++r)
+  for (size_t r = 0; r < static_cast<size_t>(out->Arr.GetNumberOfTriangles()); ++r)
   {
     if (out->Selected[out->Arr.CellOfTriangle(static_cast<int>(r))])
     {
-      const auto& t = out->Arr.Triangles[r];
-      out->Area +=
-        TriangleArea(out->Arr.Positions[t[0]], out->Arr.Positions[t[1]], out->Arr.Positions[t[2]]);
+      const auto& t = out->Arr.GetTriangle(mesh, r);
+      out->Area += TriangleArea(out->Arr.GetPosition(mesh, t[0]),
+        out->Arr.GetPosition(mesh, t[1]),
+        out->Arr.GetPosition(mesh, t[2]));
     }
   }
   return out;

@@ -4,6 +4,7 @@
 #define boolsurf_ArrangementTestUtils_h
 
 #include "Arrangement/Arrangement.h"
+#include "Arrangement/RefinedSurfaceArrays.h"
 #include "Mesh/ProceduralMeshes.h"
 #include "Mesh/TriangleMesh.h"
 #include "Support/SyntheticCurves.h"
@@ -40,14 +41,15 @@ inline double SignedPlanarArea(const Vec3& a, const Vec3& b, const Vec3& c)
   return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
 }
 
-inline std::vector<double> CellAreas(const Arrangement& arr)
+inline std::vector<double> CellAreas(const TriangleMesh& mesh, const Arrangement& arr)
 {
+  const RefinedSurfaceArrays whole = RefinedSurfaceArrays::Of(mesh, arr);
   std::vector<double> areas(arr.NumberOfCells, 0.0);
-  for (size_t r = 0; r < arr.Triangles.size(); ++r)
+  for (size_t r = 0; r < whole.Triangles.size(); ++r)
   {
-    const auto& t = arr.Triangles[r];
+    const auto& t = whole.Triangles[r];
     areas[arr.CellOfTriangle(static_cast<int>(r))] +=
-      TriangleArea(arr.Positions[t[0]], arr.Positions[t[1]], arr.Positions[t[2]]);
+      TriangleArea(whole.Positions[t[0]], whole.Positions[t[1]], whole.Positions[t[2]]);
   }
   return areas;
 }
@@ -55,12 +57,13 @@ inline std::vector<double> CellAreas(const Arrangement& arr)
 /// Every refined triangle's pieces sum to its source's area, and cells sum to the mesh area.
 inline void ExpectAreasConserved(const TriangleMesh& mesh, const Arrangement& arr)
 {
+  const RefinedSurfaceArrays whole = RefinedSurfaceArrays::Of(mesh, arr);
   std::vector<double> pieces(mesh.GetNumberOfTriangles(), 0.0);
-  for (size_t r = 0; r < arr.Triangles.size(); ++r)
+  for (size_t r = 0; r < whole.Triangles.size(); ++r)
   {
-    const auto& t = arr.Triangles[r];
-    pieces[arr.SourceTriangle[r]] +=
-      TriangleArea(arr.Positions[t[0]], arr.Positions[t[1]], arr.Positions[t[2]]);
+    const auto& t = whole.Triangles[r];
+    pieces[whole.SourceTriangle[r]] +=
+      TriangleArea(whole.Positions[t[0]], whole.Positions[t[1]], whole.Positions[t[2]]);
   }
   double total = 0.0;
   for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
@@ -70,7 +73,7 @@ inline void ExpectAreasConserved(const TriangleMesh& mesh, const Arrangement& ar
     total += a;
     EXPECT_NEAR(pieces[t], a, 1e-9 * a) << "source triangle " << t;
   }
-  const std::vector<double> cells = CellAreas(arr);
+  const std::vector<double> cells = CellAreas(mesh, arr);
   const double sum = std::accumulate(cells.begin(), cells.end(), 0.0);
   EXPECT_NEAR(sum, total, 1e-9 * total);
   for (double c : cells)
@@ -83,11 +86,12 @@ inline void ExpectAreasConserved(const TriangleMesh& mesh, const Arrangement& ar
 /// Euler characteristic as the input.
 inline void ExpectConforming(const TriangleMesh& mesh, const Arrangement& arr)
 {
-  TriangleMesh refined(arr.Positions, arr.Triangles);
+  const RefinedSurfaceArrays whole = RefinedSurfaceArrays::Of(mesh, arr);
+  TriangleMesh refined(whole.Positions, whole.Triangles);
   EXPECT_TRUE(refined.GetNonManifoldEdges().empty());
   EXPECT_TRUE(refined.GetMisorientedEdges().empty());
   std::set<int> used;
-  for (const auto& t : arr.Triangles)
+  for (const auto& t : whole.Triangles)
     used.insert(t.begin(), t.end());
   const int chiIn =
     mesh.GetNumberOfVertices() - mesh.GetNumberOfEdges() + mesh.GetNumberOfTriangles();
@@ -182,20 +186,20 @@ inline TracedCurve TraceOrDie(const FlatPolygonTracer& tracer,
 /// Independent check of the partition: a sequential breadth-first flood fill over refined
 /// triangles sharing an edge (exactly two of them) that no closed patch runs along, seeded in
 /// triangle order, must give exactly the arrangement's cells.
-inline void ExpectCellsAreFloodFill(const Arrangement& arr)
+inline void ExpectCellsAreFloodFill(const TriangleMesh& mesh, const Arrangement& arr)
 {
+  const std::vector<Triangle> triangles = RefinedSurfaceArrays::Of(mesh, arr).Triangles;
   auto key = [](int a, int b)
   {
     return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
       static_cast<std::uint32_t>(std::max(a, b));
   };
   std::unordered_map<std::uint64_t, std::vector<int>> edgeTriangles;
-  for (size_t r = 0; r < arr.Triangles.size(); ++r)
+  for (size_t r = 0; r < triangles.size(); ++r)
   {
     for (int j = 0; j < 3; ++j)
     {
-      edgeTriangles[key(arr.Triangles[r][j], arr.Triangles[r][(j + 1) % 3])].push_back(
-        static_cast<int>(r));
+      edgeTriangles[key(triangles[r][j], triangles[r][(j + 1) % 3])].push_back(static_cast<int>(r));
     }
   }
   std::set<std::uint64_t> cut;
@@ -206,9 +210,9 @@ inline void ExpectCellsAreFloodFill(const Arrangement& arr)
       cut.insert(key(p.Points[k], p.Points[k + 1]));
     }
   }
-  std::vector<int> cell(arr.Triangles.size(), -1);
+  std::vector<int> cell(triangles.size(), -1);
   int cells = 0;
-  for (size_t seed = 0; seed < arr.Triangles.size(); ++seed)
+  for (size_t seed = 0; seed < triangles.size(); ++seed)
   {
     if (cell[seed] >= 0)
     {
@@ -221,7 +225,7 @@ inline void ExpectCellsAreFloodFill(const Arrangement& arr)
       const int r = queue[head];
       for (int j = 0; j < 3; ++j)
       {
-        const std::uint64_t e = key(arr.Triangles[r][j], arr.Triangles[r][(j + 1) % 3]);
+        const std::uint64_t e = key(triangles[r][j], triangles[r][(j + 1) % 3]);
         const std::vector<int>& around = edgeTriangles[e];
         if (around.size() != 2 || cut.count(e))
         {
@@ -242,7 +246,7 @@ inline void ExpectCellsAreFloodFill(const Arrangement& arr)
   WriteTriangleCells(arr, cellOf);
   EXPECT_TRUE(cell == cellOf) << "partition differs from a sequential flood fill";
   // Each cell's contents (clean tiles, loose triangles) list exactly its triangles, once.
-  std::vector<int> listed(arr.Triangles.size(), -1);
+  std::vector<int> listed(triangles.size(), -1);
   int twice = 0;
   for (int c = 0; c < arr.NumberOfCells; ++c)
   {
@@ -267,7 +271,7 @@ inline Arrangement ArrangeOrDie(const TriangleMesh& mesh,
   ArrangementOptions options;
   options.Threads = threads;
   EXPECT_TRUE(ComputeArrangement(mesh, curves, options, arr, error)) << error;
-  ExpectCellsAreFloodFill(arr);
+  ExpectCellsAreFloodFill(mesh, arr);
   return arr;
 }
 

@@ -20,7 +20,7 @@ int LeftCellOfCurve(const Arrangement& arr, int curve)
 }
 
 // Two arrangements of the same curves on the same mesh are identical, bit for bit.
-void ExpectSameArrangement(const Arrangement& a, const Arrangement& b)
+void ExpectSameArrangement(const TriangleMesh& mesh, const Arrangement& a, const Arrangement& b)
 {
   EXPECT_EQ(a.NumberOfCells, b.NumberOfCells);
   std::vector<int> cellsA, cellsB;
@@ -30,12 +30,17 @@ void ExpectSameArrangement(const Arrangement& a, const Arrangement& b)
   EXPECT_EQ(a.CellFirstTriangle, b.CellFirstTriangle);
   EXPECT_EQ(a.RefinedSlot, b.RefinedSlot);
   EXPECT_EQ(a.PieceOffset, b.PieceOffset);
-  EXPECT_EQ(a.Triangles, b.Triangles);
-  EXPECT_EQ(a.SourceTriangle, b.SourceTriangle);
-  ASSERT_EQ(a.Positions.size(), b.Positions.size());
-  for (size_t i = 0; i < b.Positions.size(); ++i)
+  EXPECT_EQ(a.FirstPieces, b.FirstPieces);
+  EXPECT_EQ(a.AppendedPieces, b.AppendedPieces);
+  EXPECT_EQ(a.AppendedSources, b.AppendedSources);
+  const RefinedSurfaceArrays wholeA = RefinedSurfaceArrays::Of(mesh, a);
+  const RefinedSurfaceArrays wholeB = RefinedSurfaceArrays::Of(mesh, b);
+  EXPECT_EQ(wholeA.Triangles, wholeB.Triangles);
+  EXPECT_EQ(wholeA.SourceTriangle, wholeB.SourceTriangle);
+  ASSERT_EQ(wholeA.Positions.size(), wholeB.Positions.size());
+  for (size_t i = 0; i < wholeB.Positions.size(); ++i)
   {
-    ASSERT_EQ(Distance(a.Positions[i], b.Positions[i]), 0.0) << "point " << i;
+    ASSERT_EQ(Distance(wholeA.Positions[i], wholeB.Positions[i]), 0.0) << "point " << i;
   }
   ASSERT_EQ(a.CurvePointSurface.size(), b.CurvePointSurface.size());
   for (size_t i = 0; i < b.CurvePointSurface.size(); ++i)
@@ -84,20 +89,22 @@ TEST(Arrangement, SingleSquareOnJitteredMesh)
   double expected = 0.0;
   for (int i = 0; i < 4; ++i)
     expected += 0.5 * Cross(square[i], square[(i + 1) % 4]);
-  EXPECT_NEAR(CellAreas(arr)[inside], expected, 1e-12);
+  EXPECT_NEAR(CellAreas(mesh, arr)[inside], expected, 1e-12);
   EXPECT_EQ(arr.Patches[0].Points.front(), arr.Patches[0].Points.back()); // a loop
   EXPECT_NEAR(arr.Patches[0].Length,
     Length(square[1] - square[0]) + Length(square[2] - square[1]) + Length(square[3] - square[2]) +
       Length(square[0] - square[3]),
     1e-12);
-  for (size_t r = 0; r < arr.Triangles.size(); ++r)
+  const RefinedSurfaceArrays whole = RefinedSurfaceArrays::Of(mesh, arr);
+  for (size_t r = 0; r < whole.Triangles.size(); ++r)
   {
-    const auto& t = arr.Triangles[r];
-    EXPECT_GT(SignedPlanarArea(arr.Positions[t[0]], arr.Positions[t[1]], arr.Positions[t[2]]), 0)
+    const auto& t = whole.Triangles[r];
+    EXPECT_GT(
+      SignedPlanarArea(whole.Positions[t[0]], whole.Positions[t[1]], whole.Positions[t[2]]), 0)
       << "refined triangle " << r << " is flipped";
   }
   // Every refined point's surface form evaluates to its position.
-  for (size_t p = 0; p < arr.Positions.size(); ++p)
+  for (size_t p = 0; p < whole.Positions.size(); ++p)
   {
     const SurfacePoint s = arr.GetPointSurface(mesh, static_cast<int>(p));
     const Vec3 q = mesh.Evaluate(s.Triangle, s.U, s.V);
@@ -109,10 +116,11 @@ TEST(Arrangement, SingleSquareOnJitteredMesh)
       EXPECT_EQ(s.U, written.U) << "vertex " << p;
       EXPECT_EQ(s.V, written.V) << "vertex " << p;
     }
-    EXPECT_LT(Distance(q, arr.Positions[p]), 1e-12);
+    EXPECT_LT(Distance(q, whole.Positions[p]), 1e-12);
     // and its canonical form too (mesh vertices are not stored but derived from their id)
     EXPECT_LT(
-      Distance(PositionOf(mesh, arr.GetPointOnMesh(static_cast<int>(p))), arr.Positions[p]), 1e-12);
+      Distance(PositionOf(mesh, arr.GetPointOnMesh(static_cast<int>(p))), whole.Positions[p]),
+      1e-12);
   }
 }
 
@@ -128,7 +136,7 @@ TEST(Arrangement, TwoOverlappingSquaresAreas)
   ASSERT_EQ(arr.NumberOfCells, 4);
   ExpectAreasConserved(mesh, arr);
   ExpectConforming(mesh, arr);
-  std::vector<double> areas = CellAreas(arr);
+  std::vector<double> areas = CellAreas(mesh, arr);
   std::sort(areas.begin(), areas.end());
   EXPECT_NEAR(areas[0], 0.09, 1e-12); // A and B
   EXPECT_NEAR(areas[1], 0.16, 1e-12); // A only
@@ -183,7 +191,7 @@ TEST(Arrangement, SameResultWithOneAndTwoThreads)
     curves.push_back(TraceOrDie(tracer, RandomPolygon(rng, 7, 0.02, 0.98), true, c % 3, c));
   const Arrangement one = ArrangeOrDie(mesh, curves, 1);
   const Arrangement two = ArrangeOrDie(mesh, curves, 2);
-  ExpectSameArrangement(one, two);
+  ExpectSameArrangement(mesh, one, two);
 }
 
 TEST(Arrangement, SphereGreatCirclesEuler)
@@ -292,7 +300,7 @@ TEST(Arrangement, OpenCurvesAreRefinedButDoNotSeparate)
     EXPECT_EQ(a.Shape, 0);
   // The open curve runs along refined edges.
   std::set<std::pair<int, int>> edges;
-  for (const auto& t : arr.Triangles)
+  for (const auto& t : RefinedSurfaceArrays::Of(mesh, arr).Triangles)
     for (int j = 0; j < 3; ++j)
       edges.insert({ std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]) });
   const std::vector<int>& path = arr.CurvePoints[1];
@@ -343,7 +351,7 @@ TEST(Arrangement, ErrorsNameCurveAndPoint)
   // No curves at all: one cell per connected component, nothing refined.
   EXPECT_TRUE(ComputeArrangement(mesh, {}, {}, arr, error)) << error;
   EXPECT_EQ(arr.NumberOfCells, 1);
-  EXPECT_EQ(arr.Triangles.size(), static_cast<size_t>(mesh.GetNumberOfTriangles()));
+  EXPECT_EQ(arr.GetNumberOfTriangles(), mesh.GetNumberOfTriangles());
 }
 
 // The segment map is built per curve in parallel: among many curves, several of them bad, the
@@ -399,6 +407,19 @@ TEST(Arrangement, EditsIntoTheSameArrangementEqualFreshOnes)
   const TriangleMesh mesh = MeshOf(MakeFlatSquare(40, 1.0, 0.3, 3));
   FlatPolygonTracer tracer(mesh);
   Arrangement reused;
+  // The whole refined surface, updated edit after edit as the Surface Arrangement filter does
+  // (only the entries curves crossed then or cross now are rewritten): always the fresh arrays.
+  RefinedSurfaceArrays updated;
+  const auto expectUpdatedArrays = [&](const TriangleMesh& m)
+  {
+    updated.Update(m, reused);
+    const RefinedSurfaceArrays fresh = RefinedSurfaceArrays::Of(m, reused);
+    EXPECT_EQ(updated.Triangles, fresh.Triangles);
+    EXPECT_EQ(updated.SourceTriangle, fresh.SourceTriangle);
+    ASSERT_EQ(updated.Positions.size(), fresh.Positions.size());
+    for (std::size_t p = 0; p < fresh.Positions.size(); ++p)
+      ASSERT_EQ(Distance(updated.Positions[p], fresh.Positions[p]), 0.0) << "point " << p;
+  };
   std::string error;
   for (std::uint32_t edit = 0; edit < 8; ++edit)
   {
@@ -409,8 +430,9 @@ TEST(Arrangement, EditsIntoTheSameArrangementEqualFreshOnes)
       curves.push_back(TraceOrDie(tracer, RandomPolygon(rng, 5 + c % 3, 0.02, 0.98), true, c, c));
     SCOPED_TRACE("edit " + std::to_string(edit));
     ASSERT_TRUE(ComputeArrangement(mesh, curves, ArrangementOptions(), reused, error)) << error;
-    ExpectCellsAreFloodFill(reused);
-    ExpectSameArrangement(reused, ArrangeOrDie(mesh, curves));
+    ExpectCellsAreFloodFill(mesh, reused);
+    ExpectSameArrangement(mesh, reused, ArrangeOrDie(mesh, curves));
+    expectUpdatedArrays(mesh);
   }
   // Another mesh into the same Arrangement: nothing of the first mesh may survive.
   const TriangleMesh other = MeshOf(MakeFlatSquare(17, 1.0, 0.2, 9));
@@ -419,8 +441,9 @@ TEST(Arrangement, EditsIntoTheSameArrangementEqualFreshOnes)
   const std::vector<TracedCurve> curves{ TraceOrDie(
     otherTracer, RandomPolygon(rng, 6, 0.05, 0.95), true, 0, 0) };
   ASSERT_TRUE(ComputeArrangement(other, curves, ArrangementOptions(), reused, error)) << error;
-  ExpectCellsAreFloodFill(reused);
-  ExpectSameArrangement(reused, ArrangeOrDie(other, curves));
+  ExpectCellsAreFloodFill(other, reused);
+  ExpectSameArrangement(other, reused, ArrangeOrDie(other, curves));
+  expectUpdatedArrays(other);
 }
 
 // A per-triangle cell array kept from edit to edit and updated only where tiles changed (the
@@ -473,8 +496,8 @@ TEST(Arrangement, EditsAfterARefusedEditEqualFreshOnes)
       TraceOrDie(tracer, RandomPolygon(rng, 4, 0.2, 0.8), true, 1, 1) };
     SCOPED_TRACE("edit " + std::to_string(edit));
     ASSERT_TRUE(ComputeArrangement(mesh, curves, ArrangementOptions(), reused, error)) << error;
-    ExpectCellsAreFloodFill(reused);
-    ExpectSameArrangement(reused, ArrangeOrDie(mesh, curves));
+    ExpectCellsAreFloodFill(mesh, reused);
+    ExpectSameArrangement(mesh, reused, ArrangeOrDie(mesh, curves));
     curves.push_back(broken);
     EXPECT_FALSE(ComputeArrangement(mesh, curves, ArrangementOptions(), reused, error));
   }
@@ -506,21 +529,22 @@ TEST(Arrangement, UnusableTrianglesAreHoles)
     EXPECT_EQ(reused.NumberOfCells, expected.NumberOfCells);
     for (int t : { at, mesh.GetNumberOfTriangles() - 1 })
     {
-      EXPECT_EQ(reused.SourceTriangle[t], -1);
-      EXPECT_EQ(reused.Triangles[t][0], -1);
+      EXPECT_EQ(reused.GetSourceTriangle(mesh, t), -1);
+      EXPECT_EQ(reused.GetTriangle(mesh, t)[0], -1);
       EXPECT_EQ(reused.CellOfTriangle(t), -1);
-      EXPECT_EQ(CountRefinedTriangles(reused, t), 0);
+      EXPECT_EQ(CountRefinedTriangles(mesh, reused, t), 0);
     }
+    const RefinedSurfaceArrays whole = RefinedSurfaceArrays::Of(mesh, reused);
     std::vector<double> areas(reused.NumberOfCells, 0.0);
-    for (std::size_t r = 0; r < reused.Triangles.size(); ++r)
+    for (std::size_t r = 0; r < whole.Triangles.size(); ++r)
     {
-      if (reused.SourceTriangle[r] < 0)
+      if (whole.SourceTriangle[r] < 0)
         continue;
-      const auto& t = reused.Triangles[r];
+      const auto& t = whole.Triangles[r];
       areas[reused.CellOfTriangle(static_cast<int>(r))] +=
-        TriangleArea(reused.Positions[t[0]], reused.Positions[t[1]], reused.Positions[t[2]]);
+        TriangleArea(whole.Positions[t[0]], whole.Positions[t[1]], whole.Positions[t[2]]);
     }
-    std::vector<double> want = CellAreas(expected);
+    std::vector<double> want = CellAreas(plain, expected);
     std::sort(areas.begin(), areas.end());
     std::sort(want.begin(), want.end());
     ASSERT_EQ(areas.size(), want.size());
@@ -543,19 +567,19 @@ TEST(Arrangement, AnEditAddingAFewPointsKeepsItsBuffers)
   Arrangement arr;
   std::string error;
   ASSERT_TRUE(ComputeArrangement(mesh, curves, ArrangementOptions(), arr, error)) << error;
-  const std::size_t points = arr.Positions.size(), triangles = arr.Triangles.size();
-  const Vec3* positions = arr.Positions.data();
-  const std::array<int, 3>* refined = arr.Triangles.data();
+  const int points = arr.GetNumberOfPoints(), triangles = arr.GetNumberOfTriangles();
+  const Vec3* positions = arr.CurvePositions.data();
+  const std::array<int, 3>* refined = arr.AppendedPieces.data();
   const int* cells = arr.LooseCell.data();
   // A small second curve over a few triangles.
   curves.push_back(TraceOrDie(tracer, RandomPolygon(rng, 4, 0.47, 0.53), true, 1, 1));
   ASSERT_TRUE(ComputeArrangement(mesh, curves, ArrangementOptions(), arr, error)) << error;
-  ASSERT_GT(arr.Positions.size(), points);
-  ASSERT_GT(arr.Triangles.size(), triangles);
-  EXPECT_EQ(arr.Positions.data(), positions);
-  EXPECT_EQ(arr.Triangles.data(), refined);
+  ASSERT_GT(arr.GetNumberOfPoints(), points);
+  ASSERT_GT(arr.GetNumberOfTriangles(), triangles);
+  EXPECT_EQ(arr.CurvePositions.data(), positions);
+  EXPECT_EQ(arr.AppendedPieces.data(), refined);
   EXPECT_EQ(arr.LooseCell.data(), cells);
-  ExpectSameArrangement(arr, ArrangeOrDie(mesh, curves));
+  ExpectSameArrangement(mesh, arr, ArrangeOrDie(mesh, curves));
 }
 
 // Two arrangements sharing their work buffers (as a filter that double-buffers its results
@@ -585,7 +609,7 @@ TEST(Arrangement, ArrangementsSharingWorkBuffersEqualFreshOnes)
       }
       SCOPED_TRACE("step " + std::to_string(step));
       ASSERT_TRUE(ComputeArrangement(*mesh, curves, ArrangementOptions(), *out, error)) << error;
-      ExpectSameArrangement(*out, ArrangeOrDie(*mesh, curves));
+      ExpectSameArrangement(*mesh, *out, ArrangeOrDie(*mesh, curves));
     }
   }
   EXPECT_EQ(a.Work, b.Work);
@@ -729,13 +753,13 @@ TEST(Arrangement, TiledAndWholeSurfaceFloodFillsAgree)
           Arrangement arr;
           std::string error;
           ASSERT_TRUE(ComputeArrangement(mesh, curves, options, arr, error)) << error;
-          ExpectCellsAreFloodFill(arr);
+          ExpectCellsAreFloodFill(mesh, arr);
           results.push_back(std::move(arr));
         }
       for (size_t i = 1; i < results.size(); ++i)
       {
         SCOPED_TRACE("variant " + std::to_string(i));
-        ExpectSameArrangement(results[i], results[0]);
+        ExpectSameArrangement(mesh, results[i], results[0]);
       }
     }
   }

@@ -37,28 +37,30 @@ bool CurveVisits(const Arrangement& arr, int curve, int point)
   return std::find(p.begin(), p.end(), point) != p.end();
 }
 
-std::vector<double> SortedCellAreas(const Arrangement& arr)
+std::vector<double> SortedCellAreas(const TriangleMesh& mesh, const Arrangement& arr)
 {
-  std::vector<double> a = CellAreas(arr);
+  std::vector<double> a = CellAreas(mesh, arr);
   std::sort(a.begin(), a.end());
   return a;
 }
 
-void ExpectSortedAreas(const Arrangement& arr, std::vector<double> expected)
+void ExpectSortedAreas(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  std::vector<double> expected)
 {
   std::sort(expected.begin(), expected.end());
-  const std::vector<double> areas = SortedCellAreas(arr);
+  const std::vector<double> areas = SortedCellAreas(mesh, arr);
   ASSERT_EQ(areas.size(), expected.size());
   for (size_t i = 0; i < areas.size(); ++i)
     EXPECT_NEAR(areas[i], expected[i], 1e-12) << "cell " << i;
 }
 
 // Area of the cell on the left of curve c's first patch.
-double LeftArea(const Arrangement& arr, int curve)
+double LeftArea(const TriangleMesh& mesh, const Arrangement& arr, int curve)
 {
   for (const ArrangementPatch& p : arr.Patches)
     if (p.Curve == curve)
-      return CellAreas(arr)[p.LeftCell];
+      return CellAreas(mesh, arr)[p.LeftCell];
   return -1;
 }
 
@@ -83,8 +85,8 @@ TEST(ArrangementDegenerate, CrossingExactlyOnMeshEdge)
   ExpectValid(g.Mesh, arr, 1);
   // The crossing is one refined point on the horizontal edge y = 1, shared by both curves.
   int shared = -1;
-  for (size_t p = 0; p < arr.Positions.size(); ++p)
-    if (Distance(arr.Positions[p], { 0.5, 1.0, 0.0 }) < 1e-15)
+  for (size_t p = 0; p < static_cast<size_t>(arr.GetNumberOfPoints()); ++p)
+    if (Distance(arr.GetPosition(g.Mesh, p), { 0.5, 1.0, 0.0 }) < 1e-15)
       shared = static_cast<int>(p);
   ASSERT_GE(shared, 0);
   EXPECT_EQ(arr.GetPointOnMesh(shared).Location, PointLocation::Edge);
@@ -114,18 +116,18 @@ TEST(ArrangementDegenerate, CurveAlongMeshEdges)
     ArrangeOrDie(g.Mesh, g.Trace({ { { 1, 1 }, { 3, 1 }, { 3, 3 }, { 1, 3 } } }));
   EXPECT_EQ(square.NumberOfCells, 2);
   EXPECT_EQ(square.NumberOfRefinedSourceTriangles, 0);
-  EXPECT_NEAR(LeftArea(square, 0), 4.0, 1e-12);
+  EXPECT_NEAR(LeftArea(g.Mesh, square, 0), 4.0, 1e-12);
   ExpectValid(g.Mesh, square, 1);
   // Along the diagonals and through vertices.
   const Arrangement diagonal = ArrangeOrDie(g.Mesh, g.Trace({ { { 1, 1 }, { 3, 3 }, { 1, 3 } } }));
   EXPECT_EQ(diagonal.NumberOfCells, 2);
-  EXPECT_NEAR(LeftArea(diagonal, 0), 2.0, 1e-12);
+  EXPECT_NEAR(LeftArea(g.Mesh, diagonal, 0), 2.0, 1e-12);
   ExpectValid(g.Mesh, diagonal, 1);
   // Partly along an edge (from a vertex to an edge point), partly across triangles.
   const Arrangement mixed =
     ArrangeOrDie(g.Mesh, g.Trace({ { { 1, 1 }, { 2.5, 1 }, { 2.2, 2.7 } } }));
   EXPECT_EQ(mixed.NumberOfCells, 2);
-  EXPECT_NEAR(LeftArea(mixed, 0), 0.5 * 1.5 * 1.7, 1e-12);
+  EXPECT_NEAR(LeftArea(g.Mesh, mixed, 0), 0.5 * 1.5 * 1.7, 1e-12);
   ExpectValid(g.Mesh, mixed, 1);
 }
 
@@ -136,7 +138,7 @@ TEST(ArrangementDegenerate, CollinearOverlapInsideTriangles)
     g.Trace({ { { 0.5, 0.5 }, { 2.5, 0.5 }, { 2.5, 2.5 }, { 0.5, 2.5 } },
       { { 1.5, 0.5 }, { 3.5, 0.5 }, { 3.5, 2.5 }, { 1.5, 2.5 } } }));
   EXPECT_EQ(arr.NumberOfCells, 4);
-  ExpectSortedAreas(arr, { 2.0, 2.0, 2.0, 10.0 });
+  ExpectSortedAreas(g.Mesh, arr, { 2.0, 2.0, 2.0, 10.0 });
   ExpectAreasConserved(g.Mesh, arr);
   ExpectConforming(g.Mesh, arr);
 }
@@ -148,7 +150,7 @@ TEST(ArrangementDegenerate, CollinearOverlapAlongMeshEdge)
     g.Trace({ { { 1, 1 }, { 3, 1 }, { 3, 3 }, { 1, 3 } },
       { { 2, 1 }, { 3.5, 1 }, { 3.5, 2 }, { 2, 2 } } }));
   EXPECT_EQ(arr.NumberOfCells, 4);
-  ExpectSortedAreas(arr, { 1.0, 3.0, 0.5, 11.5 });
+  ExpectSortedAreas(g.Mesh, arr, { 1.0, 3.0, 0.5, 11.5 });
   ExpectAreasConserved(g.Mesh, arr);
   ExpectConforming(g.Mesh, arr);
 }
@@ -161,7 +163,7 @@ TEST(ArrangementDegenerate, TangencyOnMeshEdge)
     g.Trace({ { { 0.5, 0.5 }, { 1.5, 0.5 }, { 1.5, 1.5 }, { 0.5, 1.5 } },
       { { 1.5, 1.0 }, { 2.0, 0.6 }, { 2.5, 1.0 }, { 2.0, 1.4 } } }));
   EXPECT_EQ(arr.NumberOfCells, 3);
-  ExpectSortedAreas(arr, { 1.0, 0.4, 16.0 - 1.4 });
+  ExpectSortedAreas(g.Mesh, arr, { 1.0, 0.4, 16.0 - 1.4 });
   EXPECT_EQ(arr.NumberOfPatchGraphVertices, 1);
   EXPECT_EQ(arr.Patches.size(), 2u);
   ExpectValid(g.Mesh, arr, 1);
@@ -175,7 +177,7 @@ TEST(ArrangementDegenerate, TangencyInsideTriangle)
     g.Trace({ { { 0.5, 0.5 }, { 1.5, 0.5 }, { 1.5, 1.5 }, { 0.5, 1.5 } },
       { { 1.5, 0.9 }, { 2.0, 0.5 }, { 2.5, 0.9 }, { 2.0, 1.3 } } }));
   EXPECT_EQ(arr.NumberOfCells, 3);
-  ExpectSortedAreas(arr, { 1.0, 0.4, 16.0 - 1.4 });
+  ExpectSortedAreas(g.Mesh, arr, { 1.0, 0.4, 16.0 - 1.4 });
   EXPECT_EQ(arr.NumberOfPatchGraphVertices, 1);
   ExpectValid(g.Mesh, arr, 1);
 }
@@ -187,10 +189,10 @@ TEST(ArrangementDegenerate, CurveMeetsItselfAtVertex)
   const Arrangement touching = ArrangeOrDie(
     g.Mesh, g.Trace({ { { 2, 2 }, { 3, 1.5 }, { 3, 2.5 }, { 2, 2 }, { 1, 2.5 }, { 1, 1.5 } } }));
   EXPECT_EQ(touching.NumberOfCells, 3);
-  ExpectSortedAreas(touching, { 0.5, 0.5, 15.0 });
+  ExpectSortedAreas(g.Mesh, touching, { 0.5, 0.5, 15.0 });
   EXPECT_EQ(touching.NumberOfPatchGraphVertices, 1);
   ASSERT_EQ(touching.Patches.size(), 2u);
-  const std::vector<double> areas = CellAreas(touching);
+  const std::vector<double> areas = CellAreas(g.Mesh, touching);
   for (const ArrangementPatch& p : touching.Patches)
     EXPECT_NEAR(areas[p.LeftCell], 0.5, 1e-12); // both lobes are on the left
   ExpectValid(g.Mesh, touching, 1);
@@ -200,7 +202,7 @@ TEST(ArrangementDegenerate, CurveMeetsItselfAtVertex)
     g.Mesh, g.Trace({ { { 2, 2 }, { 3, 1.5 }, { 3, 2.5 }, { 2, 2 }, { 1, 1.5 }, { 1, 2.5 } } }));
   EXPECT_EQ(crossing.NumberOfCells, 3);
   ASSERT_EQ(crossing.Patches.size(), 2u);
-  const std::vector<double> a2 = CellAreas(crossing);
+  const std::vector<double> a2 = CellAreas(g.Mesh, crossing);
   int leftLobes = 0, rightLobes = 0;
   for (const ArrangementPatch& p : crossing.Patches)
   {

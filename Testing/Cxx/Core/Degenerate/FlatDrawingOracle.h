@@ -97,11 +97,11 @@ inline FlatDrawingAnswer AnswerDrawing(const TriangleMesh& mesh,
     }
   }
   answer.CellArea.assign(answer.Arr.NumberOfCells, 0.0);
-  for (size_t r = 0; r < answer.Arr.Triangles.size(); ++r)
+  for (size_t r = 0; r < static_cast<size_t>(answer.Arr.GetNumberOfTriangles()); ++r)
   {
-    const auto& t = answer.Arr.Triangles[r];
-    const Vec3 &a = answer.Arr.Positions[t[0]], &b = answer.Arr.Positions[t[1]],
-               &c = answer.Arr.Positions[t[2]];
+    const auto& t = answer.Arr.GetTriangle(mesh, r);
+    const Vec3 &a = answer.Arr.GetPosition(mesh, t[0]), &b = answer.Arr.GetPosition(mesh, t[1]),
+               &c = answer.Arr.GetPosition(mesh, t[2]);
     answer.CellArea[answer.Arr.CellOfTriangle(static_cast<int>(r))] +=
       0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
   }

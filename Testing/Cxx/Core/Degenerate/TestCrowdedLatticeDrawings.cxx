@@ -42,12 +42,12 @@ std::vector<LatticePolygon> CrowdedDrawing(std::uint32_t seed, int lattice, int 
 }
 
 /// Most refined triangles any one mesh triangle was cut into.
-int MostRefinedTriangles(const Arrangement& arr)
+int MostRefinedTriangles(const TriangleMesh& mesh, const Arrangement& arr)
 {
   int most = 0;
   for (int t = 0; t < arr.NumberOfMeshTriangles; ++t)
   {
-    most = std::max(most, CountRefinedTriangles(arr, t));
+    most = std::max(most, CountRefinedTriangles(mesh, arr, t));
   }
   return most;
 }
@@ -61,7 +61,7 @@ void ExpectExactAreas(const TriangleMesh& mesh,
   const FlatDrawingAnswer a = AnswerDrawing(mesh, drawing);
   ASSERT_TRUE(a.Ok) << what << " refused: " << a.Error;
   // The drawing must really crowd a triangle, or the test would not test what it says.
-  EXPECT_GE(MostRefinedTriangles(a.Arr), crowdedAtLeast) << what;
+  EXPECT_GE(MostRefinedTriangles(mesh, a.Arr), crowdedAtLeast) << what;
   double total = 0;
   for (double c : a.CellArea)
   {

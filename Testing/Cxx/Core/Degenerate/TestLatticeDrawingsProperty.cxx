@@ -69,17 +69,19 @@ int WindingNumber(const std::vector<LatticePolygon>& drawing, int shape, Vec2 q)
 
 /// Independent of Clipper: every cell's labels are the winding numbers of the input polygons
 /// at the centroid of the cell's largest refined triangle.
-void ExpectLabelsAreWindingNumbers(const FlatDrawingAnswer& a,
+void ExpectLabelsAreWindingNumbers(const TriangleMesh& mesh,
+  const FlatDrawingAnswer& a,
   const std::vector<LatticePolygon>& drawing,
   const std::string& meshName,
   int& failures)
 {
   std::vector<int> best(a.Arr.NumberOfCells, -1);
   std::vector<double> bestArea(a.Arr.NumberOfCells, 0.0);
-  for (size_t r = 0; r < a.Arr.Triangles.size(); ++r)
+  for (size_t r = 0; r < static_cast<size_t>(a.Arr.GetNumberOfTriangles()); ++r)
   {
-    const auto& t = a.Arr.Triangles[r];
-    const Vec3 &p = a.Arr.Positions[t[0]], &q = a.Arr.Positions[t[1]], &s = a.Arr.Positions[t[2]];
+    const auto& t = a.Arr.GetTriangle(mesh, r);
+    const Vec3 &p = a.Arr.GetPosition(mesh, t[0]), &q = a.Arr.GetPosition(mesh, t[1]),
+               &s = a.Arr.GetPosition(mesh, t[2]);
     const double area = 0.5 * ((q.x - p.x) * (s.y - p.y) - (q.y - p.y) * (s.x - p.x));
     const int c = a.Arr.CellOfTriangle(static_cast<int>(r));
     if (area > bestArea[c])
@@ -92,9 +94,9 @@ void ExpectLabelsAreWindingNumbers(const FlatDrawingAnswer& a,
   {
     if (best[c] < 0 || bestArea[c] < 1e-6)
       continue; // a sliver: its centroid is too close to the curves to decide
-    const auto& t = a.Arr.Triangles[best[c]];
-    const Vec3 &p0 = a.Arr.Positions[t[0]], &p1 = a.Arr.Positions[t[1]],
-               &p2 = a.Arr.Positions[t[2]];
+    const auto& t = a.Arr.GetTriangle(mesh, best[c]);
+    const Vec3 &p0 = a.Arr.GetPosition(mesh, t[0]), &p1 = a.Arr.GetPosition(mesh, t[1]),
+               &p2 = a.Arr.GetPosition(mesh, t[2]);
     const Vec2 g{ (p0.x + p1.x + p2.x) / 3.0, (p0.y + p1.y + p2.y) / 3.0 };
     for (int s = 0; s < a.Labels.NumberOfShapes; ++s)
     {
@@ -123,7 +125,7 @@ void CheckDrawing(const TriangleMesh& mesh,
     ++failures;
     return;
   }
-  ExpectLabelsAreWindingNumbers(a, drawing, meshName, failures);
+  ExpectLabelsAreWindingNumbers(mesh, a, drawing, meshName, failures);
   // Shape index of each user shape (shapes without polygons are empty).
   auto indexOf = [&](int shape) { return ShapeIndexOf(a.Labels.ShapeIds, shape); };
   const int i0 = indexOf(0), i1 = indexOf(1);

@@ -68,7 +68,7 @@ TEST(MeshTopology, FlatSquareIsADisc)
   {
     const Vec3 p = mesh.GetPosition(v);
     const bool onBorder = p.x == 0 || p.y == 0 || p.x == 1 || p.y == 1;
-    EXPECT_EQ(topo.VertexBoundaryLoop[v], onBorder ? 0 : -1) << "vertex " << v;
+    EXPECT_EQ(topo.GetVertexBoundaryLoop(v), onBorder ? 0 : -1) << "vertex " << v;
   }
 }
 

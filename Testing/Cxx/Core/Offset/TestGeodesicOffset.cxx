@@ -53,14 +53,14 @@ Labeled Label(const TriangleMesh& mesh,
   {
     out.Selected[c] = out.Labels.GetLabel(c, 0) != 0;
   }
-  for (size_t r = 0; r < out.Arr.Triangles.size(); ++r)
+  for (size_t r = 0; r < static_cast<size_t>(out.Arr.GetNumberOfTriangles()); ++r)
   {
     if (out.Selected[out.Arr.CellOfTriangle(static_cast<int>(r))])
     {
-      const auto& t = out.Arr.Triangles[r];
+      const auto& t = out.Arr.GetTriangle(mesh, r);
       out.Area += 0.5 *
-        Length(Cross(out.Arr.Positions[t[1]] - out.Arr.Positions[t[0]],
-          out.Arr.Positions[t[2]] - out.Arr.Positions[t[0]]));
+        Length(Cross(out.Arr.GetPosition(mesh, t[1]) - out.Arr.GetPosition(mesh, t[0]),
+          out.Arr.GetPosition(mesh, t[2]) - out.Arr.GetPosition(mesh, t[0])));
     }
   }
   return out;
@@ -265,15 +265,15 @@ TEST(GeodesicOffset, GrowThenShrinkIsAClosingThatContainsTheShape)
   }
   const Labeled together = Label(mesh, topology, both);
   double outside = 0;
-  for (size_t r = 0; r < together.Arr.Triangles.size(); ++r)
+  for (size_t r = 0; r < static_cast<size_t>(together.Arr.GetNumberOfTriangles()); ++r)
   {
     const int cell = together.Arr.CellOfTriangle(static_cast<int>(r));
     if (together.Labels.GetLabel(cell, 0) != 0 && together.Labels.GetLabel(cell, 1) == 0)
     {
-      const auto& t = together.Arr.Triangles[r];
+      const auto& t = together.Arr.GetTriangle(mesh, r);
       outside += 0.5 *
-        Length(Cross(together.Arr.Positions[t[1]] - together.Arr.Positions[t[0]],
-          together.Arr.Positions[t[2]] - together.Arr.Positions[t[0]]));
+        Length(Cross(together.Arr.GetPosition(mesh, t[1]) - together.Arr.GetPosition(mesh, t[0]),
+          together.Arr.GetPosition(mesh, t[2]) - together.Arr.GetPosition(mesh, t[0])));
     }
   }
   // Only the shape's sharp corners may poke out of the closing, by their tips at mesh

@@ -63,9 +63,11 @@ BscResult SelectOrDie(const BscInput& in)
   return r;
 }
 
-double SelectedArea(const Arrangement& arr, const std::vector<char>& selected)
+double SelectedArea(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const std::vector<char>& selected)
 {
-  const std::vector<double> areas = CellAreas(arr);
+  const std::vector<double> areas = CellAreas(mesh, arr);
   double a = 0;
   for (int c = 0; c < arr.NumberOfCells; ++c)
     a += selected[c] ? areas[c] : 0.0;
@@ -175,7 +177,7 @@ TEST(BoundarySampledCurves, OverlappingSquaresOnAFlatMesh)
     BscResult r;
     std::string error;
     ASSERT_TRUE(SelectBySamples(mesh, arr, c.Samples, 1e-6, 64, snaps, r, error)) << error;
-    EXPECT_NEAR(SelectedArea(arr, r.Selected), c.Area, 1e-12);
+    EXPECT_NEAR(SelectedArea(mesh, arr, r.Selected), c.Area, 1e-12);
     for (char kept : r.SampleOnBoundary)
       EXPECT_EQ(kept, 1);
     for (const PatchSnap& s : snaps)
@@ -225,23 +227,24 @@ TEST(BoundarySampledCurves, TorusMeridiansBoundABand)
   const Arrangement arr = ArrangeOrDie(mesh, meridians);
   ASSERT_EQ(arr.NumberOfCells, 2);
   double total = 0;
-  for (double a : CellAreas(arr))
+  for (double a : CellAreas(mesh, arr))
     total += a;
   for (double side : { 1.0, -1.0 })
   {
     std::vector<SampleQuery> samples;
     for (int c = 0; c < 2; ++c)
-      samples.push_back({ arr.Positions[arr.CurvePoints[c][0]], side * normal });
+      samples.push_back({ arr.GetPosition(mesh, arr.CurvePoints[c][0]), side * normal });
     std::vector<PatchSnap> snaps;
     BscResult r;
     std::string error;
     ASSERT_TRUE(SelectBySamples(mesh, arr, samples, 1e-3, 64, snaps, r, error)) << error;
-    EXPECT_NEAR(SelectedArea(arr, r.Selected), 0.5 * total, 1e-9 * total);
+    EXPECT_NEAR(SelectedArea(mesh, arr, r.Selected), 0.5 * total, 1e-9 * total);
     EXPECT_EQ(r.SampleOnBoundary, (std::vector<char>{ 1, 1 }));
     // The selected band is on the side the samples point to.
     const int inside = r.Selected[0] ? 0 : 1;
-    const auto& t = arr.Triangles[arr.CellFirstTriangle[inside]];
-    const Vec3 x = arr.Positions[t[0]] + arr.Positions[t[1]] + arr.Positions[t[2]];
+    const auto& t = arr.GetTriangle(mesh, arr.CellFirstTriangle[inside]);
+    const Vec3 x =
+      arr.GetPosition(mesh, t[0]) + arr.GetPosition(mesh, t[1]) + arr.GetPosition(mesh, t[2]);
     EXPECT_GT(side * Dot(x, normal), 0.0);
   }
   // One meridian separates nothing: its sample is dropped and nothing is selected.
@@ -252,7 +255,7 @@ TEST(BoundarySampledCurves, TorusMeridiansBoundABand)
   std::string error;
   ASSERT_TRUE(SelectBySamples(mesh,
     single,
-    { { single.Positions[single.CurvePoints[0][0]], normal } },
+    { { single.GetPosition(mesh, single.CurvePoints[0][0]), normal } },
     1e-3,
     64,
     snaps,

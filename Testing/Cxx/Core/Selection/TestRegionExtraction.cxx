@@ -31,7 +31,9 @@ Arrangement CutSquare(const TriangleMesh& mesh, std::uint32_t seed)
 }
 
 // The oracle: a std::map from point id to its index, filled corner after corner.
-void ExpectSerialNumbering(const Arrangement& arr, const RegionMesh& region)
+void ExpectSerialNumbering(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const RegionMesh& region)
 {
   std::map<int, int> index;
   std::vector<int> points;
@@ -40,7 +42,7 @@ void ExpectSerialNumbering(const Arrangement& arr, const RegionMesh& region)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const int p = arr.Triangles[region.Triangles[i]][k];
+      const int p = arr.GetTriangle(mesh, region.Triangles[i])[k];
       const auto inserted = index.emplace(p, static_cast<int>(points.size()));
       if (inserted.second)
       {
@@ -108,12 +110,12 @@ TEST(RegionExtraction, LargeRegionsMatchTheirCellsAndASerialNumbering)
         RegionMesh region;
         extractor.Extract(
           all,
-          static_cast<int>(arr.Positions.size()),
-          [&](int t, int k) { return arr.Triangles[t][k]; },
+          arr.GetNumberOfPoints(),
+          [&](int t) { return arr.GetTriangle(mesh, t); },
           region,
           threads);
         EXPECT_EQ(region.Triangles, all);
-        ExpectSerialNumbering(arr, region);
+        ExpectSerialNumbering(mesh, arr, region);
       }
     }
   }
