@@ -73,7 +73,7 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   const int nt = mesh.GetNumberOfTriangles();
   // The work buffers may be shared by several arrangements (a filter that double-buffers its
   // results computes them in turn): whether they belong to this mesh, and whether this result's
-  // first refined points already are this mesh's vertices, are two questions.
+  // refined slots index this mesh's triangles (LayoutMeshSerial, below), are two questions.
   const bool sameMesh = work.MeshSerial != 0 && work.MeshSerial == mesh.GetSerial();
   // Results are cleared, keeping their capacity (the next edit needs about as much).
   // RefinedSlot keeps its contents: an edit on the same mesh only rewrites the entries curves
