@@ -302,7 +302,7 @@ bool ExactGeodesicSearch::ComputeDistanceField(
 //------------------------------------------------------------------------------
 double ExactGeodesicSearch::GetFieldDistanceAtVertex(int v) const
 {
-  return this->Stamp[v] == this->CurrentStamp ? this->Distance[v] : Infinity;
+  return this->Labels[v].Stamp == this->CurrentStamp ? this->Labels[v].Distance : Infinity;
 }
 
 //------------------------------------------------------------------------------

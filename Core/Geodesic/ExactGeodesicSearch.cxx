@@ -164,11 +164,7 @@ void ExactGeodesicSearch::Prepare()
   const int nv = mesh.GetNumberOfVertices();
   const int nt = mesh.GetNumberOfTriangles();
   this->PseudoSource = PseudoSourcesOf(mesh);
-  this->Distance.Reset(nv);
-  this->VertexKind.Reset(nv);
-  this->VertexParent.Reset(nv);
-  this->VertexArrival.Reset(nv);
-  this->Stamp.Reset(nv);
+  this->Labels.Reset(nv);
   this->EndMark.Reset(nt);
   this->EdgeSlot.Reset(mesh.GetNumberOfEdges());
   this->Prepared = true;
@@ -184,7 +180,7 @@ void ExactGeodesicSearch::ResetMarks()
   this->SamplePool.clear();
   if (++this->CurrentStamp == 0)
   {
-    this->Stamp.Zero();
+    this->Labels.Zero();
     this->EndMark.Zero();
     this->CurrentStamp = 1;
   }
@@ -204,23 +200,23 @@ void ExactGeodesicSearch::OfferTarget(double length, int kind, int id)
 //------------------------------------------------------------------------------
 void ExactGeodesicSearch::Relax(int v, double d, int kind, int parent, int arrival)
 {
-  if (this->Stamp[v] != this->CurrentStamp)
+  if (this->Labels[v].Stamp != this->CurrentStamp)
   {
-    this->Stamp[v] = this->CurrentStamp;
-    this->Distance[v] = Infinity;
+    this->Labels[v].Stamp = this->CurrentStamp;
+    this->Labels[v].Distance = Infinity;
   }
-  if (!(d < this->Distance[v]))
+  if (!(d < this->Labels[v].Distance))
   {
     return;
   }
-  if (this->FieldMode && this->Distance[v] == Infinity)
+  if (this->FieldMode && this->Labels[v].Distance == Infinity)
   {
     this->FieldVertices.push_back(v);
   }
-  this->Distance[v] = d;
-  this->VertexKind[v] = kind;
-  this->VertexParent[v] = parent;
-  this->VertexArrival[v] = arrival;
+  this->Labels[v].Distance = d;
+  this->Labels[v].Kind = kind;
+  this->Labels[v].Parent = parent;
+  this->Labels[v].Arrival = arrival;
   const double toTarget =
     this->FieldMode ? 0.0 : ::boolsurf::Distance(this->Mesh.GetPosition(v), this->Target);
   this->Heap.push_back({ d + toTarget, -(v + 1), d });
@@ -235,8 +231,10 @@ bool ExactGeodesicSearch::Dominated(const Window& w,
   double length) const
 {
   auto distanceAt = [&](double b) { return w.Sigma + Hypot(w.Sx - b, w.Sy); };
-  const double d0 = this->Stamp[ev[0]] == this->CurrentStamp ? this->Distance[ev[0]] : Infinity;
-  const double d1 = this->Stamp[ev[1]] == this->CurrentStamp ? this->Distance[ev[1]] : Infinity;
+  const double d0 =
+    this->Labels[ev[0]].Stamp == this->CurrentStamp ? this->Labels[ev[0]].Distance : Infinity;
+  const double d1 =
+    this->Labels[ev[1]].Stamp == this->CurrentStamp ? this->Labels[ev[1]].Distance : Infinity;
   return d0 + w.B1 < distanceAt(w.B1) || d1 + (length - w.B0) < distanceAt(w.B0);
 }
 
@@ -263,14 +261,15 @@ bool ExactGeodesicSearch::TrimOnEdge(Window& w, const std::array<int, 2>& ev, do
   const double* samples = slot > 0 ? this->SamplePool[slot - 1].D : nullptr;
   double q[n + 2], d[n + 2];
   q[0] = 0.0;
-  d[0] = this->Stamp[ev[0]] == this->CurrentStamp ? this->Distance[ev[0]] : Infinity;
+  d[0] = this->Labels[ev[0]].Stamp == this->CurrentStamp ? this->Labels[ev[0]].Distance : Infinity;
   for (int j = 1; j <= n; ++j)
   {
     q[j] = EdgeSampleAt(length, j);
     d[j] = samples ? samples[j - 1] : Infinity;
   }
   q[n + 1] = length;
-  d[n + 1] = this->Stamp[ev[1]] == this->CurrentStamp ? this->Distance[ev[1]] : Infinity;
+  d[n + 1] =
+    this->Labels[ev[1]].Stamp == this->CurrentStamp ? this->Labels[ev[1]].Distance : Infinity;
   const double margin = 1e-9 * length;
   const double s2 = w.Sx * w.Sx + w.Sy * w.Sy;
   // The interval [lo, hi] where cone j is shorter than the window (lo > hi: nowhere).
@@ -514,10 +513,10 @@ void ExactGeodesicSearch::Propagate(int id)
   // P would cross P at some y, and there P is strictly shorter (|S - c| <= |S - y| + |y - c|),
   // so that child holds no shortest path.
   bool blocked[2] = { false, false };
-  if (this->Stamp[c] == this->CurrentStamp && this->VertexKind[c] == FromWindow &&
-    this->VertexParent[c] != id && this->Distance[c] < throughC)
+  if (this->Labels[c].Stamp == this->CurrentStamp && this->Labels[c].Kind == FromWindow &&
+    this->Labels[c].Parent != id && this->Labels[c].Distance < throughC)
   {
-    const Window& other = this->Windows[this->VertexParent[c]];
+    const Window& other = this->Windows[this->Labels[c].Parent];
     if (other.Edge == w.Edge && other.Face == face)
     {
       const double cross = CrossingOf(Vec2{ other.Sx, other.Sy }, C);
@@ -657,7 +656,7 @@ ExactGeodesicSearch::Window ExactGeodesicSearch::WholeEdgeWindow(int edge,
 void ExactGeodesicSearch::EmitFromVertex(int v)
 {
   const TriangleMesh& mesh = this->Mesh;
-  const double d = this->Distance[v];
+  const double d = this->Labels[v].Distance;
   const Vec3 pv = mesh.GetPosition(v);
   const bool source = this->PseudoSource->Is(v) || v == this->ForcedVertex ||
     (this->FieldMode && this->ForcedMark[v] == this->CurrentStamp);
@@ -759,7 +758,7 @@ bool ExactGeodesicSearch::ShadowFan(int v, std::vector<ShadowCorner>& corners) c
 {
   const TriangleMesh& mesh = this->Mesh;
   corners.clear();
-  const int t0 = this->VertexArrival[v];
+  const int t0 = this->Labels[v].Arrival;
   if (t0 < 0)
   {
     return false;
@@ -833,11 +832,11 @@ bool ExactGeodesicSearch::BackAngle(int v, int t0, int k0, double& angle) const
 {
   const TriangleMesh& mesh = this->Mesh;
   const Triangle& tri = mesh.GetTriangle(t0);
-  const int kind = this->VertexKind[v];
+  const int kind = this->Labels[v].Kind;
   if (kind == FromWindow)
   {
     // In the window's frame: its edge from (0, 0) to (L, 0), t0 above, the source below.
-    const Window& w = this->Windows[this->VertexParent[v]];
+    const Window& w = this->Windows[this->Labels[v].Parent];
     if (w.Face != t0)
     {
       return false;
@@ -869,7 +868,7 @@ bool ExactGeodesicSearch::BackAngle(int v, int t0, int k0, double& angle) const
   Vec3 from;
   if (kind == FromVertex)
   {
-    from = mesh.GetPosition(this->VertexParent[v]);
+    from = mesh.GetPosition(this->Labels[v].Parent);
   }
   else if (kind == FromSource && this->HasStartPoint)
   {
@@ -969,7 +968,7 @@ bool ExactGeodesicSearch::Run(const std::vector<int>& endTriangles)
       continue;
     }
     const int v = -e.Id - 1;
-    if (e.D != this->Distance[v])
+    if (e.D != this->Labels[v].Distance)
     {
       continue; // stale
     }
@@ -1143,23 +1142,23 @@ bool ExactGeodesicSearch::Backtrack(std::vector<int>& strip)
       continue;
     }
     // Vertex state.
-    const int arrival = this->VertexArrival[vertex];
+    const int arrival = this->Labels[vertex].Arrival;
     if (!this->FanWalk(vertex, next, arrival, r))
     {
       return false;
     }
-    const int kind = this->VertexKind[vertex];
+    const int kind = this->Labels[vertex].Kind;
     if (kind == FromSource)
     {
       break;
     }
     if (kind == FromWindow)
     {
-      window = this->VertexParent[vertex]; // its Face is `arrival`, already in r
+      window = this->Labels[vertex].Parent; // its Face is `arrival`, already in r
       continue;
     }
     next = arrival;
-    vertex = this->VertexParent[vertex];
+    vertex = this->Labels[vertex].Parent;
   }
   std::reverse(r.begin(), r.end());
   return true;

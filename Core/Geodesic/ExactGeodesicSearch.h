@@ -193,12 +193,20 @@ private:
   // torus.ply's far pairs needs 2^18 windows or more in bound order, fewer in the looser one).
   bool OrderByBound = true;
 
-  // Per-vertex labels, valid where Stamp == CurrentStamp.
-  // Per vertex, valid where Stamp == CurrentStamp (zero-page arrays: a search's memory is the
-  // part of the mesh it reaches).
-  ZeroPageArray<double> Distance;
-  ZeroPageArray<int> VertexKind, VertexParent, VertexArrival;
-  ZeroPageArray<std::uint32_t> Stamp;
+  // Per-vertex labels, valid where Stamp == CurrentStamp, side by side in one array (zero
+  // pages: a search's memory is the part of the mesh it reaches). Five arrays, one per field,
+  // put a labelled vertex on five pages and five cache lines: with a region's vertex ids in
+  // runs (rows of a scan), a search touched about five times the pages (some 10 MB per solver
+  // on ten short legs' worth of a 4.3M-triangle mesh).
+  struct VertexLabel
+  {
+    double Distance;
+    int Kind;
+    int Parent;
+    int Arrival;
+    std::uint32_t Stamp;
+  };
+  ZeroPageArray<VertexLabel> Labels;
   ZeroPageArray<std::uint32_t> EndMark; // == CurrentStamp: triangle holds the end point
   // The shortest distance kept windows gave at EdgeSamples evenly spaced interior points of
   // each edge they lit (see TrimOnEdge), in a pool the next search empties: EdgeSlot is the
