@@ -49,12 +49,17 @@ int RefinedSurfaceView::FindDirected(int t, int a, int b) const
 int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
 {
   const TriangleMesh& mesh = *this->Mesh;
-  const int t = this->SourceOf(r);
-  const Triangle v = this->Corners(r);
+  // r is never a hole (the flood fill walks usable triangles), and an unrefined triangle's
+  // corners are the mesh's: the common case reads one triangle, as when they were copied.
+  const RefinedTriangles& layout = *this->Layout;
+  const int nt = layout.NumberOfMeshTriangles;
+  const int t = r < nt ? r : layout.AppendedSources[r - nt];
+  const bool refined = (*this->Refined)[t] & RefinedBit;
+  const Triangle v = refined ? this->Corners(r) : mesh.GetTriangle(t);
   const int x = v[j], y = v[(j + 1) % 3];
   int k = j; // an unrefined triangle's edge j is the mesh edge j
   blocked = false;
-  if (!((*this->Refined)[t] & RefinedBit))
+  if (!refined)
   {
     // The common case, kept short: an unrefined triangle next to an unrefined triangle.
     const int n = mesh.GetNeighbor(t, j);
