@@ -51,9 +51,7 @@ int RefinedSurfaceView::Neighbor(int r, int j, bool& blocked) const
   const TriangleMesh& mesh = *this->Mesh;
   // r is never a hole (the flood fill walks usable triangles), and an unrefined triangle's
   // corners are the mesh's: the common case reads one triangle, as when they were copied.
-  const RefinedTriangles& layout = *this->Layout;
-  const int nt = layout.NumberOfMeshTriangles;
-  const int t = r < nt ? r : layout.AppendedSources[r - nt];
+  const int t = this->Layout->GetSourceOfPiece(r);
   const bool refined = (*this->Refined)[t] & RefinedBit;
   const Triangle v = refined ? this->Corners(r) : mesh.GetTriangle(t);
   const int x = v[j], y = v[(j + 1) % 3];
@@ -358,7 +356,7 @@ int FloodFillAllTriangles(const RefinedSurfaceView& surface,
       // The block's nodes: its own mesh triangles and the pieces appended for them.
       auto inBlock = [&](int y)
       {
-        const int t = y < nt ? y : source(y);
+        const int t = surface.Layout->GetSourceOfPiece(y);
         return t >= t0 && t < t1;
       };
       auto unite = [&](int x, int y)
@@ -589,7 +587,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   const int* keys = key.data();
   auto nodeOf = [&](int r)
   {
-    const int k = tileOf[surface.SourceOf(r)];
+    const int k = tileOf[surface.Layout->GetSourceOfPiece(r)]; // a node is never a hole
     return dirty[k] ? nodeOfTriangle[r] : k;
   };
 

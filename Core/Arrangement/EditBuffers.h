@@ -31,16 +31,6 @@ void ResizeForEdits(Vector& v, std::size_t n)
   v.resize(n);
 }
 
-/// `v` as `n` zero entries in a fresh block (its old block released): for per-mesh buffers of
-/// which each edit writes and then clears a few entries, when the mesh changes.
-template <class T>
-void AssignFreshZeroPages(ZeroPageVector<T>& v, std::size_t n)
-{
-  ZeroPageVector<T> fresh;
-  fresh.resize(n);
-  v.swap(fresh);
-}
-
 /// Resizes a zero-page buffer whose contents need not survive the call (scratch, or entries the
 /// caller rewrites before reading them) to `n` elements. Growing past the capacity takes a
 /// fresh block of EditCapacity(n) zero entries instead of copying the old ones: a copy would

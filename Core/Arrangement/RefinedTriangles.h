@@ -61,8 +61,14 @@ struct RefinedTriangles
   /// Mesh triangle refined triangle r lies in (-1 for a hole).
   int GetSourceTriangle(const TriangleMesh& mesh, int r) const
   {
-    return r >= this->NumberOfMeshTriangles ? this->AppendedSources[r - this->NumberOfMeshTriangles]
-                                            : (mesh.IsUsable(r) ? r : -1);
+    return r < this->NumberOfMeshTriangles && !mesh.IsUsable(r) ? -1 : this->GetSourceOfPiece(r);
+  }
+  /// GetSourceTriangle for an r known not to be a hole (a triangle of a cell, a neighbour met by
+  /// the flood fill): no read of the mesh's usable flags in hot loops.
+  int GetSourceOfPiece(int r) const
+  {
+    return r < this->NumberOfMeshTriangles ? r
+                                           : this->AppendedSources[r - this->NumberOfMeshTriangles];
   }
 };
 

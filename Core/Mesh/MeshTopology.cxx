@@ -20,8 +20,7 @@ void ComputeComponents(const TriangleMesh& mesh, MeshTopology& topo)
   // triangles). Bits and a queue that drops what it has visited (a breadth-first front is a
   // small part of a surface) for the rest: a byte per triangle and a queue of every triangle
   // were 21 MB more.
-  topo.TriangleComponent = ZeroPageVector<int>();
-  topo.TriangleComponent.resize(nt);
+  AssignFreshZeroPages(topo.TriangleComponent, nt);
   std::vector<bool> reached(nt, false), flip(nt, false);
   std::deque<int> queue;
   for (int seed = 0; seed < nt; ++seed)
@@ -212,8 +211,7 @@ void ComputeBoundaryLoops(const TriangleMesh& mesh, MeshTopology& topo)
 {
   const int nt = mesh.GetNumberOfTriangles();
   // Zero pages, loop + 1 written at boundary vertices only (Get/SetVertexBoundaryLoop).
-  topo.VertexBoundaryLoopPlusOne = ZeroPageVector<int>();
-  topo.VertexBoundaryLoopPlusOne.resize(mesh.GetNumberOfVertices());
+  AssignFreshZeroPages(topo.VertexBoundaryLoopPlusOne, mesh.GetNumberOfVertices());
   std::vector<bool> visited(3 * static_cast<size_t>(nt), false); // bits: 13 MB as bytes at 4.3M
   auto isBoundary = [&](int h)
   {

@@ -170,6 +170,17 @@ struct ZeroPageAllocator
 template <class T>
 using ZeroPageVector = std::vector<T, ZeroPageAllocator<T>>;
 
+/// `v` as `n` zero entries in a fresh block (its old block released), no page written: for
+/// mesh-sized buffers of which a few entries are ever written (per-mesh buffers each edit
+/// writes and then clears a few entries of, mostly-zero topology arrays).
+template <class T>
+void AssignFreshZeroPages(ZeroPageVector<T>& v, std::size_t n)
+{
+  ZeroPageVector<T> fresh;
+  fresh.resize(n);
+  v.swap(fresh);
+}
+
 } // namespace boolsurf
 
 #endif
