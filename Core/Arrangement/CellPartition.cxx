@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <numeric>
 
 namespace boolsurf
 {
@@ -204,31 +205,107 @@ void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles, int gr
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// Adjacency lists of items 0 .. count - 1 from their pairs (a < b, distinct).
+void AdjacencyLists(int count,
+  const std::vector<std::pair<int, int>>& pairs,
+  std::vector<int>& offset,
+  std::vector<int>& neighbors)
+{
+  offset.assign(static_cast<size_t>(count) + 1, 0);
+  for (const std::pair<int, int>& ab : pairs)
+  {
+    ++offset[ab.first + 1];
+    ++offset[ab.second + 1];
+  }
+  for (int k = 0; k < count; ++k)
+  {
+    offset[k + 1] += offset[k];
+  }
+  neighbors.resize(offset[count]);
+  std::vector<int> cursor(offset.begin(), offset.end() - 1);
+  for (const std::pair<int, int>& ab : pairs)
+  {
+    neighbors[cursor[ab.first]++] = ab.second;
+    neighbors[cursor[ab.second]++] = ab.first;
+  }
+}
+
+// Splits tile arcs by the part (group or block) of their tiles: the arcs inside part p go to
+// inner[innerOffset[p] ..) in their order, the others to `across`.
+template <class PartOfTile>
+void SplitArcs(int parts,
+  const std::vector<std::pair<int, int>>& arcs,
+  const PartOfTile& partOf,
+  std::vector<int>& innerOffset,
+  std::vector<std::pair<int, int>>& inner,
+  std::vector<std::pair<int, int>>& across)
+{
+  innerOffset.assign(static_cast<size_t>(parts) + 1, 0);
+  across.clear();
+  for (const std::pair<int, int>& ab : arcs)
+  {
+    const int p = partOf(ab.first);
+    if (p == partOf(ab.second))
+    {
+      ++innerOffset[p + 1];
+    }
+    else
+    {
+      across.push_back(ab);
+    }
+  }
+  for (int p = 0; p < parts; ++p)
+  {
+    innerOffset[p + 1] += innerOffset[p];
+  }
+  inner.resize(innerOffset[parts]);
+  std::vector<int> cursor(innerOffset.begin(), innerOffset.end() - 1);
+  for (const std::pair<int, int>& ab : arcs)
+  {
+    const int p = partOf(ab.first);
+    if (p == partOf(ab.second))
+    {
+      inner[cursor[p]++] = ab;
+    }
+  }
+}
+
+// `root` (per tile, flattened) with `arcs` united into it, every root the lowest tile of its
+// set (the lowest triangle too: tiles are ordered by lowest member), flattened again.
+void UniteArcsIntoRoots(const std::vector<std::pair<int, int>>& arcs, std::vector<int>& root)
+{
+  int* r = root.data();
+  for (const std::pair<int, int>& ab : arcs)
+  {
+    const int a = FindRoot(r, ab.first), b = FindRoot(r, ab.second);
+    if (a != b)
+    {
+      r[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  for (size_t k = 0; k < root.size(); ++k)
+  {
+    r[k] = FindRoot(r, static_cast<int>(k));
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
 void BuildTileGroups(const std::vector<std::pair<int, int>>& adjacent,
   int groupSize,
   MeshTiles& tiles)
 {
   const int count = tiles.GetNumberOfTiles();
-  // Tile adjacency as lists, for growing the groups like the tiles.
-  std::vector<int> degree(static_cast<size_t>(count) + 1, 0);
-  for (const std::pair<int, int>& ab : adjacent)
-  {
-    ++degree[ab.first + 1];
-    ++degree[ab.second + 1];
-  }
+  tiles.FirstMember.resize(count);
   for (int k = 0; k < count; ++k)
   {
-    degree[k + 1] += degree[k];
+    tiles.FirstMember[k] = tiles.Members[tiles.Offset[k]];
   }
-  std::vector<int> neighbors(degree[count]);
-  {
-    std::vector<int> cursor(degree.begin(), degree.end() - 1);
-    for (const std::pair<int, int>& ab : adjacent)
-    {
-      neighbors[cursor[ab.first]++] = ab.second;
-      neighbors[cursor[ab.second]++] = ab.first;
-    }
-  }
+  // Groups of tiles, grown over tile adjacency like the tiles over triangles.
+  std::vector<int> degree, neighbors;
+  AdjacencyLists(count, adjacent, degree, neighbors);
   GrowGroups(
     count,
     groupSize,
@@ -243,60 +320,55 @@ void BuildTileGroups(const std::vector<std::pair<int, int>>& adjacent,
     tiles.GroupOf,
     tiles.GroupOffset,
     tiles.GroupTiles);
-  // Arcs inside each group (grouped by a counting sort, each group's in `adjacent` order) and
-  // between groups.
   const int groups = tiles.GetNumberOfGroups();
-  tiles.GroupArcOffset.assign(static_cast<size_t>(groups) + 1, 0);
-  tiles.CrossGroupArcs.clear();
-  for (const std::pair<int, int>& ab : adjacent)
-  {
-    const int g = tiles.GroupOf[ab.first];
-    if (g == tiles.GroupOf[ab.second])
-    {
-      ++tiles.GroupArcOffset[g + 1];
-    }
-    else
-    {
-      tiles.CrossGroupArcs.push_back(ab);
-    }
-  }
-  for (int g = 0; g < groups; ++g)
-  {
-    tiles.GroupArcOffset[g + 1] += tiles.GroupArcOffset[g];
-  }
-  tiles.GroupArcs.resize(tiles.GroupArcOffset[groups]);
-  {
-    std::vector<int> cursor(tiles.GroupArcOffset.begin(), tiles.GroupArcOffset.end() - 1);
-    for (const std::pair<int, int>& ab : adjacent)
-    {
-      const int g = tiles.GroupOf[ab.first];
-      if (g == tiles.GroupOf[ab.second])
-      {
-        tiles.GroupArcs[cursor[g]++] = ab;
-      }
-    }
-  }
-  // Each group's components with every tile clean, rooted at their lowest tile (the lowest
-  // triangle too: tiles are ordered by lowest member), the state the flood fill of an edit
-  // starts from in groups it does not touch.
+  std::vector<std::pair<int, int>> crossGroupArcs;
+  SplitArcs(
+    groups,
+    adjacent,
+    [&](int k) { return tiles.GroupOf[k]; },
+    tiles.GroupArcOffset,
+    tiles.GroupArcs,
+    crossGroupArcs);
+  // Each group's components with every tile clean, rooted at their lowest tile, the state the
+  // flood fill of an edit starts from in groups it does not touch.
   tiles.GroupRoot.resize(count);
-  for (int k = 0; k < count; ++k)
+  std::iota(tiles.GroupRoot.begin(), tiles.GroupRoot.end(), 0);
+  UniteArcsIntoRoots(tiles.GroupArcs, tiles.GroupRoot);
+
+  // Blocks of groups, the same way one level up, grown over the groups joined by an arc.
+  std::vector<std::pair<int, int>> groupPairs;
+  groupPairs.reserve(crossGroupArcs.size());
+  for (const std::pair<int, int>& ab : crossGroupArcs)
   {
-    tiles.GroupRoot[k] = k;
+    const int a = tiles.GroupOf[ab.first], b = tiles.GroupOf[ab.second];
+    groupPairs.emplace_back(std::min(a, b), std::max(a, b));
   }
-  int* root = tiles.GroupRoot.data();
-  for (const std::pair<int, int>& ab : tiles.GroupArcs)
-  {
-    const int a = FindRoot(root, ab.first), b = FindRoot(root, ab.second);
-    if (a != b)
+  std::sort(groupPairs.begin(), groupPairs.end());
+  groupPairs.erase(std::unique(groupPairs.begin(), groupPairs.end()), groupPairs.end());
+  AdjacencyLists(groups, groupPairs, degree, neighbors);
+  GrowGroups(
+    groups,
+    groupSize,
+    [](int) { return true; },
+    [&](int g, const auto& visit)
     {
-      root[std::max(a, b)] = std::min(a, b);
-    }
-  }
-  for (int k = 0; k < count; ++k)
-  {
-    root[k] = FindRoot(root, k);
-  }
+      for (int i = degree[g]; i < degree[g + 1]; ++i)
+      {
+        visit(neighbors[i]);
+      }
+    },
+    tiles.BlockOf,
+    tiles.BlockOffset,
+    tiles.BlockGroups);
+  SplitArcs(
+    tiles.GetNumberOfBlocks(),
+    crossGroupArcs,
+    [&](int k) { return tiles.BlockOf[tiles.GroupOf[k]]; },
+    tiles.BlockArcOffset,
+    tiles.BlockArcs,
+    tiles.CrossBlockArcs);
+  tiles.BlockRoot = tiles.GroupRoot;
+  UniteArcsIntoRoots(tiles.BlockArcs, tiles.BlockRoot);
 }
 
 namespace
@@ -534,11 +606,8 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
   ResizeDiscardingForEdits(nodeOfTriangle, count);
   // Nodes: tile k is node k (used only when clean), then the dirty tiles' refined triangles.
   std::vector<int>& key = buffers.NodeKey;
-  key.resize(numberOfTiles);
-  for (int k = 0; k < numberOfTiles; ++k)
-  {
-    key[k] = tiles.Members[tiles.Offset[k]]; // unrefined: refined index = mesh index
-  }
+  // A tile's key is its lowest triangle (unrefined: refined index = mesh index).
+  key.assign(tiles.FirstMember.begin(), tiles.FirstMember.end());
   // The dirty tiles' nodes, numbered tile after tile (first node of dirty tile d: firstNode[d]);
   // tiles are independent, so blocks of them run in parallel, here and for the arcs below.
   const int dirtyCount = static_cast<int>(dirtyTiles.size());
@@ -591,58 +660,78 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
     return dirty[k] ? nodeOfTriangle[r] : k;
   };
 
-  // Arcs between clean tiles. Tile nodes start from their groups' precomputed components
-  // (roots are the lowest tiles, so the lowest keys: tiles are ordered by lowest member); a
-  // group with a dirty tile starts from single tiles instead and unites its own arcs between
-  // clean tiles. Then the arcs between groups: what an edit pays for the tile graph is those
-  // and the touched groups, not every arc of it.
-  std::copy(tiles.GroupRoot.begin(), tiles.GroupRoot.end(), parent);
+  // Arcs between clean tiles. Tile nodes start from their blocks' precomputed components
+  // (roots are the lowest tiles, so the lowest keys: tiles are ordered by lowest member). A
+  // block with a dirty tile starts from its groups' components instead, a group with a dirty
+  // tile from single tiles, and each unites its own arcs between clean tiles. Then the arcs
+  // between blocks: what an edit pays for the tile graph is those and the touched groups and
+  // blocks, not every arc of it.
+  std::copy(tiles.BlockRoot.begin(), tiles.BlockRoot.end(), parent);
   for (int i = numberOfTiles; i < nodes; ++i)
   {
     parent[i] = i;
   }
+  const auto markParts = [](int part, std::vector<char>& marked, std::vector<int>& list)
+  {
+    if (!marked[part])
+    {
+      marked[part] = 1;
+      list.push_back(part);
+    }
+  };
   std::vector<char>& dirtyGroup = buffers.DirtyGroup;
-  if (static_cast<int>(dirtyGroup.size()) != tiles.GetNumberOfGroups())
+  std::vector<char>& dirtyBlock = buffers.DirtyBlock;
+  if (static_cast<int>(dirtyGroup.size()) != tiles.GetNumberOfGroups() ||
+    static_cast<int>(dirtyBlock.size()) != tiles.GetNumberOfBlocks())
   {
     dirtyGroup.assign(tiles.GetNumberOfGroups(), 0);
+    dirtyBlock.assign(tiles.GetNumberOfBlocks(), 0);
   }
   std::vector<int>& dirtyGroups = buffers.DirtyGroups;
+  std::vector<int>& dirtyBlocks = buffers.DirtyBlocks;
   dirtyGroups.clear();
+  dirtyBlocks.clear();
   for (int k : dirtyTiles)
   {
-    const int g = tiles.GroupOf[k];
-    if (!dirtyGroup[g])
-    {
-      dirtyGroup[g] = 1;
-      dirtyGroups.push_back(g);
-    }
+    markParts(tiles.GroupOf[k], dirtyGroup, dirtyGroups);
+    markParts(tiles.BlockOf[tiles.GroupOf[k]], dirtyBlock, dirtyBlocks);
   }
-  for (int g : dirtyGroups)
+  for (int b : dirtyBlocks)
   {
-    for (int i = tiles.GroupOffset[g]; i < tiles.GroupOffset[g + 1]; ++i)
+    for (int i = tiles.BlockOffset[b]; i < tiles.BlockOffset[b + 1]; ++i)
     {
-      parent[tiles.GroupTiles[i]] = tiles.GroupTiles[i];
-    }
-  }
-  for (int g : dirtyGroups)
-  {
-    for (int i = tiles.GroupArcOffset[g]; i < tiles.GroupArcOffset[g + 1]; ++i)
-    {
-      const std::pair<int, int>& ab = tiles.GroupArcs[i];
-      if (!dirty[ab.first] && !dirty[ab.second])
+      const int g = tiles.BlockGroups[i];
+      for (int j = tiles.GroupOffset[g]; j < tiles.GroupOffset[g + 1]; ++j)
       {
-        UniteByKey(parent, keys, ab.first, ab.second);
+        const int k = tiles.GroupTiles[j];
+        parent[k] = dirtyGroup[g] ? k : tiles.GroupRoot[k];
       }
     }
+  }
+  const auto uniteClean = [&](const std::pair<int, int>* begin, const std::pair<int, int>* end)
+  {
+    for (const std::pair<int, int>* ab = begin; ab != end; ++ab)
+    {
+      if (!dirty[ab->first] && !dirty[ab->second])
+      {
+        UniteByKey(parent, keys, ab->first, ab->second);
+      }
+    }
+  };
+  for (int g : dirtyGroups)
+  {
+    const std::pair<int, int>* arcs = tiles.GroupArcs.data();
+    uniteClean(arcs + tiles.GroupArcOffset[g], arcs + tiles.GroupArcOffset[g + 1]);
     dirtyGroup[g] = 0;
   }
-  for (const std::pair<int, int>& ab : tiles.CrossGroupArcs)
+  for (int b : dirtyBlocks)
   {
-    if (!dirty[ab.first] && !dirty[ab.second])
-    {
-      UniteByKey(parent, keys, ab.first, ab.second);
-    }
+    const std::pair<int, int>* arcs = tiles.BlockArcs.data();
+    uniteClean(arcs + tiles.BlockArcOffset[b], arcs + tiles.BlockArcOffset[b + 1]);
+    dirtyBlock[b] = 0;
   }
+  uniteClean(
+    tiles.CrossBlockArcs.data(), tiles.CrossBlockArcs.data() + tiles.CrossBlockArcs.size());
   // Arcs from the triangles of dirty tiles, as in FloodFillAllTriangles; an arc between two
   // unrefined triangles of dirty tiles is united from the lower one, an arc into a clean tile from
   // the dirty side, an arc touching a refined triangle from each refined side. An arc inside one
@@ -929,7 +1018,7 @@ int FloodFillCellsByTiles(const RefinedSurfaceView& surface,
     cellCount = FloodFillAllTriangles(surface, looseCell, cellFirstTriangle, buffers);
     for (int k = 0; k < numberOfTiles; ++k)
     {
-      tileNode[k] = dirty[k] ? -1 : looseCell[tiles.Members[tiles.Offset[k]]];
+      tileNode[k] = dirty[k] ? -1 : looseCell[tiles.FirstMember[k]];
     }
   }
   else

@@ -446,6 +446,39 @@ TEST(Arrangement, EditsIntoTheSameArrangementEqualFreshOnes)
   expectUpdatedArrays(other);
 }
 
+// Edits whose small curves move from place to place on a mesh of several tile blocks (about
+// 1,100 tiles, 35 groups, 2 blocks): each edit's flood fill starts from the blocks' and
+// groups' precomputed components where no curve passes and from single tiles where one does,
+// so the blocks touched before and now must be restored; every result equals a fresh one.
+TEST(Arrangement, EditsAcrossTileBlocksEqualFreshOnes)
+{
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(190, 1.0, 0.3, 5));
+  FlatPolygonTracer tracer(mesh);
+  Arrangement reused;
+  std::string error;
+  for (std::uint32_t edit = 0; edit < 6; ++edit)
+  {
+    std::mt19937 rng(300 + edit);
+    std::uniform_real_distribution<double> corner(0.05, 0.75);
+    std::vector<TracedCurve> curves;
+    const int count = 1 + static_cast<int>(edit % 3);
+    for (int c = 0; c < count; ++c)
+    {
+      const double x = corner(rng), y = corner(rng);
+      curves.push_back(TraceOrDie(tracer,
+        { { x, y }, { x + 0.2, y + 0.03 }, { x + 0.12, y + 0.2 }, { x + 0.02, y + 0.1 } },
+        true,
+        c,
+        c));
+    }
+    SCOPED_TRACE("edit " + std::to_string(edit));
+    ASSERT_TRUE(ComputeArrangement(mesh, curves, ArrangementOptions(), reused, error)) << error;
+    ASSERT_GT(reused.Tiles->GetNumberOfBlocks(), 1);
+    ExpectCellsAreFloodFill(mesh, reused);
+    ExpectSameArrangement(mesh, reused, ArrangeOrDie(mesh, curves));
+  }
+}
+
 // A per-triangle cell array kept from edit to edit and updated only where tiles changed (the
 // Surface Arrangement filter's output) always equals one written whole, also across a change
 // of mesh and when an edit adds or removes cells (which renumbers them).
@@ -690,9 +723,19 @@ TEST(Arrangement, TileGroupsPartitionTheTileGraph)
         EXPECT_EQ(tiles.GroupOf[ab.second], g);
         EXPECT_TRUE(listed.insert(ab).second);
       }
-    for (const std::pair<int, int>& ab : tiles.CrossGroupArcs)
+    const auto blockOf = [&](int k) { return tiles.BlockOf[tiles.GroupOf[k]]; };
+    for (int b = 0; b < tiles.GetNumberOfBlocks(); ++b)
+      for (int i = tiles.BlockArcOffset[b]; i < tiles.BlockArcOffset[b + 1]; ++i)
+      {
+        const std::pair<int, int>& ab = tiles.BlockArcs[i];
+        EXPECT_NE(tiles.GroupOf[ab.first], tiles.GroupOf[ab.second]);
+        EXPECT_EQ(blockOf(ab.first), b);
+        EXPECT_EQ(blockOf(ab.second), b);
+        EXPECT_TRUE(listed.insert(ab).second);
+      }
+    for (const std::pair<int, int>& ab : tiles.CrossBlockArcs)
     {
-      EXPECT_NE(tiles.GroupOf[ab.first], tiles.GroupOf[ab.second]);
+      EXPECT_NE(blockOf(ab.first), blockOf(ab.second));
       EXPECT_TRUE(listed.insert(ab).second);
     }
     EXPECT_EQ(listed, adjacent);
@@ -724,6 +767,44 @@ TEST(Arrangement, TileGroupsPartitionTheTileGraph)
       }
     }
     EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+    // Blocks: a partition of the groups, at most groupSize groups, each connected over the
+    // tile graph; the block root of a tile is the lowest tile a search inside its block reaches.
+    ASSERT_GT(tiles.GetNumberOfBlocks(), 0);
+    if (groupSize > 1)
+    {
+      EXPECT_LT(tiles.GetNumberOfBlocks(), tiles.GetNumberOfGroups());
+    }
+    std::vector<int> groupSeen(tiles.GetNumberOfGroups(), 0);
+    for (int b = 0; b < tiles.GetNumberOfBlocks(); ++b)
+    {
+      ASSERT_GT(tiles.BlockOffset[b + 1], tiles.BlockOffset[b]);
+      ASSERT_LE(tiles.BlockOffset[b + 1] - tiles.BlockOffset[b], groupSize);
+      int blockTiles = 0;
+      for (int i = tiles.BlockOffset[b]; i < tiles.BlockOffset[b + 1]; ++i)
+      {
+        const int g = tiles.BlockGroups[i];
+        ++groupSeen[g];
+        EXPECT_EQ(tiles.BlockOf[g], b);
+        blockTiles += tiles.GroupOffset[g + 1] - tiles.GroupOffset[g];
+      }
+      const int k = tiles.GroupTiles[tiles.GroupOffset[tiles.BlockGroups[tiles.BlockOffset[b]]]];
+      std::vector<int> queue{ k };
+      std::set<int> reached{ k };
+      for (size_t head = 0; head < queue.size(); ++head)
+        for (const std::pair<int, int>& ab : adjacent)
+        {
+          const int other =
+            ab.first == queue[head] ? ab.second : (ab.second == queue[head] ? ab.first : -1);
+          if (other >= 0 && blockOf(other) == b && reached.insert(other).second)
+            queue.push_back(other);
+        }
+      EXPECT_EQ(static_cast<int>(reached.size()), blockTiles) << "block " << b;
+      for (int other : reached)
+      {
+        EXPECT_EQ(tiles.BlockRoot[other], *reached.begin()) << "tile " << other;
+      }
+    }
+    EXPECT_TRUE(std::all_of(groupSeen.begin(), groupSeen.end(), [](int n) { return n == 1; }));
   }
 }
 
@@ -731,8 +812,9 @@ TEST(Arrangement, TileGroupsPartitionTheTileGraph)
 // same cells, numbering and cell contents, with one thread and two.
 TEST(Arrangement, TiledAndWholeSurfaceFloodFillsAgree)
 {
-  // 72 tiles in 3 groups, then 700 tiles in 22 groups (most of them untouched by one curve).
-  for (int n : { 48, 150 })
+  // 72 tiles in 3 groups, 700 tiles in 22 groups (most of them untouched by one curve), then
+  // 2,800 tiles in about 90 groups and 3 blocks.
+  for (int n : { 48, 150, 300 })
   {
     const TriangleMesh mesh = MeshOf(MakeFlatSquare(n, 1.0, 0.3, 6));
     FlatPolygonTracer tracer(mesh);
