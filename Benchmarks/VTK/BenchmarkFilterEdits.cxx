@@ -14,6 +14,8 @@
 //   positions, snapped again) on igea_1m subdivided once (vtkLinearSubdivisionFilter: each
 //   triangle split into four in its own plane, 4.29M triangles, the same surface), the same
 //   edits: what an edit costs as the mesh grows under the same curves.
+// - BM_OneStepCurveEdit[Subdivided]LocallyShortest/threads:N: the same edits with
+//   GeodesicMethod = Locally shortest (legs straightened in a strip, not searched exactly).
 // - BM_OneStepDragOneCurve/threads:N: same scene; each iteration moves one circle (the next
 //   one each time) and the other nine stay: a user dragging one curve among many (the tracer
 //   recalls the nine).
@@ -32,7 +34,8 @@
 //
 // Counters: <Stage>_ms per stage when output 0 carries the field data array StageTimes
 // (milliseconds, named components, averaged over iterations; absent: no such counters);
-// RegionTriangles and RegionCells (arrangement cells) of output 0 after the last update;
+// RegionTriangles and RegionCells (arrangement cells) of output 0 and BoundaryPoints (points of
+// output 1) after the last update;
 // DeepCopyMs (median of 5 vtkPolyData::DeepCopy of the surface in this process: the yardstick
 // "as slow as copying the mesh") and EditOverDeepCopy (mean update time over it); PeakRSS_MB
 // (ru_maxrss, reset at the start of each benchmark on Linux so it is that benchmark's peak) and
@@ -615,9 +618,13 @@ const Scene& TenCirclesSubdivided()
 
 /// A fresh filter on the scene's surface and first curve version, updated once: the surface
 /// conversion and the first labeling are not what an edit costs.
-vtkSmartPointer<vtkBoolSurf> WarmFilter(const Scene& scene, int operation, int threads)
+vtkSmartPointer<vtkBoolSurf> WarmFilter(const Scene& scene,
+  int operation,
+  int threads,
+  int geodesicMethod = vtkBoolSurf::GEODESIC_BOUNDED)
 {
   auto filter = vtkSmartPointer<vtkBoolSurf>::New();
+  filter->SetGeodesicMethod(geodesicMethod);
   filter->SetInputData(0, scene.Mesh->Mesh);
   filter->SetInputData(1, scene.Curves[0]);
   filter->SetOperation(operation);
@@ -680,6 +687,9 @@ void ReportRegion(benchmark::State& state, vtkBoolSurf* filter, double startRssM
 {
   vtkPolyData* region = filter->GetOutput(0);
   state.counters["RegionTriangles"] = static_cast<double>(region->GetNumberOfCells());
+  // The boundary's points are its crossings with mesh edges (and the curves' crossings): what
+  // every stage after tracing reads or writes grows with them, not with the mesh.
+  state.counters["BoundaryPoints"] = static_cast<double>(filter->GetOutput(1)->GetNumberOfPoints());
   if (vtkDataArray* cellOf = region->GetCellData()->GetArray("ArrangementCell"))
   {
     std::set<double> cells;
@@ -727,7 +737,8 @@ void CurveEdits(benchmark::State& state,
   const Scene& scene,
   int operation,
   int threads,
-  bool dragOne = false)
+  bool dragOne = false,
+  int geodesicMethod = vtkBoolSurf::GEODESIC_BOUNDED)
 {
   if (!scene.Error.empty())
   {
@@ -736,7 +747,7 @@ void CurveEdits(benchmark::State& state,
   }
   const double startRss = ResetPeakRss();
   const auto warm0 = std::chrono::steady_clock::now();
-  vtkSmartPointer<vtkBoolSurf> filter = WarmFilter(scene, operation, threads);
+  vtkSmartPointer<vtkBoolSurf> filter = WarmFilter(scene, operation, threads, geodesicMethod);
   const double firstUpdateMs = Milliseconds(warm0, std::chrono::steady_clock::now());
   if (filter->GetOutput(0)->GetNumberOfCells() == 0)
   {
@@ -797,6 +808,29 @@ void BM_OneStepCurveEdit(benchmark::State& state)
 void BM_OneStepCurveEditSubdivided(benchmark::State& state)
 {
   CurveEdits(state, TenCirclesSubdivided(), 0, static_cast<int>(state.range(0)));
+}
+
+// The same edits with locally shortest legs (cost linear in a leg's length in triangles, not
+// in the area its exact search explores): what the mesh's resolution costs an edit apart from
+// the exact search.
+void BM_OneStepCurveEditLocallyShortest(benchmark::State& state)
+{
+  CurveEdits(state,
+    TenCircles(),
+    0,
+    static_cast<int>(state.range(0)),
+    false,
+    vtkBoolSurf::GEODESIC_LOCALLY_SHORTEST);
+}
+
+void BM_OneStepCurveEditSubdividedLocallyShortest(benchmark::State& state)
+{
+  CurveEdits(state,
+    TenCirclesSubdivided(),
+    0,
+    static_cast<int>(state.range(0)),
+    false,
+    vtkBoolSurf::GEODESIC_LOCALLY_SHORTEST);
 }
 
 void BM_OneStepDragOneCurve(benchmark::State& state)
@@ -1051,6 +1085,8 @@ void AtOneAndTwoThreads(benchmark::internal::Benchmark* b)
 
 BENCHMARK(BM_OneStepCurveEdit)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepCurveEditSubdivided)->Apply(AtOneAndTwoThreads<10>);
+BENCHMARK(BM_OneStepCurveEditLocallyShortest)->Apply(AtOneAndTwoThreads<10>);
+BENCHMARK(BM_OneStepCurveEditSubdividedLocallyShortest)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_StageChainCurveEdit)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepDragOneCurve)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepOperationChange)->Apply(AtOneAndTwoThreads<10>);
