@@ -42,6 +42,11 @@ struct Arrangement::WorkBuffers
   std::vector<LocalArrangement> Local;
   std::vector<std::vector<int>> EdgeSegmentPoints;
   std::vector<int> NewPointBase, SlotOfSegment;
+  /// Per segment inside a triangle (map.Segments order): its refined points' global ids, at
+  /// ChainPointIds[ChainOffset[g] .. ChainOffset[g + 1]). Written by the pass that numbers a
+  /// triangle's points, while they are in cache; reading them from the triangles' own chains
+  /// when the curves are assembled was mostly cache misses on large meshes.
+  std::vector<int> ChainOffset, ChainPointIds;
   ZeroPageVector<char> State, MeshEdgeHasBlocked;
   /// Triangles and mesh edges whose State / MeshEdgeHasBlocked entries the
   /// last call set: reset at the next call instead of clearing whole-mesh arrays.
@@ -166,6 +171,22 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     newPointBase[s + 1] = newPointBase[s] + local[s].NumberOfNewPoints;
   }
   const int totalPoints = newPointBase[slots];
+  std::vector<int>& chainOffset = work.ChainOffset;
+  chainOffset.assign(map.Segments.size() + 1, 0);
+  for (int s = 0; s < slots; ++s)
+  {
+    const std::vector<std::vector<int>>& chains = local[s].Chains;
+    for (size_t c = 0; c < chains.size(); ++c)
+    {
+      chainOffset[map.SegmentOffset[s] + c + 1] = static_cast<int>(chains[c].size());
+    }
+  }
+  for (size_t g = 0; g < map.Segments.size(); ++g)
+  {
+    chainOffset[g + 1] += chainOffset[g];
+  }
+  std::vector<int>& chainPointIds = work.ChainPointIds;
+  chainPointIds.resize(chainOffset.back());
   // Mesh vertices keep their ids and are not stored: the curves' points follow them.
   ResizeForEdits(out.CurvePositions, totalPoints - nv);
   ResizeForEdits(out.CurvePointOnMesh, totalPoints - nv);
@@ -210,6 +231,15 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       for (size_t i = 0; i < a.Points.size(); ++i)
       {
         a.Points[i].Global = a.Points[a.Alias[i]].Global;
+      }
+      int* ids = chainPointIds.data();
+      for (size_t c = 0; c < a.Chains.size(); ++c)
+      {
+        int k = chainOffset[map.SegmentOffset[s] + c];
+        for (int p : a.Chains[c])
+        {
+          ids[k++] = a.Points[p].Global;
+        }
       }
     });
 
@@ -420,13 +450,9 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         }
         else
         {
-          const int s = slotOfSegment[loc.Index];
-          const LocalArrangement& a = local[s];
-          for (int p : a.Chains[loc.Index - map.SegmentOffset[s]])
-          {
-            ids.push_back(a.Points[p].Global);
-          }
-          source = a.Triangle;
+          ids.assign(chainPointIds.begin() + chainOffset[loc.Index],
+            chainPointIds.begin() + chainOffset[loc.Index + 1]);
+          source = map.Triangles[slotOfSegment[loc.Index]];
           traced = map.Segments[loc.Index].Segment;
         }
         size_t from = 0;
