@@ -207,29 +207,47 @@ void BuildMeshTiles(const TriangleMesh& mesh, int size, MeshTiles& tiles, int gr
 //------------------------------------------------------------------------------
 namespace
 {
-// Adjacency lists of items 0 .. count - 1 from their pairs (a < b, distinct).
-void AdjacencyLists(int count,
+// GrowGroups over items 0 .. count - 1 (all usable) joined by `pairs` (a < b, distinct).
+void GrowGroupsOverPairs(int count,
   const std::vector<std::pair<int, int>>& pairs,
+  int size,
+  std::vector<int>& groupOf,
   std::vector<int>& offset,
-  std::vector<int>& neighbors)
+  std::vector<int>& members)
 {
-  offset.assign(static_cast<size_t>(count) + 1, 0);
+  std::vector<int> degree(static_cast<size_t>(count) + 1, 0);
   for (const std::pair<int, int>& ab : pairs)
   {
-    ++offset[ab.first + 1];
-    ++offset[ab.second + 1];
+    ++degree[ab.first + 1];
+    ++degree[ab.second + 1];
   }
   for (int k = 0; k < count; ++k)
   {
-    offset[k + 1] += offset[k];
+    degree[k + 1] += degree[k];
   }
-  neighbors.resize(offset[count]);
-  std::vector<int> cursor(offset.begin(), offset.end() - 1);
-  for (const std::pair<int, int>& ab : pairs)
+  std::vector<int> neighbors(degree[count]);
   {
-    neighbors[cursor[ab.first]++] = ab.second;
-    neighbors[cursor[ab.second]++] = ab.first;
+    std::vector<int> cursor(degree.begin(), degree.end() - 1);
+    for (const std::pair<int, int>& ab : pairs)
+    {
+      neighbors[cursor[ab.first]++] = ab.second;
+      neighbors[cursor[ab.second]++] = ab.first;
+    }
   }
+  GrowGroups(
+    count,
+    size,
+    [](int) { return true; },
+    [&](int k, const auto& visit)
+    {
+      for (int i = degree[k]; i < degree[k + 1]; ++i)
+      {
+        visit(neighbors[i]);
+      }
+    },
+    groupOf,
+    offset,
+    members);
 }
 
 // Splits tile arcs by the part (group or block) of their tiles: the arcs inside part p go to
@@ -304,22 +322,8 @@ void BuildTileGroups(const std::vector<std::pair<int, int>>& adjacent,
     tiles.FirstMember[k] = tiles.Members[tiles.Offset[k]];
   }
   // Groups of tiles, grown over tile adjacency like the tiles over triangles.
-  std::vector<int> degree, neighbors;
-  AdjacencyLists(count, adjacent, degree, neighbors);
-  GrowGroups(
-    count,
-    groupSize,
-    [](int) { return true; },
-    [&](int k, const auto& visit)
-    {
-      for (int i = degree[k]; i < degree[k + 1]; ++i)
-      {
-        visit(neighbors[i]);
-      }
-    },
-    tiles.GroupOf,
-    tiles.GroupOffset,
-    tiles.GroupTiles);
+  GrowGroupsOverPairs(
+    count, adjacent, groupSize, tiles.GroupOf, tiles.GroupOffset, tiles.GroupTiles);
   const int groups = tiles.GetNumberOfGroups();
   std::vector<std::pair<int, int>> crossGroupArcs;
   SplitArcs(
@@ -345,21 +349,8 @@ void BuildTileGroups(const std::vector<std::pair<int, int>>& adjacent,
   }
   std::sort(groupPairs.begin(), groupPairs.end());
   groupPairs.erase(std::unique(groupPairs.begin(), groupPairs.end()), groupPairs.end());
-  AdjacencyLists(groups, groupPairs, degree, neighbors);
-  GrowGroups(
-    groups,
-    groupSize,
-    [](int) { return true; },
-    [&](int g, const auto& visit)
-    {
-      for (int i = degree[g]; i < degree[g + 1]; ++i)
-      {
-        visit(neighbors[i]);
-      }
-    },
-    tiles.BlockOf,
-    tiles.BlockOffset,
-    tiles.BlockGroups);
+  GrowGroupsOverPairs(
+    groups, groupPairs, groupSize, tiles.BlockOf, tiles.BlockOffset, tiles.BlockGroups);
   SplitArcs(
     tiles.GetNumberOfBlocks(),
     crossGroupArcs,

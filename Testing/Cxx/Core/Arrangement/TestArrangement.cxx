@@ -739,6 +739,21 @@ TEST(Arrangement, TileGroupsPartitionTheTileGraph)
       EXPECT_TRUE(listed.insert(ab).second);
     }
     EXPECT_EQ(listed, adjacent);
+    // The tiles a search from tile k reaches without leaving the tiles where inside(tile).
+    const auto reachedWithin = [&](int k, const auto& inside)
+    {
+      std::vector<int> queue{ k };
+      std::set<int> reached{ k };
+      for (size_t head = 0; head < queue.size(); ++head)
+        for (const std::pair<int, int>& ab : adjacent)
+        {
+          const int other =
+            ab.first == queue[head] ? ab.second : (ab.second == queue[head] ? ab.first : -1);
+          if (other >= 0 && inside(other) && reached.insert(other).second)
+            queue.push_back(other);
+        }
+      return reached;
+    };
     // Groups: a partition, at most groupSize tiles, each connected; the root of a tile is the
     // lowest tile a search inside its group reaches from it.
     std::vector<int> seen(count, 0);
@@ -752,16 +767,8 @@ TEST(Arrangement, TileGroupsPartitionTheTileGraph)
         const int k = tiles.GroupTiles[i];
         ++seen[k];
         EXPECT_EQ(tiles.GroupOf[k], g);
-        std::vector<int> queue{ k };
-        std::set<int> reached{ k };
-        for (size_t head = 0; head < queue.size(); ++head)
-          for (const std::pair<int, int>& ab : adjacent)
-          {
-            const int other =
-              ab.first == queue[head] ? ab.second : (ab.second == queue[head] ? ab.first : -1);
-            if (other >= 0 && tiles.GroupOf[other] == g && reached.insert(other).second)
-              queue.push_back(other);
-          }
+        const std::set<int> reached =
+          reachedWithin(k, [&](int other) { return tiles.GroupOf[other] == g; });
         EXPECT_EQ(static_cast<int>(reached.size()), end - begin) << "group " << g;
         EXPECT_EQ(tiles.GroupRoot[k], *reached.begin()) << "tile " << k;
       }
@@ -788,16 +795,8 @@ TEST(Arrangement, TileGroupsPartitionTheTileGraph)
         blockTiles += tiles.GroupOffset[g + 1] - tiles.GroupOffset[g];
       }
       const int k = tiles.GroupTiles[tiles.GroupOffset[tiles.BlockGroups[tiles.BlockOffset[b]]]];
-      std::vector<int> queue{ k };
-      std::set<int> reached{ k };
-      for (size_t head = 0; head < queue.size(); ++head)
-        for (const std::pair<int, int>& ab : adjacent)
-        {
-          const int other =
-            ab.first == queue[head] ? ab.second : (ab.second == queue[head] ? ab.first : -1);
-          if (other >= 0 && blockOf(other) == b && reached.insert(other).second)
-            queue.push_back(other);
-        }
+      const std::set<int> reached =
+        reachedWithin(k, [&](int other) { return blockOf(other) == b; });
       EXPECT_EQ(static_cast<int>(reached.size()), blockTiles) << "block " << b;
       for (int other : reached)
       {
