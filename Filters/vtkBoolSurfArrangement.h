@@ -31,9 +31,14 @@
  * `CellGraphPatch`, `CellGraphLocation` (arcs of overlapping patches share a location),
  * `CellGraphDirection` (+1/-1: the patch along or against its location's direction; it gives
  * the side of arcs from a cell to itself, so exactly overlapping reversed curves cancel),
- * `CellComponent` (surface component of each cell), `ZeroCellCandidates` (per component, the
- * cell at its longest boundary loop, -1 for closed components), the patches (`PatchOffsets`,
- * `PatchPoints`, `PatchLeftCell`, `PatchRightCell`, `PatchShape`, `PatchCurve`) and
+ * `NumberOfBoundaryPlugs` (one plug per boundary loop, closing it: plug l is cell graph node
+ * NumberOfCells + l; the arcs of closed curves' patches along the boundary join a cell and a
+ * plug), `BoundaryPlugLinks` (2 components: a cell and a plug it meets along a stretch of
+ * boundary no closed curve covers, one region), `CellComponent` (surface component of each
+ * cell, then of each plug), `ZeroCellCandidates` (per component, its zero node: the plug of
+ * its longest boundary loop, -1 for closed components), the patches (`PatchOffsets`,
+ * `PatchPoints`, `PatchLeftCell`, `PatchRightCell`, `PatchShape`, `PatchCurve`; a patch along
+ * the boundary has -1 on its outer side) and
  * `StageTimes` (milliseconds: hash, intersections, refinement, flood fill, cell graph,
  * total), and the homology of the curves (`NumberOfHomologyGenerators`, `CurveHomology`,
  * `CurveHomologyCurveId`, `CurveHomologyShapeId`: each curve's class in the surface's

@@ -15,8 +15,12 @@
  *
  * Zero cell (label 0 for every shape): with ZeroCellMode Point, the cell containing
  * ZeroCellPoint (closest refined triangle); in Automatic mode, on a surface component with
- * open boundary, the cell at its longest boundary loop (the plugged holes of the paper,
- * §3.4); on a closed component, each shape's labels are shifted so their minimum is 0.
+ * open boundary, the plug of its longest boundary loop: every boundary loop is closed by a
+ * plug (the virtual faces of the paper, §3.4) that meets the cells along the loop, across the
+ * curves that run along the boundary and directly where none does, so a curve along a stretch
+ * of boundary bounds the cells on its inner side and the cells along the longest loop's free
+ * stretches have label 0; on a closed component, each shape's labels are shifted so their
+ * minimum is 0.
  *
  * Labels belong to cells, not triangles. Output: the input (shallow copy) with field data
  * `CellLabels` (int, one tuple per arrangement cell, one component per shape named S<id>, in

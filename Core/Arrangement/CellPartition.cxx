@@ -1120,6 +1120,19 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
     }
   };
 
+  // The mesh half-edge under a sub-edge that runs along an open boundary of the surface (a mesh
+  // edge with a triangle on one side only), else -1. Beyond it lies no cell: the patch's sides
+  // there are one cell and nothing, unlike anywhere else on the curve.
+  const auto boundaryHalfEdge = [&](int source)
+  {
+    if (source >= 0)
+    {
+      return -1;
+    }
+    const int h = mesh.GetEdgeHalfEdge(-source - 1);
+    return mesh.GetTwin(h) < 0 ? h : -1;
+  };
+
   for (size_t ci = 0; ci < refinedCurves.size(); ++ci)
   {
     const RefinedCurve& rc = refinedCurves[ci];
@@ -1131,6 +1144,17 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
     }
     const int edges = static_cast<int>(rc.SubEdgeSource.size());
     const bool cyclic = curve.Closed;
+    const auto onBoundary = [&](int i)
+    { return boundaryHalfEdge(rc.SubEdgeSource[((i % edges) + edges) % edges]) >= 0; };
+    // Patches also end where the curve steps onto or off an open boundary: the cells on its
+    // sides change there (a curve from side to side of a square cuts the outside in two, and
+    // the pieces meet only beyond the boundary), and a patch's sides are those of its first
+    // sub-edge.
+    const auto breaksAt = [&](int i)
+    {
+      return visits[rc.Points[i % n]] > 1 ||
+        ((cyclic || (i > 0 && i < edges)) && onBoundary(i - 1) != onBoundary(i));
+    };
     // Where patches start: the first break point (closed), or the first point (open).
     int start = 0;
     bool anyBreak = !cyclic;
@@ -1138,7 +1162,7 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
     {
       for (int i = 0; i < n; ++i)
       {
-        if (visits[rc.Points[i]] > 1)
+        if (breaksAt(i))
         {
           start = i;
           anyBreak = true;
@@ -1162,6 +1186,7 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
         rc.SubEdgeSource[i % edges],
         patch.LeftCell,
         patch.RightCell);
+      patch.BoundaryHalfEdge = boundaryHalfEdge(rc.SubEdgeSource[i % edges]);
     };
     auto finish = [&]()
     {
@@ -1189,7 +1214,7 @@ int BuildPatchesAndCellGraph(const RefinedSurfaceView& surface,
       const int next = rc.Points[(i + 1) % n];
       patch.Points.push_back(next);
       const bool last = e + 1 == edges;
-      if (!last && anyBreak && visits[next] > 1)
+      if (!last && anyBreak && breaksAt(i + 1))
       {
         finish();
         begin(i + 1);

@@ -10,11 +10,14 @@
 // refinement, sub-edges on mesh edges are looked up in the set of edge-segment pieces.
 //
 // Patches are the pieces of each curve between consecutive intersection points (points that
-// curves visit more than once, in total). Each patch knows the cells on its left and right;
-// the cell graph has one arc per patch of a closed curve, from its right cell to its left
-// cell (left = counter-clockwise side seen from where the normals point, because refined
-// triangles keep their source triangle's orientation: the triangle holding the directed
-// sub-edge P -> Q is on the left of a curve going from P to Q).
+// curves visit more than once, in total) and the points where a curve steps onto or off an
+// open boundary of the surface. Each patch knows the cells on its left and right; the cell
+// graph has one arc per patch of a closed curve whose two sides are cells, from its right cell
+// to its left cell (left = counter-clockwise side seen from where the normals point, because
+// refined triangles keep their source triangle's orientation: the triangle holding the
+// directed sub-edge P -> Q is on the left of a curve going from P to Q). A patch along the
+// boundary has no cell on one side: the labeling joins it to the boundary loop's plug
+// (Labeling/BoundaryPlugs.h).
 #ifndef boolsurf_CellPartition_h
 #define boolsurf_CellPartition_h
 
@@ -384,7 +387,11 @@ struct ArrangementPatch
   int CurveId = -1;
   bool Closed = true;                ///< of a closed curve (bounds cells)
   int LeftCell = -1, RightCell = -1; ///< -1 beyond an open mesh boundary
-  int FirstIndex = -1;               ///< index of the first point in the curve's refined points
+  /// The mesh half-edge its first sub-edge lies on when the patch runs along an open boundary
+  /// of the surface (one of its sides is no cell), else -1. Patches end where a curve steps
+  /// onto or off the boundary, so all of a patch's sub-edges lie on the boundary, or none.
+  int BoundaryHalfEdge = -1;
+  int FirstIndex = -1; ///< index of the first point in the curve's refined points
   double Length = 0;
   /// Refined point ids; a closed curve met by no other curve is one patch whose last point
   /// repeats the first.

@@ -14,7 +14,8 @@
 // Surfaces with boundary: every boundary loop is capped by a virtual face (the paper's
 // virtual shape A0, §3.4), a leaf of C; boundary edges go into T first. So the generators are
 // those of the closed surface and a curve homologous to a combination of boundary loops has
-// class zero, as the labeling (whose zero cell lies on a boundary loop) sees it.
+// class zero, as the labeling (which closes every loop by a plug, Labeling/BoundaryPlugs.h,
+// and takes the longest loop's plug as its zero node) sees it.
 //
 // The class of a closed curve in the generators' basis is read with the dual basis: for each
 // leftover edge x, the primal loop l_x (x plus the T paths from its ends to the root) meets

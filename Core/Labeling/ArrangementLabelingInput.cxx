@@ -79,59 +79,6 @@ std::vector<int> CellComponents(const TriangleMesh& mesh,
 }
 
 //------------------------------------------------------------------------------
-std::vector<int> ZeroCellCandidates(const TriangleMesh& mesh,
-  const MeshTopology& topo,
-  const Arrangement& arr)
-{
-  std::vector<int> result(topo.GetNumberOfComponents(), -1);
-  std::vector<int> longest(topo.GetNumberOfComponents(), -1);
-  for (int l = 0; l < static_cast<int>(topo.BoundaryLoops.size()); ++l)
-  {
-    const int c = topo.BoundaryLoops[l].Component;
-    if (longest[c] < 0 || topo.BoundaryLoops[l].Length > topo.BoundaryLoops[longest[c]].Length)
-    {
-      longest[c] = l;
-    }
-  }
-  for (int c = 0; c < topo.GetNumberOfComponents(); ++c)
-  {
-    if (longest[c] < 0)
-    {
-      continue;
-    }
-    const BoundaryLoop& loop = topo.BoundaryLoops[longest[c]];
-    for (size_t i = 0; i < loop.HalfEdges.size() && result[c] < 0; ++i)
-    {
-      const int h = loop.HalfEdges[i];
-      const int t = h / 3;
-      const int a = mesh.GetTriangle(t)[h % 3], b = mesh.GetTriangle(t)[(h % 3 + 1) % 3];
-      const int e = mesh.GetEdgeId(t, h % 3);
-      // The refined triangle of t holding the boundary sub-edge that starts at vertex a
-      // (mesh vertices keep their ids in the refined surface; the next point is b or a
-      // point on edge e).
-      ForEachRefinedTriangle(mesh,
-        arr,
-        t,
-        [&](int r)
-        {
-          const Triangle tri = arr.GetTriangle(mesh, r);
-          for (int k = 0; k < 3 && result[c] < 0; ++k)
-          {
-            const int next = tri[(k + 1) % 3];
-            const CanonicalPoint q = arr.GetPointOnMesh(next);
-            const bool onEdge = next == b || (q.Location == PointLocation::Edge && q.Id == e);
-            if (tri[k] == a && onEdge)
-            {
-              result[c] = arr.CellOfTriangle(r);
-            }
-          }
-        });
-    }
-  }
-  return result;
-}
-
-//------------------------------------------------------------------------------
 LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
   const MeshTopology& topology,
   const std::vector<TracedCurve>& curves,
@@ -142,18 +89,26 @@ LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
   in.NumberOfCells = arr.NumberOfCells;
   in.NumberOfShapes = static_cast<int>(in.ShapeIds.size());
   const std::vector<PatchPlace> places = PatchPlaces(arr.Patches);
-  in.Arcs.reserve(arr.CellGraph.size());
-  for (const CellGraphArc& a : arr.CellGraph)
+  const BoundaryPlugs plugs = FindBoundaryPlugs(mesh, topology, arr);
+  in.Arcs.reserve(arr.CellGraph.size() + plugs.Arcs.size());
+  for (const std::vector<CellGraphArc>* arcs : { &arr.CellGraph, &plugs.Arcs })
   {
-    const PatchPlace place = a.Patch >= 0 ? places[a.Patch] : PatchPlace{};
-    in.Arcs.push_back({ a.RightCell,
-      a.LeftCell,
-      ShapeIndexOf(in.ShapeIds, a.Shape),
-      place.Location,
-      place.Direction });
+    for (const CellGraphArc& a : *arcs)
+    {
+      const PatchPlace place = a.Patch >= 0 ? places[a.Patch] : PatchPlace{};
+      in.Arcs.push_back({ a.RightCell,
+        a.LeftCell,
+        ShapeIndexOf(in.ShapeIds, a.Shape),
+        place.Location,
+        place.Direction });
+    }
   }
+  in.NumberOfPlugs = plugs.NumberOfPlugs;
+  in.Links = plugs.Links;
   in.CellComponent = CellComponents(mesh, topology, arr);
-  in.ZeroCells = ZeroCellCandidates(mesh, topology, arr);
+  in.CellComponent.insert(
+    in.CellComponent.end(), plugs.PlugComponent.begin(), plugs.PlugComponent.end());
+  in.ZeroCells = plugs.ZeroNodes;
   return in;
 }
 

@@ -6,6 +6,7 @@
 #define boolsurf_ArrangementLabelingInput_h
 
 #include "Arrangement/Arrangement.h"
+#include "Labeling/BoundaryPlugs.h"
 #include "Labeling/CellLabeling.h"
 #include "Mesh/MeshTopology.h"
 
@@ -39,15 +40,10 @@ std::vector<int> CellComponents(const TriangleMesh& mesh,
   const MeshTopology& topology,
   const Arrangement& arrangement);
 
-/// Per surface component, a cell touching its longest boundary loop, or -1 for closed
-/// components: the zero cell of the labeling (plugged holes are outside every shape).
-std::vector<int> ZeroCellCandidates(const TriangleMesh& mesh,
-  const MeshTopology& topology,
-  const Arrangement& arrangement);
-
 /// The labeling input of an arrangement of `curves` (the curves it was computed from):
 /// shapes as indices into DistinctShapeIds(curves), arcs located by PatchPlaces, cell
-/// components and automatic zero cells.
+/// components, and the boundary loops' plugs (BoundaryPlugs.h) with their arcs and links; the
+/// zero node of a component with a boundary is the plug of its longest loop.
 LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
   const MeshTopology& topology,
   const std::vector<TracedCurve>& curves,

@@ -20,6 +20,7 @@ struct Crossing
 
 std::vector<Crossing> GroupCrossings(const LabelingInput& input)
 {
+  const int nodes = input.GetNumberOfNodes();
   struct Key
   {
     int Cell0, Cell1;
@@ -30,8 +31,8 @@ std::vector<Crossing> GroupCrossings(const LabelingInput& input)
   keys.reserve(input.Arcs.size());
   for (const CellArc& a : input.Arcs)
   {
-    if (a.RightCell < 0 || a.LeftCell < 0 || a.RightCell >= input.NumberOfCells ||
-      a.LeftCell >= input.NumberOfCells || a.Shape < 0 || a.Shape >= input.NumberOfShapes)
+    if (a.RightCell < 0 || a.LeftCell < 0 || a.RightCell >= nodes || a.LeftCell >= nodes ||
+      a.Shape < 0 || a.Shape >= input.NumberOfShapes)
     {
       continue;
     }
@@ -76,6 +77,18 @@ std::vector<Crossing> GroupCrossings(const LabelingInput& input)
     }
     crossings.push_back(std::move(c));
   }
+  // Links change no label: crossings without a delta, at a place of their own.
+  for (const auto& link : input.Links)
+  {
+    if (link.first >= 0 && link.second >= 0 && link.first < nodes && link.second < nodes &&
+      link.first != link.second)
+    {
+      crossings.push_back({ std::min(link.first, link.second),
+        std::max(link.first, link.second),
+        -1 - static_cast<long long>(crossings.size()),
+        {} });
+    }
+  }
   return crossings;
 }
 
@@ -95,7 +108,8 @@ void LabelingInput::SetZeroCell(int cell)
 //------------------------------------------------------------------------------
 LabelingResult LabelCells(const LabelingInput& input)
 {
-  const int nc = input.NumberOfCells;
+  // Cells and plugs are labeled alike (nodes); the plugs are dropped at the end.
+  const int nc = input.GetNumberOfNodes();
   const int ns = input.NumberOfShapes;
   LabelingResult result;
   result.NumberOfShapes = ns;
@@ -201,7 +215,16 @@ LabelingResult LabelCells(const LabelingInput& input)
         {
           if (there[s] != label[s])
           {
-            conflict(s, other, there[s], label[s]);
+            // Reported at a cell: a plug is no cell of the user's; from `cell`'s side, the
+            // plug's label gives `cell` another one.
+            if (other >= input.NumberOfCells)
+            {
+              conflict(s, cell, here[s], there[s] - (label[s] - here[s]));
+            }
+            else
+            {
+              conflict(s, other, there[s], label[s]);
+            }
           }
         }
       }
@@ -223,6 +246,7 @@ LabelingResult LabelCells(const LabelingInput& input)
       }
     }
   }
+  result.Labels.resize(static_cast<size_t>(input.NumberOfCells) * ns);
   return result;
 }
 

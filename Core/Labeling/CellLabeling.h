@@ -14,6 +14,7 @@
 #define boolsurf_CellLabeling_h
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace boolsurf
@@ -36,16 +37,24 @@ struct CellArc
 struct LabelingInput
 {
   int NumberOfCells = 0;
+  /// Nodes labeled beside the cells and left out of the result: the plugs of the surface's
+  /// boundary loops (Labeling/BoundaryPlugs.h), nodes NumberOfCells .. + NumberOfPlugs - 1.
+  /// Arcs, links, components and zero cells name cells and plugs alike by node.
+  int NumberOfPlugs = 0;
   int NumberOfShapes = 0; ///< arcs name shapes by index 0..NumberOfShapes-1
   /// The user's id of each shape index (copied to the result; may be empty).
   std::vector<int> ShapeIds;
   std::vector<CellArc> Arcs;
-  /// Connected component of each cell (surface component); empty = all in component 0.
+  /// Pairs of nodes that are one region, with equal labels: a cell and the plug it meets along
+  /// a stretch of boundary no curve covers.
+  std::vector<std::pair<int, int>> Links;
+  /// Connected component of each node (surface component); empty = all in component 0.
   std::vector<int> CellComponent;
-  /// Zero cell of each component, or -1: then every shape's labels in that component are
+  /// Zero node of each component, or -1: then every shape's labels in that component are
   /// shifted so their minimum is 0 (the closed-surface heuristic of the paper).
   std::vector<int> ZeroCells;
 
+  int GetNumberOfNodes() const { return this->NumberOfCells + this->NumberOfPlugs; }
   /// Makes `cell` the zero cell of its component (a user's ZeroCellPoint).
   void SetZeroCell(int cell);
 };
@@ -53,7 +62,7 @@ struct LabelingInput
 struct LabelConflict
 {
   int Shape = -1;
-  int Cell = -1;       ///< the cell reached with two different labels
+  int Cell = -1;       ///< the cell reached with two different labels (never a plug)
   int FirstLabel = 0;  ///< label it had
   int SecondLabel = 0; ///< label the other path gives
 };

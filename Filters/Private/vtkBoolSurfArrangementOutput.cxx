@@ -317,16 +317,23 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   AddField(fd, IntArray(boolsurf::names::ShapeIds, shapeIds));
 
   const std::vector<PatchPlace> places = PatchPlaces(arr.Patches);
+  // The boundary loops' plugs are nodes NumberOfCells + loop of the cell graph: their arcs
+  // follow the arcs between cells, and the links to the cells along free stretches of the
+  // boundary are an array of their own.
+  const BoundaryPlugs plugs = FindBoundaryPlugs(*surface.Mesh, *surface.Topology, arr);
   std::vector<int> arcs, arcShape, arcPatch, arcLocation, arcDirection;
-  for (const CellGraphArc& a : arr.CellGraph)
+  for (const std::vector<CellGraphArc>* list : { &arr.CellGraph, &plugs.Arcs })
   {
-    arcs.push_back(a.RightCell);
-    arcs.push_back(a.LeftCell);
-    arcShape.push_back(a.Shape);
-    arcPatch.push_back(a.Patch);
-    const PatchPlace place = a.Patch >= 0 ? places[a.Patch] : PatchPlace{};
-    arcLocation.push_back(place.Location);
-    arcDirection.push_back(place.Direction);
+    for (const CellGraphArc& a : *list)
+    {
+      arcs.push_back(a.RightCell);
+      arcs.push_back(a.LeftCell);
+      arcShape.push_back(a.Shape);
+      arcPatch.push_back(a.Patch);
+      const PatchPlace place = a.Patch >= 0 ? places[a.Patch] : PatchPlace{};
+      arcLocation.push_back(place.Location);
+      arcDirection.push_back(place.Direction);
+    }
   }
   AddField(fd, IntArray("CellGraphArcs", arcs, 2));
   AddField(fd, IntArray("CellGraphShape", arcShape));
@@ -334,9 +341,18 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   AddField(fd, IntArray("CellGraphLocation", arcLocation));
   AddField(fd, IntArray("CellGraphDirection", arcDirection));
 
-  AddField(fd, IntArray("CellComponent", CellComponents(*surface.Mesh, *surface.Topology, arr)));
-  AddField(
-    fd, IntArray("ZeroCellCandidates", ZeroCellCandidates(*surface.Mesh, *surface.Topology, arr)));
+  std::vector<int> components = CellComponents(*surface.Mesh, *surface.Topology, arr);
+  components.insert(components.end(), plugs.PlugComponent.begin(), plugs.PlugComponent.end());
+  AddField(fd, IntArray("CellComponent", components));
+  AddField(fd, IntArray("ZeroCellCandidates", plugs.ZeroNodes));
+  fd->AddArray(IntArray(boolsurf::names::NumberOfBoundaryPlugs, { plugs.NumberOfPlugs }));
+  std::vector<int> links;
+  for (const auto& link : plugs.Links)
+  {
+    links.push_back(link.first);
+    links.push_back(link.second);
+  }
+  AddField(fd, IntArray(boolsurf::names::BoundaryPlugLinks, links, 2));
 
   std::vector<int> offsets{ 0 }, pointIds, left, right, shape, curve, closed;
   for (const ArrangementPatch& p : arr.Patches)
@@ -519,6 +535,14 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
   }
   out.CellComponent = ReadInts(fd, "CellComponent");
   out.ZeroCellCandidates = ReadInts(fd, "ZeroCellCandidates");
+  // Absent in arrangements written before boundary plugs: no plugs, no links.
+  const std::vector<int> plugCount = ReadInts(fd, boolsurf::names::NumberOfBoundaryPlugs);
+  out.NumberOfPlugs = plugCount.empty() ? 0 : plugCount[0];
+  const std::vector<int> links = ReadInts(fd, boolsurf::names::BoundaryPlugLinks, 2);
+  for (size_t i = 0; i + 1 < links.size(); i += 2)
+  {
+    out.Links.emplace_back(links[i], links[i + 1]);
+  }
   const std::vector<int> offsets = ReadInts(fd, "PatchOffsets");
   const std::vector<int> points = ReadInts(fd, "PatchPoints");
   const std::vector<int> left = ReadInts(fd, "PatchLeftCell");

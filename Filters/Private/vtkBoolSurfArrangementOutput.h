@@ -91,8 +91,10 @@ struct ArrangementFields
   int NumberOfShapes = 0;
   std::vector<int> ShapeIds; ///< sorted; arcs name shapes by index into it
   std::vector<CellArc> Arcs;
-  std::vector<int> CellComponent;
-  std::vector<int> ZeroCellCandidates;
+  int NumberOfPlugs = 0; ///< boundary loops' plugs: nodes NumberOfCells + loop
+  std::vector<std::pair<int, int>> Links; ///< (cell, plug) one region (BoundaryPlugs.h)
+  std::vector<int> CellComponent;         ///< per cell, then per plug
+  std::vector<int> ZeroCellCandidates;    ///< per component: its zero node
   std::vector<BoundaryPatch> Patches;
   std::vector<int> PatchShape, PatchCurve;
   std::vector<int> PatchClosed; ///< 1 a closed curve's patch; empty: all closed (older files)

@@ -30,6 +30,10 @@ constexpr const char* SourceTriangle = "SourceTriangle";
 constexpr const char* Region = "Region";
 constexpr const char* NumberOfCells = "NumberOfCells";
 constexpr const char* NumberOfShapes = "NumberOfShapes";
+/// The plugs of the surface's boundary loops (Core/Labeling/BoundaryPlugs.h): the cell graph's
+/// nodes past NumberOfCells, and the (cell, plug) pairs that are one region.
+constexpr const char* NumberOfBoundaryPlugs = "NumberOfBoundaryPlugs";
+constexpr const char* BoundaryPlugLinks = "BoundaryPlugLinks";
 constexpr const char* ShapeIds = "ShapeIds";
 constexpr const char* PatchId = "PatchId";
 constexpr const char* LeftCell = "LeftCell";

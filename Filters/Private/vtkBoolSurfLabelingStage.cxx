@@ -159,6 +159,8 @@ bool LabelArrangement(vtkPolyData* input,
     in.NumberOfShapes = fields.NumberOfShapes;
     in.ShapeIds = fields.ShapeIds;
     in.Arcs = fields.Arcs;
+    in.NumberOfPlugs = fields.NumberOfPlugs;
+    in.Links = fields.Links;
     in.CellComponent = fields.CellComponent;
     in.ZeroCells = fields.ZeroCellCandidates;
   }

@@ -40,6 +40,76 @@ inline TriangleMesh FlatMeshFor(double lo, double hi, int cells, bool aligned, s
   return TriangleMesh(d.Positions, d.Triangles);
 }
 
+/// An axis-aligned hole cut out of a flat mesh, or none (the default, empty).
+struct FlatHole
+{
+  double X0 = 0, Y0 = 0, X1 = 0, Y1 = 0;
+  bool Empty() const { return this->X1 <= this->X0 || this->Y1 <= this->Y0; }
+  double Area() const { return this->Empty() ? 0.0 : (this->X1 - this->X0) * (this->Y1 - this->Y0); }
+  Vec2 Center() const { return { 0.5 * (this->X0 + this->X1), 0.5 * (this->Y0 + this->Y1) }; }
+  /// Whether the segment a-b meets the open hole (Liang-Barsky clipping: the part of the
+  /// segment strictly inside has positive length, or the segment is a point inside).
+  bool Enters(Vec2 a, Vec2 b) const
+  {
+    if (this->Empty())
+      return false;
+    double t0 = 0, t1 = 1;
+    const double d[2] = { b.x - a.x, b.y - a.y }, lo[2] = { this->X0, this->Y0 },
+                 hi[2] = { this->X1, this->Y1 }, p[2] = { a.x, a.y };
+    for (int k = 0; k < 2; ++k)
+    {
+      if (d[k] == 0)
+      {
+        if (p[k] <= lo[k] || p[k] >= hi[k])
+          return false;
+        continue;
+      }
+      double s0 = (lo[k] - p[k]) / d[k], s1 = (hi[k] - p[k]) / d[k];
+      if (s0 > s1)
+        std::swap(s0, s1);
+      t0 = std::max(t0, s0);
+      t1 = std::min(t1, s1);
+    }
+    return t0 < t1 || (a.x == b.x && a.y == b.y && t0 <= t1);
+  }
+  /// Whether a drawing keeps out of the hole (it may run along its boundary).
+  bool Avoids(const std::vector<LatticePolygon>& drawing) const
+  {
+    for (const auto& poly : drawing)
+    {
+      const size_t n = poly.Points.size();
+      for (size_t i = 0; i < n; ++i)
+      {
+        const auto &p = poly.Points[i], &q = poly.Points[(i + 1) % n];
+        if (this->Enters({ double(p[0]), double(p[1]) }, { double(q[0]), double(q[1]) }))
+          return false;
+      }
+    }
+    return true;
+  }
+};
+
+/// A flat square mesh [lo, hi]^2 aligned with the integer lattice (unit cells), without the
+/// triangles inside `hole` (whose corners are lattice points): a second boundary loop.
+inline TriangleMesh FlatMeshWithHole(double lo, double hi, const FlatHole& hole)
+{
+  MeshData d = MakeFlatSquare(static_cast<int>(hi - lo), hi - lo, 0.0, 0);
+  std::vector<Triangle> kept;
+  for (Vec3& p : d.Positions)
+  {
+    p.x += lo;
+    p.y += lo;
+  }
+  for (const Triangle& t : d.Triangles)
+  {
+    const Vec3 &a = d.Positions[t[0]], &b = d.Positions[t[1]], &c = d.Positions[t[2]];
+    const Vec2 g{ (a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0 };
+    if (!(g.x > hole.X0 && g.x < hole.X1 && g.y > hole.Y0 && g.y < hole.Y1))
+      kept.push_back(t);
+  }
+  return TriangleMesh(d.Positions, kept);
+}
+
 /// The chain's answer for a drawing: per-cell areas and labels, or the error that refused it.
 struct FlatDrawingAnswer
 {

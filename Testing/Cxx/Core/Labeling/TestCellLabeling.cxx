@@ -103,3 +103,40 @@ TEST(CellLabeling, ComponentsGetTheirOwnZeroCells)
   EXPECT_EQ(r.GetLabel(1, 0), 1);
   EXPECT_EQ(r.GetLabel(3, 0), -1);
 }
+
+TEST(CellLabeling, PlugsAreLabeledAndLeftOut)
+{
+  // A strip across a square (cell 1) between the outside's two pieces (cells 0 and 2), drawn
+  // clockwise along both sides: its two arcs between cells, its two boundary patches as arcs
+  // from the plug (node 3), and both outside pieces linked to the plug, which is the zero node.
+  LabelingInput in;
+  in.NumberOfCells = 3;
+  in.NumberOfPlugs = 1;
+  in.NumberOfShapes = 1;
+  in.Arcs = { { 1, 0, 0, 0 }, { 1, 2, 0, 1 }, { 1, 3, 0, 2 }, { 1, 3, 0, 3 } };
+  in.Links = { { 0, 3 }, { 2, 3 } };
+  in.CellComponent = { 0, 0, 0, 0 };
+  in.ZeroCells = { 3 };
+  LabelingResult r = LabelCells(in);
+  EXPECT_TRUE(r.ShapeConsistent[0]);
+  ASSERT_EQ(r.Labels.size(), 3u); // the plug is not in the result
+  EXPECT_EQ(r.GetLabel(0, 0), 0);
+  EXPECT_EQ(r.GetLabel(1, 0), -1);
+  EXPECT_EQ(r.GetLabel(2, 0), 0);
+
+  // Without the links the outside pieces would be free: cell 2 is tied to the plug only
+  // through them, so dropping the arcs between cells leaves the labels unchanged.
+  in.Arcs.erase(in.Arcs.begin(), in.Arcs.begin() + 2);
+  r = LabelCells(in);
+  EXPECT_EQ(r.GetLabel(0, 0), 0);
+  EXPECT_EQ(r.GetLabel(1, 0), -1);
+  EXPECT_EQ(r.GetLabel(2, 0), 0);
+
+  // A link that contradicts an arc is a conflict, reported at a cell, never at the plug.
+  in.Links.push_back({ 1, 3 });
+  r = LabelCells(in);
+  EXPECT_FALSE(r.ShapeConsistent[0]);
+  ASSERT_EQ(r.Conflicts.size(), 1u);
+  EXPECT_LT(r.Conflicts[0].Cell, in.NumberOfCells);
+  EXPECT_NE(r.Conflicts[0].FirstLabel, r.Conflicts[0].SecondLabel);
+}
