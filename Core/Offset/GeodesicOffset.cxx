@@ -850,12 +850,15 @@ void RefinePiece(const TriangleMesh& mesh,
 // between the piece's end points would cut the corner off. The corner is where the level set's
 // tangents at the two end points meet; it is kept when the field there is much closer to the
 // level than at the chord's middle (a round join's tangents meet outside it, and are not).
+// `outside`, when given, tells whether the fronts turn sharply but their tangents meet outside
+// the triangle: the tip may go on into the next one (TipAcrossEdge).
 bool SharpCorner(const TriangleMesh& mesh,
   OffsetField& field,
   int t,
   const CanonicalPoint& a,
   const CanonicalPoint& b,
-  CanonicalPoint& corner)
+  CanonicalPoint& corner,
+  bool* outside = nullptr)
 {
   const Triangle& tri = mesh.GetTriangle(t);
   const Vec3 p0 = mesh.GetPosition(tri[0]), p1 = mesh.GetPosition(tri[1]),
@@ -874,7 +877,10 @@ bool SharpCorner(const TriangleMesh& mesh,
   auto value = [&](double x, double y) { return field.InTriangle(t, weightsOf(x, y)); };
   const Vec3 centroid = (1.0 / 3.0) * (p0 + p1 + p2);
   const double cx = Dot(centroid - p0, ux), cy = Dot(centroid - p0, uy);
-  const double h = 1e-4 * l1;
+  // Gradients sampled well within the front of each end point: a tip that barely enters the
+  // triangle (end points much closer than the triangle's size) needs samples as close.
+  const double chord = Distance(PositionOf(mesh, a), PositionOf(mesh, b));
+  const double h = std::min(1e-4 * l1, 1e-2 * chord);
   Vec2 point[2], gradient[2];
   const CanonicalPoint* ends[2] = { &a, &b };
   for (int i = 0; i < 2; ++i)
@@ -883,7 +889,9 @@ bool SharpCorner(const TriangleMesh& mesh,
     const double px = Dot(x - p0, ux), py = Dot(x - p0, uy);
     point[i] = { px, py };
     // Just inside the triangle from the end point.
-    const double sx = px + 1e-2 * (cx - px), sy = py + 1e-2 * (cy - py);
+    const double toCentroid = std::hypot(cx - px, cy - py);
+    const double inward = toCentroid > 0.0 ? std::min(1e-2, 0.1 * chord / toCentroid) : 0.0;
+    const double sx = px + inward * (cx - px), sy = py + inward * (cy - py);
     const double f = value(sx, sy);
     gradient[i] = { (value(sx + h, sy) - f) / h, (value(sx, sy + h) - f) / h };
   }
@@ -902,6 +910,10 @@ bool SharpCorner(const TriangleMesh& mesh,
   std::array<double, 3> w = weightsOf(x, y);
   if (!(w[0] > -1e-9 && w[1] > -1e-9 && w[2] > -1e-9))
   {
+    if (outside)
+    {
+      *outside = std::isfinite(w[0] + w[1] + w[2]);
+    }
     return false;
   }
   for (double& wk : w)
@@ -919,6 +931,162 @@ bool SharpCorner(const TriangleMesh& mesh,
   sp.V = w[2] / (w[0] + w[1] + w[2]);
   corner = LocateSurfacePoint(mesh, sp);
   return !(corner == a) && !(corner == b);
+}
+
+// Where mesh edge `edge` holds a stretch on the `sign` side of the level set (sign * F < 0)
+// between two ends on the other side: the two crossings, in the order of the edge. The field
+// along the edge near a tip is the distance to the two sides meeting at its corner, convex: its
+// extremum by golden section after a coarse scan, then a bisection on each side.
+bool DoubleCrossing(OffsetField& field, int edge, double sign, CanonicalPoint crossing[2])
+{
+  auto value = [&](double s) { return sign * field.OnEdge(edge, s); };
+  constexpr int Scan = 16;
+  int best = 1;
+  for (int i = 2; i < Scan; ++i)
+  {
+    if (value(static_cast<double>(i) / Scan) < value(static_cast<double>(best) / Scan))
+    {
+      best = i;
+    }
+  }
+  double lo = static_cast<double>(best - 1) / Scan, hi = static_cast<double>(best + 1) / Scan;
+  constexpr double Golden = 0.6180339887498949;
+  for (int i = 0; i < 80 && hi - lo > 1e-15; ++i)
+  {
+    const double m1 = hi - Golden * (hi - lo), m2 = lo + Golden * (hi - lo);
+    if (value(m1) < value(m2))
+    {
+      hi = m2;
+    }
+    else
+    {
+      lo = m1;
+    }
+  }
+  const double middle = 0.5 * (lo + hi);
+  if (!(value(middle) < 0.0))
+  {
+    return false;
+  }
+  for (int side = 0; side < 2; ++side)
+  {
+    double inner = middle, outer = side == 0 ? 0.0 : 1.0;
+    for (int i = 0; i < 60 && std::abs(outer - inner) > 1e-15; ++i)
+    {
+      const double mid = 0.5 * (inner + outer);
+      (value(mid) < 0.0 ? inner : outer) = mid;
+    }
+    crossing[side].Location = PointLocation::Edge;
+    crossing[side].Id = edge;
+    crossing[side].T = std::min(1.0 - EdgeMargin, std::max(EdgeMargin, 0.5 * (inner + outer)));
+  }
+  return crossing[0].T < crossing[1].T;
+}
+
+// Where the tip of a sharp corner leaves the crossed triangle t (piece a -> b) through its edge
+// whose two ends lie on the other side of the level set, no edge of the triangles it enters
+// straddles the level set and the contour's pieces never go there: the chord a -> b would cut
+// the tip off. The level set crosses each edge the tip passes twice: the crossings, found on the
+// exact field along the edges, and the corner in the triangle where the tip ends (SharpCorner
+// there), are the points to add after a. False when the field does not cross t's edge.
+bool TipAcrossEdge(const TriangleMesh& mesh,
+  OffsetField& field,
+  int t,
+  const CanonicalPoint& a,
+  std::vector<CanonicalPoint>& out)
+{
+  const Triangle& tri = mesh.GetTriangle(t);
+  bool negative[3];
+  int count = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    negative[k] = field.AtVertex(tri[k]) < 0.0;
+    count += negative[k] ? 1 : 0;
+  }
+  if (count == 0 || count == 3)
+  {
+    return false;
+  }
+  int k = 0;
+  while (negative[k] != (count == 1))
+  {
+    ++k;
+  }
+  // The tip's side of the level set is the odd corner's; it leaves t through the opposite edge.
+  const double sign = negative[k] ? 1.0 : -1.0;
+  std::vector<CanonicalPoint> entering, leaving;
+  Vec3 last = PositionOf(mesh, a);
+  int from = t, edge = mesh.GetEdgeId(t, (k + 1) % 3);
+  CanonicalPoint crossing[2];
+  if (!DoubleCrossing(field, edge, sign, crossing))
+  {
+    return false;
+  }
+  // A tip of a few triangles at most: its corner is a right angle or sharper at mesh resolution.
+  for (int step = 0; step < 4; ++step)
+  {
+    if (Distance(PositionOf(mesh, crossing[1]), last) <
+      Distance(PositionOf(mesh, crossing[0]), last))
+    {
+      std::swap(crossing[0], crossing[1]);
+    }
+    entering.push_back(crossing[0]);
+    leaving.push_back(crossing[1]);
+    last = PositionOf(mesh, crossing[0]);
+    // The triangle beyond, wholly on the other side at its corners.
+    int beyond = -1;
+    for (int j = 0; j < 3; ++j)
+    {
+      if (mesh.GetEdgeId(from, j) == edge)
+      {
+        beyond = mesh.GetNeighbor(from, j);
+      }
+    }
+    if (beyond < 0 || field.Touches(beyond))
+    {
+      break;
+    }
+    const Triangle& other = mesh.GetTriangle(beyond);
+    bool otherSide = true;
+    for (int j = 0; j < 3; ++j)
+    {
+      otherSide = otherSide && (field.AtVertex(other[j]) < 0.0) != negative[k];
+    }
+    if (!otherSide)
+    {
+      break;
+    }
+    CanonicalPoint corner;
+    bool outside = false;
+    if (SharpCorner(mesh, field, beyond, crossing[0], crossing[1], corner, &outside))
+    {
+      entering.push_back(corner);
+      break;
+    }
+    if (!outside)
+    {
+      break;
+    }
+    // On through whichever other edge of `beyond` the field crosses.
+    int next = -1;
+    for (int j = 0; j < 3 && next < 0; ++j)
+    {
+      const int e = mesh.GetEdgeId(beyond, j);
+      if (e != edge && DoubleCrossing(field, e, sign, crossing))
+      {
+        next = e;
+      }
+    }
+    if (next < 0)
+    {
+      break;
+    }
+    from = beyond;
+    edge = next;
+  }
+  out.insert(out.end(), entering.begin(), entering.end());
+  out.insert(out.end(), leaving.rbegin(), leaving.rend());
+  return true;
 }
 
 // Length of a loop and its turning sense: the area it encloses projected on the mean normal of
@@ -1070,13 +1238,16 @@ bool ComputeGeodesicOffset(const TriangleMesh& mesh,
       {
         loop.push_back(a);
       }
+      const bool free = !field.Touches(piece.Triangle);
       CanonicalPoint corner;
-      if (!field.Touches(piece.Triangle) &&
-        SharpCorner(mesh, field, piece.Triangle, a, contour.Points[piece.To], corner))
+      bool outside = false;
+      if (free &&
+        SharpCorner(mesh, field, piece.Triangle, a, contour.Points[piece.To], corner, &outside))
       {
         loop.push_back(corner);
       }
-      else if (options.Resolution > 0 && !field.Touches(piece.Triangle))
+      else if (free && !(outside && TipAcrossEdge(mesh, field, piece.Triangle, a, loop)) &&
+        options.Resolution > 0)
       {
         RefinePiece(
           mesh, field, piece.Triangle, a, contour.Points[piece.To], options.Resolution, loop);
