@@ -1,6 +1,7 @@
 #include "Offset/GeodesicOffset.h"
 
 #include "Geodesic/ExactGeodesicSearch.h"
+#include "Geodesic/StraightestGeodesic.h"
 
 #include <algorithm>
 #include <chrono>
@@ -34,10 +35,200 @@ std::string BudgetMessage(int windows)
     std::to_string(windows) + " windows): use a smaller distance";
 }
 
+// A flat end: the geodesic normal to the curve at its end point, walked straightest from the
+// end point to both sides (on a flat mesh the straight line through it normal to the last
+// piece), and per piece of it the unit direction leaving the curve. Points within Reach of the
+// end point on the far side of the normal are beyond the end.
 struct EndCap
 {
-  Vec3 Point, Outward; // the end point and the unit direction leaving the curve there
+  Vec3 Point;
+  double Reach = 0.0;
+  std::vector<Vec3> Normal; // from one side of the curve to the other
+  std::vector<Vec3> Beyond; // per piece of Normal
 };
+
+// How far x lies beyond the end (negative: on the curve's side), measured from the nearest
+// piece of the normal.
+double BeyondEnd(const EndCap& cap, const Vec3& x)
+{
+  double nearest = Infinity, beyond = 0.0;
+  for (size_t j = 0; j + 1 < cap.Normal.size(); ++j)
+  {
+    const double distance = SegmentPointDistance(cap.Normal[j], cap.Normal[j + 1], x);
+    if (distance < nearest)
+    {
+      nearest = distance;
+      beyond = Dot(x - cap.Normal[j], cap.Beyond[j]);
+    }
+  }
+  return beyond;
+}
+
+// The cap at `end`, whose neighbour on the curve is `next`. False when the end piece has no
+// direction.
+bool MakeEndCap(const TriangleMesh& mesh,
+  const CanonicalPoint& end,
+  const CanonicalPoint& next,
+  double distance,
+  EndCap& cap)
+{
+  const int t = SharedTriangle(mesh, end, next);
+  const Vec3 a = PositionOf(mesh, end);
+  const Vec3 along = a - PositionOf(mesh, next);
+  if (t < 0 || !(Length(along) > 0.0))
+  {
+    return false;
+  }
+  const Vec3 outward = (1.0 / Length(along)) * along;
+  const Vec3 side = Cross(TriangleNormal(mesh, t), outward);
+  if (!(Length(side) > 0.0))
+  {
+    return false;
+  }
+  cap.Point = a;
+  cap.Reach = 1.05 * distance;
+  // Samples of the normal every eighth of its half length, each walked from the end point (a
+  // walk returns its end only); the half length covers every point within Reach.
+  constexpr int Samples = 8;
+  const double half = 1.25 * distance;
+  const std::array<double, 3> w = WeightsInTriangle(mesh, end, t);
+  SurfacePoint start;
+  start.Triangle = t;
+  start.U = w[1];
+  start.V = w[2];
+  std::vector<Vec3> points[2];
+  std::vector<int> triangles[2];
+  for (int s = 0; s < 2; ++s)
+  {
+    const Vec3 direction = (s == 0 ? 1.0 : -1.0) * side;
+    for (int i = 1; i <= Samples; ++i)
+    {
+      const StraightestWalk walk = WalkStraightest(mesh, start, direction, half * i / Samples);
+      if (!(walk.Length > 0.0) || walk.End.Triangle < 0)
+      {
+        break;
+      }
+      points[s].push_back(mesh.Evaluate(walk.End.Triangle, walk.End.U, walk.End.V));
+      triangles[s].push_back(walk.End.Triangle);
+      if (walk.HitBoundary)
+      {
+        break;
+      }
+    }
+  }
+  // From the far end of side 1 through the end point to the far end of side 0 (direction +side).
+  std::vector<int> pieceTriangle;
+  for (size_t i = points[1].size(); i-- > 0;)
+  {
+    cap.Normal.push_back(points[1][i]);
+    pieceTriangle.push_back(triangles[1][i]);
+  }
+  cap.Normal.push_back(a);
+  for (size_t i = 0; i < points[0].size(); ++i)
+  {
+    pieceTriangle.push_back(triangles[0][i]);
+    cap.Normal.push_back(points[0][i]);
+  }
+  for (size_t j = 0; j + 1 < cap.Normal.size(); ++j)
+  {
+    // Across the piece, in the plane of the triangle of its sample farther from the end point:
+    // (+side) x normal is the outward direction at the end point.
+    const Vec3 across =
+      Cross(cap.Normal[j + 1] - cap.Normal[j], TriangleNormal(mesh, pieceTriangle[j]));
+    cap.Beyond.push_back(Length(across) > 0.0 ? (1.0 / Length(across)) * across : outward);
+  }
+  if (cap.Beyond.empty())
+  {
+    cap.Normal = { a - half * side, a + half * side };
+    cap.Beyond = { outward };
+  }
+  return true;
+}
+
+// The turn of an open curve at its interior point i, as the unfolded strip sees it: at a
+// crossing of a mesh edge, the difference of the angles its pieces make with the edge; elsewhere
+// the angle between the pieces.
+double TurnAt(const TriangleMesh& mesh, const std::vector<CanonicalPoint>& curve, size_t i)
+{
+  const Vec3 x = PositionOf(mesh, curve[i]);
+  const Vec3 in = x - PositionOf(mesh, curve[i - 1]), out = PositionOf(mesh, curve[i + 1]) - x;
+  if (!(Length(in) > 0.0 && Length(out) > 0.0))
+  {
+    return 0.0;
+  }
+  auto angle = [](const Vec3& u, const Vec3& v)
+  { return std::atan2(Length(Cross(u, v)), Dot(u, v)); };
+  if (curve[i].Location == PointLocation::Edge)
+  {
+    const std::array<int, 2> ev = mesh.GetEdgeVertices(curve[i].Id);
+    const Vec3 edge = mesh.GetPosition(ev[1]) - mesh.GetPosition(ev[0]);
+    return std::abs(angle(in, edge) - angle(out, edge));
+  }
+  return angle(in, out);
+}
+
+// Where the distance to a flat-ended curve without its end stretch takes over: the first point
+// (from `end`, stepping by `step`) at least `length` along the curve from it, or an earlier corner.
+// -1 when the curve ends first.
+int TrimmedEnd(const TriangleMesh& mesh,
+  const std::vector<CanonicalPoint>& curve,
+  int end,
+  int step,
+  double length)
+{
+  // Below ~3 degrees a turn counts as straight: cutting past it loses at most a sliver of
+  // that angle by d^2 beyond the end (see ComputeGeodesicOffset's flat ends).
+  constexpr double Corner = 0.05;
+  const int n = static_cast<int>(curve.size());
+  double along = 0.0;
+  for (int i = end + step; i >= 0 && i < n; i += step)
+  {
+    along += Distance(PositionOf(mesh, curve[i]), PositionOf(mesh, curve[i - step]));
+    const bool interior = i > 0 && i + 1 < n;
+    if (!interior)
+    {
+      return -1;
+    }
+    if (along >= length || TurnAt(mesh, curve, static_cast<size_t>(i)) > Corner)
+    {
+      return i;
+    }
+  }
+  return -1;
+}
+
+// A flat-ended open curve as two distances: Head, the curve without the stretch next to its
+// last point, cut at its first point; Tail, the curve without the stretch next to its first
+// point, cut at its last point. A curve too short or too straight for that is one Head cut at
+// both ends.
+struct FlatCurve
+{
+  std::vector<CanonicalPoint> Head, Tail;
+  std::vector<int> HeadCaps, TailCaps; // into OffsetField::Caps
+  std::vector<Vec3> Positions;         // of the whole curve, to group curves
+  std::array<Vec3, 2> Ends;
+};
+
+// Whether an end of one curve comes within `gap` of the other (straight-line distance, a lower
+// bound of the distance on the surface).
+bool NearEnds(const FlatCurve& a, const FlatCurve& b, double gap)
+{
+  for (const FlatCurve* one : { &a, &b })
+  {
+    const FlatCurve& other = one == &a ? b : a;
+    for (const Vec3& end : one->Ends)
+    {
+      for (size_t i = 0; i + 1 < other.Positions.size(); ++i)
+      {
+        if (SegmentPointDistance(other.Positions[i], other.Positions[i + 1], end) < gap)
+        {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
 
 // The signed field F (distance inside negative) minus the offset distance, on the mesh.
 class OffsetField
@@ -131,6 +322,7 @@ public:
     {
       std::vector<std::vector<CanonicalPoint>> curves;
       std::vector<char> curvesClosed;
+      std::vector<FlatCurve> flat;
       for (const BandCurve& band : this->Region.Bands)
       {
         const std::vector<CanonicalPoint>& curve = band.Points;
@@ -138,31 +330,29 @@ public:
         {
           continue;
         }
-        curves.push_back(curve);
-        curvesClosed.push_back(band.Closed ? 1 : 0);
         stats.Sources += static_cast<int>(curve.size());
-        if (options.Ends == OffsetEndStyle::Flat && !band.Closed)
+        if (options.Ends != OffsetEndStyle::Flat || band.Closed ||
+          !this->AddFlatCurve(curve, d, flat))
         {
-          const size_t n = curve.size();
-          const Vec3 a = PositionOf(mesh, curve[0]), a1 = PositionOf(mesh, curve[1]);
-          const Vec3 b = PositionOf(mesh, curve[n - 1]), b1 = PositionOf(mesh, curve[n - 2]);
-          if (Length(a - a1) > 0.0)
-          {
-            this->Caps.push_back({ a, (1.0 / Length(a - a1)) * (a - a1) });
-          }
-          if (Length(b - b1) > 0.0)
-          {
-            this->Caps.push_back({ b, (1.0 / Length(b - b1)) * (b - b1) });
-          }
+          curves.push_back(curve);
+          curvesClosed.push_back(band.Closed ? 1 : 0);
         }
       }
-      this->Open.SetMaximumWindows(options.MaximumWindows);
-      if (!this->Open.ComputeDistanceField(curves, curvesClosed, radius))
+      if (!curves.empty())
       {
-        error = BudgetMessage(options.MaximumWindows);
+        this->Open.SetMaximumWindows(options.MaximumWindows);
+        if (!this->Open.ComputeDistanceField(curves, curvesClosed, radius))
+        {
+          error = BudgetMessage(options.MaximumWindows);
+          return false;
+        }
+        stats.Windows += this->Open.GetLastWindowCount();
+        this->BandFields.push_back({ &this->Open, {} });
+      }
+      if (!this->ComputeFlatFields(flat, options, radius, stats, error))
+      {
         return false;
       }
-      stats.Windows += this->Open.GetLastWindowCount();
     }
     return true;
   }
@@ -175,9 +365,9 @@ public:
     {
       out = this->Closed.GetFieldVertices();
     }
-    if (this->HasOpen)
+    for (const BandField& band : this->BandFields)
     {
-      const std::vector<int>& more = this->Open.GetFieldVertices();
+      const std::vector<int>& more = band.Search->GetFieldVertices();
       out.insert(out.end(), more.begin(), more.end());
     }
   }
@@ -193,7 +383,7 @@ public:
     const double value = this->Combine(this->Mesh.GetPosition(v),
       this->HasClosed ? this->Closed.GetFieldDistanceAtVertex(v) : Infinity,
       this->HasClosed && this->Inside(v),
-      this->HasOpen ? this->Open.GetFieldDistanceAtVertex(v) : Infinity);
+      [v](const ExactGeodesicSearch& search) { return search.GetFieldDistanceAtVertex(v); });
     b.VertexStamp[v] = b.Stamp;
     b.VertexValue[v] = value;
     return value;
@@ -239,8 +429,11 @@ public:
         }
       }
     }
-    return this->Combine(
-      x, closed, inside, this->HasOpen ? this->Open.GetFieldDistanceOnEdge(edge, s) : Infinity);
+    return this->Combine(x,
+      closed,
+      inside,
+      [edge, s](const ExactGeodesicSearch& search)
+      { return search.GetFieldDistanceOnEdge(edge, s); });
   }
 
   /// F - d inside triangle `face` (one the boundary does not touch) at weights w.
@@ -253,7 +446,8 @@ public:
     return this->Combine(x,
       this->HasClosed ? this->Closed.GetFieldDistanceInTriangle(face, w) : Infinity,
       this->HasClosed && this->Inside(tri[0]),
-      this->HasOpen ? this->Open.GetFieldDistanceInTriangle(face, w) : Infinity);
+      [face, &w](const ExactGeodesicSearch& search)
+      { return search.GetFieldDistanceInTriangle(face, w); });
   }
 
   /// The boundary passes through (or along) this triangle: its side is not uniform inside.
@@ -271,37 +465,170 @@ private:
     return b.VertexInside[v] != 0;
   }
 
-  double Combine(const Vec3& x, double closedDistance, bool inside, double openDistance) const
+  // The distance to a flat-ended curve's stretch next to an end point and a fixed length of
+  // the rest, which the other part of the curve's distance covers (FlatCurve), and the caps.
+  bool AddFlatCurve(const std::vector<CanonicalPoint>& curve,
+    double d,
+    std::vector<FlatCurve>& flat)
+  {
+    const TriangleMesh& mesh = this->Mesh;
+    const int n = static_cast<int>(curve.size());
+    EndCap first, last;
+    if (!MakeEndCap(mesh, curve[0], curve[1], d, first) ||
+      !MakeEndCap(mesh, curve[n - 1], curve[n - 2], d, last))
+    {
+      return false;
+    }
+    FlatCurve c;
+    for (const CanonicalPoint& p : curve)
+    {
+      c.Positions.push_back(PositionOf(mesh, p));
+    }
+    c.Ends = { first.Point, last.Point };
+    // Past the first point's stretch (at least d long, unless a corner comes first) the curve's
+    // band is not cut at the first point: a disk of radius d around its first point there stays on
+    // this side of the first point's normal.
+    const double stretch = 1.01 * d;
+    const int head = TrimmedEnd(mesh, curve, n - 1, -1, stretch);
+    const int tail = TrimmedEnd(mesh, curve, 0, 1, stretch);
+    const int firstCap = static_cast<int>(this->Caps.size());
+    this->Caps.push_back(std::move(first));
+    this->Caps.push_back(std::move(last));
+    if (head < 0 || tail < 0)
+    {
+      c.Head = curve;
+      c.HeadCaps = { firstCap, firstCap + 1 };
+    }
+    else
+    {
+      c.Head.assign(curve.begin(), curve.begin() + head + 1);
+      c.Tail.assign(curve.begin() + tail, curve.end());
+      c.HeadCaps = { firstCap };
+      c.TailCaps = { firstCap + 1 };
+    }
+    flat.push_back(std::move(c));
+    return true;
+  }
+
+  // The flat-ended curves in groups whose ends keep away from each other's curves (so the caps
+  // of one curve's ends cut nothing near another's), two distances per group: the curves' heads
+  // and their tails.
+  bool ComputeFlatFields(const std::vector<FlatCurve>& flat,
+    const OffsetOptions& options,
+    double radius,
+    OffsetStatistics& stats,
+    std::string& error)
+  {
+    const double gap = 2.0 * 1.05 * std::abs(this->Level) * 1.01;
+    std::vector<std::vector<int>> groups;
+    for (size_t i = 0; i < flat.size(); ++i)
+    {
+      size_t g = 0;
+      for (; g < groups.size(); ++g)
+      {
+        bool near = false;
+        for (int j : groups[g])
+        {
+          near = near || NearEnds(flat[i], flat[j], gap);
+        }
+        if (!near)
+        {
+          break;
+        }
+      }
+      if (g == groups.size())
+      {
+        groups.emplace_back();
+      }
+      groups[g].push_back(static_cast<int>(i));
+    }
+    std::vector<std::unique_ptr<ExactGeodesicSearch>>& searches = this->Buffers.Flat;
+    for (const std::vector<int>& group : groups)
+    {
+      for (int part = 0; part < 2; ++part)
+      {
+        std::vector<std::vector<CanonicalPoint>> curves;
+        std::vector<int> caps;
+        for (int i : group)
+        {
+          const FlatCurve& c = flat[i];
+          if (!(part == 0 ? c.Head : c.Tail).empty())
+          {
+            curves.push_back(part == 0 ? c.Head : c.Tail);
+            const std::vector<int>& more = part == 0 ? c.HeadCaps : c.TailCaps;
+            caps.insert(caps.end(), more.begin(), more.end());
+          }
+        }
+        if (curves.empty())
+        {
+          continue;
+        }
+        const size_t used = this->BandFields.size();
+        if (searches.size() <= used)
+        {
+          searches.push_back(std::make_unique<ExactGeodesicSearch>(this->Mesh));
+        }
+        ExactGeodesicSearch& search = *searches[used];
+        search.SetMaximumWindows(options.MaximumWindows);
+        if (!search.ComputeDistanceField(curves, std::vector<char>(curves.size(), 0), radius))
+        {
+          error = BudgetMessage(options.MaximumWindows);
+          return false;
+        }
+        stats.Windows += search.GetLastWindowCount();
+        this->BandFields.push_back({ &search, std::move(caps) });
+      }
+    }
+    return true;
+  }
+
+  template <class DistanceOf>
+  double Combine(const Vec3& x, double closedDistance, bool inside, DistanceOf distanceOf) const
   {
     double f = Infinity;
     if (this->HasClosed)
     {
       f = inside ? -closedDistance : closedDistance;
     }
-    if (this->HasOpen)
+    // Within rounding of the level on a flat end's line: the band's corner there is convex.
+    const double tie = 1e-9 * std::abs(this->Level);
+    bool convexTie = false;
+    for (const BandField& band : this->BandFields)
     {
-      double band = openDistance;
-      // Flat ends: the band minus the half-space beyond each end, near that end.
-      for (const EndCap& cap : this->Caps)
+      const double distance = distanceOf(*band.Search);
+      double value = distance, cut = -Infinity;
+      // Flat ends: the band of this part of the curves minus what lies beyond their ends.
+      for (int c : band.Caps)
       {
-        if (Distance(x, cap.Point) <= 2.0 * this->Level)
+        const EndCap& cap = this->Caps[c];
+        if (distance <= this->Level + tie && Distance(x, cap.Point) <= cap.Reach)
         {
-          band = std::max(band, this->Level + Dot(x - cap.Point, cap.Outward));
+          cut = std::max(cut, this->Level + BeyondEnd(cap, x));
         }
       }
-      f = std::min(f, band);
+      value = std::max(value, cut);
+      convexTie =
+        convexTie || (std::abs(value - this->Level) <= tie && std::abs(cut - this->Level) <= tie);
+      f = std::min(f, value);
     }
     // A point on the level set (to rounding) goes to the side whose sharp corners meet there:
-    // the region's when shrinking (an inset's corners are convex), its complement's when
-    // growing (a margin's sharp corners are concave). The contour then keeps the corner's tip.
+    // the region's when shrinking (an inset's corners are convex) or at a flat end's line (the
+    // end's corners are), its complement's when growing (a margin's sharp corners are concave).
+    // The contour then keeps the corner's tip.
     const double value = f - this->Level;
-    if (std::abs(value) <= 1e-9 * std::abs(this->Level))
+    if (std::abs(value) <= tie)
     {
       const double tiny = std::numeric_limits<double>::min();
-      return this->Level < 0.0 ? -tiny : tiny;
+      return this->Level < 0.0 || convexTie ? -tiny : tiny;
     }
     return value;
   }
+
+  struct BandField
+  {
+    ExactGeodesicSearch* Search;
+    std::vector<int> Caps; // cut from this distance's band (into Caps)
+  };
 
   const TriangleMesh& Mesh;
   const OffsetRegion& Region;
@@ -313,6 +640,7 @@ private:
   std::unordered_set<int> OnBoundary;                     // vertices on the boundary
   std::unordered_set<int> TouchedTriangles;
   std::vector<EndCap> Caps;
+  std::vector<BandField> BandFields;
   OffsetBuffers& Buffers;
 };
 
@@ -522,12 +850,15 @@ void RefinePiece(const TriangleMesh& mesh,
 // between the piece's end points would cut the corner off. The corner is where the level set's
 // tangents at the two end points meet; it is kept when the field there is much closer to the
 // level than at the chord's middle (a round join's tangents meet outside it, and are not).
+// `outside`, when given, tells whether the fronts turn sharply but their tangents meet outside
+// the triangle: the tip may go on into the next one (TipAcrossEdge).
 bool SharpCorner(const TriangleMesh& mesh,
   OffsetField& field,
   int t,
   const CanonicalPoint& a,
   const CanonicalPoint& b,
-  CanonicalPoint& corner)
+  CanonicalPoint& corner,
+  bool* outside = nullptr)
 {
   const Triangle& tri = mesh.GetTriangle(t);
   const Vec3 p0 = mesh.GetPosition(tri[0]), p1 = mesh.GetPosition(tri[1]),
@@ -546,7 +877,10 @@ bool SharpCorner(const TriangleMesh& mesh,
   auto value = [&](double x, double y) { return field.InTriangle(t, weightsOf(x, y)); };
   const Vec3 centroid = (1.0 / 3.0) * (p0 + p1 + p2);
   const double cx = Dot(centroid - p0, ux), cy = Dot(centroid - p0, uy);
-  const double h = 1e-4 * l1;
+  // Gradients sampled well within the front of each end point: a tip that barely enters the
+  // triangle (end points much closer than the triangle's size) needs samples as close.
+  const double chord = Distance(PositionOf(mesh, a), PositionOf(mesh, b));
+  const double h = std::min(1e-4 * l1, 1e-2 * chord);
   Vec2 point[2], gradient[2];
   const CanonicalPoint* ends[2] = { &a, &b };
   for (int i = 0; i < 2; ++i)
@@ -555,7 +889,9 @@ bool SharpCorner(const TriangleMesh& mesh,
     const double px = Dot(x - p0, ux), py = Dot(x - p0, uy);
     point[i] = { px, py };
     // Just inside the triangle from the end point.
-    const double sx = px + 1e-2 * (cx - px), sy = py + 1e-2 * (cy - py);
+    const double toCentroid = std::hypot(cx - px, cy - py);
+    const double inward = toCentroid > 0.0 ? std::min(1e-2, 0.1 * chord / toCentroid) : 0.0;
+    const double sx = px + inward * (cx - px), sy = py + inward * (cy - py);
     const double f = value(sx, sy);
     gradient[i] = { (value(sx + h, sy) - f) / h, (value(sx, sy + h) - f) / h };
   }
@@ -574,6 +910,10 @@ bool SharpCorner(const TriangleMesh& mesh,
   std::array<double, 3> w = weightsOf(x, y);
   if (!(w[0] > -1e-9 && w[1] > -1e-9 && w[2] > -1e-9))
   {
+    if (outside)
+    {
+      *outside = std::isfinite(w[0] + w[1] + w[2]);
+    }
     return false;
   }
   for (double& wk : w)
@@ -591,6 +931,162 @@ bool SharpCorner(const TriangleMesh& mesh,
   sp.V = w[2] / (w[0] + w[1] + w[2]);
   corner = LocateSurfacePoint(mesh, sp);
   return !(corner == a) && !(corner == b);
+}
+
+// Where mesh edge `edge` holds a stretch on the `sign` side of the level set (sign * F < 0)
+// between two ends on the other side: the two crossings, in the order of the edge. The field
+// along the edge near a tip is the distance to the two sides meeting at its corner, convex: its
+// extremum by golden section after a coarse scan, then a bisection on each side.
+bool DoubleCrossing(OffsetField& field, int edge, double sign, CanonicalPoint crossing[2])
+{
+  auto value = [&](double s) { return sign * field.OnEdge(edge, s); };
+  constexpr int Scan = 16;
+  int best = 1;
+  for (int i = 2; i < Scan; ++i)
+  {
+    if (value(static_cast<double>(i) / Scan) < value(static_cast<double>(best) / Scan))
+    {
+      best = i;
+    }
+  }
+  double lo = static_cast<double>(best - 1) / Scan, hi = static_cast<double>(best + 1) / Scan;
+  constexpr double Golden = 0.6180339887498949;
+  for (int i = 0; i < 80 && hi - lo > 1e-15; ++i)
+  {
+    const double m1 = hi - Golden * (hi - lo), m2 = lo + Golden * (hi - lo);
+    if (value(m1) < value(m2))
+    {
+      hi = m2;
+    }
+    else
+    {
+      lo = m1;
+    }
+  }
+  const double middle = 0.5 * (lo + hi);
+  if (!(value(middle) < 0.0))
+  {
+    return false;
+  }
+  for (int side = 0; side < 2; ++side)
+  {
+    double inner = middle, outer = side == 0 ? 0.0 : 1.0;
+    for (int i = 0; i < 60 && std::abs(outer - inner) > 1e-15; ++i)
+    {
+      const double mid = 0.5 * (inner + outer);
+      (value(mid) < 0.0 ? inner : outer) = mid;
+    }
+    crossing[side].Location = PointLocation::Edge;
+    crossing[side].Id = edge;
+    crossing[side].T = std::min(1.0 - EdgeMargin, std::max(EdgeMargin, 0.5 * (inner + outer)));
+  }
+  return crossing[0].T < crossing[1].T;
+}
+
+// Where the tip of a sharp corner leaves the crossed triangle t (piece a -> b) through its edge
+// whose two ends lie on the other side of the level set, no edge of the triangles it enters
+// straddles the level set and the contour's pieces never go there: the chord a -> b would cut
+// the tip off. The level set crosses each edge the tip passes twice: the crossings, found on the
+// exact field along the edges, and the corner in the triangle where the tip ends (SharpCorner
+// there), are the points to add after a. False when the field does not cross t's edge.
+bool TipAcrossEdge(const TriangleMesh& mesh,
+  OffsetField& field,
+  int t,
+  const CanonicalPoint& a,
+  std::vector<CanonicalPoint>& out)
+{
+  const Triangle& tri = mesh.GetTriangle(t);
+  bool negative[3];
+  int count = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    negative[k] = field.AtVertex(tri[k]) < 0.0;
+    count += negative[k] ? 1 : 0;
+  }
+  if (count == 0 || count == 3)
+  {
+    return false;
+  }
+  int k = 0;
+  while (negative[k] != (count == 1))
+  {
+    ++k;
+  }
+  // The tip's side of the level set is the odd corner's; it leaves t through the opposite edge.
+  const double sign = negative[k] ? 1.0 : -1.0;
+  std::vector<CanonicalPoint> entering, leaving;
+  Vec3 last = PositionOf(mesh, a);
+  int from = t, edge = mesh.GetEdgeId(t, (k + 1) % 3);
+  CanonicalPoint crossing[2];
+  if (!DoubleCrossing(field, edge, sign, crossing))
+  {
+    return false;
+  }
+  // A tip of a few triangles at most: its corner is a right angle or sharper at mesh resolution.
+  for (int step = 0; step < 4; ++step)
+  {
+    if (Distance(PositionOf(mesh, crossing[1]), last) <
+      Distance(PositionOf(mesh, crossing[0]), last))
+    {
+      std::swap(crossing[0], crossing[1]);
+    }
+    entering.push_back(crossing[0]);
+    leaving.push_back(crossing[1]);
+    last = PositionOf(mesh, crossing[0]);
+    // The triangle beyond, wholly on the other side at its corners.
+    int beyond = -1;
+    for (int j = 0; j < 3; ++j)
+    {
+      if (mesh.GetEdgeId(from, j) == edge)
+      {
+        beyond = mesh.GetNeighbor(from, j);
+      }
+    }
+    if (beyond < 0 || field.Touches(beyond))
+    {
+      break;
+    }
+    const Triangle& other = mesh.GetTriangle(beyond);
+    bool otherSide = true;
+    for (int j = 0; j < 3; ++j)
+    {
+      otherSide = otherSide && (field.AtVertex(other[j]) < 0.0) != negative[k];
+    }
+    if (!otherSide)
+    {
+      break;
+    }
+    CanonicalPoint corner;
+    bool outside = false;
+    if (SharpCorner(mesh, field, beyond, crossing[0], crossing[1], corner, &outside))
+    {
+      entering.push_back(corner);
+      break;
+    }
+    if (!outside)
+    {
+      break;
+    }
+    // On through whichever other edge of `beyond` the field crosses.
+    int next = -1;
+    for (int j = 0; j < 3 && next < 0; ++j)
+    {
+      const int e = mesh.GetEdgeId(beyond, j);
+      if (e != edge && DoubleCrossing(field, e, sign, crossing))
+      {
+        next = e;
+      }
+    }
+    if (next < 0)
+    {
+      break;
+    }
+    from = beyond;
+    edge = next;
+  }
+  out.insert(out.end(), entering.begin(), entering.end());
+  out.insert(out.end(), leaving.rbegin(), leaving.rend());
+  return true;
 }
 
 // Length of a loop and its turning sense: the area it encloses projected on the mean normal of
@@ -742,13 +1238,16 @@ bool ComputeGeodesicOffset(const TriangleMesh& mesh,
       {
         loop.push_back(a);
       }
+      const bool free = !field.Touches(piece.Triangle);
       CanonicalPoint corner;
-      if (!field.Touches(piece.Triangle) &&
-        SharpCorner(mesh, field, piece.Triangle, a, contour.Points[piece.To], corner))
+      bool outside = false;
+      if (free &&
+        SharpCorner(mesh, field, piece.Triangle, a, contour.Points[piece.To], corner, &outside))
       {
         loop.push_back(corner);
       }
-      else if (options.Resolution > 0 && !field.Touches(piece.Triangle))
+      else if (free && !(outside && TipAcrossEdge(mesh, field, piece.Triangle, a, loop)) &&
+        options.Resolution > 0)
       {
         RefinePiece(
           mesh, field, piece.Triangle, a, contour.Points[piece.To], options.Resolution, loop);

@@ -11,8 +11,14 @@
 //    |d|: only the band the offset sweeps is visited. Growing does not propagate inside the
 //    region, nor shrinking outside it: a shortest path to the boundary never crosses it.
 // 2. Signed field: F = -distance inside the region, +distance outside (the sign flips where
-//    an edge crosses the boundary); bands use the distance to the open curves, cut square at
-//    their ends for flat ends (the plane through the end point normal to the last piece).
+//    an edge crosses the boundary); bands use the distance to the open curves. A flat-ended
+//    band is Clipper's butt-ended one: the points within d of the curve but for those only
+//    near it beyond an end, past the geodesic normal to the curve at the end point. Each such
+//    curve gives two distances, to the curve without a stretch of at least d next to its last
+//    point (cut at the first point's normal) and without the one next to its first point (cut
+//    at the last point's normal), so a point beyond one end but within d of another part of
+//    the curve stays in the band. Exact for ends whose last d of curve is straight; where a
+//    corner comes closer to an end, its disk may reach up to d less that distance beyond it.
 // 3. Contour: the level set F = d, located on every mesh edge whose ends straddle it by
 //    bisection on the exact field along the edge, so each contour point is an exact surface
 //    point on a mesh edge; one straight piece per crossed triangle (plus `Resolution` points on
@@ -32,6 +38,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -101,6 +108,8 @@ struct OffsetBuffers
   {
   }
   ExactGeodesicSearch Closed, Open;
+  /// Flat-ended bands: two distances per group of curves whose ends keep apart.
+  std::vector<std::unique_ptr<ExactGeodesicSearch>> Flat;
   std::vector<double> VertexValue; ///< valid where VertexStamp == Stamp
   std::vector<char> VertexInside;  ///< valid where InsideStamp == Stamp
   std::vector<std::uint32_t> VertexStamp, InsideStamp, TriangleStamp;

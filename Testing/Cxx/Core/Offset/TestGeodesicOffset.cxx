@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace boolsurf;
 
@@ -172,7 +173,8 @@ TEST(GeodesicOffset, FlatGrowAndShrinkMatchClipperRoundJoins)
   // On a flat mesh geodesic distance is Euclidean: growing is Clipper's offset with round
   // joins, shrinking its inward offset. Errors at mesh resolution: the contour's chords cut
   // round joins by ~ h^2 / (8 d) per piece, and a sharp corner of a shrunk region thinner than
-  // a triangle loses its tip (~ h^2 / 4), so the error falls with h^2.
+  // a triangle loses its tip (~ h^2 / 4), so the error falls with h^2. Growing keeps the sharp
+  // concave corner (a tip of the complement), so at 32 cells the chords alone are ~1.3e-3.
   for (double d : { 0.08, -0.05 })
   {
     double coarsest = 0.0;
@@ -190,7 +192,7 @@ TEST(GeodesicOffset, FlatGrowAndShrinkMatchClipperRoundJoins)
       EXPECT_EQ(result.Loops.size(), 1u);
       const double expected = ClipperOffsetArea({ LShape }, d, ClipperLib::etClosedPolygon);
       const double error = std::abs(result.Area - expected) / expected;
-      const double bound = d > 0 || n >= 128 ? 1e-3 : 2.5e-3;
+      const double bound = (d > 0 && n > 32) || n >= 128 ? 1e-3 : 2.5e-3;
       EXPECT_LT(error, bound) << "d " << d << ", " << n << " cells";
       if (n == 32)
       {
@@ -566,4 +568,152 @@ TEST(GeodesicOffset, AGrowingFrontThatClosesAroundAHandle)
   const Labeled band = Label(mesh, topology, AsCurves(result.Loops, 0));
   EXPECT_TRUE(band.Labels.ShapeConsistent[0]);
   EXPECT_GT(std::min(band.Area, 4.0 * Pi * Pi * R * r - band.Area), 4.0 * disc.Area);
+}
+
+namespace
+{
+// Winding number of the loops around planar point q (z ignored): 1 inside the region.
+int WindingNumber(const TriangleMesh& mesh,
+  const std::vector<std::vector<CanonicalPoint>>& loops,
+  const Vec3& q)
+{
+  int winding = 0;
+  for (const auto& loop : loops)
+  {
+    for (size_t i = 0; i < loop.size(); ++i)
+    {
+      const Vec3 a = PositionOf(mesh, loop[i]), b = PositionOf(mesh, loop[(i + 1) % loop.size()]);
+      const double side = (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x);
+      if (a.y <= q.y && b.y > q.y && side > 0.0)
+      {
+        ++winding;
+      }
+      else if (a.y > q.y && b.y <= q.y && side < 0.0)
+      {
+        --winding;
+      }
+    }
+  }
+  return winding;
+}
+
+// Distance from planar point q to the nearest loop point.
+double NearestLoopPoint(const TriangleMesh& mesh,
+  const std::vector<std::vector<CanonicalPoint>>& loops,
+  const Vec3& q)
+{
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& loop : loops)
+  {
+    for (const CanonicalPoint& p : loop)
+    {
+      nearest = std::min(nearest, Distance(PositionOf(mesh, p), q));
+    }
+  }
+  return nearest;
+}
+} // namespace
+
+TEST(GeodesicOffset, FlatEndsKeepWhatOtherLegsReach)
+{
+  // The bands are Clipper's butt-ended offsets: per piece a rectangle, round joins between. A
+  // point beyond one end is in the band when it is within d of another leg: under the U's
+  // start lies its last leg's band, and the hook's start is 0.7 d from its last leg, whose band
+  // and points stay whole. The grid is aligned, so every flat-end corner is a mesh vertex and
+  // is kept (its triangle has all three corners on the band's boundary).
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(100, 1.0));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  FlatPolygonTracer tracer(mesh);
+  const double d = 0.04;
+  struct Case
+  {
+    std::vector<Vec2> Path;
+    double Expected; // pyclipper's ET_OPENBUTT area
+    std::vector<Vec2> Corners;
+    double Tolerance; // relative
+  };
+  const std::vector<Case> cases = {
+    { { { 0.5, 0.5 }, { 0.5, 0.7 }, { 0.3, 0.7 }, { 0.3, 0.4 }, { 0.7, 0.4 } },
+      2.0 * d * 1.1 + 3.0 * (Pi / 4.0 - 1.0) * d * d,
+      { { 0.46, 0.5 }, { 0.54, 0.5 }, { 0.7, 0.36 }, { 0.7, 0.44 } },
+      3e-4 },
+    { { { 0.35, 0.5 }, { 0.2, 0.5 }, { 0.45, 0.56 } }, 0.025614, { { 0.35, 0.46 } }, 6e-4 },
+  };
+  for (const Case& c : cases)
+  {
+    TracedCurve open;
+    ASSERT_TRUE(tracer.Trace(c.Path, false, 0, 0, open));
+    BandCurve band;
+    band.Points = open.Points;
+    OffsetOptions options;
+    options.Distance = d;
+    options.Ends = OffsetEndStyle::Flat;
+    const Offset result = OffsetOf(mesh, topology, {}, { band }, options);
+    ASSERT_TRUE(result.Ok) << result.Error;
+    EXPECT_EQ(result.Loops.size(), 1u);
+    const double clipper = ClipperOffsetArea({ c.Path }, d, ClipperLib::etOpenButt);
+    EXPECT_NEAR(clipper, c.Expected, 2e-6);
+    // Only the round joins' chords are short of the planar offset: by ~7e-6 per right-angle
+    // join and ~1.3e-5 for the hook's 167 degree join (2.3e-4 and 5e-4 relative).
+    EXPECT_LT(result.Area, clipper);
+    EXPECT_GT(result.Area, (1.0 - c.Tolerance) * clipper) << result.Area << " against " << clipper;
+    // The curve lies inside its band (its end points on the band's boundary).
+    for (size_t i = 0; i < open.Points.size(); ++i)
+    {
+      const Vec3 p = PositionOf(mesh, open.Points[i]);
+      const bool end = i == 0 || i + 1 == open.Points.size();
+      EXPECT_TRUE(WindingNumber(mesh, result.Loops, p) == 1 ||
+        (end && NearestLoopPoint(mesh, result.Loops, p) < 0.6 * 0.01))
+        << "curve point " << i << " (" << p.x << ", " << p.y << ")";
+    }
+    for (const Vec2& corner : c.Corners)
+    {
+      EXPECT_LT(NearestLoopPoint(mesh, result.Loops, { corner.x, corner.y, 0.0 }), 1e-6)
+        << "flat-end corner (" << corner.x << ", " << corner.y << ")";
+    }
+  }
+}
+
+TEST(GeodesicOffset, InsetCornersStaySharpAtEveryAngle)
+{
+  // A square of side 0.3 rotated by theta shrunk by 0.05 is exactly the square of side 0.2:
+  // near each side the distance is linear, so the level set is the inset side, and its four
+  // corners are kept, also where the tip leaves its triangle through an edge whose two ends
+  // are outside (the level set crosses that edge twice).
+  const TriangleMesh mesh = MeshOf(MakeFlatSquare(100, 1.0));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  FlatPolygonTracer tracer(mesh);
+  auto square = [](double half, double theta)
+  {
+    std::vector<Vec2> p;
+    for (const Vec2 c : { Vec2{ -1, -1 }, Vec2{ 1, -1 }, Vec2{ 1, 1 }, Vec2{ -1, 1 } })
+    {
+      p.push_back({ 0.5 + half * (c.x * std::cos(theta) - c.y * std::sin(theta)),
+        0.5 + half * (c.x * std::sin(theta) + c.y * std::cos(theta)) });
+    }
+    return p;
+  };
+  // The angles where corners were cut (by up to 0.3 h^2, or by slivers where the tip barely
+  // crosses an edge), then 60 more over a quarter turn.
+  std::vector<double> angles = { 0.21, 0.28, 0.63, 0.70, 0.77, 0.32, 0.93, 1.27 };
+  for (int i = 0; i < 60; ++i)
+  {
+    angles.push_back(0.5 * Pi * i / 60.0 + (i % 2 ? 0.0 : 0.0037 * i));
+  }
+  for (double theta : angles)
+  {
+    TracedCurve curve;
+    ASSERT_TRUE(tracer.Trace(square(0.15, theta), true, 0, 0, curve));
+    OffsetOptions options;
+    options.Distance = -0.05;
+    const Offset result = OffsetOf(mesh, topology, { curve }, {}, options);
+    ASSERT_TRUE(result.Ok) << result.Error;
+    EXPECT_EQ(result.Loops.size(), 1u);
+    EXPECT_NEAR(result.Area, 0.04, 1e-8) << "theta " << theta;
+    for (const Vec2& corner : square(0.1, theta))
+    {
+      EXPECT_LT(NearestLoopPoint(mesh, result.Loops, { corner.x, corner.y, 0.0 }), 1e-6)
+        << "theta " << theta << ", corner (" << corner.x << ", " << corner.y << ")";
+    }
+  }
 }
