@@ -283,6 +283,14 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
 {
   Internals& in = *this->Internal;
   std::vector<std::string> problems;
+  if (boolsurf::IsDrawingWithoutCurves(curvesInput))
+  {
+    // A drawing not started yet or whose curves are all still being drawn (the first clicks):
+    // no region yet, and no message either (it would open ParaView's message window over the
+    // view being clicked).
+    error.clear();
+    return false;
+  }
   // 2. tracing
   const Clock::time_point traceStart = Clock::now();
   boolsurf::TraceOptions traceOptions;
@@ -394,6 +402,9 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   const boolsurf::Arrangement& arr = in.Arrangement;
   boolsurf::LabelingInput labeling =
     boolsurf::MakeLabelingInput(*surface.Mesh, *surface.Topology, in.Curves, arr);
+  // A shape whose curves are all still being drawn (a new shape's first clicks) is a shape
+  // without a region yet: an operation naming it is no error.
+  boolsurf::AddShapesWithoutCurves(labeling, boolsurf::ShapesBeingDrawn(curvesInput));
   if (this->ZeroCellMode == 1)
   {
     const int zero = this->FindZeroCell(surface, error);

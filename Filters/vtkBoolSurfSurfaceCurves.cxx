@@ -1,6 +1,7 @@
 #include "vtkBoolSurfSurfaceCurves.h"
 
 #include "vtkBoolSurfArrayNames.h"
+#include "vtkBoolSurfControlCurves.h"
 
 #include "vtkBoolSurfPropertyVector.h"
 #include "vtkBoolSurfSurfaceCache.h"
@@ -9,6 +10,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -18,6 +20,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 
 #include <sstream>
 #include <vtkSmartPointer.h>
@@ -342,7 +345,10 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
 
   // One polyline per curve; a closed curve repeats its first point.
   vtkNew<vtkCellArray> lines;
-  vtkNew<vtkIntArray> shapeIds, curveTypes, closed;
+  vtkNew<vtkIntArray> shapeIds, curveTypes, closed, complete;
+  vtkNew<vtkStringArray> incomplete;
+  complete->SetName(boolsurf::names::Complete);
+  incomplete->SetName(boolsurf::names::IncompleteCurves);
   shapeIds->SetName(boolsurf::names::ShapeId);
   curveTypes->SetName(boolsurf::names::CurveType);
   closed->SetName(boolsurf::names::Closed);
@@ -368,14 +374,14 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
       return false;
     }
     const int size = sizes[c];
-    if (type == 1 && (isClosed ? size % 3 != 0 : size % 3 != 1))
+    // A curve with too few points for its type is one being drawn (the curve editor writes
+    // every click): no error, but marked, so that filters leave it out without a message,
+    // and said in the field data (the editor's panel says it too).
+    const std::string needs = boolsurf::WhatCurveNeeds(type == 1, isClosed, size);
+    complete->InsertNextValue(needs.empty() ? 1 : 0);
+    if (!needs.empty())
     {
-      std::ostringstream message;
-      message << "Curve " << c << ": a " << (isClosed ? "closed" : "open")
-              << " cubic Bezier spline needs " << (isClosed ? "3n" : "3n+1")
-              << " control points (anchor, handle, handle, ...); it has " << size << ".";
-      error = message.str();
-      return false;
+      incomplete->InsertNextValue("curve " + std::to_string(c) + ": " + needs);
     }
     lines->InsertNextCell(size + (isClosed ? 1 : 0));
     for (int k = 0; k < size; ++k)
@@ -399,7 +405,19 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   output->GetCellData()->AddArray(shapeIds);
   output->GetCellData()->AddArray(curveTypes);
   output->GetCellData()->AddArray(closed);
+  output->GetCellData()->AddArray(complete);
+  if (incomplete->GetNumberOfValues() > 0)
+  {
+    output->GetFieldData()->AddArray(incomplete);
+  }
   this->TraceForDisplay(surface, output, traced);
+  for (vtkPolyData* port : { output, traced })
+  {
+    vtkNew<vtkIntArray> drawing;
+    drawing->SetName(boolsurf::names::Drawing);
+    drawing->InsertNextValue(1);
+    port->GetFieldData()->AddArray(drawing);
+  }
   return true;
 }
 
@@ -410,9 +428,9 @@ void vtkBoolSurfSurfaceCurves::TraceForDisplay(vtkPolyData* surface,
 {
   // Port 1 shows the drawing as the filters downstream will use it (the curves traced with
   // Trace Surface Curves' defaults and this filter's GeodesicMethod), so it follows a drag in
-  // the curve editor. It is left empty, without a message, while the drawing cannot be traced
-  // (a curve of one point, a Bezier curve still missing handles): the filters that use the
-  // curves say why.
+  // the curve editor. A curve being drawn shows as far as it is valid (a Bezier curve's
+  // segments up to its last complete one); the port is left empty, without a message, while
+  // the drawing cannot be traced: the filters that use the curves say why.
   std::vector<std::string> warnings, problems, notes;
   std::string error;
   if (curves->GetNumberOfCells() == 0 ||
@@ -423,6 +441,7 @@ void vtkBoolSurfSurfaceCurves::TraceForDisplay(vtkPolyData* surface,
   std::vector<boolsurf::TracedCurve> paths;
   boolsurf::TraceOptions options;
   options.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
+  options.TraceValidPartOfIncompleteCurves = true;
   if (!boolsurf::TraceControlCurves(
         this->Internal->Traced, curves, options, nullptr, paths, traced, problems, notes))
   {

@@ -21,8 +21,15 @@
  *
  * Errors (empty output) name the problem: sizes that do not add up to the number of points,
  * a TriangleId count that is neither 0 nor the number of points, a triangle id that is not a
- * triangle of the surface, barycentric weights outside the triangle, a closed Bezier curve
- * whose size is not a multiple of 3 or an open one whose size is not 3n+1, an empty surface.
+ * triangle of the surface, barycentric weights outside the triangle, an empty surface.
+ *
+ * A curve with too few points for its type (one point; a closed Bezier curve whose size is not
+ * a multiple of 3, an open one whose size is not 3n+1) is a curve being drawn, not an error:
+ * the curve editor writes every click. It is in the output with cell data `Complete` 0, field
+ * data `IncompleteCurves` says what each such curve still needs ("curve 2: an open cubic
+ * Bezier spline needs 3n+1 control points ...; it has 5: 2 more complete it"), the filters
+ * downstream leave it out without a message, and port 1 shows it as far as it is valid (a
+ * Bezier curve up to its last complete segment). Every other curve has `Complete` 1.
  *
  * Port 1 gives the same curves traced on the surface (geodesic polygons and Bezier splines
  * with Trace Surface Curves' defaults but this filter's GeodesicMethod, as

@@ -46,6 +46,10 @@ bool vtkBoolSurfTraceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
     this->Internal->Problems.push_back(error);
     return false;
   }
+  if (boolsurf::IsDrawingWithoutCurves(curvesInput))
+  {
+    return false; // a drawing being started: nothing to trace yet, and no message
+  }
   auto result = std::make_shared<boolsurf::TracedCurvesResult>();
   boolsurf::TraceOptions options;
   options.Resolution = this->Resolution;

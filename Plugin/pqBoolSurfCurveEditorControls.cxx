@@ -22,7 +22,10 @@ pqBoolSurfCurveEditorControls::pqBoolSurfCurveEditorControls(QWidget* parent)
   this->Editing->setToolTip(tr("Click the surface to add a control point to the current "
                                "curve, drag a point to slide it along the surface, click the "
                                "first point of an open curve to close it, Shift+click a point "
-                               "to delete it. Dragging elsewhere rotates the camera."));
+                               "to delete it, Ctrl+click a point of another curve to make that "
+                               "curve current. Dragging elsewhere rotates the camera. Arrows "
+                               "show each curve's direction: a closed curve encloses the "
+                               "region on its left (counter-clockwise seen from outside)."));
   layout->addWidget(this->Editing);
 
   // One control per row after its label: the properties dock is narrow (292 pixels by default).
@@ -64,6 +67,11 @@ pqBoolSurfCurveEditorControls::pqBoolSurfCurveEditorControls(QWidget* parent)
   this->NewCurve = new QPushButton(tr("New Curve"), this);
   this->NewCurve->setObjectName("NewCurve");
   this->NewCurve->setToolTip(tr("The next click on the surface starts a new curve."));
+  this->ReverseCurve = new QPushButton(tr("Reverse"), this);
+  this->ReverseCurve->setObjectName("ReverseCurve");
+  this->ReverseCurve->setToolTip(tr("Reverses the current curve's direction: a closed curve "
+                                    "encloses the region on its left (the arrows in the view), "
+                                    "so reversing it selects the other side."));
   this->DeletePoint = new QPushButton(tr("Delete Point"), this);
   this->DeletePoint->setObjectName("DeletePoint");
   this->DeleteCurve = new QPushButton(tr("Delete Curve"), this);
@@ -72,9 +80,10 @@ pqBoolSurfCurveEditorControls::pqBoolSurfCurveEditorControls(QWidget* parent)
   this->Clear->setObjectName("ClearAll");
   this->Clear->setToolTip(tr("Removes every curve."));
   buttons->addWidget(this->NewCurve, 0, 0);
-  buttons->addWidget(this->DeletePoint, 0, 1);
-  buttons->addWidget(this->DeleteCurve, 1, 0);
-  buttons->addWidget(this->Clear, 1, 1);
+  buttons->addWidget(this->ReverseCurve, 0, 1);
+  buttons->addWidget(this->DeletePoint, 1, 0);
+  buttons->addWidget(this->DeleteCurve, 1, 1);
+  buttons->addWidget(this->Clear, 2, 0);
   layout->addLayout(buttons);
   this->Status = new QLabel(this);
   this->Status->setObjectName("Status");

@@ -5,7 +5,7 @@
  * Plain Qt (no ParaView): pqBoolSurfCurveEditorWidget connects them to the drawing. Kept apart
  * so that the layout is tested on its own (Testing/Cxx/Plugin): at ParaView's default dock
  * width every control shows whole. Rows, narrow to wide: the edit toggle; Curve [n] "of N";
- * Shape [n]; Type [polygon/Bezier]; Closed; the four buttons two by two; the status line.
+ * Shape [n]; Type [polygon/Bezier]; Closed; the five buttons two by two; the status line.
  */
 #ifndef pqBoolSurfCurveEditorControls_h
 #define pqBoolSurfCurveEditorControls_h
@@ -32,6 +32,7 @@ public:
   QComboBox* Type = nullptr;
   QCheckBox* Closed = nullptr;
   QPushButton* NewCurve = nullptr;
+  QPushButton* ReverseCurve = nullptr;
   QPushButton* DeletePoint = nullptr;
   QPushButton* DeleteCurve = nullptr;
   QPushButton* Clear = nullptr;

@@ -10,12 +10,13 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkConeSource.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkEventQtSlotConnect.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
-#include "vtkPVDataInformation.h"
 #include "vtkPVRenderView.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -23,7 +24,6 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
-#include "vtkSMInputProperty.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMRenderViewProxy.h"
 #include "vtkSMSessionProxyManager.h"
@@ -35,9 +35,12 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QEvent>
 #include <QLabel>
 #include <QPointer>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSpinBox>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -61,6 +64,9 @@ const char* const EditedProperties[] = { "Points",
 constexpr double ClickSlack = 4;
 // A control point is under the mouse within this distance (pixels).
 constexpr double GrabRadius = 10;
+// Marker and arrow sizes on screen (pixels), whatever the zoom.
+constexpr double MarkerPixels = 6;
+constexpr double ArrowPixels = 9;
 
 template <typename T>
 void SetVector(vtkSMProxy* proxy, const char* name, const std::vector<T>& values)
@@ -98,37 +104,98 @@ bool CameraEye(vtkRenderer* renderer, std::array<double, 3>& eye)
   return true;
 }
 
-// One group of markers: spheres of a color at some control points.
+// How many world units one pixel spans at `x` in `renderer`'s view (0 without a renderer or a
+// size): markers and arrows are sized in pixels, so they look the same at every zoom.
+double WorldPerPixel(vtkRenderer* renderer, const std::array<double, 3>& x)
+{
+  if (!renderer || renderer->GetSize()[1] <= 0)
+  {
+    return 0;
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double height = renderer->GetSize()[1];
+  if (camera->GetParallelProjection())
+  {
+    return 2.0 * camera->GetParallelScale() / height;
+  }
+  double eye[3], direction[3];
+  camera->GetPosition(eye);
+  camera->GetDirectionOfProjection(direction);
+  const double depth = (x[0] - eye[0]) * direction[0] + (x[1] - eye[1]) * direction[1] +
+    (x[2] - eye[2]) * direction[2];
+  const double pi = 3.14159265358979323846;
+  return 2.0 * std::max(depth, 0.0) * std::tan(0.5 * camera->GetViewAngle() * pi / 180.0) / height;
+}
+
+// A glyph placed on the surface and sized in pixels: its center moved toward the eye by its
+// radius, so that it sits in front of the surface there instead of half inside it.
+struct Glyph
+{
+  std::array<double, 3> Center;
+  double Radius = 0;                              // world units
+  std::array<double, 3> Direction{ { 1, 0, 0 } }; // arrows only
+};
+
+// One group of glyphs of a color (spheres at control points, or cones along the curves).
 struct Markers
 {
   vtkNew<vtkPolyData> Centers;
-  vtkNew<vtkSphereSource> Sphere;
   vtkNew<vtkGlyph3DMapper> Mapper;
   vtkNew<vtkActor> Actor;
+  vtkSmartPointer<vtkPolyDataAlgorithm> Shape;
 
-  Markers(double r, double g, double b)
+  Markers(double r, double g, double b, bool arrows = false)
   {
-    this->Sphere->SetThetaResolution(16);
-    this->Sphere->SetPhiResolution(12);
+    if (arrows)
+    {
+      vtkNew<vtkConeSource> cone; // unit size along +x, the glyph's direction
+      cone->SetResolution(12);
+      cone->SetHeight(2.0);
+      cone->SetRadius(0.8);
+      this->Shape = cone;
+      this->Mapper->SetOrientationArray("Direction");
+      this->Mapper->SetOrientationModeToDirection();
+      this->Mapper->OrientOn();
+    }
+    else
+    {
+      vtkNew<vtkSphereSource> sphere;
+      sphere->SetThetaResolution(16);
+      sphere->SetPhiResolution(12);
+      sphere->SetRadius(1.0);
+      this->Shape = sphere;
+      this->Mapper->OrientOff();
+    }
     this->Mapper->SetInputData(this->Centers);
-    this->Mapper->SetSourceConnection(this->Sphere->GetOutputPort());
-    this->Mapper->ScalingOff();
+    this->Mapper->SetSourceConnection(this->Shape->GetOutputPort());
+    this->Mapper->SetScaleArray("Radius");
+    this->Mapper->SetScaleModeToScaleByMagnitude();
+    this->Mapper->ScalingOn();
     this->Mapper->ScalarVisibilityOff();
     this->Actor->SetMapper(this->Mapper);
     this->Actor->GetProperty()->SetColor(r, g, b);
     this->Actor->PickableOff();
   }
-  void Set(const std::vector<std::array<double, 3>>& centers, double radius)
+  void Set(const std::vector<Glyph>& glyphs)
   {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
-    for (const auto& c : centers)
+    vtkNew<vtkDoubleArray> radius;
+    radius->SetName("Radius");
+    vtkNew<vtkDoubleArray> direction;
+    direction->SetName("Direction");
+    direction->SetNumberOfComponents(3);
+    for (const Glyph& g : glyphs)
     {
-      points->InsertNextPoint(c.data());
+      points->InsertNextPoint(g.Center.data());
+      radius->InsertNextValue(g.Radius);
+      direction->InsertNextTuple(g.Direction.data());
     }
+    this->Centers->Initialize();
     this->Centers->SetPoints(points);
-    this->Sphere->SetRadius(radius);
-    this->Actor->SetVisibility(!centers.empty());
+    this->Centers->GetPointData()->AddArray(radius);
+    this->Centers->GetPointData()->AddArray(direction);
+    this->Actor->SetVisibility(!glyphs.empty());
   }
 };
 }
@@ -160,17 +227,21 @@ struct pqBoolSurfCurveEditorWidget::Internals
   vtkNew<vtkCallbackCommand> RenderObserver;
   vtkWeakPointer<vtkRenderer> ViewRenderer;
   unsigned long RenderTag = 0;
-  double MarkerRadius = 0.006;
+
   // The surface's facet normals met so far, by triangle id (for points reloaded from the
   // properties, which hold no normals).
   std::unordered_map<vtkIdType, std::array<double, 3>> FacetNormals;
   Markers Others{ 0.95, 0.85, 0.25 };
   Markers CurrentCurve{ 1.0, 0.5, 0.05 };
   Markers SelectedPoint{ 0.85, 0.1, 0.1 };
+  // Each curve's direction: an arrow beside every control point, toward the next one (a closed
+  // curve encloses the region on its left, so this is what tells a shape from its complement).
+  Markers Arrows{ 0.2, 0.45, 0.95, true };
   vtkNew<vtkEventQtSlotConnect> PropertyConnections;
   QTimer LoadTimer;
 
   pqBoolSurfCurveEditorControls* Controls = nullptr; // the panel's widgets
+  QPointer<QWidget> WatchedViewport;                 // the panel's scroll area's viewport
 
   pqBoolSurfDrawing::Curve* CurrentCurvePtr()
   {
@@ -196,7 +267,7 @@ pqBoolSurfCurveEditorWidget::pqBoolSurfCurveEditorWidget(vtkSMProxy* smproxy,
   layout->setContentsMargins(0, 0, 0, 0);
   auto* controls = new pqBoolSurfCurveEditorControls(this);
   controls->setObjectName("Controls");
-  layout->addWidget(controls);
+  layout->addWidget(controls, 0, Qt::AlignLeft);
   internal.Controls = controls;
 
   QObject::connect(internal.Controls->Editing,
@@ -219,6 +290,10 @@ pqBoolSurfCurveEditorWidget::pqBoolSurfCurveEditorWidget(vtkSMProxy* smproxy,
     internal.Controls->Closed, &QCheckBox::toggled, this, &pqBoolSurfCurveEditorWidget::setClosed);
   QObject::connect(
     controls->NewCurve, &QPushButton::clicked, this, &pqBoolSurfCurveEditorWidget::newCurve);
+  QObject::connect(internal.Controls->ReverseCurve,
+    &QPushButton::clicked,
+    this,
+    &pqBoolSurfCurveEditorWidget::reverseCurve);
   QObject::connect(internal.Controls->DeletePoint,
     &QPushButton::clicked,
     this,
@@ -256,7 +331,44 @@ pqBoolSurfCurveEditorWidget::pqBoolSurfCurveEditorWidget(vtkSMProxy* smproxy,
   internal.RenderObserver->SetClientData(this);
   internal.RenderObserver->SetCallback([](vtkObject*, unsigned long, void* self, void*)
     { static_cast<pqBoolSurfCurveEditorWidget*>(self)->PlaceMarkers(); });
+  this->installEventFilter(this); // shown: fit the panel's visible width
   this->loadFromProxy();
+}
+
+//------------------------------------------------------------------------------
+bool pqBoolSurfCurveEditorWidget::eventFilter(QObject* watched, QEvent* event)
+{
+  if (event->type() == QEvent::Resize || event->type() == QEvent::Show)
+  {
+    this->FitVisibleWidth();
+  }
+  return this->Superclass::eventFilter(watched, event);
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::FitVisibleWidth()
+{
+  // The panel's scroll area (ours is the first ancestor that is one); watched from the first
+  // call on, so a resize of the dock or a wider display section refits.
+  QScrollArea* area = nullptr;
+  for (QWidget* w = this->parentWidget(); w && !area; w = w->parentWidget())
+  {
+    area = qobject_cast<QScrollArea*>(w);
+  }
+  if (!area)
+  {
+    return;
+  }
+  QWidget* viewport = area->viewport();
+  if (!this->Internal->WatchedViewport)
+  {
+    this->Internal->WatchedViewport = viewport;
+    viewport->installEventFilter(this);
+  }
+  const int left = this->mapTo(viewport, QPoint(0, 0)).x() + area->horizontalScrollBar()->value();
+  const int visible = viewport->width() - left - 2;
+  auto* controls = this->Internal->Controls;
+  controls->setMaximumWidth(std::max(controls->minimumSizeHint().width(), visible));
 }
 
 //------------------------------------------------------------------------------
@@ -339,10 +451,12 @@ void pqBoolSurfCurveEditorWidget::Attach()
       internal.ViewRenderer->AddObserver(vtkCommand::StartEvent, internal.RenderObserver);
   }
   internal.MarkerRenderer = pvView->GetNonCompositedRenderer();
-  for (Markers* markers : { &internal.Others, &internal.CurrentCurve, &internal.SelectedPoint })
+  for (Markers* markers :
+    { &internal.Others, &internal.CurrentCurve, &internal.SelectedPoint, &internal.Arrows })
   {
     internal.MarkerRenderer->AddActor(markers->Actor);
   }
+  this->FetchMissingNormals();
   this->UpdateMarkers();
   view->render();
 }
@@ -367,7 +481,8 @@ void pqBoolSurfCurveEditorWidget::Detach()
   internal.ViewRenderer = nullptr;
   if (internal.MarkerRenderer)
   {
-    for (Markers* markers : { &internal.Others, &internal.CurrentCurve, &internal.SelectedPoint })
+    for (Markers* markers :
+      { &internal.Others, &internal.CurrentCurve, &internal.SelectedPoint, &internal.Arrows })
     {
       internal.MarkerRenderer->RemoveActor(markers->Actor);
     }
@@ -409,8 +524,10 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
   const double moved =
     std::hypot(position[0] - internal.PressPosition[0], position[1] - internal.PressPosition[1]);
 
-  // The control point under the mouse, if any.
-  auto pointUnderMouse = [&]()
+  // The control point under the mouse, if any. While a curve is being drawn, only its own
+  // points are grabbed, unless the user asks for another curve's (Ctrl, or Shift to delete):
+  // a click near a marker of another curve adds to the current one, as the user meant.
+  auto pointUnderMouse = [&](bool anyCurve)
   {
     pqBoolSurfDrawing::Handle best;
     double bestDistance = GrabRadius;
@@ -419,6 +536,10 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
     const bool culled = CameraEye(renderer, eye);
     for (int c = 0; c < static_cast<int>(internal.Drawing.Curves.size()); ++c)
     {
+      if (!anyCurve && c != internal.Current)
+      {
+        continue;
+      }
       const auto& points = internal.Drawing.Curves[c].Points;
       for (int k = 0; k < static_cast<int>(points.size()); ++k)
       {
@@ -472,10 +593,13 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
     {
       internal.PressPosition[0] = position[0];
       internal.PressPosition[1] = position[1];
-      const pqBoolSurfDrawing::Handle under = pointUnderMouse();
+      const bool anyCurve = internal.Current < 0 || internal.Interactor->GetControlKey() ||
+        internal.Interactor->GetShiftKey();
+      const pqBoolSurfDrawing::Handle under = pointUnderMouse(anyCurve);
       if (!under.Valid())
       {
-        internal.ClickPending = !internal.Interactor->GetShiftKey();
+        internal.ClickPending =
+          !internal.Interactor->GetShiftKey() && !internal.Interactor->GetControlKey();
         return false; // the camera may start a drag
       }
       if (internal.Interactor->GetShiftKey())
@@ -606,6 +730,9 @@ void pqBoolSurfCurveEditorWidget::Refresh()
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> pqBoolSurfCurveEditorWidget::FetchControlCurves()
 {
+  // The helper proxies' properties are no edit of the user's: kept off the undo stack (where
+  // they showed as "Changed 'vtkSMProxy'").
+  pqScopedUndoExclude noUndo;
   vtkSMProxy* smproxy = this->proxy();
   vtkSMSessionProxyManager* pxm = smproxy->GetSessionProxyManager();
   // As paraview.servermanager.Fetch does: a reduction filter gathers the output on the first
@@ -633,8 +760,7 @@ vtkSmartPointer<vtkPolyData> pqBoolSurfCurveEditorWidget::FetchControlCurves()
   auto* output = algorithm ? vtkPolyData::SafeDownCast(algorithm->GetOutputDataObject(0)) : nullptr;
   if (!output || output->GetNumberOfPoints() != this->Internal->Drawing.NumberOfPoints())
   {
-    // The source failed (its message says why, e.g. a Bezier curve with a point count that
-    // does not fit).
+    // The source failed (its message says why, e.g. a triangle id that is not one).
     return nullptr;
   }
   auto copy = vtkSmartPointer<vtkPolyData>::New();
@@ -691,6 +817,23 @@ void pqBoolSurfCurveEditorWidget::ReadBackExactPoints()
 }
 
 //------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::FetchMissingNormals()
+{
+  bool missing = false;
+  for (const auto& curve : this->Internal->Drawing.Curves)
+  {
+    for (const auto& point : curve.Points)
+    {
+      missing = missing || (point.Normal[0] == 0 && point.Normal[1] == 0 && point.Normal[2] == 0);
+    }
+  }
+  if (missing)
+  {
+    this->ReadSurfaceNormals(this->FetchControlCurves());
+  }
+}
+
+//------------------------------------------------------------------------------
 void pqBoolSurfCurveEditorWidget::forgetFacetNormals()
 {
   this->Internal->FacetNormals.clear(); // another surface: other facets
@@ -730,8 +873,8 @@ void pqBoolSurfCurveEditorWidget::loadFromProxy()
   }
   // Undo, a state file or Python give points without their surface normals (which hide the
   // markers on the far side): a point in a triangle seen before gets that facet's normal (no
-  // pipeline update here: this runs right after an undo); others show until the next edit
-  // reads the source's output back.
+  // pipeline update here: this runs right after an undo); the others' normals are read from
+  // the source's output when the editor is (or next becomes) active in a view.
   for (auto& curve : internal.Drawing.Curves)
   {
     for (auto& point : curve.Points)
@@ -742,6 +885,16 @@ void pqBoolSurfCurveEditorWidget::loadFromProxy()
         point.Normal = it->second;
       }
     }
+  }
+  if (internal.View)
+  {
+    QTimer::singleShot(0,
+      this,
+      [this]()
+      {
+        this->FetchMissingNormals();
+        this->Refresh();
+      });
   }
   this->Refresh();
 }
@@ -767,6 +920,7 @@ void pqBoolSurfCurveEditorWidget::UpdateControls()
   // get, and can be set before its first click; it starts open.
   internal.Controls->Closed->setEnabled(curve != nullptr);
   internal.Controls->DeleteCurve->setEnabled(curve != nullptr);
+  internal.Controls->ReverseCurve->setEnabled(curve != nullptr && curve->Points.size() >= 2);
   internal.Controls->DeletePoint->setEnabled(internal.Drawing.Find(internal.Selected) != nullptr);
   internal.Controls->Shape->setValue(curve
       ? curve->Shape
@@ -782,12 +936,25 @@ void pqBoolSurfCurveEditorWidget::UpdateControls()
   }
   QString status =
     tr("%1 control points in %2 curves.").arg(internal.Drawing.NumberOfPoints()).arg(curves);
-  if (curve && curve->Type == 1 &&
-    (curve->Closed ? curve->Points.size() % 3 != 0 : curve->Points.size() % 3 != 1))
+  // A curve being drawn is not traced until it has the points its type needs: said here, not
+  // as an error (the filters leave it out without a message).
+  for (int c = 0; c < curves; ++c)
   {
-    status += tr(" The current Bezier curve needs %1 control points (anchor, handle, handle, "
-                 "...).")
-                .arg(curve->Closed ? tr("3n") : tr("3n+1"));
+    const pqBoolSurfDrawing::Curve& each = internal.Drawing.Curves[c];
+    const int missing = pqBoolSurfDrawing::MissingPoints(each);
+    if (missing > 0)
+    {
+      status += " " +
+        tr("Curve %1 needs %2 more point(s)%3.")
+          .arg(c)
+          .arg(missing)
+          .arg(each.Type == 1
+              ? (each.Closed ? tr(" (a closed Bezier spline has 3n points: anchor, handle, "
+                                  "handle, ...)")
+                             : tr(" (an open Bezier spline has 3n+1 points: anchor, handle, "
+                                  "handle, ..., anchor)"))
+              : QString());
+    }
   }
   internal.Controls->Status->setText(status);
 }
@@ -795,24 +962,6 @@ void pqBoolSurfCurveEditorWidget::UpdateControls()
 //------------------------------------------------------------------------------
 void pqBoolSurfCurveEditorWidget::UpdateMarkers()
 {
-  // Marker size (asked of the server here, not while the view renders): a fraction of the surface's
-  // size.
-  double diagonal = 1;
-  vtkSMProxy* smproxy = this->proxy();
-  auto* input = vtkSMInputProperty::SafeDownCast(smproxy->GetProperty("Surface"));
-  auto* surface = input && input->GetNumberOfProxies() > 0
-    ? vtkSMSourceProxy::SafeDownCast(input->GetProxy(0))
-    : nullptr;
-  if (surface)
-  {
-    double bounds[6];
-    surface->GetDataInformation(input->GetOutputPortForConnection(0))->GetBounds(bounds);
-    if (bounds[0] <= bounds[1])
-    {
-      diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
-    }
-  }
-  this->Internal->MarkerRadius = 0.006 * diagonal;
   this->PlaceMarkers();
 }
 
@@ -821,33 +970,81 @@ void pqBoolSurfCurveEditorWidget::PlaceMarkers()
 {
   Internals& internal = *this->Internal;
   // Where the camera looks from: markers whose surface faces away are hidden (they are drawn
-  // over the geometry, so they would show through a closed surface).
+  // over the geometry, so they would show through a closed surface). Sizes are in pixels,
+  // for the camera about to render (this runs before each render).
+  vtkRenderer* renderer = internal.ViewRenderer;
   std::array<double, 3> eye;
-  const bool culled = CameraEye(internal.ViewRenderer, eye);
-  std::vector<std::array<double, 3>> others, current, selected;
+  const bool culled = CameraEye(renderer, eye);
+  // A glyph of `pixels` at surface point x, moved toward the eye by its radius.
+  const auto glyphAt = [&](const std::array<double, 3>& x, double pixels)
+  {
+    Glyph g;
+    g.Center = x;
+    g.Radius = pixels * WorldPerPixel(renderer, x);
+    if (culled)
+    {
+      const double d = std::hypot(eye[0] - x[0], eye[1] - x[1], eye[2] - x[2]);
+      for (int k = 0; k < 3 && d > 0; ++k)
+      {
+        g.Center[k] += g.Radius * (eye[k] - x[k]) / d;
+      }
+    }
+    return g;
+  };
+  std::vector<Glyph> others, current, selected, arrows;
   for (int c = 0; c < static_cast<int>(internal.Drawing.Curves.size()); ++c)
   {
-    const auto& points = internal.Drawing.Curves[c].Points;
-    for (int k = 0; k < static_cast<int>(points.size()); ++k)
+    const pqBoolSurfDrawing::Curve& curve = internal.Drawing.Curves[c];
+    const auto& points = curve.Points;
+    const int n = static_cast<int>(points.size());
+    for (int k = 0; k < n; ++k)
     {
       if (culled && !pqBoolSurfDrawing::FacesEye(points[k], eye))
       {
         continue;
       }
-      if (internal.Selected == pqBoolSurfDrawing::Handle{ c, k })
+      const bool isSelected = internal.Selected == pqBoolSurfDrawing::Handle{ c, k };
+      const Glyph marker =
+        glyphAt(points[k].Position, isSelected ? 1.4 * MarkerPixels : MarkerPixels);
+      (isSelected ? selected : (c == internal.Current ? current : others)).push_back(marker);
+      // The arrow: just past the marker, toward the next point (along the surface: the
+      // direction's component along the normal removed).
+      const int next = k + 1 < n ? k + 1 : (curve.Closed && n > 1 ? 0 : -1);
+      if (next < 0 || !renderer)
       {
-        selected.push_back(points[k].Position);
+        continue;
       }
-      else
+      std::array<double, 3> d;
+      for (int i = 0; i < 3; ++i)
       {
-        (c == internal.Current ? current : others).push_back(points[k].Position);
+        d[i] = points[next].Position[i] - points[k].Position[i];
       }
+      const auto& normal = points[k].Normal;
+      const double along = d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2];
+      for (int i = 0; i < 3; ++i)
+      {
+        d[i] -= along * normal[i];
+      }
+      const double length = std::hypot(d[0], d[1], d[2]);
+      if (!(length > 0))
+      {
+        continue;
+      }
+      Glyph arrow = glyphAt(points[k].Position, 0.5 * ArrowPixels);
+      const double offset =
+        (MarkerPixels + ArrowPixels) * WorldPerPixel(renderer, points[k].Position);
+      for (int i = 0; i < 3; ++i)
+      {
+        arrow.Direction[i] = d[i] / length;
+        arrow.Center[i] += std::min(offset, 0.5 * length) * arrow.Direction[i];
+      }
+      arrows.push_back(arrow);
     }
   }
-  const double radius = internal.MarkerRadius;
-  internal.Others.Set(others, radius);
-  internal.CurrentCurve.Set(current, radius);
-  internal.SelectedPoint.Set(selected, 1.4 * radius);
+  internal.Others.Set(others);
+  internal.CurrentCurve.Set(current);
+  internal.SelectedPoint.Set(selected);
+  internal.Arrows.Set(arrows);
 }
 
 //------------------------------------------------------------------------------
@@ -874,6 +1071,18 @@ void pqBoolSurfCurveEditorWidget::deleteCurve()
     this->PushRemoval();
   }
   END_UNDO_SET();
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorWidget::reverseCurve()
+{
+  const int current = this->Internal->Current;
+  this->EditCurrentCurve(tr("Reverse curve"),
+    [this, current](auto&)
+    {
+      this->Internal->Drawing.ReverseCurve(current);
+      this->Internal->Selected = {};
+    });
 }
 
 //------------------------------------------------------------------------------

@@ -12,7 +12,9 @@
  * - dragging a control point slides it along the surface, and the curve and everything
  *   downstream (Trace Surface Curves, BoolSurf) follow live;
  * - a click on the first point of an open curve of three or more points closes it;
- * - Shift+click on a point deletes it.
+ * - Shift+click on a point deletes it;
+ * - Ctrl+click on a point of another curve makes that curve current (without Ctrl, points of
+ *   other curves are not grabbed, so clicks near them add to the curve being drawn).
  *
  * Dragging anywhere else rotates the camera as usual. The panel chooses the current curve, its
  * shape, type (polygon or Bezier) and closure, starts a new curve and deletes points and
@@ -22,10 +24,11 @@
  * Points are picked with vtkSMRenderViewProxy::ConvertDisplayToPointOnSurface (a selection
  * render on the server), so the editor also works connected to a pvserver; the exact surface
  * points are read back from the source's output once a point is placed (not during a drag).
- * Markers (control points; the current curve's and the selected point highlighted) are drawn
- * in the view's non-composited renderer, over the geometry; before each render, those of
- * points whose surface faces away from the camera are hidden (they would show through a
- * closed surface).
+ * Markers (control points; the current curve's and the selected point highlighted) and arrows
+ * (beside each point, toward the next one: the curve's direction, which decides the side it
+ * encloses) are drawn in the view's non-composited renderer, sized in pixels and set in front
+ * of the surface; before each render, those of points whose surface faces away from the camera
+ * are hidden (they would show through a closed surface).
  */
 #ifndef pqBoolSurfCurveEditorWidget_h
 #define pqBoolSurfCurveEditorWidget_h
@@ -61,6 +64,9 @@ public:
   void select() override;
   void deselect() override;
 
+  /// Keeps the controls inside the properties panel's visible width (see FitVisibleWidth).
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
 public Q_SLOTS:
   void setView(pqView* view) override;
 
@@ -70,6 +76,7 @@ private Q_SLOTS:
   void forgetFacetNormals();
   void newCurve();
   void deleteCurve();
+  void reverseCurve();
   void deletePoint();
   void clearAll();
   void setCurrentCurve(int curve);
@@ -96,11 +103,19 @@ private:
   vtkSmartPointer<vtkPolyData> FetchControlCurves();
   /// The drawing's points' surface normals from that output (point data SurfaceNormal).
   void ReadSurfaceNormals(vtkPolyData* output);
-  /// Marker size from the surface's bounds, then PlaceMarkers.
+  /// The markers and arrows of the drawing as it is now (PlaceMarkers).
   void UpdateMarkers();
-  /// Markers at the drawing's points that face the camera (before each render too).
+  /// Markers at the drawing's points that face the camera, and an arrow beside each toward
+  /// the next point of its curve, sized in pixels for the camera (before each render too).
   void PlaceMarkers();
+  /// The surface normals of the drawing's points, from the source's output, when some are
+  /// unknown (points loaded from a state file or by undo): their markers hide on the far side.
+  void FetchMissingNormals();
   void UpdateControls();
+  /// Caps the controls' width at what the properties panel shows of them: the display
+  /// section of a selected output (Traced Curves) can make the panel wider than its dock, and
+  /// controls stretched to that width were cut off at the dock's edge.
+  void FitVisibleWidth();
   /// Markers and panel from the drawing, then a render of the view.
   void Refresh();
   /// Deletes a control point (Delete Point, Shift+click) as one undoable step.

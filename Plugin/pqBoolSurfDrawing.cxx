@@ -79,6 +79,37 @@ int pqBoolSurfDrawing::NumberOfPoints() const
 }
 
 //------------------------------------------------------------------------------
+int pqBoolSurfDrawing::MissingPoints(const Curve& curve)
+{
+  const int size = static_cast<int>(curve.Points.size());
+  if (curve.Type != 1)
+  {
+    return std::max(0, 2 - size);
+  }
+  const int base = curve.Closed ? 0 : 1;
+  int valid = std::max(curve.Closed ? 3 : 4, size);
+  while ((valid - base) % 3 != 0)
+  {
+    ++valid;
+  }
+  return valid - size;
+}
+
+//------------------------------------------------------------------------------
+bool pqBoolSurfDrawing::ReverseCurve(int curve)
+{
+  if (curve < 0 || curve >= static_cast<int>(this->Curves.size()))
+  {
+    return false;
+  }
+  std::vector<Point>& points = this->Curves[curve].Points;
+  // Open: p0 .. pn-1 becomes pn-1 .. p0. Closed: p0 stays first, then pn-1 .. p1, which for a
+  // closed Bezier spline (anchor, handle, handle, anchor, ...) keeps anchors at 0, 3, 6, ...
+  std::reverse(points.begin() + (this->Curves[curve].Closed ? 1 : 0), points.end());
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int pqBoolSurfDrawing::UnusedShape() const
 {
   std::set<int> used;

@@ -66,6 +66,14 @@ struct pqBoolSurfDrawing
   Properties ToProperties() const;
 
   int NumberOfPoints() const;
+  /// How many more control points `curve` needs before it can be traced (0 when complete): a
+  /// geodesic polygon needs 2, a cubic Bezier spline 3n+1 open (n >= 1) or 3n closed. A curve
+  /// that needs more is one being drawn: the source marks it, no filter reports it.
+  static int MissingPoints(const Curve& curve);
+  /// Reverses the direction of curve `curve` (which side it encloses): the points in reverse
+  /// order, a closed curve keeping its first point (so a Bezier spline keeps its anchors as
+  /// anchors); returns false for an invalid index.
+  bool ReverseCurve(int curve);
   /// Whether a point's marker shows from `eye`: its surface faces the eye (the marker of a
   /// point on the far side of a closed surface would show through it otherwise). For a
   /// parallel projection, `eye` is a point far back along the direction of projection. A

@@ -113,6 +113,28 @@ LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
 }
 
 //------------------------------------------------------------------------------
+void AddShapesWithoutCurves(LabelingInput& in, const std::vector<int>& shapeIds)
+{
+  std::vector<int> ids = in.ShapeIds;
+  ids.insert(ids.end(), shapeIds.begin(), shapeIds.end());
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  if (ids.size() == in.ShapeIds.size())
+  {
+    return;
+  }
+  for (CellArc& arc : in.Arcs)
+  {
+    if (arc.Shape >= 0 && arc.Shape < static_cast<int>(in.ShapeIds.size()))
+    {
+      arc.Shape = ShapeIndexOf(ids, in.ShapeIds[arc.Shape]);
+    }
+  }
+  in.ShapeIds = ids;
+  in.NumberOfShapes = static_cast<int>(ids.size());
+}
+
+//------------------------------------------------------------------------------
 int CellAtSurfacePoint(const TriangleMesh& mesh, const Arrangement& arr, int t, double u, double v)
 {
   if (t < 0 || t >= arr.NumberOfMeshTriangles)

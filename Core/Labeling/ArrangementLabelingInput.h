@@ -49,6 +49,11 @@ LabelingInput MakeLabelingInput(const TriangleMesh& mesh,
   const std::vector<TracedCurve>& curves,
   const Arrangement& arrangement);
 
+/// Adds the shapes of `shapeIds` that `input` does not have yet, as shapes without curves
+/// (outside every cell): shapes whose curves are all still being drawn, which operations may
+/// name before they have a region. Arcs keep their shapes (indices renumbered).
+void AddShapesWithoutCurves(LabelingInput& input, const std::vector<int>& shapeIds);
+
 /// The cell of `arrangement` holding the point (u, v) of mesh triangle t (barycentric weights
 /// of corners 1 and 2), or -1 when t is not part of the refined surface.
 int CellAtSurfacePoint(const TriangleMesh& mesh,

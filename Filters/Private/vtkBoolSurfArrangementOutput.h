@@ -91,7 +91,7 @@ struct ArrangementFields
   int NumberOfShapes = 0;
   std::vector<int> ShapeIds; ///< sorted; arcs name shapes by index into it
   std::vector<CellArc> Arcs;
-  int NumberOfPlugs = 0; ///< boundary loops' plugs: nodes NumberOfCells + loop
+  int NumberOfPlugs = 0;                  ///< boundary loops' plugs: nodes NumberOfCells + loop
   std::vector<std::pair<int, int>> Links; ///< (cell, plug) one region (BoundaryPlugs.h)
   std::vector<int> CellComponent;         ///< per cell, then per plug
   std::vector<int> ZeroCellCandidates;    ///< per component: its zero node

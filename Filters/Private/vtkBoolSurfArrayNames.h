@@ -21,6 +21,14 @@ constexpr const char* Length = "Length";
 constexpr const char* CurveParameter = "CurveParameter";
 constexpr const char* ControlSegment = "ControlSegment";
 constexpr const char* ControlPointId = "ControlPointId";
+/// Control curves (cell data): 0 for a curve still being drawn (too few points for its type),
+/// which filters leave out without a message; absent means every curve is complete.
+constexpr const char* Complete = "Complete";
+/// Surface Curves (field data): one line per curve still being drawn, saying what it needs.
+constexpr const char* IncompleteCurves = "IncompleteCurves";
+/// Surface Curves (field data, both ports, value 1): the curves are a drawing, which may be
+/// empty or hold only curves being drawn while the user starts it (no region, no message).
+constexpr const char* Drawing = "Drawing";
 
 // The arrangement: refined surface cell data, patches, field data.
 constexpr const char* ArrangementCell = "ArrangementCell";

@@ -17,6 +17,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -115,8 +116,10 @@ vtkSmartPointer<vtkPolyData> ControlCurvesOfTraced(vtkPolyData* curves, const Tr
   out->SetLines(lines);
   out->GetPointData()->AddArray(triangleId);
   out->GetPointData()->AddArray(barycentric);
-  for (const char* name :
-    { boolsurf::names::ShapeId, boolsurf::names::CurveType, boolsurf::names::CurveId })
+  for (const char* name : { boolsurf::names::ShapeId,
+         boolsurf::names::CurveType,
+         boolsurf::names::CurveId,
+         boolsurf::names::Complete })
   {
     if (vtkDataArray* a = curves->GetCellData()->GetArray(name))
     {
@@ -127,6 +130,74 @@ vtkSmartPointer<vtkPolyData> ControlCurvesOfTraced(vtkPolyData* curves, const Tr
 }
 
 } // namespace
+
+//------------------------------------------------------------------------------
+std::vector<int> ShapesBeingDrawn(vtkPolyData* curves)
+{
+  std::vector<int> shapes;
+  vtkDataArray* complete =
+    curves ? curves->GetCellData()->GetArray(boolsurf::names::Complete) : nullptr;
+  if (!complete || complete->GetRange(0)[0] != 0)
+  {
+    return shapes;
+  }
+  vtkDataArray* shapeIds = curves->GetCellData()->GetArray(boolsurf::names::ShapeId);
+  for (vtkIdType c = 0; c < complete->GetNumberOfTuples(); ++c)
+  {
+    if (complete->GetComponent(c, 0) == 0)
+    {
+      const double id = shapeIds && c < shapeIds->GetNumberOfTuples() ? shapeIds->GetComponent(c, 0)
+                                                                      : static_cast<double>(c);
+      if (IsIndex(id))
+      {
+        shapes.push_back(static_cast<int>(id));
+      }
+    }
+  }
+  std::sort(shapes.begin(), shapes.end());
+  shapes.erase(std::unique(shapes.begin(), shapes.end()), shapes.end());
+  return shapes;
+}
+
+//------------------------------------------------------------------------------
+bool IsDrawingWithoutCurves(vtkPolyData* curves)
+{
+  vtkDataArray* drawing =
+    curves ? curves->GetFieldData()->GetArray(boolsurf::names::Drawing) : nullptr;
+  if (!drawing || drawing->GetNumberOfTuples() != 1 || drawing->GetComponent(0, 0) != 1)
+  {
+    return false;
+  }
+  vtkDataArray* complete = curves->GetCellData()->GetArray(boolsurf::names::Complete);
+  return curves->GetNumberOfCells() == 0 ||
+    (complete && complete->GetNumberOfTuples() >= curves->GetNumberOfCells() &&
+      complete->GetRange(0)[1] == 0);
+}
+
+//------------------------------------------------------------------------------
+std::string WhatCurveNeeds(bool bezier, bool closed, int size)
+{
+  if (!bezier)
+  {
+    return size >= 2 ? std::string()
+                     : "a geodesic polygon needs 2 control points; it has " + std::to_string(size);
+  }
+  // The smallest valid count at or above `size`: 3n closed (n >= 1), 3n+1 open (n >= 1).
+  const int base = closed ? 0 : 1;
+  int valid = std::max(closed ? 3 : 4, size);
+  while ((valid - base) % 3 != 0)
+  {
+    ++valid;
+  }
+  if (valid == size)
+  {
+    return std::string();
+  }
+  return std::string(closed ? "a closed" : "an open") + " cubic Bezier spline needs " +
+    (closed ? "3n" : "3n+1") + " control points (anchor, handle, handle, anchor, ...); it has " +
+    std::to_string(size) + ": " + std::to_string(valid - size) + " more complete" +
+    (valid - size == 1 ? "s" : "") + " it";
+}
 
 //------------------------------------------------------------------------------
 void ReadControlCurves(vtkPolyData* curves,
@@ -159,6 +230,7 @@ void ReadControlCurves(vtkPolyData* curves,
   vtkDataArray* shapeIds = curves->GetCellData()->GetArray(boolsurf::names::ShapeId);
   vtkDataArray* types = curves->GetCellData()->GetArray(boolsurf::names::CurveType);
   vtkDataArray* inputCurveIds = curves->GetCellData()->GetArray(boolsurf::names::CurveId);
+  vtkDataArray* complete = curves->GetCellData()->GetArray(boolsurf::names::Complete);
   vtkDataArray* triangleIds = curves->GetPointData()->GetArray(boolsurf::names::TriangleId);
   vtkDataArray* barycentric = curves->GetPointData()->GetArray(boolsurf::names::Barycentric);
   const bool exact = triangleIds && barycentric && barycentric->GetNumberOfComponents() == 2;
@@ -169,7 +241,7 @@ void ReadControlCurves(vtkPolyData* curves,
   }
   // Arrays shorter than the cells or points they describe would be read past their end.
   const vtkIdType cells = curves->GetNumberOfCells(), points = curves->GetNumberOfPoints();
-  for (vtkDataArray* a : { shapeIds, types })
+  for (vtkDataArray* a : { shapeIds, types, complete })
   {
     if (a && a->GetNumberOfTuples() < cells)
     {
@@ -242,6 +314,13 @@ void ReadControlCurves(vtkPolyData* curves,
           --n;
         }
       }
+      // A curve being drawn is no error: left out, or read as far as it is valid.
+      const bool beingDrawn = complete && complete->GetComponent(cellId, 0) == 0;
+      if (beingDrawn && !options.TraceValidPartOfIncompleteCurves)
+      {
+        return;
+      }
+      curve.BeingDrawn = beingDrawn;
       bool ok = true;
       for (vtkIdType i = 0; i < n && ok; ++i)
       {
@@ -311,6 +390,14 @@ void ReadControlCurves(vtkPolyData* curves,
       {
         return;
       }
+      if (beingDrawn && curve.Type == CurveType::CubicBezier)
+      {
+        // Its complete segments, open: anchor, handle, handle, anchor, ...
+        const std::size_t segments = (curve.Points.size() - 1) / 3;
+        curve.Points.resize(3 * segments + 1);
+        curve.PointIds.resize(3 * segments + 1);
+        curve.Closed = false;
+      }
       const int count = static_cast<int>(curve.Points.size());
       bool allSame = true;
       for (int i = 1; i < count && allSame; ++i)
@@ -318,6 +405,10 @@ void ReadControlCurves(vtkPolyData* curves,
         const SurfacePoint& a = curve.Points[0];
         const SurfacePoint& b = curve.Points[i];
         allSame = a.Triangle == b.Triangle && a.U == b.U && a.V == b.V;
+      }
+      if (beingDrawn && (count < 2 || allSame))
+      {
+        return; // nothing to show yet
       }
       if (count < 2 || allSame)
       {
@@ -330,13 +421,10 @@ void ReadControlCurves(vtkPolyData* curves,
       }
       if (curve.Type == CurveType::CubicBezier)
       {
-        const bool valid = curve.Closed ? (count % 3 == 0) : (count % 3 == 1);
-        if (!valid)
+        const std::string needs = WhatCurveNeeds(true, curve.Closed, count);
+        if (!needs.empty())
         {
-          problems.push_back(CurveLabel(curve.CurveId) + ": a " +
-            std::string(curve.Closed ? "closed" : "open") + " cubic Bezier spline needs " +
-            (curve.Closed ? "3n" : "3n+1") + " control points (anchor, handle, handle, " +
-            "anchor, ...), it has " + std::to_string(count));
+          problems.push_back(CurveLabel(curve.CurveId) + ": " + needs);
           return;
         }
       }

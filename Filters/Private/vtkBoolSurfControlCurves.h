@@ -27,6 +27,8 @@ struct ControlCurve
   int ShapeId = 0;
   CurveType Type = CurveType::GeodesicPolygon;
   bool Closed = false;
+  /// Still being drawn (read as far as it is valid): written with cell data Complete 0.
+  bool BeingDrawn = false;
   std::vector<SurfacePoint> Points; ///< the closing point of a closed curve is not repeated
   std::vector<long long> PointIds;  ///< input point id of each control point
 };
@@ -35,13 +37,32 @@ struct ControlCurveOptions
 {
   /// Largest allowed distance from a control point to the surface, absolute.
   double MaximumDistance = 0;
+  /// Curves still being drawn (cell data Complete 0): read as far as they are valid (a
+  /// Bezier curve up to its last complete segment, open) instead of left out.
+  bool TraceValidPartOfIncompleteCurves = false;
 };
 
+/// What a curve of `size` control points still needs to be traced, as "an open cubic Bezier
+/// spline needs 3n+1 control points (...); it has 5: 2 more complete it", or empty when it
+/// is complete (a geodesic polygon needs 2 points, a Bezier spline 3n when closed, 3n+1 open).
+std::string WhatCurveNeeds(bool bezier, bool closed, int size);
+
+/// The ShapeIds (sorted, distinct) of the curves of `curves` marked as being drawn (cell data
+/// Complete 0); empty when there are none.
+std::vector<int> ShapesBeingDrawn(vtkPolyData* curves);
+
+/// Whether `curves` is a drawing (Surface Curves' field data Drawing) without a complete
+/// curve yet: empty, or only curves being drawn. Filters give no region then, without a
+/// message (the user is starting to draw).
+bool IsDrawingWithoutCurves(vtkPolyData* curves);
+
 /// Reads every line and polygon cell of `curves` (vertex cells and strips are ignored with a
-/// note in `notes`). Each problem met (named by curve id and point id) is appended to
-/// `problems`; the curve it concerns is left out of `out`. `closest` gives the closest-point
-/// grid of `mesh`; it is asked for only when a control point must be projected, so curves
-/// given exactly never build one.
+/// note in `notes`). A curve marked as being drawn (cell data Complete 0, as Surface Curves
+/// writes for a curve with too few points) is left out without a message (see
+/// ControlCurveOptions::TraceValidPartOfIncompleteCurves). Each problem met (named by curve id and
+/// point id) is appended to `problems`; the curve it concerns is left out of `out`. `closest` gives
+/// the closest-point grid of `mesh`; it is asked for only when a control point must be projected,
+/// so curves given exactly never build one.
 void ReadControlCurves(vtkPolyData* curves,
   const std::function<const ClosestTriangleGrid&()>& closest,
   const TriangleMesh& mesh,

@@ -200,7 +200,9 @@ bool ResolveControlCurves(vtkSurfaceCache& cache,
   const TriangleMesh& mesh = *surface.Mesh;
   std::vector<ControlCurve> controls;
   std::vector<std::string> problems;
-  ReadSurfaceControlCurves(cache, curves, options.ProjectionTolerance, controls, problems, notes);
+  TraceOptions reading;
+  reading.ProjectionTolerance = options.ProjectionTolerance;
+  ReadSurfaceControlCurves(cache, curves, reading, controls, problems, notes);
   if (!problems.empty())
   {
     error = "Invalid control curves:" + JoinLines(problems);

@@ -60,6 +60,11 @@ void WriteTraces(const TriangleMesh& mesh,
   auto closed = NewSizedArray<vtkIntArray>(boolsurf::names::Closed, 1, nc);
   auto type = NewSizedArray<vtkIntArray>(boolsurf::names::CurveType, 1, nc);
   auto length = NewSizedArray<vtkDoubleArray>(boolsurf::names::Length, 1, nc);
+  // Curves still being drawn (traced as far as they are valid, for display) keep their mark,
+  // so that a filter reading these traced curves leaves them out as it would their controls.
+  const bool anyBeingDrawn = std::any_of(
+    controls.begin(), controls.end(), [](const ControlCurve& c) { return c.BeingDrawn; });
+  auto complete = NewSizedArray<vtkIntArray>(boolsurf::names::Complete, 1, anyBeingDrawn ? nc : 0);
   // Point `i` of curve `c`, as output point `id`.
   const auto writePoint = [&](vtkIdType c, std::size_t i, vtkIdType id)
   {
@@ -139,6 +144,10 @@ void WriteTraces(const TriangleMesh& mesh,
     closed->SetValue(c, trace.Curve.Closed ? 1 : 0);
     type->SetValue(c, static_cast<int>(control.Type));
     length->SetValue(c, trace.Length);
+    if (anyBeingDrawn)
+    {
+      complete->SetValue(c, control.BeingDrawn ? 0 : 1);
+    }
   }
   offsets->SetValue(nc, firstCorner[nc]);
   vtkNew<vtkPoints> points;
@@ -189,6 +198,10 @@ void WriteTraces(const TriangleMesh& mesh,
   cd->AddArray(closed);
   cd->AddArray(type);
   cd->AddArray(length);
+  if (anyBeingDrawn)
+  {
+    cd->AddArray(complete);
+  }
 }
 
 } // namespace
@@ -253,14 +266,15 @@ void AddSiteGraphField(const TriangleMesh& mesh, vtkFieldData* fieldData)
 //------------------------------------------------------------------------------
 void ReadSurfaceControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* controlCurves,
-  double projectionTolerance,
+  const TraceOptions& trace,
   std::vector<ControlCurve>& controls,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes)
 {
   const vtkSurfaceInput& surface = cache.GetCurrent();
   ControlCurveOptions options;
-  options.MaximumDistance = projectionTolerance * surface.Triangles->GetLength();
+  options.MaximumDistance = trace.ProjectionTolerance * surface.Triangles->GetLength();
+  options.TraceValidPartOfIncompleteCurves = trace.TraceValidPartOfIncompleteCurves;
   ReadControlCurves(
     controlCurves,
     [&cache]() -> const ClosestTriangleGrid& { return cache.GetClosestTriangles(); },
@@ -288,8 +302,7 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   std::vector<ControlCurve> own;
   std::vector<ControlCurve>& controls = controlsRead ? *controlsRead : own;
   controls.clear();
-  ReadSurfaceControlCurves(
-    cache, controlCurves, options.ProjectionTolerance, controls, problems, notes);
+  ReadSurfaceControlCurves(cache, controlCurves, options, controls, problems, notes);
   CurveTracer& tracer = cache.GetTracer();
   tracer.SetResolution(options.Resolution);
   tracer.SetKeepWrittenForms(output != nullptr); // see WriteTraces

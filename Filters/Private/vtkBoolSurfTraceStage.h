@@ -26,6 +26,9 @@ struct TraceOptions
   GeodesicMethod Method = GeodesicMethod::Bounded;
   /// Curves traced at once (0: all cores; see CurveTracer::TraceCurves).
   int Threads = 0;
+  /// Curves still being drawn (cell data Complete 0): traced as far as they are valid (for
+  /// display) instead of left out.
+  bool TraceValidPartOfIncompleteCurves = false;
 };
 
 /// Traces every curve of `controlCurves` on the cached surface. On success fills `traced`
@@ -47,10 +50,10 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   std::vector<ControlCurve>* controls = nullptr);
 
 /// ReadControlCurves on the cached surface: control points projected with its locator, no
-/// farther than `projectionTolerance` times its bounding-box diagonal.
+/// farther than options.ProjectionTolerance times its bounding-box diagonal.
 void ReadSurfaceControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* controlCurves,
-  double projectionTolerance,
+  const TraceOptions& options,
   std::vector<ControlCurve>& controls,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes);

@@ -114,14 +114,12 @@ for proxy in reloaded:
     for i in range(7):
         assert data.GetPoint(i) == expected.GetPoint(i), (i, data.GetPoint(i))
 
-# Bad properties: sizes that do not add up, a triangle that is not one, a Bezier of 5 points.
+# Bad properties: sizes that do not add up, a triangle that is not one.
 mesh = PLYReader(FileNames=[os.path.join(source_dir, "Data", "eight.ply")])
 for props, expected in [
         (dict(Points=[x for p in points for x in p], CurveSizes=[3, 3]), "add up to 6"),
         (dict(Points=[0.0] * 6, TriangleIds=[0, 99999], Barycentrics=[0.2] * 4),
          "TriangleId 99999"),
-        (dict(Points=[x for p in points[:5] for x in p], CurveTypes=[1], ClosedCurves=[0]),
-         "3n+1"),
 ]:
     bad = SurfaceCurves(Surface=mesh, **props)
     messages = []
@@ -134,4 +132,25 @@ for props, expected in [
     assert sm.Fetch(bad).GetNumberOfPoints() == 0, (props, expected)
     assert any(expected in m for m in messages), (expected, messages)
     Delete(bad)
-print("Surface Curves: snapped and exact points, curves, state file, bad input")
+# A Bezier curve of 5 points is one being drawn, not bad input: no message, the curve in the
+# output marked incomplete, and what it needs said in the field data.
+drawn = SurfaceCurves(Surface=mesh, Points=[x for p in points[:5] for x in p], CurveTypes=[1],
+                      ClosedCurves=[0])
+messages = []
+
+
+@calldata_type(VTK_STRING)
+def caught_any(caller, event, text):
+    messages.append(text)
+
+
+drawn.GetClientSideObject().AddObserver("ErrorEvent", caught_any)
+drawn.GetClientSideObject().AddObserver("WarningEvent", caught_any)
+drawn.UpdatePipeline()
+data = sm.Fetch(drawn)
+assert not messages, messages
+assert data.GetNumberOfPoints() == 5
+assert data.GetCellData().GetArray("Complete").GetValue(0) == 0
+needs = data.GetFieldData().GetAbstractArray("IncompleteCurves").GetValue(0)
+assert "3n+1" in needs and "it has 5: 2 more complete it" in needs, needs
+print("Surface Curves: snapped and exact points, curves, state file, bad input, curves being drawn")

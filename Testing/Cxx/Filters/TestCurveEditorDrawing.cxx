@@ -5,10 +5,15 @@
 
 #include "FilterTestUtils.h"
 #include "Mesh/TriangleMesh.h"
+#include "vtkBoolSurf.h"
 #include "vtkBoolSurfSurfaceCurves.h"
 
+#include <vtkCellData.h>
+#include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkPointData.h>
+#include <vtkStringArray.h>
 
 #include <array>
 #include <cmath>
@@ -198,5 +203,150 @@ TEST(CurveEditorDrawing, SnapsPointsOnUprightTriangles)
     EXPECT_NEAR(back.x, given[i][0], 1e-12) << "point " << i;
     EXPECT_NEAR(back.y, given[i][1], 1e-12) << "point " << i;
     EXPECT_NEAR(back.z, given[i][2], 1e-12) << "point " << i;
+  }
+}
+
+TEST(CurveEditorDrawing, MissingPointsFollowEachType)
+{
+  pqBoolSurfDrawing::Curve c;
+  const auto missing = [&](int type, bool closed, int size)
+  {
+    c.Type = type;
+    c.Closed = closed;
+    c.Points.assign(size, pqBoolSurfDrawing::Point());
+    return pqBoolSurfDrawing::MissingPoints(c);
+  };
+  EXPECT_EQ(missing(0, false, 1), 1);
+  EXPECT_EQ(missing(0, true, 2), 0);
+  EXPECT_EQ(missing(0, true, 5), 0);
+  // Open Bezier: 4, 7, 10, ... points; closed: 3, 6, 9, ...
+  const int open[] = { 3, 2, 1, 0, 2, 1, 0, 2 };   // sizes 1..8
+  const int closed[] = { 2, 1, 0, 2, 1, 0, 2, 1 }; // sizes 1..8
+  for (int size = 1; size <= 8; ++size)
+  {
+    EXPECT_EQ(missing(1, false, size), open[size - 1]) << size;
+    EXPECT_EQ(missing(1, true, size), closed[size - 1]) << size;
+  }
+}
+
+TEST(CurveEditorDrawing, ReversalKeepsBezierAnchors)
+{
+  pqBoolSurfDrawing d;
+  for (const bool closed : { false, true })
+  {
+    d.Curves.assign(1, pqBoolSurfDrawing::Curve());
+    d.Curves[0].Type = 1;
+    d.Curves[0].Closed = closed;
+    const int n = closed ? 6 : 7;
+    for (int i = 0; i < n; ++i)
+    {
+      pqBoolSurfDrawing::Point p;
+      p.Position = { double(i), 0, 0 };
+      d.Curves[0].Points.push_back(p);
+    }
+    ASSERT_TRUE(d.ReverseCurve(0));
+    std::vector<double> order;
+    for (const auto& p : d.Curves[0].Points)
+    {
+      order.push_back(p.Position[0]);
+    }
+    // Open: the last anchor first; closed: the first anchor stays, the handles swap sides.
+    const std::vector<double> expected =
+      closed ? std::vector<double>{ 0, 5, 4, 3, 2, 1 } : std::vector<double>{ 6, 5, 4, 3, 2, 1, 0 };
+    EXPECT_EQ(order, expected) << (closed ? "closed" : "open");
+    // Anchors (0, 3, 6, ...) stay anchors.
+    for (size_t k = 0; k < order.size(); k += 3)
+    {
+      EXPECT_EQ(static_cast<int>(order[k]) % 3, 0) << k;
+    }
+  }
+  EXPECT_FALSE(d.ReverseCurve(5));
+}
+
+// A curve being drawn (a Bezier curve between anchors, a curve of one click) is no error: the
+// source marks it and says what it needs, its traced output shows its complete part, and a
+// BoolSurf downstream leaves it out without a message (each message opened ParaView's Output
+// Messages window over the view while the user was clicking).
+TEST(CurveEditorDrawing, CurvesBeingDrawnAreNoError)
+{
+  vtkSmartPointer<vtkPolyData> surface =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(40, 1.0, 0.0, 0));
+  // Curve 0: a closed square (complete); curve 1: an open Bezier of 5 points (one segment and
+  // one more anchor's first handle); curve 2: a first click.
+  const double pts[][3] = { { 0.2, 0.2, 0 },
+    { 0.4, 0.2, 0 },
+    { 0.4, 0.4, 0 },
+    { 0.2, 0.4, 0 },
+    { 0.6, 0.6, 0 },
+    { 0.7, 0.65, 0 },
+    { 0.8, 0.65, 0 },
+    { 0.9, 0.6, 0 },
+    { 0.9, 0.7, 0 },
+    { 0.1, 0.9, 0 } };
+  vtkNew<vtkBoolSurfSurfaceCurves> drawing;
+  drawing->SetInputData(surface);
+  drawing->SetNumberOfPoints(10);
+  for (int i = 0; i < 10; ++i)
+  {
+    drawing->SetPoint(i, pts[i][0], pts[i][1], pts[i][2]);
+  }
+  const int sizes[] = { 4, 5, 1 }, types[] = { 0, 1, 0 }, closed[] = { 1, 0, 0 };
+  drawing->SetNumberOfCurveSizes(3);
+  drawing->SetNumberOfCurveTypes(3);
+  drawing->SetNumberOfClosedCurves(3);
+  for (int c = 0; c < 3; ++c)
+  {
+    drawing->SetCurveSize(c, sizes[c]);
+    drawing->SetCurveType(c, types[c]);
+    drawing->SetClosedCurve(c, closed[c]);
+  }
+  vtkNew<testutils::MessageCatcher> messages;
+  drawing->AddObserver(vtkCommand::ErrorEvent, messages);
+  drawing->AddObserver(vtkCommand::WarningEvent, messages);
+  drawing->Update();
+  EXPECT_EQ(messages->Errors + messages->Warnings, "");
+  vtkPolyData* controls = drawing->GetOutput(0);
+  ASSERT_EQ(controls->GetNumberOfPoints(), 10);
+  vtkDataArray* complete = controls->GetCellData()->GetArray("Complete");
+  ASSERT_NE(complete, nullptr);
+  EXPECT_EQ(complete->GetComponent(0, 0), 1);
+  EXPECT_EQ(complete->GetComponent(1, 0), 0);
+  EXPECT_EQ(complete->GetComponent(2, 0), 0);
+  auto* needs =
+    vtkStringArray::SafeDownCast(controls->GetFieldData()->GetAbstractArray("IncompleteCurves"));
+  ASSERT_NE(needs, nullptr);
+  ASSERT_EQ(needs->GetNumberOfValues(), 2);
+  EXPECT_NE(
+    needs->GetValue(0).find("curve 1: an open cubic Bezier spline needs 3n+1"), std::string::npos)
+    << needs->GetValue(0);
+  EXPECT_NE(needs->GetValue(0).find("2 more complete it"), std::string::npos) << needs->GetValue(0);
+  EXPECT_NE(needs->GetValue(1).find("curve 2: a geodesic polygon needs 2"), std::string::npos)
+    << needs->GetValue(1);
+  // Port 1: the square and the Bezier curve's first segment (from (0.6, 0.6) to (0.9, 0.6)).
+  vtkPolyData* traced = drawing->GetOutput(1);
+  ASSERT_EQ(traced->GetNumberOfCells(), 2);
+  vtkDataArray* tracedComplete = traced->GetCellData()->GetArray("Complete");
+  ASSERT_NE(tracedComplete, nullptr);
+  EXPECT_EQ(tracedComplete->GetComponent(0, 0), 1);
+  EXPECT_EQ(tracedComplete->GetComponent(1, 0), 0);
+  double last[3];
+  traced->GetPoint(traced->GetNumberOfPoints() - 1, last);
+  EXPECT_NEAR(last[0], 0.9, 1e-12);
+  EXPECT_NEAR(last[1], 0.6, 1e-12);
+
+  // Downstream, from either port: the square's region, without a message.
+  for (int port : { 0, 1 })
+  {
+    vtkNew<vtkBoolSurf> boolsurf;
+    boolsurf->SetInputData(0, surface);
+    boolsurf->SetInputConnection(1, drawing->GetOutputPort(port));
+    boolsurf->SetOperationToExpression();
+    boolsurf->SetExpression("S0");
+    vtkNew<testutils::MessageCatcher> downstream;
+    boolsurf->AddObserver(vtkCommand::ErrorEvent, downstream);
+    boolsurf->AddObserver(vtkCommand::WarningEvent, downstream);
+    boolsurf->Update();
+    EXPECT_EQ(downstream->Errors + downstream->Warnings, "") << "port " << port;
+    EXPECT_NEAR(testutils::Area(boolsurf->GetOutput(0)), 0.04, 1e-12) << "port " << port;
   }
 }

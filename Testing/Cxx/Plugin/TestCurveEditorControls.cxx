@@ -59,6 +59,7 @@ TEST(CurveEditorControls, EveryControlShowsWholeAtTheDefaultDockWidth)
     controls.Type,
     controls.Closed,
     controls.NewCurve,
+    controls.ReverseCurve,
     controls.DeletePoint,
     controls.DeleteCurve,
     controls.Clear };

@@ -45,7 +45,10 @@ struct FlatHole
 {
   double X0 = 0, Y0 = 0, X1 = 0, Y1 = 0;
   bool Empty() const { return this->X1 <= this->X0 || this->Y1 <= this->Y0; }
-  double Area() const { return this->Empty() ? 0.0 : (this->X1 - this->X0) * (this->Y1 - this->Y0); }
+  double Area() const
+  {
+    return this->Empty() ? 0.0 : (this->X1 - this->X0) * (this->Y1 - this->Y0);
+  }
   Vec2 Center() const { return { 0.5 * (this->X0 + this->X1), 0.5 * (this->Y0 + this->Y1) }; }
   /// Whether the segment a-b meets the open hole (Liang-Barsky clipping: the part of the
   /// segment strictly inside has positive length, or the segment is a point inside).

@@ -160,8 +160,9 @@ inline void CheckDrawing(const TriangleMesh& mesh,
       { return Evaluate(op, IsInside(w[0], fill), IsInside(w[1], fill)); };
       // A hole holds no curve: the winding numbers are constant in it, and what the plane
       // selects there is not on the surface.
-      const double inHole = hole.Empty() || !selects({ WindingNumber(drawing, 0, hole.Center()),
-                                              WindingNumber(drawing, 1, hole.Center()) })
+      const double inHole = hole.Empty() ||
+          !selects(
+            { WindingNumber(drawing, 0, hole.Center()), WindingNumber(drawing, 1, hole.Center()) })
         ? 0.0
         : hole.Area();
       const double expected =
@@ -194,7 +195,6 @@ inline void CheckDrawing(const TriangleMesh& mesh,
     EXPECT_NEAR(sa + notA, total, 1e-9 * total) << DescribeDrawing(drawing);
   }
 }
-
 
 } // namespace testing
 } // namespace boolsurf

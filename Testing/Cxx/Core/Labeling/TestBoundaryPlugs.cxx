@@ -71,9 +71,8 @@ void CheckEveryStartAndOrientation(const TriangleMesh& mesh,
       const int orientation = signedArea > 0 ? 1 : -1;
       const double inside =
         SelectedArea(a, [&](const std::vector<int>& l) { return l[0] == orientation; });
-      EXPECT_NEAR(inside, std::abs(signedArea) - (WindingNumber(drawing, 0, hole.Center()) != 0
-                                                     ? hole.Area()
-                                                     : 0.0),
+      EXPECT_NEAR(inside,
+        std::abs(signedArea) - (WindingNumber(drawing, 0, hole.Center()) != 0 ? hole.Area() : 0.0),
         1e-9 * std::abs(signedArea));
     }
   }
@@ -102,7 +101,8 @@ const std::vector<std::pair<const char*, Points>>& SquarePolygons()
         { 30, 30 },
         { 30, 100 },
         { 0, 100 } } },
-    { "L around a corner", { { 70, 0 }, { 100, 0 }, { 100, 30 }, { 90, 30 }, { 90, 10 }, { 70, 10 } } },
+    { "L around a corner",
+      { { 70, 0 }, { 100, 0 }, { 100, 30 }, { 90, 30 }, { 90, 10 }, { 70, 10 } } },
     { "comb",
       { { 10, 0 },
         { 20, 0 },
@@ -151,7 +151,8 @@ TEST(BoundaryPlugs, SquarePolygonsOnAnIrregularMesh)
 TEST(BoundaryPlugs, PatchesEndWhereCurvesLeaveTheBoundary)
 {
   const TriangleMesh mesh = FlatMeshFor(0, 10, 10, true, 0);
-  const FlatDrawingAnswer a = AnswerDrawing(mesh, { { 0, { { 4, 0 }, { 6, 0 }, { 6, 2 }, { 4, 2 } } } });
+  const FlatDrawingAnswer a =
+    AnswerDrawing(mesh, { { 0, { { 4, 0 }, { 6, 0 }, { 6, 2 }, { 4, 2 } } } });
   ASSERT_TRUE(a.Ok) << a.Error;
   ASSERT_EQ(a.Arr.Patches.size(), 2u);
   int onBoundary = 0;
@@ -213,7 +214,8 @@ TEST(BoundaryPlugs, RandomDrawingsOnTheLatticeSquare)
         "irregular mesh (" + std::to_string(cells) + " cells, seed " + std::to_string(seed) + ")",
         failures,
         tally);
-      CheckDrawing(FlatMeshFor(0, lattice, lattice, true, 0), drawing, "aligned mesh", failures, tally);
+      CheckDrawing(
+        FlatMeshFor(0, lattice, lattice, true, 0), drawing, "aligned mesh", failures, tally);
     }
   }
   EXPECT_EQ(failures, 0);
@@ -231,11 +233,20 @@ TEST(BoundaryPlugs, PolygonsAlongTheLoopOfAHole)
     { "the hole's loop", { { 2, 2 }, { 4, 2 }, { 4, 3 }, { 2, 3 } } },
     { "around the hole", { { 1, 1 }, { 5, 1 }, { 5, 4 }, { 1, 4 } } },
     { "below the hole, sharing its side", { { 2, 1 }, { 4, 1 }, { 4, 2 }, { 2, 2 } } },
-    { "along two sides of the hole", { { 1, 1 }, { 4, 1 }, { 4, 2 }, { 2, 2 }, { 2, 3 }, { 1, 3 } } },
-    { "from the outer loop to the hole",
-      { { 0, 2 }, { 2, 2 }, { 2, 3 }, { 0, 3 } } },
+    { "along two sides of the hole",
+      { { 1, 1 }, { 4, 1 }, { 4, 2 }, { 2, 2 }, { 2, 3 }, { 1, 3 } } },
+    { "from the outer loop to the hole", { { 0, 2 }, { 2, 2 }, { 2, 3 }, { 0, 3 } } },
     { "around the hole and along the outer loop",
-      { { 0, 0 }, { 6, 0 }, { 6, 6 }, { 0, 6 }, { 0, 4 }, { 5, 4 }, { 5, 1 }, { 1, 1 }, { 1, 4 }, { 0, 4 } } },
+      { { 0, 0 },
+        { 6, 0 },
+        { 6, 6 },
+        { 0, 6 },
+        { 0, 4 },
+        { 5, 4 },
+        { 5, 1 },
+        { 1, 1 },
+        { 1, 4 },
+        { 0, 4 } } },
   };
   for (const auto& [name, polygon] : polygons)
   {
@@ -434,8 +445,8 @@ TEST(BoundaryPlugs, ScanCurvesAlongBoundaryLoops)
             traced.ShapeId = 0;
             for (size_t i = 0; i < curve.size(); ++i)
             {
-              const size_t k = reversed ? (start + curve.size() - i) % curve.size()
-                                        : (start + i) % curve.size();
+              const size_t k =
+                reversed ? (start + curve.size() - i) % curve.size() : (start + i) % curve.size();
               CanonicalPoint p;
               p.Location = PointLocation::Vertex;
               p.Id = curve[k];
@@ -466,7 +477,8 @@ TEST(BoundaryPlugs, ScanCurvesAlongBoundaryLoops)
             }
             EXPECT_EQ(wrong, 0) << "loop " << l << " from " << first << ", " << stretch
                                 << " edges, reversed " << reversed << ", start " << start;
-            EXPECT_NEAR(inside, leftHoldsFreeLongestLoop ? total - leftArea : leftArea, 1e-9 * total);
+            EXPECT_NEAR(
+              inside, leftHoldsFreeLongestLoop ? total - leftArea : leftArea, 1e-9 * total);
             ++checked;
           }
         }
