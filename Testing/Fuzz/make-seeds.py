@@ -78,6 +78,9 @@ write("FuzzBooleanExpression", "unbalanced.txt", expression(0, [0, 1], 1, 1, "((
 write("FuzzBooleanExpression", "trailing.txt", expression(0, [0, 1], 1, 1, "S0 &"))
 write("FuzzBooleanExpression", "overflow.txt", expression(2, [], 1, 1, "S99999999999 | S1"))
 write("FuzzBooleanExpression", "utf8.txt", expression(1, [3], 1, 1, "S3 \u2227 S3 \xff"))
+# Parentheses nested past the parser's limit (256): refused by name, not by a stack overflow.
+write("FuzzBooleanExpression", "deep-parentheses.txt",
+      expression(0, [0, 1], 1, 1, "(" * 1000 + "S0 | S1" + ")" * 1000))
 
 # --- Core pipeline: surface kind and size, curves (count; per curve flags, point count, then per
 # point triangle, u byte, v byte), tracer resolution, flood fill, operation, shapes a and b.
@@ -156,3 +159,16 @@ write("FuzzSceneReader", "binary-ply-mesh.json",
 write("FuzzSceneReader", "truncated-ply-mesh.json",
       scene(points=points[:3], polygons=[[], [0, 1, 2]]).encode() + b"\n#mesh\n" +
       binary_ply(">")[:-5])
+# Nesting past MaxSceneNestingDepth (256), refused by name before any value is built: 20,000
+# levels of arrays in 'points' (10^5 overflowed the stack when copied), objects and both mixed
+# just past the limit, and a scene whose unknown key nests exactly to the limit (read).
+write("FuzzSceneReader", "deep-arrays-20000.json",
+      '{"model": "mesh.ply", "points": ' + "[" * 20000 + "]" * 20000 + ', "polygons": []}')
+write("FuzzSceneReader", "deep-objects-300.json",
+      '{"model": "mesh.ply", "polygons": [], "points": ' + '{"p":' * 300 + "0" + "}" * 301)
+write("FuzzSceneReader", "deep-mixed-300.json",
+      '{"model": "mesh.ply", "polygons": [], "points": ' + '[{"p":' * 150 + "0" +
+      "}]" * 150 + "}")
+write("FuzzSceneReader", "nesting-at-limit.json",
+      scene(points=points[:3], polygons=[[], [0, 1, 2]])[:-1] + ', "extra": ' + "[" * 255 +
+      "]" * 255 + "}")
