@@ -47,7 +47,7 @@ begin_phase 4 "sanitizer ctest in build-sanitize/ (Core and filter tests)"
 end_phase
 
 # Fuzzing (a third build in build-fuzz/, clang with libFuzzer, ASan and UBSan: Core, the scene
-# reader and the four targets of Testing/Fuzz/): each target runs from its checked-in seeds for
+# reader and the five targets of Testing/Fuzz/): each target runs from its checked-in seeds for
 # a bounded number of inputs (BOOLSURF_FUZZ_RUNS, at most BOOLSURF_FUZZ_SECONDS each).
 begin_phase 5 "fuzz build in build-fuzz/ (clang, libFuzzer)"
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
