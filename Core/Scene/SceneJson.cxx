@@ -1,5 +1,6 @@
 #include "Scene/SceneJson.h"
 
+#include "Scene/JsonNestingDepth.h"
 #include "Scene/ScenePlacement.h"
 
 #include <nlohmann/json.hpp>
@@ -8,6 +9,7 @@
 #include <climits>
 #include <cmath>
 #include <istream>
+#include <iterator>
 #include <optional>
 #include <unordered_map>
 #include <utility>
@@ -88,6 +90,77 @@ private:
   std::vector<std::string>& Lexemes;
 };
 
+/// Throws when `text` nests arrays and objects deeper than MaxSceneNestingDepth, naming where.
+void RefuseDeepNesting(const std::string& text)
+{
+  const auto excess = FindJsonNestingBeyond(text, MaxSceneNestingDepth);
+  if (!excess)
+  {
+    return;
+  }
+  std::string where =
+    "line " + std::to_string(excess->Line) + ", column " + std::to_string(excess->Column);
+  if (!excess->TopLevelKey.empty())
+  {
+    where += " (in '" + excess->TopLevelKey + "')";
+  }
+  throw SceneError(std::string("nesting too deep: ") +
+    (excess->Bracket == '[' ? "an array" : "an object") + " at " + where + " is " +
+    std::to_string(excess->Depth) +
+    " levels deep; scene files may nest arrays and objects at most " +
+    std::to_string(MaxSceneNestingDepth) + " levels");
+}
+
+/// Whether a JSON text is an object with a given key at its top level, read as events without
+/// building any value (so at any depth).
+class TopLevelKeyFinder : public nlohmann::json_sax<json>
+{
+public:
+  explicit TopLevelKeyFinder(const char* key)
+    : Key(key)
+  {
+  }
+  bool IsObjectWithKey() const { return this->TopLevelIsObject && this->Found; }
+
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return this->Open(true); }
+  bool start_array(std::size_t) override { return this->Open(false); }
+  bool end_object() override { return this->Close(); }
+  bool end_array() override { return this->Close(); }
+  bool key(string_t& name) override
+  {
+    this->Found = this->Found || (this->Depth == 1 && name == this->Key);
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override
+  {
+    return false;
+  }
+
+private:
+  bool Open(bool object)
+  {
+    this->TopLevelIsObject = this->Depth++ == 0 ? object : this->TopLevelIsObject;
+    return true;
+  }
+  bool Close()
+  {
+    --this->Depth;
+    return true;
+  }
+
+  std::string Key;
+  long long Depth = 0;
+  bool TopLevelIsObject = false;
+  bool Found = false;
+};
+
 /// One file being read: its document, the spellings of its numbers, and the checks.
 class SceneParser
 {
@@ -95,10 +168,12 @@ public:
   explicit SceneParser(std::istream& in)
   {
     this->Spellings.Root = &this->Root;
+    const std::string text{ std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
+    RefuseDeepNesting(text);
     try
     {
       SpellingDomParser parser(this->Root, this->Spellings.Lexemes);
-      json::sax_parse(in, &parser);
+      json::sax_parse(text, &parser);
     }
     catch (const json::parse_error& e)
     {
@@ -607,8 +682,15 @@ SceneModel ParseSceneJson(std::istream& in, const SceneParseOptions& options)
 //------------------------------------------------------------------------------
 bool LooksLikeSceneJson(std::istream& in)
 {
-  const json scene = json::parse(in, nullptr, /*allow_exceptions=*/false);
-  return scene.is_object() && scene.contains("polygons");
+  try
+  {
+    TopLevelKeyFinder finder("polygons");
+    return json::sax_parse(in, &finder) && finder.IsObjectWithKey();
+  }
+  catch (const std::exception&)
+  {
+    return false; // the stream failed
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -23,6 +23,12 @@ struct SceneMeshInfo
   std::string Name; ///< for messages (a file name)
 };
 
+/// How deep a scene file may nest arrays and objects (the top-level object is level 1; a
+/// scene needs 4: the top level, `points`, a point, its `uv`). Deeper is refused before the
+/// file is read into values, whose copies and walks recurse once per level: a file nested
+/// 10^5 deep would overflow the stack. 256 as for parentheses in Boolean expressions.
+constexpr int MaxSceneNestingDepth = 256;
+
 struct SceneParseOptions
 {
   /// Whether a surface scene's `model` is required and read. False when the caller names the
@@ -38,15 +44,19 @@ struct SceneParseOptions
 };
 
 /// Reads a scene (throws SceneError for a problem with the file, with the messages above).
-/// The checks: valid JSON; a JSON object; `polygons` (and for a surface scene `points` and
-/// `model`) present; every value of the right type; point, polygon and shape indices that
-/// exist; a polygon in at most one shape; uv within SceneUVTolerance of the triangle; flags
-/// `are_closed`, `curve_types` (0 or 1), operation types (0..3); at least one curve. A
-/// surface scene's one-point polygon is skipped with a note; a screen-space scene's is an
-/// error, as is a screen-space scene whose points are all the same.
+/// The checks: arrays and objects nested at most MaxSceneNestingDepth levels ("nesting too
+/// deep: an array at line 1, column 300 (in 'points') is 257 levels deep; ..."); valid JSON;
+/// a JSON object; `polygons` (and for a surface scene `points` and `model`) present; every
+/// value of the right type; point, polygon and shape indices that exist; a polygon in at most
+/// one shape; uv within SceneUVTolerance of the triangle; flags `are_closed`, `curve_types` (0
+/// or 1), operation types (0..3); at least one curve. A surface scene's one-point polygon is
+/// skipped with a note; a screen-space scene's is an error, as is a screen-space scene whose
+/// points are all the same.
 SceneModel ParseSceneJson(std::istream& in, const SceneParseOptions& options = {});
 
-/// Whether `in` holds a JSON object with a `polygons` key. Never throws.
+/// Whether `in` holds a JSON object with a `polygons` key. Never throws; reads the file
+/// without building its values, so a file nested too deep is still recognized (and refused
+/// by ParseSceneJson with its message).
 bool LooksLikeSceneJson(std::istream& in);
 
 /// The scene as a file's text (ending with a newline): keys in alphabetical order, `indent`

@@ -3,6 +3,7 @@
 #include <libxml/tree.h>
 
 #include "Svg/SvgDrawing.h"
+#include "Svg/XmlNestingDepth.h"
 
 #include <svgpp/policy/xml/libxml2.hpp>
 #include <svgpp/svgpp.hpp>
@@ -421,6 +422,14 @@ struct DocumentDeleter
 bool ParseSvg(const std::string& text, SvgDrawing& out, std::string& error)
 {
   out = SvgDrawing();
+  if (const auto excess = FindXmlNestingBeyond(text, MaxSvgNestingDepth))
+  {
+    error = "nesting too deep: element <" + excess->Element + "> at line " +
+      std::to_string(excess->Line) + " is " + std::to_string(excess->Depth) +
+      " levels deep; SVG drawings may nest elements at most " + std::to_string(MaxSvgNestingDepth) +
+      " levels";
+    return false;
+  }
   std::unique_ptr<xmlDoc, DocumentDeleter> doc(xmlReadMemory(text.data(),
     static_cast<int>(text.size()),
     "drawing.svg",

@@ -39,8 +39,14 @@ struct SvgDrawing
   double Min[2] = { 0, 0 }, Max[2] = { 0, 0 }; ///< bounds of all control points
 };
 
-/// Reads an SVG file. False with a sentence naming the problem (missing file, malformed XML,
-/// an SVG error from svgpp, no path at all).
+/// How deep a drawing may nest elements (the root `svg` is level 1; editors nest a few groups
+/// per layer). Deeper is refused before the document is parsed: svgpp walks the elements by
+/// recursion, once per level. 256 as for scene files; libxml2 itself stops at 257.
+constexpr int MaxSvgNestingDepth = 256;
+
+/// Reads an SVG file. False with a sentence naming the problem (missing file, elements nested
+/// deeper than MaxSvgNestingDepth: "nesting too deep: element <g> at line 3 is 257 levels deep;
+/// ...", malformed XML, an SVG error from svgpp, no path at all).
 bool LoadSvg(const std::string& fileName, SvgDrawing& out, std::string& error);
 
 /// The same from the text of a document.

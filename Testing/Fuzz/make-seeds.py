@@ -78,6 +78,9 @@ write("FuzzBooleanExpression", "unbalanced.txt", expression(0, [0, 1], 1, 1, "((
 write("FuzzBooleanExpression", "trailing.txt", expression(0, [0, 1], 1, 1, "S0 &"))
 write("FuzzBooleanExpression", "overflow.txt", expression(2, [], 1, 1, "S99999999999 | S1"))
 write("FuzzBooleanExpression", "utf8.txt", expression(1, [3], 1, 1, "S3 \u2227 S3 \xff"))
+# Parentheses nested past the parser's limit (256): refused by name, not by a stack overflow.
+write("FuzzBooleanExpression", "deep-parentheses.txt",
+      expression(0, [0, 1], 1, 1, "(" * 1000 + "S0 | S1" + ")" * 1000))
 
 # --- Core pipeline: surface kind and size, curves (count; per curve flags, point count, then per
 # point triangle, u byte, v byte), tracer resolution, flood fill, operation, shapes a and b.
@@ -156,3 +159,45 @@ write("FuzzSceneReader", "binary-ply-mesh.json",
 write("FuzzSceneReader", "truncated-ply-mesh.json",
       scene(points=points[:3], polygons=[[], [0, 1, 2]]).encode() + b"\n#mesh\n" +
       binary_ply(">")[:-5])
+# Nesting past MaxSceneNestingDepth (256), refused by name before any value is built: 20,000
+# levels of arrays in 'points' (10^5 overflowed the stack when copied), objects and both mixed
+# just past the limit, and a scene whose unknown key nests exactly to the limit (read).
+write("FuzzSceneReader", "deep-arrays-20000.json",
+      '{"model": "mesh.ply", "points": ' + "[" * 20000 + "]" * 20000 + ', "polygons": []}')
+write("FuzzSceneReader", "deep-objects-300.json",
+      '{"model": "mesh.ply", "polygons": [], "points": ' + '{"p":' * 300 + "0" + "}" * 301)
+write("FuzzSceneReader", "deep-mixed-300.json",
+      '{"model": "mesh.ply", "polygons": [], "points": ' + '[{"p":' * 150 + "0" +
+      "}]" * 150 + "}")
+write("FuzzSceneReader", "nesting-at-limit.json",
+      scene(points=points[:3], polygons=[[], [0, 1, 2]])[:-1] + ', "extra": ' + "[" * 255 +
+      "]" * 255 + "}")
+
+# --- SVG drawings: shapes, path commands, transforms and fill rules; nesting past
+# MaxSvgNestingDepth (256) and at it; markup that is not nesting; malformed XML.
+SVG_ROOT = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">'
+
+
+def svg(body):
+    return SVG_ROOT + body + "</svg>"
+
+
+write("FuzzSvgDrawing", "paths.svg",
+      svg("<path d='M10 10 h20 v20 H10 Z m40 0 l10 0 q5 5 0 10 t-5 5 c1 2 3 4 5 6 s2 2 3 3 "
+          "a5 5 0 0 1 10 0 z'/>"))
+write("FuzzSvgDrawing", "shapes.svg",
+      svg("<g transform='translate(10 20) rotate(30) scale(2)' style='fill-rule:evenodd'>"
+          "<rect x='1' y='1' width='20' height='10' rx='3'/><circle cx='50' cy='50' r='10'/>"
+          "<ellipse cx='20' cy='70' rx='8' ry='4'/><line x1='0' y1='0' x2='9' y2='9'/>"
+          "<polyline points='0,0 5,5 10,0'/><polygon fill-rule='nonzero' points='50,10 90,50 "
+          "50,90 10,50'/></g>"))
+write("FuzzSvgDrawing", "markup.svg",
+      "<?xml version='1.0'?>\n<!DOCTYPE svg [ <!ENTITY e '<g></g>'> ]>\n" + SVG_ROOT +
+      "<!-- <g><g> --><style><![CDATA[ <g> ]]></style><?pi <g>?><g data-x='>>'><g/>"
+      "<path d='M0 0 L1 0 L1 1 Z'/></g></svg>")
+write("FuzzSvgDrawing", "deep-groups-300.svg",
+      svg("<g>" * 300 + "<path d='M0 0 L1 0 L1 1 Z'/>" + "</g>" * 300))
+write("FuzzSvgDrawing", "nesting-at-limit.svg",
+      svg("<g transform='translate(1 0)'>" * 254 + "<path d='M0 0 L1 0 L1 1 Z'/>" +
+          "</g>" * 254))
+write("FuzzSvgDrawing", "malformed.svg", SVG_ROOT + "<path d='M0 0 L1 1'")
