@@ -683,37 +683,59 @@ TEST(GeodesicOffset, InsetCornersStaySharpAtEveryAngle)
   const TriangleMesh mesh = MeshOf(MakeFlatSquare(100, 1.0));
   const MeshTopology topology = MeshTopology::Compute(mesh);
   FlatPolygonTracer tracer(mesh);
-  auto square = [](double half, double theta)
+  auto square = [](double half, double theta, Vec2 center = { 0.5, 0.5 })
   {
     std::vector<Vec2> p;
     for (const Vec2 c : { Vec2{ -1, -1 }, Vec2{ 1, -1 }, Vec2{ 1, 1 }, Vec2{ -1, 1 } })
     {
-      p.push_back({ 0.5 + half * (c.x * std::cos(theta) - c.y * std::sin(theta)),
-        0.5 + half * (c.x * std::sin(theta) + c.y * std::cos(theta)) });
+      p.push_back({ center.x + half * (c.x * std::cos(theta) - c.y * std::sin(theta)),
+        center.y + half * (c.x * std::sin(theta) + c.y * std::cos(theta)) });
     }
     return p;
   };
+  struct Case
+  {
+    double Half, Distance, Theta;
+    Vec2 Center;
+  };
   // The angles where corners were cut (by up to 0.3 h^2, or by slivers where the tip barely
   // crosses an edge), then 60 more over a quarter turn.
-  std::vector<double> angles = { 0.21, 0.28, 0.63, 0.70, 0.77, 0.32, 0.93, 1.27 };
+  std::vector<Case> cases;
+  for (double theta : { 0.21, 0.28, 0.63, 0.70, 0.77, 0.32, 0.93, 1.27 })
+  {
+    cases.push_back({ 0.15, 0.05, theta, { 0.5, 0.5 } });
+  }
   for (int i = 0; i < 60; ++i)
   {
-    angles.push_back(0.5 * Pi * i / 60.0 + (i % 2 ? 0.0 : 0.0037 * i));
+    cases.push_back({ 0.15, 0.05, 0.5 * Pi * i / 60.0 + (i % 2 ? 0.0 : 0.0037 * i), { 0.5, 0.5 } });
   }
-  for (double theta : angles)
+  // Corners within ~1e-4 of a contour point on a side of their triangle (theta 1.266: 1.6e-5
+  // from where the other side leaves through the diagonal), where the gradient sampled next to
+  // that point, or part of its stencil, lay on the other front: cut by up to 0.004 h^2, or kept
+  // up to 5e-5 off. From a sweep of 400 angles over a quarter turn, three sizes, three
+  // distances and centres moved off the grid's symmetry.
+  cases.push_back({ 0.15, 0.05, 1.266, { 0.5, 0.5 } });
+  cases.push_back({ 0.23, 0.0437, Pi * 91 / 800, { 0.5, 0.50071 } });
+  cases.push_back({ 0.15, 0.0437, Pi * 343 / 800, { 0.5, 0.50213 } });
+  cases.push_back({ 0.1, 0.05, Pi * 151 / 800, { 0.50492, 0.50071 } });
+  cases.push_back({ 0.23, 0.0311, Pi * 95 / 800, { 0.50492, 0.5 } });
+  cases.push_back({ 0.1, 0.05, Pi * 157 / 800, { 0.50369, 0.50142 } });
+  for (const Case& c : cases)
   {
     TracedCurve curve;
-    ASSERT_TRUE(tracer.Trace(square(0.15, theta), true, 0, 0, curve));
+    ASSERT_TRUE(tracer.Trace(square(c.Half, c.Theta, c.Center), true, 0, 0, curve));
     OffsetOptions options;
-    options.Distance = -0.05;
+    options.Distance = -c.Distance;
     const Offset result = OffsetOf(mesh, topology, { curve }, {}, options);
     ASSERT_TRUE(result.Ok) << result.Error;
     EXPECT_EQ(result.Loops.size(), 1u);
-    EXPECT_NEAR(result.Area, 0.04, 1e-8) << "theta " << theta;
-    for (const Vec2& corner : square(0.1, theta))
+    const double side = 2.0 * (c.Half - c.Distance);
+    EXPECT_NEAR(result.Area, side * side, 1e-8) << "theta " << c.Theta << ", half " << c.Half;
+    for (const Vec2& corner : square(c.Half - c.Distance, c.Theta, c.Center))
     {
       EXPECT_LT(NearestLoopPoint(mesh, result.Loops, { corner.x, corner.y, 0.0 }), 1e-6)
-        << "theta " << theta << ", corner (" << corner.x << ", " << corner.y << ")";
+        << "theta " << c.Theta << ", half " << c.Half << ", corner (" << corner.x << ", "
+        << corner.y << ")";
     }
   }
 }
