@@ -891,9 +891,27 @@ bool SharpCorner(const TriangleMesh& mesh,
     // Just inside the triangle from the end point.
     const double toCentroid = std::hypot(cx - px, cy - py);
     const double inward = toCentroid > 0.0 ? std::min(1e-2, 0.1 * chord / toCentroid) : 0.0;
-    const double sx = px + inward * (cx - px), sy = py + inward * (cy - py);
-    const double f = value(sx, sy);
-    gradient[i] = { (value(sx + h, sy) - f) / h, (value(sx, sy + h) - f) / h };
+    // A corner closer to the end point than the sample (a tip just across the triangle's side
+    // from where the other front leaves it) puts the sample, or part of its stencil, on the other
+    // front, whose tangent misses the end point: the corner would land on the wrong line. The
+    // sample's front must pass through the end point (its linear extrapolation there is the end
+    // point's value to within a thousandth of the step; a round join's curvature stays well
+    // within that), else samples ten times closer are tried, down to ~1e-5 of the triangle's
+    // size, where a tip still cut is negligible and rounding (~1e-9 of it) starts to matter.
+    const double atEnd = value(px, py);
+    for (double fraction = inward;; fraction *= 0.1)
+    {
+      const double distance = fraction * toCentroid;
+      const double step = std::min(h, 0.5 * distance);
+      const double sx = px + fraction * (cx - px), sy = py + fraction * (cy - py);
+      const double f = value(sx, sy);
+      gradient[i] = { (value(sx + step, sy) - f) / step, (value(sx, sy + step) - f) / step };
+      const double miss = f - atEnd - (gradient[i].x * (sx - px) + gradient[i].y * (sy - py));
+      if (!(distance > 1e-4 * l1) || std::abs(miss) <= 1e-3 * distance + 1e-9 * l1)
+      {
+        break;
+      }
+    }
   }
   const double g0 = Length(gradient[0]), g1 = Length(gradient[1]);
   const double sine = Cross(gradient[0], gradient[1]) / (g0 * g1);

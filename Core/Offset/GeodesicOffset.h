@@ -19,6 +19,7 @@
 //    at the last point's normal), so a point beyond one end but within d of another part of
 //    the curve stays in the band. Exact for ends whose last d of curve is straight; where a
 //    corner comes closer to an end, its disk may reach up to d less that distance beyond it.
+//    Nearly closed flat curves (ends within 2d of each other) are not checked near their ends.
 // 3. Contour: the level set F = d, located on every mesh edge whose ends straddle it by
 //    bisection on the exact field along the edge, so each contour point is an exact surface
 //    point on a mesh edge; one straight piece per crossed triangle (plus `Resolution` points on
@@ -49,7 +50,9 @@ namespace boolsurf
 enum class OffsetEndStyle : int
 {
   Round = 0, ///< half a geodesic disk around the end point
-  Flat = 1,  ///< cut square at the end point
+  /// the points within d of the curve but for those near it only beyond an end, cut along
+  /// the geodesic normal at the end point (Clipper's butt ends on a plane)
+  Flat = 1,
 };
 
 struct OffsetOptions
