@@ -402,9 +402,16 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   const boolsurf::Arrangement& arr = in.Arrangement;
   boolsurf::LabelingInput labeling =
     boolsurf::MakeLabelingInput(*surface.Mesh, *surface.Topology, in.Curves, arr);
-  // A shape whose curves are all still being drawn (a new shape's first clicks) is a shape
-  // without a region yet: an operation naming it is no error.
+  // A shape whose curves are all still being drawn (a new shape's first clicks), or, in a
+  // drawing, a shape the operation names but not drawn yet, is a shape without a region yet:
+  // no error while the user draws.
   boolsurf::AddShapesWithoutCurves(labeling, boolsurf::ShapesBeingDrawn(curvesInput));
+  if (boolsurf::IsDrawing(curvesInput))
+  {
+    boolsurf::AddShapesWithoutCurves(labeling,
+      boolsurf::ShapesNamed(this->Operation, this->ShapeA, this->ShapeB,
+        this->Expression));
+  }
   if (this->ZeroCellMode == 1)
   {
     const int zero = this->FindZeroCell(surface, error);

@@ -2,12 +2,16 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QEvent>
 #include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <limits>
 
 //------------------------------------------------------------------------------
@@ -89,4 +93,43 @@ pqBoolSurfCurveEditorControls::pqBoolSurfCurveEditorControls(QWidget* parent)
   this->Status->setObjectName("Status");
   this->Status->setWordWrap(true);
   layout->addWidget(this->Status);
+  this->installEventFilter(this); // shown or resized: fit the scroll area's visible width
+}
+
+//------------------------------------------------------------------------------
+bool pqBoolSurfCurveEditorControls::eventFilter(QObject* watched, QEvent* event)
+{
+  if (event->type() == QEvent::Resize || event->type() == QEvent::Show)
+  {
+    this->FitVisibleWidth();
+  }
+  return QWidget::eventFilter(watched, event);
+}
+
+//------------------------------------------------------------------------------
+void pqBoolSurfCurveEditorControls::FitVisibleWidth()
+{
+  QScrollArea* area = nullptr;
+  for (QWidget* w = this->parentWidget(); w && !area; w = w->parentWidget())
+  {
+    area = qobject_cast<QScrollArea*>(w);
+  }
+  if (!area)
+  {
+    return;
+  }
+  QWidget* viewport = area->viewport();
+  if (this->WatchedViewport != viewport)
+  {
+    this->WatchedViewport = viewport;
+    viewport->installEventFilter(this);
+  }
+  // Where the controls start in the scrolled content, and what of it the viewport shows.
+  const int left = this->mapTo(viewport, QPoint(0, 0)).x() + area->horizontalScrollBar()->value();
+  const int visible = viewport->width() - left - 2;
+  const int width = std::max(this->minimumSizeHint().width(), visible);
+  if (this->maximumWidth() != width)
+  {
+    this->setMaximumWidth(width);
+  }
 }

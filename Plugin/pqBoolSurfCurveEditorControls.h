@@ -25,6 +25,13 @@ class pqBoolSurfCurveEditorControls : public QWidget
 public:
   explicit pqBoolSurfCurveEditorControls(QWidget* parent = nullptr);
 
+  /// Keeps the controls inside the visible width of the scroll area that holds them (the
+  /// properties panel): ParaView's display section of a selected output (Traced Curves) can
+  /// make the panel wider than its dock, and controls stretched to that width were cut off at
+  /// the dock's edge. Watches the scroll area's viewport once it is found.
+  bool eventFilter(QObject* watched, QEvent* event) override;
+  void FitVisibleWidth();
+
   QCheckBox* Editing = nullptr;
   QSpinBox* CurveIndex = nullptr;
   QLabel* CurveCount = nullptr;
@@ -37,6 +44,9 @@ public:
   QPushButton* DeleteCurve = nullptr;
   QPushButton* Clear = nullptr;
   QLabel* Status = nullptr;
+
+private:
+  QWidget* WatchedViewport = nullptr;
 };
 
 #endif

@@ -35,12 +35,9 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QEvent>
 #include <QLabel>
 #include <QPointer>
 #include <QPushButton>
-#include <QScrollArea>
-#include <QScrollBar>
 #include <QSpinBox>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -241,7 +238,6 @@ struct pqBoolSurfCurveEditorWidget::Internals
   QTimer LoadTimer;
 
   pqBoolSurfCurveEditorControls* Controls = nullptr; // the panel's widgets
-  QPointer<QWidget> WatchedViewport;                 // the panel's scroll area's viewport
 
   pqBoolSurfDrawing::Curve* CurrentCurvePtr()
   {
@@ -331,44 +327,7 @@ pqBoolSurfCurveEditorWidget::pqBoolSurfCurveEditorWidget(vtkSMProxy* smproxy,
   internal.RenderObserver->SetClientData(this);
   internal.RenderObserver->SetCallback([](vtkObject*, unsigned long, void* self, void*)
     { static_cast<pqBoolSurfCurveEditorWidget*>(self)->PlaceMarkers(); });
-  this->installEventFilter(this); // shown: fit the panel's visible width
   this->loadFromProxy();
-}
-
-//------------------------------------------------------------------------------
-bool pqBoolSurfCurveEditorWidget::eventFilter(QObject* watched, QEvent* event)
-{
-  if (event->type() == QEvent::Resize || event->type() == QEvent::Show)
-  {
-    this->FitVisibleWidth();
-  }
-  return this->Superclass::eventFilter(watched, event);
-}
-
-//------------------------------------------------------------------------------
-void pqBoolSurfCurveEditorWidget::FitVisibleWidth()
-{
-  // The panel's scroll area (ours is the first ancestor that is one); watched from the first
-  // call on, so a resize of the dock or a wider display section refits.
-  QScrollArea* area = nullptr;
-  for (QWidget* w = this->parentWidget(); w && !area; w = w->parentWidget())
-  {
-    area = qobject_cast<QScrollArea*>(w);
-  }
-  if (!area)
-  {
-    return;
-  }
-  QWidget* viewport = area->viewport();
-  if (!this->Internal->WatchedViewport)
-  {
-    this->Internal->WatchedViewport = viewport;
-    viewport->installEventFilter(this);
-  }
-  const int left = this->mapTo(viewport, QPoint(0, 0)).x() + area->horizontalScrollBar()->value();
-  const int visible = viewport->width() - left - 2;
-  auto* controls = this->Internal->Controls;
-  controls->setMaximumWidth(std::max(controls->minimumSizeHint().width(), visible));
 }
 
 //------------------------------------------------------------------------------

@@ -64,9 +64,6 @@ public:
   void select() override;
   void deselect() override;
 
-  /// Keeps the controls inside the properties panel's visible width (see FitVisibleWidth).
-  bool eventFilter(QObject* watched, QEvent* event) override;
-
 public Q_SLOTS:
   void setView(pqView* view) override;
 
@@ -112,10 +109,6 @@ private:
   /// unknown (points loaded from a state file or by undo): their markers hide on the far side.
   void FetchMissingNormals();
   void UpdateControls();
-  /// Caps the controls' width at what the properties panel shows of them: the display
-  /// section of a selected output (Traced Curves) can make the panel wider than its dock, and
-  /// controls stretched to that width were cut off at the dock's edge.
-  void FitVisibleWidth();
   /// Markers and panel from the drawing, then a render of the view.
   void Refresh();
   /// Deletes a control point (Delete Point, Shift+click) as one undoable step.

@@ -51,6 +51,14 @@ std::string WhatCurveNeeds(bool bezier, bool closed, int size);
 /// Complete 0); empty when there are none.
 std::vector<int> ShapesBeingDrawn(vtkPolyData* curves);
 
+/// Whether `curves` is a drawing (Surface Curves' field data Drawing): curves a user is
+/// drawing, where a shape not drawn yet is an empty shape rather than an error.
+bool IsDrawing(vtkPolyData* curves);
+
+/// The shape ids an operation names: ShapeA and ShapeB (those >= 0) of a two-shape operation,
+/// or the S<id> of an expression.
+std::vector<int> ShapesNamed(int operation, int shapeA, int shapeB, const std::string& expression);
+
 /// Whether `curves` is a drawing (Surface Curves' field data Drawing) without a complete
 /// curve yet: empty, or only curves being drawn. Filters give no region then, without a
 /// message (the user is starting to draw).
