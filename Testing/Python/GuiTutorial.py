@@ -6,16 +6,18 @@ Runs `paraview --script=GuiTutorialSetup.py --test-script=GuiTutorial.xml`: Data
 open and shown; the recorded events run Filters > BoolSurf > Check Surface and Filters >
 BoolSurf > Surface Curves from the menus (the paths the README gives), check the properties
 dock's width and font (those the panel layout test assumes), draw two overlapping closed curves
-by clicking on the surface, press New Curve between them and check that its fields show the
-next curve's values (shape 1, polygon, open, enabled), open Sources > BoolSurf > BSC Samples,
-and save the state. The player fails on
-any menu path or widget that does not exist and on any check that does not hold.
+counter-clockwise by clicking on the surface, press New Curve between them and check that its
+fields show the next curve's values (shape 1, polygon, open, enabled), run Filters > BoolSurf >
+BoolSurf with the checked mesh selected (README step 3: the input dialog asks for the Curves),
+open Sources > BoolSurf > BSC Samples, and save the state. The player fails on any menu path or
+widget that does not exist and on any check that does not hold.
 
 Then, from the saved state: two closed curves of four exact points, shapes 0 and 1; the
 surface still shown (the filters keep their input visible); the traced curves shown as
-"BoolSurf Curves", with none of their pixels lost to the surface; and BoolSurf's union of the
-two, shown with ParaView's defaults, is one color over the surface (one chromaticity over all
-its pixels, lit flat).
+"BoolSurf Curves", with none of their pixels lost to the surface; and the BoolSurf made from the
+menus is the union of the two curves, the small region they enclose (not the rest of the
+surface), shown with ParaView's defaults in one color over the surface (one chromaticity over
+all its pixels, lit flat).
 """
 import argparse
 import os
@@ -74,6 +76,12 @@ expect(lines.Visibility == 1 and lines.Representation == "BoolSurf Curves",
        "traced curves shown as BoolSurf Curves: %s" % lines.Representation)
 if "PLYReader" in sources:  # Check Surface shows the mesh in its place
     Hide(sources["PLYReader"], view)
+# What the GUI showed of BoolSurf (every output port) and of the samples is looked at below, or
+# not at all.
+for port in range(sources["BoolSurf"].GetNumberOfOutputPorts()):
+    Hide(sm.OutputPort(sources["BoolSurf"], port), view)
+if "BSCSamples" in sources:
+    Hide(sources["BSCSamples"], view)
 
 png = os.path.join(out, "view.png")
 
@@ -106,9 +114,18 @@ lost = sum(1 for i in alone if max(abs(a - b) for a, b in zip(together[i], bare[
 print("curve pixels %d, lost to the surface %d" % (len(alone), lost))
 expect(len(alone) > 40 and lost == 0, "curve pixels %d, lost %d" % (len(alone), lost))
 
-# The union as a user applies it, with ParaView's default display: one color.
-union = globals()["BoolSurf"](Surface=surface, Curves=curves, Operation="Union", ShapeA=0,
-                              ShapeB=1)
+# The union as the user applied it from the menus (README step 3), with ParaView's default
+# display: one color; and the region the two curves enclose, not the rest of the surface.
+union = sources["BoolSurf"]
+expect(union.Surface.GetXMLName() == "CheckSurface" and
+       union.Curves.GetXMLName() == "BoolSurfSurfaceCurves",
+       "BoolSurf from the menus: Surface = the checked mesh, Curves = the drawing")
+expect(union.Operation == "Union" and union.ShapeA == 0 and union.ShapeB == 1,
+       "BoolSurf's default operation: the union of shapes 0 and 1")
+union.UpdatePipeline()
+covered, whole = sm.Fetch(union).GetNumberOfCells(), sm.Fetch(surface).GetNumberOfCells()
+print("union triangles %d of the surface's %d" % (covered, whole))
+expect(0 < covered < 0.1 * whole, "the union is the small region drawn, not its complement")
 region = Show(union, view)
 Hide(traced, view)
 expect(region.ColorArrayName[1] == "Region", "colored by Region: %s" % region.ColorArrayName)
