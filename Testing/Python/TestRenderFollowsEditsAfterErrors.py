@@ -1,10 +1,11 @@
 """pvbatch under Xvfb: a view keeps following the drawing after BoolSurf failed.
 
-A curve drawn point by point (as the curve editor does) makes BoolSurf fail while it has one
-point and no closed curve ("the input has no shapes"). Those updates must report the error
-and leave the region empty (never the previous region), and once the curve is closed the
-displayed region must be the new one. (Filters returned failure before: ParaView's display of
-the region then never updated again, whatever changed upstream.)
+A curve drawn point by point (as the curve editor does) gives no region while it is open, and
+no message either (a curve being drawn is no error: messages opened ParaView's Output Messages
+window over the view). An expression that fails makes BoolSurf report the error and leave the
+region empty (never the previous region); once the expression is fixed and the curve closed,
+the displayed region must be the new one. (Filters returned failure before: ParaView's display
+of the region then never updated again, whatever changed upstream.)
 """
 import os
 
@@ -28,7 +29,12 @@ for n in range(1, 5):  # open curves of 1..4 points: no shape yet
     Render(view)
     shown = display.GetRepresentedDataInformation().GetNumberOfCells()
     assert shown == 0, (n, shown)
-assert errors, "an open drawing is reported"
+assert not errors, "an open drawing is no error: %s" % errors
+region.Expression = "S0 &"
+Render(view)
+assert errors, "a bad expression is reported"
+assert display.GetRepresentedDataInformation().GetNumberOfCells() == 0
+region.Expression = "S0"
 curves.ClosedCurves = [1]
 Render(view)
 shown = display.GetRepresentedDataInformation().GetNumberOfCells()
