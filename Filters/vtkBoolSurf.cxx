@@ -409,8 +409,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   if (boolsurf::IsDrawing(curvesInput))
   {
     boolsurf::AddShapesWithoutCurves(labeling,
-      boolsurf::ShapesNamed(this->Operation, this->ShapeA, this->ShapeB,
-        this->Expression));
+      boolsurf::ShapesNamed(this->Operation, this->ShapeA, this->ShapeB, this->Expression));
   }
   if (this->ZeroCellMode == 1)
   {

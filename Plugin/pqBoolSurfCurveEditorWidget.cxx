@@ -447,9 +447,9 @@ void pqBoolSurfCurveEditorWidget::Detach()
     }
   }
   internal.MarkerRenderer = nullptr;
-  if (internal.Dragging)
+  if (internal.Dragging && internal.DragMoved)
   {
-    END_UNDO_SET(); // the drag's undo set, opened at the press, ends with the editing
+    END_UNDO_SET(); // the drag's undo set, opened at its first move, ends with the editing
   }
   internal.Dragging = internal.ClickPending = false;
   if (internal.View)
@@ -526,6 +526,9 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
   std::array<double, 3> pickedNormal{ { 0, 0, 0 } };
   auto pickSurface = [&](std::array<double, 3>& world)
   {
+    // The pick's selection proxies are no edit of the user's (they showed on the undo stack
+    // as "Changed 'vtkSMProxy'").
+    pqScopedUndoExclude noUndo;
     const bool picked =
       viewProxy->ConvertDisplayToPointOnSurface(position, world.data(), pickedNormal.data()) &&
       std::isfinite(world[0]) && std::isfinite(world[1]) && std::isfinite(world[2]);
@@ -570,8 +573,7 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
       internal.Current = under.Curve;
       internal.Dragging = true;
       internal.DragMoved = false;
-      BEGIN_UNDO_SET(tr("Move control point"));
-      this->Refresh();
+      this->Refresh(); // the undo set starts with the drag's first move, or at the release
       return true;
     }
     case vtkCommand::MouseMoveEvent:
@@ -587,6 +589,10 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
       if (!internal.DragMoved && moved <= ClickSlack)
       {
         return true;
+      }
+      if (!internal.DragMoved)
+      {
+        BEGIN_UNDO_SET(tr("Move control point"));
       }
       internal.DragMoved = true;
       std::array<double, 3> world;
@@ -609,14 +615,16 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
         if (!internal.DragMoved && curve && !curve->Closed && internal.Selected.Index == 0 &&
           curve->Points.size() >= 3)
         {
+          BEGIN_UNDO_SET(tr("Close curve"));
           curve->Closed = true; // a click on the first point closes the curve
           this->Push();
+          END_UNDO_SET();
         }
         else if (internal.DragMoved)
         {
           this->ReadBackExactPoints();
+          END_UNDO_SET();
         }
-        END_UNDO_SET();
         return true;
       }
       if (!internal.ClickPending)

@@ -17,8 +17,9 @@ Then: nothing reported an error or a warning; from the saved state, the drawing 
 polygon and the closed 6-point Bezier spline (the click near the polygon's marker went to the
 spline), both enclosing the small regions they were drawn around (the spline reversed), and the
 BoolSurf made from the menus gives their union; its Difference is the polygon minus the spline;
-and the markers, in the frames the view rendered before and after the zoom, have the same size
-in pixels while the surface grew on the screen.
+every edit is one named undo step (no "Changed 'vtkSMProxy'"); and the markers, in the frames
+the view rendered before and after the zoom, have the same size in pixels while the surface grew
+on the screen.
 """
 import argparse
 import json
@@ -111,6 +112,17 @@ region.Operation = "Difference"
 difference = area(region)
 expect(abs(difference - (parts["S0"] - parts["both"])) <= 1e-9 * total,
        "Difference is S0 - S0&S1: %.9f against %.9f" % (difference, parts["S0"] - parts["both"]))
+
+
+# Every edit one named undo step (an entry read "Undo Changed 'vtkSMProxy'": the pick's and the
+# read-back's helper proxies).
+with open(result + "-undo.json") as f:
+    undo = json.load(f)
+print("undo stack, newest first:", undo)
+expect(undo[:2] == ["Reverse curve", "Close curve"] and "Add control point" in undo,
+       "the last edits named: %s" % undo)
+expect(not any(label.startswith("Changed 'vtk") for label in undo),
+       "no unnamed undo step: %s" % undo)
 
 
 # The markers at two zoom levels: the frames the view rendered (saved by the setup).

@@ -5,7 +5,12 @@ A new user's start: Data/eight.ply opened and shown, seen from its broad side (t
 its two holes in the middle of the view), active in the pipeline browser. Unlike the other GUI
 tests, messages are left to ParaView's Output Messages window with its default settings: the
 recorded events check that it never opens while the user draws.
+
+For the checks afterwards, every frame the view renders is saved (a PNG, with the camera), and
+after each frame the labels of the undo stack's sets (newest first), into
+$BOOLSURF_GUI_RESULT-frames/ and $BOOLSURF_GUI_RESULT-undo.json.
 """
+import json
 import os
 import sys
 import traceback
@@ -30,13 +35,22 @@ def main():
     record_frames(view)
 
 
+def undo_labels():
+    """The labels of the undo stack's sets, newest first (read after a render, when no set is
+    being pushed: reading them from the stack's own events crashed)."""
+    from paraview import servermanager
+    builder = servermanager.vtkSMProxyManager.GetProxyManager().GetUndoStackBuilder()
+    stack = builder.GetUndoStack() if builder else None
+    if not stack:
+        return []
+    return [stack.GetUndoSetLabel(i) for i in range(stack.GetNumberOfUndoSets())]
+
+
 def record_frames(view):
-    """Saves every frame the view renders (a PNG and the camera's distance) into
-    $BOOLSURF_GUI_RESULT-frames/, for the test to measure the markers at two zoom levels."""
-    import json
     from vtkmodules.vtkIOImage import vtkPNGWriter
     from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
-    folder = os.environ["BOOLSURF_GUI_RESULT"] + "-frames"
+    result = os.environ["BOOLSURF_GUI_RESULT"]
+    folder = result + "-frames"
     os.makedirs(folder, exist_ok=True)
     window = view.GetRenderWindow()
     frames = []
@@ -54,9 +68,11 @@ def record_frames(view):
         writer.Write()
         camera = view.GetRenderer().GetActiveCamera()
         frames.append({"png": name, "distance": camera.GetDistance(),
-                       "angle": camera.GetViewAngle(), "size": list(window.GetSize())})
+                       "size": list(window.GetSize())})
         with open(os.path.join(folder, "frames.json"), "w") as f:
             json.dump(frames, f)
+        with open(result + "-undo.json", "w") as f:
+            json.dump(undo_labels(), f)
     window.AddObserver("EndEvent", saved)
 
 
