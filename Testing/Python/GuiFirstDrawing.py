@@ -17,9 +17,11 @@ Then: nothing reported an error or a warning; from the saved state, the drawing 
 polygon and the closed 6-point Bezier spline (the click near the polygon's marker went to the
 spline), both enclosing the small regions they were drawn around (the spline reversed), and the
 BoolSurf made from the menus gives their union; its Difference is the polygon minus the spline;
-every edit is one named undo step (no "Changed 'vtkSMProxy'"); and the markers, in the frames
-the view rendered before and after the zoom, have the same size in pixels while the surface grew
-on the screen.
+every edit is one named undo step (no "Changed 'vtkSMProxy'"); the markers, in the frames the
+view rendered before and after the zoom, have the same size in pixels while the surface grew on
+the screen. Last, the saved state opened in a new session (GuiFirstDrawingLoaded.xml: the
+drawing's panel, then the camera turned around the surface): its markers show from the front and
+hide once on the far side, although a state holds no normals.
 """
 import argparse
 import json
@@ -180,6 +182,25 @@ if before is not None and len(after[0]) == 4:
     ratio = sorted(after[0])[2] / float(sorted(before[0])[2])
     expect(0.8 < ratio < 1.25, "the markers keep their size in pixels: %s -> %s"
            % (before[0], after[0]))
+
+# The drawing loaded from its state file in a new session (its points come without normals):
+# the panel opened, the camera turned around; the markers now on the far side must hide.
+loaded = os.path.join(out, "loaded")
+second = subprocess.run([args.paraview, "--dr",
+                         "--script=" + os.path.join(here, "GuiFirstDrawingSetup.py"),
+                         "--test-script=" + os.path.join(here, "GuiFirstDrawingLoaded.xml"),
+                         "--test-directory=" + out, "--exit"],
+                        env=dict(env, BOOLSURF_GUI_RESULT=loaded, BOOLSURF_GUI_STATE=state),
+                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=600,
+                        universal_newlines=True)
+expect(second.returncode == 0, "the loaded-state run failed, exit %d" % second.returncode)
+with open(loaded + "-frames/frames.json") as f:
+    frames = json.load(f)
+counts = [(len(measure(frame["png"])[0]), frame["png"]) for frame in frames]
+print("yellow markers per frame of the loaded drawing:", [c for c, _ in counts])
+expect(any(c >= 4 for c, _ in counts), "the loaded drawing's markers show from the front")
+expect(counts and counts[-1][0] == 0,
+       "no marker shows through the surface once it is turned around: %s" % counts[-1:])
 
 if failures:
     print(run.stdout[-4000:])

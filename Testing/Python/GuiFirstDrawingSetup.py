@@ -6,6 +6,9 @@ its two holes in the middle of the view), active in the pipeline browser. Unlike
 tests, messages are left to ParaView's Output Messages window with its default settings: the
 recorded events check that it never opens while the user draws.
 
+With $BOOLSURF_GUI_STATE set, the state file it names is loaded instead (the second run of the
+test: markers of a loaded drawing on the far side of the surface must hide).
+
 For the checks afterwards, every frame the view renders is saved (a PNG, with the camera), and
 after each frame the labels of the undo stack's sets (newest first), into
 $BOOLSURF_GUI_RESULT-frames/ and $BOOLSURF_GUI_RESULT-undo.json.
@@ -17,9 +20,15 @@ import traceback
 
 
 def main():
-    from paraview.simple import (GetActiveViewOrCreate, LoadPlugin, PLYReader, Render,
-                                 ResetCamera, SetActiveSource, Show)
+    from paraview.simple import (GetActiveViewOrCreate, LoadPlugin, LoadState, PLYReader,
+                                 Render, ResetCamera, SetActiveSource, Show)
     LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
+    state = os.environ.get("BOOLSURF_GUI_STATE")
+    if state:
+        # The second run: the drawing as a state file gives it, without the points' normals.
+        LoadState(state)
+        record_frames(GetActiveViewOrCreate("RenderView"))
+        return
     mesh = PLYReader(registrationName="eight.ply", FileNames=[
         os.path.join(os.environ["BOOLSURF_SOURCE_DIR"], "Data", "eight.ply")])
     view = GetActiveViewOrCreate("RenderView")

@@ -363,19 +363,20 @@ TEST(GeodesicOffset, BandsAroundOpenCurvesMatchClipper)
   }
 }
 
-TEST(GeodesicOffset, SphereCapsFollowSteinersFormula)
+namespace
 {
-  // On the unit sphere the points within d of a convex region of area A and perimeter L cover
-  // 2 pi - (2 pi - A) cos d + L sin d; shrinking a cap-like region by d leaves
-  // 2 pi - (2 pi - A) cos d - L sin d.
-  const TriangleMesh mesh = MeshOf(MakeIcosphere(5));
-  const MeshTopology topology = MeshTopology::Compute(mesh);
-  CurveTracer tracer(mesh);
-  const double theta = 0.6;
+// The circle of colatitude `theta` on the unit sphere mesh, as a geodesic polygon of 48 control
+// points (the first at longitude `turn`), each in the triangle whose centroid is nearest.
+bool TraceLatitudeCircle(const TriangleMesh& mesh,
+  CurveTracer& tracer,
+  double theta,
+  double turn,
+  CurveTrace& trace)
+{
   std::vector<SurfacePoint> control;
   for (int i = 0; i < 48; ++i)
   {
-    const double a = 2.0 * Pi * i / 48;
+    const double a = 2.0 * Pi * i / 48 + turn;
     const Vec3 x{ std::sin(theta) * std::cos(a), std::sin(theta) * std::sin(a), std::cos(theta) };
     int best = 0;
     double bestDistance = 1e300;
@@ -392,8 +393,20 @@ TEST(GeodesicOffset, SphereCapsFollowSteinersFormula)
     }
     control.push_back(PointInTriangle(mesh, best, x));
   }
+  return tracer.Trace(control, CurveType::GeodesicPolygon, true, trace).Ok;
+}
+} // namespace
+
+TEST(GeodesicOffset, SphereCapsFollowSteinersFormula)
+{
+  // On the unit sphere the points within d of a convex region of area A and perimeter L cover
+  // 2 pi - (2 pi - A) cos d + L sin d; shrinking a cap-like region by d leaves
+  // 2 pi - (2 pi - A) cos d - L sin d.
+  const TriangleMesh mesh = MeshOf(MakeIcosphere(5));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  CurveTracer tracer(mesh);
   CurveTrace trace;
-  ASSERT_TRUE(tracer.Trace(control, CurveType::GeodesicPolygon, true, trace).Ok);
+  ASSERT_TRUE(TraceLatitudeCircle(mesh, tracer, 0.6, 0.0, trace));
   const TracedCurve curve = trace.Curve;
   const Labeled shape = Label(mesh, topology, { curve });
   const double area = std::min(shape.Area, 4.0 * Pi - shape.Area);
@@ -1178,28 +1191,8 @@ TEST(GeodesicOffset, RandomSphereCapsFollowSteinersFormula)
   const double theta = 0.3 + 0.6 * unit(rng), d = 0.05 + 0.25 * unit(rng);
   const double turn = 2.0 * Pi * unit(rng);
   SCOPED_TRACE("theta " + std::to_string(theta) + ", d " + std::to_string(d));
-  std::vector<SurfacePoint> control;
-  for (int i = 0; i < 48; ++i)
-  {
-    const double a = 2.0 * Pi * i / 48 + turn;
-    const Vec3 x{ std::sin(theta) * std::cos(a), std::sin(theta) * std::sin(a), std::cos(theta) };
-    int best = 0;
-    double bestDistance = 1e300;
-    for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
-    {
-      const Triangle& tri = mesh.GetTriangle(t);
-      const Vec3 c = (1.0 / 3.0) *
-        (mesh.GetPosition(tri[0]) + mesh.GetPosition(tri[1]) + mesh.GetPosition(tri[2]));
-      if (Distance(c, x) < bestDistance)
-      {
-        bestDistance = Distance(c, x);
-        best = t;
-      }
-    }
-    control.push_back(PointInTriangle(mesh, best, x));
-  }
   CurveTrace trace;
-  ASSERT_TRUE(tracer.Trace(control, CurveType::GeodesicPolygon, true, trace).Ok);
+  ASSERT_TRUE(TraceLatitudeCircle(mesh, tracer, theta, turn, trace));
   const Labeled shape = Label(mesh, topology, { trace.Curve });
   const double area = std::min(shape.Area, 4.0 * Pi - shape.Area);
   OffsetOptions options;
