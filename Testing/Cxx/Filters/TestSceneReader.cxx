@@ -353,7 +353,7 @@ TEST(SceneReader, AdversarialFilesAreNamedErrors)
     { "deep.json",
       R"({"model": "quads.ply", )" + points + R"(, "are_closed": [)" + deep + "1" +
         std::string(100000, ']') + "]}",
-      { "'are_closed'[0] is an array of 1 item(s), not a bool" } },
+      { "nesting too deep", "(in 'are_closed')", "at most 256 levels" } },
     { "opsbig.json",
       R"({"model": "quads.ply", )" + points +
         R"(, "operations": [{"a": 4294967297, "b": 1, "type": 0}]})",
