@@ -325,13 +325,14 @@ double ExactGeodesicSearch::GetFieldDistanceOnEdge(int edge, double t) const
   {
     return best;
   }
+  // Each window: straight through it, or around its nearer end and along the edge (a real
+  // path). Where the windows on both sides of a ray through a vertex end on it, rounding may
+  // leave a gap between them on the ray, and this reads it from either to within rounding.
   for (int id = this->EdgeHead[edge]; id >= 0; id = this->WindowNext[id])
   {
     const Window& w = this->Windows[id];
-    if (b >= w.B0 && b <= w.B1)
-    {
-      best = std::min(best, this->WindowDistanceAt(w, b));
-    }
+    const double end = std::min(w.B1, std::max(w.B0, b));
+    best = std::min(best, this->WindowDistanceAt(w, end) + std::abs(b - end));
   }
   return best;
 }
@@ -392,6 +393,12 @@ double ExactGeodesicSearch::GetFieldDistanceInTriangle(int face,
       if (cross >= w.B0 && cross <= w.B1)
       {
         best = std::min(best, w.Sigma + std::hypot(xx - w.Sx, xy - w.Sy));
+      }
+      else
+      {
+        // Around the window's nearer end (see GetFieldDistanceOnEdge).
+        const double end = cross < w.B0 ? w.B0 : w.B1;
+        best = std::min(best, this->WindowDistanceAt(w, end) + std::hypot(xx - end, xy));
       }
     }
   }
