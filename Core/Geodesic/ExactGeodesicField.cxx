@@ -146,13 +146,21 @@ void ExactGeodesicSearch::AddLineSource(const CanonicalPoint& a, const Canonical
       // Along the edge (parameter s in [0, 1]): the foot on the piece's line and the side.
       const double along0 = Dot(p0 - pa, u), along1 = Dot(p1 - pa, u);
       const double side0v = Dot(p0 - pa, n), side1v = Dot(p1 - pa, n);
+      // An edge normal to the piece through one of its ends (the piece's end is where the
+      // curve crosses an edge straight, or a lattice point of a regular grid) lies on the
+      // border of the piece's strip: its ends' along values are the piece's end to within
+      // rounding, whose signs then cut the edge at a meaningless point, and the next piece's
+      // strip may miss the rest (a gap the width of the edge). Values within rounding of the
+      // border count as on it, inside: the edge is then in both strips, read at its distance
+      // to the line, which is its distance to the piece to within rounding squared.
+      const double border = 1e-12 * std::max({ pieceLength, Length(p0 - pa), Length(p1 - pa) });
       for (double sign : { 1.0, -1.0 })
       {
         double lo = 0.0, hi = 1.0;
         // Keep s where f(s) = f0 + s (f1 - f0) >= 0.
-        auto keep = [&lo, &hi](double f0, double f1)
+        auto keep = [&lo, &hi, border](double f0, double f1)
         {
-          if (f0 >= 0.0 && f1 >= 0.0)
+          if ((f0 >= 0.0 && f1 >= 0.0) || (std::abs(f0) <= border && std::abs(f1) <= border))
           {
             return;
           }
