@@ -329,6 +329,16 @@ double ExactGeodesicSearch::GetFieldDistanceOnEdge(int edge, double t) const
   const double b = t * length;
   double best = std::min(this->GetFieldDistanceAtVertex(ev[0]) + b,
     this->GetFieldDistanceAtVertex(ev[1]) + (length - b));
+  const int h = mesh.GetEdgeHalfEdge(edge);
+  if (mesh.GetTwin(h) < 0)
+  {
+    // A boundary edge gets no windows (none crosses it): read it from its triangle's, which
+    // light it from the triangle's other edges.
+    std::array<double, 3> w{ 0.0, 0.0, 0.0 };
+    w[h % 3] = 1.0 - t;
+    w[(h % 3 + 1) % 3] = t;
+    best = std::min(best, this->GetFieldDistanceInTriangle(h / 3, w));
+  }
   if (this->EdgeStamp[edge] != this->CurrentStamp)
   {
     return best;
