@@ -514,9 +514,16 @@ void ExactGeodesicSearch::Propagate(int id)
     // runs exactly through c (every lattice direction of a regular grid meets vertices),
     // rounding puts xc on either side of that end; the windows on both sides of the ray then
     // may both miss c, which, flat, is no source and has nothing else to set it. This path
-    // is then straight to within rounding.
-    const Vec2 end{ xc < w.B0 ? w.B0 : w.B1, 0.0 };
-    this->Relax(c, w.Sigma + Length(end - S) + Length(C - end), FromWindow, id, face);
+    // is then straight to within rounding (elsewhere it bends at a point inside an edge, so a
+    // shorter path replaces it). An end at a vertex of the edge is left to that vertex: it
+    // relaxes c with the same length as a path through it (EmitFromVertex), the form a
+    // saddle's shadow (ShadowFan) and the strip (Backtrack) need.
+    const double end = xc < w.B0 ? w.B0 : w.B1;
+    if (end > 0.0 && end < length)
+    {
+      const Vec2 e{ end, 0.0 };
+      this->Relax(c, w.Sigma + Length(e - S) + Length(C - e), FromWindow, id, face);
+    }
   }
   // One angle, one split (Xin-Wang), in the form that only needs c's current label: when c is
   // reached sooner by a path P whose last segment crosses this same edge into this triangle
