@@ -146,13 +146,21 @@ void ExactGeodesicSearch::AddLineSource(const CanonicalPoint& a, const Canonical
       // Along the edge (parameter s in [0, 1]): the foot on the piece's line and the side.
       const double along0 = Dot(p0 - pa, u), along1 = Dot(p1 - pa, u);
       const double side0v = Dot(p0 - pa, n), side1v = Dot(p1 - pa, n);
+      // An edge normal to the piece through one of its ends (the piece's end is where the
+      // curve crosses an edge straight, or a lattice point of a regular grid) lies on the
+      // border of the piece's strip: its ends' along values are the piece's end to within
+      // rounding, whose signs then cut the edge at a meaningless point, and the next piece's
+      // strip may miss the rest (a gap the width of the edge). Values within rounding of the
+      // border count as on it, inside: the edge is then in both strips, read at its distance
+      // to the line, which is its distance to the piece to within rounding squared.
+      const double border = 1e-12 * std::max({ pieceLength, Length(p0 - pa), Length(p1 - pa) });
       for (double sign : { 1.0, -1.0 })
       {
         double lo = 0.0, hi = 1.0;
         // Keep s where f(s) = f0 + s (f1 - f0) >= 0.
-        auto keep = [&lo, &hi](double f0, double f1)
+        auto keep = [&lo, &hi, border](double f0, double f1)
         {
-          if (f0 >= 0.0 && f1 >= 0.0)
+          if ((f0 >= 0.0 && f1 >= 0.0) || (std::abs(f0) <= border && std::abs(f1) <= border))
           {
             return;
           }
@@ -321,17 +329,28 @@ double ExactGeodesicSearch::GetFieldDistanceOnEdge(int edge, double t) const
   const double b = t * length;
   double best = std::min(this->GetFieldDistanceAtVertex(ev[0]) + b,
     this->GetFieldDistanceAtVertex(ev[1]) + (length - b));
+  const int h = mesh.GetEdgeHalfEdge(edge);
+  if (mesh.GetTwin(h) < 0)
+  {
+    // A boundary edge gets no windows (none crosses it): read it from its triangle's, which
+    // light it from the triangle's other edges.
+    std::array<double, 3> w{ 0.0, 0.0, 0.0 };
+    w[h % 3] = 1.0 - t;
+    w[(h % 3 + 1) % 3] = t;
+    best = std::min(best, this->GetFieldDistanceInTriangle(h / 3, w));
+  }
   if (this->EdgeStamp[edge] != this->CurrentStamp)
   {
     return best;
   }
+  // Each window: straight through it, or around its nearer end and along the edge (a real
+  // path). Where the windows on both sides of a ray through a vertex end on it, rounding may
+  // leave a gap between them on the ray, and this reads it from either to within rounding.
   for (int id = this->EdgeHead[edge]; id >= 0; id = this->WindowNext[id])
   {
     const Window& w = this->Windows[id];
-    if (b >= w.B0 && b <= w.B1)
-    {
-      best = std::min(best, this->WindowDistanceAt(w, b));
-    }
+    const double end = std::min(w.B1, std::max(w.B0, b));
+    best = std::min(best, this->WindowDistanceAt(w, end) + std::abs(b - end));
   }
   return best;
 }
@@ -392,6 +411,12 @@ double ExactGeodesicSearch::GetFieldDistanceInTriangle(int face,
       if (cross >= w.B0 && cross <= w.B1)
       {
         best = std::min(best, w.Sigma + std::hypot(xx - w.Sx, xy - w.Sy));
+      }
+      else
+      {
+        // Around the window's nearer end (see GetFieldDistanceOnEdge).
+        const double end = cross < w.B0 ? w.B0 : w.B1;
+        best = std::min(best, this->WindowDistanceAt(w, end) + std::hypot(xx - end, xy));
       }
     }
   }

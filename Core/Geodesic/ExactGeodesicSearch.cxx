@@ -15,8 +15,9 @@ namespace
 constexpr double Pi = 3.14159265358979323846;
 constexpr double Infinity = std::numeric_limits<double>::infinity();
 
-// Vertices whose angle sum is within this of 2 pi count as saddles: flat vertices of planar
-// meshes then stay sources, so ties through them are never lost to rounding.
+// Vertices whose angle sum exceeds 2 pi by more than this are saddles: exactly flat vertices
+// (planar and subdivided meshes) are no sources, and the rays through one carry on by the
+// windows on both its sides (Propagate relaxes it from either to within rounding).
 constexpr double SaddleTolerance = 1e-9;
 
 // Windows narrower than this fraction of their edge are dropped: the rays they carry pass
@@ -507,6 +508,23 @@ void ExactGeodesicSearch::Propagate(int id)
   {
     this->Relax(c, throughC, FromWindow, id, face);
   }
+  else
+  {
+    // Out of sight: around the window's nearer end, a real path. Where the window's end ray
+    // runs exactly through c (every lattice direction of a regular grid meets vertices),
+    // rounding puts xc on either side of that end; the windows on both sides of the ray then
+    // may both miss c, which, flat, is no source and has nothing else to set it. This path
+    // is then straight to within rounding (elsewhere it bends at a point inside an edge, so a
+    // shorter path replaces it). An end at a vertex of the edge is left to that vertex: it
+    // relaxes c with the same length as a path through it (EmitFromVertex), the form a
+    // saddle's shadow (ShadowFan) and the strip (Backtrack) need.
+    const double end = xc < w.B0 ? w.B0 : w.B1;
+    if (end > 0.0 && end < length)
+    {
+      const Vec2 e{ end, 0.0 };
+      this->Relax(c, w.Sigma + Length(e - S) + Length(C - e), FromWindow, id, face);
+    }
+  }
   // One angle, one split (Xin-Wang), in the form that only needs c's current label: when c is
   // reached sooner by a path P whose last segment crosses this same edge into this triangle
   // (at x = cross), P cuts the triangle in two. A ray of this window reaching the part beyond
@@ -519,7 +537,10 @@ void ExactGeodesicSearch::Propagate(int id)
     const Window& other = this->Windows[this->Labels[c].Parent];
     if (other.Edge == w.Edge && other.Face == face)
     {
-      const double cross = CrossingOf(Vec2{ other.Sx, other.Sy }, C);
+      // Where that path crosses the edge: straight from its source, or around the nearer
+      // end of its window (above).
+      const double cross =
+        std::min(other.B1, std::max(other.B0, CrossingOf(Vec2{ other.Sx, other.Sy }, C)));
       blocked[0] = w.B0 >= cross;
       blocked[1] = w.B1 <= cross;
     }
