@@ -27,10 +27,10 @@ import argparse
 import json
 import os
 import re
-import subprocess
 import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import scratch  # noqa: E402
+from gui_player import play  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("paraview")
@@ -40,11 +40,7 @@ source_dir = os.environ.get("BOOLSURF_SOURCE_DIR", os.path.join(here, "..", ".."
 out = scratch.folder("boolsurf-first-drawing-")
 result = os.path.join(out, "result")
 env = dict(os.environ, BOOLSURF_GUI_RESULT=result, BOOLSURF_SOURCE_DIR=source_dir)
-run = subprocess.run([args.paraview, "--dr",
-                      "--script=" + os.path.join(here, "GuiFirstDrawingSetup.py"),
-                      "--test-script=" + os.path.join(here, "GuiFirstDrawing.xml"),
-                      "--test-directory=" + out, "--exit"], env=env, stdout=subprocess.PIPE,
-                     stderr=subprocess.STDOUT, timeout=600, universal_newlines=True)
+run = play(args.paraview, "GuiFirstDrawingSetup.py", "GuiFirstDrawing.xml", out, env)
 failures = []
 
 
@@ -64,23 +60,14 @@ if not os.path.exists(state):
     sys.exit("no state saved by the GUI: " + state)
 
 from paraview.simple import GetSources, LoadPlugin, LoadState  # noqa: E402
-from paraview import servermanager as sm  # noqa: E402
-from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+from proxy_area import area  # noqa: E402
 
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 LoadState(state)
 sources = {s.GetXMLName(): s for s in GetSources().values()}
 curves, region, mesh = (sources["BoolSurfSurfaceCurves"], sources["BoolSurf"],
                         sources["PLYReader"])
-
-
-def area(proxy):
-    sizes = vtkCellSizeFilter()
-    sizes.SetInputData(sm.Fetch(proxy))
-    sizes.Update()
-    a = sizes.GetOutput().GetCellData().GetArray("Area")
-    return sum(a.GetValue(i) for i in range(a.GetNumberOfTuples())) if a else 0.0
 
 
 drawing = {name: list(curves.GetPropertyValue(name)) for name in (
@@ -186,13 +173,8 @@ if before is not None and len(after[0]) == 4:
 # The drawing loaded from its state file in a new session (its points come without normals):
 # the panel opened, the camera turned around; the markers now on the far side must hide.
 loaded = os.path.join(out, "loaded")
-second = subprocess.run([args.paraview, "--dr",
-                         "--script=" + os.path.join(here, "GuiFirstDrawingSetup.py"),
-                         "--test-script=" + os.path.join(here, "GuiFirstDrawingLoaded.xml"),
-                         "--test-directory=" + out, "--exit"],
-                        env=dict(env, BOOLSURF_GUI_RESULT=loaded, BOOLSURF_GUI_STATE=state),
-                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=600,
-                        universal_newlines=True)
+second = play(args.paraview, "GuiFirstDrawingSetup.py", "GuiFirstDrawingLoaded.xml", out,
+              dict(env, BOOLSURF_GUI_RESULT=loaded, BOOLSURF_GUI_STATE=state))
 expect(second.returncode == 0, "the loaded-state run failed, exit %d" % second.returncode)
 with open(loaded + "-frames/frames.json") as f:
     frames = json.load(f)

@@ -20,8 +20,8 @@ import traceback
 
 
 def main():
-    from paraview.simple import (GetActiveViewOrCreate, LoadPlugin, LoadState, PLYReader,
-                                 Render, ResetCamera, SetActiveSource, Show)
+    from paraview import simple
+    from paraview.simple import GetActiveViewOrCreate, LoadPlugin, LoadState
     LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
     state = os.environ.get("BOOLSURF_GUI_STATE")
     if state:
@@ -29,18 +29,9 @@ def main():
         LoadState(state)
         record_frames(GetActiveViewOrCreate("RenderView"))
         return
-    mesh = PLYReader(registrationName="eight.ply", FileNames=[
-        os.path.join(os.environ["BOOLSURF_SOURCE_DIR"], "Data", "eight.ply")])
-    view = GetActiveViewOrCreate("RenderView")
-    view.OrientationAxesVisibility = 0
-    Show(mesh, view)
-    camera = view.GetActiveCamera()
-    camera.SetFocalPoint(0, 0, 0)
-    camera.SetPosition(0, 1, 0)
-    camera.SetViewUp(1, 0, 0)
-    ResetCamera(view)
-    Render(view)
-    SetActiveSource(mesh)
+    sys.path.insert(0, os.path.join(os.environ["BOOLSURF_SOURCE_DIR"], "Testing", "Python"))
+    from gui_player import open_eight_broadside
+    _, view = open_eight_broadside(simple)
     record_frames(view)
 
 

@@ -21,10 +21,10 @@ all its pixels, lit flat).
 """
 import argparse
 import os
-import subprocess
 import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import scratch  # noqa: E402
+from gui_player import play  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("paraview")
@@ -34,10 +34,7 @@ source_dir = os.environ.get("BOOLSURF_SOURCE_DIR", os.path.join(here, "..", ".."
 out = scratch.folder("boolsurf-tutorial-")
 env = dict(os.environ, BOOLSURF_GUI_RESULT=os.path.join(out, "result"),
            BOOLSURF_SOURCE_DIR=source_dir)
-run = subprocess.run([args.paraview, "--dr", "--script=" + os.path.join(here, "GuiTutorialSetup.py"),
-                      "--test-script=" + os.path.join(here, "GuiTutorial.xml"),
-                      "--test-directory=" + out, "--exit"], env=env, stdout=subprocess.PIPE,
-                     stderr=subprocess.STDOUT, timeout=600, universal_newlines=True)
+run = play(args.paraview, "GuiTutorialSetup.py", "GuiTutorial.xml", out, env)
 if run.returncode != 0:
     print(run.stdout[-6000:])
     sys.exit("the test player failed (a menu path, a widget or a check), exit %d" % run.returncode)

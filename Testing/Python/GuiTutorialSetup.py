@@ -11,27 +11,18 @@ import traceback
 
 
 def main():
-    from paraview.simple import (GetActiveViewOrCreate, LoadPlugin, PLYReader, Render,
-                                 ResetCamera, SetActiveSource, Show)
+    from paraview import simple
+    from paraview.simple import LoadPlugin
     from vtkmodules.vtkCommonCore import vtkFileOutputWindow, vtkOutputWindow
-    # Messages go to a log, not to the Output Messages dock (a curve of fewer than three
-    # points cannot be traced yet while it is drawn).
+    # Messages go to a log, not to the Output Messages dock (GuiFirstDrawing.py checks that
+    # dock while a user draws).
     log = vtkFileOutputWindow()
     log.SetFileName(os.environ["BOOLSURF_GUI_RESULT"] + ".log")
     vtkOutputWindow.SetInstance(log)
     LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
-    mesh = PLYReader(registrationName="eight.ply", FileNames=[
-        os.path.join(os.environ["BOOLSURF_SOURCE_DIR"], "Data", "eight.ply")])
-    view = GetActiveViewOrCreate("RenderView")
-    view.OrientationAxesVisibility = 0
-    Show(mesh, view)
-    camera = view.GetActiveCamera()
-    camera.SetFocalPoint(0, 0, 0)
-    camera.SetPosition(0, 1, 0)
-    camera.SetViewUp(1, 0, 0)
-    ResetCamera(view)
-    Render(view)
-    SetActiveSource(mesh)
+    sys.path.insert(0, os.path.join(os.environ["BOOLSURF_SOURCE_DIR"], "Testing", "Python"))
+    from gui_player import open_eight_broadside
+    open_eight_broadside(simple)
 
 
 try:

@@ -12,10 +12,9 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager as sm
 
-from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import torus_mesh  # noqa: E402
+from proxy_area import area  # noqa: E402
 
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 
@@ -25,14 +24,6 @@ NU, NV = 96, 48
 
 def torus_polydata():
     return torus_mesh.torus_polydata(R, r, NU, NV)
-
-
-def area(proxy):
-    sizes = vtkCellSizeFilter()
-    sizes.SetInputData(sm.Fetch(proxy))
-    sizes.Update()
-    a = sizes.GetOutput().GetCellData().GetArray("Area")
-    return sum(a.GetValue(i) for i in range(a.GetNumberOfTuples())) if a else 0.0
 
 
 torus = PVTrivialProducer()
