@@ -58,6 +58,10 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
   vtkPolyData* output = outputs[0];
   vtkPolyData* patches = outputs[1];
   std::vector<std::string> problems;
+  if (boolsurf::PassOnDrawingStart(curvesInput, outputs))
+  {
+    return true; // a drawing being started: no arrangement yet, and no message
+  }
   const boolsurf::vtkSurfaceInput* surface = this->GetSurface(surfaceInput, error);
   if (!surface)
   {

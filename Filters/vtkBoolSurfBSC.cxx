@@ -1,5 +1,7 @@
 #include "vtkBoolSurfBSC.h"
 
+#include "vtkBoolSurfControlCurves.h"
+
 #include "vtkBoolSurfBSCStage.h"
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
@@ -45,6 +47,10 @@ bool vtkBoolSurfBSC::Execute(const std::vector<vtkPolyData*>& inputs,
   vtkPolyData* controls = outputs[2];
   vtkPolyData* clipped = outputs[3];
   std::string note;
+  if (boolsurf::PassOnDrawingStart(input, outputs))
+  {
+    return true; // a drawing being started: no region yet, and no message
+  }
   // The arrangement in Core form when Surface Arrangement handed it over: selected and written
   // as the one-step filter does.
   if (const auto labeled = boolsurf::FindLabeledArrangement(input))

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfBoolean.h"
 
+#include "vtkBoolSurfControlCurves.h"
+
 #include "vtkBoolSurfArrayNames.h"
 
 #include "vtkBoolSurfBooleanStage.h"
@@ -87,6 +89,10 @@ bool vtkBoolSurfBoolean::Execute(const std::vector<vtkPolyData*>& inputs,
   vtkPolyData* controls = outputs[2];
   vtkPolyData* clipped = outputs[3];
   std::string note, warning;
+  if (boolsurf::PassOnDrawingStart(input, outputs))
+  {
+    return true; // a drawing being started: no region yet, and no message
+  }
   // The labeled arrangement in Core form when the stages upstream handed it over: selected and
   // written as the one-step filter does.
   if (const auto labeled = boolsurf::FindLabeledArrangement(input))

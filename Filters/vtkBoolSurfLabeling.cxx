@@ -1,5 +1,7 @@
 #include "vtkBoolSurfLabeling.h"
 
+#include "vtkBoolSurfControlCurves.h"
+
 #include "vtkBoolSurfArrayNames.h"
 
 #include "vtkBoolSurfHomologyOutput.h"
@@ -47,6 +49,10 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   vtkPolyData* input = inputs[0];
   vtkPolyData* output = outputs[0];
   vtkPolyData* generators = outputs[1];
+  if (boolsurf::PassOnDrawingStart(input, outputs))
+  {
+    return true; // a drawing being started: no labels yet, and no message
+  }
   boolsurf::ArrangementFields fields;
   boolsurf::LabelingResult labels;
   std::string warning;

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfOffset.h"
 
+#include "vtkBoolSurfControlCurves.h"
+
 #include "vtkBoolSurfOffsetStage.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
@@ -32,6 +34,10 @@ bool vtkBoolSurfOffset::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     error = "no control curves on input port 1";
     return false;
+  }
+  if (boolsurf::PassOnDrawingStart(inputs[1], outputs))
+  {
+    return true; // a drawing being started: nothing to offset yet, and no message
   }
   boolsurf::OffsetStageOptions options;
   options.Distance = this->Distance;

@@ -46,9 +46,9 @@ bool vtkBoolSurfTraceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
     this->Internal->Problems.push_back(error);
     return false;
   }
-  if (boolsurf::IsDrawingWithoutCurves(curvesInput))
+  if (boolsurf::PassOnDrawingStart(curvesInput, outputs))
   {
-    return false; // a drawing being started: nothing to trace yet, and no message
+    return true; // a drawing being started: nothing to trace yet, and no message
   }
   auto result = std::make_shared<boolsurf::TracedCurvesResult>();
   boolsurf::TraceOptions options;

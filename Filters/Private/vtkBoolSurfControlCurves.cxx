@@ -11,6 +11,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -218,6 +219,27 @@ bool IsDrawingWithoutCurves(vtkPolyData* curves)
   return curves->GetNumberOfCells() == 0 ||
     (complete && complete->GetNumberOfTuples() >= curves->GetNumberOfCells() &&
       complete->GetRange(0)[1] == 0);
+}
+
+//------------------------------------------------------------------------------
+bool PassOnDrawingStart(vtkPolyData* input, const std::vector<vtkPolyData*>& outputs)
+{
+  if (!IsDrawingWithoutCurves(input))
+  {
+    return false;
+  }
+  for (vtkPolyData* output : outputs)
+  {
+    if (output)
+    {
+      output->Initialize();
+      vtkNew<vtkIntArray> drawing;
+      drawing->SetName(boolsurf::names::Drawing);
+      drawing->InsertNextValue(1);
+      output->GetFieldData()->AddArray(drawing);
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -64,6 +64,12 @@ std::vector<int> ShapesNamed(int operation, int shapeA, int shapeB, const std::s
 /// message (the user is starting to draw).
 bool IsDrawingWithoutCurves(vtkPolyData* curves);
 
+/// When `input` is a drawing without a complete curve yet (IsDrawingWithoutCurves: Surface
+/// Curves' output as the user starts drawing, or what a stage passed on for it), empties
+/// `outputs` and marks each as such (field data Drawing), so that every stage down the chain
+/// does the same: no region yet and no message. Returns whether it did.
+bool PassOnDrawingStart(vtkPolyData* input, const std::vector<vtkPolyData*>& outputs);
+
 /// Reads every line and polygon cell of `curves` (vertex cells and strips are ignored with a
 /// note in `notes`). A curve marked as being drawn (cell data Complete 0, as Surface Curves
 /// writes for a curve with too few points) is left out without a message (see

@@ -6,7 +6,11 @@
 #include "FilterTestUtils.h"
 #include "Mesh/TriangleMesh.h"
 #include "vtkBoolSurf.h"
+#include "vtkBoolSurfArrangement.h"
+#include "vtkBoolSurfBoolean.h"
+#include "vtkBoolSurfLabeling.h"
 #include "vtkBoolSurfSurfaceCurves.h"
+#include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkCellData.h>
 #include <vtkCommand.h>
@@ -348,5 +352,49 @@ TEST(CurveEditorDrawing, CurvesBeingDrawnAreNoError)
     boolsurf->Update();
     EXPECT_EQ(downstream->Errors + downstream->Warnings, "") << "port " << port;
     EXPECT_NEAR(testutils::Area(boolsurf->GetOutput(0)), 0.04, 1e-12) << "port " << port;
+  }
+}
+
+// The stage chain (Trace Surface Curves, Surface Arrangement, Label Arrangement Cells, Surface
+// Boolean) below a drawing that is starting (no point yet; one click) gives no region and no
+// message at any stage: each passes the start of the drawing on; once a curve is complete, its
+// region.
+TEST(CurveEditorDrawing, StageChainIsQuietWhileADrawingStarts)
+{
+  vtkSmartPointer<vtkPolyData> surface =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(40, 1.0, 0.0, 0));
+  vtkNew<vtkBoolSurfSurfaceCurves> drawing;
+  drawing->SetInputData(surface);
+  vtkNew<vtkBoolSurfTraceCurves> trace;
+  trace->SetInputData(0, surface);
+  trace->SetInputConnection(1, drawing->GetOutputPort(0));
+  vtkNew<vtkBoolSurfArrangement> arrangement;
+  arrangement->SetInputData(0, surface);
+  arrangement->SetInputConnection(1, trace->GetOutputPort());
+  vtkNew<vtkBoolSurfLabeling> labeling;
+  labeling->SetInputConnection(arrangement->GetOutputPort(0));
+  vtkNew<vtkBoolSurfBoolean> boolean;
+  boolean->SetInputConnection(labeling->GetOutputPort(0));
+  boolean->SetOperationToExpression();
+  boolean->SetExpression("S0");
+  vtkNew<testutils::MessageCatcher> messages;
+  for (vtkAlgorithm* stage :
+    std::vector<vtkAlgorithm*>{ drawing, trace, arrangement, labeling, boolean })
+  {
+    stage->AddObserver(vtkCommand::ErrorEvent, messages);
+    stage->AddObserver(vtkCommand::WarningEvent, messages);
+  }
+  const double square[][3] = { { 0.2, 0.2, 0 }, { 0.4, 0.2, 0 }, { 0.4, 0.4, 0 }, { 0.2, 0.4, 0 } };
+  for (int clicks : { 0, 1, 4 })
+  {
+    SCOPED_TRACE(std::to_string(clicks) + " click(s)");
+    drawing->SetNumberOfPoints(clicks);
+    for (int i = 0; i < clicks; ++i)
+    {
+      drawing->SetPoint(i, square[i][0], square[i][1], square[i][2]);
+    }
+    boolean->Update();
+    EXPECT_EQ(messages->Errors + messages->Warnings, "");
+    EXPECT_NEAR(testutils::Area(boolean->GetOutput(0)), clicks == 4 ? 0.04 : 0.0, 1e-12);
   }
 }
