@@ -1,6 +1,7 @@
 // Geodesic offsets (Core/Offset): flat meshes against Clipper's round-join offsets, a sphere
 // against Steiner's formula, the identity, closings, merging and nested fronts, bands around
-// open curves and around a loop on a torus handle, and the named refusals.
+// open curves (flat-ended ones also on a sphere) and around a loop on a torus handle, and the
+// named refusals.
 #include "Arrangement/Arrangement.h"
 #include "Geodesic/CurveTracer.h"
 #include "Labeling/ArrangementLabelingInput.h"
@@ -1204,4 +1205,160 @@ TEST(GeodesicOffset, RandomSphereCapsFollowSteinersFormula)
   const double got = std::min(result.Area, 4.0 * Pi - result.Area);
   // The icosphere's own area and distances differ from the sphere's by ~ 1e-3.
   EXPECT_NEAR(got - area, expected - area, 5e-3 * (expected - area));
+}
+
+namespace
+{
+// The arc of the circle of latitude `latitude` on the unit sphere mesh from longitude 0 to
+// `longitude`, as a geodesic polygon of control points every `step` of longitude, each in the
+// triangle whose centroid is nearest.
+bool TraceLatitudeArc(const TriangleMesh& mesh,
+  CurveTracer& tracer,
+  double latitude,
+  double longitude,
+  double step,
+  CurveTrace& trace)
+{
+  const int n = static_cast<int>(std::ceil(longitude / step - 1e-9));
+  std::vector<SurfacePoint> control;
+  for (int i = 0; i <= n; ++i)
+  {
+    const double a = longitude * i / n;
+    const Vec3 x{
+      std::cos(latitude) * std::cos(a), std::cos(latitude) * std::sin(a), std::sin(latitude)
+    };
+    int best = 0;
+    double bestDistance = 1e300;
+    for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+    {
+      const Triangle& tri = mesh.GetTriangle(t);
+      const Vec3 c = (1.0 / 3.0) *
+        (mesh.GetPosition(tri[0]) + mesh.GetPosition(tri[1]) + mesh.GetPosition(tri[2]));
+      if (Distance(c, x) < bestDistance)
+      {
+        bestDistance = Distance(c, x);
+        best = t;
+      }
+    }
+    control.push_back(PointInTriangle(mesh, best, x));
+  }
+  return tracer.Trace(control, CurveType::GeodesicPolygon, false, trace).Ok;
+}
+
+Vec3 Normalized(const Vec3& v)
+{
+  return (1.0 / Length(v)) * v;
+}
+} // namespace
+
+TEST(GeodesicOffset, FlatBandEndsOnASphereFollowTheGeodesicNormals)
+{
+  // On the unit sphere the band of half-width d with flat ends around an arc of the circle of
+  // latitude phi from longitude 0 to L is the box |latitude - phi| <= d, 0 <= longitude <= L:
+  // a point's nearest point on the circle has its longitude, and the geodesic normal to the
+  // circle at an end point is the meridian there (a great circle crossing every circle of
+  // latitude at a right angle). Its area L (sin(phi + d) - sin(phi - d)) is 2 l sin d, l the
+  // arc's length: the curvature of a circle off the equator widens the band on one side as
+  // much as it narrows it on the other. Round ends add a half cap at each end, 2 pi (1 - cos d)
+  // in all. The equator is a geodesic; the circle at latitude 0.6 is not, and its trace is a
+  // geodesic polygon through points on it, which turns by 0.028 at each, under the 0.05 below
+  // which a flat end's last stretch counts as straight; its band is still 2 l sin d to third
+  // order in the turns (at each, the wedge the convex side gains is the overlap the concave
+  // side loses), and its ends are cut along the great circle through the end point normal to
+  // the last piece, 0.014 off the meridian (2e-3 at the corners), which the test checks.
+  const TriangleMesh mesh = MeshOf(MakeIcosphere(6));
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  CurveTracer tracer(mesh);
+  const double L = 1.2, d = 0.15;
+  for (double phi : { 0.0, 0.6 })
+  {
+    SCOPED_TRACE("latitude " + std::to_string(phi));
+    CurveTrace trace;
+    ASSERT_TRUE(TraceLatitudeArc(mesh, tracer, phi, L, 0.05, trace));
+    BandCurve band;
+    band.Points = trace.Curve.Points;
+    const double l = trace.Length; // on the mesh: its lengths are the sphere's less ~1e-4
+    EXPECT_NEAR(l, L * std::cos(phi), 1e-3 * l);
+    // Each end: its point (on the unit sphere) and the unit normal of the plane of the great
+    // circle through it normal to the curve's last piece (the piece's direction there).
+    struct End
+    {
+      Vec3 Point, Plane;
+    };
+    std::vector<End> ends;
+    for (int e = 0; e < 2; ++e)
+    {
+      const size_t n = band.Points.size();
+      const Vec3 p = Normalized(PositionOf(mesh, band.Points[e == 0 ? 0 : n - 1]));
+      const Vec3 q = Normalized(PositionOf(mesh, band.Points[e == 0 ? 1 : n - 2]));
+      const Vec3 along = p - q; // out of the curve
+      ends.push_back({ p, Normalized(along - Dot(along, p) * p) });
+    }
+    for (OffsetEndStyle style : { OffsetEndStyle::Flat, OffsetEndStyle::Round })
+    {
+      const bool flat = style == OffsetEndStyle::Flat;
+      SCOPED_TRACE(flat ? "flat ends" : "round ends");
+      OffsetOptions options;
+      options.Distance = d;
+      options.Ends = style;
+      const Offset result = OffsetOf(mesh, topology, {}, { band }, options);
+      ASSERT_TRUE(result.Ok) << result.Error;
+      EXPECT_EQ(result.Loops.size(), 1u);
+      const double area = std::min(result.Area, 4.0 * Pi - result.Area);
+      const double expected = 2.0 * l * std::sin(d) + (flat ? 0.0 : 2.0 * Pi * (1.0 - std::cos(d)));
+      // Flat: within 6e-6 (the mesh's lengths and distances agree to ~1e-4 with the sphere's,
+      // and l is measured on the mesh). Round: the contour's chords cut the caps' arcs by
+      // ~2e-4 (h^2 / (8 d) per piece, h ~ 0.016).
+      EXPECT_NEAR(area, expected, (flat ? 1e-4 : 1e-3) * expected);
+      if (!flat)
+      {
+        continue;
+      }
+      // Every loop point well within the latitudes of the band's sides lies on an end line: on
+      // its great circle (within 3.5e-5, about the mesh's distance to the sphere: ~h^2 / 8).
+      int onEnds = 0;
+      for (const CanonicalPoint& c : result.Loops[0])
+      {
+        const Vec3 x = Normalized(PositionOf(mesh, c));
+        if (std::abs(std::asin(x.z) - phi) > 0.8 * d)
+        {
+          continue;
+        }
+        ++onEnds;
+        double nearest = 1e300;
+        for (const End& end : ends)
+        {
+          if (Distance(x, end.Point) < 1.2 * d)
+          {
+            nearest = std::min(nearest, std::abs(Dot(x, end.Plane)));
+          }
+        }
+        EXPECT_LT(nearest, 1e-4) << "loop point (" << x.x << ", " << x.y << ", " << x.z << ")";
+      }
+      EXPECT_GT(onEnds, 20); // both end lines, 0.24 long each, cross ~30 mesh edges
+      // The four corners, d along the end's great circle from the end point to either side,
+      // are on the loop (within 6.2e-5). Off the equator they are 2e-3 off the meridian: the
+      // checks above tell the last piece's normal from the circle's.
+      for (const End& end : ends)
+      {
+        const Vec3 side = Cross(end.Plane, end.Point);
+        const Vec3 meridian = Normalized(Cross(Vec3{ 0.0, 0.0, 1.0 }, end.Point));
+        for (double s : { -1.0, 1.0 })
+        {
+          const Vec3 corner = std::cos(d) * end.Point + (s * std::sin(d)) * side;
+          double nearest = 1e300;
+          for (const CanonicalPoint& c : result.Loops[0])
+          {
+            nearest = std::min(nearest, Distance(Normalized(PositionOf(mesh, c)), corner));
+          }
+          EXPECT_LT(nearest, 2e-4)
+            << "corner (" << corner.x << ", " << corner.y << ", " << corner.z << ")";
+          if (phi > 0.0)
+          {
+            EXPECT_GT(std::abs(Dot(corner, meridian)), 1.5e-3);
+          }
+        }
+      }
+    }
+  }
 }
