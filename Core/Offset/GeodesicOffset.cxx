@@ -282,22 +282,31 @@ public:
           {
             this->OnBoundary.insert(p.Id);
           }
-          const int t = AnyTriangleOf(mesh, p);
-          if (p.Location == PointLocation::Face)
-          {
-            this->TouchedTriangles.insert(t);
-          }
-          else
-          {
-            std::vector<int> around;
-            TrianglesOf(mesh, p, around);
-            this->TouchedTriangles.insert(around.begin(), around.end());
-          }
         }
       }
       for (auto& entry : this->Crossings)
       {
         std::sort(entry.second.begin(), entry.second.end());
+      }
+      // The boundary's straight pieces in each triangle they pass (both of a mesh edge's
+      // triangles for a piece along it), to tell the sides apart inside touched triangles.
+      std::vector<int> fromTriangles, toTriangles;
+      for (const auto& loop : this->Region.Boundary)
+      {
+        for (size_t i = 0; i < loop.size(); ++i)
+        {
+          const CanonicalPoint& p = loop[i];
+          const CanonicalPoint& q = loop[(i + 1) % loop.size()];
+          TrianglesOf(mesh, p, fromTriangles);
+          TrianglesOf(mesh, q, toTriangles);
+          for (int t : fromTriangles)
+          {
+            if (std::find(toTriangles.begin(), toTriangles.end(), t) != toTriangles.end())
+            {
+              this->BoundaryPieces[t].push_back({ PositionOf(mesh, p), PositionOf(mesh, q) });
+            }
+          }
+        }
       }
       this->Closed.SetMaximumWindows(options.MaximumWindows);
       if (this->Region.TriangleSide)
@@ -436,7 +445,7 @@ public:
       { return search.GetFieldDistanceOnEdge(edge, s); });
   }
 
-  /// F - d inside triangle `face` (one the boundary does not touch) at weights w.
+  /// F - d inside triangle `face` at weights w.
   double InTriangle(int face, const std::array<double, 3>& w)
   {
     const TriangleMesh& mesh = this->Mesh;
@@ -445,15 +454,59 @@ public:
       w[2] * mesh.GetPosition(tri[2]);
     return this->Combine(x,
       this->HasClosed ? this->Closed.GetFieldDistanceInTriangle(face, w) : Infinity,
-      this->HasClosed && this->Inside(tri[0]),
+      this->HasClosed && this->InsideInTriangle(face, w, x),
       [face, &w](const ExactGeodesicSearch& search)
       { return search.GetFieldDistanceInTriangle(face, w); });
   }
 
-  /// The boundary passes through (or along) this triangle: its side is not uniform inside.
-  bool Touches(int face) const { return this->TouchedTriangles.count(face) != 0; }
-
 private:
+  // The side of the boundary at x (weights w) in triangle `face`: a corner's off the boundary,
+  // flipped at each boundary piece the segment from that corner to x crosses. An inset thinner
+  // than a triangle (|d| below the mesh size) has its corners in triangles the boundary passes
+  // too. The corner is the one x is farthest from in weight: a segment from a corner to x near
+  // one of its sides would run along that side, where the pieces end, and the crossings would
+  // be decided by rounding.
+  bool InsideInTriangle(int face, const std::array<double, 3>& w, const Vec3& x)
+  {
+    const TriangleMesh& mesh = this->Mesh;
+    const Triangle& tri = mesh.GetTriangle(face);
+    const auto it = this->BoundaryPieces.find(face);
+    if (it == this->BoundaryPieces.end())
+    {
+      return this->Inside(tri[0]);
+    }
+    int k = -1;
+    for (int j = 0; j < 3; ++j)
+    {
+      if (!this->OnBoundary.count(tri[j]) && (k < 0 || w[j] < w[k]))
+      {
+        k = j;
+      }
+    }
+    if (k < 0)
+    {
+      // Every corner on the boundary: near the level set (the only place asked about) the
+      // side is the level set's.
+      return this->Level < 0.0;
+    }
+    const Vec3 from = mesh.GetPosition(tri[k]);
+    const Vec3 normal = TriangleNormal(mesh, face);
+    auto orient = [&normal](const Vec3& a, const Vec3& b, const Vec3& c)
+    { return Dot(Cross(b - a, c - a), normal); };
+    bool inside = this->Inside(tri[k]);
+    for (const std::array<Vec3, 2>& piece : it->second)
+    {
+      const double s1 = orient(piece[0], piece[1], from), s2 = orient(piece[0], piece[1], x);
+      const double s3 = orient(from, x, piece[0]), s4 = orient(from, x, piece[1]);
+      if (((s1 < 0.0 && s2 > 0.0) || (s1 > 0.0 && s2 < 0.0)) &&
+        ((s3 < 0.0 && s4 > 0.0) || (s3 > 0.0 && s4 < 0.0)))
+      {
+        inside = !inside;
+      }
+    }
+    return inside;
+  }
+
   bool Inside(int v)
   {
     OffsetBuffers& b = this->Buffers;
@@ -494,7 +547,9 @@ private:
     const int firstCap = static_cast<int>(this->Caps.size());
     this->Caps.push_back(std::move(first));
     this->Caps.push_back(std::move(last));
-    if (head < 0 || tail < 0)
+    // Head and tail must overlap (cover the curve between them): on a curve shorter than the
+    // two stretches, a gap between them would pull the band's sides in at its middle.
+    if (head < 0 || tail < 0 || head < tail)
     {
       c.Head = curve;
       c.HeadCaps = { firstCap, firstCap + 1 };
@@ -638,13 +693,17 @@ private:
   bool HasClosed = false, HasOpen = false;
   std::unordered_map<int, std::vector<double>> Crossings; // edge -> boundary parameters
   std::unordered_set<int> OnBoundary;                     // vertices on the boundary
-  std::unordered_set<int> TouchedTriangles;
+  // Triangle -> the boundary's straight pieces in it (end positions).
+  std::unordered_map<int, std::vector<std::array<Vec3, 2>>> BoundaryPieces;
   std::vector<EndCap> Caps;
   std::vector<BandField> BandFields;
   OffsetBuffers& Buffers;
 };
 
-// The contour F = d: points on edges, one directed piece per crossed triangle, chained.
+bool DoubleCrossing(OffsetField& field, int edge, double sign, CanonicalPoint crossing[2]);
+
+// The contour F = d: points on edges, one directed piece per crossed triangle (two where the
+// level set crosses the triangle's edge opposite its odd corner twice), chained.
 class Contour
 {
 public:
@@ -682,8 +741,66 @@ public:
   std::vector<Piece> Pieces;
   std::vector<int> PieceFrom; // contour point -> piece starting there, -1 none
   std::vector<int> PieceTo;   // contour point -> piece ending there, -1 none
+  std::vector<char> Twice;    // contour point -> on an edge the level set crosses twice
 
 private:
+  int AddPoint(const CanonicalPoint& p, bool twice)
+  {
+    const int id = static_cast<int>(this->Points.size());
+    this->Points.push_back(p);
+    this->PieceFrom.push_back(-1);
+    this->PieceTo.push_back(-1);
+    this->Twice.push_back(twice ? 1 : 0);
+    return id;
+  }
+
+  // Where the odd corners of both triangles of `edge` (t's and its neighbour's, opposite it)
+  // lie on one side of the level set and the edge's ends on the other, the region of the odd
+  // corners' side may still cross the edge: a sharp corner or a neck thinner than the mesh
+  // (a flat end's corner on an irregular mesh), which the vertices' signs alone would split
+  // into two loops, its tip dropped as a sliver. The level set then crosses the edge twice:
+  // the two crossings (in the order of the edge), found on the exact field along it.
+  bool CrossedTwice(int t, int edge, bool oddNegative, std::array<int, 2>& crossings)
+  {
+    const auto it = this->TwiceAt.find(edge);
+    if (it != this->TwiceAt.end())
+    {
+      crossings = it->second;
+      return crossings[0] >= 0;
+    }
+    const TriangleMesh& mesh = this->Mesh;
+    crossings = { -1, -1 };
+    int beyond = -1;
+    for (int j = 0; j < 3; ++j)
+    {
+      if (mesh.GetEdgeId(t, j) == edge)
+      {
+        beyond = mesh.GetNeighbor(t, j);
+      }
+    }
+    if (beyond >= 0)
+    {
+      const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
+      const Triangle& other = mesh.GetTriangle(beyond);
+      int odd = -1;
+      for (int j = 0; j < 3; ++j)
+      {
+        if (other[j] != ev[0] && other[j] != ev[1])
+        {
+          odd = other[j];
+        }
+      }
+      CanonicalPoint crossing[2];
+      if (odd >= 0 && (this->Field.AtVertex(odd) < 0.0) == oddNegative &&
+        DoubleCrossing(this->Field, edge, oddNegative ? 1.0 : -1.0, crossing))
+      {
+        crossings = { this->AddPoint(crossing[0], true), this->AddPoint(crossing[1], true) };
+      }
+    }
+    this->TwiceAt.emplace(edge, crossings);
+    return crossings[0] >= 0;
+  }
+
   int PointOnEdge(int edge)
   {
     const auto it = this->EdgePoint.find(edge);
@@ -710,10 +827,7 @@ private:
     p.Location = PointLocation::Edge;
     p.Id = edge;
     p.T = std::min(1.0 - EdgeMargin, std::max(EdgeMargin, 0.5 * (lo + hi)));
-    const int id = static_cast<int>(this->Points.size());
-    this->Points.push_back(p);
-    this->PieceFrom.push_back(-1);
-    this->PieceTo.push_back(-1);
+    const int id = this->AddPoint(p, false);
     this->EdgePoint.emplace(edge, id);
     return id;
   }
@@ -747,6 +861,24 @@ private:
       std::swap(fromEdge, toEdge);
     }
     const int from = this->PointOnEdge(fromEdge), to = this->PointOnEdge(toEdge);
+    const int opposite = mesh.GetEdgeId(t, (k + 1) % 3);
+    std::array<int, 2> twice;
+    if (this->CrossedTwice(t, opposite, negative[k], twice))
+    {
+      // Each piece ends at the crossing nearer the end of `opposite` its other point's edge
+      // shares: the level set cuts that end's corner off.
+      const std::array<int, 2> ev = mesh.GetEdgeVertices(opposite);
+      const std::array<int, 2> fv = mesh.GetEdgeVertices(fromEdge);
+      const int near = fv[0] == ev[0] || fv[1] == ev[0] ? 0 : 1;
+      this->AddPiece(t, from, twice[near]);
+      this->AddPiece(t, twice[1 - near], to);
+      return;
+    }
+    this->AddPiece(t, from, to);
+  }
+
+  void AddPiece(int t, int from, int to)
+  {
     const int id = static_cast<int>(this->Pieces.size());
     this->Pieces.push_back({ t, from, to });
     this->PieceFrom[from] = id;
@@ -756,6 +888,7 @@ private:
   const TriangleMesh& Mesh;
   OffsetField& Field;
   std::unordered_map<int, int> EdgePoint;
+  std::unordered_map<int, std::array<int, 2>> TwiceAt; // edge -> its two crossings, or -1s
 };
 
 // Points on the level set inside a crossed triangle between a piece's two end points, found by
@@ -1060,7 +1193,7 @@ bool TipAcrossEdge(const TriangleMesh& mesh,
         beyond = mesh.GetNeighbor(from, j);
       }
     }
-    if (beyond < 0 || field.Touches(beyond))
+    if (beyond < 0)
     {
       break;
     }
@@ -1256,15 +1389,15 @@ bool ComputeGeodesicOffset(const TriangleMesh& mesh,
       {
         loop.push_back(a);
       }
-      const bool free = !field.Touches(piece.Triangle);
       CanonicalPoint corner;
       bool outside = false;
-      if (free &&
-        SharpCorner(mesh, field, piece.Triangle, a, contour.Points[piece.To], corner, &outside))
+      if (SharpCorner(mesh, field, piece.Triangle, a, contour.Points[piece.To], corner, &outside))
       {
         loop.push_back(corner);
       }
-      else if (free && !(outside && TipAcrossEdge(mesh, field, piece.Triangle, a, loop)) &&
+      // (A piece ending on an edge crossed twice stops short of that edge: no tip crosses it.)
+      else if (!(outside && !contour.Twice[piece.From] && !contour.Twice[piece.To] &&
+                 TipAcrossEdge(mesh, field, piece.Triangle, a, loop)) &&
         options.Resolution > 0)
       {
         RefinePiece(

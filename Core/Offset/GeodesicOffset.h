@@ -17,13 +17,17 @@
 //    curve gives two distances, to the curve without a stretch of at least d next to its last
 //    point (cut at the first point's normal) and without the one next to its first point (cut
 //    at the last point's normal), so a point beyond one end but within d of another part of
-//    the curve stays in the band. Exact for ends whose last d of curve is straight; where a
+//    the curve stays in the band (a curve shorter than the two stretches: one distance, cut at
+//    both ends). Exact for ends whose last d of curve is straight; where a
 //    corner comes closer to an end, its disk may reach up to d less that distance beyond it.
 //    Nearly closed flat curves (ends within 2d of each other) are not checked near their ends.
 // 3. Contour: the level set F = d, located on every mesh edge whose ends straddle it by
 //    bisection on the exact field along the edge, so each contour point is an exact surface
 //    point on a mesh edge; one straight piece per crossed triangle (plus `Resolution` points on
-//    the level set inside it), oriented with {F < d} on its left. A level set never crosses
+//    the level set inside it, or its sharp corner), oriented with {F < d} on its left; two
+//    where a tip or a neck thinner than the mesh crosses the edge opposite the triangle's odd
+//    corner twice (both of that edge's triangles having their odd corner on the tip's side).
+//    A level set never crosses
 //    itself, so fronts that meet (a concave corner filling, two shapes merging, a handle closing)
 //    give the true offset region's boundary. Where the contour reaches an open boundary of the
 //    surface, the loop is closed along the boundary.
