@@ -211,6 +211,23 @@ bool RefineTriangle(LocalArrangement& arr)
       return false;
     }
   }
+  // Every piece must turn counter-clockwise in the unit triangle. A curve that nearly retraces
+  // itself inside a triangle (a spike whose sides are 1e-7 apart) can still make the sweep
+  // turn a piece inside out (the fuzz target found one: the pieces then overlap and the
+  // refined surface has more area than the triangle): refused with a message instead of a
+  // silently wrong region. Rounding of the points' (u, v) leaves true slivers at most a few
+  // ulps negative, far above this bound.
+  for (const std::array<int, 3>& t : arr.Triangles)
+  {
+    const Vec2 a = arr.Points[t[0]].P, b = arr.Points[t[1]].P, c = arr.Points[t[2]].P;
+    if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) < -1e-12)
+    {
+      arr.Error = "triangle " + std::to_string(arr.Triangle) +
+        ": the refinement folds over itself where curves nearly retrace each other (within "
+        "about 1e-7 of the triangle's size); move a control point slightly";
+      return false;
+    }
+  }
   MarkClosedEdges(arr);
   arr.NumberOfNewPoints = 0;
   for (int i = 0; i < n; ++i)
