@@ -368,6 +368,26 @@ TEST(GeodesicOffset, BandsAroundOpenCurvesMatchClipper)
 
 namespace
 {
+// x placed in the mesh triangle whose centroid is nearest (a point near the surface of a fine
+// sphere mesh, as a control point).
+SurfacePoint NearestSurfacePoint(const TriangleMesh& mesh, const Vec3& x)
+{
+  int best = 0;
+  double bestDistance = 1e300;
+  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  {
+    const Triangle& tri = mesh.GetTriangle(t);
+    const Vec3 c = (1.0 / 3.0) *
+      (mesh.GetPosition(tri[0]) + mesh.GetPosition(tri[1]) + mesh.GetPosition(tri[2]));
+    if (Distance(c, x) < bestDistance)
+    {
+      bestDistance = Distance(c, x);
+      best = t;
+    }
+  }
+  return PointInTriangle(mesh, best, x);
+}
+
 // The circle of colatitude `theta` on the unit sphere mesh, as a geodesic polygon of 48 control
 // points (the first at longitude `turn`), each in the triangle whose centroid is nearest.
 bool TraceLatitudeCircle(const TriangleMesh& mesh,
@@ -381,20 +401,7 @@ bool TraceLatitudeCircle(const TriangleMesh& mesh,
   {
     const double a = 2.0 * Pi * i / 48 + turn;
     const Vec3 x{ std::sin(theta) * std::cos(a), std::sin(theta) * std::sin(a), std::cos(theta) };
-    int best = 0;
-    double bestDistance = 1e300;
-    for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
-    {
-      const Triangle& tri = mesh.GetTriangle(t);
-      const Vec3 c = (1.0 / 3.0) *
-        (mesh.GetPosition(tri[0]) + mesh.GetPosition(tri[1]) + mesh.GetPosition(tri[2]));
-      if (Distance(c, x) < bestDistance)
-      {
-        bestDistance = Distance(c, x);
-        best = t;
-      }
-    }
-    control.push_back(PointInTriangle(mesh, best, x));
+    control.push_back(NearestSurfacePoint(mesh, x));
   }
   return tracer.Trace(control, CurveType::GeodesicPolygon, true, trace).Ok;
 }
@@ -1237,20 +1244,7 @@ bool TraceLatitudeArc(const TriangleMesh& mesh,
     const Vec3 x{
       std::cos(latitude) * std::cos(a), std::cos(latitude) * std::sin(a), std::sin(latitude)
     };
-    int best = 0;
-    double bestDistance = 1e300;
-    for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
-    {
-      const Triangle& tri = mesh.GetTriangle(t);
-      const Vec3 c = (1.0 / 3.0) *
-        (mesh.GetPosition(tri[0]) + mesh.GetPosition(tri[1]) + mesh.GetPosition(tri[2]));
-      if (Distance(c, x) < bestDistance)
-      {
-        bestDistance = Distance(c, x);
-        best = t;
-      }
-    }
-    control.push_back(PointInTriangle(mesh, best, x));
+    control.push_back(NearestSurfacePoint(mesh, x));
   }
   return tracer.Trace(control, CurveType::GeodesicPolygon, false, trace).Ok;
 }
