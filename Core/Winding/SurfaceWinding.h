@@ -1,0 +1,126 @@
+// Surface winding numbers of open, closed and broken curves (Feng, Gillespie and Crane,
+// "Winding Numbers on Discrete Surfaces", SIGGRAPH 2023), computed on the refined surface of
+// the arrangement, where every curve runs along edges, so the curves are used exactly.
+//
+// w is harmonic away from the curves and jumps by +1 across each curve from its right to its
+// left. Formulation (Docs/WindingNumbers.md says why):
+//  - w = v + u per corner of the refined surface. v, the jump lift (Winding/JumpLift.h), is
+//    built locally in the mesh triangles the curves touch; it carries every jump exactly and
+//    equals W - I(W) where a closed, bounding set of curves has integer winding W (I: linear
+//    interpolation of the mesh vertices' values). u is piecewise linear on the *mesh*, the
+//    minimizer of the Dirichlet energy of v + u, so its matrix is the mesh's cotan Laplacian
+//    whatever the curves: factorized once per surface (Winding/CotanLaplacian.h), an edit of
+//    the curves is a right-hand side and a back-substitution. Closed bounding curves give
+//    u = I(W) and w = W exactly.
+//  - Open boundary: zero normal derivative (Neumann), so the boundary completes curves that
+//    end on it: a curve from boundary to boundary bounds the part on its left. The constant:
+//    w = 0 on the free part of the longest boundary loop (the labels' zero plug), and on a
+//    closed component the minimum is 0, as CellLabels are shifted.
+//  - Genus > 0: a curve that bounds nothing (a torus meridian) would give w a ramp around the
+//    handle. Its harmonic coefficients (the L2 projection of its field onto the harmonic fields
+//    of the homology generators, Winding/HarmonicBasis.h) are its homology class, integer for
+//    closed curves and fractional for broken ones. A shape whose curves sum to a class of norm
+//    >= 1/2 drops, greedily, the curves most aligned with the excess until it is below; dropped
+//    curves impose no jump and are reported as bounding nothing.
+#ifndef boolsurf_SurfaceWinding_h
+#define boolsurf_SurfaceWinding_h
+
+#include "Arrangement/Arrangement.h"
+#include "Geodesic/TracedCurve.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace boolsurf
+{
+
+class WindingSystem;
+
+struct WindingOptions
+{
+  /// Shape ids to compute, in this order; empty: every shape of the curves, ascending.
+  std::vector<int> Shapes;
+  /// Homology correction on surfaces of genus > 0 (see above).
+  bool RemoveNonBounding = true;
+  /// Level of the completed region (and of each curve's residual).
+  double Threshold = 0.5;
+  int Threads = 0; ///< 0: all hardware threads
+};
+
+struct WindingCurveReport
+{
+  int Curve = -1; ///< index into the curves
+  int ShapeId = -1, CurveId = -1;
+  /// False when the homology correction dropped the curve: it bounds nothing.
+  bool Bounds = true;
+  /// Fraction of the curve's length that does not bound the region {w >= threshold}: where
+  /// the jump across it does not straddle the threshold. 0 for a closed curve that bounds its
+  /// region exactly, about the open ends' share for a broken one, 1 for a dangling spur inside
+  /// a region or a curve that bounds nothing.
+  double Residual = 0;
+  /// Harmonic coefficients per homology generator (empty on genus 0): the class of a closed
+  /// curve, a fraction of it for a broken one.
+  std::vector<double> Homology;
+};
+
+struct WindingStageTimes
+{
+  double Factorization = 0, Lift = 0, Solve = 0, Homology = 0, Outputs = 0, Total = 0;
+};
+
+/// w of each computed shape on the refined surface of an arrangement.
+struct WindingResult
+{
+  std::vector<int> ShapeIds; ///< the computed shapes (index s below)
+  std::vector<WindingCurveReport> Curves; ///< one per curve of a computed shape, curve order
+  /// Refined triangles whose corners carry a lift of some shape, ascending (the triangles where
+  /// w may jump across an edge), and each refined triangle's index among them (-1 elsewhere).
+  std::vector<int> JumpTriangles;
+  std::vector<int> JumpSlot;
+  /// Per shape: u at every refined point (shifted by the shape's constant), and the lift at
+  /// the 3 corners of every jump triangle (3 * slot + k).
+  std::vector<std::vector<double>> PointBase;
+  std::vector<std::vector<double>> CornerLift;
+  /// Per shape: the mean of w over each arrangement cell (area-weighted).
+  std::vector<std::vector<double>> CellMean;
+  WindingStageTimes Times;
+
+  int GetNumberOfShapes() const { return static_cast<int>(this->ShapeIds.size()); }
+  /// w of shape s at corner k of refined triangle r (corners in GetTriangle's order).
+  double Corner(const RefinedTriangles& arr, const TriangleMesh& mesh, int s, int r, int k) const;
+  /// w of shape s at refined point p: the mean over its corners' sides where it jumps (1/2 on
+  /// a closed curve bounding a region of 1).
+  double Point(int s, int p) const { return this->PointMean[s][p]; }
+  /// w of shape s at the centroid of refined triangle r.
+  double Triangle(const RefinedTriangles& arr, const TriangleMesh& mesh, int s, int r) const;
+
+  std::vector<std::vector<double>> PointMean; ///< per shape per refined point
+};
+
+/// Computes winding numbers, keeping the factorized Laplacian and the harmonic fields of the
+/// last surface for the next call (an edit of the curves on the same mesh).
+class SurfaceWinding
+{
+public:
+  SurfaceWinding();
+  ~SurfaceWinding();
+
+  /// w of the shapes of `curves` on `arr`, the arrangement of exactly these curves on `mesh`.
+  /// False with a message naming the problem: no curve in a requested shape, a shape id that
+  /// no curve has, a curve of fewer than two points, a non-finite point, a mesh whose
+  /// Laplacian cannot be factorized.
+  bool Compute(const TriangleMesh& mesh,
+    const Arrangement& arr,
+    const std::vector<TracedCurve>& curves,
+    const WindingOptions& options,
+    WindingResult& out,
+    std::string& error);
+
+private:
+  std::shared_ptr<WindingSystem> System;
+};
+
+} // namespace boolsurf
+
+#endif
