@@ -25,6 +25,9 @@ packages=(
   # GMP: exact rationals behind the arrangement's crossing predicates (when their filter
   # cannot decide)
   libgmp-dev
+  # winding numbers: Eigen with CHOLMOD (SuiteSparse) for the mesh Laplacian's Cholesky
+  # factorization, OpenBLAS for its dense kernels
+  libsuitesparse-dev libopenblas0-pthread
   # SVG drawings (Map SVG onto Surface): svgpp, header-only on Boost, with libxml2 as parser
   libsvgpp-dev libxml2-dev
   # CGAL (header-only) and its number types: the exact polyhedral shortest-path oracle
