@@ -1,6 +1,7 @@
 #include "Winding/SurfaceWinding.h"
 
 #include "Mesh/MeshTopology.h"
+#include "Mesh/ParallelRange.h"
 #include "Winding/CotanLaplacian.h"
 #include "Winding/HarmonicBasis.h"
 #include "Winding/JumpLift.h"
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -28,7 +30,26 @@ double WindingResult::Corner(const RefinedTriangles& arr,
 {
   const int p = arr.GetTriangle(mesh, r)[k];
   const int slot = this->JumpSlot[r];
-  return this->PointBase[s][p] + (slot >= 0 ? this->CornerLift[s][3 * slot + k] : 0.0);
+  return this->Base(s, p) + (slot >= 0 ? this->CornerLift[s][3 * slot + k] : 0.0);
+}
+
+double WindingResult::Point(int s, int p) const
+{
+  const std::vector<std::pair<int, double>>& lifts = this->PointLift[s];
+  const auto it = std::lower_bound(lifts.begin(), lifts.end(), std::make_pair(p, -HUGE_VAL));
+  return this->Base(s, p) + (it != lifts.end() && it->first == p ? it->second : 0.0);
+}
+
+void WindingResult::WritePoints(int s, int numberOfPoints, double* values) const
+{
+  for (int p = 0; p < numberOfPoints; ++p)
+  {
+    values[p] = this->Base(s, p);
+  }
+  for (const auto& entry : this->PointLift[s])
+  {
+    values[entry.first] += entry.second;
+  }
 }
 
 double WindingResult::Triangle(const RefinedTriangles& arr,
@@ -228,6 +249,34 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
   WindingSystem& system = *this->System;
   out.Times.Factorization = Seconds(phase);
 
+  // Shapes whose curves are those of the last call keep their solved u.
+  const int nv = mesh.GetNumberOfVertices();
+  auto sameCurves = [&](const std::vector<TracedCurve>& kept, const std::vector<int>& now)
+  {
+    if (kept.size() != now.size())
+    {
+      return false;
+    }
+    for (size_t i = 0; i < now.size(); ++i)
+    {
+      const TracedCurve& a = kept[i];
+      const TracedCurve& b = curves[now[i]];
+      if (a.Closed != b.Closed || a.CurveId != b.CurveId || !(a.Points == b.Points))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  std::vector<char> reused(ns, 0);
+  for (int s = 0; s < ns; ++s)
+  {
+    const auto it = system.Solved.find(shapes[s]);
+    reused[s] = it != system.Solved.end() && options.RemoveNonBounding && it->second.Smooth &&
+      static_cast<int>(it->second.Smooth->size()) == nv &&
+      sameCurves(it->second.Curves, shapeCurves[s]);
+  }
+
   // Homology correction: each curve's harmonic coefficients, then the greedy drop per shape.
   phase = std::chrono::steady_clock::now();
   std::vector<char> dropped(curves.size(), 0);
@@ -244,6 +293,10 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
     }
     for (int s = 0; s < ns; ++s)
     {
+      if (reused[s])
+      {
+        continue; // kept only when nothing was dropped
+      }
       for (int c : shapeCurves[s])
       {
         CurveEdgeList edges;
@@ -261,8 +314,7 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
   out.Times.Homology = Seconds(phase);
 
   // Lift, solve and field per shape; then the curve edges that bound nothing at the level
-  // they sit on (spurs, overshoots) are dropped and the field computed again once.
-  const int nv = mesh.GetNumberOfVertices();
+  // they sit on (spurs, overshoots) are dropped and the field computed again.
   std::vector<std::vector<Traversal>> shapeEdges(ns);
   for (int s = 0; s < ns; ++s)
   {
@@ -276,10 +328,13 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
   }
   std::vector<JumpLift> lifts(ns);
   double liftTime = 0, solveTime = 0, fieldTime = 0;
+  std::vector<std::shared_ptr<const std::vector<double>>> columns(ns);
   auto solveField = [&]()
   {
+    // Lifts for every shape (refined ids change with any edit); loads and back-substitutions
+    // for the shapes not reused, all at once.
     auto t0 = std::chrono::steady_clock::now();
-    std::vector<double> columns(static_cast<size_t>(nv) * ns, 0.0);
+    std::vector<int> solving;
     for (int s = 0; s < ns; ++s)
     {
       CurveEdgeList edges;
@@ -288,15 +343,35 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
         edges.emplace_back(e.From, e.To);
       }
       ComputeJumpLift(mesh, arr, edges, lifts[s]);
-      AddLiftLoad(mesh, lifts[s], columns.data() + static_cast<size_t>(s) * nv);
+      if (!reused[s])
+      {
+        solving.push_back(s);
+      }
     }
-    for (double& b : columns)
+    std::vector<double> loads(static_cast<size_t>(nv) * solving.size(), 0.0);
+    for (size_t i = 0; i < solving.size(); ++i)
+    {
+      AddLiftLoad(mesh, lifts[solving[i]], loads.data() + i * nv);
+    }
+    for (double& b : loads)
     {
       b = -b;
     }
     liftTime += Seconds(t0);
     t0 = std::chrono::steady_clock::now();
-    system.Laplacian.Solve(columns, ns);
+    system.Laplacian.Solve(loads, static_cast<int>(solving.size()));
+    for (size_t i = 0; i < solving.size(); ++i)
+    {
+      columns[solving[i]] = std::make_shared<const std::vector<double>>(
+        loads.begin() + i * nv, loads.begin() + (i + 1) * nv);
+    }
+    for (int s = 0; s < ns; ++s)
+    {
+      if (reused[s])
+      {
+        columns[s] = system.Solved[shapes[s]].Smooth;
+      }
+    }
     solveTime += Seconds(t0);
     t0 = std::chrono::steady_clock::now();
     BuildField(mesh, arr, system, shapes, shapeEdges, lifts, columns, out);
@@ -313,6 +388,10 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
       bool any = false;
       for (int s = 0; s < ns; ++s)
       {
+        if (reused[s])
+        {
+          continue;
+        }
         const std::vector<double> degree =
           BoundingDegrees(mesh, arr, out, s, shapeEdges[s], lifts[s]);
         std::map<int, std::pair<double, double>> curveDegree; // curve -> (sum, length)
@@ -346,42 +425,99 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
       }
     }
   }
+  // Keep u of the shapes where nothing was dropped for the next edit.
+  for (int s = 0; s < ns; ++s)
+  {
+    size_t all = 0;
+    bool anyDropped = false;
+    for (int c : shapeCurves[s])
+    {
+      anyDropped = anyDropped || dropped[c];
+      all += arr.CurvePoints[c].size() - (curves[c].Closed ? 0 : 1);
+    }
+    if (!reused[s])
+    {
+      if (!anyDropped && all == shapeEdges[s].size() && options.RemoveNonBounding)
+      {
+        WindingSystem::SolvedShape& kept = system.Solved[shapes[s]];
+        kept.Curves.clear();
+        for (int c : shapeCurves[s])
+        {
+          kept.Curves.push_back(curves[c]);
+        }
+        kept.Smooth = columns[s];
+      }
+      else
+      {
+        system.Solved.erase(shapes[s]);
+      }
+    }
+  }
   out.Times.Lift = liftTime;
   out.Times.Solve = solveTime;
   phase = std::chrono::steady_clock::now();
   const int nr = arr.GetNumberOfTriangles();
-  // Cell means (area-weighted over each arrangement cell's refined triangles).
-  out.CellMean.assign(ns, std::vector<double>(arr.NumberOfCells, 0.0));
+  // Cell means (area-weighted over each arrangement cell's refined triangles), over fixed
+  // blocks of triangles summed in order, so the result does not depend on the threads.
   {
-    std::vector<double> cellArea(arr.NumberOfCells, 0.0);
-    for (int r = 0; r < nr; ++r)
-    {
-      const int cell = arr.CellOfTriangle(r);
-      if (cell < 0)
+    const int nc = arr.NumberOfCells;
+    constexpr int blockSize = 1 << 16;
+    const int nblocks = (nr + blockSize - 1) / blockSize;
+    std::vector<std::vector<double>> partial(nblocks);
+    ParallelBlocks(
+      options.Threads,
+      nr > blockSize,
+      nblocks,
+      [&](int first, int last)
       {
-        continue;
-      }
-      const Triangle tri = arr.GetTriangle(mesh, r);
-      const double area = 0.5 *
-        Length(Cross(arr.GetPosition(mesh, tri[1]) - arr.GetPosition(mesh, tri[0]),
-          arr.GetPosition(mesh, tri[2]) - arr.GetPosition(mesh, tri[0])));
-      cellArea[cell] += area;
-      const int slot = out.JumpSlot[r];
-      for (int s = 0; s < ns; ++s)
-      {
-        double sum = 0;
-        for (int k = 0; k < 3; ++k)
+        for (int block = first; block < last; ++block)
         {
-          sum += out.PointBase[s][tri[k]] + (slot >= 0 ? out.CornerLift[s][3 * slot + k] : 0.0);
+          std::vector<double>& sums = partial[block];
+          sums.assign(static_cast<size_t>(nc) * (ns + 1), 0.0); // area, then each shape
+          const int end = std::min(nr, (block + 1) * blockSize);
+          for (int r = block * blockSize; r < end; ++r)
+          {
+            const int cell = arr.CellOfTriangle(r);
+            if (cell < 0)
+            {
+              continue;
+            }
+            const Triangle tri = arr.GetTriangle(mesh, r);
+            const double area = 0.5 *
+              Length(Cross(arr.GetPosition(mesh, tri[1]) - arr.GetPosition(mesh, tri[0]),
+                arr.GetPosition(mesh, tri[2]) - arr.GetPosition(mesh, tri[0])));
+            double* row = sums.data() + static_cast<size_t>(cell) * (ns + 1);
+            row[0] += area;
+            const int slot = out.JumpSlot[r];
+            for (int s = 0; s < ns; ++s)
+            {
+              double sum = out.Base(s, tri[0]) + out.Base(s, tri[1]) + out.Base(s, tri[2]);
+              if (slot >= 0)
+              {
+                sum += out.CornerLift[s][3 * slot] + out.CornerLift[s][3 * slot + 1] +
+                  out.CornerLift[s][3 * slot + 2];
+              }
+              row[1 + s] += area * sum / 3.0;
+            }
+          }
         }
-        out.CellMean[s][cell] += area * sum / 3.0;
+      },
+      1);
+    std::vector<double> total(static_cast<size_t>(nc) * (ns + 1), 0.0);
+    for (const std::vector<double>& sums : partial)
+    {
+      for (size_t i = 0; i < sums.size(); ++i)
+      {
+        total[i] += sums[i];
       }
     }
-    for (int s = 0; s < ns; ++s)
+    out.CellMean.assign(ns, std::vector<double>(nc, 0.0));
+    for (int cell = 0; cell < nc; ++cell)
     {
-      for (int cell = 0; cell < arr.NumberOfCells; ++cell)
+      const double* row = total.data() + static_cast<size_t>(cell) * (ns + 1);
+      for (int s = 0; s < ns; ++s)
       {
-        out.CellMean[s][cell] = cellArea[cell] > 0 ? out.CellMean[s][cell] / cellArea[cell] : 0.0;
+        out.CellMean[s][cell] = row[0] > 0 ? row[1 + s] / row[0] : 0.0;
       }
     }
   }

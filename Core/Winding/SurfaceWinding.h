@@ -83,24 +83,48 @@ struct WindingResult
   /// w may jump across an edge), and each refined triangle's index among them (-1 elsewhere).
   std::vector<int> JumpTriangles;
   std::vector<int> JumpSlot;
-  /// Per shape: u at every refined point (shifted by the shape's constant), and the lift at
-  /// the 3 corners of every jump triangle (3 * slot + k).
-  std::vector<std::vector<double>> PointBase;
+  /// Per shape: the lift at the 3 corners of every jump triangle (3 * slot + k).
   std::vector<std::vector<double>> CornerLift;
   /// Per shape: the mean of w over each arrangement cell (area-weighted).
   std::vector<std::vector<double>> CellMean;
   WindingStageTimes Times;
 
+  /// Per shape: u at the mesh vertices (shared with the solve kept for the next edit, not
+  /// copied), u at the curve points (entry p - NumberOfMeshVertices), and the constant taken
+  /// off per block of the mesh (VertexBlock, CurvePointBlock; one block: no per-point lookup).
+  std::vector<std::shared_ptr<const std::vector<double>>> VertexSmooth;
+  std::vector<std::vector<double>> CurvePointSmooth;
+  std::vector<std::vector<double>> BlockShift;
+  std::shared_ptr<const std::vector<int>> VertexBlock;
+  std::vector<int> CurvePointBlock;
+  int NumberOfMeshVertices = 0;
+  /// Per shape: (refined point, mean of its corners' lowest and highest lift) where it has
+  /// sides, ascending by point.
+  std::vector<std::vector<std::pair<int, double>>> PointLift;
+
   int GetNumberOfShapes() const { return static_cast<int>(this->ShapeIds.size()); }
+  /// The smooth part (u less its constant) of shape s at refined point p.
+  double Base(int s, int p) const
+  {
+    const int nv = this->NumberOfMeshVertices;
+    const double u = p < nv ? (*this->VertexSmooth[s])[p] : this->CurvePointSmooth[s][p - nv];
+    const std::vector<double>& shift = this->BlockShift[s];
+    if (shift.size() == 1)
+    {
+      return u - shift[0];
+    }
+    const int b = p < nv ? (*this->VertexBlock)[p] : this->CurvePointBlock[p - nv];
+    return b >= 0 ? u - shift[b] : u;
+  }
   /// w of shape s at corner k of refined triangle r (corners in GetTriangle's order).
   double Corner(const RefinedTriangles& arr, const TriangleMesh& mesh, int s, int r, int k) const;
-  /// w of shape s at refined point p: the mean over its corners' sides where it jumps (1/2 on
-  /// a closed curve bounding a region of 1).
-  double Point(int s, int p) const { return this->PointMean[s][p]; }
+  /// w of shape s at refined point p: the middle of its jump where it has sides (1/2 on a
+  /// closed curve bounding a region of 1).
+  double Point(int s, int p) const;
+  /// Point() of every refined point (numberOfPoints values), written in one pass.
+  void WritePoints(int s, int numberOfPoints, double* values) const;
   /// w of shape s at the centroid of refined triangle r.
   double Triangle(const RefinedTriangles& arr, const TriangleMesh& mesh, int s, int r) const;
-
-  std::vector<std::vector<double>> PointMean; ///< per shape per refined point
 };
 
 /// Computes winding numbers, keeping the factorized Laplacian and the harmonic fields of the

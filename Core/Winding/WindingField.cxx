@@ -57,7 +57,7 @@ void BuildField(const TriangleMesh& mesh,
   const std::vector<int>& shapes,
   const std::vector<std::vector<Traversal>>& shapeEdges,
   const std::vector<JumpLift>& lifts,
-  const std::vector<double>& columns,
+  const std::vector<std::shared_ptr<const std::vector<double>>>& smooth,
   WindingResult& out)
 {
   const int ns = static_cast<int>(shapes.size());
@@ -65,6 +65,7 @@ void BuildField(const TriangleMesh& mesh,
   const int nr = arr.GetNumberOfTriangles();
   const int npts = arr.GetNumberOfPoints();
   out.ShapeIds = shapes;
+  out.NumberOfMeshVertices = nv;
   out.JumpTriangles.clear();
   for (int s = 0; s < ns; ++s)
   {
@@ -80,26 +81,28 @@ void BuildField(const TriangleMesh& mesh,
     out.JumpSlot[out.JumpTriangles[i]] = static_cast<int>(i);
   }
   const std::vector<int>& blocks = system.Laplacian.GetVertexBlocks();
-  auto blockOfPoint = [&](int p)
-  {
-    if (p < arr.NumberOfMeshVertices)
-    {
-      return blocks[p];
-    }
-    const SurfacePoint sp = arr.GetPointSurface(mesh, p);
-    return blocks[mesh.GetTriangle(sp.Triangle)[0]];
-  };
   const int nb = system.Laplacian.GetNumberOfBlocks();
-  out.PointBase.assign(ns, std::vector<double>(npts, 0.0));
+  out.VertexBlock = std::make_shared<const std::vector<int>>(nb > 1 ? blocks : std::vector<int>());
+  out.CurvePointBlock.assign(nb > 1 ? npts - nv : 0, -1);
+  for (int p = nv; nb > 1 && p < npts; ++p)
+  {
+    const SurfacePoint sp = arr.GetPointSurface(mesh, p);
+    out.CurvePointBlock[p - nv] = blocks[mesh.GetTriangle(sp.Triangle)[0]];
+  }
+  auto blockOfPoint = [&](int p)
+  { return nb == 1 ? 0 : (p < nv ? blocks[p] : out.CurvePointBlock[p - nv]); };
+
+  out.VertexSmooth = smooth;
+  out.CurvePointSmooth.assign(ns, std::vector<double>(npts - nv, 0.0));
+  out.BlockShift.assign(ns, std::vector<double>(std::max(1, nb), 0.0));
   out.CornerLift.assign(ns, std::vector<double>(3 * out.JumpTriangles.size(), 0.0));
-  out.PointMean.assign(ns, std::vector<double>());
+  out.PointLift.assign(ns, std::vector<std::pair<int, double>>());
   for (int s = 0; s < ns; ++s)
   {
-    const double* u = columns.data() + static_cast<size_t>(s) * nv;
-    std::vector<double>& base = out.PointBase[s];
-    for (int p = 0; p < npts; ++p)
+    const double* u = smooth[s]->data();
+    for (int p = nv; p < npts; ++p)
     {
-      base[p] = SmoothAt(mesh, arr, u, p);
+      out.CurvePointSmooth[s][p - nv] = SmoothAt(mesh, arr, u, p);
     }
     for (size_t i = 0; i < lifts[s].Triangles.size(); ++i)
     {
@@ -109,6 +112,7 @@ void BuildField(const TriangleMesh& mesh,
         out.CornerLift[s][3 * slot + k] = lifts[s].Values[i][k];
       }
     }
+    auto unshifted = [&](int p) { return p < nv ? u[p] : out.CurvePointSmooth[s][p - nv]; };
 
     // The constant per block, from the values it should make integers: those on the free
     // part of its longest boundary loop (where closed curves leave w = 0, the labels' zero
@@ -159,15 +163,18 @@ void BuildField(const TriangleMesh& mesh,
       {
         if (!curvePoints.count(v))
         {
-          onLoop[b].Add(base[v]);
+          onLoop[b].Add(u[v]);
         }
       }
     }
-    for (int v = 0; v < nv; ++v)
+    // (A fixed sample of at most ~65k vertices is plenty for a circular mean and a minimum of
+    // rounded levels, and keeps this O(1) per edit on large meshes.)
+    const int stride = std::max(1, nv / 65536);
+    for (int v = 0; v < nv; v += stride)
     {
       if (blocks[v] >= 0 && system.BlockLoop[blocks[v]] < 0)
       {
-        everywhere[blocks[v]].Add(base[v]);
+        everywhere[blocks[v]].Add(u[v]);
       }
     }
     for (size_t i = 0; i < out.JumpTriangles.size(); ++i)
@@ -176,27 +183,20 @@ void BuildField(const TriangleMesh& mesh,
       for (int k = 0; k < 3; ++k)
       {
         const int b = blockOfPoint(tri[k]);
-        if (system.BlockLoop[b] < 0)
+        if (b >= 0 && system.BlockLoop[b] < 0)
         {
-          everywhere[b].Add(base[tri[k]] + out.CornerLift[s][3 * i + k]);
+          everywhere[b].Add(unshifted(tri[k]) + out.CornerLift[s][3 * i + k]);
         }
       }
     }
-    std::vector<double> shift(nb, 0.0);
     for (int b = 0; b < nb; ++b)
     {
-      shift[b] = system.BlockLoop[b] >= 0 && !onLoop[b].Values.empty() ? onLoop[b].Constant()
-                                                                       : everywhere[b].Constant();
-    }
-    for (int p = 0; p < npts; ++p)
-    {
-      const int b = nb == 1 ? 0 : blockOfPoint(p);
-      base[p] -= b >= 0 ? shift[b] : 0.0;
+      out.BlockShift[s][b] = system.BlockLoop[b] >= 0 && !onLoop[b].Values.empty()
+        ? onLoop[b].Constant()
+        : everywhere[b].Constant();
     }
 
-    // Point values: the middle of the jump where a point has sides.
-    std::vector<double>& mean = out.PointMean[s];
-    mean = base;
+    // Point lifts: the middle of the jump where a point has sides.
     std::unordered_map<int, std::pair<double, double>> range;
     for (size_t i = 0; i < out.JumpTriangles.size(); ++i)
     {
@@ -216,10 +216,16 @@ void BuildField(const TriangleMesh& mesh,
         }
       }
     }
+    std::vector<std::pair<int, double>>& pointLift = out.PointLift[s];
     for (const auto& entry : range)
     {
-      mean[entry.first] += 0.5 * (entry.second.first + entry.second.second);
+      const double middle = 0.5 * (entry.second.first + entry.second.second);
+      if (middle != 0.0)
+      {
+        pointLift.emplace_back(entry.first, middle);
+      }
     }
+    std::sort(pointLift.begin(), pointLift.end());
   }
 }
 

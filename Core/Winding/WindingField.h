@@ -11,6 +11,8 @@
 #include "Winding/SurfaceWinding.h"
 
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <vector>
 
 namespace boolsurf
@@ -29,6 +31,16 @@ public:
   HarmonicBasis Harmonic;
   /// Per block of the Laplacian: its longest boundary loop (-1 for a closed block).
   std::vector<int> BlockLoop;
+  /// The solved smooth part u of each shape at the last call, with the curves it came from:
+  /// an edit that leaves a shape's curves as they were reuses it (u depends on the shape's
+  /// curves alone), so moving one of ten shapes is one back-substitution, not ten. Kept only
+  /// for shapes where nothing was dropped (drops name refined edges, renumbered by any edit).
+  struct SolvedShape
+  {
+    std::vector<TracedCurve> Curves;
+    std::shared_ptr<const std::vector<double>> Smooth;
+  };
+  std::map<int, SolvedShape> Solved;
 };
 
 /// One traversal of a refined edge by a curve: edge Index of curve Curve (From -> To).
@@ -40,16 +52,16 @@ struct Traversal
 /// Appends the traversals of curve c of arr (the closing edge of a closed curve included).
 void AppendTraversals(const Arrangement& arr, int c, bool closed, std::vector<Traversal>& out);
 
-/// Fills out's JumpTriangles, JumpSlot, PointBase, CornerLift and PointMean from each shape's
-/// lift and solved column u (columns: one per shape, mesh vertices each), with each block's
-/// constant (see the .cxx: integer levels on the free part of its longest boundary loop).
+/// Fills out's jump triangles, smooth parts, lifts and constants from each shape's lift and
+/// solved u (one per shape, at the mesh vertices): each block's constant makes the values on
+/// the free part of its longest boundary loop (else all of them) integer levels, lowest 0.
 void BuildField(const TriangleMesh& mesh,
   const Arrangement& arr,
   const WindingSystem& system,
   const std::vector<int>& shapes,
   const std::vector<std::vector<Traversal>>& shapeEdges,
   const std::vector<JumpLift>& lifts,
-  const std::vector<double>& columns,
+  const std::vector<std::shared_ptr<const std::vector<double>>>& smooth,
   WindingResult& out);
 
 /// How much each traversal of shape s bounds, in [0, 1], read at its edge's middle: with J the
