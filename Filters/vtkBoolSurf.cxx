@@ -33,8 +33,10 @@
 #include <vtkStaticCellLocator.h>
 #include <vtkStringArray.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
+#include <set>
 #include <tuple>
 
 vtkStandardNewMacro(vtkBoolSurf);
@@ -388,6 +390,19 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   if (!boolsurf::ParseShapeList(this->CloseBrokenShapes, "CloseBrokenShapes", closing, error))
   {
     return false;
+  }
+  if (boolsurf::IsDrawing(curvesInput))
+  {
+    // In a drawing, a shape not drawn yet has no curves to complete (no error while the user
+    // draws, as for the operation's shapes).
+    std::set<int> drawn;
+    for (const boolsurf::TracedCurve& c : in.Curves)
+    {
+      drawn.insert(c.ShapeId);
+    }
+    closing.erase(
+      std::remove_if(closing.begin(), closing.end(), [&](int id) { return drawn.count(id) == 0; }),
+      closing.end());
   }
   if (!closing.empty())
   {

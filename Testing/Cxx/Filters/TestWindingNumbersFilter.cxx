@@ -296,7 +296,12 @@ TEST(WindingNumbersFilter, OneStepCloseBrokenShapesMatchesTheChain)
   EXPECT_NE(notes->GetValue(0).find("curve 0 of shape 0"), std::string::npos) << notes->GetValue(0);
   EXPECT_NE(notes->GetValue(0).find("residual"), std::string::npos);
 
-  // A shape no curve has.
+  // A shape no curve has (in a drawing, a shape not drawn yet is nothing to complete).
+  boolean->SetCloseBrokenShapes("0 4");
+  EXPECT_EQ(testutils::ErrorsOf(boolean), "");
+  std::vector<ControlPolygon> plain = BrokenCircle({ 5, 29 });
+  plain.push_back(Square());
+  boolean->SetInputData(1, testutils::ToCurves(plain));
   boolean->SetCloseBrokenShapes("4");
   EXPECT_NE(testutils::ErrorsOf(boolean).find("shape 4"), std::string::npos);
   boolean->SetCloseBrokenShapes("zero");
