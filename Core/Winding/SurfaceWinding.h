@@ -14,8 +14,10 @@
 //    u = I(W) and w = W exactly.
 //  - Open boundary: zero normal derivative (Neumann), so the boundary completes curves that
 //    end on it: a curve from boundary to boundary bounds the part on its left. The constant:
-//    w = 0 on the free part of the longest boundary loop (the labels' zero plug), and on a
-//    closed component the minimum is 0, as CellLabels are shifted.
+//    values on the free part of the longest boundary loop (where no curve runs) are made as
+//    near integers as they can be and their lowest 0, which is the labels' zero plug for
+//    closed curves; on a closed component the same over all its values, as CellLabels are
+//    shifted to a minimum of 0.
 //  - Genus > 0: a curve that bounds nothing (a torus meridian) would give w a ramp around the
 //    handle. Its harmonic coefficients (the L2 projection of its field onto the harmonic fields
 //    of the homology generators, Winding/HarmonicBasis.h) are its homology class, integer for
@@ -41,9 +43,10 @@ struct WindingOptions
 {
   /// Shape ids to compute, in this order; empty: every shape of the curves, ascending.
   std::vector<int> Shapes;
-  /// Homology correction on surfaces of genus > 0 (see above).
+  /// Drop what bounds nothing: curves whose homology class the shape does not need (genus > 0),
+  /// and spurs and overshooting ends (see above).
   bool RemoveNonBounding = true;
-  /// Level of the completed region (and of each curve's residual).
+  /// Level of the completed region.
   double Threshold = 0.5;
   int Threads = 0; ///< 0: all hardware threads
 };
@@ -54,10 +57,10 @@ struct WindingCurveReport
   int ShapeId = -1, CurveId = -1;
   /// False when the homology correction dropped the curve: it bounds nothing.
   bool Bounds = true;
-  /// Fraction of the curve's length that does not bound the region {w >= threshold}: where
-  /// the jump across it does not straddle the threshold. 0 for a closed curve that bounds its
-  /// region exactly, about the open ends' share for a broken one, 1 for a dangling spur inside
-  /// a region or a curve that bounds nothing.
+  /// How far the curve is from bounding a region: the length-weighted share of it that does
+  /// not sit between integer levels of w (see BoundingDegrees in Winding/WindingField.h). 0
+  /// for a closed curve that bounds, small for a broken one, 1 for a dangling spur, an
+  /// overshoot's tail, an isolated arc, or a curve that bounds nothing.
   double Residual = 0;
   /// Harmonic coefficients per homology generator (empty on genus 0): the class of a closed
   /// curve, a fraction of it for a broken one.
@@ -66,13 +69,15 @@ struct WindingCurveReport
 
 struct WindingStageTimes
 {
+  /// Milliseconds: factorization (0 when kept from the last call on the same mesh), the
+  /// homology correction, lifts and loads, back-substitutions, field and outputs.
   double Factorization = 0, Lift = 0, Solve = 0, Homology = 0, Outputs = 0, Total = 0;
 };
 
 /// w of each computed shape on the refined surface of an arrangement.
 struct WindingResult
 {
-  std::vector<int> ShapeIds; ///< the computed shapes (index s below)
+  std::vector<int> ShapeIds;              ///< the computed shapes (index s below)
   std::vector<WindingCurveReport> Curves; ///< one per curve of a computed shape, curve order
   /// Refined triangles whose corners carry a lift of some shape, ascending (the triangles where
   /// w may jump across an edge), and each refined triangle's index among them (-1 elsewhere).

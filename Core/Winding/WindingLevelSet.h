@@ -46,13 +46,23 @@ struct LevelSetInput
   std::function<double(int r, int k)> CornerValue;
   /// Refined triangles where the field may jump across an edge (those touching a curve point):
   /// everywhere else the corner values of neighbours agree, so only triangles whose corners
-  /// straddle the threshold, these, and triangles on the boundary need to be looked at.
+  /// straddle the threshold, these, and triangles on the boundary need to be looked at. Both
+  /// triangles of an edge where the values jump must be listed (a jump to an unlisted
+  /// neighbour is not seen, and its segments do not close); order does not matter. Null: the
+  /// field is continuous everywhere.
   const std::vector<int>* JumpTriangles = nullptr;
 };
 
-/// The loops of the level set of `input` on the refined surface of `arr` (computed on `mesh`).
-/// False with a message naming the refined triangle when the segments do not close into loops
-/// (corner values that are not finite).
+/// The loops of the level set of `input` on the refined surface of `arr` (computed on `mesh`),
+/// in the order of the lowest refined triangle each comes from. Corner values are read in one
+/// pass over the refined surface, and again for the triangles the level set meets. Where several
+/// loops meet at one point (regions touching at a corner) they are paired in a fixed order, so the
+/// result is deterministic. Values exactly at the threshold can give regions of no width: their
+/// spikes (a point the loop leaves and comes straight back to) are removed, and a loop that
+/// collapses to fewer than three points (a region reduced to a point or a segment) is left out.
+/// False with a message naming the refined triangle when a corner value is not finite, or when
+/// the segments do not close into loops (values that jump across an edge not listed in
+/// JumpTriangles).
 bool ExtractLevelSet(const TriangleMesh& mesh,
   const Arrangement& arr,
   const LevelSetInput& input,

@@ -1,0 +1,69 @@
+// The winding stage's field from its solved parts (Winding/SurfaceWinding.h): what is kept per
+// surface, the curve edges each shape imposes a jump on, the field's assembly with its
+// constants, and how much each curve edge bounds.
+#ifndef boolsurf_WindingField_h
+#define boolsurf_WindingField_h
+
+#include "Mesh/MeshTopology.h"
+#include "Winding/CotanLaplacian.h"
+#include "Winding/HarmonicBasis.h"
+#include "Winding/JumpLift.h"
+#include "Winding/SurfaceWinding.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace boolsurf
+{
+
+/// What is kept per surface: the factorized Laplacian, the topology and, on genus > 0, the
+/// generators' harmonic fields.
+class WindingSystem
+{
+public:
+  std::uint64_t MeshSerial = 0;
+  CotanLaplacian Laplacian;
+  MeshTopology Topology;
+  int Genus = 0;
+  bool HarmonicReady = false;
+  HarmonicBasis Harmonic;
+  /// Per block of the Laplacian: its longest boundary loop (-1 for a closed block).
+  std::vector<int> BlockLoop;
+};
+
+/// One traversal of a refined edge by a curve: edge Index of curve Curve (From -> To).
+struct Traversal
+{
+  int From = -1, To = -1, Curve = -1, Index = -1;
+};
+
+/// Appends the traversals of curve c of arr (the closing edge of a closed curve included).
+void AppendTraversals(const Arrangement& arr, int c, bool closed, std::vector<Traversal>& out);
+
+/// Fills out's JumpTriangles, JumpSlot, PointBase, CornerLift and PointMean from each shape's
+/// lift and solved column u (columns: one per shape, mesh vertices each), with each block's
+/// constant (see the .cxx: integer levels on the free part of its longest boundary loop).
+void BuildField(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const WindingSystem& system,
+  const std::vector<int>& shapes,
+  const std::vector<std::vector<Traversal>>& shapeEdges,
+  const std::vector<JumpLift>& lifts,
+  const std::vector<double>& columns,
+  WindingResult& out);
+
+/// How much each traversal of shape s bounds, in [0, 1], read at its edge's middle: with J the
+/// net jump of the shape across the edge and L, R the field on its left and right, a curve
+/// that bounds has its sides at integer levels R and R + J, while a spur, an overshoot or an
+/// isolated arc sits at the middle of a level, (L + R - J) / 2 half-way between integers. The
+/// degree is 1 - 2 * distance((L + R - J) / 2, integers).
+std::vector<double> BoundingDegrees(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const WindingResult& field,
+  int s,
+  const std::vector<Traversal>& edges,
+  const JumpLift& lift);
+
+} // namespace boolsurf
+
+#endif
