@@ -44,9 +44,9 @@
  * vtkBoolSurf as its curves gives exact Booleans of the completed shapes.
  *
  * Output port 3, "Curves": the input curves traced (as vtkBoolSurfTraceCurves writes them), with
- * cell data `WindingResidual` (the fraction of the curve's length that does not bound the
- * region {w >= Threshold}: 0 for a closed curve that bounds it, about the gaps' share for a
- * broken one; -1 for a shape not computed) and `BoundsRegion` (1, or 0 for a curve that bounds
+ * cell data `WindingResidual` (how far the curve is from bounding a region: the
+ * length-weighted share of it that does not sit between integer levels of w; 0 for a closed
+ * curve that bounds, small for a broken one, 1 for a spur; -1 for a shape not computed) and `BoundsRegion` (1, or 0 for a curve that bounds
  * nothing; -1 for a shape not computed), and field data `NonBoundingCurves` (ShapeId, CurveId
  * of each curve that bounds nothing; absent when there is none). Each such curve is also named
  * in a warning.
@@ -87,15 +87,16 @@ public:
   ///@}
 
   ///@{
-  /// The level of the completed region {w >= Threshold} and of the curves' residuals
+  /// The level of the completed region {w >= Threshold} and of the completed curves
   /// (default 0.5).
   vtkSetMacro(Threshold, double);
   vtkGetMacro(Threshold, double);
   ///@}
 
   ///@{
-  /// On surfaces of genus > 0, drop the curves that bound nothing (a torus meridian), which
-  /// would otherwise give w a ramp around the handle (default on).
+  /// Drop what bounds nothing (default on): on surfaces of genus > 0 the curves whose homology
+  /// class the shape does not need (a torus meridian, which would otherwise give w a ramp
+  /// around the handle), and spurs and overshooting ends.
   vtkSetMacro(RemoveNonBounding, bool);
   vtkGetMacro(RemoveNonBounding, bool);
   vtkBooleanMacro(RemoveNonBounding, bool);

@@ -66,8 +66,8 @@ constexpr const char* WindingNumber = "WindingNumber";
 constexpr const char* CellWindingNumber = "CellWindingNumber";
 /// Field data (int): the computed shapes' ids, in the order of the components above.
 constexpr const char* WindingShapeIds = "WindingShapeIds";
-/// Traced curves (cell data, double): the fraction of each curve's length that does not bound
-/// the region {w >= threshold}; -1 for a curve of a shape not computed.
+/// Traced curves (cell data, double): how far each curve is from bounding a region (0 bounds,
+/// 1 bounds nothing; WindingCurveReport::Residual); -1 for a curve of a shape not computed.
 constexpr const char* WindingResidual = "WindingResidual";
 /// Traced curves (cell data, int): 1 a curve that bounds (takes part in w), 0 one the homology
 /// correction dropped (it bounds nothing), -1 a curve of a shape not computed.
