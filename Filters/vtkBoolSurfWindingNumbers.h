@@ -46,10 +46,10 @@
  * Output port 3, "Curves": the input curves traced (as vtkBoolSurfTraceCurves writes them), with
  * cell data `WindingResidual` (how far the curve is from bounding a region: the
  * length-weighted share of it that does not sit between integer levels of w; 0 for a closed
- * curve that bounds, small for a broken one, 1 for a spur; -1 for a shape not computed) and `BoundsRegion` (1, or 0 for a curve that bounds
- * nothing; -1 for a shape not computed), and field data `NonBoundingCurves` (ShapeId, CurveId
- * of each curve that bounds nothing; absent when there is none). Each such curve is also named
- * in a warning.
+ * curve that bounds, small for a broken one, 1 for a spur; -1 for a shape not computed) and
+ * `BoundsRegion` (1, or 0 for a curve that bounds nothing; -1 for a shape not computed), and
+ * field data `NonBoundingCurves` (ShapeId, CurveId of each curve that bounds nothing; absent
+ * when there is none). Each such curve is also named in a warning.
  *
  * Errors (empty outputs) name the problem: no curves, a Shapes entry that is not a shape id or
  * that no curve has, a curve that cannot be read or traced (non-finite points, too few points:
