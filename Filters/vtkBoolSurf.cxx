@@ -15,6 +15,7 @@
 #include "vtkBoolSurfResolveStage.h"
 #include "vtkBoolSurfSelectionOutput.h"
 #include "vtkBoolSurfTraceStage.h"
+#include "vtkBoolSurfWindingStage.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -26,13 +27,16 @@
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkStringArray.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
+#include <set>
 #include <tuple>
 
 vtkStandardNewMacro(vtkBoolSurf);
@@ -72,6 +76,10 @@ struct vtkBoolSurf::Internals
   std::vector<std::string> ResolutionNotes;
   /// The offset step's statistics (OffsetShape >= 0), for the region's field data.
   vtkSmartPointer<vtkDataArray> OffsetStatistics;
+  /// CloseBrokenShapes: the winding numbers' factorization of the surface (kept for edits), and
+  /// one note per replaced curve with its residual.
+  boolsurf::SurfaceWinding Winding;
+  std::vector<std::string> WindingNotes;
 
   /// What the labeled arrangement was computed from (the inputs by identity and time, and the
   /// tracing and labeling properties).
@@ -91,9 +99,16 @@ struct vtkBoolSurf::Internals
     double ResolveOffset = 0;
     int OffsetShape = -1;
     double OffsetDistance = 0;
+    std::string CloseBrokenShapes;
+    double WindingThreshold = 0.5;
 
     bool operator==(const Key& o) const
     {
+      if (this->CloseBrokenShapes != o.CloseBrokenShapes ||
+        (!this->CloseBrokenShapes.empty() && !(this->WindingThreshold == o.WindingThreshold)))
+      {
+        return false;
+      }
       if (this->ResolveStrategy != o.ResolveStrategy || this->ResolveOffset != o.ResolveOffset ||
         this->OffsetShape != o.OffsetShape ||
         (this->OffsetShape >= 0 && !(this->OffsetDistance == o.OffsetDistance)))
@@ -174,7 +189,9 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
     this->ResolveStrategy,
     this->ResolveOffset,
     this->OffsetShape,
-    this->OffsetDistance };
+    this->OffsetDistance,
+    this->CloseBrokenShapes,
+    this->WindingThreshold };
   const bool reuse = in.HasLabels && key == in.LabeledKey;
   if (!reuse)
   {
@@ -367,6 +384,51 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     error = "Cannot trace the curves:" + boolsurf::JoinLines(problems);
     return false;
   }
+  // Optional step: broken shapes replaced by their completed curves.
+  in.WindingNotes.clear();
+  std::vector<int> closing;
+  if (!boolsurf::ParseShapeList(this->CloseBrokenShapes, "CloseBrokenShapes", closing, error))
+  {
+    return false;
+  }
+  if (boolsurf::IsDrawing(curvesInput))
+  {
+    // In a drawing, a shape not drawn yet has no curves to complete (no error while the user
+    // draws, as for the operation's shapes).
+    std::set<int> drawn;
+    for (const boolsurf::TracedCurve& c : in.Curves)
+    {
+      drawn.insert(c.ShapeId);
+    }
+    closing.erase(
+      std::remove_if(closing.begin(), closing.end(), [&](int id) { return drawn.count(id) == 0; }),
+      closing.end());
+  }
+  if (!closing.empty())
+  {
+    this->UpdateProgress(0.2);
+    boolsurf::CloseShapesOptions close;
+    close.Shapes = closing;
+    close.Threshold = this->WindingThreshold;
+    close.Threads = this->NumberOfThreads;
+    std::vector<std::string> warnings;
+    if (!boolsurf::CloseBrokenShapes(in.Winding,
+          *surface.Mesh,
+          close,
+          in.Curves,
+          in.Sources,
+          in.WindingNotes,
+          warnings,
+          error))
+    {
+      return false;
+    }
+    this->ReportWarnings(warnings);
+    for (const std::string& note : in.WindingNotes)
+    {
+      vtkOutputWindowDisplayText((note + "\n").c_str());
+    }
+  }
   in.TraceTime = Milliseconds(traceStart, Clock::now());
   this->UpdateProgress(0.3);
   if (this->CheckAbort())
@@ -468,6 +530,16 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
   {
     fd->AddArray(in.OffsetStatistics);
   }
+  if (!in.WindingNotes.empty())
+  {
+    vtkNew<vtkStringArray> notes;
+    notes->SetName(boolsurf::names::WindingNotes);
+    for (const std::string& n : in.WindingNotes)
+    {
+      notes->InsertNextValue(n);
+    }
+    fd->AddArray(notes);
+  }
   if (!in.ResolutionNotes.empty())
   {
     vtkNew<vtkStringArray> notes;
@@ -537,4 +609,6 @@ void vtkBoolSurf::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
   os << indent << "OffsetShape: " << this->OffsetShape
      << " OffsetDistance: " << this->OffsetDistance << "\n";
+  os << indent << "CloseBrokenShapes: " << this->CloseBrokenShapes
+     << " WindingThreshold: " << this->WindingThreshold << "\n";
 }

@@ -188,6 +188,20 @@ public:
   ///@}
 
   ///@{
+  /// Optional step after tracing: the curves of the shapes listed in CloseBrokenShapes
+  /// (ShapeIds separated by spaces or commas; empty, the default: none) are replaced by their
+  /// completed curves, the level set {w = WindingThreshold} (default 0.5) of their surface
+  /// winding number, as vtkBoolSurfWindingNumbers computes them, before the arrangement: broken
+  /// shapes (gaps, open ends) get exact Booleans with the other shapes. The region's field data
+  /// `WindingNotes` names each replaced curve with its residual (also given as text messages);
+  /// a curve that bounds nothing is named in a warning.
+  vtkSetStdStringFromCharMacro(CloseBrokenShapes);
+  vtkGetCharFromStdStringMacro(CloseBrokenShapes);
+  vtkSetMacro(WindingThreshold, double);
+  vtkGetMacro(WindingThreshold, double);
+  ///@}
+
+  ///@{
   /// Whether ports 2 and 3 are computed (default on): the result's boundary and the clipped
   /// open curves as control points of the input curves (see Docs/VectorOutput.md). Off leaves
   /// them empty and saves their cost (geodesic de Casteljau splits of Bezier curves).
@@ -229,6 +243,8 @@ protected:
   double ResolveOffset = 0;
   int OffsetShape = -1;
   double OffsetDistance = 0;
+  std::string CloseBrokenShapes;
+  double WindingThreshold = 0.5;
   vtkTypeBool ComputeControlCurves = 1;
 
 private:

@@ -29,6 +29,9 @@ constexpr const char* IncompleteCurves = "IncompleteCurves";
 /// Surface Curves (field data, both ports, value 1): the curves are a drawing, which may be
 /// empty or hold only curves being drawn while the user starts it (no region, no message).
 constexpr const char* Drawing = "Drawing";
+/// Control curves (cell data, string, optional): the name of each curve's shape, carried by
+/// Winding Numbers into component names and its completed curves; absent: shapes are unnamed.
+constexpr const char* ShapeName = "ShapeName";
 
 // The arrangement: refined surface cell data, patches, field data.
 constexpr const char* ArrangementCell = "ArrangementCell";
@@ -53,6 +56,30 @@ constexpr const char* CellLabels = "CellLabels";
 constexpr const char* ShapeConsistent = "ShapeConsistent";
 constexpr const char* Expression = "Expression";
 constexpr const char* Direction = "Direction";
+
+// Winding numbers (Winding Numbers, and BoolSurf's CloseBrokenShapes).
+/// Point and cell data (double, one component per computed shape, named by its ShapeName or
+/// "Shape <id>"): w at each refined point, and at each refined triangle's centroid.
+constexpr const char* WindingNumber = "WindingNumber";
+/// Field data (double, arrangement cells x computed shapes): the area-weighted mean of w over
+/// each arrangement cell.
+constexpr const char* CellWindingNumber = "CellWindingNumber";
+/// Field data (int): the computed shapes' ids, in the order of the components above.
+constexpr const char* WindingShapeIds = "WindingShapeIds";
+/// Traced curves (cell data, double): how far each curve is from bounding a region (0 bounds,
+/// 1 bounds nothing; WindingCurveReport::Residual); -1 for a curve of a shape not computed.
+constexpr const char* WindingResidual = "WindingResidual";
+/// Traced curves (cell data, int): 1 a curve that bounds (takes part in w), 0 one the homology
+/// correction dropped (it bounds nothing), -1 a curve of a shape not computed.
+constexpr const char* BoundsRegion = "BoundsRegion";
+/// Field data (int, 2 components ShapeId, CurveId): the curves that bound nothing; absent when
+/// every curve bounds.
+constexpr const char* NonBoundingCurves = "NonBoundingCurves";
+/// Field data (double, 9 components): milliseconds of the Winding Numbers filter's stages
+/// (Trace, Arrangement, Factorization, Lift, Solve, Homology, LevelSet, Outputs, Total).
+constexpr const char* WindingTimes = "WindingTimes";
+/// Field data (string): one line per curve replaced by a completed curve, with its residual.
+constexpr const char* WindingNotes = "WindingNotes";
 } // namespace names
 } // namespace boolsurf
 

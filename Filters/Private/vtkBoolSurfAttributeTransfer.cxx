@@ -23,6 +23,7 @@ bool IsBoolSurfArray(const char* name)
     boolsurf::names::ArrangementCell,
     boolsurf::names::SourceTriangle,
     boolsurf::names::Region,
+    boolsurf::names::WindingNumber,
     "Labels",
     "ComponentId",
     "BoundaryLoopId",

@@ -8,6 +8,7 @@
 #include "Offset/OffsetRegionOfCells.h"
 #include "Selection/BooleanExpression.h"
 #include "vtkBoolSurfBooleanStage.h"
+#include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfTraceStage.h"
 
 #include <vtkCellArray.h>
@@ -32,75 +33,6 @@ namespace
 {
 
 using Clock = std::chrono::steady_clock;
-
-// The control-curve form every BoolSurf filter reads: one polyline per curve (closed ones
-// repeat their first point id), exact surface points, ShapeId, CurveType, Closed, OffsetCurve.
-class ControlCurveWriter
-{
-public:
-  explicit ControlCurveWriter(const TriangleMesh& mesh)
-    : Mesh(mesh)
-  {
-    this->Points->SetDataTypeToDouble();
-    this->TriangleId->SetName(names::TriangleId);
-    this->Barycentric->SetName(names::Barycentric);
-    this->Barycentric->SetNumberOfComponents(2);
-    this->Shape->SetName(names::ShapeId);
-    this->Type->SetName(names::CurveType);
-    this->Closed->SetName(names::Closed);
-    this->Offset->SetName("OffsetCurve");
-  }
-
-  void Add(const std::vector<SurfacePoint>& points, int shape, int type, bool closed, int offset)
-  {
-    const vtkIdType first = this->Points->GetNumberOfPoints();
-    for (const SurfacePoint& p : points)
-    {
-      const Vec3 x = this->Mesh.Evaluate(p.Triangle, p.U, p.V);
-      this->Points->InsertNextPoint(x.x, x.y, x.z);
-      this->TriangleId->InsertNextValue(p.Triangle);
-      this->Barycentric->InsertNextTuple2(p.U, p.V);
-    }
-    const vtkIdType n = static_cast<vtkIdType>(points.size());
-    const bool repeat = closed && n > 1;
-    this->Lines->InsertNextCell(n + (repeat ? 1 : 0));
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      this->Lines->InsertCellPoint(first + i);
-    }
-    if (repeat)
-    {
-      this->Lines->InsertCellPoint(first);
-    }
-    this->Shape->InsertNextValue(shape);
-    this->Type->InsertNextValue(type);
-    this->Closed->InsertNextValue(closed ? 1 : 0);
-    this->Offset->InsertNextValue(offset);
-  }
-
-  void Write(vtkPolyData* output)
-  {
-    output->SetPoints(this->Points);
-    output->SetLines(this->Lines);
-    output->GetPointData()->AddArray(this->TriangleId);
-    output->GetPointData()->AddArray(this->Barycentric);
-    for (vtkDataArray* a : { static_cast<vtkDataArray*>(this->Shape),
-           static_cast<vtkDataArray*>(this->Type),
-           static_cast<vtkDataArray*>(this->Closed),
-           static_cast<vtkDataArray*>(this->Offset) })
-    {
-      output->GetCellData()->AddArray(a);
-    }
-  }
-
-private:
-  const TriangleMesh& Mesh;
-  vtkNew<vtkPoints> Points;
-  vtkNew<vtkCellArray> Lines;
-  vtkNew<vtkIdTypeArray> TriangleId;
-  vtkNew<vtkDoubleArray> Barycentric;
-  vtkNew<vtkIntArray> Shape, Type, Closed, Offset;
-};
 
 // An offset loop as control points: each point written in a triangle it shares with the next
 // one, so the geodesic polygon through them is the loop itself.
@@ -314,7 +246,7 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
     notes.push_back("OutputShapeId " + std::to_string(outputShape) +
       " is also an input shape: the offset loops join that shape's curves");
   }
-  ControlCurveWriter writer(mesh);
+  ControlCurveWriter writer(mesh, "OffsetCurve");
   if (options.KeepInputCurves)
   {
     for (const ControlCurve& c : controls)
