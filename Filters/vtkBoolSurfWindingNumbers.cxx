@@ -374,8 +374,12 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
       nonBounding->InsertNextTypedTuple(
         std::array<int, 2>{ report.ShapeId, report.CurveId }.data());
       warnings.push_back(boolsurf::DescribeWindingCurve(report) +
-        " bounds nothing (it winds around a handle of the surface and the shape's other curves "
-        "do not bound it with it): it takes no part in the shape's winding number");
+        (report.AroundHandle
+            ? " bounds nothing (it winds around a handle of the surface and the shape's other "
+              "curves do not bound it with it)"
+            : " bounds nothing (a spur, an overshooting piece or an isolated arc: w on its two "
+              "sides sits half-way between whole levels)") +
+        ": it takes no part in the shape's winding number");
     }
   }
   traced->GetCellData()->AddArray(residual);

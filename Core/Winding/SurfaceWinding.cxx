@@ -555,6 +555,7 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
         }
       }
       report.Bounds = anyKept;
+      report.AroundHandle = dropped[c] != 0;
       report.Residual = total > 0 ? std::min(1.0, std::max(0.0, 1.0 - bound / total)) : 0.0;
       out.Curves.push_back(report);
     }

@@ -55,8 +55,11 @@ struct WindingCurveReport
 {
   int Curve = -1; ///< index into the curves
   int ShapeId = -1, CurveId = -1;
-  /// False when the homology correction dropped the curve: it bounds nothing.
+  /// False when the curve was dropped as bounding nothing: by the homology correction
+  /// (AroundHandle: its class is not bounded by the shape's other curves) or, as a whole, by
+  /// its levels (a spur, an overshooting piece, an isolated arc).
   bool Bounds = true;
+  bool AroundHandle = false;
   /// How far the curve is from bounding a region: the length-weighted share of it that does
   /// not sit between integer levels of w (see BoundingDegrees in Winding/WindingField.h). 0
   /// for a closed curve that bounds, small for a broken one, 1 for a dangling spur, an

@@ -217,8 +217,10 @@ bool CloseBrokenShapes(SurfaceWinding& winding,
     if (!report.Bounds)
     {
       warnings.push_back("CloseBrokenShapes: " + DescribeWindingCurve(report) +
-        " bounds nothing (its homology class is not bounded by the shape's other curves): it "
-        "takes no part in the completed shape");
+        (report.AroundHandle
+            ? " bounds nothing (its homology class is not bounded by the shape's other curves)"
+            : " bounds nothing (a spur, an overshooting piece or an isolated arc)") +
+        ": it takes no part in the completed shape");
     }
   }
   std::vector<int> loopCount(result.ShapeIds.size(), 0);
