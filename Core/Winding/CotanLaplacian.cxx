@@ -4,6 +4,7 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -117,11 +118,11 @@ bool CotanLaplacian::Factorize(const TriangleMesh& mesh, std::string& error)
     pinned[v] = 1;
   }
 
-  // Lower triangle of the matrix: per triangle, the cotan weight of each edge. Pinned and
-  // loose vertices keep only a unit diagonal.
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(static_cast<size_t>(nt) * 6 + nv);
-  std::vector<double> diagonal(nv, 0.0);
+  // Lower triangle of the matrix, column by column: the cotan weight of each mesh edge summed
+  // over its triangles, then the diagonals. Pinned and loose vertices keep only a unit
+  // diagonal. (Built in place: triplets took 0.5 s on igea_1m.)
+  const int ne = mesh.GetNumberOfEdges();
+  std::vector<double> edgeWeight(ne, 0.0), diagonal(nv, 0.0);
   for (int t = 0; t < nt; ++t)
   {
     const TriangleGradients g = ComputeTriangleGradients(mesh, t);
@@ -132,18 +133,29 @@ bool CotanLaplacian::Factorize(const TriangleMesh& mesh, std::string& error)
     const Triangle& tri = mesh.GetTriangle(t);
     for (int k = 0; k < 3; ++k)
     {
-      const int i = tri[k], j = tri[(k + 1) % 3];
-      const double lij = g.Area * Dot(g.Hat[k], g.Hat[(k + 1) % 3]);
-      if (!pinned[i])
-      {
-        diagonal[i] += g.Area * Dot(g.Hat[k], g.Hat[k]);
-      }
-      if (!pinned[i] && !pinned[j])
-      {
-        entries.emplace_back(std::max(i, j), std::min(i, j), lij);
-      }
+      edgeWeight[mesh.GetEdgeId(t, k)] += g.Area * Dot(g.Hat[k], g.Hat[(k + 1) % 3]);
+      diagonal[tri[k]] += g.Area * Dot(g.Hat[k], g.Hat[k]);
     }
   }
+  Eigen::SparseMatrix<double> matrix(nv, nv);
+  std::vector<int> count(nv + 1, 0);
+  for (int e = 0; e < ne; ++e)
+  {
+    const std::array<int, 2> ends = mesh.GetEdgeVertices(e);
+    if (edgeWeight[e] != 0.0 && !pinned[ends[0]] && !pinned[ends[1]])
+    {
+      ++count[std::min(ends[0], ends[1]) + 1];
+    }
+  }
+  for (int v = 0; v < nv; ++v)
+  {
+    count[v + 1] += count[v] + 1; // + the diagonal
+  }
+  matrix.resizeNonZeros(count[nv]);
+  int* outer = matrix.outerIndexPtr();
+  int* inner = matrix.innerIndexPtr();
+  double* values = matrix.valuePtr();
+  std::vector<int> fill(count.begin(), count.end() - 1);
   for (int v = 0; v < nv; ++v)
   {
     if (!std::isfinite(diagonal[v]))
@@ -152,12 +164,37 @@ bool CotanLaplacian::Factorize(const TriangleMesh& mesh, std::string& error)
         " (non-finite positions)";
       return false;
     }
-    entries.emplace_back(v, v, pinned[v] || !used[v] || diagonal[v] == 0.0 ? 1.0 : diagonal[v]);
+    outer[v] = count[v];
+    inner[fill[v]] = v;
+    values[fill[v]++] = pinned[v] || !used[v] || diagonal[v] == 0.0 ? 1.0 : diagonal[v];
   }
-  Eigen::SparseMatrix<double> matrix(nv, nv);
-  matrix.setFromTriplets(entries.begin(), entries.end());
-  entries.clear();
-  entries.shrink_to_fit();
+  outer[nv] = count[nv];
+  for (int e = 0; e < ne; ++e)
+  {
+    const std::array<int, 2> ends = mesh.GetEdgeVertices(e);
+    if (edgeWeight[e] != 0.0 && !pinned[ends[0]] && !pinned[ends[1]])
+    {
+      const int column = std::min(ends[0], ends[1]);
+      inner[fill[column]] = std::max(ends[0], ends[1]);
+      values[fill[column]++] = edgeWeight[e];
+    }
+  }
+  for (int v = 0; v < nv; ++v)
+  {
+    // Rows ascending within each column (the diagonal, the lowest row, is first already).
+    std::vector<std::pair<int, double>> column;
+    for (int i = outer[v] + 1; i < outer[v + 1]; ++i)
+    {
+      column.emplace_back(inner[i], values[i]);
+    }
+    std::sort(column.begin(), column.end());
+    for (size_t i = 0; i < column.size(); ++i)
+    {
+      inner[outer[v] + 1 + i] = column[i].first;
+      values[outer[v] + 1 + i] = column[i].second;
+    }
+  }
+  edgeWeight = std::vector<double>();
 
   auto& solver = this->Impl->Solver;
   solver.cholmod().nmethods = 1;

@@ -360,6 +360,7 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
     liftTime += Seconds(t0);
     t0 = std::chrono::steady_clock::now();
     system.Laplacian.Solve(loads, static_cast<int>(solving.size()));
+    out.Times.BackSubstitutions += static_cast<int>(solving.size());
     for (size_t i = 0; i < solving.size(); ++i)
     {
       columns[solving[i]] = std::make_shared<const std::vector<double>>(
@@ -374,7 +375,15 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
     }
     solveTime += Seconds(t0);
     t0 = std::chrono::steady_clock::now();
-    BuildField(mesh, arr, system, shapes, shapeEdges, lifts, columns, out);
+    std::vector<const std::vector<double>*> knownShift(ns, nullptr);
+    for (int s = 0; s < ns; ++s)
+    {
+      if (reused[s])
+      {
+        knownShift[s] = &system.Solved[shapes[s]].Shift;
+      }
+    }
+    BuildField(mesh, arr, system, shapes, shapeEdges, lifts, columns, knownShift, out);
     fieldTime += Seconds(t0);
   };
   solveField();
@@ -382,7 +391,8 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
   {
     // First whole curves that bound nothing on the whole (spurs, isolated arcs): a spur
     // disturbs the levels around the curves next to it, so they are judged again without it.
-    // Then the edges that still bound nothing (overshooting tails, doubled stretches).
+    // Then the stretches that still bound nothing (overshooting tails, doubled stretches).
+    int droppedEdges = 0;
     for (int round = 0; round < 2; ++round)
     {
       bool any = false;
@@ -406,17 +416,56 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
             curveDegree[t.Curve].second += length;
           }
         }
+        // The second round drops, per curve, runs of consecutive edges that bound nothing and
+        // make up at least a twentieth of the curve: an overshooting tail, not the few edges
+        // next to an open end, where the levels are off by how the gap closes.
+        std::vector<char> drop(shapeEdges[s].size(), 0);
+        if (round == 0)
+        {
+          for (size_t e = 0; e < shapeEdges[s].size(); ++e)
+          {
+            const auto& cd = curveDegree[shapeEdges[s][e].Curve];
+            drop[e] = cd.first < 0.5 * cd.second;
+          }
+        }
+        else
+        {
+          std::map<int, double> curveLength;
+          std::vector<double> length(shapeEdges[s].size());
+          for (size_t e = 0; e < shapeEdges[s].size(); ++e)
+          {
+            const Traversal& t = shapeEdges[s][e];
+            length[e] = Distance(arr.GetPosition(mesh, t.From), arr.GetPosition(mesh, t.To));
+            curveLength[t.Curve] += length[e];
+          }
+          for (size_t e = 0; e < shapeEdges[s].size();)
+          {
+            size_t end = e;
+            double run = 0;
+            while (end < shapeEdges[s].size() && degree[end] < 0.5 &&
+              shapeEdges[s][end].Curve == shapeEdges[s][e].Curve &&
+              (end == e || shapeEdges[s][end].Index == shapeEdges[s][end - 1].Index + 1))
+            {
+              run += length[end];
+              ++end;
+            }
+            if (end > e && run >= 0.05 * curveLength[shapeEdges[s][e].Curve])
+            {
+              std::fill(drop.begin() + e, drop.begin() + end, 1);
+            }
+            e = std::max(end, e + 1);
+          }
+        }
         std::vector<Traversal> kept;
         for (size_t e = 0; e < shapeEdges[s].size(); ++e)
         {
-          const auto& cd = curveDegree[shapeEdges[s][e].Curve];
-          const bool keep = round == 0 ? cd.first >= 0.5 * cd.second : degree[e] >= 0.5;
-          if (keep)
+          if (!drop[e])
           {
             kept.push_back(shapeEdges[s][e]);
           }
         }
         any = any || kept.size() != shapeEdges[s].size();
+        droppedEdges += static_cast<int>(shapeEdges[s].size() - kept.size());
         shapeEdges[s].swap(kept);
       }
       if (any)
@@ -424,6 +473,7 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
         solveField();
       }
     }
+    out.Times.DroppedEdges = droppedEdges;
   }
   // Keep u of the shapes where nothing was dropped for the next edit.
   for (int s = 0; s < ns; ++s)
@@ -446,6 +496,7 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
           kept.Curves.push_back(curves[c]);
         }
         kept.Smooth = columns[s];
+        kept.Shift = out.BlockShift[s];
       }
       else
       {

@@ -75,6 +75,9 @@ struct WindingStageTimes
   /// Milliseconds: factorization (0 when kept from the last call on the same mesh), the
   /// homology correction, lifts and loads, back-substitutions, field and outputs.
   double Factorization = 0, Lift = 0, Solve = 0, Homology = 0, Outputs = 0, Total = 0;
+  /// Columns solved (a shape per solve round; reused shapes none) and curve edges dropped as
+  /// bounding nothing (spurs, overshoots).
+  int BackSubstitutions = 0, DroppedEdges = 0;
 };
 
 /// w of each computed shape on the refined surface of an arrangement.

@@ -49,6 +49,104 @@ double SmoothAt(const TriangleMesh& mesh, const Arrangement& arr, const double* 
   return (1.0 - c.U - c.V) * u[tri[0]] + c.U * u[tri[1]] + c.V * u[tri[2]];
 }
 
+/// The constant per block of shape s (see BuildField), into out.BlockShift[s].
+void ComputeShift(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const WindingSystem& system,
+  const std::vector<Traversal>& shapeEdges,
+  const double* u,
+  WindingResult& out,
+  int s)
+{
+  const int nv = mesh.GetNumberOfVertices();
+  const std::vector<int>& blocks = system.Laplacian.GetVertexBlocks();
+  const int nb = system.Laplacian.GetNumberOfBlocks();
+  auto blockOfPoint = [&](int p)
+  { return nb == 1 ? 0 : (p < nv ? blocks[p] : out.CurvePointBlock[p - nv]); };
+  auto unshifted = [&](int p) { return p < nv ? u[p] : out.CurvePointSmooth[s][p - nv]; };
+  // The constant per block, from the values it should make integers: those on the free
+  // part of its longest boundary loop (where closed curves leave w = 0, the labels' zero
+  // plug), else every mesh vertex and jump corner. Their circular mean of fractional parts
+  // (robust to the few values a spur or a gap disturbs) makes them as near integers as they
+  // can be, and the lowest of them rounds to 0: closed curves get exactly the labels, a
+  // curve from boundary to boundary 0 on its right.
+  std::unordered_set<int> curvePoints;
+  for (const Traversal& e : shapeEdges)
+  {
+    curvePoints.insert(e.From);
+    curvePoints.insert(e.To);
+  }
+  struct Levels
+  {
+    double Sin = 0, Cos = 0;
+    std::vector<double> Values;
+    void Add(double x)
+    {
+      this->Sin += std::sin(2 * Pi * x);
+      this->Cos += std::cos(2 * Pi * x);
+      this->Values.push_back(x);
+    }
+    double Constant() const
+    {
+      if (this->Values.empty())
+      {
+        return 0.0;
+      }
+      const double fraction = std::atan2(this->Sin, this->Cos) / (2 * Pi);
+      double lowest = std::numeric_limits<double>::infinity();
+      for (double x : this->Values)
+      {
+        lowest = std::min(lowest, std::round(x - fraction));
+      }
+      return fraction + lowest;
+    }
+  };
+  std::vector<Levels> onLoop(nb), everywhere(nb);
+  for (int b = 0; b < nb; ++b)
+  {
+    const int l = system.BlockLoop[b];
+    if (l < 0)
+    {
+      continue;
+    }
+    for (int v : system.Topology.BoundaryLoops[l].Vertices)
+    {
+      if (!curvePoints.count(v))
+      {
+        onLoop[b].Add(u[v]);
+      }
+    }
+  }
+  // (A fixed sample of at most ~65k vertices is plenty for a circular mean and a minimum of
+  // rounded levels, and keeps this O(1) per edit on large meshes.)
+  const int stride = std::max(1, nv / 65536);
+  for (int v = 0; v < nv; v += stride)
+  {
+    if (blocks[v] >= 0 && system.BlockLoop[blocks[v]] < 0)
+    {
+      everywhere[blocks[v]].Add(u[v]);
+    }
+  }
+  for (size_t i = 0; i < out.JumpTriangles.size(); ++i)
+  {
+    const Triangle tri = arr.GetTriangle(mesh, out.JumpTriangles[i]);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int b = blockOfPoint(tri[k]);
+      if (b >= 0 && system.BlockLoop[b] < 0)
+      {
+        everywhere[b].Add(unshifted(tri[k]) + out.CornerLift[s][3 * i + k]);
+      }
+    }
+  }
+  for (int b = 0; b < nb; ++b)
+  {
+    out.BlockShift[s][b] = system.BlockLoop[b] >= 0 && !onLoop[b].Values.empty()
+      ? onLoop[b].Constant()
+      : everywhere[b].Constant();
+  }
+}
+
 } // namespace
 
 void BuildField(const TriangleMesh& mesh,
@@ -58,6 +156,7 @@ void BuildField(const TriangleMesh& mesh,
   const std::vector<std::vector<Traversal>>& shapeEdges,
   const std::vector<JumpLift>& lifts,
   const std::vector<std::shared_ptr<const std::vector<double>>>& smooth,
+  const std::vector<const std::vector<double>*>& knownShift,
   WindingResult& out)
 {
   const int ns = static_cast<int>(shapes.size());
@@ -89,9 +188,6 @@ void BuildField(const TriangleMesh& mesh,
     const SurfacePoint sp = arr.GetPointSurface(mesh, p);
     out.CurvePointBlock[p - nv] = blocks[mesh.GetTriangle(sp.Triangle)[0]];
   }
-  auto blockOfPoint = [&](int p)
-  { return nb == 1 ? 0 : (p < nv ? blocks[p] : out.CurvePointBlock[p - nv]); };
-
   out.VertexSmooth = smooth;
   out.CurvePointSmooth.assign(ns, std::vector<double>(npts - nv, 0.0));
   out.BlockShift.assign(ns, std::vector<double>(std::max(1, nb), 0.0));
@@ -112,88 +208,13 @@ void BuildField(const TriangleMesh& mesh,
         out.CornerLift[s][3 * slot + k] = lifts[s].Values[i][k];
       }
     }
-    auto unshifted = [&](int p) { return p < nv ? u[p] : out.CurvePointSmooth[s][p - nv]; };
-
-    // The constant per block, from the values it should make integers: those on the free
-    // part of its longest boundary loop (where closed curves leave w = 0, the labels' zero
-    // plug), else every mesh vertex and jump corner. Their circular mean of fractional parts
-    // (robust to the few values a spur or a gap disturbs) makes them as near integers as they
-    // can be, and the lowest of them rounds to 0: closed curves get exactly the labels, a
-    // curve from boundary to boundary 0 on its right.
-    std::unordered_set<int> curvePoints;
-    for (const Traversal& e : shapeEdges[s])
+    if (knownShift[s])
     {
-      curvePoints.insert(e.From);
-      curvePoints.insert(e.To);
+      out.BlockShift[s] = *knownShift[s];
     }
-    struct Levels
+    else
     {
-      double Sin = 0, Cos = 0;
-      std::vector<double> Values;
-      void Add(double x)
-      {
-        this->Sin += std::sin(2 * Pi * x);
-        this->Cos += std::cos(2 * Pi * x);
-        this->Values.push_back(x);
-      }
-      double Constant() const
-      {
-        if (this->Values.empty())
-        {
-          return 0.0;
-        }
-        const double fraction = std::atan2(this->Sin, this->Cos) / (2 * Pi);
-        double lowest = std::numeric_limits<double>::infinity();
-        for (double x : this->Values)
-        {
-          lowest = std::min(lowest, std::round(x - fraction));
-        }
-        return fraction + lowest;
-      }
-    };
-    std::vector<Levels> onLoop(nb), everywhere(nb);
-    for (int b = 0; b < nb; ++b)
-    {
-      const int l = system.BlockLoop[b];
-      if (l < 0)
-      {
-        continue;
-      }
-      for (int v : system.Topology.BoundaryLoops[l].Vertices)
-      {
-        if (!curvePoints.count(v))
-        {
-          onLoop[b].Add(u[v]);
-        }
-      }
-    }
-    // (A fixed sample of at most ~65k vertices is plenty for a circular mean and a minimum of
-    // rounded levels, and keeps this O(1) per edit on large meshes.)
-    const int stride = std::max(1, nv / 65536);
-    for (int v = 0; v < nv; v += stride)
-    {
-      if (blocks[v] >= 0 && system.BlockLoop[blocks[v]] < 0)
-      {
-        everywhere[blocks[v]].Add(u[v]);
-      }
-    }
-    for (size_t i = 0; i < out.JumpTriangles.size(); ++i)
-    {
-      const Triangle tri = arr.GetTriangle(mesh, out.JumpTriangles[i]);
-      for (int k = 0; k < 3; ++k)
-      {
-        const int b = blockOfPoint(tri[k]);
-        if (b >= 0 && system.BlockLoop[b] < 0)
-        {
-          everywhere[b].Add(unshifted(tri[k]) + out.CornerLift[s][3 * i + k]);
-        }
-      }
-    }
-    for (int b = 0; b < nb; ++b)
-    {
-      out.BlockShift[s][b] = system.BlockLoop[b] >= 0 && !onLoop[b].Values.empty()
-        ? onLoop[b].Constant()
-        : everywhere[b].Constant();
+      ComputeShift(mesh, arr, system, shapeEdges[s], u, out, s);
     }
 
     // Point lifts: the middle of the jump where a point has sides.
@@ -255,7 +276,8 @@ std::vector<double> BoundingDegrees(const TriangleMesh& mesh,
     net[key(e.From, e.To)] += 1;
     net[key(e.To, e.From)] -= 1;
   }
-  auto middle = [&](int a, int b, double& value)
+  // The field at both ends of a directed edge, on its left side.
+  auto ends = [&](int a, int b, double& va, double& vb)
   {
     const auto it = leftOf.find(key(a, b));
     if (it == leftOf.end())
@@ -263,25 +285,42 @@ std::vector<double> BoundingDegrees(const TriangleMesh& mesh,
       return false;
     }
     const int r = it->second.first, k = it->second.second;
-    value = 0.5 * (field.Corner(arr, mesh, s, r, k) + field.Corner(arr, mesh, s, r, (k + 1) % 3));
+    va = field.Corner(arr, mesh, s, r, k);
+    vb = field.Corner(arr, mesh, s, r, (k + 1) % 3);
     return true;
+  };
+  auto degreeAt = [](double left, double right, int jump)
+  {
+    const double level = 0.5 * (left + right - jump);
+    return std::max(0.0, 1.0 - 2.0 * std::abs(level - std::round(level)));
   };
   std::vector<double> degree(edges.size(), 0.0);
   for (size_t i = 0; i < edges.size(); ++i)
   {
     const Traversal& e = edges[i];
     const int jump = net[key(e.From, e.To)];
-    double left = 0, right = 0;
-    if (jump <= 0 || !middle(e.From, e.To, left))
+    double la = 0, lb = 0, ra = 0, rb = 0;
+    if (jump <= 0 || !ends(e.From, e.To, la, lb))
     {
       continue; // cancelled by a traversal the other way: no jump, bounds nothing
     }
-    if (!middle(e.To, e.From, right))
+    if (!ends(e.To, e.From, rb, ra))
     {
-      right = left - jump; // along the open boundary: only the left side exists
+      ra = la - jump; // along the open boundary: only the left side exists
+      rb = lb - jump;
     }
-    const double level = 0.5 * (left + right - jump);
-    degree[i] = std::max(0.0, 1.0 - 2.0 * std::abs(level - std::round(level)));
+    // Read at the ends where the jump is whole: at an open curve's end point it fades to zero
+    // (one side), and the edge's other end tells how it bounds; the better of the two counts.
+    double best = -1.0;
+    if (std::abs(la - ra - jump) <= 0.5)
+    {
+      best = std::max(best, degreeAt(la, ra, jump));
+    }
+    if (std::abs(lb - rb - jump) <= 0.5)
+    {
+      best = std::max(best, degreeAt(lb, rb, jump));
+    }
+    degree[i] = best >= 0.0 ? best : degreeAt(0.5 * (la + lb), 0.5 * (ra + rb), jump);
   }
   return degree;
 }

@@ -39,6 +39,7 @@ public:
   {
     std::vector<TracedCurve> Curves;
     std::shared_ptr<const std::vector<double>> Smooth;
+    std::vector<double> Shift; ///< its constant per block (WindingResult::BlockShift)
   };
   std::map<int, SolvedShape> Solved;
 };
@@ -54,7 +55,8 @@ void AppendTraversals(const Arrangement& arr, int c, bool closed, std::vector<Tr
 
 /// Fills out's jump triangles, smooth parts, lifts and constants from each shape's lift and
 /// solved u (one per shape, at the mesh vertices): each block's constant makes the values on
-/// the free part of its longest boundary loop (else all of them) integer levels, lowest 0.
+/// the free part of its longest boundary loop (else all of them) integer levels, lowest 0
+/// (knownShift[s], when not null: the constants of a shape kept from the last edit).
 void BuildField(const TriangleMesh& mesh,
   const Arrangement& arr,
   const WindingSystem& system,
@@ -62,13 +64,15 @@ void BuildField(const TriangleMesh& mesh,
   const std::vector<std::vector<Traversal>>& shapeEdges,
   const std::vector<JumpLift>& lifts,
   const std::vector<std::shared_ptr<const std::vector<double>>>& smooth,
+  const std::vector<const std::vector<double>*>& knownShift,
   WindingResult& out);
 
-/// How much each traversal of shape s bounds, in [0, 1], read at its edge's middle: with J the
-/// net jump of the shape across the edge and L, R the field on its left and right, a curve
-/// that bounds has its sides at integer levels R and R + J, while a spur, an overshoot or an
-/// isolated arc sits at the middle of a level, (L + R - J) / 2 half-way between integers. The
-/// degree is 1 - 2 * distance((L + R - J) / 2, integers).
+/// How much each traversal of shape s bounds, in [0, 1]: with J the net jump of the shape
+/// across the edge and L, R the field on its left and right, a curve that bounds has its sides
+/// at integer levels R and R + J, while a spur, an overshoot or an isolated arc sits at the
+/// middle of a level, (L + R - J) / 2 half-way between integers. The degree is
+/// 1 - 2 * distance((L + R - J) / 2, integers), read at the edge's ends where the jump is whole
+/// (not at an open curve's end point, where it fades), the better of the two.
 std::vector<double> BoundingDegrees(const TriangleMesh& mesh,
   const Arrangement& arr,
   const WindingResult& field,

@@ -403,6 +403,25 @@ TEST(SurfaceWinding, OvershootsAndSpursLeaveTheRegion)
     RegionAgainstPolygon(mesh, arr, w, circle, region, difference);
     EXPECT_LE(difference, 0.01 * area);
   }
+  // One stroke round the circle that runs on past its start and out, a tail of about a tenth
+  // of its length.
+  {
+    std::vector<Vec2> stroke(circle.begin(), circle.end());
+    stroke.push_back(circle[0]);
+    for (int i = 1; i <= 10; ++i)
+    {
+      stroke.push_back({ circle[0].x + 0.12 * i, circle[0].y + 0.05 * i });
+    }
+    std::vector<TracedCurve> curves(1);
+    ASSERT_TRUE(tracer.Trace(stroke, false, 0, 0, curves[0]));
+    const Arrangement arr = Arrange(mesh, curves);
+    const WindingResult w = Wind(mesh, arr, curves);
+    double region, difference;
+    RegionAgainstPolygon(mesh, arr, w, circle, region, difference);
+    EXPECT_LE(difference, 0.01 * area);
+    EXPECT_GT(w.Times.DroppedEdges, 0);
+    EXPECT_TRUE(w.Curves[0].Bounds);
+  }
   // A closed circle with a spur dangling inside and one sticking out.
   {
     std::vector<TracedCurve> curves(3);
