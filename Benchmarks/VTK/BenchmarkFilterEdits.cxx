@@ -58,6 +58,7 @@
 #include "vtkBoolSurfBoolean.h"
 #include "vtkBoolSurfLabeling.h"
 #include "vtkBoolSurfTraceCurves.h"
+#include "vtkBoolSurfWindingNumbers.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -1071,6 +1072,91 @@ void BM_OneStepHugeShapeId(benchmark::State& state)
 
 // Edits at one and two threads (NumberOfThreads), milliseconds of real time, `edits` each
 // (BOOLSURF_BENCHMARK_ITERATIONS sets another number, e.g. for a profiler).
+/// The curves of `closed` (one polygon cell per circle) broken: each circle's control points
+/// 0..k/2-1 and k/2..k-2 as two open polylines of the circle's shape, so each circle has two
+/// gaps of one leg (1/12 of it with 12 control points).
+vtkSmartPointer<vtkPolyData> Broken(vtkPolyData* closed)
+{
+  auto broken = vtkSmartPointer<vtkPolyData>::New();
+  broken->SetPoints(closed->GetPoints());
+  broken->GetPointData()->ShallowCopy(closed->GetPointData());
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIntArray> shapeId;
+  shapeId->SetName("ShapeId");
+  vtkNew<vtkIntArray> curveType;
+  curveType->SetName("CurveType");
+  vtkDataArray* shapes = closed->GetCellData()->GetArray("ShapeId");
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < closed->GetNumberOfCells(); ++c)
+  {
+    closed->GetCellPoints(c, ids);
+    const vtkIdType k = ids->GetNumberOfIds();
+    const vtkIdType pieces[2][2] = { { 0, k / 2 - 1 }, { k / 2, k - 2 } };
+    for (const auto& piece : pieces)
+    {
+      lines->InsertNextCell(piece[1] - piece[0] + 1);
+      for (vtkIdType i = piece[0]; i <= piece[1]; ++i)
+      {
+        lines->InsertCellPoint(ids->GetId(i));
+      }
+      shapeId->InsertNextValue(static_cast<int>(shapes->GetComponent(c, 0)));
+      curveType->InsertNextValue(0);
+    }
+  }
+  broken->SetLines(lines);
+  broken->GetCellData()->AddArray(shapeId);
+  broken->GetCellData()->AddArray(curveType);
+  return broken;
+}
+
+/// Winding Numbers (issue 57) on TenCircles broken into open curves, through VTK: a fresh
+/// filter's first update (the Laplacian's factorization included), then one circle dragged per
+/// update (its control points moved, the other nine kept: their shapes keep their solve).
+void BM_WindingNumbersDragOneCurve(benchmark::State& state)
+{
+  const Scene& scene = TenCircles();
+  if (!scene.Error.empty())
+  {
+    state.SkipWithError(scene.Error.c_str());
+    return;
+  }
+  const double startRss = ResetPeakRss();
+  auto filter = vtkSmartPointer<vtkBoolSurfWindingNumbers>::New();
+  filter->SetInputData(0, scene.Mesh->Mesh);
+  filter->SetInputData(1, Broken(scene.Curves[0]));
+  filter->SetNumberOfThreads(static_cast<int>(state.range(0)));
+  const auto t0 = std::chrono::steady_clock::now();
+  filter->Update();
+  const double firstUpdateMs = Milliseconds(t0, std::chrono::steady_clock::now());
+  const double firstPeak = PeakRssMB() - startRss;
+  if (filter->GetOutput(1)->GetNumberOfCells() == 0)
+  {
+    state.SkipWithError("the first update produced no region");
+    return;
+  }
+  int step = 0;
+  for (auto _ : state)
+  {
+    state.PauseTiming();
+    ++step;
+    const vtkIdType circle = step % scene.Circles;
+    vtkSmartPointer<vtkPolyData> input =
+      Broken(Moved(scene.Curves[step % 2], circle, circle, step));
+    filter->SetInputData(1, input);
+    state.ResumeTiming();
+    filter->Update();
+  }
+  if (filter->GetOutput(1)->GetNumberOfCells() == 0)
+  {
+    state.SkipWithError("an edit produced no region");
+    return;
+  }
+  state.counters["FirstUpdateMs"] = firstUpdateMs;
+  state.counters["FirstUpdatePeakRSSGrowth_MB"] = firstPeak;
+  state.counters["RegionCells"] = static_cast<double>(filter->GetOutput(1)->GetNumberOfCells());
+  state.counters["Circles"] = scene.Circles;
+}
+
 template <int edits>
 void AtOneAndTwoThreads(benchmark::internal::Benchmark* b)
 {
@@ -1098,6 +1184,12 @@ BENCHMARK(BM_OneStepPaperScaleSelection)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime()
   ->Iterations(10);
+BENCHMARK(BM_WindingNumbersDragOneCurve)
+  ->Arg(2)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime()
+  ->Iterations(6)
+  ->Repetitions(3);
 BENCHMARK(BM_OneStepHugeShapeId)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 
 } // namespace
