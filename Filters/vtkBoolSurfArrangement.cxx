@@ -103,29 +103,9 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     return true;
   }
-  if (!boolsurf::ArrangeCurves(*surface,
-        curves,
-        this->NumberOfThreads,
-        result->Arrangement,
-        { result,
-          &result->CellOffsets,
-          &result->PointTriangle,
-          &result->PointBarycentric,
-          &result->PointArraysMeshSerial,
-          &result->TriangleCells,
-          &result->WrittenCells,
-          &result->Whole },
-        output,
-        patches,
-        error))
+  if (!boolsurf::ArrangeResult(result, sources, this->NumberOfThreads, output, patches, error))
   {
     this->Internal->Work = result->Arrangement.Work;
-    const boolsurf::Arrangement& arr = result->Arrangement;
-    if (arr.FailedCurve >= 0)
-    {
-      error += "\n  (at " +
-        boolsurf::DescribeCurvePoint(curves, sources, arr.FailedCurve, arr.FailedPoint) + ")";
-    }
     return false;
   }
   this->Internal->Work = result->Arrangement.Work;

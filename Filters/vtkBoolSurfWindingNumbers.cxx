@@ -161,31 +161,10 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   }
 
   // 2. the arrangement (port 0 as Surface Arrangement writes it)
-  if (!boolsurf::ArrangeCurves(*surface,
-        curves,
-        this->NumberOfThreads,
-        result->Arrangement,
-        { result,
-          &result->CellOffsets,
-          &result->PointTriangle,
-          &result->PointBarycentric,
-          &result->PointArraysMeshSerial,
-          &result->TriangleCells,
-          &result->WrittenCells,
-          &result->Whole },
-        refined,
-        nullptr,
-        error))
+  if (!boolsurf::ArrangeResult(
+        result, result->Sources, this->NumberOfThreads, refined, nullptr, error))
   {
     this->Internal->Work = result->Arrangement.Work;
-    const boolsurf::Arrangement& failed = result->Arrangement;
-    if (failed.FailedCurve >= 0)
-    {
-      error += "\n  (at " +
-        boolsurf::DescribeCurvePoint(
-          curves, result->Sources, failed.FailedCurve, failed.FailedPoint) +
-        ")";
-    }
     return false;
   }
   this->Internal->Work = result->Arrangement.Work;

@@ -8,6 +8,7 @@
 #include "vtkBoolSurfAttributeTransfer.h"
 #include "vtkBoolSurfOutputReuse.h"
 #include "vtkBoolSurfStageHandoff.h"
+#include "vtkBoolSurfTraceStage.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -559,6 +560,41 @@ bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::stri
     out.Patches.push_back(std::move(patch));
   }
   return true;
+}
+
+bool ArrangeResult(const std::shared_ptr<ArrangementResult>& result,
+  const std::vector<CurveSource>& sources,
+  int threads,
+  vtkPolyData* refined,
+  vtkPolyData* patches,
+  std::string& error)
+{
+  const ArrangementMemory memory{ result,
+    &result->CellOffsets,
+    &result->PointTriangle,
+    &result->PointBarycentric,
+    &result->PointArraysMeshSerial,
+    &result->TriangleCells,
+    &result->WrittenCells,
+    &result->Whole };
+  if (ArrangeCurves(result->Surface,
+        result->Curves,
+        threads,
+        result->Arrangement,
+        memory,
+        refined,
+        patches,
+        error))
+  {
+    return true;
+  }
+  const Arrangement& failed = result->Arrangement;
+  if (failed.FailedCurve >= 0)
+  {
+    error += "\n  (at " +
+      DescribeCurvePoint(result->Curves, sources, failed.FailedCurve, failed.FailedPoint) + ")";
+  }
+  return false;
 }
 
 } // namespace boolsurf

@@ -61,6 +61,19 @@ bool ArrangeCurves(const vtkSurfaceInput& surface,
   vtkPolyData* patches,
   std::string& error);
 
+struct ArrangementResult;
+struct CurveSource;
+
+/// ArrangeCurves of a stage result's curves into its arrangement and the VTK arrays it keeps
+/// (the Surface Arrangement and Winding Numbers filters' stage): on failure the message also
+/// names the curve point as the user gave it (`sources`, may be empty).
+bool ArrangeResult(const std::shared_ptr<ArrangementResult>& result,
+  const std::vector<CurveSource>& sources,
+  int threads,
+  vtkPolyData* refined,
+  vtkPolyData* patches,
+  std::string& error);
+
 /// Polys of `output`: `count` triangles, corner k of triangle t at corners[3 t + k] (a bulk
 /// copy into the connectivity array, offsets 0, 3, 6, ...).
 void SetTriangles(const int* corners, vtkIdType count, vtkPolyData* output);

@@ -92,6 +92,18 @@ WindingResult Wind(const TriangleMesh& mesh,
   return w;
 }
 
+/// Corners of the axis-aligned box of `points`.
+void BoundingBox(const std::vector<Vec3>& points, Vec3& lo, Vec3& hi)
+{
+  lo = { 1e300, 1e300, 1e300 };
+  hi = { -1e300, -1e300, -1e300 };
+  for (const Vec3& p : points)
+  {
+    lo = { std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z) };
+    hi = { std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z) };
+  }
+}
+
 /// Reverses `curve` unless the side dot(normal, x) > offset is on its left (plane sections
 /// follow the mesh, not the plane's side).
 void PositiveSideOnTheLeft(const TriangleMesh& mesh, Vec3 normal, TracedCurve& curve)
@@ -334,12 +346,8 @@ TEST(SurfaceWinding, GenusTwoCapEqualsTheLabels)
   ASSERT_TRUE(ReadPly((testing::SourceTree() / "Data" / "eight.ply").string(), d, error)) << error;
   const TriangleMesh mesh = MeshOf(d);
   // A cap cut near one end of the longest axis.
-  Vec3 lo{ 1e300, 1e300, 1e300 }, hi{ -1e300, -1e300, -1e300 };
-  for (const Vec3& p : d.Positions)
-  {
-    lo = { std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z) };
-    hi = { std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z) };
-  }
+  Vec3 lo, hi;
+  BoundingBox(d.Positions, lo, hi);
   const Vec3 extent = hi - lo;
   const int axis =
     extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
@@ -539,12 +547,8 @@ TEST(SurfaceWinding, BrokenLoopsOnASphereATorusAndScans)
     ASSERT_TRUE(ReadPly((std::filesystem::path(shared) / "meshes" / name).string(), d, error))
       << error;
     const TriangleMesh mesh = MeshOf(d);
-    Vec3 lo{ 1e300, 1e300, 1e300 }, hi{ -1e300, -1e300, -1e300 };
-    for (const Vec3& p : d.Positions)
-    {
-      lo = { std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z) };
-      hi = { std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z) };
-    }
+    Vec3 lo, hi;
+    BoundingBox(d.Positions, lo, hi);
     // Loops that bound, cut near one end of two axes (sections of one closed loop; a loop
     // around a handle is skipped).
     int tested = 0;
@@ -688,12 +692,8 @@ TEST(SurfaceWinding, OpenCylinderBandEqualsTheLabels)
   // Two boundary loops; two tilted loops around the cylinder (each homologous to a boundary
   // loop, so bounding with the loops capped), one shape each.
   const TriangleMesh mesh = MeshOf(MakeOpenCylinder(1.0, 3.0, 40, 24));
-  Vec3 lo{ 1e300, 1e300, 1e300 }, hi{ -1e300, -1e300, -1e300 };
-  for (const Vec3& p : mesh.GetPositions())
-  {
-    lo = { std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z) };
-    hi = { std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z) };
-  }
+  Vec3 lo, hi;
+  BoundingBox(mesh.GetPositions(), lo, hi);
   const Vec3 extent = hi - lo;
   const int axis =
     extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
@@ -727,12 +727,8 @@ TEST(SurfaceWinding, SharedScansEqualTheLabels)
     ASSERT_TRUE(ReadPly((std::filesystem::path(shared) / "meshes" / name).string(), d, error))
       << error;
     const TriangleMesh mesh = MeshOf(d);
-    Vec3 lo{ 1e300, 1e300, 1e300 }, hi{ -1e300, -1e300, -1e300 };
-    for (const Vec3& p : d.Positions)
-    {
-      lo = { std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z) };
-      hi = { std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z) };
-    }
+    Vec3 lo, hi;
+    BoundingBox(d.Positions, lo, hi);
     // Sections of three planes, one shape each, at the first offset whose loops are all closed
     // (a section that meets a hole is skipped): together they bound the part on one side.
     std::vector<TracedCurve> curves;
