@@ -10,6 +10,9 @@
 //    slightly outside, NaN, huge) so that points on edges and vertices are common;
 //  * an operation (union, intersection, difference, symmetric difference of two shapes, or
 //    all shapes) and a fill rule.
+// The winding numbers of the curves run on the same arrangement: finite everywhere, equal to
+// the labels up to a constant for consistent shapes of closed curves on a connected surface,
+// and their level set closes into loops that are valid traced curves.
 // Every stage must give a result or a message. Where there is a result, cheap invariants are
 // checked (a violation aborts, which libFuzzer reports): the refined triangles cover the
 // surface with its area (no fold, no gap), cells and points are in range, labels are finite
@@ -29,6 +32,8 @@
 #include "Selection/BooleanSelection.h"
 #include "Selection/RegionBoundary.h"
 #include "Selection/RegionExtraction.h"
+#include "Winding/SurfaceWinding.h"
+#include "Winding/WindingLevelSet.h"
 
 #include <cmath>
 #include <cstdio>
@@ -261,6 +266,76 @@ void CheckLabels(const LabelingResult& labels, int cells, std::size_t curvePoint
     }
   }
 }
+/// Winding numbers on the fuzzed arrangement (see the file's comment).
+void CheckWindingNumbers(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const std::vector<TracedCurve>& curves,
+  const Arrangement& arr,
+  const LabelingResult& labels)
+{
+  SurfaceWinding winding;
+  WindingResult w;
+  std::string error;
+  WindingOptions options;
+  options.Threads = 1;
+  if (!winding.Compute(mesh, arr, curves, options, w, error))
+  {
+    BOOLSURF_FUZZ_CHECK(!error.empty(), "refused winding numbers must say why");
+    Reached("winding numbers refused");
+    return;
+  }
+  const int nr = arr.GetNumberOfTriangles();
+  for (int s = 0; s < w.GetNumberOfShapes(); ++s)
+  {
+    // Labels' shape index of this shape, and whether all its curves are closed.
+    int ls = -1;
+    for (int k = 0; k < labels.NumberOfShapes; ++k)
+    {
+      ls = labels.ShapeIdOf(k) == w.ShapeIds[s] ? k : ls;
+    }
+    bool closed = true;
+    for (const TracedCurve& c : curves)
+    {
+      closed = closed && (c.ShapeId != w.ShapeIds[s] || c.Closed);
+    }
+    const bool exact = closed && ls >= 0 && labels.ShapeConsistent[ls] &&
+      topology.GetNumberOfComponents() == 1;
+    double offset = std::numeric_limits<double>::quiet_NaN();
+    for (int r = 0; r < nr; ++r)
+    {
+      const int cell = arr.CellOfTriangle(r);
+      for (int k = 0; k < 3 && cell >= 0; ++k)
+      {
+        const double value = w.Corner(arr, mesh, s, r, k);
+        BOOLSURF_FUZZ_CHECK(std::isfinite(value), "winding number not finite");
+        if (exact)
+        {
+          const double d = value - labels.GetLabel(cell, ls);
+          offset = std::isnan(offset) ? d : offset;
+          BOOLSURF_FUZZ_CHECK(std::fabs(d - offset) <= 1e-6,
+            "winding number of a consistent closed shape off its label by " + std::to_string(d) +
+              " against " + std::to_string(offset));
+        }
+      }
+    }
+  }
+  LevelSetInput input;
+  input.CornerValue = [&](int r, int k) { return w.Corner(arr, mesh, 0, r, k); };
+  input.JumpTriangles = &w.JumpTriangles;
+  std::vector<LevelSetLoop> loops;
+  BOOLSURF_FUZZ_CHECK(ExtractLevelSet(mesh, arr, input, loops, error), error);
+  for (const LevelSetLoop& loop : loops)
+  {
+    const std::size_t n = loop.Points.size();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      BOOLSURF_FUZZ_CHECK(SharedTriangle(mesh, loop.Points[i], loop.Points[(i + 1) % n]) >= 0,
+        "consecutive level-set points share no triangle");
+    }
+  }
+  Reached(loops.empty() ? "winding numbers (no level set)" : "winding numbers with a level set");
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
@@ -330,6 +405,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   const LabelingResult labels = LabelCells(MakeLabelingInput(mesh, topology, curves, arr));
   CheckLabels(labels, arr.NumberOfCells, curvePoints);
+  CheckWindingNumbers(mesh, topology, curves, arr, labels);
 
   // Boolean selection of a named operation, and of its complement.
   const std::vector<int> shapeIds = DistinctShapeIds(curves);
