@@ -125,12 +125,15 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
   }
   std::string line;
   std::getline(in, line);
-  if (line.rfind("ply", 0) != 0)
+  if (!line.empty() && line.back() == '\r')
+    line.pop_back();
+  if (line != "ply")
   {
     error = "'" + path + "' is not a PLY file (no 'ply' magic line)";
     return false;
   }
   Format format = Format::Ascii;
+  bool formatSeen = false;
   std::vector<Element> elements;
   while (std::getline(in, line))
   {
@@ -139,15 +142,29 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
+    // Only the header lines of the PLY format: vtkPLYReader reads other lines its own way and
+    // crashed on a header that this reader had skipped line by line (a fuzzed scene mesh).
+    if (!keyword.empty() && keyword != "format" && keyword != "element" && keyword != "property" &&
+      keyword != "comment" && keyword != "obj_info" && keyword != "end_header")
+    {
+      error = "'" + path + "': not a PLY header line: '" + line.substr(0, 80) + "'";
+      return false;
+    }
     if (keyword == "format")
     {
-      std::string f;
-      words >> f;
+      std::string f, version;
+      words >> f >> version;
       if (f != "ascii" && f != "binary_little_endian" && f != "binary_big_endian")
       {
         error = "'" + path + "': unknown format '" + f + "'";
         return false;
       }
+      if (formatSeen || version != "1.0")
+      {
+        error = "'" + path + "': bad format line '" + line.substr(0, 80) + "'";
+        return false;
+      }
+      formatSeen = true;
       format = f == "ascii" ? Format::Ascii
                             : (f == "binary_big_endian" ? Format::BinaryBig : Format::BinaryLittle);
     }
@@ -202,6 +219,11 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
   if (!in)
   {
     error = "'" + path + "': no end_header line";
+    return false;
+  }
+  if (!formatSeen)
+  {
+    error = "'" + path + "': no format line";
     return false;
   }
   // The file must hold at least the fixed-size part of every element (in ascii, a digit and a

@@ -298,8 +298,8 @@ void CheckWindingNumbers(const TriangleMesh& mesh,
     {
       closed = closed && (c.ShapeId != w.ShapeIds[s] || c.Closed);
     }
-    const bool exact = closed && ls >= 0 && labels.ShapeConsistent[ls] &&
-      topology.GetNumberOfComponents() == 1;
+    const bool exact =
+      closed && ls >= 0 && labels.ShapeConsistent[ls] && topology.GetNumberOfComponents() == 1;
     double offset = std::numeric_limits<double>::quiet_NaN();
     for (int r = 0; r < nr; ++r)
     {

@@ -104,10 +104,15 @@ TEST(PlyReader, FacesWithoutAVertexListAreAnError)
   EXPECT_NE(r.Error.find("element 'face' has no list property vertex_indices"), std::string::npos)
     << r.Error;
   // Even zero faces need their list: vtkPLYReader crashed on "element face 0" whose property
-  // line was misspelt (so the header named no list), after this check passed.
+  // line was misspelt (so the header named no list), after this check passed. The misspelt line
+  // is refused itself now, and a face element with no property line at all still is.
   r = ReadText("zero-faces-no-list",
     Triangle + "element face 0\nproper)ty list uchar int vertex_indices\nend_header\n" +
       "0 0 0\n1 0 0\n0 1 0\n");
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("not a PLY header line: 'proper)ty"), std::string::npos) << r.Error;
+  r = ReadText(
+    "zero-faces-no-property", Triangle + "element face 0\nend_header\n" + "0 0 0\n1 0 0\n0 1 0\n");
   EXPECT_FALSE(r.Ok);
   EXPECT_NE(r.Error.find("element 'face' has no list property vertex_indices"), std::string::npos)
     << r.Error;
@@ -121,10 +126,17 @@ TEST(PlyReader, FacesWithoutAVertexListAreAnError)
 TEST(PlyReader, PropertiesOutsideAnElementOrWithoutANameAreAnError)
 {
   // Found by fuzzing: a garbled element line left its properties before any element; they were
-  // ignored here, and vtkPLYReader (run next by the scene reader) crashed on them.
+  // ignored here, and vtkPLYReader (run next by the scene reader) crashed on them. The garbled
+  // line itself is refused now; a property before any element still is.
   PlyResult r = ReadText("property-first",
     "ply\nformat ascii 1.0\nelem\xef\xbft vertex 3\nproperty float x\nproperty float y\n"
     "property float z\n" +
+      Faces + TriangleBody);
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("not a PLY header line: 'elem"), std::string::npos) << r.Error;
+  r = ReadText("property-before-element",
+    "ply\nformat ascii 1.0\nproperty float x\nelement vertex 3\nproperty float x\n"
+    "property float y\nproperty float z\n" +
       Faces + TriangleBody);
   EXPECT_FALSE(r.Ok);
   EXPECT_NE(r.Error.find("property line before any element: 'property float x'"), std::string::npos)
@@ -136,6 +148,38 @@ TEST(PlyReader, PropertiesOutsideAnElementOrWithoutANameAreAnError)
   EXPECT_FALSE(r.Ok);
   EXPECT_NE(r.Error.find("property without a name: 'property float'"), std::string::npos)
     << r.Error;
+}
+
+TEST(PlyReader, OnlyPlyHeaderLinesAreRead)
+{
+  // Found by fuzzing the scene reader: a header with lines of no PLY keyword (a scene's JSON
+  // pasted in, a second 'ply' line) was read here line by line, skipping them, while
+  // vtkPLYReader crashed on it. Every header line must be one of the format's.
+  PlyResult r = ReadText("foreign-line",
+    "ply\nformat{\"model\": \"x.ply\"}\nformat ascii 1.0\nelement vertex 3\n"
+    "property float x\nproperty float y\nproperty float z\n" +
+      Faces + TriangleBody);
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("not a PLY header line: 'format{"), std::string::npos) << r.Error;
+  r = ReadText("second-magic", "ply\nply\n" + Triangle.substr(4) + Faces + TriangleBody);
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("not a PLY header line: 'ply'"), std::string::npos) << r.Error;
+  r = ReadText("magic-prefix", "plyx\n" + Triangle.substr(4) + Faces + TriangleBody);
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("no 'ply' magic line"), std::string::npos) << r.Error;
+  r =
+    ReadText("two-formats", "ply\nformat ascii 1.0\n" + Triangle.substr(4) + Faces + TriangleBody);
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("bad format line"), std::string::npos) << r.Error;
+  r = ReadText(
+    "no-format", "ply\n" + Triangle.substr(Triangle.find("element")) + Faces + TriangleBody);
+  EXPECT_FALSE(r.Ok);
+  EXPECT_NE(r.Error.find("no format line"), std::string::npos) << r.Error;
+  // Comments and obj_info lines are header lines.
+  r = ReadText("comments",
+    "ply\ncomment made by hand\nformat ascii 1.0\nobj_info x\n" + Triangle.substr(21) + Faces +
+      TriangleBody);
+  EXPECT_TRUE(r.Ok) << r.Error;
 }
 
 TEST(PlyReader, FilesWithoutVertexOrFaceElementsAreAnError)
