@@ -404,58 +404,9 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
         }
         const std::vector<double> degree =
           BoundingDegrees(mesh, arr, out, s, shapeEdges[s], lifts[s]);
-        std::map<int, std::pair<double, double>> curveDegree; // curve -> (sum, length)
-        if (round == 0)
-        {
-          for (size_t e = 0; e < shapeEdges[s].size(); ++e)
-          {
-            const Traversal& t = shapeEdges[s][e];
-            const double length =
-              Distance(arr.GetPosition(mesh, t.From), arr.GetPosition(mesh, t.To));
-            curveDegree[t.Curve].first += length * degree[e];
-            curveDegree[t.Curve].second += length;
-          }
-        }
-        // The second round drops, per curve, runs of consecutive edges that bound nothing and
-        // make up at least a twentieth of the curve: an overshooting tail, not the few edges
-        // next to an open end, where the levels are off by how the gap closes.
-        std::vector<char> drop(shapeEdges[s].size(), 0);
-        if (round == 0)
-        {
-          for (size_t e = 0; e < shapeEdges[s].size(); ++e)
-          {
-            const auto& cd = curveDegree[shapeEdges[s][e].Curve];
-            drop[e] = cd.first < 0.5 * cd.second;
-          }
-        }
-        else
-        {
-          std::map<int, double> curveLength;
-          std::vector<double> length(shapeEdges[s].size());
-          for (size_t e = 0; e < shapeEdges[s].size(); ++e)
-          {
-            const Traversal& t = shapeEdges[s][e];
-            length[e] = Distance(arr.GetPosition(mesh, t.From), arr.GetPosition(mesh, t.To));
-            curveLength[t.Curve] += length[e];
-          }
-          for (size_t e = 0; e < shapeEdges[s].size();)
-          {
-            size_t end = e;
-            double run = 0;
-            while (end < shapeEdges[s].size() && degree[end] < 0.5 &&
-              shapeEdges[s][end].Curve == shapeEdges[s][e].Curve &&
-              (end == e || shapeEdges[s][end].Index == shapeEdges[s][end - 1].Index + 1))
-            {
-              run += length[end];
-              ++end;
-            }
-            if (end > e && run >= 0.05 * curveLength[shapeEdges[s][e].Curve])
-            {
-              std::fill(drop.begin() + e, drop.begin() + end, 1);
-            }
-            e = std::max(end, e + 1);
-          }
-        }
+        const std::vector<char> drop = round == 0
+          ? CurvesThatBoundNothing(mesh, arr, shapeEdges[s], degree)
+          : StretchesThatBoundNothing(mesh, arr, shapeEdges[s], degree);
         std::vector<Traversal> kept;
         for (size_t e = 0; e < shapeEdges[s].size(); ++e)
         {
@@ -581,7 +532,7 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
     std::map<std::pair<int, int>, double> keptDegree;
     for (size_t e = 0; e < shapeEdges[s].size(); ++e)
     {
-      keptDegree[{ shapeEdges[s][e].Curve, shapeEdges[s][e].Index }] = degree[e];
+      keptDegree[{ shapeEdges[s][e].Curve, shapeEdges[s][e].Index }] = std::max(0.0, degree[e]);
     }
     for (int c : shapeCurves[s])
     {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -300,14 +301,27 @@ std::vector<double> BoundingDegrees(const TriangleMesh& mesh,
     const Traversal& e = edges[i];
     const int jump = net[key(e.From, e.To)];
     double la = 0, lb = 0, ra = 0, rb = 0;
-    if (jump <= 0 || !ends(e.From, e.To, la, lb))
+    if (jump <= 0)
     {
-      continue; // cancelled by a traversal the other way: no jump, bounds nothing
+      degree[i] = -1.0; // against the net direction, or cancelled: no jump of its own
+      continue;
     }
-    if (!ends(e.To, e.From, rb, ra))
+    const bool left = ends(e.From, e.To, la, lb), right = ends(e.To, e.From, rb, ra);
+    if (!left && !right)
     {
-      ra = la - jump; // along the open boundary: only the left side exists
+      degree[i] = -1.0; // no refined triangle on either side (not an edge of the surface)
+      continue;
+    }
+    // Along the open boundary only one side exists: the other is what the jump would make it.
+    if (!right)
+    {
+      ra = la - jump;
       rb = lb - jump;
+    }
+    if (!left)
+    {
+      la = ra + jump;
+      lb = rb + jump;
     }
     // Read at the ends where the jump is whole: at an open curve's end point it fades to zero
     // (one side), and the edge's other end tells how it bounds; the better of the two counts.
@@ -323,6 +337,78 @@ std::vector<double> BoundingDegrees(const TriangleMesh& mesh,
     degree[i] = best >= 0.0 ? best : degreeAt(0.5 * (la + lb), 0.5 * (ra + rb), jump);
   }
   return degree;
+}
+
+std::vector<char> CurvesThatBoundNothing(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const std::vector<Traversal>& edges,
+  const std::vector<double>& degree)
+{
+  std::map<int, std::pair<double, double>> curveDegree; // curve -> (sum, counted length)
+  for (size_t e = 0; e < edges.size(); ++e)
+  {
+    if (degree[e] >= 0.0)
+    {
+      const double length =
+        Distance(arr.GetPosition(mesh, edges[e].From), arr.GetPosition(mesh, edges[e].To));
+      curveDegree[edges[e].Curve].first += length * degree[e];
+      curveDegree[edges[e].Curve].second += length;
+    }
+  }
+  std::vector<char> drop(edges.size(), 0);
+  for (size_t e = 0; e < edges.size(); ++e)
+  {
+    const auto it = curveDegree.find(edges[e].Curve);
+    drop[e] = it != curveDegree.end() && it->second.second > 0 &&
+      it->second.first < 0.5 * it->second.second;
+  }
+  return drop;
+}
+
+std::vector<char> StretchesThatBoundNothing(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const std::vector<Traversal>& edges,
+  const std::vector<double>& degree)
+{
+  std::map<int, double> curveLength;
+  std::vector<double> length(edges.size());
+  for (size_t e = 0; e < edges.size(); ++e)
+  {
+    length[e] = Distance(arr.GetPosition(mesh, edges[e].From), arr.GetPosition(mesh, edges[e].To));
+    curveLength[edges[e].Curve] += length[e];
+  }
+  auto key = [](int a, int b)
+  {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+      static_cast<std::uint32_t>(std::max(a, b));
+  };
+  std::unordered_set<std::uint64_t> droppedKeys;
+  for (size_t e = 0; e < edges.size();)
+  {
+    size_t end = e;
+    double run = 0;
+    while (end < edges.size() && degree[end] >= 0.0 && degree[end] < 0.5 &&
+      edges[end].Curve == edges[e].Curve &&
+      (end == e || edges[end].Index == edges[end - 1].Index + 1))
+    {
+      run += length[end];
+      ++end;
+    }
+    if (end > e && run >= 0.05 * curveLength[edges[e].Curve])
+    {
+      for (size_t i = e; i < end; ++i)
+      {
+        droppedKeys.insert(key(edges[i].From, edges[i].To));
+      }
+    }
+    e = std::max(end, e + 1);
+  }
+  std::vector<char> drop(edges.size(), 0);
+  for (size_t e = 0; e < edges.size(); ++e)
+  {
+    drop[e] = droppedKeys.count(key(edges[e].From, edges[e].To)) != 0;
+  }
+  return drop;
 }
 
 } // namespace boolsurf

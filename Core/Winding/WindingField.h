@@ -72,13 +72,31 @@ void BuildField(const TriangleMesh& mesh,
 /// at integer levels R and R + J, while a spur, an overshoot or an isolated arc sits at the
 /// middle of a level, (L + R - J) / 2 half-way between integers. The degree is
 /// 1 - 2 * distance((L + R - J) / 2, integers), read at the edge's ends where the jump is whole
-/// (not at an open curve's end point, where it fades), the better of the two.
+/// (not at an open curve's end point, where it fades), the better of the two. -1 for a
+/// traversal that imposes no jump of its own: against the edge's net direction, or cancelled
+/// by one the other way (a curve retracing itself).
 std::vector<double> BoundingDegrees(const TriangleMesh& mesh,
   const Arrangement& arr,
   const WindingResult& field,
   int s,
   const std::vector<Traversal>& edges,
   const JumpLift& lift);
+
+/// The traversals of the curves that bound nothing on the whole: a curve whose counted
+/// traversals (degree >= 0) have a length-weighted degree below 1/2 (a spur, an isolated arc).
+std::vector<char> CurvesThatBoundNothing(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const std::vector<Traversal>& edges,
+  const std::vector<double>& degree);
+
+/// The traversals of stretches that bound nothing: runs of consecutive counted traversals of a
+/// curve with degree below 1/2 making up at least a twentieth of the curve (an overshooting
+/// tail, not the few edges next to an open end). Every traversal of a dropped edge goes, so no
+/// traversal the other way is left without its partner.
+std::vector<char> StretchesThatBoundNothing(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const std::vector<Traversal>& edges,
+  const std::vector<double>& degree);
 
 } // namespace boolsurf
 
