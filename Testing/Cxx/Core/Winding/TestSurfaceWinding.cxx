@@ -246,20 +246,12 @@ TEST(SurfaceWinding, ClosedPolygonsOnAFlatMeshEqualTheLabels)
   EXPECT_LT(w.Curves[4].Residual, 1e-9);
 }
 
-TEST(SurfaceWinding, ARetracedSpikeIsNotDroppedWithItsLoop)
+/// One closed polygon of shape 0 on a flat mesh: w equals its labels, nothing dropped.
+void ExpectOneClosedPolygonKeptAsLabeled(const TriangleMesh& mesh, const std::vector<Vec2>& polygon)
 {
-  // Found by fuzzing: a closed curve that runs out along a line, round a loop and back along
-  // the same line. Its retraced stretches cancel (no jump, no say in whether it bounds); it
-  // bounds its loop, and was dropped as a whole when they counted as bounding nothing.
-  const TriangleMesh mesh = MeshOf(MakeFlatSquare(20, 10.0, 0.45, 17));
   FlatPolygonTracer tracer(mesh);
   std::vector<TracedCurve> curves(1);
-  ASSERT_TRUE(tracer.Trace(
-    { { 1.2, 5.1 }, { 5.3, 5.1 }, { 6.2, 3.9 }, { 7.6, 5.0 }, { 6.1, 6.4 }, { 5.3, 5.1 } },
-    true,
-    0,
-    0,
-    curves[0]));
+  ASSERT_TRUE(tracer.Trace(polygon, true, 0, 0, curves[0]));
   const Arrangement arr = Arrange(mesh, curves);
   const WindingResult w = Wind(mesh, arr, curves);
   EXPECT_LT(LargestLabelError(mesh, curves, arr, w), 1e-8);
@@ -267,25 +259,22 @@ TEST(SurfaceWinding, ARetracedSpikeIsNotDroppedWithItsLoop)
   EXPECT_EQ(w.Times.DroppedEdges, 0);
 }
 
+TEST(SurfaceWinding, ARetracedSpikeIsNotDroppedWithItsLoop)
+{
+  // Found by fuzzing: a closed curve that runs out along a line, round a loop and back along
+  // the same line. Its retraced stretches cancel (no jump, no say in whether it bounds); it
+  // bounds its loop, and was dropped as a whole when they counted as bounding nothing.
+  ExpectOneClosedPolygonKeptAsLabeled(MeshOf(MakeFlatSquare(20, 10.0, 0.45, 17)),
+    { { 1.2, 5.1 }, { 5.3, 5.1 }, { 6.2, 3.9 }, { 7.6, 5.0 }, { 6.1, 6.4 }, { 5.3, 5.1 } });
+}
+
 TEST(SurfaceWinding, ClockwiseAlongTheBoundaryIsNotDropped)
 {
   // Found by fuzzing: a curve running along the open boundary with the surface on its right
   // (clockwise round a corner region) has no refined triangle on its left there; its degree was
   // read as 0 and the whole curve dropped.
-  const TriangleMesh mesh = MeshOf(MakeFlatSquare(10, 10.0, 0.0));
-  FlatPolygonTracer tracer(mesh);
-  std::vector<TracedCurve> curves(1);
-  ASSERT_TRUE(tracer.Trace(
-    { { 0.0, 0.0 }, { 0.0, 4.0 }, { 0.0, 6.0 }, { 0.0, 4.0 }, { 3.3, 2.7 }, { 5.0, 0.0 } },
-    true,
-    0,
-    0,
-    curves[0]));
-  const Arrangement arr = Arrange(mesh, curves);
-  const WindingResult w = Wind(mesh, arr, curves);
-  EXPECT_LT(LargestLabelError(mesh, curves, arr, w), 1e-8);
-  EXPECT_TRUE(w.Curves[0].Bounds);
-  EXPECT_EQ(w.Times.DroppedEdges, 0);
+  ExpectOneClosedPolygonKeptAsLabeled(MeshOf(MakeFlatSquare(10, 10.0, 0.0)),
+    { { 0.0, 0.0 }, { 0.0, 4.0 }, { 0.0, 6.0 }, { 0.0, 4.0 }, { 3.3, 2.7 }, { 5.0, 0.0 } });
 }
 
 TEST(SurfaceWinding, LatitudeOnASphereEqualsTheLabels)
