@@ -2,6 +2,7 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
+#include "Mesh/ParallelRange.h"
 #include "Selection/RegionExtraction.h"
 #include "vtkBoolSurfArrangementOutput.h"
 #include "vtkBoolSurfControlOutput.h"
@@ -201,7 +202,7 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   std::vector<boolsurf::LevelSetLoop> loops;
   std::vector<int> loopShape;
   if (!boolsurf::ExtractCompletedLoops(
-        mesh, arr, winding, this->Threshold, loops, loopShape, error))
+        mesh, arr, winding, this->Threshold, this->NumberOfThreads, loops, loopShape, error))
   {
     error = "Completed curves: " + error;
     return false;
@@ -223,13 +224,28 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   }
   // Port 0: w per point, per triangle (the refined triangles but holes, in order, as
   // WriteArrangementSurface writes them), per cell.
+  // (Over blocks of points and triangles on the filter's threads: each writes its own tuples,
+  // so the arrays do not depend on the threads; one triangle's corners are read once for all
+  // shapes.)
   const int np = arr.GetNumberOfPoints();
   auto pointW = PerShapeArray(boolsurf::names::WindingNumber, np, labels);
-  for (int p = 0; p < np; ++p)
   {
+    std::vector<double> values(np);
     for (int s = 0; s < ns; ++s)
     {
-      pointW->SetTypedComponent(p, s, winding.Point(s, p));
+      winding.WritePoints(s, np, values.data());
+      boolsurf::ParallelBlocks(
+        this->NumberOfThreads,
+        np > 65536,
+        np,
+        [&](int first, int last)
+        {
+          for (int p = first; p < last; ++p)
+          {
+            pointW->SetTypedComponent(p, s, values[p]);
+          }
+        },
+        16384);
     }
   }
   const int nr = arr.GetNumberOfTriangles();
@@ -250,17 +266,39 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   }
   const vtkIdType nt = static_cast<vtkIdType>(written.size());
   auto cellW = PerShapeArray(boolsurf::names::WindingNumber, nt, labels);
+  std::vector<char> inRegion(nt, 0);
+  boolsurf::ParallelBlocks(
+    this->NumberOfThreads,
+    nt > 65536,
+    static_cast<int>(nt),
+    [&](int first, int last)
+    {
+      for (int t = first; t < last; ++t)
+      {
+        const int r = written[t];
+        const boolsurf::Triangle tri = arr.GetTriangle(mesh, r);
+        const int slot = winding.JumpSlot[r];
+        bool in = false;
+        for (int s = 0; s < ns; ++s)
+        {
+          double sum = winding.Base(s, tri[0]) + winding.Base(s, tri[1]) + winding.Base(s, tri[2]);
+          if (slot >= 0)
+          {
+            const double* lift = winding.CornerLift[s].data() + 3 * slot;
+            sum += lift[0] + lift[1] + lift[2];
+          }
+          const double w = sum / 3.0;
+          cellW->SetTypedComponent(t, s, w);
+          in = in || w >= this->Threshold;
+        }
+        inRegion[t] = in;
+      }
+    },
+    8192);
   std::vector<int> inside; // refined triangles of the region
   for (vtkIdType t = 0; t < nt; ++t)
   {
-    bool in = false;
-    for (int s = 0; s < ns; ++s)
-    {
-      const double w = winding.Triangle(arr, mesh, s, written[t]);
-      cellW->SetTypedComponent(t, s, w);
-      in = in || w >= this->Threshold;
-    }
-    if (in)
+    if (inRegion[t])
     {
       inside.push_back(written[t]);
     }

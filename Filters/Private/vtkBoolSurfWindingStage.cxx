@@ -1,5 +1,7 @@
 #include "vtkBoolSurfWindingStage.h"
 
+#include "Mesh/ParallelRange.h"
+
 #include "vtkBoolSurfArrayNames.h"
 
 #include <vtkCellData.h>
@@ -125,25 +127,45 @@ bool ExtractCompletedLoops(const TriangleMesh& mesh,
   const Arrangement& arr,
   const WindingResult& result,
   double threshold,
+  int threads,
   std::vector<LevelSetLoop>& loops,
   std::vector<int>& loopShape,
   std::string& error)
 {
   loops.clear();
   loopShape.clear();
-  for (int s = 0; s < result.GetNumberOfShapes(); ++s)
-  {
-    LevelSetInput input;
-    input.Threshold = threshold;
-    input.CornerValue = [&](int r, int k) { return result.Corner(arr, mesh, s, r, k); };
-    input.JumpTriangles = &result.JumpTriangles;
-    std::vector<LevelSetLoop> shapeLoops;
-    if (!ExtractLevelSet(mesh, arr, input, shapeLoops, error))
+  // The shapes' level sets are independent: extracted on the threads, gathered in shape order.
+  const int ns = result.GetNumberOfShapes();
+  std::vector<std::vector<LevelSetLoop>> shapeLoops(ns);
+  std::vector<std::string> errors(ns);
+  ParallelBlocks(
+    threads,
+    ns > 1,
+    ns,
+    [&](int first, int last)
     {
-      error = "the level set of shape " + std::to_string(result.ShapeIds[s]) + ": " + error;
+      for (int s = first; s < last; ++s)
+      {
+        LevelSetInput input;
+        input.Threshold = threshold;
+        input.CornerValue = [&](int r, int k) { return result.Corner(arr, mesh, s, r, k); };
+        input.JumpTriangles = &result.JumpTriangles;
+        if (!ExtractLevelSet(mesh, arr, input, shapeLoops[s], errors[s]))
+        {
+          errors[s] =
+            "the level set of shape " + std::to_string(result.ShapeIds[s]) + ": " + errors[s];
+        }
+      }
+    },
+    1);
+  for (int s = 0; s < ns; ++s)
+  {
+    if (!errors[s].empty())
+    {
+      error = errors[s];
       return false;
     }
-    for (LevelSetLoop& loop : shapeLoops)
+    for (LevelSetLoop& loop : shapeLoops[s])
     {
       loops.push_back(std::move(loop));
       loopShape.push_back(s);
@@ -203,7 +225,8 @@ bool CloseBrokenShapes(SurfaceWinding& winding,
   }
   std::vector<LevelSetLoop> loops;
   std::vector<int> loopShape;
-  if (!ExtractCompletedLoops(mesh, arrangement, result, options.Threshold, loops, loopShape, error))
+  if (!ExtractCompletedLoops(
+        mesh, arrangement, result, options.Threshold, options.Threads, loops, loopShape, error))
   {
     error = "CloseBrokenShapes: " + error;
     return false;

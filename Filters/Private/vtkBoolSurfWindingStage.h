@@ -47,11 +47,13 @@ std::string DescribeWindingCurve(const WindingCurveReport& report);
 
 /// The level set {w = threshold} of every computed shape of `result` (on `arr`, the arrangement
 /// the winding numbers were computed on), shape after shape: loopShape[i] is the index in
-/// result.ShapeIds of loops[i]. False with the level set's message, naming the shape.
+/// result.ShapeIds of loops[i]. The shapes are extracted on `threads` threads (0: all), the
+/// result the same whatever their number. False with the level set's message, naming the shape.
 bool ExtractCompletedLoops(const TriangleMesh& mesh,
   const Arrangement& arr,
   const WindingResult& result,
   double threshold,
+  int threads,
   std::vector<LevelSetLoop>& loops,
   std::vector<int>& loopShape,
   std::string& error);
