@@ -10,11 +10,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <memory>
-#include <unordered_map>
-#include <unordered_set>
 
 namespace boolsurf
 {
@@ -329,14 +326,21 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
   std::vector<JumpLift> lifts(ns);
   double liftTime = 0, solveTime = 0, fieldTime = 0;
   std::vector<std::shared_ptr<const std::vector<double>>> columns(ns);
+  // Shapes whose curve edges changed since their last lift and solve: all at first (refined ids
+  // change with any edit), then those a round of drops touched.
+  std::vector<char> changed(ns, 1);
   auto solveField = [&]()
   {
-    // Lifts for every shape (refined ids change with any edit); loads and back-substitutions
-    // for the shapes not reused, all at once.
+    // Lifts for the changed shapes; loads and back-substitutions for those not reused, all at
+    // once.
     auto t0 = std::chrono::steady_clock::now();
     std::vector<int> solving;
     for (int s = 0; s < ns; ++s)
     {
+      if (!changed[s])
+      {
+        continue;
+      }
       CurveEdgeList edges;
       for (const Traversal& e : shapeEdges[s])
       {
@@ -385,8 +389,21 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
     }
     BuildField(mesh, arr, system, shapes, shapeEdges, lifts, columns, knownShift, out);
     fieldTime += Seconds(t0);
+    std::fill(changed.begin(), changed.end(), 0);
   };
   solveField();
+  // Each shape's bounding degrees at the current field, kept until its edges change.
+  std::vector<std::vector<double>> degrees(ns);
+  std::vector<char> degreesKnown(ns, 0);
+  auto degreesOf = [&](int s) -> const std::vector<double>&
+  {
+    if (!degreesKnown[s])
+    {
+      degrees[s] = BoundingDegrees(mesh, arr, out, s, shapeEdges[s], lifts[s]);
+      degreesKnown[s] = 1;
+    }
+    return degrees[s];
+  };
   if (options.RemoveNonBounding)
   {
     // First whole curves that bound nothing on the whole (spurs, isolated arcs): a spur
@@ -402,8 +419,7 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
         {
           continue;
         }
-        const std::vector<double> degree =
-          BoundingDegrees(mesh, arr, out, s, shapeEdges[s], lifts[s]);
+        const std::vector<double>& degree = degreesOf(s);
         const std::vector<char> drop = round == 0
           ? CurvesThatBoundNothing(mesh, arr, shapeEdges[s], degree)
           : StretchesThatBoundNothing(mesh, arr, shapeEdges[s], degree);
@@ -415,7 +431,12 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
             kept.push_back(shapeEdges[s][e]);
           }
         }
-        any = any || kept.size() != shapeEdges[s].size();
+        if (kept.size() != shapeEdges[s].size())
+        {
+          any = true;
+          changed[s] = 1;
+          degreesKnown[s] = 0;
+        }
         droppedEdges += static_cast<int>(shapeEdges[s].size() - kept.size());
         shapeEdges[s].swap(kept);
       }
@@ -527,8 +548,7 @@ bool SurfaceWinding::Compute(const TriangleMesh& mesh,
   // Residual per curve: the share of its length that does not bound, at the final field.
   for (int s = 0; s < ns; ++s)
   {
-    const std::vector<double> degree = BoundingDegrees(mesh, arr, out, s, shapeEdges[s], lifts[s]);
-    std::map<int, std::pair<double, double>> perCurve; // curve -> (bounding, total length)
+    const std::vector<double>& degree = degreesOf(s);
     std::map<std::pair<int, int>, double> keptDegree;
     for (size_t e = 0; e < shapeEdges[s].size(); ++e)
     {
