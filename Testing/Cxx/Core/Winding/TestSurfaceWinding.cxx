@@ -92,6 +92,26 @@ WindingResult Wind(const TriangleMesh& mesh,
   return w;
 }
 
+/// meshes/ of the shared collection (BOOLSURF_SHARED_DATA), empty when it is not there.
+std::filesystem::path SharedMeshFolder()
+{
+  const char* shared = std::getenv("BOOLSURF_SHARED_DATA");
+  const std::filesystem::path folder =
+    shared ? std::filesystem::path(shared) / "meshes" : std::filesystem::path();
+  return shared && std::filesystem::exists(folder) ? folder : std::filesystem::path();
+}
+
+/// Mesh `name` of the shared collection; a failure names the file and the reason.
+::testing::AssertionResult ReadSharedMesh(const char* name, MeshData& out)
+{
+  std::string error;
+  if (ReadPly((SharedMeshFolder() / name).string(), out, error))
+  {
+    return ::testing::AssertionSuccess();
+  }
+  return ::testing::AssertionFailure() << error;
+}
+
 /// Corners of the axis-aligned box of `points`.
 void BoundingBox(const std::vector<Vec3>& points, Vec3& lo, Vec3& hi)
 {
@@ -566,17 +586,14 @@ TEST(SurfaceWinding, BrokenLoopsOnASphereATorusAndScans)
       EXPECT_LE(BrokenLoopDifference(mesh, loop[0], pieces, 0.04, winding), 0.01) << pieces;
     }
   }
-  const char* shared = std::getenv("BOOLSURF_SHARED_DATA");
-  if (!shared || !std::filesystem::exists(std::filesystem::path(shared) / "meshes"))
+  if (SharedMeshFolder().empty())
   {
     GTEST_SKIP() << "BOOLSURF_SHARED_DATA (../shared/data) is not available: scans skipped";
   }
   for (const char* name : { "kitten.ply", "spot.ply", "fertility.ply" })
   {
     MeshData d;
-    std::string error;
-    ASSERT_TRUE(ReadPly((std::filesystem::path(shared) / "meshes" / name).string(), d, error))
-      << error;
+    ASSERT_TRUE(ReadSharedMesh(name, d));
     const TriangleMesh mesh = MeshOf(d);
     Vec3 lo, hi;
     BoundingBox(d.Positions, lo, hi);
@@ -746,17 +763,14 @@ TEST(SurfaceWinding, OpenCylinderBandEqualsTheLabels)
 
 TEST(SurfaceWinding, SharedScansEqualTheLabels)
 {
-  const char* shared = std::getenv("BOOLSURF_SHARED_DATA");
-  if (!shared || !std::filesystem::exists(std::filesystem::path(shared) / "meshes"))
+  if (SharedMeshFolder().empty())
   {
     GTEST_SKIP() << "BOOLSURF_SHARED_DATA (../shared/data) is not available";
   }
   for (const char* name : { "stanford-bunny.ply", "kitten.ply", "fertility.ply" })
   {
     MeshData d;
-    std::string error;
-    ASSERT_TRUE(ReadPly((std::filesystem::path(shared) / "meshes" / name).string(), d, error))
-      << error;
+    ASSERT_TRUE(ReadSharedMesh(name, d));
     const TriangleMesh mesh = MeshOf(d);
     Vec3 lo, hi;
     BoundingBox(d.Positions, lo, hi);
