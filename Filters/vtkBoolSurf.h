@@ -6,7 +6,10 @@
  * polygons on the surface (vtkBoolSurfTraceCurves), arrange the curves
  * (vtkBoolSurfArrangement), label the cells with winding numbers (vtkBoolSurfLabeling) and
  * select the result of a Boolean operation (vtkBoolSurfBoolean). Its properties are those of
- * the stages; see their documentation for the details.
+ * the stages; see their documentation for the details. The trace settings (Resolution,
+ * ProjectionTolerance, GeodesicMethod, NumberOfThreads) are vtkBoolSurfTracingAlgorithm's:
+ * they also trace the curves resolved or offset first and the control points of ports 2 and 3,
+ * and NumberOfThreads is the arrangement's too.
  *
  * Inputs: port 0 the surface, port 1 the control polygons (cell data `ShapeId`,
  * `CurveType`; optional point data `TriangleId`/`Barycentric`). Outputs: port 0 the selected
