@@ -180,12 +180,12 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
     surfaceInput->GetMTime(),
     curvesInput,
     curvesInput ? curvesInput->GetMTime() : 0,
-    this->Resolution,
-    this->GeodesicMethod,
-    this->ProjectionTolerance,
+    this->GetResolution(),
+    this->GetGeodesicMethod(),
+    this->GetProjectionTolerance(),
     this->ZeroCellMode,
     { this->ZeroCellPoint[0], this->ZeroCellPoint[1], this->ZeroCellPoint[2] },
-    this->NumberOfThreads,
+    this->GetNumberOfThreads(),
     this->ResolveStrategy,
     this->ResolveOffset,
     this->OffsetShape,
@@ -231,10 +231,10 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     boolsurf::CurveTracer& tracer = this->GetSurfaceCache().GetTracer();
     solver = &tracer.GetPathSolver();
-    solver->SetMethod(static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod));
-    cutSolvers = tracer.GetSolvers(this->NumberOfThreads);
+    solver->SetMethod(this->GetTraceOptions().Method);
+    cutSolvers = tracer.GetSolvers(this->GetNumberOfThreads());
   }
-  in.Output.Threads = this->NumberOfThreads;
+  in.Output.Threads = this->GetNumberOfThreads();
   if (!boolsurf::WriteSelectedCells(*surface,
         in.Arrangement,
         in.Sources,
@@ -310,11 +310,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   }
   // 2. tracing
   const Clock::time_point traceStart = Clock::now();
-  boolsurf::TraceOptions traceOptions;
-  traceOptions.Resolution = this->Resolution;
-  traceOptions.ProjectionTolerance = this->ProjectionTolerance;
-  traceOptions.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
-  traceOptions.Threads = this->NumberOfThreads;
+  boolsurf::TraceOptions traceOptions = this->GetTraceOptions();
   std::vector<std::string> notes;
   // Optional first step: resolve inconsistent shapes, then trace the resolved curves.
   in.ResolutionNotes.clear();
@@ -324,9 +320,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     boolsurf::ResolveStageOptions resolve;
     resolve.Strategy = static_cast<boolsurf::ResolveStrategy>(this->ResolveStrategy);
     resolve.Offset = this->ResolveOffset;
-    resolve.Resolution = this->Resolution;
-    resolve.ProjectionTolerance = this->ProjectionTolerance;
-    resolve.Method = traceOptions.Method;
+    resolve.Trace = traceOptions;
     if (!boolsurf::ResolveControlCurves(
           this->GetSurfaceCache(), curvesInput, resolve, resolved, notes, error))
     {
@@ -334,7 +328,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
       return false;
     }
     if (auto* list = vtkStringArray::SafeDownCast(
-          resolved->GetFieldData()->GetAbstractArray("ResolutionNotes")))
+          resolved->GetFieldData()->GetAbstractArray(boolsurf::names::ResolutionNotes)))
     {
       for (vtkIdType i = 0; i < list->GetNumberOfValues(); ++i)
       {
@@ -353,17 +347,14 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     options.Shapes = { this->OffsetShape };
     options.OutputShapeId = this->OffsetShape;
     options.ReplaceShapes = true;
-    options.Resolution = this->Resolution;
-    options.ProjectionTolerance = this->ProjectionTolerance;
-    options.Method = traceOptions.Method;
-    options.Threads = this->NumberOfThreads;
+    options.Trace = traceOptions;
     if (!boolsurf::OffsetControlCurves(
           this->GetSurfaceCache(), curvesInput, options, offset, notes, error))
     {
       error = "OffsetShape: " + error;
       return false;
     }
-    in.OffsetStatistics = offset->GetFieldData()->GetArray("OffsetStatistics");
+    in.OffsetStatistics = offset->GetFieldData()->GetArray(boolsurf::names::OffsetStatistics);
     curvesInput = offset;
   }
   const bool ok = boolsurf::TraceControlCurves(this->GetSurfaceCache(),
@@ -410,7 +401,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     boolsurf::CloseShapesOptions close;
     close.Shapes = closing;
     close.Threshold = this->WindingThreshold;
-    close.Threads = this->NumberOfThreads;
+    close.Threads = this->GetNumberOfThreads();
     std::vector<std::string> warnings;
     if (!boolsurf::CloseBrokenShapes(in.Winding,
           *surface.Mesh,
@@ -439,7 +430,7 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
 
   // 3. arrangement, into the buffers of the previous edit
   boolsurf::ArrangementOptions options;
-  options.Threads = this->NumberOfThreads;
+  options.Threads = this->GetNumberOfThreads();
   if (!boolsurf::ComputeArrangement(*surface.Mesh, in.Curves, options, in.Arrangement, error))
   {
     error = "Arrangement failed: " + error;
@@ -543,7 +534,7 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
   if (!in.ResolutionNotes.empty())
   {
     vtkNew<vtkStringArray> notes;
-    notes->SetName("ResolutionNotes");
+    notes->SetName(boolsurf::names::ResolutionNotes);
     for (const std::string& n : in.ResolutionNotes)
     {
       notes->InsertNextValue(n);
@@ -598,9 +589,6 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
 void vtkBoolSurf::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Resolution: " << this->Resolution << "\n";
-  os << indent << "GeodesicMethod: " << this->GeodesicMethod << " ("
-     << GetGeodesicMethodName(this->GeodesicMethod) << ")\n";
   os << indent << "Operation: " << this->Operation << "\n";
   os << indent << "ShapeA: " << this->ShapeA << " ShapeB: " << this->ShapeB << "\n";
   os << indent << "Expression: " << this->Expression << "\n";

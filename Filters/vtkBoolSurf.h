@@ -6,7 +6,10 @@
  * polygons on the surface (vtkBoolSurfTraceCurves), arrange the curves
  * (vtkBoolSurfArrangement), label the cells with winding numbers (vtkBoolSurfLabeling) and
  * select the result of a Boolean operation (vtkBoolSurfBoolean). Its properties are those of
- * the stages; see their documentation for the details.
+ * the stages; see their documentation for the details. The trace settings (Resolution,
+ * ProjectionTolerance, GeodesicMethod, NumberOfThreads) are vtkBoolSurfTracingAlgorithm's:
+ * they also trace the curves resolved or offset first and the control points of ports 2 and 3,
+ * and NumberOfThreads is the arrangement's too.
  *
  * Inputs: port 0 the surface, port 1 the control polygons (cell data `ShapeId`,
  * `CurveType`; optional point data `TriangleId`/`Barycentric`). Outputs: port 0 the selected
@@ -47,7 +50,7 @@
 #define vtkBoolSurf_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkBoolSurfAlgorithm.h"
+#include "vtkBoolSurfTracingAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -57,11 +60,11 @@ namespace boolsurf
 struct vtkSurfaceInput;
 }
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurf : public vtkBoolSurfAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurf : public vtkBoolSurfTracingAlgorithm
 {
 public:
   static vtkBoolSurf* New();
-  vtkTypeMacro(vtkBoolSurf, vtkBoolSurfAlgorithm);
+  vtkTypeMacro(vtkBoolSurf, vtkBoolSurfTracingAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -93,43 +96,6 @@ public:
   ///@}
 
   ///@{
-  /// Tracing (see vtkBoolSurfTraceCurves).
-  vtkSetClampMacro(Resolution, int, 0, 16);
-  vtkGetMacro(Resolution, int);
-  vtkSetClampMacro(ProjectionTolerance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(ProjectionTolerance, double);
-  ///@}
-
-  ///@{
-  /// How each geodesic leg is computed (tracing the curves, resolving inconsistent shapes
-  /// and the control points of ports 2 and 3): GEODESIC_BOUNDED (0, default), the shortest path
-  /// in practice at a bounded cost per leg (exact while the exact search stays small, else
-  /// straightened in the homotopy class of a coarse per-surface graph's route);
-  /// GEODESIC_EXACT (1), the exact polyhedral shortest path (can take seconds between far
-  /// points on large meshes); GEODESIC_LOCALLY_SHORTEST (2), the straightened shortest
-  /// mesh-edge path (fastest, not guaranteed to be the shortest). See
-  /// vtkBoolSurfTraceCurves::SetGeodesicMethod.
-  vtkSetClampMacro(GeodesicMethod, int, GEODESIC_BOUNDED, GEODESIC_LOCALLY_SHORTEST);
-  vtkGetMacro(GeodesicMethod, int);
-  void SetGeodesicMethodToBounded() { this->SetGeodesicMethod(GEODESIC_BOUNDED); }
-  void SetGeodesicMethodToExact() { this->SetGeodesicMethod(GEODESIC_EXACT); }
-  void SetGeodesicMethodToLocallyShortest() { this->SetGeodesicMethod(GEODESIC_LOCALLY_SHORTEST); }
-  ///@}
-
-  ///@{
-  /// @deprecated Use SetGeodesicMethod(). Kept for existing scripts: on sets GeodesicMethod to
-  /// GEODESIC_EXACT, off to GEODESIC_LOCALLY_SHORTEST; GetExactGeodesics() is 1 exactly when
-  /// GeodesicMethod is GEODESIC_EXACT.
-  void SetExactGeodesics(vtkTypeBool exact)
-  {
-    this->SetGeodesicMethod(exact ? GEODESIC_EXACT : GEODESIC_LOCALLY_SHORTEST);
-  }
-  vtkTypeBool GetExactGeodesics() { return this->GeodesicMethod == GEODESIC_EXACT ? 1 : 0; }
-  void ExactGeodesicsOn() { this->SetExactGeodesics(1); }
-  void ExactGeodesicsOff() { this->SetExactGeodesics(0); }
-  ///@}
-
-  ///@{
   /// Labeling (see vtkBoolSurfLabeling): 0 automatic, 1 the cell at ZeroCellPoint.
   vtkSetClampMacro(ZeroCellMode, int, 0, 1);
   vtkGetMacro(ZeroCellMode, int);
@@ -156,12 +122,6 @@ public:
   vtkGetCharFromStdStringMacro(Expression);
   vtkSetClampMacro(FillRule, int, 0, 3);
   vtkGetMacro(FillRule, int);
-  ///@}
-
-  ///@{
-  /// Threads for the arrangement's refinement; 0 (default) uses every hardware thread.
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
   ///@}
 
   ///@{
@@ -225,9 +185,6 @@ protected:
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
 
-  int Resolution = 4;
-  int GeodesicMethod = GEODESIC_BOUNDED;
-  double ProjectionTolerance = 0.01;
   int ZeroCellMode = 0;
   double ZeroCellPoint[3] = { 0, 0, 0 };
   int Operation = 0;
@@ -235,7 +192,6 @@ protected:
   int ShapeB = 1;
   std::string Expression = "S0 | S1";
   int FillRule = 0;
-  int NumberOfThreads = 0;
   int Selection = BOOLEAN_SELECTION;
   double SnapTolerance = 0.01;
   int MaxSearchStates = 64;

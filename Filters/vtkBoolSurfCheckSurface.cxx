@@ -1,5 +1,7 @@
 #include "vtkBoolSurfCheckSurface.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "vtkBoolSurfArrayView.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
 
@@ -48,14 +50,14 @@ bool vtkBoolSurfCheckSurface::Execute(const std::vector<vtkPolyData*>& inputs,
   const boolsurf::TriangleMesh& mesh = *surface.Mesh;
   const boolsurf::MeshTopology& topo = *surface.Topology;
 
-  auto componentId = NamedIntArray("ComponentId", mesh.GetNumberOfTriangles(), -1);
+  auto componentId = NamedIntArray(boolsurf::names::ComponentId, mesh.GetNumberOfTriangles(), -1);
   for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
   {
     componentId->SetValue(t, topo.TriangleComponent[t]);
   }
   output->GetCellData()->AddArray(componentId);
 
-  auto loopId = NamedIntArray("BoundaryLoopId", mesh.GetNumberOfVertices(), -1);
+  auto loopId = NamedIntArray(boolsurf::names::BoundaryLoopId, mesh.GetNumberOfVertices(), -1);
   for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
   {
     loopId->SetValue(v, topo.GetVertexBoundaryLoop(v));
@@ -63,25 +65,25 @@ bool vtkBoolSurfCheckSurface::Execute(const std::vector<vtkPolyData*>& inputs,
   output->GetPointData()->AddArray(loopId);
 
   const int nc = topo.GetNumberOfComponents();
-  auto components = NamedIntArray("Components", 1, nc);
-  auto genus = NamedIntArray("Genus", nc, 0);
-  auto loops = NamedIntArray("BoundaryLoops", nc, 0);
-  auto euler = NamedIntArray("EulerCharacteristic", nc, 0);
+  auto components = NamedIntArray(boolsurf::names::Components, 1, nc);
+  auto genus = NamedIntArray(boolsurf::names::Genus, nc, 0);
+  auto loops = NamedIntArray(boolsurf::names::BoundaryLoops, nc, 0);
+  auto euler = NamedIntArray(boolsurf::names::EulerCharacteristic, nc, 0);
   for (int c = 0; c < nc; ++c)
   {
     genus->SetValue(c, topo.Components[c].Genus);
     loops->SetValue(c, topo.Components[c].BoundaryLoops);
     euler->SetValue(c, topo.Components[c].EulerCharacteristic);
   }
-  auto manifold = NamedIntArray("IsManifold", 1, surface.Check.IsManifold ? 1 : 0);
+  auto manifold = NamedIntArray(boolsurf::names::IsManifold, 1, surface.Check.IsManifold ? 1 : 0);
   vtkNew<vtkDoubleArray> loopLength;
-  loopLength->SetName("BoundaryLoopLength");
+  loopLength->SetName(boolsurf::names::BoundaryLoopLength);
   for (const boolsurf::BoundaryLoop& loop : topo.BoundaryLoops)
   {
     loopLength->InsertNextValue(loop.Length);
   }
   vtkNew<vtkStringArray> problems;
-  problems->SetName("Problems");
+  problems->SetName(boolsurf::names::Problems);
   for (const std::string& w : surface.Warnings)
   {
     problems->InsertNextValue("Warning Conversion: " + w);

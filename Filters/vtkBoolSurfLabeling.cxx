@@ -91,7 +91,8 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   // Port 1: the homology generators the arrangement found on the surface.
   // Port 1 depends only on the generators' arrays, which the arrangement writes once per
   // surface: drawn again only when they are other arrays.
-  vtkAbstractArray* key = input->GetFieldData()->GetAbstractArray("HomologyGeneratorPoints");
+  vtkAbstractArray* key =
+    input->GetFieldData()->GetAbstractArray(boolsurf::names::HomologyGeneratorPoints);
   Internals& in = *this->Internal;
   // Without generator arrays (a genus-0 surface) the empty drawing is kept as well.
   const bool unchanged = in.GeneratorsDrawn &&

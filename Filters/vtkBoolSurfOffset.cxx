@@ -70,10 +70,7 @@ bool vtkBoolSurfOffset::Execute(const std::vector<vtkPolyData*>& inputs,
   options.OutputResolution = this->OutputResolution;
   options.OutputShapeId = this->OutputShapeId;
   options.KeepInputCurves = this->KeepInputCurves;
-  options.Resolution = this->Resolution;
-  options.ProjectionTolerance = this->ProjectionTolerance;
-  options.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
-  options.Threads = this->NumberOfThreads;
+  options.Trace = this->GetTraceOptions();
   std::vector<std::string> notes;
   const bool ok = boolsurf::OffsetControlCurves(
     this->GetSurfaceCache(), inputs[1], options, outputs[0], notes, error);
@@ -94,9 +91,4 @@ void vtkBoolSurfOffset::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutputResolution: " << this->OutputResolution << "\n";
   os << indent << "OutputShapeId: " << this->OutputShapeId << "\n";
   os << indent << "KeepInputCurves: " << this->KeepInputCurves << "\n";
-  os << indent << "Resolution: " << this->Resolution << "\n";
-  os << indent << "ProjectionTolerance: " << this->ProjectionTolerance << "\n";
-  os << indent << "GeodesicMethod: " << this->GeodesicMethod << " ("
-     << GetGeodesicMethodName(this->GeodesicMethod) << ")\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

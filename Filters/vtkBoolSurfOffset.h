@@ -42,15 +42,15 @@
 #define vtkBoolSurfOffset_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkBoolSurfAlgorithm.h"
+#include "vtkBoolSurfTracingAlgorithm.h"
 
 #include <string> // for std::string
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfOffset : public vtkBoolSurfAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfOffset : public vtkBoolSurfTracingAlgorithm
 {
 public:
   static vtkBoolSurfOffset* New();
-  vtkTypeMacro(vtkBoolSurfOffset, vtkBoolSurfAlgorithm);
+  vtkTypeMacro(vtkBoolSurfOffset, vtkBoolSurfTracingAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Modes
@@ -124,23 +124,6 @@ public:
   vtkBooleanMacro(KeepInputCurves, bool);
   ///@}
 
-  ///@{
-  /// As in vtkBoolSurfTraceCurves: Bezier subdivision levels, projection tolerance and the
-  /// geodesic method with which the input curves are traced.
-  vtkSetClampMacro(Resolution, int, 0, 16);
-  vtkGetMacro(Resolution, int);
-  vtkSetClampMacro(ProjectionTolerance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(ProjectionTolerance, double);
-  vtkSetClampMacro(GeodesicMethod, int, GEODESIC_BOUNDED, GEODESIC_LOCALLY_SHORTEST);
-  vtkGetMacro(GeodesicMethod, int);
-  ///@}
-
-  ///@{
-  /// Threads of the arrangement of the offset shapes (0: all hardware threads).
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
 protected:
   vtkBoolSurfOffset();
   ~vtkBoolSurfOffset() override;
@@ -158,10 +141,6 @@ protected:
   int OutputResolution = 0;
   int OutputShapeId = -1;
   bool KeepInputCurves = true;
-  int Resolution = 4;
-  double ProjectionTolerance = 0.01;
-  int GeodesicMethod = GEODESIC_BOUNDED;
-  int NumberOfThreads = 0;
 
 private:
   vtkBoolSurfOffset(const vtkBoolSurfOffset&) = delete;

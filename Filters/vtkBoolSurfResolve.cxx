@@ -39,9 +39,7 @@ bool vtkBoolSurfResolve::Execute(const std::vector<vtkPolyData*>& inputs,
   boolsurf::ResolveStageOptions options;
   options.Strategy = static_cast<boolsurf::ResolveStrategy>(this->Strategy);
   options.Offset = this->Offset;
-  options.Resolution = this->Resolution;
-  options.ProjectionTolerance = this->ProjectionTolerance;
-  options.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
+  options.Trace = this->GetTraceOptions();
   if (!boolsurf::ParseShapeStrategies(this->ShapeStrategies, options.PerShape, error))
   {
     return false;
@@ -60,8 +58,4 @@ void vtkBoolSurfResolve::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Strategy: " << this->Strategy << "\n";
   os << indent << "ShapeStrategies: " << this->ShapeStrategies << "\n";
   os << indent << "Offset: " << this->Offset << "\n";
-  os << indent << "Resolution: " << this->Resolution << "\n";
-  os << indent << "ProjectionTolerance: " << this->ProjectionTolerance << "\n";
-  os << indent << "GeodesicMethod: " << this->GeodesicMethod << " ("
-     << GetGeodesicMethodName(this->GeodesicMethod) << ")\n";
 }

@@ -38,16 +38,16 @@
 #define vtkBoolSurfResolve_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkBoolSurfAlgorithm.h"
+#include "vtkBoolSurfTracingAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfResolve : public vtkBoolSurfAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfResolve : public vtkBoolSurfTracingAlgorithm
 {
 public:
   static vtkBoolSurfResolve* New();
-  vtkTypeMacro(vtkBoolSurfResolve, vtkBoolSurfAlgorithm);
+  vtkTypeMacro(vtkBoolSurfResolve, vtkBoolSurfTracingAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Strategies
@@ -76,29 +76,6 @@ public:
   vtkGetMacro(Offset, double);
   ///@}
 
-  ///@{
-  /// As in vtkBoolSurfTraceCurves (used to find each curve's homology class).
-  vtkSetClampMacro(Resolution, int, 0, 16);
-  vtkGetMacro(Resolution, int);
-  vtkSetClampMacro(ProjectionTolerance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(ProjectionTolerance, double);
-  ///@}
-
-  ///@{
-  /// How each geodesic leg is computed when the curves are traced to find their homology classes:
-  /// GEODESIC_BOUNDED (0, default), the shortest path in practice at a bounded cost per leg (exact
-  /// while the exact search stays small, else straightened in the homotopy class of a coarse
-  /// per-surface graph's route); GEODESIC_EXACT (1), the exact polyhedral shortest path (can take
-  /// seconds between far points on large meshes); GEODESIC_LOCALLY_SHORTEST (2), the straightened
-  /// shortest mesh-edge path (fastest, not guaranteed to be the shortest). See
-  /// vtkBoolSurfTraceCurves::SetGeodesicMethod.
-  vtkSetClampMacro(GeodesicMethod, int, GEODESIC_BOUNDED, GEODESIC_LOCALLY_SHORTEST);
-  vtkGetMacro(GeodesicMethod, int);
-  void SetGeodesicMethodToBounded() { this->SetGeodesicMethod(GEODESIC_BOUNDED); }
-  void SetGeodesicMethodToExact() { this->SetGeodesicMethod(GEODESIC_EXACT); }
-  void SetGeodesicMethodToLocallyShortest() { this->SetGeodesicMethod(GEODESIC_LOCALLY_SHORTEST); }
-  ///@}
-
 protected:
   vtkBoolSurfResolve();
   ~vtkBoolSurfResolve() override;
@@ -110,9 +87,6 @@ protected:
   int Strategy = DUPLICATE_REVERSED;
   std::string ShapeStrategies;
   double Offset = 0;
-  int Resolution = 4;
-  double ProjectionTolerance = 0.01;
-  int GeodesicMethod = GEODESIC_BOUNDED;
 
 private:
   vtkBoolSurfResolve(const vtkBoolSurfResolve&) = delete;

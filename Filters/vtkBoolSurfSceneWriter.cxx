@@ -210,7 +210,7 @@ std::vector<Curve> JoinLoops(vtkPolyData* input,
   std::vector<Curve> curves,
   std::vector<std::string>& notes)
 {
-  vtkDataArray* loopIds = input->GetCellData()->GetArray("BoundaryLoop");
+  vtkDataArray* loopIds = input->GetCellData()->GetArray(boolsurf::names::BoundaryLoop);
   if (!loopIds)
   {
     return curves;
@@ -282,9 +282,9 @@ std::vector<int> PolygonIndices(vtkPolyData* input, const std::vector<Curve>& cu
 /// `operations` from field data OperationA/B/Type (as the reader puts them), or none.
 std::optional<std::vector<boolsurf::SceneOperation>> OperationsOf(vtkFieldData* fd)
 {
-  vtkDataArray* a = fd ? fd->GetArray("OperationA") : nullptr;
-  vtkDataArray* b = fd ? fd->GetArray("OperationB") : nullptr;
-  vtkDataArray* type = fd ? fd->GetArray("OperationType") : nullptr;
+  vtkDataArray* a = fd ? fd->GetArray(boolsurf::names::OperationA) : nullptr;
+  vtkDataArray* b = fd ? fd->GetArray(boolsurf::names::OperationB) : nullptr;
+  vtkDataArray* type = fd ? fd->GetArray(boolsurf::names::OperationType) : nullptr;
   if (!a || !b || !type)
   {
     return std::nullopt;
@@ -347,12 +347,12 @@ void vtkBoolSurfSceneWriter::WriteData()
     std::string model = this->MeshReference;
     if (model.empty())
     {
-      const std::string mesh = FieldString(input->GetFieldData(), "MeshFileName");
+      const std::string mesh = FieldString(input->GetFieldData(), boolsurf::names::MeshFileName);
       model = mesh.empty() ? mesh : RelativeToScene(mesh, this->FileName);
     }
     if (model.empty())
     {
-      model = FieldString(input->GetFieldData(), "SceneModel");
+      model = FieldString(input->GetFieldData(), boolsurf::names::SceneModel);
     }
     if (model.empty())
     {

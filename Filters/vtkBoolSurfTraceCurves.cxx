@@ -51,14 +51,10 @@ bool vtkBoolSurfTraceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
     return true; // a drawing being started: nothing to trace yet, and no message
   }
   auto result = std::make_shared<boolsurf::TracedCurvesResult>();
-  boolsurf::TraceOptions options;
-  options.Resolution = this->Resolution;
-  options.ProjectionTolerance = this->ProjectionTolerance;
-  options.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
   std::vector<std::string> notes;
   const bool ok = boolsurf::TraceControlCurves(this->GetSurfaceCache(),
     curvesInput,
-    options,
+    this->GetTraceOptions(),
     this,
     result->Curves,
     output,
@@ -78,7 +74,7 @@ bool vtkBoolSurfTraceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   boolsurf::AddSiteGraphField(*this->GetSurfaceCache().GetCurrent().Mesh, output->GetFieldData());
   // The traced curves in Core form for Surface Arrangement (see vtkBoolSurfStageHandoff.h).
   result->Surface = boolsurf::SurfaceIdentity(surfaceInput);
-  result->Method = options.Method;
+  result->Method = this->GetTraceOptions().Method;
   boolsurf::AttachStageResult<boolsurf::TracedCurvesResult>(
     output->GetPointData()->GetArray(boolsurf::names::TriangleId), std::move(result));
   return true;
@@ -90,7 +86,7 @@ void vtkBoolSurfTraceCurves::RecordFailure(const std::string&,
 {
   // The empty output lists every problem: a script or a downstream filter can tell why.
   vtkNew<vtkStringArray> errors;
-  errors->SetName("TraceErrors");
+  errors->SetName(boolsurf::names::TraceErrors);
   for (const std::string& p : this->Internal->Problems)
   {
     errors->InsertNextValue(p);
@@ -102,8 +98,4 @@ void vtkBoolSurfTraceCurves::RecordFailure(const std::string&,
 void vtkBoolSurfTraceCurves::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Resolution: " << this->Resolution << "\n";
-  os << indent << "GeodesicMethod: " << this->GeodesicMethod << " ("
-     << GetGeodesicMethodName(this->GeodesicMethod) << ")\n";
-  os << indent << "ProjectionTolerance: " << this->ProjectionTolerance << "\n";
 }

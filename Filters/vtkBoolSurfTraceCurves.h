@@ -42,66 +42,21 @@
 #define vtkBoolSurfTraceCurves_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkBoolSurfAlgorithm.h"
+#include "vtkBoolSurfTracingAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfTraceCurves : public vtkBoolSurfAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfTraceCurves : public vtkBoolSurfTracingAlgorithm
 {
 public:
   static vtkBoolSurfTraceCurves* New();
-  vtkTypeMacro(vtkBoolSurfTraceCurves, vtkBoolSurfAlgorithm);
+  vtkTypeMacro(vtkBoolSurfTraceCurves, vtkBoolSurfTracingAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
   /// The surface (port 0) and the control polygons (port 1).
   void SetSurfaceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
   void SetCurvesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
-  ///@}
-
-  ///@{
-  /// De Casteljau subdivision levels of Bezier splines (default 4: 16 pieces per segment).
-  vtkSetClampMacro(Resolution, int, 0, 16);
-  vtkGetMacro(Resolution, int);
-  ///@}
-
-  ///@{
-  /// Largest allowed distance from a control point to the surface, as a fraction of the
-  /// surface's bounding-box diagonal (default 0.01). Farther points are errors.
-  vtkSetClampMacro(ProjectionTolerance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(ProjectionTolerance, double);
-  ///@}
-
-  ///@{
-  /// How each geodesic leg (between two consecutive points of a geodesic polygon or of a
-  /// Bezier spline's refined control polygon) is computed:
-  ///
-  /// - GEODESIC_BOUNDED (0, default): the shortest path in practice at a bounded cost per leg.
-  ///   The exact search is used while it stays small; past that, the leg is straightened in
-  ///   the homotopy class of the route found on a coarse graph built once per surface.
-  /// - GEODESIC_EXACT (1): the exact polyhedral shortest path (window propagation); it can take
-  ///   seconds between far points on large meshes.
-  /// - GEODESIC_LOCALLY_SHORTEST (2): the shortest mesh-edge path, straightened: the fastest,
-  ///   but with no guarantee of being the shortest (it may pass on the wrong side of a bump, a
-  ///   saddle or a handle).
-  vtkSetClampMacro(GeodesicMethod, int, GEODESIC_BOUNDED, GEODESIC_LOCALLY_SHORTEST);
-  vtkGetMacro(GeodesicMethod, int);
-  void SetGeodesicMethodToBounded() { this->SetGeodesicMethod(GEODESIC_BOUNDED); }
-  void SetGeodesicMethodToExact() { this->SetGeodesicMethod(GEODESIC_EXACT); }
-  void SetGeodesicMethodToLocallyShortest() { this->SetGeodesicMethod(GEODESIC_LOCALLY_SHORTEST); }
-  ///@}
-
-  ///@{
-  /// @deprecated Use SetGeodesicMethod(). Kept for existing scripts: on sets GeodesicMethod to
-  /// GEODESIC_EXACT, off to GEODESIC_LOCALLY_SHORTEST; GetExactGeodesics() is 1 exactly when
-  /// GeodesicMethod is GEODESIC_EXACT.
-  void SetExactGeodesics(vtkTypeBool exact)
-  {
-    this->SetGeodesicMethod(exact ? GEODESIC_EXACT : GEODESIC_LOCALLY_SHORTEST);
-  }
-  vtkTypeBool GetExactGeodesics() { return this->GeodesicMethod == GEODESIC_EXACT ? 1 : 0; }
-  void ExactGeodesicsOn() { this->SetExactGeodesics(1); }
-  void ExactGeodesicsOff() { this->SetExactGeodesics(0); }
   ///@}
 
 protected:
@@ -112,10 +67,6 @@ protected:
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
   void RecordFailure(const std::string& error, const std::vector<vtkPolyData*>& outputs) override;
-
-  int Resolution = 4;
-  double ProjectionTolerance = 0.01;
-  int GeodesicMethod = GEODESIC_BOUNDED;
 
 private:
   vtkBoolSurfTraceCurves(const vtkBoolSurfTraceCurves&) = delete;

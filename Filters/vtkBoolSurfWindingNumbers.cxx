@@ -119,11 +119,7 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   }
   result->Surface = *surface;
   std::vector<boolsurf::TracedCurve>& curves = result->Curves;
-  boolsurf::TraceOptions traceOptions;
-  traceOptions.Resolution = this->Resolution;
-  traceOptions.ProjectionTolerance = this->ProjectionTolerance;
-  traceOptions.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
-  traceOptions.Threads = this->NumberOfThreads;
+  boolsurf::TraceOptions traceOptions = this->GetTraceOptions();
   result->Method = traceOptions.Method;
   std::vector<boolsurf::ControlCurve> controls;
   std::vector<std::string> problems, notes;
@@ -163,7 +159,7 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
 
   // 2. the arrangement (port 0 as Surface Arrangement writes it)
   if (!boolsurf::ArrangeResult(
-        result, result->Sources, this->NumberOfThreads, refined, nullptr, error))
+        result, result->Sources, this->GetNumberOfThreads(), refined, nullptr, error))
   {
     this->Internal->Work = result->Arrangement.Work;
     return false;
@@ -183,7 +179,7 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   options.Shapes = shapes;
   options.RemoveNonBounding = this->RemoveNonBounding;
   options.Threshold = this->Threshold;
-  options.Threads = this->NumberOfThreads;
+  options.Threads = this->GetNumberOfThreads();
   boolsurf::WindingResult winding;
   if (!this->Internal->Winding.Compute(mesh, arr, curves, options, winding, error))
   {
@@ -202,7 +198,7 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   std::vector<boolsurf::LevelSetLoop> loops;
   std::vector<int> loopShape;
   if (!boolsurf::ExtractCompletedLoops(
-        mesh, arr, winding, this->Threshold, this->NumberOfThreads, loops, loopShape, error))
+        mesh, arr, winding, this->Threshold, this->GetNumberOfThreads(), loops, loopShape, error))
   {
     error = "Completed curves: " + error;
     return false;
@@ -235,7 +231,7 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
     {
       winding.WritePoints(s, np, values.data());
       boolsurf::ParallelBlocks(
-        this->NumberOfThreads,
+        this->GetNumberOfThreads(),
         np > 65536,
         np,
         [&](int first, int last)
@@ -268,7 +264,7 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   auto cellW = PerShapeArray(boolsurf::names::WindingNumber, nt, labels);
   std::vector<char> inRegion(nt, 0);
   boolsurf::ParallelBlocks(
-    this->NumberOfThreads,
+    this->GetNumberOfThreads(),
     nt > 65536,
     static_cast<int>(nt),
     [&](int first, int last)
@@ -330,8 +326,12 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   boolsurf::RegionMesh regionMesh;
   boolsurf::RegionExtractor extractor;
   extractor.Extract(
-    inside, np, [&](int r) { return arr.GetTriangle(mesh, r); }, regionMesh, this->NumberOfThreads);
-  boolsurf::WriteRegion(*surface, arr, regionMesh, region, this->NumberOfThreads);
+    inside,
+    np,
+    [&](int r) { return arr.GetTriangle(mesh, r); },
+    regionMesh,
+    this->GetNumberOfThreads());
+  boolsurf::WriteRegion(*surface, arr, regionMesh, region, this->GetNumberOfThreads());
   auto regionW =
     PerShapeArray(boolsurf::names::WindingNumber, static_cast<vtkIdType>(inside.size()), labels);
   for (std::size_t i = 0; i < inside.size(); ++i)
@@ -451,9 +451,4 @@ void vtkBoolSurfWindingNumbers::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Shapes: " << this->Shapes << "\n";
   os << indent << "Threshold: " << this->Threshold << "\n";
   os << indent << "RemoveNonBounding: " << this->RemoveNonBounding << "\n";
-  os << indent << "Resolution: " << this->Resolution << "\n";
-  os << indent << "ProjectionTolerance: " << this->ProjectionTolerance << "\n";
-  os << indent << "GeodesicMethod: " << this->GeodesicMethod << " ("
-     << GetGeodesicMethodName(this->GeodesicMethod) << ")\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -61,16 +61,16 @@
 #define vtkBoolSurfWindingNumbers_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkBoolSurfAlgorithm.h"
+#include "vtkBoolSurfTracingAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfWindingNumbers : public vtkBoolSurfAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfWindingNumbers : public vtkBoolSurfTracingAlgorithm
 {
 public:
   static vtkBoolSurfWindingNumbers* New();
-  vtkTypeMacro(vtkBoolSurfWindingNumbers, vtkBoolSurfAlgorithm);
+  vtkTypeMacro(vtkBoolSurfWindingNumbers, vtkBoolSurfTracingAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -102,23 +102,6 @@ public:
   vtkBooleanMacro(RemoveNonBounding, bool);
   ///@}
 
-  ///@{
-  /// As in vtkBoolSurfTraceCurves: Bezier subdivision levels, projection tolerance and the
-  /// geodesic method with which the input curves are traced.
-  vtkSetClampMacro(Resolution, int, 0, 16);
-  vtkGetMacro(Resolution, int);
-  vtkSetClampMacro(ProjectionTolerance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(ProjectionTolerance, double);
-  vtkSetClampMacro(GeodesicMethod, int, GEODESIC_BOUNDED, GEODESIC_LOCALLY_SHORTEST);
-  vtkGetMacro(GeodesicMethod, int);
-  ///@}
-
-  ///@{
-  /// Threads of the tracing, the arrangement and the winding numbers (0: all hardware threads).
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
   /// The region {w >= Threshold} (port 1).
   vtkPolyData* GetRegionOutput() { return this->GetOutput(1); }
   /// The completed curves (port 2).
@@ -137,10 +120,6 @@ protected:
   std::string Shapes;
   double Threshold = 0.5;
   bool RemoveNonBounding = true;
-  int Resolution = 4;
-  double ProjectionTolerance = 0.01;
-  int GeodesicMethod = GEODESIC_BOUNDED;
-  int NumberOfThreads = 0;
 
 private:
   vtkBoolSurfWindingNumbers(const vtkBoolSurfWindingNumbers&) = delete;

@@ -1,5 +1,7 @@
 #include "pqBoolSurfCurveEditorWidget.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include "pqBoolSurfCurveEditorControls.h"
 #include "pqBoolSurfDrawing.h"
 
@@ -150,7 +152,7 @@ struct Markers
       cone->SetHeight(2.0);
       cone->SetRadius(0.8);
       this->Shape = cone;
-      this->Mapper->SetOrientationArray("Direction");
+      this->Mapper->SetOrientationArray(boolsurf::names::EditorMarkerDirection);
       this->Mapper->SetOrientationModeToDirection();
       this->Mapper->OrientOn();
     }
@@ -165,7 +167,7 @@ struct Markers
     }
     this->Mapper->SetInputData(this->Centers);
     this->Mapper->SetSourceConnection(this->Shape->GetOutputPort());
-    this->Mapper->SetScaleArray("Radius");
+    this->Mapper->SetScaleArray(boolsurf::names::EditorMarkerRadius);
     this->Mapper->SetScaleModeToScaleByMagnitude();
     this->Mapper->ScalingOn();
     this->Mapper->ScalarVisibilityOff();
@@ -178,9 +180,9 @@ struct Markers
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     vtkNew<vtkDoubleArray> radius;
-    radius->SetName("Radius");
+    radius->SetName(boolsurf::names::EditorMarkerRadius);
     vtkNew<vtkDoubleArray> direction;
-    direction->SetName("Direction");
+    direction->SetName(boolsurf::names::EditorMarkerDirection);
     direction->SetNumberOfComponents(3);
     for (const Glyph& g : glyphs)
     {
@@ -738,7 +740,8 @@ vtkSmartPointer<vtkPolyData> pqBoolSurfCurveEditorWidget::FetchControlCurves()
 //------------------------------------------------------------------------------
 void pqBoolSurfCurveEditorWidget::ReadSurfaceNormals(vtkPolyData* output)
 {
-  vtkDataArray* normals = output ? output->GetPointData()->GetArray("SurfaceNormal") : nullptr;
+  vtkDataArray* normals =
+    output ? output->GetPointData()->GetArray(boolsurf::names::SurfaceNormal) : nullptr;
   if (!normals || normals->GetNumberOfComponents() != 3)
   {
     return;
@@ -762,8 +765,10 @@ void pqBoolSurfCurveEditorWidget::ReadBackExactPoints()
 {
   Internals& internal = *this->Internal;
   vtkSmartPointer<vtkPolyData> output = this->FetchControlCurves();
-  vtkDataArray* triangles = output ? output->GetPointData()->GetArray("TriangleId") : nullptr;
-  vtkDataArray* weights = output ? output->GetPointData()->GetArray("Barycentric") : nullptr;
+  vtkDataArray* triangles =
+    output ? output->GetPointData()->GetArray(boolsurf::names::TriangleId) : nullptr;
+  vtkDataArray* weights =
+    output ? output->GetPointData()->GetArray(boolsurf::names::Barycentric) : nullptr;
   if (!triangles || !weights || weights->GetNumberOfComponents() != 2)
   {
     return; // the points stay positions to snap

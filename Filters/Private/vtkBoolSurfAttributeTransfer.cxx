@@ -24,12 +24,12 @@ bool IsBoolSurfArray(const char* name)
     boolsurf::names::SourceTriangle,
     boolsurf::names::Region,
     boolsurf::names::WindingNumber,
-    "Labels",
-    "ComponentId",
-    "BoundaryLoopId",
+    boolsurf::names::Labels,
+    boolsurf::names::ComponentId,
+    boolsurf::names::BoundaryLoopId,
     "vtkOriginalCellIds",
     "vtkOriginalPointIds",
-    "Normals" };
+    boolsurf::names::Normals };
   if (!name)
   {
     return false;

@@ -68,7 +68,7 @@ void WriteLoops(const TriangleMesh& mesh,
 {
   std::vector<int> offsets{ 0 }, triangles;
   vtkNew<vtkDoubleArray> positions, barycentric;
-  positions->SetName((prefix + "Points").c_str());
+  positions->SetName((prefix + boolsurf::names::LoopPoints).c_str());
   positions->SetNumberOfComponents(3);
   barycentric->SetName((prefix + boolsurf::names::Barycentric).c_str());
   barycentric->SetNumberOfComponents(2);
@@ -84,9 +84,9 @@ void WriteLoops(const TriangleMesh& mesh,
     }
     offsets.push_back(static_cast<int>(triangles.size()));
   }
-  fd->AddArray(Ints((prefix + "Offsets").c_str(), offsets));
+  fd->AddArray(Ints((prefix + boolsurf::names::LoopOffsets).c_str(), offsets));
   fd->AddArray(Ints((prefix + boolsurf::names::TriangleId).c_str(), triangles));
-  fd->AddArray(Ints((prefix + "Id").c_str(), ids));
+  fd->AddArray(Ints((prefix + boolsurf::names::LoopId).c_str(), ids));
   fd->AddArray(positions);
   fd->AddArray(barycentric);
 }
@@ -95,10 +95,10 @@ void WriteLoops(const TriangleMesh& mesh,
 bool ReadLoops(vtkFieldData* fd, const std::string& prefix, HomologyLoops& out)
 {
   out = HomologyLoops();
-  out.Offsets = ReadInts(fd, (prefix + "Offsets").c_str());
-  out.Ids = ReadInts(fd, (prefix + "Id").c_str());
+  out.Offsets = ReadInts(fd, (prefix + boolsurf::names::LoopOffsets).c_str());
+  out.Ids = ReadInts(fd, (prefix + boolsurf::names::LoopId).c_str());
   const std::vector<int> triangles = ReadInts(fd, (prefix + boolsurf::names::TriangleId).c_str());
-  vtkDataArray* positions = fd->GetArray((prefix + "Points").c_str());
+  vtkDataArray* positions = fd->GetArray((prefix + boolsurf::names::LoopPoints).c_str());
   vtkDataArray* barycentric = fd->GetArray((prefix + boolsurf::names::Barycentric).c_str());
   const vtkIdType np = static_cast<vtkIdType>(triangles.size());
   if (out.Offsets.empty() || out.Ids.size() + 1 != out.Offsets.size() || out.Offsets.back() != np ||
@@ -132,7 +132,7 @@ bool AddHomologyFields(const TriangleMesh& mesh,
   vtkFieldData* generatorCache)
 {
   const int ng = basis.GetNumberOfGenerators();
-  fd->AddArray(Ints("NumberOfHomologyGenerators", { ng }));
+  fd->AddArray(Ints(boolsurf::names::NumberOfHomologyGenerators, { ng }));
   if (ng == 0)
   {
     return true; // genus 0: no generators, every class is zero (no empty arrays written)
@@ -152,13 +152,13 @@ bool AddHomologyFields(const TriangleMesh& mesh,
   if (!curves.empty())
   {
     vtkNew<vtkIntArray> table;
-    table->SetName("CurveHomology");
+    table->SetName(boolsurf::names::CurveHomology);
     NameGeneratorComponents(table, ng);
     table->SetNumberOfTuples(static_cast<vtkIdType>(curves.size()));
     std::copy(classes.begin(), classes.end(), table->GetPointer(0));
     fd->AddArray(table);
-    fd->AddArray(Ints("CurveHomologyCurveId", ids));
-    fd->AddArray(Ints("CurveHomologyShapeId", shapes));
+    fd->AddArray(Ints(boolsurf::names::CurveHomologyCurveId, ids));
+    fd->AddArray(Ints(boolsurf::names::CurveHomologyShapeId, shapes));
   }
   if (generatorCache && generatorCache->GetNumberOfArrays() > 0)
   {
@@ -176,7 +176,7 @@ bool AddHomologyFields(const TriangleMesh& mesh,
     loops.push_back(basis.GetGenerator(g).Points);
     loopIds.push_back(g);
   }
-  WriteLoops(mesh, "HomologyGenerator", loops, loopIds, generators);
+  WriteLoops(mesh, boolsurf::names::HomologyGenerator, loops, loopIds, generators);
   if (shortened)
   {
     loops.clear();
@@ -191,7 +191,7 @@ bool AddHomologyFields(const TriangleMesh& mesh,
     }
     if (!loops.empty())
     {
-      WriteLoops(mesh, "HomologyShortGenerator", loops, loopIds, generators);
+      WriteLoops(mesh, boolsurf::names::HomologyShortGenerator, loops, loopIds, generators);
     }
   }
   if (generatorCache)
@@ -208,7 +208,7 @@ bool AddHomologyFields(const TriangleMesh& mesh,
 HomologyFields ReadHomologyFields(vtkFieldData* fd, bool withLoops)
 {
   HomologyFields h;
-  const std::vector<int> count = ReadInts(fd, "NumberOfHomologyGenerators");
+  const std::vector<int> count = ReadInts(fd, boolsurf::names::NumberOfHomologyGenerators);
   if (count.size() != 1)
   {
     return h;
@@ -220,9 +220,9 @@ HomologyFields ReadHomologyFields(vtkFieldData* fd, bool withLoops)
   {
     return h;
   }
-  h.CurveIds = ReadInts(fd, "CurveHomologyCurveId");
-  h.CurveShapeIds = ReadInts(fd, "CurveHomologyShapeId");
-  const std::vector<int> table = ReadInts(fd, "CurveHomology");
+  h.CurveIds = ReadInts(fd, boolsurf::names::CurveHomologyCurveId);
+  h.CurveShapeIds = ReadInts(fd, boolsurf::names::CurveHomologyShapeId);
+  const std::vector<int> table = ReadInts(fd, boolsurf::names::CurveHomology);
   const size_t rows = h.CurveIds.size();
   if (h.CurveShapeIds.size() != rows || table.size() != rows * ng)
   {
@@ -238,8 +238,8 @@ HomologyFields ReadHomologyFields(vtkFieldData* fd, bool withLoops)
   }
   if (withLoops)
   {
-    ReadLoops(fd, "HomologyGenerator", h.Generators);
-    ReadLoops(fd, "HomologyShortGenerator", h.ShortGenerators);
+    ReadLoops(fd, boolsurf::names::HomologyGenerator, h.Generators);
+    ReadLoops(fd, boolsurf::names::HomologyShortGenerator, h.ShortGenerators);
   }
   return h;
 }
@@ -255,7 +255,7 @@ void AddHomologyExcess(const std::vector<std::vector<int>>& excess,
   }
   const int ng = static_cast<int>(excess[0].size());
   vtkNew<vtkIntArray> table;
-  table->SetName("HomologyExcess");
+  table->SetName(boolsurf::names::HomologyExcess);
   NameGeneratorComponents(table, ng);
   table->SetNumberOfTuples(static_cast<vtkIdType>(excess.size()));
   for (size_t s = 0; s < excess.size(); ++s)
@@ -282,8 +282,8 @@ void WriteGeneratorPolylines(const HomologyFields& h, vtkPolyData* out)
   triangleId->SetName(boolsurf::names::TriangleId);
   barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
-  generatorId->SetName("GeneratorId");
-  shortened->SetName("Shortened");
+  generatorId->SetName(boolsurf::names::GeneratorId);
+  shortened->SetName(boolsurf::names::Shortened);
   vtkNew<vtkCellArray> lines;
   for (const HomologyLoops* loops : { &h.Generators, &h.ShortGenerators })
   {

@@ -68,7 +68,7 @@ void AddStatistics(const OffsetStatistics& s, double total, vtkFieldData* fd)
     s.ContourMilliseconds,
     total };
   vtkNew<vtkDoubleArray> stats;
-  stats->SetName("OffsetStatistics");
+  stats->SetName(boolsurf::names::OffsetStatistics);
   stats->SetNumberOfComponents(8);
   for (int k = 0; k < 8; ++k)
   {
@@ -99,14 +99,17 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
   // 1. the control curves (kept for the output) and their traces, read once
   std::vector<ControlCurve> controls;
   std::vector<std::string> problems;
-  TraceOptions traceOptions;
-  traceOptions.Resolution = options.Resolution;
-  traceOptions.ProjectionTolerance = options.ProjectionTolerance;
-  traceOptions.Method = options.Method;
-  traceOptions.Threads = options.Threads;
   std::vector<TracedCurve> traced;
-  if (!TraceControlCurves(
-        cache, curves, traceOptions, nullptr, traced, nullptr, problems, notes, nullptr, &controls))
+  if (!TraceControlCurves(cache,
+        curves,
+        options.Trace,
+        nullptr,
+        traced,
+        nullptr,
+        problems,
+        notes,
+        nullptr,
+        &controls))
   {
     error = "Cannot trace the curves:" + JoinLines(problems);
     return false;
@@ -198,7 +201,7 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
   if (anyClosed)
   {
     ArrangementOptions arrangementOptions;
-    arrangementOptions.Threads = options.Threads;
+    arrangementOptions.Threads = options.Trace.Threads;
     if (!ComputeArrangement(mesh, arranged, arrangementOptions, arrangement, error))
     {
       error = "Arrangement of the shapes to offset failed: " + error;
@@ -246,7 +249,7 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
     notes.push_back("OutputShapeId " + std::to_string(outputShape) +
       " is also an input shape: the offset loops join that shape's curves");
   }
-  ControlCurveWriter writer(mesh, "OffsetCurve");
+  ControlCurveWriter writer(mesh, boolsurf::names::OffsetCurve);
   if (options.KeepInputCurves)
   {
     for (const ControlCurve& c : controls)
@@ -270,15 +273,15 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
   writer.Write(output);
   vtkFieldData* fd = output->GetFieldData();
   vtkNew<vtkDoubleArray> distance;
-  distance->SetName("OffsetDistance");
+  distance->SetName(boolsurf::names::OffsetDistance);
   distance->InsertNextValue(options.Distance);
   fd->AddArray(distance);
   vtkNew<vtkIntArray> shape;
-  shape->SetName("OffsetShapeId");
+  shape->SetName(boolsurf::names::OffsetShapeId);
   shape->InsertNextValue(outputShape);
   fd->AddArray(shape);
   vtkNew<vtkStringArray> what;
-  what->SetName("OffsetExpression");
+  what->SetName(boolsurf::names::OffsetExpression);
   what->InsertNextValue(options.Bands ? "bands around " + text : text);
   fd->AddArray(what);
   AddStatistics(

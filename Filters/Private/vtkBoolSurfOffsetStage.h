@@ -6,6 +6,7 @@
 #include "Geodesic/GeodesicPath.h"
 #include "Offset/GeodesicOffset.h"
 #include "vtkBoolSurfSurfaceCache.h"
+#include "vtkBoolSurfTraceStage.h"
 
 #include <string>
 #include <vector>
@@ -32,11 +33,9 @@ struct OffsetStageOptions
   /// With KeepInputCurves: leave out the curves of the offset shapes (the offset replaces
   /// them; the one-step filter's OffsetShape).
   bool ReplaceShapes = false;
-  // Tracing of the input curves, as in Trace Surface Curves.
-  int Resolution = 4;
-  double ProjectionTolerance = 0.01;
-  GeodesicMethod Method = GeodesicMethod::Bounded;
-  int Threads = 0;
+  /// Tracing of the input curves, as in Trace Surface Curves (its Threads: the arrangement's
+  /// too).
+  TraceOptions Trace;
 };
 
 /// Reads and traces the control curves of `curves` (the input of Trace Surface Curves; without

@@ -67,10 +67,10 @@ void WriteResolved(const TriangleMesh& mesh, const ResolveResult& result, vtkPol
   shape->SetName(boolsurf::names::ShapeId);
   type->SetName(boolsurf::names::CurveType);
   closed->SetName(boolsurf::names::Closed);
-  action->SetName("Resolution");
-  source->SetName("ResolutionSource");
+  action->SetName(boolsurf::names::ResolutionAction);
+  source->SetName(boolsurf::names::ResolutionSource);
   vtkNew<vtkStringArray> reason;
-  reason->SetName("ResolutionReason");
+  reason->SetName(boolsurf::names::ResolutionReason);
   for (const ResolvedCurve& r : result.Curves)
   {
     const vtkIdType first = points->GetNumberOfPoints();
@@ -114,11 +114,11 @@ void WriteResolved(const TriangleMesh& mesh, const ResolveResult& result, vtkPol
     cd->AddArray(a);
   }
   vtkNew<vtkIntArray> removed, treated;
-  removed->SetName("RemovedCurves");
-  treated->SetName("TreatedShapes");
+  removed->SetName(boolsurf::names::RemovedCurves);
+  treated->SetName(boolsurf::names::TreatedShapes);
   vtkNew<vtkStringArray> notes, removedReason;
-  notes->SetName("ResolutionNotes");
-  removedReason->SetName("RemovedCurveReasons");
+  notes->SetName(boolsurf::names::ResolutionNotes);
+  removedReason->SetName(boolsurf::names::RemovedCurveReasons);
   for (const ResolvedCurve& r : result.Removed)
   {
     removed->InsertNextValue(r.Source);
@@ -201,7 +201,7 @@ bool ResolveControlCurves(vtkSurfaceCache& cache,
   std::vector<ControlCurve> controls;
   std::vector<std::string> problems;
   TraceOptions reading;
-  reading.ProjectionTolerance = options.ProjectionTolerance;
+  reading.ProjectionTolerance = options.Trace.ProjectionTolerance;
   ReadSurfaceControlCurves(cache, curves, reading, controls, problems, notes);
   if (!problems.empty())
   {
@@ -225,8 +225,8 @@ bool ResolveControlCurves(vtkSurfaceCache& cache,
     input.push_back(std::move(p));
   }
   CurveTracer& tracer = cache.GetTracer();
-  tracer.SetResolution(options.Resolution);
-  tracer.GetPathSolver().SetMethod(options.Method);
+  tracer.SetResolution(options.Trace.Resolution);
+  tracer.GetPathSolver().SetMethod(options.Trace.Method);
   std::vector<std::vector<int>> classes;
   if (!ClassifyControlCurves(tracer, *basis, input, classes, nullptr, error))
   {

@@ -5,6 +5,7 @@
 
 #include "Homology/ShapeResolution.h"
 #include "vtkBoolSurfSurfaceCache.h"
+#include "vtkBoolSurfTraceStage.h"
 
 #include <map>
 #include <string>
@@ -20,10 +21,8 @@ struct ResolveStageOptions
   ResolveStrategy Strategy = ResolveStrategy::DuplicateReversed; ///< for every shape...
   std::map<int, ResolveStrategy> PerShape;                       ///< ...but these
   double Offset = 0;                                             ///< DuplicateReversed; 0: auto
-  int Resolution = 4;
-  double ProjectionTolerance = 0.01; ///< fraction of the surface's bounding-box diagonal
-  /// How the curves are traced to find their homology classes (as in TraceOptions).
-  GeodesicMethod Method = GeodesicMethod::Bounded;
+  /// How the curves are traced to find their homology classes (Threads is not used).
+  TraceOptions Trace;
 };
 
 /// Parses "3:RemoveCurves, S5=AddGenerators; 7:1" (ShapeId, then a strategy name or number)

@@ -170,9 +170,10 @@ void WriteTraces(const TriangleMesh& mesh,
   {
     nControls += static_cast<vtkIdType>(control.Points.size());
   }
-  auto controlOffsets = NewSizedArray<vtkIntArray>("ControlOffsets", 1, nc + 1);
-  auto controlTriangle = NewSizedArray<vtkIdTypeArray>("ControlTriangleId", 1, nControls);
-  auto controlUV = NewSizedArray<vtkDoubleArray>("ControlBarycentric", 2, nControls);
+  auto controlOffsets = NewSizedArray<vtkIntArray>(boolsurf::names::ControlOffsets, 1, nc + 1);
+  auto controlTriangle =
+    NewSizedArray<vtkIdTypeArray>(boolsurf::names::ControlTriangleId, 1, nControls);
+  auto controlUV = NewSizedArray<vtkDoubleArray>(boolsurf::names::ControlBarycentric, 2, nControls);
   vtkIdType written = 0;
   for (vtkIdType c = 0; c < nc; ++c)
   {
@@ -249,7 +250,7 @@ void AddSiteGraphField(const TriangleMesh& mesh, vtkFieldData* fieldData)
     return;
   }
   vtkNew<vtkDoubleArray> field;
-  field->SetName("GeodesicSiteGraph");
+  field->SetName(boolsurf::names::GeodesicSiteGraph);
   field->SetNumberOfComponents(4);
   field->SetComponentName(0, "Sites");
   field->SetComponentName(1, "BuildMilliseconds");

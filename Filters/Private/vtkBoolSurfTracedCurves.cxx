@@ -52,8 +52,8 @@ bool ReadTracedCurves(vtkPolyData* curves,
     // What a failed BoolSurf filter leaves: say so rather than ask for a rewiring.
     std::string why = "the curves input is empty: the filter before it (Trace Surface Curves) "
                       "reported an error or has no curves";
-    auto* errors =
-      vtkStringArray::SafeDownCast(curves->GetFieldData()->GetAbstractArray("TraceErrors"));
+    auto* errors = vtkStringArray::SafeDownCast(
+      curves->GetFieldData()->GetAbstractArray(boolsurf::names::TraceErrors));
     for (vtkIdType i = 0; errors && i < errors->GetNumberOfValues(); ++i)
     {
       why += (i == 0 ? ":\n    " : "\n    ") + errors->GetValue(i);
