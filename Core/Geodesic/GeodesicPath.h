@@ -31,12 +31,12 @@
 #ifndef boolsurf_GeodesicPath_h
 #define boolsurf_GeodesicPath_h
 
-#include "Arrangement/EdgeIndex.h"
 #include "Geodesic/DualGraphSearch.h"
 #include "Geodesic/EdgeGraphSearch.h"
 #include "Geodesic/ExactGeodesicSearch.h"
 #include "Geodesic/GeodesicPathCache.h"
 #include "Geodesic/SurfaceSiteGraph.h"
+#include "Mesh/EdgeIndex.h"
 #include "Mesh/SurfacePoint.h"
 #include "Mesh/TriangleComponents.h"
 #include "Mesh/ZeroPageArray.h"
