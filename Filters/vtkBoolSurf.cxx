@@ -231,7 +231,9 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     boolsurf::CurveTracer& tracer = this->GetSurfaceCache().GetTracer();
     solver = &tracer.GetPathSolver();
-    solver->SetMethod(static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod));
+    boolsurf::GeodesicPathOptions pathOptions = solver->GetOptions();
+    pathOptions.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
+    solver->SetOptions(pathOptions);
     cutSolvers = tracer.GetSolvers(this->NumberOfThreads);
   }
   in.Output.Threads = this->NumberOfThreads;

@@ -226,7 +226,9 @@ bool ResolveControlCurves(vtkSurfaceCache& cache,
   }
   CurveTracer& tracer = cache.GetTracer();
   tracer.SetResolution(options.Resolution);
-  tracer.GetPathSolver().SetMethod(options.Method);
+  GeodesicPathOptions pathOptions = tracer.GetPathSolver().GetOptions();
+  pathOptions.Method = options.Method;
+  tracer.GetPathSolver().SetOptions(pathOptions);
   std::vector<std::vector<int>> classes;
   if (!ClassifyControlCurves(tracer, *basis, input, classes, nullptr, error))
   {
