@@ -61,7 +61,9 @@ LoadedMesh& Load(const std::string& name)
   m.Solver = std::make_unique<GeodesicPathSolver>(*m.Mesh);
   m.Solver->PrepareLandmarks(); // one-time cost, reported as landmark_setup_s
   m.PlainSolver = std::make_unique<GeodesicPathSolver>(*m.Mesh);
-  m.PlainSolver->SetNumberOfLandmarks(0);
+  GeodesicPathOptions plainOptions;
+  plainOptions.NumberOfLandmarks = 0;
+  m.PlainSolver->SetOptions(plainOptions);
   const TriangleMesh& mesh = *m.Mesh;
   const int nt = mesh.GetNumberOfTriangles();
   Vec3 lo = mesh.GetPosition(0), hi = lo;
@@ -139,8 +141,10 @@ void BenchmarkPaths(benchmark::State& state,
   }
   const auto& pairs = longPaths ? m.LongPairs : m.ShortPairs;
   GeodesicPathSolver& solver = landmarks ? *m.Solver : *m.PlainSolver;
-  solver.SetUseEdgePathStrip(edgePathStrip);
-  solver.SetMethod(method);
+  GeodesicPathOptions options = solver.GetOptions();
+  options.UseEdgePathStrip = edgePathStrip;
+  options.Method = method;
+  solver.SetOptions(options);
   GeodesicPath path;
   size_t i = 0;
   double settled = 0, expanded = 0, strip = 0, rounds = 0, length = 0, ratio = 0, windows = 0;
@@ -224,8 +228,9 @@ void BenchmarkPaths(benchmark::State& state,
     state.counters["site_graph_s"] = graph->GetBuildSeconds();
     state.counters["site_graph_MB"] = graph->GetMemory() / 1048576.0;
   }
-  solver.SetUseEdgePathStrip(true);
-  solver.SetMethod(GeodesicMethod::Exact);
+  options.UseEdgePathStrip = true;
+  options.Method = GeodesicMethod::Exact;
+  solver.SetOptions(options);
 }
 } // namespace
 

@@ -231,7 +231,9 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     boolsurf::CurveTracer& tracer = this->GetSurfaceCache().GetTracer();
     solver = &tracer.GetPathSolver();
-    solver->SetMethod(this->GetTraceOptions().Method);
+    boolsurf::GeodesicPathOptions pathOptions = solver->GetOptions();
+    pathOptions.Method = this->GetTraceOptions().Method;
+    solver->SetOptions(pathOptions);
     cutSolvers = tracer.GetSolvers(this->GetNumberOfThreads());
   }
   in.Output.Threads = this->GetNumberOfThreads();

@@ -116,7 +116,9 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
     const boolsurf::Arrangement& arr = result->Arrangement;
     // Traced as the curves were (the solver's method is set again by every user of the cache).
     boolsurf::GeodesicPathSolver& solver = this->GetSurfaceCache().GetTracer().GetPathSolver();
-    solver.SetMethod(result->Method);
+    boolsurf::GeodesicPathOptions pathOptions = solver.GetOptions();
+    pathOptions.Method = result->Method;
+    solver.SetOptions(pathOptions);
     std::vector<boolsurf::ControlSubCurve> perPatch(arr.Patches.size());
     boolsurf::BezierPieces bezier(arr, sources); // each Bezier segment split once per cut
     for (std::size_t p = 0; p < perPatch.size(); ++p)

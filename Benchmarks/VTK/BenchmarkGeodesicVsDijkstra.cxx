@@ -128,7 +128,9 @@ LoadedMesh& Load(const std::string& name)
   m.Solver = std::make_unique<GeodesicPathSolver>(*m.Mesh);
   // Exact: the comparison is the shortest path against the shortest edge path (a routed
   // Bounded leg may be longer than the shortest edge path).
-  m.Solver->SetMethod(GeodesicMethod::Exact);
+  GeodesicPathOptions options;
+  options.Method = GeodesicMethod::Exact;
+  m.Solver->SetOptions(options);
   m.SolverSetupSeconds = Seconds(setup0, Clock::now());
   // The landmark table of the edge-path search (built lazily otherwise), timed apart.
   const auto landmarks0 = Clock::now();

@@ -61,20 +61,16 @@ struct Arrangement::WorkBuffers
   std::vector<RefinedCurve> RefinedCurves;
 };
 
-//------------------------------------------------------------------------------
-bool ComputeArrangement(const TriangleMesh& mesh,
-  const std::vector<TracedCurve>& curves,
-  const ArrangementOptions& options,
-  Arrangement& out,
-  std::string& error)
+namespace
 {
-  error.clear();
-  if (!out.Work)
-  {
-    out.Work = std::make_shared<Arrangement::WorkBuffers>();
-  }
-  Arrangement::WorkBuffers& work = *out.Work;
-  const int nv = mesh.GetNumberOfVertices();
+
+//------------------------------------------------------------------------------
+// Before the stages: the results cleared, keeping their capacity (the next edit needs about as
+// much), and the per-triangle and per-edge buffers made clean for this mesh.
+void ResetResultsAndBuffers(const TriangleMesh& mesh,
+  Arrangement& out,
+  Arrangement::WorkBuffers& work)
+{
   const int nt = mesh.GetNumberOfTriangles();
   // The work buffers may be shared by several arrangements (a filter that double-buffers its
   // results computes them in turn): whether they belong to this mesh, and whether this result's
@@ -111,25 +107,16 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   work.TouchedTriangles.clear();
   work.TouchedEdges.clear();
   work.MeshSerial = 0; // until the buffers are known clean again
-
-  tbb::task_arena arena(options.Threads > 0 ? options.Threads : tbb::task_arena::automatic);
-  const Clock::time_point start = Clock::now();
-
-  // --- 1. hash map triangle -> segments
-  TriangleSegmentMap& map = work.Map;
-  CurvePointRef failed;
-  out.FailedCurve = out.FailedPoint = -1;
-  bool mapped = false;
-  arena.execute([&] { mapped = BuildTriangleSegmentMap(mesh, curves, map, error, &failed); });
-  if (!mapped)
-  {
-    out.FailedCurve = failed.Curve;
-    out.FailedPoint = failed.Point;
-    return false;
-  }
-  const Clock::time_point hashed = Clock::now();
-
-  // --- 2. intersections
+}
+//------------------------------------------------------------------------------
+// Stage 2: the crossings of the segments inside each triangle, and the points splitting the
+// segments that run along mesh edges.
+void IntersectSegments(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  Arrangement::WorkBuffers& work,
+  tbb::task_arena& arena)
+{
+  const TriangleSegmentMap& map = work.Map;
   const int slots = static_cast<int>(map.Triangles.size());
   std::vector<LocalArrangement>& local = work.Local;
   local.resize(slots);
@@ -140,9 +127,18 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   ParallelFor(arena,
     static_cast<int>(map.EdgeSegments.size()),
     [&](int i) { SplitEdgeSegment(mesh, map, i, edgeSegmentPoints[i]); });
-  const Clock::time_point intersected = Clock::now();
-
-  // --- 3. refinement, then assembly of the refined surface
+}
+//------------------------------------------------------------------------------
+// Stage 3a: each crossed triangle's local triangulation (see TriangleRefinement).
+bool RefineTriangles(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  Arrangement::WorkBuffers& work,
+  tbb::task_arena& arena,
+  std::string& error)
+{
+  const TriangleSegmentMap& map = work.Map;
+  const int slots = static_cast<int>(map.Triangles.size());
+  std::vector<LocalArrangement>& local = work.Local;
   ParallelFor(arena,
     slots,
     [&](int s)
@@ -163,6 +159,20 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       return false;
     }
   }
+  return true;
+}
+//------------------------------------------------------------------------------
+// Stage 3b: global ids for the new points (after the mesh vertices: the edge points, then each
+// triangle's own), their positions, and each segment's chain of refined point ids.
+void NumberRefinedPoints(const TriangleMesh& mesh,
+  Arrangement::WorkBuffers& work,
+  Arrangement& out,
+  tbb::task_arena& arena)
+{
+  const int nv = mesh.GetNumberOfVertices();
+  const TriangleSegmentMap& map = work.Map;
+  const int slots = static_cast<int>(map.Triangles.size());
+  std::vector<LocalArrangement>& local = work.Local;
   const int edgePoints = static_cast<int>(map.EdgePoints.size());
   std::vector<int>& newPointBase = work.NewPointBase;
   newPointBase.assign(slots + 1, nv + edgePoints);
@@ -242,9 +252,17 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         }
       }
     });
-
-  // Per source triangle: its state for the flood fill (refined, or next to a closed curve
-  // running along one of its edges).
+}
+//------------------------------------------------------------------------------
+// Stage 3c: per source triangle, its state for the flood fill (refined, or next to a closed
+// curve running along one of its edges), and the mesh sub-edges closed curves block.
+void MarkRefinedAndBlocked(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  Arrangement::WorkBuffers& work)
+{
+  const TriangleSegmentMap& map = work.Map;
+  const int slots = static_cast<int>(map.Triangles.size());
+  const std::vector<std::vector<int>>& edgeSegmentPoints = work.EdgeSegmentPoints;
   ZeroPageVector<char>& state = work.State;
   for (int s = 0; s < slots; ++s)
   {
@@ -278,6 +296,20 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       blockedMeshSubEdges.insert(UndirectedPointPair(ids[k], ids[k + 1]));
     }
   }
+}
+//------------------------------------------------------------------------------
+// Stage 3d: the refined surface's layout: the pieces of the refined triangles, their sources,
+// blocked sides and neighbours.
+bool LayOutRefinedPieces(const TriangleMesh& mesh,
+  Arrangement::WorkBuffers& work,
+  Arrangement& out,
+  tbb::task_arena& arena,
+  std::string& error)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  const TriangleSegmentMap& map = work.Map;
+  const int slots = static_cast<int>(map.Triangles.size());
+  const std::vector<LocalArrangement>& local = work.Local;
   // The refined triangles: the mesh's own, in place (read from the mesh), then the extra pieces
   // of the refined ones. On the mesh of the previous call only the slots it refined are cleared
   // and those this call refines written, so an edit costs what the curves cross, not the
@@ -373,20 +405,38 @@ bool ComputeArrangement(const TriangleMesh& mesh,
     });
   out.LayoutMeshSerial = mesh.GetSerial();
   out.NumberOfRefinedSourceTriangles = slots;
-  const Clock::time_point refinedTime = Clock::now();
-
-  // --- 4. flood fill
+  return true;
+}
+//------------------------------------------------------------------------------
+// What the flood fill and the cell graph read of the refined surface (pointers into `out` and
+// `work`, valid until either changes).
+RefinedSurfaceView ViewOfRefinedSurface(const TriangleMesh& mesh,
+  const Arrangement::WorkBuffers& work,
+  const Arrangement& out)
+{
   RefinedSurfaceView view;
   view.Mesh = &mesh;
-  view.SlotOfTriangle = &refinedSlot;
-  view.PieceOffset = &pieceOffset;
+  view.SlotOfTriangle = &out.RefinedSlot;
+  view.PieceOffset = &out.PieceOffset;
   view.Layout = &out;
-  view.Refined = &state;
-  view.Blocked = &blocked;
-  view.BlockedMeshSubEdges = &blockedMeshSubEdges;
-  view.MeshEdgeHasBlocked = &meshEdgeHasBlocked;
+  view.Refined = &work.State;
+  view.Blocked = &work.Blocked;
+  view.BlockedMeshSubEdges = &work.BlockedMeshSubEdges;
+  view.MeshEdgeHasBlocked = &work.MeshEdgeHasBlocked;
   view.CrowdedHalfEdges = &work.CrowdedHalfEdges;
-  view.PieceAcross = &pieceAcross;
+  view.PieceAcross = &work.PieceAcross;
+  return view;
+}
+
+//------------------------------------------------------------------------------
+// Stage 4: the cells, by flood fill over the mesh's tiles and the refined triangles.
+void FloodFillCells(const TriangleMesh& mesh,
+  const RefinedSurfaceView& view,
+  const ArrangementOptions& options,
+  Arrangement::WorkBuffers& work,
+  Arrangement& out,
+  tbb::task_arena& arena)
+{
   // Tiles of the mesh: built once per mesh (the persistent part of the dual graph); an edit
   // floods clean tiles as single nodes and only the triangles of tiles that curves touch.
   if (!work.Tiles || work.Tiles->MeshSerial != mesh.GetSerial() || mesh.GetSerial() == 0)
@@ -408,9 +458,23 @@ bool ComputeArrangement(const TriangleMesh& mesh,
         work.Flood,
         &out.Contents);
     });
-  const Clock::time_point filled = Clock::now();
+}
 
-  // --- 5. curves on the refined surface, patches, cell graph
+//------------------------------------------------------------------------------
+// Stage 5a: each curve as a chain of refined points, with its stations (the traced segment and
+// the fraction along it of each point).
+bool AssembleRefinedCurves(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  Arrangement::WorkBuffers& work,
+  Arrangement& out,
+  tbb::task_arena& arena,
+  std::string& error)
+{
+  const TriangleSegmentMap& map = work.Map;
+  const int slots = static_cast<int>(map.Triangles.size());
+  const std::vector<std::vector<int>>& edgeSegmentPoints = work.EdgeSegmentPoints;
+  const std::vector<int>& chainOffset = work.ChainOffset;
+  const std::vector<int>& chainPointIds = work.ChainPointIds;
   std::vector<int>& slotOfSegment = work.SlotOfSegment;
   slotOfSegment.resize(map.Segments.size());
   for (int s = 0; s < slots; ++s)
@@ -495,9 +559,74 @@ bool ComputeArrangement(const TriangleMesh& mesh,
       return false;
     }
   }
+  return true;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+// The stages in order, timed: the segment map, the crossings, the refinement (local
+// triangulations, point numbering, blocked edges, piece layout), the flood fill into cells,
+// and the curves on the refined surface with the patches and the cell graph.
+bool ComputeArrangement(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  const ArrangementOptions& options,
+  Arrangement& out,
+  std::string& error)
+{
+  error.clear();
+  if (!out.Work)
+  {
+    out.Work = std::make_shared<Arrangement::WorkBuffers>();
+  }
+  Arrangement::WorkBuffers& work = *out.Work;
+  ResetResultsAndBuffers(mesh, out, work);
+  tbb::task_arena arena(options.Threads > 0 ? options.Threads : tbb::task_arena::automatic);
+  const Clock::time_point start = Clock::now();
+
+  // --- 1. hash map triangle -> segments
+  CurvePointRef failed;
+  out.FailedCurve = out.FailedPoint = -1;
+  bool mapped = false;
+  arena.execute([&] { mapped = BuildTriangleSegmentMap(mesh, curves, work.Map, error, &failed); });
+  if (!mapped)
+  {
+    out.FailedCurve = failed.Curve;
+    out.FailedPoint = failed.Point;
+    return false;
+  }
+  const Clock::time_point hashed = Clock::now();
+
+  // --- 2. intersections
+  IntersectSegments(mesh, curves, work, arena);
+  const Clock::time_point intersected = Clock::now();
+
+  // --- 3. refinement, then assembly of the refined surface
+  if (!RefineTriangles(mesh, curves, work, arena, error))
+  {
+    return false;
+  }
+  NumberRefinedPoints(mesh, work, out, arena);
+  MarkRefinedAndBlocked(mesh, curves, work);
+  if (!LayOutRefinedPieces(mesh, work, out, arena, error))
+  {
+    return false;
+  }
+  const Clock::time_point refinedTime = Clock::now();
+
+  // --- 4. flood fill
+  const RefinedSurfaceView view = ViewOfRefinedSurface(mesh, work, out);
+  FloodFillCells(mesh, view, options, work, out, arena);
+  const Clock::time_point filled = Clock::now();
+
+  // --- 5. curves on the refined surface, patches, cell graph
+  if (!AssembleRefinedCurves(mesh, curves, work, out, arena, error))
+  {
+    return false;
+  }
   out.NumberOfPatchGraphVertices = BuildPatchesAndCellGraph(view,
     curves,
-    refinedCurves,
+    work.RefinedCurves,
     out.CurvePositions,
     out.CurvePointSurface,
     out.GetCellLookup(),

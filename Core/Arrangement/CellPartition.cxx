@@ -576,6 +576,165 @@ inline void UniteByKey(int* parent, const int* key, int a, int b)
   }
 }
 
+// FloodFillTiles: the arcs between clean tiles united. Tile nodes start from their blocks'
+// precomputed components (roots are the lowest tiles, so the lowest keys: tiles are ordered by
+// lowest member). A block with a dirty tile starts from its groups' components instead, a
+// group with a dirty tile from single tiles, and each unites its own arcs between clean tiles.
+// Then the arcs between blocks: what an edit pays for the tile graph is those and the touched
+// groups and blocks, not every arc of it. The dirty tiles' nodes start as single sets.
+void UniteCleanTiles(const MeshTiles& tiles,
+  const char* dirty,
+  int nodes,
+  int* parent,
+  const int* keys,
+  TileFloodBuffers& buffers)
+{
+  const int numberOfTiles = tiles.GetNumberOfTiles();
+  const std::vector<int>& dirtyTiles = buffers.DirtyTiles;
+  std::copy(tiles.BlockRoot.begin(), tiles.BlockRoot.end(), parent);
+  for (int i = numberOfTiles; i < nodes; ++i)
+  {
+    parent[i] = i;
+  }
+  const auto markParts = [](int part, std::vector<char>& marked, std::vector<int>& list)
+  {
+    if (!marked[part])
+    {
+      marked[part] = 1;
+      list.push_back(part);
+    }
+  };
+  std::vector<char>& dirtyGroup = buffers.DirtyGroup;
+  std::vector<char>& dirtyBlock = buffers.DirtyBlock;
+  if (static_cast<int>(dirtyGroup.size()) != tiles.GetNumberOfGroups() ||
+    static_cast<int>(dirtyBlock.size()) != tiles.GetNumberOfBlocks())
+  {
+    dirtyGroup.assign(tiles.GetNumberOfGroups(), 0);
+    dirtyBlock.assign(tiles.GetNumberOfBlocks(), 0);
+  }
+  std::vector<int>& dirtyGroups = buffers.DirtyGroups;
+  std::vector<int>& dirtyBlocks = buffers.DirtyBlocks;
+  dirtyGroups.clear();
+  dirtyBlocks.clear();
+  for (int k : dirtyTiles)
+  {
+    markParts(tiles.GroupOf[k], dirtyGroup, dirtyGroups);
+    markParts(tiles.BlockOf[tiles.GroupOf[k]], dirtyBlock, dirtyBlocks);
+  }
+  for (int b : dirtyBlocks)
+  {
+    for (int i = tiles.BlockOffset[b]; i < tiles.BlockOffset[b + 1]; ++i)
+    {
+      const int g = tiles.BlockGroups[i];
+      for (int j = tiles.GroupOffset[g]; j < tiles.GroupOffset[g + 1]; ++j)
+      {
+        const int k = tiles.GroupTiles[j];
+        parent[k] = dirtyGroup[g] ? k : tiles.GroupRoot[k];
+      }
+    }
+  }
+  const auto uniteClean = [&](const std::pair<int, int>* begin, const std::pair<int, int>* end)
+  {
+    for (const std::pair<int, int>* ab = begin; ab != end; ++ab)
+    {
+      if (!dirty[ab->first] && !dirty[ab->second])
+      {
+        UniteByKey(parent, keys, ab->first, ab->second);
+      }
+    }
+  };
+  for (int g : dirtyGroups)
+  {
+    const std::pair<int, int>* arcs = tiles.GroupArcs.data();
+    uniteClean(arcs + tiles.GroupArcOffset[g], arcs + tiles.GroupArcOffset[g + 1]);
+    dirtyGroup[g] = 0;
+  }
+  for (int b : dirtyBlocks)
+  {
+    const std::pair<int, int>* arcs = tiles.BlockArcs.data();
+    uniteClean(arcs + tiles.BlockArcOffset[b], arcs + tiles.BlockArcOffset[b + 1]);
+    dirtyBlock[b] = 0;
+  }
+  uniteClean(
+    tiles.CrossBlockArcs.data(), tiles.CrossBlockArcs.data() + tiles.CrossBlockArcs.size());
+}
+
+// FloodFillTiles, once every arc is united: the roots (each holds its set's lowest refined
+// triangle) numbered as cells in increasing order of it; the number of cells.
+int NumberCellsOfRoots(const MeshTiles& tiles,
+  const char* dirty,
+  int count,
+  int nodes,
+  int* parent,
+  const int* keys,
+  ZeroPageVector<int>& looseCell,
+  std::vector<int>* cellFirstTriangle,
+  TileFloodBuffers& buffers)
+{
+  const int numberOfTiles = tiles.GetNumberOfTiles();
+  std::vector<int>& cellOfRoot = buffers.CellOfRoot;
+  cellOfRoot.resize(nodes);
+  std::vector<int> roots;
+  auto collect = [&](int i)
+  {
+    parent[i] = FindRoot(parent, i);
+    if (parent[i] == i)
+    {
+      roots.push_back(i);
+    }
+  };
+  for (int k = 0; k < numberOfTiles; ++k)
+  {
+    if (!dirty[k])
+    {
+      collect(k);
+    }
+  }
+  for (int i = numberOfTiles; i < nodes; ++i)
+  {
+    collect(i);
+  }
+  std::sort(roots.begin(), roots.end(), [&](int a, int b) { return keys[a] < keys[b]; });
+  for (size_t c = 0; c < roots.size(); ++c)
+  {
+    cellOfRoot[roots[c]] = static_cast<int>(c);
+  }
+  if (cellFirstTriangle)
+  {
+    cellFirstTriangle->resize(roots.size());
+    for (size_t c = 0; c < roots.size(); ++c)
+    {
+      (*cellFirstTriangle)[c] = keys[roots[c]];
+    }
+  }
+  // Each clean tile's cell (in TileNode), then the triangles of the dirty tiles: nothing is
+  // written for the triangles of clean tiles (TriangleCellLookup reads their tile's cell).
+  // Every parent is now a root, so these are independent writes, in parallel; the dirty tiles'
+  // nodes keep their cells (NodeCell) for listing the cells' contents.
+  ResizeDiscardingForEdits(looseCell, count); // the entries read are written below
+  int* cell = looseCell.data();
+  std::vector<int>& nodeCell = buffers.NodeCell;
+  nodeCell.resize(nodes);
+  std::vector<int>& tileCell = buffers.TileNode;
+  constexpr int grain = 1 << 14;
+  tbb::parallel_for(tbb::blocked_range<int>(0, nodes, grain),
+    [&](const tbb::blocked_range<int>& range)
+    {
+      for (int i = range.begin(); i != range.end(); ++i)
+      {
+        if (i < numberOfTiles)
+        {
+          tileCell[i] = dirty[i] ? -1 : cellOfRoot[parent[i]];
+        }
+        else
+        {
+          nodeCell[i] = cell[keys[i]] = cellOfRoot[parent[i]];
+        }
+      }
+    });
+  return static_cast<int>(roots.size());
+}
+
 // Dirty tiles per parallel task of FloodFillTiles (about 64 triangles each).
 constexpr int DirtyTileGrain = 16;
 
@@ -651,78 +810,7 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
     return dirty[k] ? nodeOfTriangle[r] : k;
   };
 
-  // Arcs between clean tiles. Tile nodes start from their blocks' precomputed components
-  // (roots are the lowest tiles, so the lowest keys: tiles are ordered by lowest member). A
-  // block with a dirty tile starts from its groups' components instead, a group with a dirty
-  // tile from single tiles, and each unites its own arcs between clean tiles. Then the arcs
-  // between blocks: what an edit pays for the tile graph is those and the touched groups and
-  // blocks, not every arc of it.
-  std::copy(tiles.BlockRoot.begin(), tiles.BlockRoot.end(), parent);
-  for (int i = numberOfTiles; i < nodes; ++i)
-  {
-    parent[i] = i;
-  }
-  const auto markParts = [](int part, std::vector<char>& marked, std::vector<int>& list)
-  {
-    if (!marked[part])
-    {
-      marked[part] = 1;
-      list.push_back(part);
-    }
-  };
-  std::vector<char>& dirtyGroup = buffers.DirtyGroup;
-  std::vector<char>& dirtyBlock = buffers.DirtyBlock;
-  if (static_cast<int>(dirtyGroup.size()) != tiles.GetNumberOfGroups() ||
-    static_cast<int>(dirtyBlock.size()) != tiles.GetNumberOfBlocks())
-  {
-    dirtyGroup.assign(tiles.GetNumberOfGroups(), 0);
-    dirtyBlock.assign(tiles.GetNumberOfBlocks(), 0);
-  }
-  std::vector<int>& dirtyGroups = buffers.DirtyGroups;
-  std::vector<int>& dirtyBlocks = buffers.DirtyBlocks;
-  dirtyGroups.clear();
-  dirtyBlocks.clear();
-  for (int k : dirtyTiles)
-  {
-    markParts(tiles.GroupOf[k], dirtyGroup, dirtyGroups);
-    markParts(tiles.BlockOf[tiles.GroupOf[k]], dirtyBlock, dirtyBlocks);
-  }
-  for (int b : dirtyBlocks)
-  {
-    for (int i = tiles.BlockOffset[b]; i < tiles.BlockOffset[b + 1]; ++i)
-    {
-      const int g = tiles.BlockGroups[i];
-      for (int j = tiles.GroupOffset[g]; j < tiles.GroupOffset[g + 1]; ++j)
-      {
-        const int k = tiles.GroupTiles[j];
-        parent[k] = dirtyGroup[g] ? k : tiles.GroupRoot[k];
-      }
-    }
-  }
-  const auto uniteClean = [&](const std::pair<int, int>* begin, const std::pair<int, int>* end)
-  {
-    for (const std::pair<int, int>* ab = begin; ab != end; ++ab)
-    {
-      if (!dirty[ab->first] && !dirty[ab->second])
-      {
-        UniteByKey(parent, keys, ab->first, ab->second);
-      }
-    }
-  };
-  for (int g : dirtyGroups)
-  {
-    const std::pair<int, int>* arcs = tiles.GroupArcs.data();
-    uniteClean(arcs + tiles.GroupArcOffset[g], arcs + tiles.GroupArcOffset[g + 1]);
-    dirtyGroup[g] = 0;
-  }
-  for (int b : dirtyBlocks)
-  {
-    const std::pair<int, int>* arcs = tiles.BlockArcs.data();
-    uniteClean(arcs + tiles.BlockArcOffset[b], arcs + tiles.BlockArcOffset[b + 1]);
-    dirtyBlock[b] = 0;
-  }
-  uniteClean(
-    tiles.CrossBlockArcs.data(), tiles.CrossBlockArcs.data() + tiles.CrossBlockArcs.size());
+  UniteCleanTiles(tiles, dirty, nodes, parent, keys, buffers);
   // Arcs from the triangles of dirty tiles, as in FloodFillAllTriangles; an arc between two
   // unrefined triangles of dirty tiles is united from the lower one, an arc into a clean tile from
   // the dirty side, an arc touching a refined triangle from each refined side. An arc inside one
@@ -794,68 +882,8 @@ int FloodFillTiles(const RefinedSurfaceView& surface,
     }
   }
 
-  // Roots (each holds its set's lowest refined triangle) numbered in increasing order of it.
-  std::vector<int>& cellOfRoot = buffers.CellOfRoot;
-  cellOfRoot.resize(nodes);
-  std::vector<int> roots;
-  auto collect = [&](int i)
-  {
-    parent[i] = FindRoot(parent, i);
-    if (parent[i] == i)
-    {
-      roots.push_back(i);
-    }
-  };
-  for (int k = 0; k < numberOfTiles; ++k)
-  {
-    if (!dirty[k])
-    {
-      collect(k);
-    }
-  }
-  for (int i = numberOfTiles; i < nodes; ++i)
-  {
-    collect(i);
-  }
-  std::sort(roots.begin(), roots.end(), [&](int a, int b) { return keys[a] < keys[b]; });
-  for (size_t c = 0; c < roots.size(); ++c)
-  {
-    cellOfRoot[roots[c]] = static_cast<int>(c);
-  }
-  if (cellFirstTriangle)
-  {
-    cellFirstTriangle->resize(roots.size());
-    for (size_t c = 0; c < roots.size(); ++c)
-    {
-      (*cellFirstTriangle)[c] = keys[roots[c]];
-    }
-  }
-  // Each clean tile's cell (in TileNode), then the triangles of the dirty tiles: nothing is
-  // written for the triangles of clean tiles (TriangleCellLookup reads their tile's cell).
-  // Every parent is now a root, so these are independent writes, in parallel; the dirty tiles'
-  // nodes keep their cells (NodeCell) for listing the cells' contents.
-  ResizeDiscardingForEdits(looseCell, count); // the entries read are written below
-  int* cell = looseCell.data();
-  std::vector<int>& nodeCell = buffers.NodeCell;
-  nodeCell.resize(nodes);
-  std::vector<int>& tileCell = buffers.TileNode;
-  constexpr int grain = 1 << 14;
-  tbb::parallel_for(tbb::blocked_range<int>(0, nodes, grain),
-    [&](const tbb::blocked_range<int>& range)
-    {
-      for (int i = range.begin(); i != range.end(); ++i)
-      {
-        if (i < numberOfTiles)
-        {
-          tileCell[i] = dirty[i] ? -1 : cellOfRoot[parent[i]];
-        }
-        else
-        {
-          nodeCell[i] = cell[keys[i]] = cellOfRoot[parent[i]];
-        }
-      }
-    });
-  return static_cast<int>(roots.size());
+  return NumberCellsOfRoots(
+    tiles, dirty, count, nodes, parent, keys, looseCell, cellFirstTriangle, buffers);
 }
 
 // Groups items by cell, stably (a counting sort): items of cell c end up in

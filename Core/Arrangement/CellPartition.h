@@ -21,9 +21,9 @@
 #ifndef boolsurf_CellPartition_h
 #define boolsurf_CellPartition_h
 
-#include "Arrangement/EdgeIndex.h"
 #include "Arrangement/RefinedTriangles.h"
 #include "Geodesic/TracedCurve.h"
+#include "Mesh/EdgeIndex.h"
 #include "Mesh/SurfacePoint.h"
 #include "Mesh/ZeroPageArray.h"
 

@@ -1,7 +1,7 @@
 #include "Arrangement/SweepTriangulation.h"
 
-#include "Arrangement/EdgeIndex.h"
 #include "Arrangement/Predicates.h"
+#include "Mesh/EdgeIndex.h"
 
 #include <algorithm>
 #include <array>

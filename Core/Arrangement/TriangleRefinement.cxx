@@ -1,8 +1,8 @@
 #include "Arrangement/TriangleRefinement.h"
 
-#include "Arrangement/EdgeIndex.h"
 #include "Arrangement/Predicates.h"
 #include "Arrangement/SweepTriangulation.h"
+#include "Mesh/EdgeIndex.h"
 
 #include <algorithm>
 #include <array>

@@ -365,14 +365,77 @@ int TriangleSegmentMap::FindSlot(int t) const
                                                  : -1;
 }
 
-//------------------------------------------------------------------------------
-bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
-  const std::vector<TracedCurve>& curves,
-  TriangleSegmentMap& map,
-  std::string& error,
-  CurvePointRef* failed)
+namespace
 {
-  // Cleared, not reallocated: an edit needs about as much as the last one.
+
+// Steps 1 and 3 run per curve in parallel (each curve's lookups are cache misses in the mesh:
+// about 0.3 us a segment) into per-curve lists, joined in curve order, so the result does not
+// depend on scheduling. A refusal names the first failing curve, as a sequential pass would.
+template <class Body>
+void ParallelOverCurves(int numberOfCurves, const Body& body)
+{
+  tbb::parallel_for(0, numberOfCurves, [&](int ci) { body(ci); });
+}
+
+class CurveRefusals
+{
+public:
+  explicit CurveRefusals(std::size_t curves)
+    : Refusals(curves)
+  {
+  }
+  struct Refusal
+  {
+    std::string Error;
+    int Point = -1;
+  };
+  /// body(curve index, that curve's refusal), curves in parallel.
+  template <class Body>
+  void ForEachCurve(const Body& body)
+  {
+    ParallelOverCurves(
+      static_cast<int>(this->Refusals.size()), [&](int ci) { body(ci, this->Refusals[ci]); });
+  }
+  /// The first curve's refusal into `error` and `failed`; false when no curve refused.
+  bool RefuseFirst(std::string& error, CurvePointRef* failed) const
+  {
+    for (int ci = 0; ci < static_cast<int>(this->Refusals.size()); ++ci)
+    {
+      if (!this->Refusals[ci].Error.empty())
+      {
+        error = this->Refusals[ci].Error;
+        if (failed)
+        {
+          *failed = CurvePointRef{ ci, this->Refusals[ci].Point };
+        }
+        return true;
+      }
+    }
+    return false;
+  }
+
+private:
+  std::vector<Refusal> Refusals;
+};
+using Refusal = CurveRefusals::Refusal;
+
+struct RawEdgePoint
+{
+  int Edge;
+  double T;
+  int Curve, Index;
+};
+
+struct Pending
+{
+  int Triangle;
+  TriangleSegment Segment;
+};
+
+//------------------------------------------------------------------------------
+// Cleared, not reallocated: an edit needs about as much as the last one.
+void ClearMap(std::size_t numberOfCurves, TriangleSegmentMap& map)
+{
   map.Triangles.clear();
   map.SegmentOffset.clear();
   map.Segments.clear();
@@ -384,48 +447,20 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
   {
     segments.clear();
   }
-  const int numberOfCurves = static_cast<int>(curves.size());
-  map.CurveSegments.resize(curves.size());
+  map.CurveSegments.resize(numberOfCurves);
+}
 
-  // Steps 1 and 3 run per curve in parallel (each curve's lookups are cache misses in the
-  // mesh: about 0.3 us a segment) into per-curve lists, joined in curve order, so the result
-  // does not depend on scheduling. A refusal names the first failing curve, as a sequential
-  // pass would.
-  struct Refusal
-  {
-    std::string Error;
-    int Point = -1;
-  };
-  std::vector<Refusal> refusals(curves.size());
-  const auto refuseFirst = [&]()
-  {
-    for (int ci = 0; ci < numberOfCurves; ++ci)
-    {
-      if (!refusals[ci].Error.empty())
-      {
-        error = refusals[ci].Error;
-        if (failed)
-        {
-          *failed = CurvePointRef{ ci, refusals[ci].Point };
-        }
-        return true;
-      }
-    }
-    return false;
-  };
-  const auto forEachCurve = [&](const auto& body)
-  { tbb::parallel_for(0, numberOfCurves, [&](int ci) { body(ci, refusals[ci]); }); };
-
-  // 1. Every point in canonical form; the points on edges collected, with where they came from.
-  struct RawEdgePoint
-  {
-    int Edge;
-    double T;
-    int Curve, Index;
-  };
-  std::vector<std::vector<CanonicalPoint>> normalized(curves.size());
+//------------------------------------------------------------------------------
+// 1. Every point in canonical form (`normalized`); the points on edges collected, with where
+// they came from (`raw`, in curve order).
+void NormalizeCurvePoints(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  CurveRefusals& refusals,
+  std::vector<std::vector<CanonicalPoint>>& normalized,
+  std::vector<RawEdgePoint>& raw)
+{
   std::vector<std::vector<RawEdgePoint>> rawOfCurve(curves.size());
-  forEachCurve(
+  refusals.ForEachCurve(
     [&](int ci, Refusal& refusal)
     {
       const TracedCurve& curve = curves[ci];
@@ -457,21 +492,22 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
         }
       }
     });
-  if (refuseFirst())
-  {
-    return false;
-  }
-  std::vector<RawEdgePoint> raw;
   for (const std::vector<RawEdgePoint>& r : rawOfCurve)
   {
     raw.insert(raw.end(), r.begin(), r.end());
   }
+}
 
-  // 2. Points of one edge closer than EdgePointMergeDistance (in edge parameter) are one point:
-  // the same crossing traced twice with different rounding (two curves sharing a leg, a curve
-  // and its reverse), or a curve point on another curve. Kept apart, they would be distinct
-  // points a few ulps apart, which the triangles on both sides of the edge cannot tell apart
-  // in their own coordinates. Decided once per edge, so both triangles agree.
+//------------------------------------------------------------------------------
+// 2. Points of one edge closer than EdgePointMergeDistance (in edge parameter) are one point:
+// the same crossing traced twice with different rounding (two curves sharing a leg, a curve
+// and its reverse), or a curve point on another curve. Kept apart, they would be distinct
+// points a few ulps apart, which the triangles on both sides of the edge cannot tell apart
+// in their own coordinates. Decided once per edge, so both triangles agree.
+void MergeEdgePoints(std::vector<RawEdgePoint>& raw,
+  std::vector<std::vector<CanonicalPoint>>& normalized,
+  TriangleSegmentMap& map)
+{
   std::sort(raw.begin(),
     raw.end(),
     [](const RawEdgePoint& x, const RawEdgePoint& y)
@@ -488,17 +524,20 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
     }
     normalized[raw[i].Curve][raw[i].Index].T = t;
   }
+}
 
-  // 3. Segments, by triangle or along an edge, per curve: SegmentLocation indices are first
-  // into the curve's own lists, then offset when the lists are joined.
-  struct Pending
-  {
-    int Triangle;
-    TriangleSegment Segment;
-  };
-  std::vector<std::vector<Pending>> pendingOfCurve(curves.size());
-  std::vector<std::vector<EdgeSegment>> edgeSegmentsOfCurve(curves.size());
-  forEachCurve(
+//------------------------------------------------------------------------------
+// 3. Segments, by triangle or along an edge, per curve: SegmentLocation indices are first
+// into the curve's own lists (offset when the lists are joined, JoinCurveSegments).
+void SplitCurvesIntoSegments(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  const std::vector<std::vector<CanonicalPoint>>& normalized,
+  CurveRefusals& refusals,
+  TriangleSegmentMap& map,
+  std::vector<std::vector<Pending>>& pendingOfCurve,
+  std::vector<std::vector<EdgeSegment>>& edgeSegmentsOfCurve)
+{
+  refusals.ForEachCurve(
     [&](int ci, Refusal& refusal)
     {
       const TracedCurve& curve = curves[ci];
@@ -551,11 +590,19 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
         pending.push_back(p);
       }
     });
-  if (refuseFirst())
-  {
-    return false;
-  }
-  std::vector<int> pendingBase(curves.size() + 1, 0);
+}
+
+//------------------------------------------------------------------------------
+// The per-curve lists joined in curve order: edge segments appended to the map, and each
+// curve's SegmentLocation indices offset. pendingBase[c]: index of curve c's first pending
+// triangle segment; the last entry is their count.
+void JoinCurveSegments(int numberOfCurves,
+  const std::vector<std::vector<Pending>>& pendingOfCurve,
+  const std::vector<std::vector<EdgeSegment>>& edgeSegmentsOfCurve,
+  TriangleSegmentMap& map,
+  std::vector<int>& pendingBase)
+{
+  pendingBase.assign(static_cast<std::size_t>(numberOfCurves) + 1, 0);
   for (int ci = 0; ci < numberOfCurves; ++ci)
   {
     pendingBase[ci + 1] = pendingBase[ci] + static_cast<int>(pendingOfCurve[ci].size());
@@ -567,9 +614,12 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
       loc.Index += loc.AlongEdge ? edgeBase : pendingBase[ci];
     }
   }
-  const int pendingCount = pendingBase[numberOfCurves];
+}
 
-  // Edge points are sorted and unique (step 2): each has one id for both triangles of its edge.
+//------------------------------------------------------------------------------
+// Edge points are sorted and unique (step 2): each has one id for both triangles of its edge.
+void IndexEdgePoints(TriangleSegmentMap& map)
+{
   for (int i = 0; i < static_cast<int>(map.EdgePoints.size());)
   {
     int j = i;
@@ -583,9 +633,16 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
     i = j;
   }
   map.PointEdgeStart.push_back(static_cast<int>(map.EdgePoints.size()));
+}
 
-  // Triangles to refine: crossed ones, and both sides of every edge holding a point (looked
-  // up in parallel, like the segments).
+//------------------------------------------------------------------------------
+// Triangles to refine (map.Triangles): crossed ones, and both sides of every edge holding a
+// point (looked up in parallel, like the segments).
+void CollectTrianglesToRefine(const TriangleMesh& mesh,
+  const std::vector<std::vector<Pending>>& pendingOfCurve,
+  int pendingCount,
+  TriangleSegmentMap& map)
+{
   const int pointEdges = static_cast<int>(map.PointEdges.size());
   std::vector<std::vector<int>> sidesOfEdge(static_cast<std::size_t>(pointEdges));
   tbb::parallel_for(tbb::blocked_range<int>(0, pointEdges, 256),
@@ -611,11 +668,21 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
   }
   SortUniqueIds(touched);
   map.Triangles = touched;
+}
 
-  // Group segments by slot (stable: curve order inside a triangle).
-  std::vector<std::vector<int>> slotOfPending(curves.size());
-  forEachCurve(
-    [&](int ci, Refusal&)
+//------------------------------------------------------------------------------
+// Segments grouped by slot (stable: curve order inside a triangle), and the curves'
+// SegmentLocation indices pointed at their places.
+void GroupSegmentsBySlot(int numberOfCurves,
+  const std::vector<std::vector<Pending>>& pendingOfCurve,
+  const std::vector<int>& pendingBase,
+  TriangleSegmentMap& map)
+{
+  const std::vector<int>& touched = map.Triangles;
+  const int pendingCount = pendingBase[numberOfCurves];
+  std::vector<std::vector<int>> slotOfPending(static_cast<std::size_t>(numberOfCurves));
+  ParallelOverCurves(numberOfCurves,
+    [&](int ci)
     {
       slotOfPending[ci].resize(pendingOfCurve[ci].size());
       for (size_t i = 0; i < pendingOfCurve[ci].size(); ++i)
@@ -647,8 +714,8 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
       map.Segments[at] = pendingOfCurve[ci][i].Segment;
     }
   }
-  forEachCurve(
-    [&](int ci, Refusal&)
+  ParallelOverCurves(numberOfCurves,
+    [&](int ci)
     {
       for (SegmentLocation& loc : map.CurveSegments[ci])
       {
@@ -658,6 +725,41 @@ bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
         }
       }
     });
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool BuildTriangleSegmentMap(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  TriangleSegmentMap& map,
+  std::string& error,
+  CurvePointRef* failed)
+{
+  const int numberOfCurves = static_cast<int>(curves.size());
+  ClearMap(curves.size(), map);
+  CurveRefusals refusals(curves.size());
+  std::vector<std::vector<CanonicalPoint>> normalized(curves.size());
+  std::vector<RawEdgePoint> raw;
+  NormalizeCurvePoints(mesh, curves, refusals, normalized, raw);
+  if (refusals.RefuseFirst(error, failed))
+  {
+    return false;
+  }
+  MergeEdgePoints(raw, normalized, map);
+  std::vector<std::vector<Pending>> pendingOfCurve(curves.size());
+  std::vector<std::vector<EdgeSegment>> edgeSegmentsOfCurve(curves.size());
+  SplitCurvesIntoSegments(
+    mesh, curves, normalized, refusals, map, pendingOfCurve, edgeSegmentsOfCurve);
+  if (refusals.RefuseFirst(error, failed))
+  {
+    return false;
+  }
+  std::vector<int> pendingBase;
+  JoinCurveSegments(numberOfCurves, pendingOfCurve, edgeSegmentsOfCurve, map, pendingBase);
+  IndexEdgePoints(map);
+  CollectTrianglesToRefine(mesh, pendingOfCurve, pendingBase[numberOfCurves], map);
+  GroupSegmentsBySlot(numberOfCurves, pendingOfCurve, pendingBase, map);
   return true;
 }
 

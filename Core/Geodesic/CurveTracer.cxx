@@ -315,7 +315,7 @@ TraceStatus CurveTracer::MakeKey(const std::vector<SurfacePoint>& points,
   key.Type = type;
   key.Closed = closed;
   key.Resolution = this->Resolution;
-  key.Method = this->Solver.GetMethod();
+  key.Method = this->Solver.GetOptions().Method;
   return TraceStatus::Success();
 }
 
@@ -392,7 +392,7 @@ int CurveTracer::PrepareHelpers(int threads, std::size_t tasks)
   const int cores = std::max(1, tbb::info::default_concurrency());
   int workers = threads > 0 ? std::min(threads, cores) : cores;
   workers = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(workers), tasks));
-  if (this->Solver.GetMethod() == GeodesicMethod::LocallyShortest)
+  if (this->Solver.GetOptions().Method == GeodesicMethod::LocallyShortest)
   {
     workers = 1;
   }
@@ -406,7 +406,7 @@ int CurveTracer::PrepareHelpers(int threads, std::size_t tasks)
     CurveTracer& helper = *this->Helpers[k];
     helper.Resolution = this->Resolution;
     helper.KeepWrittenForms = this->KeepWrittenForms;
-    helper.Solver.CopySettings(this->Solver);
+    helper.Solver.SetOptions(this->Solver.GetOptions());
   }
   return std::max(1, workers);
 }

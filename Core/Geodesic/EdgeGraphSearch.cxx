@@ -318,6 +318,66 @@ void EdgeGraphSearch::NextGeneration()
   ++this->Generation;
 }
 
+namespace
+{
+//------------------------------------------------------------------------------
+// FindPath's landmarks (k of them per vertex in `landmarks`): the `activeLandmarks` with the
+// best bounds on the distance between the ends (`active`), and per active landmark the hi/lo
+// bounds of the end, then of the start (`bounds`; see FindPath).
+void SelectActiveLandmarks(const std::vector<float>& landmarks,
+  const std::vector<int>& internal,
+  int k,
+  int activeLandmarks,
+  const std::vector<EdgeGraphSearch::Terminal>& sources,
+  const std::vector<EdgeGraphSearch::Terminal>& targets,
+  std::vector<std::pair<double, int>>& scores,
+  std::vector<int>& active,
+  std::vector<double>& bounds)
+{
+  using Terminal = EdgeGraphSearch::Terminal;
+  auto value = [&](const Terminal& terminal, int l)
+  { return static_cast<double>(landmarks[std::size_t(internal[terminal.Vertex]) * k + l]); };
+  scores.clear();
+  for (int l = 0; l < k; ++l)
+  {
+    double hi = -std::numeric_limits<double>::infinity();
+    double lo = std::numeric_limits<double>::infinity();
+    for (const Terminal& terminal : targets)
+    {
+      hi = std::max(hi, value(terminal, l) - terminal.Cost);
+      lo = std::min(lo, value(terminal, l) + terminal.Cost);
+    }
+    double score = std::numeric_limits<double>::infinity();
+    for (const Terminal& terminal : sources)
+    {
+      const double d = value(terminal, l);
+      score = std::min(score, terminal.Cost + std::max(d - hi, lo - d));
+    }
+    scores.emplace_back(-score, l);
+  }
+  const int count = std::min(k, activeLandmarks);
+  std::partial_sort(scores.begin(), scores.begin() + count, scores.end());
+  for (int a = 0; a < count; ++a)
+  {
+    const int l = scores[a].second;
+    active.push_back(l);
+    for (int side = 0; side < 2; ++side)
+    {
+      double hi = -std::numeric_limits<double>::infinity();
+      double lo = std::numeric_limits<double>::infinity();
+      for (const Terminal& terminal : side == 0 ? targets : sources)
+      {
+        hi = std::max(hi, value(terminal, l) - terminal.Cost);
+        lo = std::min(lo, value(terminal, l) + terminal.Cost);
+      }
+      bounds.push_back(hi);
+      bounds.push_back(lo);
+    }
+  }
+}
+
+} // namespace
+
 //------------------------------------------------------------------------------
 // Bidirectional A* with the average potential p(v) = (pi_end(v) - pi_start(v)) / 2, where
 // pi_end(v) bounds d(v, to) from below (the larger of |v - to| and the landmark bounds) and
@@ -356,48 +416,15 @@ double EdgeGraphSearch::FindPath(const std::vector<Terminal>& sources,
   this->Bounds.clear();
   if (k > 0)
   {
-    auto value = [&](const Terminal& terminal, int l)
-    {
-      return static_cast<double>(
-        this->Landmarks[std::size_t(this->Internal[terminal.Vertex]) * k + l]);
-    };
-    this->Scores.clear();
-    for (int l = 0; l < k; ++l)
-    {
-      double hi = -std::numeric_limits<double>::infinity();
-      double lo = std::numeric_limits<double>::infinity();
-      for (const Terminal& terminal : targets)
-      {
-        hi = std::max(hi, value(terminal, l) - terminal.Cost);
-        lo = std::min(lo, value(terminal, l) + terminal.Cost);
-      }
-      double score = std::numeric_limits<double>::infinity();
-      for (const Terminal& terminal : sources)
-      {
-        const double d = value(terminal, l);
-        score = std::min(score, terminal.Cost + std::max(d - hi, lo - d));
-      }
-      this->Scores.emplace_back(-score, l);
-    }
-    const int active = std::min(k, this->ActiveLandmarks);
-    std::partial_sort(this->Scores.begin(), this->Scores.begin() + active, this->Scores.end());
-    for (int a = 0; a < active; ++a)
-    {
-      const int l = this->Scores[a].second;
-      this->Active.push_back(l);
-      for (int side = 0; side < 2; ++side)
-      {
-        double hi = -std::numeric_limits<double>::infinity();
-        double lo = std::numeric_limits<double>::infinity();
-        for (const Terminal& terminal : side == 0 ? targets : sources)
-        {
-          hi = std::max(hi, value(terminal, l) - terminal.Cost);
-          lo = std::min(lo, value(terminal, l) + terminal.Cost);
-        }
-        this->Bounds.push_back(hi);
-        this->Bounds.push_back(lo);
-      }
-    }
+    SelectActiveLandmarks(this->Landmarks,
+      this->Internal,
+      k,
+      this->ActiveLandmarks,
+      sources,
+      targets,
+      this->Scores,
+      this->Active,
+      this->Bounds);
   }
   const int na = static_cast<int>(this->Active.size());
   const int* activeList = this->Active.data();

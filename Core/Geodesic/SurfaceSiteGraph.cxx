@@ -362,18 +362,12 @@ void SurfaceSiteGraph::AppendChain(int v, bool down, std::vector<int>& out) cons
   }
 }
 
-//------------------------------------------------------------------------------
-double SurfaceSiteGraph::FindRoute(const std::vector<EdgeGraphSearch::Terminal>& sources,
-  const Vec3& from,
-  const std::vector<EdgeGraphSearch::Terminal>& targets,
-  const Vec3& to,
-  const std::vector<char>& avoid,
-  Scratch& scratch,
-  std::vector<int>& vertices) const
+namespace
 {
-  (void)from;
-  vertices.clear();
-  const int ns = static_cast<int>(this->Sites.size());
+//------------------------------------------------------------------------------
+// FindRoute's per-site arrays sized for `ns` sites, and a new generation of their stamps.
+void ResetSiteStamps(int ns, SurfaceSiteGraph::Scratch& scratch)
+{
   if (scratch.Stamp.size() != static_cast<std::size_t>(ns))
   {
     scratch.Cost.assign(ns, 0.0);
@@ -389,6 +383,59 @@ double SurfaceSiteGraph::FindRoute(const std::vector<EdgeGraphSearch::Terminal>&
     std::fill(scratch.Stamp.begin(), scratch.Stamp.end(), 0u);
     scratch.Generation = 1;
   }
+}
+
+//------------------------------------------------------------------------------
+// Cut loops of a mesh-edge path on `nv` vertices (a chain down a cell may retrace the chain
+// that came up it): keep the first visit of a vertex and drop what lay between its visits.
+// Mesh-sized, stamped.
+void CutLoops(std::size_t nv, SurfaceSiteGraph::Scratch& scratch, std::vector<int>& vertices)
+{
+  if (scratch.Position.size() != nv)
+  {
+    scratch.Position.assign(nv, 0);
+    scratch.PositionStamp.assign(nv, 0u);
+    scratch.PositionGeneration = 0;
+  }
+  if (++scratch.PositionGeneration == 0)
+  {
+    std::fill(scratch.PositionStamp.begin(), scratch.PositionStamp.end(), 0u);
+    scratch.PositionGeneration = 1;
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    const int v = vertices[i];
+    if (scratch.PositionStamp[v] == scratch.PositionGeneration)
+    {
+      const int at = scratch.Position[v];
+      if (at < static_cast<int>(kept) && vertices[at] == v)
+      {
+        kept = static_cast<std::size_t>(at) + 1;
+        continue;
+      }
+    }
+    scratch.PositionStamp[v] = scratch.PositionGeneration;
+    scratch.Position[v] = static_cast<int>(kept);
+    vertices[kept++] = v;
+  }
+  vertices.resize(kept);
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+double SurfaceSiteGraph::FindRoute(const std::vector<EdgeGraphSearch::Terminal>& sources,
+  const Vec3& from,
+  const std::vector<EdgeGraphSearch::Terminal>& targets,
+  const Vec3& to,
+  const std::vector<char>& avoid,
+  Scratch& scratch,
+  std::vector<int>& vertices) const
+{
+  (void)from;
+  vertices.clear();
+  const int ns = static_cast<int>(this->Sites.size());
+  ResetSiteStamps(ns, scratch);
   const std::uint32_t generation = scratch.Generation;
   auto seen = [&](int s) { return scratch.Stamp[s] == generation; };
   auto bound = [&](int s) { return Distance(this->Mesh.GetPosition(this->Sites[s]), to); };
@@ -556,38 +603,7 @@ double SurfaceSiteGraph::FindRoute(const std::vector<EdgeGraphSearch::Terminal>&
   vertices.pop_back();
   this->AppendChain(exitCorner[exitOf(bestSite)], true, vertices);
 
-  // Cut loops (a chain down a cell may retrace the chain that came up it): keep the first
-  // visit of a vertex and drop what lay between its visits. Mesh-sized, stamped.
-  const std::size_t nv = static_cast<std::size_t>(this->Mesh.GetNumberOfVertices());
-  if (scratch.Position.size() != nv)
-  {
-    scratch.Position.assign(nv, 0);
-    scratch.PositionStamp.assign(nv, 0u);
-    scratch.PositionGeneration = 0;
-  }
-  if (++scratch.PositionGeneration == 0)
-  {
-    std::fill(scratch.PositionStamp.begin(), scratch.PositionStamp.end(), 0u);
-    scratch.PositionGeneration = 1;
-  }
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < vertices.size(); ++i)
-  {
-    const int v = vertices[i];
-    if (scratch.PositionStamp[v] == scratch.PositionGeneration)
-    {
-      const int at = scratch.Position[v];
-      if (at < static_cast<int>(kept) && vertices[at] == v)
-      {
-        kept = static_cast<std::size_t>(at) + 1;
-        continue;
-      }
-    }
-    scratch.PositionStamp[v] = scratch.PositionGeneration;
-    scratch.Position[v] = static_cast<int>(kept);
-    vertices[kept++] = v;
-  }
-  vertices.resize(kept);
+  CutLoops(static_cast<std::size_t>(this->Mesh.GetNumberOfVertices()), scratch, vertices);
   return best;
 }
 

@@ -79,20 +79,10 @@ bool InArc(double p, double q, double r)
   return wrap(r - p) < wrap(q - p);
 }
 
-} // namespace
-
 //------------------------------------------------------------------------------
-bool HomologyBasis::Compute(const TriangleMesh& mesh,
-  const MeshTopology& topology,
-  const HomologyOptions& options,
-  std::string& error)
+// Every component must be orientable: a non-orientable one has no winding numbers.
+bool CheckOrientable(const MeshTopology& topology, std::string& error)
 {
-  *this = HomologyBasis();
-  this->Mesh = &mesh;
-  this->MeshSerial = mesh.GetSerial();
-  const int nt = mesh.GetNumberOfTriangles();
-  const int ne = mesh.GetNumberOfEdges();
-  const int nv = mesh.GetNumberOfVertices();
   const int nc = topology.GetNumberOfComponents();
   for (int c = 0; c < nc; ++c)
   {
@@ -104,8 +94,20 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
     }
   }
 
-  // Base triangle per component.
-  this->BaseTriangles.assign(nc, -1);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Base triangle per component: the one given in the options, else its first triangle.
+bool ChooseBaseTriangles(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const HomologyOptions& options,
+  std::vector<int>& baseTriangles,
+  std::string& error)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  const int nc = topology.GetNumberOfComponents();
+  baseTriangles.assign(nc, -1);
   for (int c = 0; c < nc && c < static_cast<int>(options.BaseTriangles.size()); ++c)
   {
     const int b = options.BaseTriangles[c];
@@ -121,19 +123,36 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
                  : " is not in that component");
       return false;
     }
-    this->BaseTriangles[c] = b;
+    baseTriangles[c] = b;
   }
   for (int t = 0; t < nt; ++t)
   {
     const int c = topology.TriangleComponent[t];
-    if (c >= 0 && this->BaseTriangles[c] < 0)
+    if (c >= 0 && baseTriangles[c] < 0)
     {
-      this->BaseTriangles[c] = t;
+      baseTriangles[c] = t;
     }
   }
 
-  // C: shortest-path tree of the dual graph from the base triangles (centroid distances).
-  std::vector<Vec3> centroid(nt);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// C: shortest-path tree of the dual graph from the base triangles (centroid distances).
+struct DualTree
+{
+  std::vector<Vec3> Centroid;
+  std::vector<double> Distance;
+  std::vector<int> ParentTriangle;
+  std::vector<int>& ParentEdge; ///< per triangle: edge crossed towards the root, -1 at roots
+  std::vector<int>& Depth;
+};
+
+void BuildDualTree(const TriangleMesh& mesh, const std::vector<int>& baseTriangles, DualTree& tree)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  std::vector<Vec3>& centroid = tree.Centroid;
+  centroid.resize(nt);
   for (int t = 0; t < nt; ++t)
   {
     if (mesh.IsUsable(t))
@@ -141,12 +160,14 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
       centroid[t] = Centroid(mesh, t);
     }
   }
-  std::vector<double> dist(nt, HUGE_VAL);
-  this->DualParentEdge.assign(nt, -1);
-  std::vector<int> parentTriangle(nt, -1);
+  std::vector<double>& dist = tree.Distance;
+  dist.assign(nt, HUGE_VAL);
+  tree.ParentEdge.assign(nt, -1);
+  std::vector<int>& parentTriangle = tree.ParentTriangle;
+  parentTriangle.assign(nt, -1);
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  for (int b : this->BaseTriangles)
+  for (int b : baseTriangles)
   {
     if (b >= 0)
     {
@@ -173,13 +194,13 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
       if (dn < dist[n])
       {
         dist[n] = dn;
-        this->DualParentEdge[n] = mesh.GetEdgeId(t, k);
+        tree.ParentEdge[n] = mesh.GetEdgeId(t, k);
         parentTriangle[n] = t;
         queue.push({ dn, n });
       }
     }
   }
-  this->DualDepth.assign(nt, 0);
+  tree.Depth.assign(nt, 0);
   {
     std::vector<int> order(nt);
     std::iota(order.begin(), order.end(), 0);
@@ -188,16 +209,30 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
     {
       if (parentTriangle[t] >= 0)
       {
-        this->DualDepth[t] = this->DualDepth[parentTriangle[t]] + 1;
+        tree.Depth[t] = tree.Depth[parentTriangle[t]] + 1;
       }
     }
   }
+}
+
+//------------------------------------------------------------------------------
+// T: spanning tree of the primal graph on the edges C does not cross (inT); boundary edges
+// first, then the others by decreasing length of the dual loop they close (greedy system of
+// loops). Returns the edges in neither tree, by component then id: one generator each.
+std::vector<int> CutEdgesOfTheTrees(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const DualTree& tree,
+  std::vector<char>& inT)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  const int ne = mesh.GetNumberOfEdges();
+  const int nv = mesh.GetNumberOfVertices();
   std::vector<char> inC(ne, 0);
   for (int t = 0; t < nt; ++t)
   {
-    if (this->DualParentEdge[t] >= 0)
+    if (tree.ParentEdge[t] >= 0)
     {
-      inC[this->DualParentEdge[t]] = 1;
+      inC[tree.ParentEdge[t]] = 1;
     }
   }
   // Each boundary loop is a virtual face, a leaf of C hanging on its first edge.
@@ -210,10 +245,8 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
     }
   }
 
-  // T: spanning tree of the primal graph on the edges C does not cross; boundary edges first,
-  // then the others by decreasing length of the dual loop they close (greedy system of loops).
   UnionFind forest(nv);
-  std::vector<char> inT(ne, 0);
+  inT.assign(ne, 0);
   std::vector<int> interior;
   for (int e = 0; e < ne; ++e)
   {
@@ -235,8 +268,8 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
   for (int e : interior)
   {
     const auto sides = EdgeSides(mesh, e);
-    loopLength[e] =
-      dist[sides[0]] + dist[sides[1]] + Distance(centroid[sides[0]], centroid[sides[1]]);
+    loopLength[e] = tree.Distance[sides[0]] + tree.Distance[sides[1]] +
+      Distance(tree.Centroid[sides[0]], tree.Centroid[sides[1]]);
   }
   std::stable_sort(
     interior.begin(), interior.end(), [&](int a, int b) { return loopLength[a] > loopLength[b]; });
@@ -262,8 +295,19 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
       return ca != cb ? ca < cb : a < b;
     });
 
-  // Generator count per component must be 2g (else the mesh is not a manifold surface).
-  std::vector<int> perComponent(nc, 0);
+  return leftover;
+}
+
+//------------------------------------------------------------------------------
+// Generator count per component must be 2g (else the mesh is not a manifold surface).
+bool CheckGeneratorCounts(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const std::vector<int>& leftover,
+  std::vector<int>& perComponent,
+  std::string& error)
+{
+  const int nc = topology.GetNumberOfComponents();
+  perComponent.assign(nc, 0);
   for (int e : leftover)
   {
     ++perComponent[topology.TriangleComponent[EdgeSides(mesh, e)[0]]];
@@ -280,7 +324,19 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
     }
   }
 
-  // Generators: from the left side of x along C to the right side, then across x.
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Generators: from the left side of x along C to the right side, then across x.
+void BuildGenerators(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const DualTree& tree,
+  const std::vector<int>& leftover,
+  const std::vector<int>& perComponent,
+  std::vector<HomologyGenerator>& generators)
+{
+  const int nc = topology.GetNumberOfComponents();
   std::vector<int> indexInComponent(nc, 0);
   for (int x : leftover)
   {
@@ -292,16 +348,16 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
     int a = sides[0], b = sides[1];
     while (a != b)
     {
-      if (this->DualDepth[a] >= this->DualDepth[b])
+      if (tree.Depth[a] >= tree.Depth[b])
       {
-        edges0.push_back(this->DualParentEdge[a]);
-        a = parentTriangle[a];
+        edges0.push_back(tree.ParentEdge[a]);
+        a = tree.ParentTriangle[a];
         up0.push_back(a);
       }
       else
       {
-        edges1.push_back(this->DualParentEdge[b]);
-        b = parentTriangle[b];
+        edges1.push_back(tree.ParentEdge[b]);
+        b = tree.ParentTriangle[b];
         up1.push_back(b);
       }
     }
@@ -320,11 +376,21 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
       p.T = g.CrossingParameter;
       g.Points.push_back(p);
     }
-    this->Generators.push_back(std::move(g));
+    generators.push_back(std::move(g));
   }
+}
 
-  // Dual basis: primal loop l_x = x (canonical direction), then T from its end back to its
-  // start through the root; stored per edge as (generator, coefficient).
+//------------------------------------------------------------------------------
+// Dual basis: primal loop l_x = x (canonical direction), then T from its end back to its
+// start through the root; stored per edge as (generator, coefficient).
+void BuildDualBasis(const TriangleMesh& mesh,
+  const std::vector<char>& inT,
+  const std::vector<HomologyGenerator>& generators,
+  std::vector<int>& cochainOffset,
+  std::vector<std::pair<int, int>>& cochainEntries)
+{
+  const int ne = mesh.GetNumberOfEdges();
+  const int nv = mesh.GetNumberOfVertices();
   std::vector<std::vector<std::pair<int, int>>> adjacency(nv); // (neighbour, edge)
   for (int e = 0; e < ne; ++e)
   {
@@ -362,9 +428,9 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
     }
   }
   std::vector<std::vector<std::pair<int, int>>> perEdge(ne);
-  for (int gi = 0; gi < this->GetNumberOfGenerators(); ++gi)
+  for (int gi = 0; gi < static_cast<int>(generators.size()); ++gi)
   {
-    const int x = this->Generators[gi].CutEdge;
+    const int x = generators[gi].CutEdge;
     std::unordered_map<int, int> chain;
     chain[x] += 1;
     const auto ends = mesh.GetEdgeVertices(x);
@@ -387,12 +453,41 @@ bool HomologyBasis::Compute(const TriangleMesh& mesh,
       }
     }
   }
-  this->CochainOffset.assign(ne + 1, 0);
+  cochainOffset.assign(ne + 1, 0);
   for (int e = 0; e < ne; ++e)
   {
-    this->CochainOffset[e + 1] = this->CochainOffset[e] + static_cast<int>(perEdge[e].size());
-    this->CochainEntries.insert(this->CochainEntries.end(), perEdge[e].begin(), perEdge[e].end());
+    cochainOffset[e + 1] = cochainOffset[e] + static_cast<int>(perEdge[e].size());
+    cochainEntries.insert(cochainEntries.end(), perEdge[e].begin(), perEdge[e].end());
   }
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool HomologyBasis::Compute(const TriangleMesh& mesh,
+  const MeshTopology& topology,
+  const HomologyOptions& options,
+  std::string& error)
+{
+  *this = HomologyBasis();
+  this->Mesh = &mesh;
+  this->MeshSerial = mesh.GetSerial();
+  if (!CheckOrientable(topology, error) ||
+    !ChooseBaseTriangles(mesh, topology, options, this->BaseTriangles, error))
+  {
+    return false;
+  }
+  DualTree tree{ {}, {}, {}, this->DualParentEdge, this->DualDepth };
+  BuildDualTree(mesh, this->BaseTriangles, tree);
+  std::vector<char> inT;
+  const std::vector<int> leftover = CutEdgesOfTheTrees(mesh, topology, tree, inT);
+  std::vector<int> perComponent;
+  if (!CheckGeneratorCounts(mesh, topology, leftover, perComponent, error))
+  {
+    return false;
+  }
+  BuildGenerators(mesh, topology, tree, leftover, perComponent, this->Generators);
+  BuildDualBasis(mesh, inT, this->Generators, this->CochainOffset, this->CochainEntries);
   return true;
 }
 

@@ -1,6 +1,6 @@
 #include "Labeling/BoundaryPlugs.h"
 
-#include "Arrangement/EdgeIndex.h"
+#include "Mesh/EdgeIndex.h"
 
 #include <algorithm>
 

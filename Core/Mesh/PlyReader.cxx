@@ -111,18 +111,15 @@ bool ReadBinary(std::istream& in, const std::string& t, bool swap, double& value
   return true;
 }
 
-} // namespace
-
 //------------------------------------------------------------------------------
-bool ReadPly(const std::string& path, MeshData& out, std::string& error)
+// The header: the format and the elements with their properties (only header lines; the
+// stream is left at the body).
+bool ReadHeader(std::istream& in,
+  const std::string& path,
+  Format& format,
+  std::vector<Element>& elements,
+  std::string& error)
 {
-  out = MeshData();
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-  {
-    error = "cannot open PLY file '" + path + "'";
-    return false;
-  }
   std::string line;
   std::getline(in, line);
   if (!line.empty() && line.back() == '\r')
@@ -132,9 +129,7 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
     error = "'" + path + "' is not a PLY file (no 'ply' magic line)";
     return false;
   }
-  Format format = Format::Ascii;
   bool formatSeen = false;
-  std::vector<Element> elements;
   while (std::getline(in, line))
   {
     if (!line.empty() && line.back() == '\r')
@@ -226,33 +221,51 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
     error = "'" + path + "': no format line";
     return false;
   }
-  // The file must hold at least the fixed-size part of every element (in ascii, a digit and a
-  // separator per value): checked up front, so a header announcing billions of elements fails
-  // at once instead of looping or allocating for them.
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The file must hold at least the fixed-size part of every element (in ascii, a digit and a
+// separator per value): checked up front, so a header announcing billions of elements fails
+// at once instead of looping or allocating for them.
+bool CheckBodySize(std::istream& in,
+  const std::string& path,
+  Format format,
+  const std::vector<Element>& elements,
+  std::string& error)
+{
+  const std::streampos body = in.tellg();
+  in.seekg(0, std::ios::end);
+  const long double remaining = static_cast<long double>(in.tellg() - body);
+  in.seekg(body);
+  long double needed = 0;
+  for (const Element& e : elements)
   {
-    const std::streampos body = in.tellg();
-    in.seekg(0, std::ios::end);
-    const long double remaining = static_cast<long double>(in.tellg() - body);
-    in.seekg(body);
-    long double needed = 0;
-    for (const Element& e : elements)
+    long double size = 0;
+    for (const Property& prop : e.Properties)
     {
-      long double size = 0;
-      for (const Property& prop : e.Properties)
-      {
-        size += format == Format::Ascii
-          ? 2
-          : TypeSize(prop.CountType.empty() ? prop.Type : prop.CountType);
-      }
-      needed += size * e.Count;
+      size +=
+        format == Format::Ascii ? 2 : TypeSize(prop.CountType.empty() ? prop.Type : prop.CountType);
     }
-    // The last ascii value may end the file without a separator.
-    if (needed > remaining + (format == Format::Ascii ? 1 : 0))
-    {
-      error = "'" + path + "': truncated (the header announces more data than the file holds)";
-      return false;
-    }
+    needed += size * e.Count;
   }
+  // The last ascii value may end the file without a separator.
+  if (needed > remaining + (format == Format::Ascii ? 1 : 0))
+  {
+    error = "'" + path + "': truncated (the header announces more data than the file holds)";
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The elements a triangle mesh needs, with the properties read from them; `vertexCount` is
+// the number of vertices announced.
+bool CheckElements(const std::string& path,
+  const std::vector<Element>& elements,
+  long long& vertexCount,
+  std::string& error)
+{
   // A triangle mesh has both (vtkPLYReader, run next by the scene reader, crashes without them).
   for (const char* required : { "vertex", "face" })
   {
@@ -264,7 +277,7 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
       return false;
     }
   }
-  long long vertexCount = 0;
+  vertexCount = 0;
   for (const Element& e : elements)
   {
     if (e.Name == "face" &&
@@ -301,6 +314,19 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
     error = "'" + path + "': " + std::to_string(vertexCount) + " vertices, more than supported";
     return false;
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The body: vertex coordinates and faces (fanned into triangles); other data skipped.
+bool ReadBody(std::istream& in,
+  const std::string& path,
+  Format format,
+  const std::vector<Element>& elements,
+  long long vertexCount,
+  MeshData& out,
+  std::string& error)
+{
   const bool swap = (format == Format::BinaryBig) == HostIsLittleEndian();
   auto readValue = [&](const std::string& type, double& v) -> bool
   {
@@ -384,6 +410,27 @@ bool ReadPly(const std::string& path, MeshData& out, std::string& error)
     }
   }
   return true;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool ReadPly(const std::string& path, MeshData& out, std::string& error)
+{
+  out = MeshData();
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    error = "cannot open PLY file '" + path + "'";
+    return false;
+  }
+  Format format = Format::Ascii;
+  std::vector<Element> elements;
+  long long vertexCount = 0;
+  return ReadHeader(in, path, format, elements, error) &&
+    CheckBodySize(in, path, format, elements, error) &&
+    CheckElements(path, elements, vertexCount, error) &&
+    ReadBody(in, path, format, elements, vertexCount, out, error);
 }
 
 } // namespace boolsurf

@@ -79,6 +79,142 @@ void TriangleMesh::BuildVertexCorners()
   }
 }
 
+namespace
+{
+// BuildTwins' marks per half-edge.
+enum : std::uint8_t
+{
+  Unmarked,
+  Covered,
+  Owned
+};
+
+// Triangles per block of BuildTwins' parallel passes.
+constexpr int TwinBlockSize = 1 << 13;
+
+struct Partner
+{
+  int HalfEdge;
+  bool SameDirection;
+};
+
+// The other half-edges between the ends of half-edge h, whichever way they run.
+void FindPartners(const TriangleMesh& mesh, int h, std::vector<Partner>& partners)
+{
+  partners.clear();
+  const int t = h / 3, k = h % 3;
+  const Triangle& tri = mesh.GetTriangle(t);
+  const int a = tri[k];
+  const int b = tri[(k + 1) % 3];
+  for (int c : mesh.GetVertexCorners(a))
+  {
+    const int t2 = c / 3;
+    if (t2 == t)
+    {
+      continue;
+    }
+    const int j = c % 3;
+    const Triangle& tri2 = mesh.GetTriangle(t2);
+    if (tri2[(j + 2) % 3] == b)
+    {
+      partners.push_back({ 3 * t2 + (j + 2) % 3, false }); // edge b->a: properly oriented
+    }
+    else if (tri2[(j + 1) % 3] == b)
+    {
+      partners.push_back({ c, true }); // edge a->b again: flipped neighbour
+    }
+  }
+}
+
+// visit(block, half-edge, partners scratch) for every half-edge of a usable triangle, blocks of
+// TwinBlockSize triangles in parallel.
+template <class Visit>
+void ForEachUsableHalfEdge(const TriangleMesh& mesh, int blocks, const Visit& visit)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  tbb::parallel_for(0,
+    blocks,
+    [&](int b)
+    {
+      std::vector<Partner> partners;
+      const int end = 3 * std::min(nt, (b + 1) * TwinBlockSize);
+      for (int h = 3 * b * TwinBlockSize; h < end; ++h)
+      {
+        if (mesh.IsUsable(h / 3))
+        {
+          visit(b, h, partners);
+        }
+      }
+    });
+}
+
+// Passes 1 and 2 of BuildTwins (see there): every edge's owner half-edge marked Owned, its
+// other half-edges Covered, and the twins of two-triangle edges set.
+void MarkEdgeOwners(const TriangleMesh& mesh,
+  int blocks,
+  std::vector<int>& twin,
+  std::vector<std::uint8_t>& mark)
+{
+  const auto setTwins = [&twin](int h, const std::vector<Partner>& partners)
+  {
+    if (partners.size() == 1)
+    {
+      twin[h] = partners[0].HalfEdge;
+      twin[partners[0].HalfEdge] = h;
+    }
+  };
+  const auto ascending = [&mesh](int h)
+  {
+    const Triangle& tri = mesh.GetTriangle(h / 3);
+    return tri[h % 3] < tri[(h % 3 + 1) % 3];
+  };
+  ForEachUsableHalfEdge(mesh,
+    blocks,
+    [&](int, int h, std::vector<Partner>& partners)
+    {
+      if (!ascending(h))
+      {
+        return;
+      }
+      FindPartners(mesh, h, partners);
+      int owner = h;
+      for (const Partner& p : partners)
+      {
+        if (p.SameDirection && p.HalfEdge < h)
+        {
+          return; // a lower ascending half-edge finds this group
+        }
+        owner = std::min(owner, p.HalfEdge);
+      }
+      mark[h] = h == owner ? Owned : Covered;
+      for (const Partner& p : partners)
+      {
+        mark[p.HalfEdge] = p.HalfEdge == owner ? Owned : Covered;
+      }
+      setTwins(h, partners);
+    });
+  ForEachUsableHalfEdge(mesh,
+    blocks,
+    [&](int, int h, std::vector<Partner>& partners)
+    {
+      if (mark[h] != Unmarked)
+      {
+        return;
+      }
+      FindPartners(mesh, h, partners); // all unmarked too: none is ascending
+      for (const Partner& p : partners)
+      {
+        if (p.HalfEdge < h)
+        {
+          return;
+        }
+      }
+      mark[h] = Owned;
+      setTwins(h, partners);
+    });
+}
+} // namespace
+
 //------------------------------------------------------------------------------
 // For half-edge a->b, the partners are the other triangles at a that also contain b: with
 // h itself, the edge's half-edges. An edge belongs to its lowest half-edge (corner id) and
@@ -101,120 +237,10 @@ void TriangleMesh::BuildTwins()
   this->Twin.assign(3 * static_cast<size_t>(nt), -1);
   this->NonManifold.clear();
   this->Misoriented.clear();
-  enum : std::uint8_t
-  {
-    Unmarked,
-    Covered,
-    Owned
-  };
   std::vector<std::uint8_t> mark(3 * static_cast<size_t>(nt), Unmarked);
-
-  struct Partner
-  {
-    int HalfEdge;
-    bool SameDirection;
-  };
-  const auto findPartners = [this](int h, std::vector<Partner>& partners)
-  {
-    partners.clear();
-    const int t = h / 3, k = h % 3;
-    const Triangle& tri = this->Triangles[t];
-    const int a = tri[k];
-    const int b = tri[(k + 1) % 3];
-    for (int c : this->GetVertexCorners(a))
-    {
-      const int t2 = c / 3;
-      if (t2 == t)
-      {
-        continue;
-      }
-      const int j = c % 3;
-      const Triangle& tri2 = this->Triangles[t2];
-      if (tri2[(j + 2) % 3] == b)
-      {
-        partners.push_back({ 3 * t2 + (j + 2) % 3, false }); // edge b->a: properly oriented
-      }
-      else if (tri2[(j + 1) % 3] == b)
-      {
-        partners.push_back({ c, true }); // edge a->b again: flipped neighbour
-      }
-    }
-  };
-  const auto setTwins = [this](int h, const std::vector<Partner>& partners)
-  {
-    if (partners.size() == 1)
-    {
-      this->Twin[h] = partners[0].HalfEdge;
-      this->Twin[partners[0].HalfEdge] = h;
-    }
-  };
-  const auto ascending = [this](int h)
-  {
-    const Triangle& tri = this->Triangles[h / 3];
-    return tri[h % 3] < tri[(h % 3 + 1) % 3];
-  };
-
-  constexpr int blockSize = 1 << 13;
-  const int blocks = (nt + blockSize - 1) / blockSize;
-  const auto forEachBlock = [&](auto&& visit)
-  {
-    tbb::parallel_for(0,
-      blocks,
-      [&](int b)
-      {
-        std::vector<Partner> partners;
-        const int end = 3 * std::min(nt, (b + 1) * blockSize);
-        for (int h = 3 * b * blockSize; h < end; ++h)
-        {
-          if (this->Usable[h / 3])
-          {
-            visit(b, h, partners);
-          }
-        }
-      });
-  };
-  forEachBlock(
-    [&](int, int h, std::vector<Partner>& partners)
-    {
-      if (!ascending(h))
-      {
-        return;
-      }
-      findPartners(h, partners);
-      int owner = h;
-      for (const Partner& p : partners)
-      {
-        if (p.SameDirection && p.HalfEdge < h)
-        {
-          return; // a lower ascending half-edge finds this group
-        }
-        owner = std::min(owner, p.HalfEdge);
-      }
-      mark[h] = h == owner ? Owned : Covered;
-      for (const Partner& p : partners)
-      {
-        mark[p.HalfEdge] = p.HalfEdge == owner ? Owned : Covered;
-      }
-      setTwins(h, partners);
-    });
-  forEachBlock(
-    [&](int, int h, std::vector<Partner>& partners)
-    {
-      if (mark[h] != Unmarked)
-      {
-        return;
-      }
-      findPartners(h, partners); // all unmarked too: none is ascending
-      for (const Partner& p : partners)
-      {
-        if (p.HalfEdge < h)
-        {
-          return;
-        }
-      }
-      mark[h] = Owned;
-      setTwins(h, partners);
-    });
+  const int blocks = (nt + TwinBlockSize - 1) / TwinBlockSize;
+  MarkEdgeOwners(*this, blocks, this->Twin, mark);
+  constexpr int blockSize = TwinBlockSize;
 
   std::vector<int> blockFirstEdge(static_cast<size_t>(blocks) + 1, 0);
   tbb::parallel_for(0,
@@ -260,7 +286,8 @@ void TriangleMesh::BuildTwins()
   std::vector<std::vector<int>> blockSpecial(static_cast<size_t>(blocks)); // odd edges' owners
   std::vector<std::vector<std::pair<int, int>>> blockLoose(static_cast<size_t>(blocks));
   std::vector<int> nextEdge(blockFirstEdge.begin(), blockFirstEdge.end() - 1);
-  forEachBlock(
+  ForEachUsableHalfEdge(*this,
+    blocks,
     [&](int b, int h, std::vector<Partner>& partners)
     {
       if (mark[h] != Owned)
@@ -275,7 +302,7 @@ void TriangleMesh::BuildTwins()
       }
       else
       {
-        findPartners(h, partners); // a boundary or non-manifold edge
+        FindPartners(*this, h, partners); // a boundary or non-manifold edge
       }
       const int e = nextEdge[b]++;
       this->EdgeHalfEdge[e] = h;
@@ -308,7 +335,7 @@ void TriangleMesh::BuildTwins()
       const int t = h / 3, k = h % 3;
       const int a = this->Triangles[t][k];
       const int b = this->Triangles[t][(k + 1) % 3];
-      findPartners(h, partners);
+      FindPartners(*this, h, partners);
       if (partners.size() == 1)
       {
         this->Misoriented.push_back({ a, b, t, partners[0].HalfEdge / 3 });

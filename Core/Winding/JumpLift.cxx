@@ -284,6 +284,205 @@ void WalkInsideTriangle(int h,
   }
 }
 
+//------------------------------------------------------------------------------
+// The mesh triangles whose closure the curve points touch, and their refined pieces.
+void CollectTouchedPieces(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const std::vector<int>& curvePoints,
+  TouchedPieces& touched)
+{
+  std::vector<int> around;
+  for (int p : curvePoints)
+  {
+    TrianglesOf(mesh, arr.GetPointOnMesh(p), around);
+    touched.MeshTriangles.insert(touched.MeshTriangles.end(), around.begin(), around.end());
+  }
+  std::sort(touched.MeshTriangles.begin(), touched.MeshTriangles.end());
+  touched.MeshTriangles.erase(
+    std::unique(touched.MeshTriangles.begin(), touched.MeshTriangles.end()),
+    touched.MeshTriangles.end());
+  const int nh = static_cast<int>(touched.MeshTriangles.size());
+  touched.Offset.assign(1, 0);
+  for (int h = 0; h < nh; ++h)
+  {
+    ForEachRefinedTriangle(mesh,
+      arr,
+      touched.MeshTriangles[h],
+      [&](int r)
+      {
+        touched.Pieces.push_back(r);
+        touched.Corners.push_back(arr.GetTriangle(mesh, r));
+        touched.Owner.push_back(h);
+      });
+    touched.Offset.push_back(static_cast<int>(touched.Pieces.size()));
+  }
+}
+
+//------------------------------------------------------------------------------
+// Index of mesh triangle t among the touched ones, -1 when untouched.
+int TouchedIndex(const TouchedPieces& touched, int t)
+{
+  const auto it = std::lower_bound(touched.MeshTriangles.begin(), touched.MeshTriangles.end(), t);
+  return it != touched.MeshTriangles.end() && *it == t
+    ? static_cast<int>(it - touched.MeshTriangles.begin())
+    : -1;
+}
+
+//------------------------------------------------------------------------------
+// K(z) of the refined points z inside mesh edge e (into pointConstant): from the lowest
+// touched triangle of the edge, its pieces along the edge in order (chi(point, piece): the
+// wedge values; `around`: scratch).
+template <class Chi>
+void AddEdgePointConstants(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const TouchedPieces& touched,
+  const Chi& chi,
+  int e,
+  std::vector<int>& around,
+  std::unordered_map<int, double>& pointConstant)
+{
+  // The lowest touched triangle of the edge; its pieces along the edge, in order.
+  CanonicalPoint ce;
+  ce.Location = PointLocation::Edge;
+  ce.Id = e;
+  ce.T = 0.5;
+  TrianglesOf(mesh, ce, around);
+  int h = -1;
+  for (int t : around)
+  {
+    h = TouchedIndex(touched, t);
+    if (h >= 0)
+    {
+      break;
+    }
+  }
+  const std::array<int, 2> ends = mesh.GetEdgeVertices(e);
+  auto parameter = [&](int p) -> double
+  {
+    if (p == ends[0])
+    {
+      return 0.0;
+    }
+    if (p == ends[1])
+    {
+      return 1.0;
+    }
+    if (p < arr.NumberOfMeshVertices)
+    {
+      return -1.0;
+    }
+    const CanonicalPoint c = arr.GetPointOnMesh(p);
+    return c.Location == PointLocation::Edge && c.Id == e ? c.T : -1.0;
+  };
+  struct SubEdge
+  {
+    double From, To;
+    int A, B, Piece;
+  };
+  std::vector<SubEdge> chain;
+  for (int i = touched.Offset[h]; i < touched.Offset[h + 1]; ++i)
+  {
+    const Triangle& tri = touched.Corners[i];
+    for (int k = 0; k < 3; ++k)
+    {
+      int a = tri[k], b = tri[(k + 1) % 3];
+      double ta = parameter(a), tb = parameter(b);
+      if (ta < 0.0 || tb < 0.0)
+      {
+        continue;
+      }
+      if (ta > tb)
+      {
+        std::swap(ta, tb);
+        std::swap(a, b);
+      }
+      chain.push_back({ ta, tb, a, b, i });
+    }
+  }
+  std::sort(
+    chain.begin(), chain.end(), [](const SubEdge& x, const SubEdge& y) { return x.From < y.From; });
+  const int m = static_cast<int>(chain.size());
+  // CA[j] = W(piece j) - W(reference wedge of A), CB[j] the same from B.
+  std::vector<double> ca(m), cb(m);
+  for (int j = 0; j < m; ++j)
+  {
+    ca[j] = j == 0
+      ? chi(chain[0].A, chain[0].Piece)
+      : ca[j - 1] + chi(chain[j].A, chain[j].Piece) - chi(chain[j].A, chain[j - 1].Piece);
+  }
+  for (int j = m - 1; j >= 0; --j)
+  {
+    cb[j] = j == m - 1
+      ? chi(chain[j].B, chain[j].Piece)
+      : cb[j + 1] + chi(chain[j].B, chain[j].Piece) - chi(chain[j].B, chain[j + 1].Piece);
+  }
+  for (int j = 1; j < m; ++j)
+  {
+    const int z = chain[j].A;
+    const double t = chain[j].From;
+    pointConstant[z] =
+      (1.0 - t) * (ca[j - 1] - chi(z, chain[j - 1].Piece)) + t * (cb[j] - chi(z, chain[j].Piece));
+  }
+}
+
+//------------------------------------------------------------------------------
+// Flux per touched mesh triangle: sum over its pieces of area * grad v.
+void ComputeLiftFlux(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const TouchedPieces& touched,
+  JumpLift& out)
+{
+  const int nh = static_cast<int>(touched.MeshTriangles.size());
+  out.MeshTriangles = touched.MeshTriangles;
+  out.Flux.assign(nh, Vec3{ 0, 0, 0 });
+  for (int h = 0; h < nh; ++h)
+  {
+    const TriangleGradients g = ComputeTriangleGradients(mesh, touched.MeshTriangles[h]);
+    if (g.Area == 0.0)
+    {
+      continue;
+    }
+    Vec3 flux{ 0, 0, 0 };
+    for (int i = touched.Offset[h]; i < touched.Offset[h + 1]; ++i)
+    {
+      const Triangle& tri = touched.Corners[i];
+      const Vec3 p[3] = {
+        arr.GetPosition(mesh, tri[0]), arr.GetPosition(mesh, tri[1]), arr.GetPosition(mesh, tri[2])
+      };
+      for (int k = 0; k < 3; ++k)
+      {
+        // area * grad(hat_k) = (n x opposite edge) / 2, finite on slivers.
+        flux = flux + (0.5 * out.Values[i][k]) * Cross(g.Normal, p[(k + 2) % 3] - p[(k + 1) % 3]);
+      }
+    }
+    out.Flux[h] = flux;
+  }
+}
+
+//------------------------------------------------------------------------------
+// Pieces in ascending refined id (the pieces of one triangle are not contiguous ids).
+void SortPiecesById(JumpLift& out)
+{
+  const int np = static_cast<int>(out.Triangles.size());
+  std::vector<int> order(np);
+  for (int i = 0; i < np; ++i)
+  {
+    order[i] = i;
+  }
+  std::sort(
+    order.begin(), order.end(), [&](int a, int b) { return out.Triangles[a] < out.Triangles[b]; });
+  JumpLift sorted;
+  sorted.Triangles.resize(np);
+  sorted.Values.resize(np);
+  for (int i = 0; i < np; ++i)
+  {
+    sorted.Triangles[i] = out.Triangles[order[i]];
+    sorted.Values[i] = out.Values[order[i]];
+  }
+  out.Triangles.swap(sorted.Triangles);
+  out.Values.swap(sorted.Values);
+}
+
 } // namespace
 
 void ComputeJumpLift(const TriangleMesh& mesh,
@@ -304,33 +503,8 @@ void ComputeJumpLift(const TriangleMesh& mesh,
     return;
   }
   TouchedPieces touched;
-  {
-    std::vector<int> around;
-    for (int p : curvePoints)
-    {
-      TrianglesOf(mesh, arr.GetPointOnMesh(p), around);
-      touched.MeshTriangles.insert(touched.MeshTriangles.end(), around.begin(), around.end());
-    }
-    std::sort(touched.MeshTriangles.begin(), touched.MeshTriangles.end());
-    touched.MeshTriangles.erase(
-      std::unique(touched.MeshTriangles.begin(), touched.MeshTriangles.end()),
-      touched.MeshTriangles.end());
-  }
+  CollectTouchedPieces(mesh, arr, curvePoints, touched);
   const int nh = static_cast<int>(touched.MeshTriangles.size());
-  touched.Offset.assign(1, 0);
-  for (int h = 0; h < nh; ++h)
-  {
-    ForEachRefinedTriangle(mesh,
-      arr,
-      touched.MeshTriangles[h],
-      [&](int r)
-      {
-        touched.Pieces.push_back(r);
-        touched.Corners.push_back(arr.GetTriangle(mesh, r));
-        touched.Owner.push_back(h);
-      });
-    touched.Offset.push_back(static_cast<int>(touched.Pieces.size()));
-  }
   const int np = static_cast<int>(touched.Pieces.size());
 
   // Wedges around every point of the curves.
@@ -379,103 +553,9 @@ void ComputeJumpLift(const TriangleMesh& mesh,
     }
     return -1;
   };
-  auto touchedIndex = [&](int t)
-  {
-    const auto it = std::lower_bound(touched.MeshTriangles.begin(), touched.MeshTriangles.end(), t);
-    return it != touched.MeshTriangles.end() && *it == t
-      ? static_cast<int>(it - touched.MeshTriangles.begin())
-      : -1;
-  };
-
   // K(q): v(q, piece) = chi_q(piece) + K(q), one number per refined point.
   std::unordered_map<int, double> pointConstant;
   std::vector<int> around;
-  auto edgeConstants = [&](int e)
-  {
-    // The lowest touched triangle of the edge; its pieces along the edge, in order.
-    CanonicalPoint ce;
-    ce.Location = PointLocation::Edge;
-    ce.Id = e;
-    ce.T = 0.5;
-    TrianglesOf(mesh, ce, around);
-    int h = -1;
-    for (int t : around)
-    {
-      h = touchedIndex(t);
-      if (h >= 0)
-      {
-        break;
-      }
-    }
-    const std::array<int, 2> ends = mesh.GetEdgeVertices(e);
-    auto parameter = [&](int p) -> double
-    {
-      if (p == ends[0])
-      {
-        return 0.0;
-      }
-      if (p == ends[1])
-      {
-        return 1.0;
-      }
-      if (p < arr.NumberOfMeshVertices)
-      {
-        return -1.0;
-      }
-      const CanonicalPoint c = arr.GetPointOnMesh(p);
-      return c.Location == PointLocation::Edge && c.Id == e ? c.T : -1.0;
-    };
-    struct SubEdge
-    {
-      double From, To;
-      int A, B, Piece;
-    };
-    std::vector<SubEdge> chain;
-    for (int i = touched.Offset[h]; i < touched.Offset[h + 1]; ++i)
-    {
-      const Triangle& tri = touched.Corners[i];
-      for (int k = 0; k < 3; ++k)
-      {
-        int a = tri[k], b = tri[(k + 1) % 3];
-        double ta = parameter(a), tb = parameter(b);
-        if (ta < 0.0 || tb < 0.0)
-        {
-          continue;
-        }
-        if (ta > tb)
-        {
-          std::swap(ta, tb);
-          std::swap(a, b);
-        }
-        chain.push_back({ ta, tb, a, b, i });
-      }
-    }
-    std::sort(chain.begin(),
-      chain.end(),
-      [](const SubEdge& x, const SubEdge& y) { return x.From < y.From; });
-    const int m = static_cast<int>(chain.size());
-    // CA[j] = W(piece j) - W(reference wedge of A), CB[j] the same from B.
-    std::vector<double> ca(m), cb(m);
-    for (int j = 0; j < m; ++j)
-    {
-      ca[j] = j == 0
-        ? chi(chain[0].A, chain[0].Piece)
-        : ca[j - 1] + chi(chain[j].A, chain[j].Piece) - chi(chain[j].A, chain[j - 1].Piece);
-    }
-    for (int j = m - 1; j >= 0; --j)
-    {
-      cb[j] = j == m - 1
-        ? chi(chain[j].B, chain[j].Piece)
-        : cb[j + 1] + chi(chain[j].B, chain[j].Piece) - chi(chain[j].B, chain[j + 1].Piece);
-    }
-    for (int j = 1; j < m; ++j)
-    {
-      const int z = chain[j].A;
-      const double t = chain[j].From;
-      pointConstant[z] =
-        (1.0 - t) * (ca[j - 1] - chi(z, chain[j - 1].Piece)) + t * (cb[j] - chi(z, chain[j].Piece));
-    }
-  };
   auto constantOf = [&](int q, int piece) -> double
   {
     if (q < arr.NumberOfMeshVertices)
@@ -490,7 +570,7 @@ void ComputeJumpLift(const TriangleMesh& mesh,
     const CanonicalPoint c = arr.GetPointOnMesh(q);
     if (c.Location == PointLocation::Edge)
     {
-      edgeConstants(c.Id);
+      AddEdgePointConstants(mesh, arr, touched, chi, c.Id, around, pointConstant);
       const auto found = pointConstant.find(q);
       return found != pointConstant.end() ? found->second : 0.0;
     }
@@ -522,49 +602,8 @@ void ComputeJumpLift(const TriangleMesh& mesh,
     }
   }
 
-  // Flux per touched mesh triangle: sum over its pieces of area * grad v.
-  out.MeshTriangles = touched.MeshTriangles;
-  out.Flux.assign(nh, Vec3{ 0, 0, 0 });
-  for (int h = 0; h < nh; ++h)
-  {
-    const TriangleGradients g = ComputeTriangleGradients(mesh, touched.MeshTriangles[h]);
-    if (g.Area == 0.0)
-    {
-      continue;
-    }
-    Vec3 flux{ 0, 0, 0 };
-    for (int i = touched.Offset[h]; i < touched.Offset[h + 1]; ++i)
-    {
-      const Triangle& tri = touched.Corners[i];
-      const Vec3 p[3] = {
-        arr.GetPosition(mesh, tri[0]), arr.GetPosition(mesh, tri[1]), arr.GetPosition(mesh, tri[2])
-      };
-      for (int k = 0; k < 3; ++k)
-      {
-        // area * grad(hat_k) = (n x opposite edge) / 2, finite on slivers.
-        flux = flux + (0.5 * out.Values[i][k]) * Cross(g.Normal, p[(k + 2) % 3] - p[(k + 1) % 3]);
-      }
-    }
-    out.Flux[h] = flux;
-  }
-  // Pieces in ascending refined id (the pieces of one triangle are not contiguous ids).
-  std::vector<int> order(np);
-  for (int i = 0; i < np; ++i)
-  {
-    order[i] = i;
-  }
-  std::sort(
-    order.begin(), order.end(), [&](int a, int b) { return out.Triangles[a] < out.Triangles[b]; });
-  JumpLift sorted;
-  sorted.Triangles.resize(np);
-  sorted.Values.resize(np);
-  for (int i = 0; i < np; ++i)
-  {
-    sorted.Triangles[i] = out.Triangles[order[i]];
-    sorted.Values[i] = out.Values[order[i]];
-  }
-  out.Triangles.swap(sorted.Triangles);
-  out.Values.swap(sorted.Values);
+  ComputeLiftFlux(mesh, arr, touched, out);
+  SortPiecesById(out);
 }
 
 void AddLiftLoad(const TriangleMesh& mesh, const JumpLift& lift, double* rhs)

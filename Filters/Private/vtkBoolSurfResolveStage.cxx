@@ -226,7 +226,9 @@ bool ResolveControlCurves(vtkSurfaceCache& cache,
   }
   CurveTracer& tracer = cache.GetTracer();
   tracer.SetResolution(options.Trace.Resolution);
-  tracer.GetPathSolver().SetMethod(options.Trace.Method);
+  GeodesicPathOptions pathOptions = tracer.GetPathSolver().GetOptions();
+  pathOptions.Method = options.Trace.Method;
+  tracer.GetPathSolver().SetOptions(pathOptions);
   std::vector<std::vector<int>> classes;
   if (!ClassifyControlCurves(tracer, *basis, input, classes, nullptr, error))
   {

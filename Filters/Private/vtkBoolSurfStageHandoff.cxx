@@ -123,7 +123,9 @@ GeodesicPathSolver& ResultPathSolver::Get(const std::shared_ptr<const TriangleMe
     this->Mesh = mesh; // keeps the mesh alive as long as the tracer refers to it
   }
   GeodesicPathSolver& solver = this->Tracer->GetPathSolver();
-  solver.SetMethod(method);
+  GeodesicPathOptions pathOptions = solver.GetOptions();
+  pathOptions.Method = method;
+  solver.SetOptions(pathOptions);
   return solver;
 }
 

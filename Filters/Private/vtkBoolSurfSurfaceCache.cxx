@@ -233,8 +233,10 @@ const std::vector<TracedCurve>* vtkSurfaceCache::GetShortenedGenerators()
     // Always with the default method, whatever the tracer was last used for: the loops are
     // computed once per surface and must not depend on which filter asked first.
     GeodesicPathSolver& solver = this->GetTracer().GetPathSolver();
-    const GeodesicMethod method = solver.GetMethod();
-    solver.SetMethod(GeodesicMethod::Bounded);
+    const GeodesicPathOptions saved = solver.GetOptions();
+    GeodesicPathOptions bounded = saved;
+    bounded.Method = GeodesicMethod::Bounded;
+    solver.SetOptions(bounded);
     this->ShortGenerators.assign(basis->GetNumberOfGenerators(), TracedCurve());
     for (int g = 0; g < basis->GetNumberOfGenerators(); ++g)
     {
@@ -244,7 +246,7 @@ const std::vector<TracedCurve>* vtkSurfaceCache::GetShortenedGenerators()
         this->ShortGenerators[g] = TracedCurve();
       }
     }
-    solver.SetMethod(method);
+    solver.SetOptions(saved);
     this->HasShortGenerators = true;
   }
   return &this->ShortGenerators;

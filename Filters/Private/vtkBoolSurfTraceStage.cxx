@@ -307,7 +307,9 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   CurveTracer& tracer = cache.GetTracer();
   tracer.SetResolution(options.Resolution);
   tracer.SetKeepWrittenForms(output != nullptr); // see WriteTraces
-  tracer.GetPathSolver().SetMethod(options.Method);
+  GeodesicPathOptions pathOptions = tracer.GetPathSolver().GetOptions();
+  pathOptions.Method = options.Method;
+  tracer.GetPathSolver().SetOptions(pathOptions);
   tracer.StartPass(); // curves of the update before the last one are forgotten
   std::vector<CurveTracer::CurveRequest> requests(controls.size());
   for (size_t c = 0; c < controls.size(); ++c)

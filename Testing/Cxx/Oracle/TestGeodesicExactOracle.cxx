@@ -196,7 +196,9 @@ OracleRun CompareWithOracle(const TriangleMesh& mesh,
     return run;
   }
   GeodesicPathSolver solver(mesh);
-  solver.SetMethod(method);
+  GeodesicPathOptions options;
+  options.Method = method;
+  solver.SetOptions(options);
   std::mt19937 rng(seed);
   GeodesicPath path;
   for (int s = 0; s < sources; ++s)

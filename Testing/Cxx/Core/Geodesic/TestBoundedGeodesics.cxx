@@ -231,9 +231,12 @@ TEST(BoundedGeodesics, FarLegsAreRoutedWithinTheBudget)
 {
   const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 112, 44));
   GeodesicPathSolver bounded(mesh), exact(mesh);
-  exact.SetMethod(GeodesicMethod::Exact);
-  exact.SetMaximumWindows(1 << 26);
-  bounded.SetBoundedWindows(1 << 12);
+  GeodesicPathOptions exactOptions, boundedOptions;
+  exactOptions.Method = GeodesicMethod::Exact;
+  exactOptions.MaximumWindows = 1 << 26;
+  exact.SetOptions(exactOptions);
+  boundedOptions.BoundedWindows = 1 << 12;
+  bounded.SetOptions(boundedOptions);
   std::mt19937 rng(27);
   GeodesicPath b, e;
   int routed = 0, same = 0;
@@ -268,7 +271,7 @@ TEST(BoundedGeodesics, FarLegsAreRoutedWithinTheBudget)
 
   // A tracer: the same graph for every curve on the mesh.
   CurveTracer tracer(mesh);
-  tracer.GetPathSolver().SetBoundedWindows(1 << 12);
+  tracer.GetPathSolver().SetOptions(boundedOptions);
   CurveTrace trace;
   const SurfaceSiteGraph* traced = nullptr;
   for (int c = 0; c < 3; ++c)
@@ -307,11 +310,15 @@ TEST(BoundedGeodesics, CorridorRefinementFindsTheShortestOfNearbyGeodesics)
   }
   const TriangleMesh mesh = ToMesh(data);
   GeodesicPathSolver refined(mesh), plain(mesh), exact(mesh);
-  exact.SetMethod(GeodesicMethod::Exact);
-  exact.SetMaximumWindows(1 << 26);
-  refined.SetBoundedWindows(1 << 10);
-  plain.SetBoundedWindows(1 << 10);
-  plain.SetCorridorRefinement(false);
+  GeodesicPathOptions exactOptions, refinedOptions;
+  exactOptions.Method = GeodesicMethod::Exact;
+  exactOptions.MaximumWindows = 1 << 26;
+  exact.SetOptions(exactOptions);
+  refinedOptions.BoundedWindows = 1 << 10;
+  refined.SetOptions(refinedOptions);
+  GeodesicPathOptions plainOptions = refinedOptions;
+  plainOptions.CorridorRefinement = false;
+  plain.SetOptions(plainOptions);
   std::mt19937 rng(30);
   int sameRefined = 0, samePlain = 0, legs = 0;
   GeodesicPath r, p, e;
@@ -342,13 +349,15 @@ TEST(BoundedGeodesics, WholeMeshRefinementCertifiesRoutedLegsOnSmallMeshes)
   const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 48, 20));
   ASSERT_LE(mesh.GetNumberOfTriangles(), 12000);
   GeodesicPathSolver refined(mesh), plain(mesh), exact(mesh);
-  exact.SetMethod(GeodesicMethod::Exact);
-  for (GeodesicPathSolver* solver : { &refined, &plain })
-  {
-    solver->SetBoundedWindows(1 << 6);
-    solver->SetRouteTolerance(0.0);
-  }
-  plain.SetCorridorRefinement(false);
+  GeodesicPathOptions exactOptions, refinedOptions;
+  exactOptions.Method = GeodesicMethod::Exact;
+  exact.SetOptions(exactOptions);
+  refinedOptions.BoundedWindows = 1 << 6;
+  refinedOptions.RouteTolerance = 0.0;
+  refined.SetOptions(refinedOptions);
+  GeodesicPathOptions plainOptions = refinedOptions;
+  plainOptions.CorridorRefinement = false;
+  plain.SetOptions(plainOptions);
   std::mt19937 rng(31);
   int samePlain = 0, legs = 0;
   GeodesicPath r, p, e;
@@ -373,7 +382,9 @@ TEST(BoundedGeodesics, ShortLegsAreExact)
 {
   const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 160, 64));
   GeodesicPathSolver bounded(mesh), exact(mesh);
-  exact.SetMethod(GeodesicMethod::Exact);
+  GeodesicPathOptions exactOptions;
+  exactOptions.Method = GeodesicMethod::Exact;
+  exact.SetOptions(exactOptions);
   std::mt19937 rng(28);
   GeodesicPath b, e;
   int tested = 0;
@@ -402,7 +413,9 @@ TEST(GeodesicPathCache, CostlyLegsAreSharedPerSurfaceAndSettings)
 {
   const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 112, 44));
   GeodesicPathSolver first(mesh), second(mesh), other(mesh);
-  other.SetBoundedWindows(1 << 12);
+  GeodesicPathOptions otherOptions;
+  otherOptions.BoundedWindows = 1 << 12;
+  other.SetOptions(otherOptions);
   std::mt19937 rng(31);
   GeodesicPath a, b, c;
   int shared = 0;

@@ -174,10 +174,13 @@ TEST(CurveTracer, RemembersTracedCurves)
   ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, again).Ok);
   tracer.SetResolution(2);
   ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, again).Ok);
-  tracer.GetPathSolver().SetMethod(GeodesicMethod::LocallyShortest);
+  GeodesicPathOptions options;
+  options.Method = GeodesicMethod::LocallyShortest;
+  tracer.GetPathSolver().SetOptions(options);
   ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again).Ok);
   EXPECT_EQ(tracer.GetRecalledCurves(), 1u);
-  tracer.GetPathSolver().SetMethod(GeodesicMethod::Bounded);
+  options.Method = GeodesicMethod::Bounded;
+  tracer.GetPathSolver().SetOptions(options);
   tracer.SetResolution(4);
   // A control point moved by one ulp is another curve.
   std::vector<SurfacePoint> moved = polygon;

@@ -307,7 +307,9 @@ TEST(ExactFlatGrid, ShortestPathsAlongLatticeDirectionsAreStraight)
     const TriangleMesh mesh = Grid(n, diagonals);
     ExactGeodesicSearch search(mesh);
     GeodesicPathSolver solver(mesh);
-    solver.SetMethod(GeodesicMethod::Exact);
+    GeodesicPathOptions options;
+    options.Method = GeodesicMethod::Exact;
+    solver.SetOptions(options);
     const int center = (n / 2) * (n + 1) + n / 2;
     std::vector<int> startTriangles, endTriangles, strip;
     GeodesicPath path;

@@ -679,9 +679,11 @@ TEST(GeodesicPath, WindowBudgetFallsBackToLocallyShortest)
 {
   const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 48, 20));
   GeodesicPathSolver exact(mesh), budgeted(mesh);
-  exact.SetMethod(GeodesicMethod::Exact);
-  budgeted.SetMethod(GeodesicMethod::Exact);
-  budgeted.SetMaximumWindows(20);
+  GeodesicPathOptions options;
+  options.Method = GeodesicMethod::Exact;
+  exact.SetOptions(options);
+  options.MaximumWindows = 20;
+  budgeted.SetOptions(options);
   std::mt19937 rng(3);
   GeodesicPath a, b;
   int fellBack = 0;
@@ -828,9 +830,11 @@ void ExpectNeverLongerThanEdgePaths(const TriangleMesh& mesh,
   bool exact = true)
 {
   GeodesicPathSolver solver(mesh);
-  solver.SetUseExactStrip(exact);
-  solver.SetNumberOfLandmarks(landmarks);
-  solver.SetLandmarkBuildThreshold(0.0);
+  GeodesicPathOptions options;
+  options.Method = exact ? GeodesicMethod::Exact : GeodesicMethod::LocallyShortest;
+  options.NumberOfLandmarks = landmarks;
+  options.LandmarkBuildThreshold = 0.0;
+  solver.SetOptions(options);
   std::mt19937 rng(seed);
   GeodesicPath path;
   double worst = 0;
@@ -882,8 +886,10 @@ TEST(GeodesicPath, LandmarksOnSeveralComponents)
   }
   const TriangleMesh mesh = ToMesh(data);
   GeodesicPathSolver solver(mesh);
-  solver.SetUseExactStrip(false); // the landmarks serve the edge-path strip
-  solver.SetLandmarkBuildThreshold(0.0);
+  GeodesicPathOptions options;
+  options.Method = GeodesicMethod::LocallyShortest; // the landmarks serve the edge-path strip
+  options.LandmarkBuildThreshold = 0.0;
+  solver.SetOptions(options);
   std::mt19937 rng(11);
   GeodesicPath path;
   int traced = 0;

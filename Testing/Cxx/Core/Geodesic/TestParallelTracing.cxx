@@ -83,8 +83,10 @@ TEST(ParallelTracing, SameCurvesAsOneByOne)
   {
     // One by one: the reference. A small window budget, so that far legs are routed.
     CurveTracer single(mesh);
-    single.GetPathSolver().SetMethod(method);
-    single.GetPathSolver().SetBoundedWindows(1 << 10);
+    GeodesicPathOptions options;
+    options.Method = method;
+    options.BoundedWindows = 1 << 10;
+    single.GetPathSolver().SetOptions(options);
     single.SetKeepWrittenForms(true);
     std::vector<CurveTrace> expected(drawing.Requests.size());
     std::vector<TraceStatus> expectedStatus;
@@ -103,8 +105,7 @@ TEST(ParallelTracing, SameCurvesAsOneByOne)
     for (int threads : { 1, 2, 4 })
     {
       CurveTracer parallel(mesh);
-      parallel.GetPathSolver().SetMethod(method);
-      parallel.GetPathSolver().SetBoundedWindows(1 << 10);
+      parallel.GetPathSolver().SetOptions(options);
       parallel.SetKeepWrittenForms(true);
       std::vector<CurveTrace> traces;
       std::vector<TraceStatus> statuses;

@@ -1,10 +1,11 @@
-// A hash map from an edge key (two 32-bit point ids packed in 64 bits) to an int, for the
-// large local triangulations of crowded triangles: open addressing with linear probing in one
-// flat array, so a lookup touches one or two cache lines where std::unordered_map follows a
-// pointer to a separately allocated node (on 100k-point triangles the node map's misses were a
-// third of the refinement). Erasing shifts the following entries back (no tombstones), so a
-// map that sees as many erasures as insertions, as a triangulation's half-edges do, never
-// degrades.
+// A hash map from an edge key (two 32-bit point ids packed in 64 bits, or any 64-bit id) to an
+// int. It lives in Mesh, below the stages, because two of them use it: the arrangement's large
+// local triangulations of crowded triangles and the geodesic strips (triangle -> position in
+// the strip). Open addressing with linear probing in one flat array, so a lookup touches one
+// or two cache lines where std::unordered_map follows a pointer to a separately allocated node
+// (on 100k-point triangles the node map's misses were a third of the refinement). Erasing
+// shifts the following entries back (no tombstones), so a map that sees as many erasures as
+// insertions, as a triangulation's half-edges do, never degrades.
 #ifndef boolsurf_EdgeIndex_h
 #define boolsurf_EdgeIndex_h
 

@@ -1,7 +1,7 @@
 // EdgeIndex against std::unordered_map under random insertions, replacements, erasures and
 // lookups, with keys crowded into few homes (so runs wrap around the table and erasures shift
 // entries back across the wrap) and with the table growing from empty.
-#include "Arrangement/EdgeIndex.h"
+#include "Mesh/EdgeIndex.h"
 
 #include <gtest/gtest.h>
 
