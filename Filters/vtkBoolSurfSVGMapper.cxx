@@ -1,24 +1,19 @@
 #include "vtkBoolSurfSVGMapper.h"
 
 #include "vtkBoolSurfArrayNames.h"
+#include "vtkBoolSurfControlCurveWriter.h"
 
 #include "Mesh/ClosestTriangleGrid.h"
 #include "Svg/SvgSurfaceMap.h"
 #include "vtkBoolSurfSurfaceCache.h"
 
-#include "vtkCellArray.h"
-#include "vtkCellData.h"
-#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
 
@@ -74,7 +69,7 @@ bool vtkBoolSurfSVGMapper::Execute(const std::vector<vtkPolyData*>& inputs,
       return false;
     }
     double u = this->CenterBarycentric[0], v = this->CenterBarycentric[1];
-    if (!std::isfinite(u) || !std::isfinite(v) || u < -1e-6 || v < -1e-6 || u + v > 1 + 1e-6)
+    if (!boolsurf::IsInsideTriangle(u, v))
     {
       std::ostringstream message;
       message << "CenterBarycentric (" << u << ", " << v << ") is outside the triangle";
@@ -149,57 +144,22 @@ bool vtkBoolSurfSVGMapper::Execute(const std::vector<vtkPolyData*>& inputs,
   }
   this->UpdateProgress(0.9);
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName(boolsurf::names::TriangleId);
-  vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName(boolsurf::names::Barycentric);
-  barycentric->SetNumberOfComponents(2);
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkIntArray> shape, type, closed;
-  shape->SetName(boolsurf::names::ShapeId);
-  type->SetName(boolsurf::names::CurveType);
-  closed->SetName(boolsurf::names::Closed);
+  boolsurf::ControlCurveWriter writer(mesh);
   std::vector<int> evenOdd;
   bool allEvenOdd = true;
-  for (const boolsurf::MappedSvgCurve& c : curves)
+  for (boolsurf::MappedSvgCurve& c : curves)
   {
-    const vtkIdType first = points->GetNumberOfPoints();
-    for (const boolsurf::SurfacePoint& p : c.Points)
+    const int element = c.ShapeId;
+    c.ShapeId = this->ShapeIdOffset + element;
+    writer.Add(c);
+    if (static_cast<int>(evenOdd.size()) <= element)
     {
-      const boolsurf::Vec3 x = mesh.Evaluate(p.Triangle, p.U, p.V);
-      points->InsertNextPoint(x.x, x.y, x.z);
-      triangleId->InsertNextValue(p.Triangle);
-      barycentric->InsertNextTuple2(p.U, p.V);
+      evenOdd.resize(element + 1, 0);
     }
-    const vtkIdType n = static_cast<vtkIdType>(c.Points.size());
-    lines->InsertNextCell(n + (c.Closed ? 1 : 0));
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      lines->InsertCellPoint(first + i);
-    }
-    if (c.Closed)
-    {
-      lines->InsertCellPoint(first);
-    }
-    shape->InsertNextValue(this->ShapeIdOffset + c.Shape);
-    type->InsertNextValue(1);
-    closed->InsertNextValue(c.Closed ? 1 : 0);
-    if (static_cast<int>(evenOdd.size()) <= c.Shape)
-    {
-      evenOdd.resize(c.Shape + 1, 0);
-    }
-    evenOdd[c.Shape] = c.EvenOdd ? 1 : 0;
+    evenOdd[element] = c.EvenOdd ? 1 : 0;
     allEvenOdd = allEvenOdd && c.EvenOdd;
   }
-  output->SetPoints(points);
-  output->SetLines(lines);
-  output->GetPointData()->AddArray(triangleId);
-  output->GetPointData()->AddArray(barycentric);
-  output->GetCellData()->AddArray(shape);
-  output->GetCellData()->AddArray(type);
-  output->GetCellData()->AddArray(closed);
+  writer.Write(output);
   vtkNew<vtkStringArray> rule;
   rule->SetName("SuggestedFillRule");
   rule->InsertNextValue(allEvenOdd ? "EvenOdd" : "NonZero");

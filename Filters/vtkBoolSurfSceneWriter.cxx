@@ -4,6 +4,7 @@
 
 #include "vtkBoolSurfTracedCurves.h" // for ForEachCurveCell
 
+#include "Mesh/SurfacePoint.h"
 #include "Scene/SceneJson.h"
 
 #include "vtkAbstractArray.h"
@@ -37,10 +38,6 @@ struct WriteError : std::runtime_error
 {
   using std::runtime_error::runtime_error;
 };
-
-/// The reader's tolerance on barycentric coordinates (Core's scene files): a point written
-/// outside it could not be read back.
-constexpr double UVTolerance = boolsurf::SceneUVTolerance;
 
 /// Polygon and shape indices become list positions in the file: an id far beyond the number
 /// of curves would write millions of empty entries, so it is refused.
@@ -117,8 +114,9 @@ std::vector<boolsurf::ScenePoint> PointsOf(vtkPolyData* input)
         " is not a triangle index");
     }
     const double u = barycentric->GetComponent(p, 0), v = barycentric->GetComponent(p, 1);
-    if (!std::isfinite(u) || !std::isfinite(v) || u < -UVTolerance || v < -UVTolerance ||
-      u + v > 1 + UVTolerance)
+    // Core's one tolerance, which the scene reader applies: a point outside it could not be
+    // read back.
+    if (!boolsurf::IsInsideTriangle(u, v))
     {
       throw WriteError("point " + std::to_string(p) + ": Barycentric (" + std::to_string(u) + ", " +
         std::to_string(v) + ") is outside its triangle (needs u, v >= 0, u + v <= 1)");

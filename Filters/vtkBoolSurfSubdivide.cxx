@@ -3,6 +3,7 @@
 #include "vtkBoolSurfArrayNames.h"
 
 #include "Mesh/SubdivisionMap.h"
+#include "Mesh/SurfacePoint.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -138,7 +139,7 @@ bool vtkBoolSurfSubdivide::Execute(const std::vector<vtkPolyData*>& inputs,
       error = message.str();
       return false;
     }
-    if (!std::isfinite(u) || !std::isfinite(v) || u < -1e-6 || v < -1e-6 || u + v > 1 + 1e-6)
+    if (!boolsurf::IsInsideTriangle(u, v))
     {
       std::ostringstream message;
       message << "Curve point " << p << ": Barycentric (" << u << ", " << v

@@ -1,24 +1,22 @@
 #include "vtkBoolSurfSurfaceCurves.h"
 
 #include "vtkBoolSurfArrayNames.h"
+#include "vtkBoolSurfControlCurveWriter.h"
 #include "vtkBoolSurfControlCurves.h"
 
 #include "vtkBoolSurfPropertyVector.h"
 #include "vtkBoolSurfSurfaceCache.h"
 #include "vtkBoolSurfTraceStage.h"
 
-#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
-#include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
@@ -28,7 +26,6 @@
 #include <vtkTriangle.h>
 
 #include <algorithm>
-#include <array>
 #include <numeric>
 #include <string>
 
@@ -90,6 +87,58 @@ namespace
 int PerCurve(const std::vector<int>& values, size_t curve, int fallback)
 {
   return curve < values.size() ? values[curve] : fallback;
+}
+
+/// Writes the curves held, traced on the surface, to `traced` (port 1; empty when they cannot
+/// be traced). Port 1 shows the drawing as the filters downstream will use it (the curves
+/// traced with Trace Surface Curves' defaults and this filter's GeodesicMethod), so it follows
+/// a drag in the curve editor: the held curves go through what the readers of port 0 do with
+/// them (a polyline whose ends meet is closed, a curve being drawn is shown as far as it is
+/// valid, every point checked on the surface), without reading port 0 back. The port is left
+/// empty, without a message, while the drawing cannot be traced: the filters that use the
+/// curves say why.
+void TraceForDisplay(boolsurf::vtkSurfaceCache& cache,
+  vtkPolyData* surface,
+  const std::vector<boolsurf::InputControlCurve>& held,
+  int geodesicMethod,
+  vtkPolyData* traced)
+{
+  std::vector<std::string> warnings, problems, notes;
+  std::string error;
+  if (held.empty() || !cache.GetUsable(surface, warnings, error))
+  {
+    return;
+  }
+  const boolsurf::TriangleMesh& mesh = *cache.GetCurrent().Mesh;
+  std::vector<boolsurf::InputControlCurve> controls;
+  for (boolsurf::InputControlCurve curve : held)
+  {
+    if (boolsurf::CloseWhereEndsMeet(curve))
+    {
+      curve.PointIds.pop_back();
+    }
+    for (const boolsurf::SurfacePoint& p : curve.Points)
+    {
+      if (!boolsurf::CheckSurfacePoint(mesh, p, error))
+      {
+        traced->Initialize();
+        return;
+      }
+    }
+    if (boolsurf::AcceptControlCurve(curve, problems, notes))
+    {
+      controls.push_back(std::move(curve));
+    }
+  }
+  boolsurf::TraceOptions options;
+  options.Method = static_cast<boolsurf::GeodesicMethod>(geodesicMethod);
+  options.TraceValidPartOfIncompleteCurves = true;
+  std::vector<boolsurf::TracedCurve> paths;
+  if (!problems.empty() ||
+    !boolsurf::TraceInputCurves(cache, controls, options, nullptr, paths, traced, problems))
+  {
+    traced->Initialize();
+  }
 }
 } // namespace
 
@@ -245,16 +294,7 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   }
 
   // Surface points: given exactly, or the closest surface point of each position.
-  vtkNew<vtkPoints> positions;
-  positions->SetDataTypeToDouble();
-  positions->SetNumberOfPoints(points);
-  vtkNew<vtkIdTypeArray> triangleIds;
-  triangleIds->SetName(boolsurf::names::TriangleId);
-  triangleIds->SetNumberOfTuples(points);
-  vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName(boolsurf::names::Barycentric);
-  barycentric->SetNumberOfComponents(2);
-  barycentric->SetNumberOfTuples(points);
+  std::vector<boolsurf::SurfacePoint> surfacePoints(static_cast<size_t>(points));
   // The facet's unit normal at each control point of a closed surface (zero on a surface with
   // a boundary, whose back may be in view): the curve editor hides the markers of points on
   // the far side (named apart from "Normals", which ParaView would take for the lines' shading
@@ -287,8 +327,7 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
         error = message.str();
         return false;
       }
-      const double slack = 1e-12;
-      if (!(u >= -slack && v >= -slack && u + v <= 1 + slack))
+      if (!boolsurf::IsInsideTriangle(u, v))
       {
         std::ostringstream message;
         message << "Point " << i << ": Barycentric (" << u << ", " << v << ") is outside triangle "
@@ -327,31 +366,22 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
       auto vec = [](const double* q) { return boolsurf::Vec3{ q[0], q[1], q[2] }; };
       boolsurf::BarycentricInTriangle(vec(p[0]), vec(p[1]), vec(p[2]), vec(closest), u, v);
     }
-    double x[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      x[k] = (1 - u - v) * p[0][k] + u * p[1][k] + v * p[2][k];
-    }
-    positions->SetPoint(i, x);
     double normal[3] = { 0, 0, 0 };
     if (closedSurface)
     {
       vtkTriangle::ComputeNormal(p[0], p[1], p[2], normal);
     }
     facetNormal->SetTuple(i, normal);
-    triangleIds->SetValue(i, triangle);
-    barycentric->SetTypedTuple(i, std::array<double, 2>{ u, v }.data());
+    surfacePoints[static_cast<size_t>(i)] = { static_cast<int>(triangle), u, v };
   }
 
-  // One polyline per curve; a closed curve repeats its first point.
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkIntArray> shapeIds, curveTypes, closed, complete;
+  // The curves this filter holds; written as control curves (one polyline per curve, a closed
+  // curve repeating its first point), then traced as held.
+  std::vector<boolsurf::InputControlCurve> curves(sizes.size());
+  vtkNew<vtkIntArray> complete;
   vtkNew<vtkStringArray> incomplete;
   complete->SetName(boolsurf::names::Complete);
   incomplete->SetName(boolsurf::names::IncompleteCurves);
-  shapeIds->SetName(boolsurf::names::ShapeId);
-  curveTypes->SetName(boolsurf::names::CurveType);
-  closed->SetName(boolsurf::names::Closed);
   vtkIdType first = 0;
   for (size_t c = 0; c < sizes.size(); ++c)
   {
@@ -383,34 +413,51 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
     {
       incomplete->InsertNextValue("curve " + std::to_string(c) + ": " + needs);
     }
-    lines->InsertNextCell(size + (isClosed ? 1 : 0));
+    boolsurf::InputControlCurve& curve = curves[c];
+    curve.CurveId = static_cast<int>(c);
+    curve.ShapeId = shape;
+    curve.Type = static_cast<boolsurf::CurveType>(type);
+    curve.Closed = isClosed;
+    curve.BeingDrawn = !needs.empty();
+    curve.Points.assign(surfacePoints.begin() + first, surfacePoints.begin() + first + size);
     for (int k = 0; k < size; ++k)
     {
-      lines->InsertCellPoint(first + k);
+      curve.PointIds.push_back(first + k);
     }
-    if (isClosed)
-    {
-      lines->InsertCellPoint(first);
-    }
-    shapeIds->InsertNextValue(shape);
-    curveTypes->InsertNextValue(type);
-    closed->InsertNextValue(isClosed ? 1 : 0);
     first += size;
   }
-  output->SetPoints(positions);
-  output->SetLines(lines);
-  output->GetPointData()->AddArray(triangleIds);
-  output->GetPointData()->AddArray(barycentric);
+  // Positions on the VTK surface itself (the curves are written even when the surface is not
+  // one the tracing can use).
+  boolsurf::ControlCurveWriter writer(
+    [surface](const boolsurf::SurfacePoint& sp)
+    {
+      vtkIdType n;
+      const vtkIdType* corners;
+      surface->GetCellPoints(sp.Triangle, n, corners);
+      double p[3][3];
+      for (int k = 0; k < 3; ++k)
+      {
+        surface->GetPoint(corners[k], p[k]);
+      }
+      double x[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        x[k] = (1 - sp.U - sp.V) * p[0][k] + sp.U * p[1][k] + sp.V * p[2][k];
+      }
+      return boolsurf::Vec3{ x[0], x[1], x[2] };
+    });
+  for (const boolsurf::InputControlCurve& curve : curves)
+  {
+    writer.Add(curve);
+  }
+  writer.Write(output);
   output->GetPointData()->AddArray(facetNormal);
-  output->GetCellData()->AddArray(shapeIds);
-  output->GetCellData()->AddArray(curveTypes);
-  output->GetCellData()->AddArray(closed);
   output->GetCellData()->AddArray(complete);
   if (incomplete->GetNumberOfValues() > 0)
   {
     output->GetFieldData()->AddArray(incomplete);
   }
-  this->TraceForDisplay(surface, output, traced);
+  TraceForDisplay(this->Internal->Traced, surface, curves, this->GeodesicMethod, traced);
   for (vtkPolyData* port : { output, traced })
   {
     vtkNew<vtkIntArray> drawing;
@@ -419,34 +466,6 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
     port->GetFieldData()->AddArray(drawing);
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkBoolSurfSurfaceCurves::TraceForDisplay(vtkPolyData* surface,
-  vtkPolyData* curves,
-  vtkPolyData* traced)
-{
-  // Port 1 shows the drawing as the filters downstream will use it (the curves traced with
-  // Trace Surface Curves' defaults and this filter's GeodesicMethod), so it follows a drag in
-  // the curve editor. A curve being drawn shows as far as it is valid (a Bezier curve's
-  // segments up to its last complete one); the port is left empty, without a message, while
-  // the drawing cannot be traced: the filters that use the curves say why.
-  std::vector<std::string> warnings, problems, notes;
-  std::string error;
-  if (curves->GetNumberOfCells() == 0 ||
-    !this->Internal->Traced.GetUsable(surface, warnings, error))
-  {
-    return;
-  }
-  std::vector<boolsurf::TracedCurve> paths;
-  boolsurf::TraceOptions options;
-  options.Method = static_cast<boolsurf::GeodesicMethod>(this->GeodesicMethod);
-  options.TraceValidPartOfIncompleteCurves = true;
-  if (!boolsurf::TraceControlCurves(
-        this->Internal->Traced, curves, options, nullptr, paths, traced, problems, notes))
-  {
-    traced->Initialize();
-  }
 }
 
 //------------------------------------------------------------------------------

@@ -123,9 +123,6 @@ protected:
   int GeodesicMethod = GEODESIC_BOUNDED;
 
 private:
-  /// Writes the curves traced on the surface to port 1 (empty when they cannot be traced).
-  void TraceForDisplay(vtkPolyData* surface, vtkPolyData* curves, vtkPolyData* traced);
-
   vtkBoolSurfSurfaceCurves(const vtkBoolSurfSurfaceCurves&) = delete;
   void operator=(const vtkBoolSurfSurfaceCurves&) = delete;
   struct Internals;

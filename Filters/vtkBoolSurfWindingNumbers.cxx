@@ -5,7 +5,7 @@
 #include "Mesh/ParallelRange.h"
 #include "Selection/RegionExtraction.h"
 #include "vtkBoolSurfArrangementOutput.h"
-#include "vtkBoolSurfControlOutput.h"
+#include "vtkBoolSurfControlCurveWriter.h"
 #include "vtkBoolSurfRegionOutput.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfSurfaceCache.h"
@@ -121,7 +121,7 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   std::vector<boolsurf::TracedCurve>& curves = result->Curves;
   boolsurf::TraceOptions traceOptions = this->GetTraceOptions();
   result->Method = traceOptions.Method;
-  std::vector<boolsurf::ControlCurve> controls;
+  std::vector<boolsurf::InputControlCurve> controls;
   std::vector<std::string> problems, notes;
   const bool tracedOk = boolsurf::TraceControlCurves(this->GetSurfaceCache(),
     inputs[1],
@@ -351,13 +351,13 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     const int id = winding.ShapeIds[loopShape[i]];
     const auto name = shapeNames.find(id);
-    writer.Add(loops[i].SurfacePoints,
-      id,
-      static_cast<int>(boolsurf::CurveType::GeodesicPolygon),
-      true,
-      0,
-      static_cast<int>(i),
-      name != shapeNames.end() ? name->second : std::string());
+    boolsurf::ControlCurve loop;
+    loop.CurveId = static_cast<int>(i);
+    loop.ShapeId = id;
+    loop.Type = boolsurf::CurveType::GeodesicPolygon;
+    loop.Closed = true;
+    loop.Points = loops[i].SurfacePoints;
+    writer.Add(loop, 0, name != shapeNames.end() ? name->second : std::string());
   }
   writer.Write(completed);
   completed->GetFieldData()->AddArray(shapeIds);

@@ -424,7 +424,7 @@ std::vector<GeodesicPathSolver*> CurveTracer::GetSolvers(int threads)
 }
 
 //------------------------------------------------------------------------------
-void CurveTracer::TraceCurves(const std::vector<CurveRequest>& curves,
+void CurveTracer::TraceCurves(const std::vector<const ControlCurve*>& curves,
   int threads,
   std::vector<CurveTrace>& out,
   std::vector<TraceStatus>& statuses,
@@ -438,8 +438,8 @@ void CurveTracer::TraceCurves(const std::vector<CurveRequest>& curves,
   std::vector<std::size_t> todo;
   for (std::size_t c = 0; c < n; ++c)
   {
-    const CurveRequest& r = curves[c];
-    statuses[c] = this->MakeKey(*r.Points, r.Type, r.Closed, r.CurveId, keys[c]);
+    const ControlCurve& r = *curves[c];
+    statuses[c] = this->MakeKey(r.Points, r.Type, r.Closed, r.CurveId, keys[c]);
     if (statuses[c] && !this->Recall(keys[c], out[c], r.CurveId))
     {
       todo.push_back(c);
@@ -454,10 +454,10 @@ void CurveTracer::TraceCurves(const std::vector<CurveRequest>& curves,
     const std::size_t c = todo[k];
     if (stopped.load(std::memory_order_relaxed))
     {
-      statuses[c] = TraceStatus::Failure(CurveLabel(curves[c].CurveId) + ": not traced (aborted)");
+      statuses[c] = TraceStatus::Failure(CurveLabel(curves[c]->CurveId) + ": not traced (aborted)");
       return;
     }
-    statuses[c] = tracer.TraceNew(keys[c], out[c], curves[c].CurveId);
+    statuses[c] = tracer.TraceNew(keys[c], out[c], curves[c]->CurveId);
     const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
     if (onCaller && progress && !progress(static_cast<double>(finished) / todo.size()))
     {

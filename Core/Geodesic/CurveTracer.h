@@ -9,6 +9,7 @@
 #ifndef boolsurf_CurveTracer_h
 #define boolsurf_CurveTracer_h
 
+#include "Curves/ControlCurve.h"
 #include "Geodesic/GeodesicBezier.h"
 #include "Geodesic/GeodesicPath.h"
 #include "Geodesic/TracedCurve.h"
@@ -21,13 +22,6 @@
 
 namespace boolsurf
 {
-
-/// Values of the `CurveType` cell array.
-enum class CurveType : int
-{
-  GeodesicPolygon = 0, ///< consecutive control points joined by shortest paths
-  CubicBezier = 1,     ///< anchor, handle, handle, anchor, ... (3n+1 open, 3n closed)
-};
 
 /// One traced curve plus, per point of Curve.Points, where the point comes from.
 struct CurveTrace
@@ -86,25 +80,17 @@ public:
     CurveTrace& out,
     int curveId = 0);
 
-  /// One curve of TraceCurves().
-  struct CurveRequest
-  {
-    const std::vector<SurfacePoint>* Points = nullptr;
-    CurveType Type = CurveType::GeodesicPolygon;
-    bool Closed = true;
-    int CurveId = 0;
-  };
-  /// Trace() for every curve of `curves` (out[c] and statuses[c] as Trace() gives them one by
-  /// one, bit for bit), on up to `threads` threads (0: all cores). Curves the memory recalls
-  /// are recalled; the others are traced in parallel, by this tracer and helper tracers it
-  /// keeps on the same mesh with its settings, then remembered. A leg's geodesic does not
-  /// depend on which solver computes it: the Bounded and Exact methods are functions of the
-  /// leg's ends (the surface's site graph and path cache are shared and thread-safe). The
-  /// locally shortest method is not (its edge search breaks ties by a landmark table each
-  /// solver builds lazily), so it traces on this thread only. `progress` (may be empty) is
-  /// called on the calling thread with the fraction done; returning false stops the tracing
-  /// (the curves not traced get a failed status).
-  void TraceCurves(const std::vector<CurveRequest>& curves,
+  /// Trace() of each curve's points, type and closedness under its CurveId, for every curve of
+  /// `curves` (out[c] and statuses[c] as Trace() gives them one by one, bit for bit), on up to
+  /// `threads` threads (0: all cores). Curves the memory recalls are recalled; the others are
+  /// traced in parallel, by this tracer and helper tracers it keeps on the same mesh with its
+  /// settings, then remembered. A leg's geodesic does not depend on which solver computes it: the
+  /// Bounded and Exact methods are functions of the leg's ends (the surface's site graph and path
+  /// cache are shared and thread-safe). The locally shortest method is not (its edge search breaks
+  /// ties by a landmark table each solver builds lazily), so it traces on this thread only.
+  /// `progress` (may be empty) is called on the calling thread with the fraction done; returning
+  /// false stops the tracing (the curves not traced get a failed status).
+  void TraceCurves(const std::vector<const ControlCurve*>& curves,
     int threads,
     std::vector<CurveTrace>& out,
     std::vector<TraceStatus>& statuses,

@@ -212,7 +212,7 @@ SurfacePoint ClosestSurfacePointNear(const TriangleMesh& mesh,
 //------------------------------------------------------------------------------
 bool ClassifyControlCurves(CurveTracer& tracer,
   const HomologyBasis& basis,
-  const std::vector<ControlPolygonCurve>& curves,
+  const std::vector<ControlCurve>& curves,
   std::vector<std::vector<int>>& classes,
   std::vector<TracedCurve>* traced,
   std::string& error)
@@ -225,7 +225,7 @@ bool ClassifyControlCurves(CurveTracer& tracer,
   CurveTrace trace;
   for (size_t i = 0; i < curves.size(); ++i)
   {
-    const ControlPolygonCurve& c = curves[i];
+    const ControlCurve& c = curves[i];
     const TraceStatus status = tracer.Trace(c.Points, c.Type, c.Closed, trace, c.CurveId);
     if (!status.Ok)
     {
@@ -249,7 +249,7 @@ bool ClassifyControlCurves(CurveTracer& tracer,
 //------------------------------------------------------------------------------
 ResolveResult ResolveShapes(const TriangleMesh& mesh,
   const HomologyBasis& basis,
-  const std::vector<ControlPolygonCurve>& curves,
+  const std::vector<ControlCurve>& curves,
   const std::vector<std::vector<int>>& classes,
   const ResolveOptions& options)
 {
@@ -265,7 +265,7 @@ ResolveResult ResolveShapes(const TriangleMesh& mesh,
   std::vector<ResolvedCurve> added;
   const double offset = options.Offset > 0 ? options.Offset : 0.25 * MeanEdgeLength(mesh);
   int nextCurveId = 0;
-  for (const ControlPolygonCurve& c : curves)
+  for (const ControlCurve& c : curves)
   {
     nextCurveId = std::max(nextCurveId, c.CurveId + 1);
   }
@@ -347,7 +347,7 @@ ResolveResult ResolveShapes(const TriangleMesh& mesh,
           {
             continue;
           }
-          const ControlPolygonCurve& c = curves[i];
+          const ControlCurve& c = curves[i];
           const int n = static_cast<int>(c.Points.size());
           std::vector<SurfacePoint> moved(n);
           for (int j = 0; j < n; ++j)

@@ -35,16 +35,6 @@ enum class ResolveStrategy : int
 /// "AddGenerators", "DuplicateReversed", "RemoveCurves".
 const char* StrategyName(ResolveStrategy s);
 
-/// A control curve: what the tracing stage reads.
-struct ControlPolygonCurve
-{
-  int CurveId = -1; ///< the user's curve id (the cell id of the input)
-  int ShapeId = 0;
-  CurveType Type = CurveType::GeodesicPolygon;
-  bool Closed = true;
-  std::vector<SurfacePoint> Points;
-};
-
 /// Values of the output cell array `Resolution`.
 enum class ResolutionAction : int
 {
@@ -57,7 +47,7 @@ enum class ResolutionAction : int
 
 struct ResolvedCurve
 {
-  ControlPolygonCurve Curve;
+  ControlCurve Curve;
   ResolutionAction Action = ResolutionAction::Kept;
   /// The input curve id it comes from (kept, duplicated, flipped, removed), or the generator id
   /// (added generators).
@@ -86,7 +76,7 @@ struct ResolveResult
 /// Resolves every shape with generators in excess. `classes[i]` is the class of `curves[i]`.
 ResolveResult ResolveShapes(const TriangleMesh& mesh,
   const HomologyBasis& basis,
-  const std::vector<ControlPolygonCurve>& curves,
+  const std::vector<ControlCurve>& curves,
   const std::vector<std::vector<int>>& classes,
   const ResolveOptions& options);
 
@@ -94,7 +84,7 @@ ResolveResult ResolveShapes(const TriangleMesh& mesh,
 /// False with a message naming the curve when tracing fails.
 bool ClassifyControlCurves(CurveTracer& tracer,
   const HomologyBasis& basis,
-  const std::vector<ControlPolygonCurve>& curves,
+  const std::vector<ControlCurve>& curves,
   std::vector<std::vector<int>>& classes,
   std::vector<TracedCurve>* traced,
   std::string& error);

@@ -396,9 +396,7 @@ bool CheckSurfacePoint(const TriangleMesh& mesh, const SurfacePoint& p, std::str
       ") in triangle " + std::to_string(p.Triangle) + " are not finite";
     return false;
   }
-  // Inside the triangle, up to rounding: u, v >= 0 and u + v <= 1.
-  const double tolerance = 1e-9;
-  if (p.U < -tolerance || p.V < -tolerance || p.U + p.V > 1 + tolerance)
+  if (!IsInsideTriangle(p.U, p.V))
   {
     char text[128];
     std::snprintf(text, sizeof(text), "barycentric coordinates (%.17g, %.17g)", p.U, p.V);

@@ -15,6 +15,7 @@
 #include "Mesh/TriangleMesh.h"
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -189,8 +190,24 @@ inline SurfacePoint VertexSurfacePoint(const TriangleMesh& mesh, int v)
 /// point is written the same way by every curve through it.
 SurfacePoint WriteSurfacePoint(const TriangleMesh& mesh, const CanonicalPoint& c, int preferred);
 
+/// The one tolerance for "a given point lies inside its triangle": barycentric weights down to
+/// -InsideTriangleTolerance, with u + v up to 1 + InsideTriangleTolerance, are inside (a
+/// point rounded off an edge when it was written, as scene files of the original BoolSurf
+/// code have them); readers then clamp them in (ClampBarycentric, Canonicalize). Every reader
+/// of given surface points (control curves, Surface Curves' properties, the SVG mapper's
+/// center, scene files read and written, subdivision) refuses a point only beyond it.
+constexpr double InsideTriangleTolerance = 1e-6;
+
+/// Whether (u, v) are finite and inside the triangle up to InsideTriangleTolerance.
+inline bool IsInsideTriangle(double u, double v)
+{
+  return std::isfinite(u) && std::isfinite(v) && u >= -InsideTriangleTolerance &&
+    v >= -InsideTriangleTolerance && u + v <= 1 + InsideTriangleTolerance;
+}
+
 /// False, with a sentence naming the problem, when p cannot be used: triangle id out of
-/// range, a triangle with invalid or repeated vertex indices, non-finite barycentrics.
+/// range, a triangle with invalid or repeated vertex indices, non-finite barycentrics or ones
+/// outside the triangle (IsInsideTriangle).
 bool CheckSurfacePoint(const TriangleMesh& mesh, const SurfacePoint& p, std::string& problem);
 
 /// Same for a canonical point (id out of range, non-finite parameters, an isolated vertex).

@@ -619,8 +619,7 @@ void SceneParser::ReadSurfaceScene(const SceneParseOptions& options, SceneModel&
     point.V = uv[1].get<double>();
     point.UVText = this->Brief(uv);
     const double u = point.U, v = point.V;
-    if (!std::isfinite(u) || !std::isfinite(v) || u < -SceneUVTolerance || v < -SceneUVTolerance ||
-      u + v > 1 + SceneUVTolerance)
+    if (!IsInsideTriangle(u, v))
     {
       throw SceneError(where + ".uv = " + point.UVText +
         " is outside the triangle (needs u >= 0, v >= 0, u + v <= 1)");

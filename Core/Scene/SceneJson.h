@@ -48,7 +48,7 @@ struct SceneParseOptions
 /// deep: an array at line 1, column 300 (in 'points') is 257 levels deep; ..."); valid JSON;
 /// a JSON object; `polygons` (and for a surface scene `points` and `model`) present; every
 /// value of the right type; point, polygon and shape indices that exist; a polygon in at most
-/// one shape; uv within SceneUVTolerance of the triangle; flags `are_closed`, `curve_types` (0
+/// one shape; uv inside the triangle (IsInsideTriangle); flags `are_closed`, `curve_types` (0
 /// or 1), operation types (0..3); at least one curve. A surface scene's one-point polygon is
 /// skipped with a note; a screen-space scene's is an error, as is a screen-space scene whose
 /// points are all the same.

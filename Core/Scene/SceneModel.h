@@ -22,16 +22,12 @@ struct SceneError : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-/// Tolerance on barycentric coordinates: values within it of the triangle are clamped into it,
-/// values further out are an error (read and written alike).
-constexpr double SceneUVTolerance = 1e-6;
-
 /// A control point `{"face": f, "uv": [u, v]}`: (1-u-v) p0 + u p1 + v p2 of triangle Face.
 struct ScenePoint
 {
   long long Face = 0;
-  /// As in the file (within SceneUVTolerance of the triangle); PlaceScenePoints clamps them
-  /// into it (ClampBarycentric).
+  /// As in the file (inside the triangle up to InsideTriangleTolerance, Mesh/SurfacePoint.h);
+  /// PlaceScenePoints clamps them into it (ClampBarycentric).
   double U = 0, V = 0;
   /// `face` and `uv` as spelled in the file ("1E2", "[2.5E-1,0.25]"), for messages; empty
   /// for points that do not come from a file.

@@ -20,7 +20,7 @@ constexpr double SameParameter = 1e-9;
 
 int NumberOfSegments(const CurveSource& source)
 {
-  const int n = static_cast<int>(source.Controls.size());
+  const int n = static_cast<int>(source.Points.size());
   if (source.Type == CurveType::CubicBezier)
   {
     return source.Closed ? n / 3 : (n - 1) / 3;
@@ -43,7 +43,7 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
   std::vector<SurfacePoint>& points)
 {
   const TriangleMesh& mesh = solver.GetMesh();
-  const int controls = static_cast<int>(source.Controls.size());
+  const int controls = static_cast<int>(source.Points.size());
   const int segments = NumberOfSegments(source);
   points.clear();
   const double k0 = std::round(t0), k1 = std::round(t1);
@@ -52,7 +52,7 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
   if (source.Type == CurveType::GeodesicPolygon)
   {
     auto control = [&](long long k)
-    { return source.Controls[static_cast<std::size_t>(((k % controls) + controls) % controls)]; };
+    { return source.Points[static_cast<std::size_t>(((k % controls) + controls) % controls)]; };
     const long long from = static_cast<long long>(std::floor(t0 + SameParameter)) + 1;
     const long long to = static_cast<long long>(std::ceil(t1 - SameParameter)) - 1;
     points.reserve(static_cast<std::size_t>(std::max(0LL, to - from + 1)) + 2);
@@ -71,7 +71,7 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
   }
 
   // Cubic Bezier: each segment over [t0, t1], cut at the range's ends.
-  auto canonical = [&](int k) { return LocateSurfacePoint(mesh, source.Controls[k % controls]); };
+  auto canonical = [&](int k) { return LocateSurfacePoint(mesh, source.Points[k % controls]); };
   std::vector<CanonicalPoint> out;
   const int s0 = static_cast<int>(std::floor(t0 + SameParameter));
   const int s1 = static_cast<int>(std::ceil(t1 - SameParameter));
@@ -127,8 +127,8 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
     if (own)
     {
       points.push_back(
-        source.Controls[(3 * static_cast<long long>(std::llround(t)) % controls + controls) %
-          controls]);
+        source
+          .Points[(3 * static_cast<long long>(std::llround(t)) % controls + controls) % controls]);
     }
     else
     {
@@ -322,12 +322,12 @@ void BezierPieces::CollectCuts(const TriangleMesh& mesh, int curve, std::vector<
 {
   this->CurveCut[curve] = 1;
   const CurveSource& source = this->Sources[curve];
-  if (source.Type != CurveType::CubicBezier || source.Controls.empty())
+  if (source.Type != CurveType::CubicBezier || source.Points.empty())
   {
     return;
   }
   const int segments = NumberOfSegments(source);
-  const int controls = static_cast<int>(source.Controls.size());
+  const int controls = static_cast<int>(source.Points.size());
   // Every patch end inside a segment (not at its anchors) is a cut of that segment.
   std::vector<std::vector<double>> cuts(segments);
   for (int p : this->PatchesOfCurve[curve])
@@ -377,7 +377,7 @@ void BezierPieces::CollectCuts(const TriangleMesh& mesh, int curve, std::vector<
     job.Segment = seg;
     for (int k = 0; k < 4; ++k)
     {
-      job.Whole[k] = LocateSurfacePoint(mesh, source.Controls[(3 * seg + k) % controls]);
+      job.Whole[k] = LocateSurfacePoint(mesh, source.Points[(3 * seg + k) % controls]);
     }
     job.At = std::move(at);
     jobs.push_back(std::move(job));

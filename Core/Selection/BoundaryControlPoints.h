@@ -32,15 +32,11 @@
 namespace boolsurf
 {
 
-/// What is known of one input curve (same index as the arranged curves).
-struct CurveSource
+/// What is known of one input curve (same index as the arranged curves): the user's control
+/// curve and where each of its traced points lies on it.
+struct CurveSource : ControlCurve
 {
-  std::vector<SurfacePoint> Controls; ///< the user's control points (closing one not repeated)
-  std::vector<double> Parameter;      ///< per traced point: CurveTrace::Parameter
-  CurveType Type = CurveType::GeodesicPolygon;
-  bool Closed = true;
-  int ShapeId = 0;
-  int CurveId = 0;
+  std::vector<double> Parameter; ///< per traced point: CurveTrace::Parameter
   /// The user's own id of the curve (a scene's polygon index) when the input gave one, for
   /// messages; -1 otherwise.
   long long InputCurveId = -1;

@@ -85,8 +85,9 @@ bool MapSvgOntoSurface(const TriangleMesh& mesh,
     for (const SvgSubpath& sub : path.Subpaths)
     {
       MappedSvgCurve curve;
+      curve.Type = CurveType::CubicBezier;
       curve.Closed = sub.Closed;
-      curve.Shape = path.Element;
+      curve.ShapeId = path.Element;
       curve.EvenOdd = path.EvenOdd;
       for (const Vec2& p : sub.Points)
       {

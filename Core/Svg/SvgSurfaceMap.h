@@ -13,6 +13,7 @@
 #ifndef boolsurf_SvgSurfaceMap_h
 #define boolsurf_SvgSurfaceMap_h
 
+#include "Curves/ControlCurve.h"
 #include "Mesh/SurfacePoint.h"
 #include "Svg/SvgDrawing.h"
 
@@ -29,11 +30,10 @@ struct SvgMapOptions
   double Rotation = 0.0; ///< degrees, counter-clockwise around the center normal
 };
 
-struct MappedSvgCurve
+/// A subpath as a control curve: a cubic spline (3n + 1 control points open, 3n closed) whose
+/// ShapeId is the SVG shape element it comes from (in document order of paths).
+struct MappedSvgCurve : ControlCurve
 {
-  std::vector<SurfacePoint> Points; ///< cubic spline control points (3n + 1 open, 3n closed)
-  bool Closed = false;
-  int Shape = 0;        ///< the SVG shape element it comes from (in document order of paths)
   bool EvenOdd = false; ///< that element's fill-rule
 };
 

@@ -243,36 +243,11 @@ bool PassOnDrawingStart(vtkPolyData* input, const std::vector<vtkPolyData*>& out
 }
 
 //------------------------------------------------------------------------------
-std::string WhatCurveNeeds(bool bezier, bool closed, int size)
-{
-  if (!bezier)
-  {
-    return size >= 2 ? std::string()
-                     : "a geodesic polygon needs 2 control points; it has " + std::to_string(size);
-  }
-  // The smallest valid count at or above `size`: 3n closed (n >= 1), 3n+1 open (n >= 1).
-  const int base = closed ? 0 : 1;
-  int valid = std::max(closed ? 3 : 4, size);
-  while ((valid - base) % 3 != 0)
-  {
-    ++valid;
-  }
-  if (valid == size)
-  {
-    return std::string();
-  }
-  return std::string(closed ? "a closed" : "an open") + " cubic Bezier spline needs " +
-    (closed ? "3n" : "3n+1") + " control points (anchor, handle, handle, anchor, ...); it has " +
-    std::to_string(size) + ": " + std::to_string(valid - size) + " more complete" +
-    (valid - size == 1 ? "s" : "") + " it";
-}
-
-//------------------------------------------------------------------------------
 void ReadControlCurves(vtkPolyData* curves,
   const std::function<const ClosestTriangleGrid&()>& closestTriangles,
   const TriangleMesh& mesh,
   const ControlCurveOptions& options,
-  std::vector<ControlCurve>& out,
+  std::vector<InputControlCurve>& out,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes)
 {
@@ -334,7 +309,7 @@ void ReadControlCurves(vtkPolyData* curves,
   ForEachCurveCell(curves,
     [&](vtkIdType cellId, vtkIdType n, const vtkIdType* ids, bool polygon)
     {
-      ControlCurve curve;
+      InputControlCurve curve;
       curve.CurveId = static_cast<int>(cellId);
       if (inputCurveIds && cellId < inputCurveIds->GetNumberOfTuples())
       {
@@ -458,46 +433,52 @@ void ReadControlCurves(vtkPolyData* curves,
       {
         return;
       }
-      if (beingDrawn && curve.Type == CurveType::CubicBezier)
+      if (!AcceptControlCurve(curve, problems, notes))
       {
-        // Its complete segments, open: anchor, handle, handle, anchor, ...
-        const std::size_t segments = (curve.Points.size() - 1) / 3;
-        curve.Points.resize(3 * segments + 1);
-        curve.PointIds.resize(3 * segments + 1);
-        curve.Closed = false;
-      }
-      const int count = static_cast<int>(curve.Points.size());
-      bool allSame = true;
-      for (int i = 1; i < count && allSame; ++i)
-      {
-        const SurfacePoint& a = curve.Points[0];
-        const SurfacePoint& b = curve.Points[i];
-        allSame = a.Triangle == b.Triangle && a.U == b.U && a.V == b.V;
-      }
-      if (beingDrawn && (count < 2 || allSame))
-      {
-        return; // nothing to show yet
-      }
-      if (count < 2 || allSame)
-      {
-        // A curve of one point (or of one point repeated) has zero length and bounds nothing:
-        // skipped with a note rather than failing the other curves.
-        notes.push_back(CurveLabel(curve.CurveId) + " has " + std::to_string(count) +
-          " control point(s)" + (count >= 2 ? ", all at the same surface point" : "") +
-          ": skipped, a curve needs two distinct points");
         return;
-      }
-      if (curve.Type == CurveType::CubicBezier)
-      {
-        const std::string needs = WhatCurveNeeds(true, curve.Closed, count);
-        if (!needs.empty())
-        {
-          problems.push_back(CurveLabel(curve.CurveId) + ": " + needs);
-          return;
-        }
       }
       out.push_back(std::move(curve));
     });
+}
+
+//------------------------------------------------------------------------------
+bool AcceptControlCurve(InputControlCurve& curve,
+  std::vector<std::string>& problems,
+  std::vector<std::string>& notes)
+{
+  if (curve.BeingDrawn && curve.Type == CurveType::CubicBezier)
+  {
+    // Its complete segments, open: anchor, handle, handle, anchor, ...
+    const std::size_t segments = (curve.Points.size() - 1) / 3;
+    curve.Points.resize(3 * segments + 1);
+    curve.PointIds.resize(3 * segments + 1);
+    curve.Closed = false;
+  }
+  const int count = static_cast<int>(curve.Points.size());
+  const bool distinct = HasDistinctPoints(curve);
+  if (curve.BeingDrawn && (count < 2 || !distinct))
+  {
+    return false; // nothing to show yet
+  }
+  if (count < 2 || !distinct)
+  {
+    // A curve of one point (or of one point repeated) has zero length and bounds nothing:
+    // skipped with a note rather than failing the other curves.
+    notes.push_back(CurveLabel(curve.CurveId) + " has " + std::to_string(count) +
+      " control point(s)" + (count >= 2 ? ", all at the same surface point" : "") +
+      ": skipped, a curve needs two distinct points");
+    return false;
+  }
+  if (curve.Type == CurveType::CubicBezier)
+  {
+    const std::string needs = WhatCurveNeeds(true, curve.Closed, count);
+    if (!needs.empty())
+    {
+      problems.push_back(CurveLabel(curve.CurveId) + ": " + needs);
+      return false;
+    }
+  }
+  return true;
 }
 
 } // namespace boolsurf

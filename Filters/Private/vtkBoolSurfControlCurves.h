@@ -5,7 +5,7 @@
 #ifndef vtkBoolSurfControlCurves_h
 #define vtkBoolSurfControlCurves_h
 
-#include "Geodesic/CurveTracer.h" // for CurveType
+#include "Curves/ControlCurve.h"
 #include "Mesh/ClosestTriangleGrid.h"
 #include "Mesh/SurfacePoint.h"
 
@@ -18,19 +18,16 @@ class vtkPolyData;
 namespace boolsurf
 {
 
-struct ControlCurve
+/// A control curve as read from the curves input, with what the input says of it beyond the
+/// curve (CurveId is its cell id in the input).
+struct InputControlCurve : ControlCurve
 {
-  int CurveId = -1; ///< cell id in the curves input
   /// The input's own cell data `CurveId` for this cell (a scene's polygon index), for messages;
   /// -1 when the input has none.
   long long InputCurveId = -1;
-  int ShapeId = 0;
-  CurveType Type = CurveType::GeodesicPolygon;
-  bool Closed = false;
   /// Still being drawn (read as far as it is valid): written with cell data Complete 0.
   bool BeingDrawn = false;
-  std::vector<SurfacePoint> Points; ///< the closing point of a closed curve is not repeated
-  std::vector<long long> PointIds;  ///< input point id of each control point
+  std::vector<long long> PointIds; ///< input point id of each control point
 };
 
 struct ControlCurveOptions
@@ -41,11 +38,6 @@ struct ControlCurveOptions
   /// Bezier curve up to its last complete segment, open) instead of left out.
   bool TraceValidPartOfIncompleteCurves = false;
 };
-
-/// What a curve of `size` control points still needs to be traced, as "an open cubic Bezier
-/// spline needs 3n+1 control points (...); it has 5: 2 more complete it", or empty when it
-/// is complete (a geodesic polygon needs 2 points, a Bezier spline 3n when closed, 3n+1 open).
-std::string WhatCurveNeeds(bool bezier, bool closed, int size);
 
 /// The ShapeIds (sorted, distinct) of the curves of `curves` marked as being drawn (cell data
 /// Complete 0); empty when there are none.
@@ -81,7 +73,15 @@ void ReadControlCurves(vtkPolyData* curves,
   const std::function<const ClosestTriangleGrid&()>& closest,
   const TriangleMesh& mesh,
   const ControlCurveOptions& options,
-  std::vector<ControlCurve>& out,
+  std::vector<InputControlCurve>& out,
+  std::vector<std::string>& problems,
+  std::vector<std::string>& notes);
+
+/// What the readers do with a curve once its points are read: a curve being drawn (BeingDrawn)
+/// is cut to its valid part (a Bezier curve to its complete segments, open); a curve without
+/// two distinct points is left out (with a note unless it is being drawn), a Bezier curve of a
+/// count its closedness cannot trace is a problem. Returns whether `curve` is kept.
+bool AcceptControlCurve(InputControlCurve& curve,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes);
 

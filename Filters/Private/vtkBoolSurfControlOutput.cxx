@@ -37,92 +37,6 @@ vtkIdType CountPoints(const std::vector<ControlSubCurve>& curves)
 } // namespace
 
 //------------------------------------------------------------------------------
-ControlCurveWriter::ControlCurveWriter(const TriangleMesh& mesh,
-  const char* markName,
-  bool curveIds,
-  bool shapeNames)
-  : Mesh(mesh)
-  , WriteMark(markName != nullptr)
-  , WriteCurveIds(curveIds)
-  , WriteShapeNames(shapeNames)
-{
-  this->Points->SetDataTypeToDouble();
-  this->TriangleId->SetName(names::TriangleId);
-  this->Barycentric->SetName(names::Barycentric);
-  this->Barycentric->SetNumberOfComponents(2);
-  this->Shape->SetName(names::ShapeId);
-  this->Type->SetName(names::CurveType);
-  this->Closed->SetName(names::Closed);
-  this->Mark->SetName(markName);
-  this->CurveId->SetName(names::CurveId);
-  this->ShapeName->SetName(names::ShapeName);
-}
-
-//------------------------------------------------------------------------------
-ControlCurveWriter::~ControlCurveWriter() = default;
-
-//------------------------------------------------------------------------------
-void ControlCurveWriter::Add(const std::vector<SurfacePoint>& points,
-  int shape,
-  int type,
-  bool closed,
-  int mark,
-  int curveId,
-  const std::string& shapeName)
-{
-  const vtkIdType first = this->Points->GetNumberOfPoints();
-  for (const SurfacePoint& p : points)
-  {
-    const Vec3 x = this->Mesh.Evaluate(p.Triangle, p.U, p.V);
-    this->Points->InsertNextPoint(x.x, x.y, x.z);
-    this->TriangleId->InsertNextValue(p.Triangle);
-    this->Barycentric->InsertNextTuple2(p.U, p.V);
-  }
-  const vtkIdType n = static_cast<vtkIdType>(points.size());
-  const bool repeat = closed && n > 1;
-  this->Lines->InsertNextCell(n + (repeat ? 1 : 0));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    this->Lines->InsertCellPoint(first + i);
-  }
-  if (repeat)
-  {
-    this->Lines->InsertCellPoint(first);
-  }
-  this->Shape->InsertNextValue(shape);
-  this->Type->InsertNextValue(type);
-  this->Closed->InsertNextValue(closed ? 1 : 0);
-  this->Mark->InsertNextValue(mark);
-  this->CurveId->InsertNextValue(curveId);
-  this->ShapeName->InsertNextValue(shapeName);
-}
-
-//------------------------------------------------------------------------------
-void ControlCurveWriter::Write(vtkPolyData* output)
-{
-  output->SetPoints(this->Points);
-  output->SetLines(this->Lines);
-  output->GetPointData()->AddArray(this->TriangleId);
-  output->GetPointData()->AddArray(this->Barycentric);
-  vtkCellData* cd = output->GetCellData();
-  cd->AddArray(this->Shape);
-  cd->AddArray(this->Type);
-  cd->AddArray(this->Closed);
-  if (this->WriteMark)
-  {
-    cd->AddArray(this->Mark);
-  }
-  if (this->WriteCurveIds)
-  {
-    cd->AddArray(this->CurveId);
-  }
-  if (this->WriteShapeNames)
-  {
-    cd->AddArray(this->ShapeName);
-  }
-}
-
-//------------------------------------------------------------------------------
 void WriteControlSubCurves(const std::vector<ControlSubCurve>& curves,
   const char* groupName,
   bool boundary,
@@ -255,11 +169,11 @@ bool ReadCurveSources(vtkPolyData* traced,
       }
       for (vtkIdType k = from; k < to; ++k)
       {
-        s.Controls.push_back({ static_cast<int>(triangles->GetComponent(k, 0)),
+        s.Points.push_back({ static_cast<int>(triangles->GetComponent(k, 0)),
           uv->GetComponent(k, 0),
           uv->GetComponent(k, 1) });
       }
-      ok = !s.Controls.empty();
+      ok = !s.Points.empty();
       out.push_back(std::move(s));
       ++c;
     });

@@ -6,59 +6,14 @@
 
 #include "Selection/BoundaryControlPoints.h"
 
-#include <vtkNew.h>
-
 #include <string>
 #include <vector>
 
-class vtkCellArray;
-class vtkDoubleArray;
 class vtkFieldData;
-class vtkIdTypeArray;
-class vtkIntArray;
-class vtkPoints;
 class vtkPolyData;
-class vtkStringArray;
 
 namespace boolsurf
 {
-
-/// Control curves in the form every BoolSurf filter reads (Surface Curves' output): one
-/// polyline per curve (a closed curve repeats its first point id), exact surface points (point
-/// data TriangleId/Barycentric), cell data ShapeId, CurveType and Closed, plus an optional int
-/// mark per curve (`markName`, e.g. OffsetCurve), optional CurveId and ShapeName cell data.
-class ControlCurveWriter
-{
-public:
-  /// `markName`: the name of the int cell array holding each curve's mark; null: none.
-  /// `curveIds`: write cell data CurveId. `shapeNames`: write cell data ShapeName.
-  explicit ControlCurveWriter(const TriangleMesh& mesh,
-    const char* markName = nullptr,
-    bool curveIds = false,
-    bool shapeNames = false);
-  ~ControlCurveWriter();
-
-  void Add(const std::vector<SurfacePoint>& points,
-    int shape,
-    int type,
-    bool closed,
-    int mark = 0,
-    int curveId = -1,
-    const std::string& shapeName = std::string());
-
-  /// Points, lines and arrays into `output` (which should be empty).
-  void Write(vtkPolyData* output);
-
-private:
-  const TriangleMesh& Mesh;
-  vtkNew<vtkPoints> Points;
-  vtkNew<vtkCellArray> Lines;
-  vtkNew<vtkIdTypeArray> TriangleId;
-  vtkNew<vtkDoubleArray> Barycentric;
-  vtkNew<vtkIntArray> Shape, Type, Closed, Mark, CurveId;
-  vtkNew<vtkStringArray> ShapeName;
-  bool WriteMark, WriteCurveIds, WriteShapeNames;
-};
 
 /// One polyline per sub-curve (a whole closed curve repeats its first point), point data
 /// TriangleId and Barycentric (exact surface points) and 3D points; cell data ShapeId (0 for

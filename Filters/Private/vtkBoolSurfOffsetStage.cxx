@@ -8,7 +8,7 @@
 #include "Offset/OffsetRegionOfCells.h"
 #include "Selection/BooleanExpression.h"
 #include "vtkBoolSurfBooleanStage.h"
-#include "vtkBoolSurfControlOutput.h"
+#include "vtkBoolSurfControlCurveWriter.h"
 #include "vtkBoolSurfTraceStage.h"
 
 #include <vtkCellArray.h>
@@ -97,7 +97,7 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
     return false;
   }
   // 1. the control curves (kept for the output) and their traces, read once
-  std::vector<ControlCurve> controls;
+  std::vector<InputControlCurve> controls;
   std::vector<std::string> problems;
   std::vector<TracedCurve> traced;
   if (!TraceControlCurves(cache,
@@ -122,7 +122,7 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
     {
       c.ShapeId = 0;
     }
-    for (ControlCurve& c : controls)
+    for (InputControlCurve& c : controls)
     {
       c.ShapeId = 0;
     }
@@ -252,22 +252,23 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
   ControlCurveWriter writer(mesh, boolsurf::names::OffsetCurve);
   if (options.KeepInputCurves)
   {
-    for (const ControlCurve& c : controls)
+    for (const InputControlCurve& c : controls)
     {
       if (options.ReplaceShapes && operands.count(c.ShapeId))
       {
         continue;
       }
-      writer.Add(c.Points, c.ShapeId, static_cast<int>(c.Type), c.Closed, 0);
+      writer.Add(c, 0);
     }
   }
   for (const auto& loop : loops)
   {
-    writer.Add(LoopControlPoints(mesh, loop),
-      outputShape,
-      static_cast<int>(CurveType::GeodesicPolygon),
-      true,
-      1);
+    ControlCurve offsetLoop;
+    offsetLoop.ShapeId = outputShape;
+    offsetLoop.Type = CurveType::GeodesicPolygon;
+    offsetLoop.Closed = true;
+    offsetLoop.Points = LoopControlPoints(mesh, loop);
+    writer.Add(offsetLoop, 1);
   }
   output->Initialize();
   writer.Write(output);

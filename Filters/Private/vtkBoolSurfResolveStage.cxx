@@ -2,17 +2,13 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
+#include "vtkBoolSurfControlCurveWriter.h"
 #include "vtkBoolSurfTraceStage.h"
 
-#include <vtkCellArray.h>
 #include <vtkCellData.h>
-#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
-#include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
@@ -55,59 +51,22 @@ bool StrategyFromText(std::string text, ResolveStrategy& out)
 
 void WriteResolved(const TriangleMesh& mesh, const ResolveResult& result, vtkPolyData* output)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName(boolsurf::names::TriangleId);
-  vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName(boolsurf::names::Barycentric);
-  barycentric->SetNumberOfComponents(2);
-  vtkNew<vtkIntArray> shape, type, closed, action, source;
-  shape->SetName(boolsurf::names::ShapeId);
-  type->SetName(boolsurf::names::CurveType);
-  closed->SetName(boolsurf::names::Closed);
+  ControlCurveWriter writer(mesh);
+  vtkNew<vtkIntArray> action, source;
   action->SetName(boolsurf::names::ResolutionAction);
   source->SetName(boolsurf::names::ResolutionSource);
   vtkNew<vtkStringArray> reason;
   reason->SetName(boolsurf::names::ResolutionReason);
   for (const ResolvedCurve& r : result.Curves)
   {
-    const vtkIdType first = points->GetNumberOfPoints();
-    for (const SurfacePoint& p : r.Curve.Points)
-    {
-      const Vec3 x = mesh.Evaluate(p.Triangle, p.U, p.V);
-      points->InsertNextPoint(x.x, x.y, x.z);
-      triangleId->InsertNextValue(p.Triangle);
-      barycentric->InsertNextTuple2(p.U, p.V);
-    }
-    const vtkIdType n = static_cast<vtkIdType>(r.Curve.Points.size());
-    const bool isClosed = r.Curve.Closed && n > 1;
-    lines->InsertNextCell(n + (isClosed ? 1 : 0));
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      lines->InsertCellPoint(first + i);
-    }
-    if (isClosed)
-    {
-      lines->InsertCellPoint(first); // the reader's closed-polyline form
-    }
-    shape->InsertNextValue(r.Curve.ShapeId);
-    type->InsertNextValue(static_cast<int>(r.Curve.Type));
-    closed->InsertNextValue(r.Curve.Closed ? 1 : 0);
+    writer.Add(r.Curve);
     action->InsertNextValue(static_cast<int>(r.Action));
     source->InsertNextValue(r.Source);
     reason->InsertNextValue(r.Reason);
   }
-  output->SetPoints(points);
-  output->SetLines(lines);
-  output->GetPointData()->AddArray(triangleId);
-  output->GetPointData()->AddArray(barycentric);
+  writer.Write(output);
   vtkCellData* cd = output->GetCellData();
-  for (vtkAbstractArray* a : { static_cast<vtkAbstractArray*>(shape),
-         static_cast<vtkAbstractArray*>(type),
-         static_cast<vtkAbstractArray*>(closed),
-         static_cast<vtkAbstractArray*>(action),
+  for (vtkAbstractArray* a : { static_cast<vtkAbstractArray*>(action),
          static_cast<vtkAbstractArray*>(source),
          static_cast<vtkAbstractArray*>(reason) })
   {
@@ -198,7 +157,7 @@ bool ResolveControlCurves(vtkSurfaceCache& cache,
 {
   const vtkSurfaceInput& surface = cache.GetCurrent();
   const TriangleMesh& mesh = *surface.Mesh;
-  std::vector<ControlCurve> controls;
+  std::vector<InputControlCurve> controls;
   std::vector<std::string> problems;
   TraceOptions reading;
   reading.ProjectionTolerance = options.Trace.ProjectionTolerance;
@@ -213,17 +172,7 @@ bool ResolveControlCurves(vtkSurfaceCache& cache,
   {
     return false;
   }
-  std::vector<ControlPolygonCurve> input;
-  for (const ControlCurve& c : controls)
-  {
-    ControlPolygonCurve p;
-    p.CurveId = c.CurveId;
-    p.ShapeId = c.ShapeId;
-    p.Type = c.Type;
-    p.Closed = c.Closed;
-    p.Points = c.Points;
-    input.push_back(std::move(p));
-  }
+  const std::vector<ControlCurve> input(controls.begin(), controls.end()); // the curves alone
   CurveTracer& tracer = cache.GetTracer();
   tracer.SetResolution(options.Trace.Resolution);
   GeodesicPathOptions pathOptions = tracer.GetPathSolver().GetOptions();
@@ -247,7 +196,7 @@ bool ResolveControlCurves(vtkSurfaceCache& cache,
   {
     if (std::none_of(input.begin(),
           input.end(),
-          [id = shapeId](const ControlPolygonCurve& c) { return c.ShapeId == id; }))
+          [id = shapeId](const ControlCurve& c) { return c.ShapeId == id; }))
     {
       notes.push_back("ShapeStrategies names shape S" + std::to_string(shapeId) +
         ", which has no curve (" + StrategyName(strategy) + " ignored)");

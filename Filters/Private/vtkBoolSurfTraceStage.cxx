@@ -31,7 +31,7 @@ namespace
 {
 
 void WriteTraces(const TriangleMesh& mesh,
-  const std::vector<ControlCurve>& controls,
+  const std::vector<InputControlCurve>& controls,
   const std::vector<CurveTrace>& traces,
   vtkPolyData* output)
 {
@@ -63,13 +63,13 @@ void WriteTraces(const TriangleMesh& mesh,
   // Curves still being drawn (traced as far as they are valid, for display) keep their mark,
   // so that a filter reading these traced curves leaves them out as it would their controls.
   const bool anyBeingDrawn = std::any_of(
-    controls.begin(), controls.end(), [](const ControlCurve& c) { return c.BeingDrawn; });
+    controls.begin(), controls.end(), [](const InputControlCurve& c) { return c.BeingDrawn; });
   auto complete = NewSizedArray<vtkIntArray>(boolsurf::names::Complete, 1, anyBeingDrawn ? nc : 0);
   // Point `i` of curve `c`, as output point `id`.
   const auto writePoint = [&](vtkIdType c, std::size_t i, vtkIdType id)
   {
     const CurveTrace& trace = traces[c];
-    const ControlCurve& control = controls[c];
+    const InputControlCurve& control = controls[c];
     const size_t n = trace.Curve.Points.size();
     // Every point is written canonically (exact zeros on edges and vertices), so Surface
     // Arrangement and every other reader locate it where the tracer did. A control point is
@@ -126,7 +126,7 @@ void WriteTraces(const TriangleMesh& mesh,
   for (vtkIdType c = 0; c < nc; ++c)
   {
     const CurveTrace& trace = traces[c];
-    const ControlCurve& control = controls[c];
+    const InputControlCurve& control = controls[c];
     const vtkIdType first = firstPoint[c];
     const size_t n = trace.Curve.Points.size();
     vtkIdType corner = firstCorner[c];
@@ -166,7 +166,7 @@ void WriteTraces(const TriangleMesh& mesh,
   // arrangement and the Boolean can give results back as control points (field data:
   // ControlOffsets[c]..ControlOffsets[c + 1] index curve c's points).
   vtkIdType nControls = 0;
-  for (const ControlCurve& control : controls)
+  for (const InputControlCurve& control : controls)
   {
     nControls += static_cast<vtkIdType>(control.Points.size());
   }
@@ -226,12 +226,12 @@ std::string DescribeCurvePoint(const std::vector<TracedCurve>& curves,
   }
   text += " of shape " + std::to_string(traced.ShapeId);
   if (!source || point < 0 || point >= static_cast<int>(source->Parameter.size()) ||
-    source->Controls.empty())
+    source->Points.empty())
   {
     return text;
   }
   // Parameter = segment index + fraction: the control points at the ends of that segment.
-  const int n = static_cast<int>(source->Controls.size());
+  const int n = static_cast<int>(source->Points.size());
   const int segment = static_cast<int>(source->Parameter[point]);
   const bool bezier = source->Type == CurveType::CubicBezier;
   const int first = bezier ? 3 * segment : segment;
@@ -268,7 +268,7 @@ void AddSiteGraphField(const TriangleMesh& mesh, vtkFieldData* fieldData)
 void ReadSurfaceControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* controlCurves,
   const TraceOptions& trace,
-  std::vector<ControlCurve>& controls,
+  std::vector<InputControlCurve>& controls,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes)
 {
@@ -296,14 +296,27 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes,
   std::vector<CurveSource>* sources,
-  std::vector<ControlCurve>* controlsRead)
+  std::vector<InputControlCurve>* controlsRead)
+{
+  std::vector<InputControlCurve> own;
+  std::vector<InputControlCurve>& controls = controlsRead ? *controlsRead : own;
+  controls.clear();
+  ReadSurfaceControlCurves(cache, controlCurves, options, controls, problems, notes);
+  return TraceInputCurves(cache, controls, options, progress, traced, output, problems, sources);
+}
+
+//------------------------------------------------------------------------------
+bool TraceInputCurves(vtkSurfaceCache& cache,
+  const std::vector<InputControlCurve>& controls,
+  const TraceOptions& options,
+  vtkAlgorithm* progress,
+  std::vector<TracedCurve>& traced,
+  vtkPolyData* output,
+  std::vector<std::string>& problems,
+  std::vector<CurveSource>* sources)
 {
   traced.clear();
   const TriangleMesh& mesh = *cache.GetCurrent().Mesh;
-  std::vector<ControlCurve> own;
-  std::vector<ControlCurve>& controls = controlsRead ? *controlsRead : own;
-  controls.clear();
-  ReadSurfaceControlCurves(cache, controlCurves, options, controls, problems, notes);
   CurveTracer& tracer = cache.GetTracer();
   tracer.SetResolution(options.Resolution);
   tracer.SetKeepWrittenForms(output != nullptr); // see WriteTraces
@@ -311,11 +324,10 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   pathOptions.Method = options.Method;
   tracer.GetPathSolver().SetOptions(pathOptions);
   tracer.StartPass(); // curves of the update before the last one are forgotten
-  std::vector<CurveTracer::CurveRequest> requests(controls.size());
+  std::vector<const ControlCurve*> requests(controls.size());
   for (size_t c = 0; c < controls.size(); ++c)
   {
-    const ControlCurve& control = controls[c];
-    requests[c] = { &control.Points, control.Type, control.Closed, control.CurveId };
+    requests[c] = &controls[c];
   }
   std::vector<CurveTrace> traces;
   std::vector<TraceStatus> statuses;
@@ -362,12 +374,8 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
     for (size_t c = 0; c < controls.size(); ++c)
     {
       CurveSource& s = (*sources)[c];
-      s.Controls = controls[c].Points;
+      static_cast<ControlCurve&>(s) = controls[c];
       s.Parameter = std::move(traces[c].Parameter);
-      s.Type = controls[c].Type;
-      s.Closed = controls[c].Closed;
-      s.ShapeId = controls[c].ShapeId;
-      s.CurveId = controls[c].CurveId;
       s.InputCurveId = controls[c].InputCurveId;
     }
   }

@@ -3,6 +3,7 @@
 #ifndef vtkBoolSurfTraceStage_h
 #define vtkBoolSurfTraceStage_h
 
+#include "Curves/TraceOptions.h"
 #include "Geodesic/CurveTracer.h"
 #include "Selection/BoundaryControlPoints.h"
 #include "vtkBoolSurfControlCurves.h"
@@ -17,19 +18,6 @@ class vtkPolyData;
 
 namespace boolsurf
 {
-
-struct TraceOptions
-{
-  int Resolution = 4;
-  double ProjectionTolerance = 0.01; ///< fraction of the surface's bounding-box diagonal
-  /// How each geodesic leg is computed (see GeodesicMethod in Geodesic/GeodesicPath.h).
-  GeodesicMethod Method = GeodesicMethod::Bounded;
-  /// Curves traced at once (0: all cores; see CurveTracer::TraceCurves).
-  int Threads = 0;
-  /// Curves still being drawn (cell data Complete 0): traced as far as they are valid (for
-  /// display) instead of left out.
-  bool TraceValidPartOfIncompleteCurves = false;
-};
 
 /// Traces every curve of `controlCurves` on the cached surface. On success fills `traced`
 /// (for the arrangement) and, when `output` is not null, writes the traced polylines. On
@@ -47,14 +35,25 @@ bool TraceControlCurves(vtkSurfaceCache& cache,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes,
   std::vector<CurveSource>* sources = nullptr,
-  std::vector<ControlCurve>* controls = nullptr);
+  std::vector<InputControlCurve>* controls = nullptr);
+
+/// The tracing half of TraceControlCurves, for curves already read (or held, as Surface Curves
+/// holds its drawing): `problems` may already hold the reading's problems, which fail it too.
+bool TraceInputCurves(vtkSurfaceCache& cache,
+  const std::vector<InputControlCurve>& controls,
+  const TraceOptions& options,
+  vtkAlgorithm* progress,
+  std::vector<TracedCurve>& traced,
+  vtkPolyData* output,
+  std::vector<std::string>& problems,
+  std::vector<CurveSource>* sources = nullptr);
 
 /// ReadControlCurves on the cached surface: control points projected with its locator, no
 /// farther than options.ProjectionTolerance times its bounding-box diagonal.
 void ReadSurfaceControlCurves(vtkSurfaceCache& cache,
   vtkPolyData* controlCurves,
   const TraceOptions& options,
-  std::vector<ControlCurve>& controls,
+  std::vector<InputControlCurve>& controls,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes);
 

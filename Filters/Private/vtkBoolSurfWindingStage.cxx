@@ -84,7 +84,7 @@ bool CheckShapesExist(const std::vector<TracedCurve>& curves,
 
 //------------------------------------------------------------------------------
 std::map<int, std::string> ReadShapeNames(vtkPolyData* curves,
-  const std::vector<ControlCurve>& controls)
+  const std::vector<InputControlCurve>& controls)
 {
   std::map<int, std::string> names;
   auto* given = curves
@@ -94,7 +94,7 @@ std::map<int, std::string> ReadShapeNames(vtkPolyData* curves,
   {
     return names;
   }
-  for (const ControlCurve& c : controls)
+  for (const InputControlCurve& c : controls)
   {
     if (c.CurveId < 0 || c.CurveId >= given->GetNumberOfValues() || names.count(c.ShapeId))
     {
@@ -289,7 +289,7 @@ bool CloseBrokenShapes(SurfaceWinding& winding,
     {
       // A geodesic polygon through every point of the loop: traced point k is control point k.
       CurveSource source;
-      source.Controls = loops[i].SurfacePoints;
+      source.Points = loops[i].SurfacePoints;
       source.Parameter.resize(loop.Points.size());
       for (std::size_t k = 0; k < loop.Points.size(); ++k)
       {

@@ -37,7 +37,7 @@ bool CheckShapesExist(const std::vector<TracedCurve>& curves,
 /// `curves`, whose CurveId is the cell id), the first non-empty name among a shape's curves.
 /// Shapes without a name are absent; so is everything when `curves` has no ShapeName.
 std::map<int, std::string> ReadShapeNames(vtkPolyData* curves,
-  const std::vector<ControlCurve>& controls);
+  const std::vector<InputControlCurve>& controls);
 
 /// The shape's name, or "Shape <id>" when it has none.
 std::string ShapeLabel(int shapeId, const std::map<int, std::string>& names);

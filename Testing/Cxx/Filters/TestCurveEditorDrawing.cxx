@@ -16,7 +16,10 @@
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
 #include <array>
@@ -396,5 +399,119 @@ TEST(CurveEditorDrawing, StageChainIsQuietWhileADrawingStarts)
     boolean->Update();
     EXPECT_EQ(messages->Errors + messages->Warnings, "");
     EXPECT_NEAR(testutils::Area(boolean->GetOutput(0)), clicks == 4 ? 0.04 : 0.0, 1e-12);
+  }
+}
+
+// Port 1 traces the curves the source holds, without reading port 0 back; it is bit for bit
+// what Trace Surface Curves makes of port 0: a closed polygon, an open polygon whose last
+// point is its first (read as closed), a closed Bezier spline, exact and snapped points.
+TEST(CurveEditorDrawing, PortOneIsTheTraceOfPortZero)
+{
+  vtkSmartPointer<vtkPolyData> surface =
+    testutils::ToPolyData(boolsurf::MakeFlatSquare(12, 1.0, 0.3, 5));
+  const double pts[][3] = { { 0.2, 0.2, 0 },
+    { 0.45, 0.25, 0 },
+    { 0.3, 0.45, 0 },
+    { 0.6, 0.1, 0 },
+    { 0.85, 0.3, 0 },
+    { 0.7, 0.45, 0 },
+    { 0.6, 0.1, 0 },
+    { 0.2, 0.6, 0 },
+    { 0.4, 0.55, 0 },
+    { 0.5, 0.75, 0 },
+    { 0.45, 0.9, 0 },
+    { 0.25, 0.95, 0 },
+    { 0.1, 0.8, 0 } };
+  const int points = 13;
+  vtkNew<vtkBoolSurfSurfaceCurves> drawing;
+  drawing->SetInputData(surface);
+  drawing->SetGeodesicMethodToExact();
+  drawing->SetNumberOfPoints(points);
+  for (int i = 0; i < points; ++i)
+  {
+    drawing->SetPoint(i, pts[i][0], pts[i][1], pts[i][2]);
+  }
+  const int sizes[] = { 3, 4, 6 }, types[] = { 0, 0, 1 }, closed[] = { 1, 0, 1 };
+  drawing->SetNumberOfCurveSizes(3);
+  drawing->SetNumberOfCurveTypes(3);
+  drawing->SetNumberOfClosedCurves(3);
+  for (int c = 0; c < 3; ++c)
+  {
+    drawing->SetCurveSize(c, sizes[c]);
+    drawing->SetCurveType(c, types[c]);
+    drawing->SetClosedCurve(c, closed[c]);
+  }
+  for (bool exact : { false, true })
+  {
+    SCOPED_TRACE(exact ? "exact points" : "snapped points");
+    if (exact)
+    {
+      // The points as snapped, given exactly (the curve editor's form), the repeated one too.
+      drawing->Update();
+      vtkDataArray* t = drawing->GetOutput(0)->GetPointData()->GetArray("TriangleId");
+      vtkDataArray* b = drawing->GetOutput(0)->GetPointData()->GetArray("Barycentric");
+      ASSERT_TRUE(t && b);
+      drawing->SetNumberOfTriangleIds(points);
+      drawing->SetNumberOfBarycentrics(points);
+      for (int i = 0; i < points; ++i)
+      {
+        drawing->SetTriangleId(i, static_cast<vtkIdType>(t->GetComponent(i, 0)));
+        drawing->SetBarycentric(i, b->GetComponent(i, 0), b->GetComponent(i, 1));
+      }
+    }
+    vtkNew<vtkBoolSurfTraceCurves> trace;
+    trace->SetInputData(0, surface);
+    trace->SetInputConnection(1, drawing->GetOutputPort(0));
+    trace->SetGeodesicMethodToExact();
+    trace->Update();
+    drawing->Update();
+    vtkPolyData* held = drawing->GetOutput(1);
+    vtkPolyData* read = trace->GetOutput();
+    ASSERT_EQ(held->GetNumberOfCells(), 3);
+    ASSERT_EQ(held->GetNumberOfPoints(), read->GetNumberOfPoints());
+    ASSERT_EQ(held->GetNumberOfCells(), read->GetNumberOfCells());
+    for (vtkIdType p = 0; p < held->GetNumberOfPoints(); ++p)
+    {
+      double a[3], b[3];
+      held->GetPoint(p, a);
+      read->GetPoint(p, b);
+      ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << "point " << p;
+    }
+    for (vtkIdType c = 0; c < held->GetNumberOfCells(); ++c)
+    {
+      vtkNew<vtkIdList> a, b;
+      held->GetCellPoints(c, a);
+      read->GetCellPoints(c, b);
+      ASSERT_EQ(a->GetNumberOfIds(), b->GetNumberOfIds()) << "cell " << c;
+      for (vtkIdType k = 0; k < a->GetNumberOfIds(); ++k)
+      {
+        ASSERT_EQ(a->GetId(k), b->GetId(k)) << "cell " << c << " corner " << k;
+      }
+    }
+    for (vtkDataSetAttributes* heldData :
+      { static_cast<vtkDataSetAttributes*>(held->GetPointData()),
+        static_cast<vtkDataSetAttributes*>(held->GetCellData()) })
+    {
+      vtkDataSetAttributes* readData = heldData == held->GetPointData()
+        ? static_cast<vtkDataSetAttributes*>(read->GetPointData())
+        : static_cast<vtkDataSetAttributes*>(read->GetCellData());
+      ASSERT_EQ(heldData->GetNumberOfArrays(), readData->GetNumberOfArrays());
+      for (int i = 0; i < heldData->GetNumberOfArrays(); ++i)
+      {
+        vtkDataArray* a = heldData->GetArray(i);
+        vtkDataArray* b = a ? readData->GetArray(a->GetName()) : nullptr;
+        ASSERT_TRUE(a && b) << "array " << i;
+        ASSERT_EQ(a->GetNumberOfValues(), b->GetNumberOfValues()) << a->GetName();
+        for (vtkIdType k = 0; k < a->GetNumberOfTuples(); ++k)
+        {
+          for (int j = 0; j < a->GetNumberOfComponents(); ++j)
+          {
+            ASSERT_EQ(a->GetComponent(k, j), b->GetComponent(k, j)) << a->GetName() << " " << k;
+          }
+        }
+      }
+    }
+    // The open polygon whose last point is its first is traced closed.
+    EXPECT_EQ(held->GetCellData()->GetArray("Closed")->GetComponent(1, 0), 1);
   }
 }

@@ -21,8 +21,8 @@ SurfacePoint RandomPoint(const TriangleMesh& mesh, std::mt19937& rng)
 
 struct Drawing
 {
-  std::vector<std::vector<SurfacePoint>> Points;
-  std::vector<CurveTracer::CurveRequest> Requests;
+  std::vector<ControlCurve> Curves;
+  std::vector<const ControlCurve*> Requests;
 };
 
 /// `n` curves: polygons of 3-6 random points (far apart on the torus, so many legs are routed)
@@ -32,27 +32,28 @@ Drawing RandomDrawing(const TriangleMesh& mesh, int n, std::uint32_t seed, int b
 {
   std::mt19937 rng(seed);
   Drawing d;
-  d.Points.resize(n);
+  d.Curves.resize(n);
   for (int c = 0; c < n; ++c)
   {
     const bool bezier = c % 3 == 2;
     const int count = bezier ? 6 : 3 + static_cast<int>(rng() % 4);
     for (int k = 0; k < count; ++k)
     {
-      d.Points[c].push_back(RandomPoint(mesh, rng));
+      d.Curves[c].Points.push_back(RandomPoint(mesh, rng));
     }
     if (c == broken)
     {
-      d.Points[c][1].Triangle = mesh.GetNumberOfTriangles() + 5;
+      d.Curves[c].Points[1].Triangle = mesh.GetNumberOfTriangles() + 5;
     }
   }
   for (int c = 0; c < n; ++c)
   {
     const bool bezier = c % 3 == 2;
-    d.Requests.push_back({ &d.Points[c],
-      bezier ? CurveType::CubicBezier : CurveType::GeodesicPolygon,
-      c % 2 == 0 || bezier,
-      100 + c });
+    ControlCurve& curve = d.Curves[c];
+    curve.Type = bezier ? CurveType::CubicBezier : CurveType::GeodesicPolygon;
+    curve.Closed = c % 2 == 0 || bezier;
+    curve.CurveId = 100 + c;
+    d.Requests.push_back(&curve);
   }
   return d;
 }
@@ -93,8 +94,8 @@ TEST(ParallelTracing, SameCurvesAsOneByOne)
     int routed = 0;
     for (std::size_t c = 0; c < drawing.Requests.size(); ++c)
     {
-      const CurveTracer::CurveRequest& r = drawing.Requests[c];
-      expectedStatus.push_back(single.Trace(*r.Points, r.Type, r.Closed, expected[c], r.CurveId));
+      const ControlCurve& r = *drawing.Requests[c];
+      expectedStatus.push_back(single.Trace(r.Points, r.Type, r.Closed, expected[c], r.CurveId));
       routed += single.GetPathSolver().GetLastStatistics().Routed;
     }
     ASSERT_FALSE(expectedStatus[10].Ok);

@@ -41,9 +41,9 @@ struct Torus
     return ClosestSurfacePointNear(this->Mesh, x, 0, HUGE_VAL);
   }
   // Around the tube at angle u (reverse: the other way).
-  ControlPolygonCurve Meridian(double u, int shape, int id, bool reverse = false) const
+  ControlCurve Meridian(double u, int shape, int id, bool reverse = false) const
   {
-    ControlPolygonCurve c;
+    ControlCurve c;
     c.ShapeId = shape;
     c.CurveId = id;
     for (int k = 0; k < 12; ++k)
@@ -54,9 +54,9 @@ struct Torus
     return c;
   }
   // Around the axis at tube angle v.
-  ControlPolygonCurve Parallel(double v, int shape, int id) const
+  ControlCurve Parallel(double v, int shape, int id) const
   {
-    ControlPolygonCurve c;
+    ControlCurve c;
     c.ShapeId = shape;
     c.CurveId = id;
     for (int k = 0; k < 16; ++k)
@@ -65,9 +65,9 @@ struct Torus
     }
     return c;
   }
-  ControlPolygonCurve SmallLoop(int shape, int id) const
+  ControlCurve SmallLoop(int shape, int id) const
   {
-    ControlPolygonCurve c;
+    ControlCurve c;
     c.ShapeId = shape;
     c.CurveId = id;
     for (int k = 0; k < 6; ++k)
@@ -79,7 +79,7 @@ struct Torus
   }
 };
 
-std::vector<ControlPolygonCurve> Scene(const Torus& t)
+std::vector<ControlCurve> Scene(const Torus& t)
 {
   return { t.Meridian(0.2, 0, 0),
     t.Meridian(1.0, 1, 1),
@@ -89,9 +89,9 @@ std::vector<ControlPolygonCurve> Scene(const Torus& t)
     t.SmallLoop(3, 5) };
 }
 
-std::vector<ControlPolygonCurve> CurvesOf(const ResolveResult& r)
+std::vector<ControlCurve> CurvesOf(const ResolveResult& r)
 {
-  std::vector<ControlPolygonCurve> out;
+  std::vector<ControlCurve> out;
   for (const ResolvedCurve& c : r.Curves)
   {
     out.push_back(c.Curve);
@@ -101,7 +101,7 @@ std::vector<ControlPolygonCurve> CurvesOf(const ResolveResult& r)
 
 // Traces, arranges and labels; returns ShapeConsistent per shape id.
 std::map<int, bool> Consistency(const Torus& t,
-  const std::vector<ControlPolygonCurve>& curves,
+  const std::vector<ControlCurve>& curves,
   std::vector<TracedCurve>& traced)
 {
   CurveTracer tracer(t.Mesh);
@@ -119,9 +119,7 @@ std::map<int, bool> Consistency(const Torus& t,
   return out;
 }
 
-ResolveResult Resolve(const Torus& t,
-  const std::vector<ControlPolygonCurve>& curves,
-  ResolveStrategy s)
+ResolveResult Resolve(const Torus& t, const std::vector<ControlCurve>& curves, ResolveStrategy s)
 {
   CurveTracer tracer(t.Mesh);
   std::vector<std::vector<int>> classes;
@@ -209,7 +207,7 @@ TEST(ShapeResolution, AddGeneratorsMakesEveryShapeConsistent)
 TEST(ShapeResolution, DuplicateReversedMakesStripsThatDoNotCrossTheirCurve)
 {
   Torus t;
-  const std::vector<ControlPolygonCurve> scene = Scene(t);
+  const std::vector<ControlCurve> scene = Scene(t);
   const ResolveResult r = Resolve(t, scene, ResolveStrategy::DuplicateReversed);
   std::vector<TracedCurve> traced;
   const auto consistent = Consistency(t, CurvesOf(r), traced);
@@ -248,7 +246,7 @@ TEST(ShapeResolution, RemoveCurvesLeavesNullHomologousSets)
   CurveTracer tracer(t.Mesh);
   std::vector<std::vector<int>> classes;
   std::string error;
-  const std::vector<ControlPolygonCurve> left = CurvesOf(r);
+  const std::vector<ControlCurve> left = CurvesOf(r);
   ASSERT_TRUE(ClassifyControlCurves(tracer, t.Basis, left, classes, nullptr, error)) << error;
   std::map<int, std::vector<int>> sums;
   for (size_t i = 0; i < left.size(); ++i)
@@ -284,7 +282,7 @@ TEST(ShapeResolution, ConsistentShapesAndGenusZeroAreLeftAlone)
   HomologyBasis basis;
   std::string error;
   ASSERT_TRUE(basis.Compute(sphere, topo, HomologyOptions(), error));
-  ControlPolygonCurve loop;
+  ControlCurve loop;
   loop.CurveId = 0;
   loop.Points = { { 0, 0.3, 0.3 }, { 5, 0.3, 0.3 }, { 9, 0.3, 0.3 } };
   ResolveOptions options;
