@@ -3,7 +3,7 @@
 #ifndef vtkBoolSurfTraceStage_h
 #define vtkBoolSurfTraceStage_h
 
-#include "Curves/TraceOptions.h"
+#include "Geodesic/TraceOptions.h"
 #include "Geodesic/CurveTracer.h"
 #include "Selection/BoundaryControlPoints.h"
 #include "vtkBoolSurfControlCurves.h"

@@ -4,7 +4,7 @@
 #ifndef boolsurf_TraceOptions_h
 #define boolsurf_TraceOptions_h
 
-#include "Geodesic/GeodesicPath.h" // for GeodesicMethod
+#include "Geodesic/GeodesicPathOptions.h" // for GeodesicMethod
 
 namespace boolsurf
 {
@@ -13,7 +13,7 @@ struct TraceOptions
 {
   int Resolution = 4;
   double ProjectionTolerance = 0.01; ///< fraction of the surface's bounding-box diagonal
-  /// How each geodesic leg is computed (see GeodesicMethod in Geodesic/GeodesicPath.h).
+  /// How each geodesic leg is computed (see GeodesicMethod in Geodesic/GeodesicPathOptions.h).
   GeodesicMethod Method = GeodesicMethod::Bounded;
   /// Curves traced at once (0: all cores; see CurveTracer::TraceCurves).
   int Threads = 0;
