@@ -15,6 +15,10 @@
  * - GetSurface() converts a surface input to the Core mesh once and keeps it while the input
  *   does not change (adjacency, topology, geodesic tracer, homology basis), reporting the
  *   conversion notes (triangulated polygons, dropped lines) as warnings;
+ * - GetTracedCurves(), GetArrangement() and GetLabeledArrangement() give a stage's Core result
+ *   for an input, as ttkAlgorithm::GetTriangulation gives TTK's triangulation: the one the
+ *   upstream stage attached (vtkBoolSurfStageHandoff.h), or, for traced curves, one decoded
+ *   from the input's arrays when none is attached (a file, a deep copy, an edited array);
  * - every input port takes vtkPolyData; SetInputPortOptional() marks the optional ones.
  *
  * Subclasses set their port counts in their constructor and implement Execute().
@@ -36,6 +40,9 @@ namespace boolsurf
 {
 class vtkSurfaceCache;
 struct vtkSurfaceInput;
+struct TracedCurvesResult;
+struct ArrangementResult;
+struct LabeledArrangementResult;
 }
 
 class BOOLSURFFILTERS_EXPORT vtkBoolSurfAlgorithm : public vtkPolyDataAlgorithm
@@ -77,6 +84,29 @@ protected:
   const boolsurf::vtkSurfaceInput* GetSurface(vtkPolyData* input, std::string& error);
   /// The cache behind GetSurface(): the surface's tracer, locator and homology live there.
   boolsurf::vtkSurfaceCache& GetSurfaceCache();
+
+  /// The traced curves of `curves` (Trace Surface Curves' output) on `surface`, converted from
+  /// `surfaceInput`: the result Trace Surface Curves attached when it traced them on this very
+  /// surface, else decoded from the arrays (TriangleId/Barycentric, and the control points when
+  /// the arrays carry them; the geodesic method is then Bounded, as the arrays do not say it).
+  /// Null, with a message naming the curve and point, when the arrays are not traced curves.
+  std::shared_ptr<const boolsurf::TracedCurvesResult> GetTracedCurves(vtkPolyData* curves,
+    vtkPolyData* surfaceInput,
+    const boolsurf::vtkSurfaceInput& surface,
+    std::string& error);
+  /// The arrangement Surface Arrangement (or Winding Numbers) attached to `input`'s
+  /// ArrangementCell array. Null, with `error` naming what is missing, when none is attached:
+  /// the input was read from a file, deep-copied or edited since (the caller then reads the
+  /// arrays).
+  std::shared_ptr<const boolsurf::ArrangementResult> GetArrangement(vtkPolyData* input,
+    std::string& error);
+  /// The labeled arrangement of `input`: the one Label Arrangement Cells attached to CellLabels,
+  /// or, for an input without labels, the attached arrangement labeled with the automatic zero
+  /// cell as the one-step filter labels it. Null, with `error` naming what is missing, as for
+  /// GetArrangement.
+  std::shared_ptr<const boolsurf::LabeledArrangementResult> GetLabeledArrangement(
+    vtkPolyData* input,
+    std::string& error);
 
   /// Each line as a warning of this filter.
   void ReportWarnings(const std::vector<std::string>& lines);

@@ -46,96 +46,68 @@ bool vtkBoolSurfBSC::Execute(const std::vector<vtkPolyData*>& inputs,
   vtkPolyData* boundary = outputs[1];
   vtkPolyData* controls = outputs[2];
   vtkPolyData* clipped = outputs[3];
-  std::string note;
   if (boolsurf::PassOnDrawingStart(input, outputs))
   {
     return true; // a drawing being started: no region yet, and no message
   }
-  // The arrangement in Core form when Surface Arrangement handed it over: selected and written
-  // as the one-step filter does.
-  if (const auto labeled = boolsurf::FindLabeledArrangement(input))
-  {
-    if (!this->SelectFromCore(
-          *labeled->Arranged, samples, region, boundary, controls, clipped, error))
-    {
-      return false;
-    }
-    // The labels of the arrangement's cells, as the one-step filter gives them.
-    boolsurf::AddLabelTable(labeled->Labels, region->GetFieldData());
-    return true;
-  }
+  Internals& in = *this->Internal;
+  // The arrangement in Core form when Surface Arrangement handed it over (then selected and
+  // written as the one-step filter does); else the arrangement's fields in the input's arrays.
+  std::string notAttached; // the arrays are read then
+  const auto labeled = this->GetLabeledArrangement(input, notAttached);
+  const boolsurf::ArrangementResult* arranged = labeled ? labeled->Arranged.get() : nullptr;
   boolsurf::ArrangementFields fields;
-  if (!boolsurf::ReadArrangementFields(input, fields, error))
+  if (!arranged && !boolsurf::ReadArrangementFields(input, fields, error))
   {
     return false;
   }
   std::vector<boolsurf::SampleQuery> queries;
-  if (!boolsurf::ReadSampleQueries(samples, nullptr, queries, error))
+  if (!boolsurf::ReadSampleQueries(
+        samples, arranged ? arranged->Surface.Mesh.get() : nullptr, queries, error))
   {
     return false;
   }
-  std::vector<boolsurf::PatchSnap> snaps;
-  boolsurf::BscResult result;
-  if (!boolsurf::SelectSampledCells(input,
+  const auto abort = [this] { return this->CheckAbort(); };
+  const bool selected = arranged
+    ? boolsurf::SelectBySamples(*arranged->Surface.Mesh,
+        arranged->Arrangement,
+        queries,
+        boolsurf::SnapDistance(arranged->Surface.Triangles, this->SnapTolerance),
+        this->MaxSearchStates,
+        in.Snaps,
+        in.Result,
+        error,
+        abort)
+    : boolsurf::SelectSampledCells(input,
         fields,
         queries,
         boolsurf::SnapDistance(input, this->SnapTolerance),
         this->MaxSearchStates,
-        snaps,
-        result,
+        in.Snaps,
+        in.Result,
         error,
-        [this] { return this->CheckAbort(); }))
-  {
-    return false;
-  }
-  this->UpdateProgress(0.5);
-  boolsurf::WriteSelection(
-    input, fields, result.Selected, region, boundary, controls, clipped, &note);
-  if (!note.empty())
-  {
-    vtkWarningMacro(<< note);
-  }
-  boolsurf::AddSampleFields(snaps, result, region);
-  boolsurf::AddSampleFields(snaps, result, boundary);
-  return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkBoolSurfBSC::SelectFromCore(const boolsurf::ArrangementResult& arranged,
-  vtkPolyData* samples,
-  vtkPolyData* region,
-  vtkPolyData* boundary,
-  vtkPolyData* controls,
-  vtkPolyData* clipped,
-  std::string& error)
-{
-  Internals& in = *this->Internal;
-  std::vector<boolsurf::SampleQuery> queries;
-  if (!boolsurf::ReadSampleQueries(samples, arranged.Surface.Mesh.get(), queries, error) ||
-    !boolsurf::SelectBySamples(*arranged.Surface.Mesh,
-      arranged.Arrangement,
-      queries,
-      boolsurf::SnapDistance(arranged.Surface.Triangles, this->SnapTolerance),
-      this->MaxSearchStates,
-      in.Snaps,
-      in.Result,
-      error,
-      [this] { return this->CheckAbort(); }))
+        abort);
+  if (!selected)
   {
     return false;
   }
   this->UpdateProgress(0.5);
   std::string note;
-  if (!boolsurf::WriteHandedOverSelection(arranged,
-        in.Result.Selected,
-        in.Solver,
-        in.Output,
-        region,
-        boundary,
-        controls,
-        clipped,
-        error,
-        note))
+  if (!arranged)
+  {
+    boolsurf::WriteSelection(
+      input, fields, in.Result.Selected, region, boundary, controls, clipped, &note);
+  }
+  else if (!boolsurf::WriteHandedOverSelection(*arranged,
+             in.Result.Selected,
+             in.Solver,
+             in.Output,
+             region,
+             boundary,
+             controls,
+             clipped,
+             error,
+             note))
   {
     return false;
   }
@@ -145,6 +117,11 @@ bool vtkBoolSurfBSC::SelectFromCore(const boolsurf::ArrangementResult& arranged,
   }
   boolsurf::AddSampleFields(in.Snaps, in.Result, region);
   boolsurf::AddSampleFields(in.Snaps, in.Result, boundary);
+  if (labeled)
+  {
+    // The labels of the arrangement's cells, as the one-step filter gives them.
+    boolsurf::AddLabelTable(labeled->Labels, region->GetFieldData());
+  }
   return true;
 }
 

@@ -62,8 +62,8 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   options.PerTriangleLabels = this->PerTriangleLabels;
   // The arrangement in Core form when Surface Arrangement handed it over: labeled as the
   // one-step filter labels it.
-  const auto arranged = boolsurf::FindStageResult<boolsurf::ArrangementResult>(
-    input ? input->GetCellData()->GetArray(boolsurf::names::ArrangementCell) : nullptr);
+  std::string notAttached; // the arrays are read then
+  const auto arranged = this->GetArrangement(input, notAttached);
   if (arranged)
   {
     options.Arranged = arranged.get();

@@ -2,7 +2,6 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
-#include "vtkBoolSurfOutputReuse.h"
 #include "vtkBoolSurfStageHandoff.h"
 
 #include "Selection/RegionBoundary.h"
@@ -188,32 +187,6 @@ void WriteSelection(vtkPolyData* labeled,
     },
     tid && uv,
     boundary);
-}
-
-//------------------------------------------------------------------------------
-bool ComputeBoolean(vtkPolyData* labeled,
-  const ArrangementFields& fields,
-  const LabelingResult& labels,
-  const BooleanRequest& request,
-  vtkPolyData* region,
-  vtkPolyData* boundary,
-  std::string& error,
-  vtkPolyData* controls,
-  vtkPolyData* clipped,
-  std::string* note)
-{
-  EmptyPolyData(region);
-  EmptyPolyData(boundary);
-  std::string text;
-  std::vector<char> selected;
-  if (!SelectRequestedCells(labels, request, selected, text, error))
-  {
-    return false;
-  }
-  WriteSelection(labeled, fields, selected, region, boundary, controls, clipped, note);
-  AddExpressionField(region, text);
-  AddExpressionField(boundary, text);
-  return true;
 }
 
 } // namespace boolsurf

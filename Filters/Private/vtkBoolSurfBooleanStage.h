@@ -67,7 +67,8 @@ void AddExpressionField(vtkPolyData* output, const std::string& text);
 
 /// Writes the cells with selected[cell] != 0 of a refined surface (its triangles with all their
 /// arrays, and the labels table when present) and their boundary (oriented loops, region on
-/// the left, with point data TriangleId/Barycentric). Shared by the Boolean and BSC filters.
+/// the left, with point data TriangleId/Barycentric): the Boolean and BSC filters' writer for
+/// an input that carries no Core arrangement (a file, a deep copy; see WriteSelectedCells).
 /// When `controls`/`clipped` are given and the arrangement carries its patches' control points
 /// (field data of vtkBoolSurfArrangement when its curves came from vtkBoolSurfTraceCurves), also
 /// writes the boundary as control points of sub-curves of the input curves and the clipped open
@@ -78,21 +79,6 @@ void WriteSelection(vtkPolyData* labeled,
   const std::vector<char>& selected,
   vtkPolyData* region,
   vtkPolyData* boundary,
-  vtkPolyData* controls = nullptr,
-  vtkPolyData* clipped = nullptr,
-  std::string* note = nullptr);
-
-/// Selects the cells of a labeled refined surface and writes the region (its triangles with
-/// all their arrays) and its boundary (oriented loops, region on the left, with point data
-/// TriangleId/Barycentric). False with a named error: malformed expression, unknown shape,
-/// inconsistent operand.
-bool ComputeBoolean(vtkPolyData* labeled,
-  const ArrangementFields& fields,
-  const LabelingResult& labels,
-  const BooleanRequest& request,
-  vtkPolyData* region,
-  vtkPolyData* boundary,
-  std::string& error,
   vtkPolyData* controls = nullptr,
   vtkPolyData* clipped = nullptr,
   std::string* note = nullptr);

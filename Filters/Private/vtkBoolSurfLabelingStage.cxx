@@ -247,4 +247,63 @@ bool LabelArrangement(vtkPolyData* input,
   return true;
 }
 
+//------------------------------------------------------------------------------
+bool ReadLabels(vtkPolyData* input,
+  vtkSmartPointer<vtkPolyData>& labeled,
+  ArrangementFields& fields,
+  LabelingResult& labels,
+  std::string& error)
+{
+  vtkFieldData* fd = input ? input->GetFieldData() : nullptr;
+  vtkDataArray* cellLabels = fd ? fd->GetArray(boolsurf::names::CellLabels) : nullptr;
+  vtkDataArray* consistent = fd ? fd->GetArray(boolsurf::names::ShapeConsistent) : nullptr;
+  labeled = input;
+  if (!cellLabels || !consistent)
+  {
+    // An arrangement without labels: label it here with the automatic zero cell (its
+    // warnings are the labeling filter's to give).
+    labeled = vtkSmartPointer<vtkPolyData>::New();
+    std::string warning;
+    return LabelArrangement(
+      input, LabelingOutputOptions(), labeled, fields, labels, error, warning);
+  }
+  if (!ReadArrangementFields(input, fields, error))
+  {
+    return false;
+  }
+  const int ns = fields.NumberOfShapes;
+  if (cellLabels->GetNumberOfComponents() != ns ||
+    cellLabels->GetNumberOfTuples() != fields.NumberOfCells ||
+    consistent->GetNumberOfTuples() != ns)
+  {
+    error = "field data CellLabels (" + std::to_string(cellLabels->GetNumberOfTuples()) + " x " +
+      std::to_string(cellLabels->GetNumberOfComponents()) + ") or ShapeConsistent (" +
+      std::to_string(consistent->GetNumberOfTuples()) + ") does not match the arrangement's " +
+      std::to_string(fields.NumberOfCells) + " cells and " + std::to_string(ns) + " shapes";
+    return false;
+  }
+  labels.NumberOfShapes = ns;
+  labels.ShapeIds = fields.ShapeIds;
+  labels.Labels.resize(static_cast<size_t>(fields.NumberOfCells) * ns);
+  if (auto* ints = vtkArrayDownCast<vtkIntArray>(cellLabels))
+  {
+    std::copy_n(ints->GetPointer(0), labels.Labels.size(), labels.Labels.data());
+  }
+  else
+  {
+    for (vtkIdType c = 0; c < cellLabels->GetNumberOfTuples(); ++c)
+    {
+      for (int s = 0; s < ns; ++s)
+      {
+        labels.Labels[c * ns + s] = static_cast<int>(cellLabels->GetComponent(c, s));
+      }
+    }
+  }
+  for (int s = 0; s < ns; ++s)
+  {
+    labels.ShapeConsistent.push_back(consistent->GetComponent(s, 0) != 0);
+  }
+  return true;
+}
+
 } // namespace boolsurf

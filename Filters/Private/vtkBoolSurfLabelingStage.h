@@ -6,6 +6,8 @@
 #include "Labeling/CellLabeling.h"
 #include "vtkBoolSurfArrangementOutput.h"
 
+#include <vtkSmartPointer.h>
+
 #include <string>
 
 class vtkFieldData;
@@ -56,6 +58,17 @@ bool LabelArrangement(vtkPolyData* input,
   LabelingResult& labels,
   std::string& error,
   std::string& warning);
+
+/// The labels of a refined surface in VTK form (a file, a deep copy: no Core result attached)
+/// for a selection: its arrangement's fields, and field data `CellLabels`/`ShapeConsistent`
+/// when the input has them (then `labeled` is the input), else the labels of
+/// LabelArrangement with the automatic zero cell (then `labeled` is the labeled copy). False
+/// with a message naming the missing or mismatched array.
+bool ReadLabels(vtkPolyData* input,
+  vtkSmartPointer<vtkPolyData>& labeled,
+  ArrangementFields& fields,
+  LabelingResult& labels,
+  std::string& error);
 
 /// Field data `ShapeIds`, `ShapeConsistent` (per shape) and `CellLabels` (cells x shapes,
 /// components named S<id>): the labels as a table, written by the labeling and the one-step
