@@ -3,6 +3,7 @@
 #include "Geodesic/GeodesicPath.h"
 #include "Labeling/ArrangementLabelingInput.h"
 
+#include "vtkBoolSurfArrangementRebuild.h"
 #include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfOutputReuse.h"
@@ -117,12 +118,18 @@ std::shared_ptr<const boolsurf::ArrangementResult> vtkBoolSurfAlgorithm::GetArra
 {
   auto arranged = boolsurf::FindStageResult<boolsurf::ArrangementResult>(
     input ? input->GetCellData()->GetArray(boolsurf::names::ArrangementCell) : nullptr);
-  if (!arranged)
+  if (arranged)
   {
-    error = "the input carries no Core arrangement on its cell data 'ArrangementCell' (read from "
-            "a file, deep-copied or edited since Surface Arrangement wrote it)";
+    return arranged;
   }
-  return arranged;
+  // Read from a file, deep-copied or edited since: computed again from what the refined
+  // surface records of its mesh and curves.
+  auto rebuilt = std::make_shared<boolsurf::ArrangementResult>();
+  if (!boolsurf::RebuildArrangement(input, 0, *rebuilt, error))
+  {
+    return nullptr;
+  }
+  return rebuilt;
 }
 
 //------------------------------------------------------------------------------
@@ -131,15 +138,9 @@ vtkBoolSurfAlgorithm::GetLabeledArrangement(vtkPolyData* input, std::string& err
 {
   vtkAbstractArray* cellLabels =
     input ? input->GetFieldData()->GetAbstractArray(boolsurf::names::CellLabels) : nullptr;
-  if (cellLabels)
+  if (auto attached = boolsurf::FindStageResult<boolsurf::LabeledArrangementResult>(cellLabels))
   {
-    auto labeled = boolsurf::FindStageResult<boolsurf::LabeledArrangementResult>(cellLabels);
-    if (!labeled)
-    {
-      error = "the input carries no Core labels on its field data 'CellLabels' (read from a "
-              "file, deep-copied or edited since Label Arrangement Cells wrote it)";
-    }
-    return labeled;
+    return attached;
   }
   auto arranged = this->GetArrangement(input, error);
   if (!arranged)
@@ -147,8 +148,22 @@ vtkBoolSurfAlgorithm::GetLabeledArrangement(vtkPolyData* input, std::string& err
     return nullptr;
   }
   auto labeled = std::make_shared<boolsurf::LabeledArrangementResult>();
-  labeled->Labels = boolsurf::LabelCells(boolsurf::MakeLabelingInput(
-    *arranged->Surface.Mesh, *arranged->Surface.Topology, arranged->Curves, arranged->Arrangement));
+  if (cellLabels)
+  {
+    // Labeled by Label Arrangement Cells (with the zero cell it was given): its table.
+    if (!boolsurf::ReadLabelTable(input, *arranged, labeled->Labels, error))
+    {
+      return nullptr;
+    }
+  }
+  else
+  {
+    // Not labeled: with the automatic zero cell, as the one-step filter labels.
+    labeled->Labels = boolsurf::LabelCells(boolsurf::MakeLabelingInput(*arranged->Surface.Mesh,
+      *arranged->Surface.Topology,
+      arranged->Curves,
+      arranged->Arrangement));
+  }
   labeled->Arranged = std::move(arranged);
   return labeled;
 }

@@ -51,63 +51,44 @@ bool vtkBoolSurfBSC::Execute(const std::vector<vtkPolyData*>& inputs,
     return true; // a drawing being started: no region yet, and no message
   }
   Internals& in = *this->Internal;
-  // The arrangement in Core form when Surface Arrangement handed it over (then selected and
-  // written as the one-step filter does); else the arrangement's fields in the input's arrays.
-  std::string notAttached; // the arrays are read then
-  const auto labeled = this->GetLabeledArrangement(input, notAttached);
-  const boolsurf::ArrangementResult* arranged = labeled ? labeled->Arranged.get() : nullptr;
-  boolsurf::ArrangementFields fields;
-  if (!arranged && !boolsurf::ReadArrangementFields(input, fields, error))
+  // The labeled arrangement in Core form (handed over, or computed again for a file): selected
+  // and written as the one-step filter does.
+  const auto labeled = this->GetLabeledArrangement(input, error);
+  if (!labeled)
   {
     return false;
   }
+  const boolsurf::ArrangementResult& arranged = *labeled->Arranged;
   std::vector<boolsurf::SampleQuery> queries;
-  if (!boolsurf::ReadSampleQueries(
-        samples, arranged ? arranged->Surface.Mesh.get() : nullptr, queries, error))
+  if (!boolsurf::ReadSampleQueries(samples, arranged.Surface.Mesh.get(), queries, error))
   {
     return false;
   }
   const auto abort = [this] { return this->CheckAbort(); };
-  const bool selected = arranged
-    ? boolsurf::SelectBySamples(*arranged->Surface.Mesh,
-        arranged->Arrangement,
+  if (!boolsurf::SelectBySamples(*arranged.Surface.Mesh,
+        arranged.Arrangement,
         queries,
-        boolsurf::SnapDistance(arranged->Surface.Triangles, this->SnapTolerance),
+        boolsurf::SnapDistance(arranged.Surface.Triangles, this->SnapTolerance),
         this->MaxSearchStates,
         in.Snaps,
         in.Result,
         error,
-        abort)
-    : boolsurf::SelectSampledCells(input,
-        fields,
-        queries,
-        boolsurf::SnapDistance(input, this->SnapTolerance),
-        this->MaxSearchStates,
-        in.Snaps,
-        in.Result,
-        error,
-        abort);
-  if (!selected)
+        abort))
   {
     return false;
   }
   this->UpdateProgress(0.5);
   std::string note;
-  if (!arranged)
-  {
-    boolsurf::WriteSelection(
-      input, fields, in.Result.Selected, region, boundary, controls, clipped, &note);
-  }
-  else if (!boolsurf::WriteHandedOverSelection(*arranged,
-             in.Result.Selected,
-             in.Solver,
-             in.Output,
-             region,
-             boundary,
-             controls,
-             clipped,
-             error,
-             note))
+  if (!boolsurf::WriteHandedOverSelection(arranged,
+        in.Result.Selected,
+        in.Solver,
+        in.Output,
+        region,
+        boundary,
+        controls,
+        clipped,
+        error,
+        note))
   {
     return false;
   }
@@ -117,11 +98,8 @@ bool vtkBoolSurfBSC::Execute(const std::vector<vtkPolyData*>& inputs,
   }
   boolsurf::AddSampleFields(in.Snaps, in.Result, region);
   boolsurf::AddSampleFields(in.Snaps, in.Result, boundary);
-  if (labeled)
-  {
-    // The labels of the arrangement's cells, as the one-step filter gives them.
-    boolsurf::AddLabelTable(labeled->Labels, region->GetFieldData());
-  }
+  // The labels of the arrangement's cells, as the one-step filter gives them.
+  boolsurf::AddLabelTable(labeled->Labels, region->GetFieldData());
   return true;
 }
 

@@ -46,57 +46,37 @@ bool vtkBoolSurfBoolean::Execute(const std::vector<vtkPolyData*>& inputs,
     return true; // a drawing being started: no region yet, and no message
   }
   Internals& in = *this->Internal;
-  // The labeled arrangement in Core form when the stages upstream handed it over (then written
-  // as the one-step filter writes it); else the labels the input's arrays hold.
-  std::string notAttached; // the arrays are read then
-  const auto attached = this->GetLabeledArrangement(input, notAttached);
-  vtkSmartPointer<vtkPolyData> labeled = input;
-  boolsurf::ArrangementFields fields;
-  boolsurf::LabelingResult read;
-  if (!attached)
+  // The labeled arrangement in Core form (handed over, or computed again for a file), written
+  // as the one-step filter writes it.
+  const auto labeled = this->GetLabeledArrangement(input, error);
+  if (!labeled)
   {
-    if (!boolsurf::ReadLabels(input, labeled, fields, read, error))
-    {
-      return false;
-    }
-    this->UpdateProgress(0.5);
+    return false;
   }
-  const boolsurf::LabelingResult& labels = attached ? attached->Labels : read;
   std::string text, note;
-  if (!boolsurf::SelectRequestedCells(labels,
+  if (!boolsurf::SelectRequestedCells(labeled->Labels,
         boolsurf::MakeBooleanRequest(
           this->Operation, this->ShapeA, this->ShapeB, this->Expression, this->FillRule),
         in.Selected,
         text,
-        error))
-  {
-    return false;
-  }
-  if (!attached)
-  {
-    boolsurf::WriteSelection(
-      labeled, fields, in.Selected, region, boundary, controls, clipped, &note);
-  }
-  else if (!boolsurf::WriteHandedOverSelection(*attached->Arranged,
-             in.Selected,
-             in.Solver,
-             in.Output,
-             region,
-             boundary,
-             controls,
-             clipped,
-             error,
-             note))
+        error) ||
+    !boolsurf::WriteHandedOverSelection(*labeled->Arranged,
+      in.Selected,
+      in.Solver,
+      in.Output,
+      region,
+      boundary,
+      controls,
+      clipped,
+      error,
+      note))
   {
     return false;
   }
   boolsurf::AddExpressionField(region, text);
   boolsurf::AddExpressionField(boundary, text);
-  if (attached)
-  {
-    // The labels table travels with the region, as WriteSelection passes the input's on.
-    boolsurf::AddLabelTable(attached->Labels, region->GetFieldData());
-  }
+  // The labels table travels with the region: row ArrangementCell gives a triangle's labels.
+  boolsurf::AddLabelTable(labeled->Labels, region->GetFieldData());
   if (!note.empty())
   {
     vtkWarningMacro(<< note);

@@ -60,30 +60,27 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   options.ZeroCellPoint = this->ZeroCellMode == POINT ? this->ZeroCellPoint : nullptr;
   options.ColorShape = this->ColorShape;
   options.PerTriangleLabels = this->PerTriangleLabels;
-  // The arrangement in Core form when Surface Arrangement handed it over: labeled as the
+  // The arrangement in Core form (handed over, or computed again for a file): labeled as the
   // one-step filter labels it.
-  std::string notAttached; // the arrays are read then
-  const auto arranged = this->GetArrangement(input, notAttached);
-  if (arranged)
+  const auto arranged = this->GetArrangement(input, error);
+  if (!arranged)
   {
-    options.Arranged = arranged.get();
-    if (options.ZeroCellPoint)
-    {
-      options.SurfaceLocator = this->Internal->Locator.Get(arranged->Surface.Triangles);
-    }
+    return false;
+  }
+  options.Arranged = arranged.get();
+  if (options.ZeroCellPoint)
+  {
+    options.SurfaceLocator = this->Internal->Locator.Get(arranged->Surface.Triangles);
   }
   if (!boolsurf::LabelArrangement(input, options, output, fields, labels, error, warning))
   {
     return false;
   }
-  if (arranged)
-  {
-    auto result = std::make_shared<boolsurf::LabeledArrangementResult>();
-    result->Arranged = arranged;
-    result->Labels = std::move(labels);
-    boolsurf::AttachStageResult<boolsurf::LabeledArrangementResult>(
-      output->GetFieldData()->GetArray(boolsurf::names::CellLabels), std::move(result));
-  }
+  auto result = std::make_shared<boolsurf::LabeledArrangementResult>();
+  result->Arranged = arranged;
+  result->Labels = std::move(labels);
+  boolsurf::AttachStageResult<boolsurf::LabeledArrangementResult>(
+    output->GetFieldData()->GetArray(boolsurf::names::CellLabels), std::move(result));
   if (!warning.empty())
   {
     vtkWarningMacro(<< warning);

@@ -4,6 +4,7 @@
 
 #include "Arrangement/EditBuffers.h"
 #include "Labeling/ArrangementLabelingInput.h"
+#include "vtkBoolSurfArrangementRebuild.h"
 #include "vtkBoolSurfArrayView.h"
 #include "vtkBoolSurfAttributeTransfer.h"
 #include "vtkBoolSurfOutputReuse.h"
@@ -586,6 +587,13 @@ bool ArrangeResult(const std::shared_ptr<ArrangementResult>& result,
         patches,
         error))
   {
+    // What a copy without this result (a file) needs to compute it again.
+    WriteRebuildFields(*result->Surface.Mesh,
+      result->Arrangement,
+      result->Curves,
+      sources,
+      result->Method,
+      refined->GetFieldData());
     return true;
   }
   const Arrangement& failed = result->Arrangement;
