@@ -17,8 +17,9 @@
  *   conversion notes (triangulated polygons, dropped lines) as warnings;
  * - GetTracedCurves(), GetArrangement() and GetLabeledArrangement() give a stage's Core result
  *   for an input, as ttkAlgorithm::GetTriangulation gives TTK's triangulation: the one the
- *   upstream stage attached (vtkBoolSurfStageHandoff.h), or, for traced curves, one decoded
- *   from the input's arrays when none is attached (a file, a deep copy, an edited array);
+ *   upstream stage attached (vtkBoolSurfStageHandoff.h), or one decoded from the input's
+ *   arrays when none is attached (a file, a deep copy, an edited array), so each filter has one
+ *   body over Core types;
  * - every input port takes vtkPolyData; SetInputPortOptional() marks the optional ones.
  *
  * Subclasses set their port counts in their constructor and implement Execute().
@@ -94,16 +95,16 @@ protected:
     vtkPolyData* surfaceInput,
     const boolsurf::vtkSurfaceInput& surface,
     std::string& error);
-  /// The arrangement Surface Arrangement (or Winding Numbers) attached to `input`'s
-  /// ArrangementCell array. Null, with `error` naming what is missing, when none is attached:
-  /// the input was read from a file, deep-copied or edited since (the caller then reads the
-  /// arrays).
+  /// The arrangement of `input` (port 0 of Surface Arrangement or Winding Numbers, or a copy
+  /// further down): the one attached to its ArrangementCell array, else computed again from its
+  /// field data (vtkBoolSurfArrangementRebuild.h: read from a file, deep-copied or edited
+  /// since). Null, with `error` naming what is missing or differs.
   std::shared_ptr<const boolsurf::ArrangementResult> GetArrangement(vtkPolyData* input,
     std::string& error);
   /// The labeled arrangement of `input`: the one Label Arrangement Cells attached to CellLabels,
-  /// or, for an input without labels, the attached arrangement labeled with the automatic zero
-  /// cell as the one-step filter labels it. Null, with `error` naming what is missing, as for
-  /// GetArrangement.
+  /// else GetArrangement() with the labels of the CellLabels table when the input has one, or
+  /// labeled with the automatic zero cell as the one-step filter labels it. Null, with `error`,
+  /// as for GetArrangement.
   std::shared_ptr<const boolsurf::LabeledArrangementResult> GetLabeledArrangement(
     vtkPolyData* input,
     std::string& error);

@@ -53,7 +53,6 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     return true; // a drawing being started: no labels yet, and no message
   }
-  boolsurf::ArrangementFields fields;
   boolsurf::LabelingResult labels;
   std::string warning;
   boolsurf::LabelingOutputOptions options;
@@ -67,12 +66,11 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     return false;
   }
-  options.Arranged = arranged.get();
   if (options.ZeroCellPoint)
   {
     options.SurfaceLocator = this->Internal->Locator.Get(arranged->Surface.Triangles);
   }
-  if (!boolsurf::LabelArrangement(input, options, output, fields, labels, error, warning))
+  if (!boolsurf::LabelArrangement(input, *arranged, options, output, labels, error, warning))
   {
     return false;
   }

@@ -118,81 +118,39 @@ int ZeroCellAt(vtkStaticCellLocator* locator,
 
 //------------------------------------------------------------------------------
 bool LabelArrangement(vtkPolyData* input,
+  const ArrangementResult& arranged,
   const LabelingOutputOptions& options,
   vtkPolyData* output,
-  ArrangementFields& fields,
   LabelingResult& labels,
   std::string& error,
   std::string& warning)
 {
-  vtkDataArray* cellOf =
-    input ? input->GetCellData()->GetArray(boolsurf::names::ArrangementCell) : nullptr;
-  LabelingInput in;
-  if (const ArrangementResult* arranged = options.Arranged)
+  vtkDataArray* cellOf = input->GetCellData()->GetArray(boolsurf::names::ArrangementCell);
+  // The one-step filter's labeling, on the arrangement itself.
+  const Arrangement& arr = arranged.Arrangement;
+  LabelingInput in =
+    MakeLabelingInput(*arranged.Surface.Mesh, *arranged.Surface.Topology, arranged.Curves, arr);
+  if (options.ZeroCellPoint)
   {
-    // The one-step filter's labeling, on the arrangement itself.
-    const Arrangement& arr = arranged->Arrangement;
-    in = MakeLabelingInput(
-      *arranged->Surface.Mesh, *arranged->Surface.Topology, arranged->Curves, arr);
-    fields = ArrangementFields();
-    fields.NumberOfCells = in.NumberOfCells;
-    fields.NumberOfShapes = in.NumberOfShapes;
-    fields.ShapeIds = in.ShapeIds;
-    if (options.ZeroCellPoint)
+    const int zero =
+      ZeroCellAt(options.SurfaceLocator, *arranged.Surface.Mesh, arr, options.ZeroCellPoint, error);
+    if (zero < 0)
     {
-      const int zero = ZeroCellAt(
-        options.SurfaceLocator, *arranged->Surface.Mesh, arr, options.ZeroCellPoint, error);
-      if (zero < 0)
-      {
-        return false;
-      }
-      in.SetZeroCell(zero);
-    }
-  }
-  else if (!ReadArrangementFields(input, fields, error))
-  {
-    return false;
-  }
-  else
-  {
-    in.NumberOfCells = fields.NumberOfCells;
-    in.NumberOfShapes = fields.NumberOfShapes;
-    in.ShapeIds = fields.ShapeIds;
-    in.Arcs = fields.Arcs;
-    in.NumberOfPlugs = fields.NumberOfPlugs;
-    in.Links = fields.Links;
-    in.CellComponent = fields.CellComponent;
-    in.ZeroCells = fields.ZeroCellCandidates;
-  }
-  if (options.ZeroCellPoint && !options.Arranged)
-  {
-    vtkNew<vtkStaticCellLocator> locator;
-    locator->SetDataSet(input);
-    locator->BuildLocator();
-    double closest[3], dist2;
-    vtkIdType cell = -1;
-    int sub;
-    vtkNew<vtkGenericCell> scratch;
-    locator->FindClosestPoint(options.ZeroCellPoint, closest, scratch, cell, sub, dist2);
-    if (cell < 0)
-    {
-      error = "no surface cell found near ZeroCellPoint";
       return false;
     }
-    in.SetZeroCell(static_cast<int>(cellOf->GetComponent(cell, 0)));
+    in.SetZeroCell(zero);
   }
   labels = LabelCells(in);
 
   output->ShallowCopy(input);
-  const int ns = fields.NumberOfShapes;
+  const int ns = in.NumberOfShapes;
   warning = InconsistencyWarning(labels);
   AddLabelTable(labels, output->GetFieldData());
   // Generators in excess per shape, and what they mean for the inconsistent ones.
   const HomologyFields homology = ReadHomologyFields(input->GetFieldData(), false);
   if (homology.Present)
   {
-    AddHomologyExcess(
-      ShapeExcess(homology, fields.ShapeIds), fields.ShapeIds, output->GetFieldData());
+    AddHomologyExcess(ShapeExcess(homology, in.ShapeIds), in.ShapeIds, output->GetFieldData());
     const std::string why = ExplainInconsistency(labels, homology);
     warning += why.empty() ? "" : "\n" + why;
   }
@@ -207,12 +165,12 @@ bool LabelArrangement(vtkPolyData* input,
   const vtkIdType nt = static_cast<vtkIdType>(cells.size());
   if (color)
   {
-    const int s = ShapeIndexOf(fields.ShapeIds, options.ColorShape);
+    const int s = ShapeIndexOf(in.ShapeIds, options.ColorShape);
     if (s < 0)
     {
       warning += (warning.empty() ? "" : "; ") + std::string("ColorShape S") +
         std::to_string(options.ColorShape) + " is not a shape of the input (" +
-        ShapeList(fields.ShapeIds) + "): no ShapeLabel array";
+        ShapeList(in.ShapeIds) + "): no ShapeLabel array";
     }
     else
     {
@@ -243,65 +201,6 @@ bool LabelArrangement(vtkPolyData* input,
       std::copy_n(labels.Labels.data() + static_cast<size_t>(cells[t]) * ns, ns, out + t * ns);
     }
     output->GetCellData()->AddArray(perTriangle);
-  }
-  return true;
-}
-
-//------------------------------------------------------------------------------
-bool ReadLabels(vtkPolyData* input,
-  vtkSmartPointer<vtkPolyData>& labeled,
-  ArrangementFields& fields,
-  LabelingResult& labels,
-  std::string& error)
-{
-  vtkFieldData* fd = input ? input->GetFieldData() : nullptr;
-  vtkDataArray* cellLabels = fd ? fd->GetArray(boolsurf::names::CellLabels) : nullptr;
-  vtkDataArray* consistent = fd ? fd->GetArray(boolsurf::names::ShapeConsistent) : nullptr;
-  labeled = input;
-  if (!cellLabels || !consistent)
-  {
-    // An arrangement without labels: label it here with the automatic zero cell (its
-    // warnings are the labeling filter's to give).
-    labeled = vtkSmartPointer<vtkPolyData>::New();
-    std::string warning;
-    return LabelArrangement(
-      input, LabelingOutputOptions(), labeled, fields, labels, error, warning);
-  }
-  if (!ReadArrangementFields(input, fields, error))
-  {
-    return false;
-  }
-  const int ns = fields.NumberOfShapes;
-  if (cellLabels->GetNumberOfComponents() != ns ||
-    cellLabels->GetNumberOfTuples() != fields.NumberOfCells ||
-    consistent->GetNumberOfTuples() != ns)
-  {
-    error = "field data CellLabels (" + std::to_string(cellLabels->GetNumberOfTuples()) + " x " +
-      std::to_string(cellLabels->GetNumberOfComponents()) + ") or ShapeConsistent (" +
-      std::to_string(consistent->GetNumberOfTuples()) + ") does not match the arrangement's " +
-      std::to_string(fields.NumberOfCells) + " cells and " + std::to_string(ns) + " shapes";
-    return false;
-  }
-  labels.NumberOfShapes = ns;
-  labels.ShapeIds = fields.ShapeIds;
-  labels.Labels.resize(static_cast<size_t>(fields.NumberOfCells) * ns);
-  if (auto* ints = vtkArrayDownCast<vtkIntArray>(cellLabels))
-  {
-    std::copy_n(ints->GetPointer(0), labels.Labels.size(), labels.Labels.data());
-  }
-  else
-  {
-    for (vtkIdType c = 0; c < cellLabels->GetNumberOfTuples(); ++c)
-    {
-      for (int s = 0; s < ns; ++s)
-      {
-        labels.Labels[c * ns + s] = static_cast<int>(cellLabels->GetComponent(c, s));
-      }
-    }
-  }
-  for (int s = 0; s < ns; ++s)
-  {
-    labels.ShapeConsistent.push_back(consistent->GetComponent(s, 0) != 0);
   }
   return true;
 }

@@ -13,9 +13,10 @@
 // that nothing but the filter holds any more, see ResultPool), so it never changes
 // what a copy already holds. A witness changed since (its MTime or size differs from
 // when the result was attached, e.g. edited in a script or deep-copied into another array), or
-// an input read from a file, has no usable result: the downstream stage reads the arrays.
+// an input read from a file, has no usable result: the result is decoded from the arrays (the
+// traced curves read, the arrangement computed again: vtkBoolSurfArrangementRebuild.h).
 // Filters ask for a result through vtkBoolSurfAlgorithm (GetTracedCurves, GetArrangement,
-// GetLabeledArrangement), which finds the attached one here.
+// GetLabeledArrangement), which finds the attached one here or decodes it.
 #ifndef vtkBoolSurfStageHandoff_h
 #define vtkBoolSurfStageHandoff_h
 
