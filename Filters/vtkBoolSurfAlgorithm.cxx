@@ -124,12 +124,11 @@ std::shared_ptr<const boolsurf::ArrangementResult> vtkBoolSurfAlgorithm::GetArra
   }
   // Read from a file, deep-copied or edited since: computed again from what the refined
   // surface records of its mesh and curves.
-  auto rebuilt = std::make_shared<boolsurf::ArrangementResult>();
-  if (!boolsurf::RebuildArrangement(input, 0, *rebuilt, error))
+  if (!this->Rebuilt)
   {
-    return nullptr;
+    this->Rebuilt = std::make_unique<boolsurf::RebuiltArrangement>();
   }
-  return rebuilt;
+  return this->Rebuilt->Get(input, error);
 }
 
 //------------------------------------------------------------------------------

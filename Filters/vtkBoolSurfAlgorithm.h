@@ -40,6 +40,7 @@
 namespace boolsurf
 {
 class vtkSurfaceCache;
+class RebuiltArrangement;
 struct vtkSurfaceInput;
 struct TracedCurvesResult;
 struct ArrangementResult;
@@ -128,6 +129,8 @@ private:
   std::vector<int> SurfacePorts{ 0 };
   std::vector<int> OptionalPorts;
   std::unique_ptr<boolsurf::vtkSurfaceCache> Surface;
+  /// The arrangement GetArrangement() last computed again for an input without one.
+  std::unique_ptr<boolsurf::RebuiltArrangement> Rebuilt;
   /// Per output port: how many point, cell and field arrays the last update wrote (the next
   /// update reserves that many slots at once; see RequestData).
   std::vector<std::array<int, 3>> ArrayCounts;

@@ -481,6 +481,41 @@ bool RebuildArrangement(vtkPolyData* refined,
 }
 
 //------------------------------------------------------------------------------
+std::shared_ptr<const ArrangementResult> RebuiltArrangement::Get(vtkPolyData* refined,
+  std::string& error)
+{
+  std::vector<vtkObject*> objects;
+  if (refined)
+  {
+    objects = { refined->GetPoints() ? refined->GetPoints()->GetData() : nullptr,
+      refined->GetPolys(),
+      refined->GetCellData()->GetArray(names::ArrangementCell),
+      refined->GetFieldData() };
+  }
+  std::vector<vtkMTimeType> times;
+  bool same = this->Result && objects.size() == this->Objects.size();
+  for (std::size_t i = 0; i < objects.size(); ++i)
+  {
+    times.push_back(objects[i] ? objects[i]->GetMTime() : 0);
+    same = same && objects[i] == this->Objects[i].GetPointer() && times[i] == this->Times[i];
+  }
+  if (same)
+  {
+    return this->Result;
+  }
+  this->Result = nullptr;
+  auto rebuilt = std::make_shared<ArrangementResult>();
+  if (!RebuildArrangement(refined, 0, *rebuilt, error))
+  {
+    return nullptr;
+  }
+  this->Result = rebuilt;
+  this->Objects.assign(objects.begin(), objects.end());
+  this->Times = times;
+  return this->Result;
+}
+
+//------------------------------------------------------------------------------
 bool ReadLabelTable(vtkPolyData* input,
   const ArrangementResult& arranged,
   LabelingResult& labels,

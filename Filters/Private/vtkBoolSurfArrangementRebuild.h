@@ -16,6 +16,10 @@
 #include "Geodesic/GeodesicPath.h"
 #include "Selection/BoundaryControlPoints.h"
 
+#include <vtkObject.h>
+#include <vtkWeakPointer.h>
+
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -45,6 +49,20 @@ bool RebuildArrangement(vtkPolyData* refined,
   int threads,
   ArrangementResult& out,
   std::string& error);
+
+/// The last arrangement RebuildArrangement computed for a filter's input, given again while the
+/// input's points, triangles, ArrangementCell and field data are unchanged (a file's stages
+/// below the arrangement then compute it once, not on every change of their own properties).
+class RebuiltArrangement
+{
+public:
+  std::shared_ptr<const ArrangementResult> Get(vtkPolyData* refined, std::string& error);
+
+private:
+  std::shared_ptr<const ArrangementResult> Result;
+  std::vector<vtkWeakPointer<vtkObject>> Objects;
+  std::vector<vtkMTimeType> Times;
+};
 
 /// Field data CellLabels and ShapeConsistent of `input` as Core labels of `arranged`'s cells.
 /// False with a message when they do not fit its cells and shapes.
