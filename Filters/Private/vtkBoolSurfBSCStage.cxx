@@ -2,8 +2,6 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -13,10 +11,7 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
-#include <algorithm>
 #include <cmath>
-#include <map>
-#include <utility>
 
 namespace boolsurf
 {
