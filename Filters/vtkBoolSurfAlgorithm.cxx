@@ -1,12 +1,20 @@
 #include "vtkBoolSurfAlgorithm.h"
 
 #include "Geodesic/GeodesicPath.h"
+#include "Labeling/ArrangementLabelingInput.h"
 
+#include "vtkBoolSurfArrangementRebuild.h"
+#include "vtkBoolSurfArrayNames.h"
+#include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfOutputReuse.h"
 #include "vtkBoolSurfRankGather.h"
+#include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfSurfaceCache.h"
+#include "vtkBoolSurfTracedCurves.h"
 
+#include <vtkAbstractArray.h>
 #include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -72,6 +80,91 @@ const boolsurf::vtkSurfaceInput* vtkBoolSurfAlgorithm::GetSurface(vtkPolyData* i
     this->GetSurfaceCache().GetUsable(input, warnings, error);
   this->ReportWarnings(warnings);
   return surface;
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const boolsurf::TracedCurvesResult> vtkBoolSurfAlgorithm::GetTracedCurves(
+  vtkPolyData* curves,
+  vtkPolyData* surfaceInput,
+  const boolsurf::vtkSurfaceInput& surface,
+  std::string& error)
+{
+  auto traced = boolsurf::FindStageResult<boolsurf::TracedCurvesResult>(
+    curves ? curves->GetPointData()->GetArray(boolsurf::names::TriangleId) : nullptr);
+  if (traced && traced->Surface.Matches(surfaceInput))
+  {
+    return traced;
+  }
+  // No result attached, or one traced on another surface: the arrays say what the curves are.
+  auto decoded = std::make_shared<boolsurf::TracedCurvesResult>();
+  std::vector<std::string> problems;
+  if (!boolsurf::ReadTracedCurves(curves, *surface.Mesh, decoded->Curves, problems))
+  {
+    error = "Invalid traced curves:" + boolsurf::JoinLines(problems);
+    return nullptr;
+  }
+  if (!boolsurf::ReadCurveSources(curves, decoded->Curves, decoded->Sources))
+  {
+    decoded->Sources.clear();
+  }
+  decoded->Method = boolsurf::GeodesicMethod::Bounded; // the method is not in the arrays
+  return decoded;
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const boolsurf::ArrangementResult> vtkBoolSurfAlgorithm::GetArrangement(
+  vtkPolyData* input,
+  std::string& error)
+{
+  auto arranged = boolsurf::FindStageResult<boolsurf::ArrangementResult>(
+    input ? input->GetCellData()->GetArray(boolsurf::names::ArrangementCell) : nullptr);
+  if (arranged)
+  {
+    return arranged;
+  }
+  // Read from a file, deep-copied or edited since: computed again from what the refined
+  // surface records of its mesh and curves.
+  if (!this->Rebuilt)
+  {
+    this->Rebuilt = std::make_unique<boolsurf::RebuiltArrangement>();
+  }
+  return this->Rebuilt->Get(input, error);
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const boolsurf::LabeledArrangementResult>
+vtkBoolSurfAlgorithm::GetLabeledArrangement(vtkPolyData* input, std::string& error)
+{
+  vtkAbstractArray* cellLabels =
+    input ? input->GetFieldData()->GetAbstractArray(boolsurf::names::CellLabels) : nullptr;
+  if (auto attached = boolsurf::FindStageResult<boolsurf::LabeledArrangementResult>(cellLabels))
+  {
+    return attached;
+  }
+  auto arranged = this->GetArrangement(input, error);
+  if (!arranged)
+  {
+    return nullptr;
+  }
+  auto labeled = std::make_shared<boolsurf::LabeledArrangementResult>();
+  if (cellLabels)
+  {
+    // Labeled by Label Arrangement Cells (with the zero cell it was given): its table.
+    if (!boolsurf::ReadLabelTable(input, *arranged, labeled->Labels, error))
+    {
+      return nullptr;
+    }
+  }
+  else
+  {
+    // Not labeled: with the automatic zero cell, as the one-step filter labels.
+    labeled->Labels = boolsurf::LabelCells(boolsurf::MakeLabelingInput(*arranged->Surface.Mesh,
+      *arranged->Surface.Topology,
+      arranged->Curves,
+      arranged->Arrangement));
+  }
+  labeled->Arranged = std::move(arranged);
+  return labeled;
 }
 
 //------------------------------------------------------------------------------

@@ -15,6 +15,11 @@
  * - GetSurface() converts a surface input to the Core mesh once and keeps it while the input
  *   does not change (adjacency, topology, geodesic tracer, homology basis), reporting the
  *   conversion notes (triangulated polygons, dropped lines) as warnings;
+ * - GetTracedCurves(), GetArrangement() and GetLabeledArrangement() give a stage's Core result
+ *   for an input, as ttkAlgorithm::GetTriangulation gives TTK's triangulation: the one the
+ *   upstream stage attached (vtkBoolSurfStageHandoff.h), or one decoded from the input's
+ *   arrays when none is attached (a file, a deep copy, an edited array), so each filter has one
+ *   body over Core types;
  * - every input port takes vtkPolyData; SetInputPortOptional() marks the optional ones.
  *
  * Subclasses set their port counts in their constructor and implement Execute().
@@ -35,7 +40,11 @@
 namespace boolsurf
 {
 class vtkSurfaceCache;
+class RebuiltArrangement;
 struct vtkSurfaceInput;
+struct TracedCurvesResult;
+struct ArrangementResult;
+struct LabeledArrangementResult;
 }
 
 class BOOLSURFFILTERS_EXPORT vtkBoolSurfAlgorithm : public vtkPolyDataAlgorithm
@@ -78,6 +87,29 @@ protected:
   /// The cache behind GetSurface(): the surface's tracer, locator and homology live there.
   boolsurf::vtkSurfaceCache& GetSurfaceCache();
 
+  /// The traced curves of `curves` (Trace Surface Curves' output) on `surface`, converted from
+  /// `surfaceInput`: the result Trace Surface Curves attached when it traced them on this very
+  /// surface, else decoded from the arrays (TriangleId/Barycentric, and the control points when
+  /// the arrays carry them; the geodesic method is then Bounded, as the arrays do not say it).
+  /// Null, with a message naming the curve and point, when the arrays are not traced curves.
+  std::shared_ptr<const boolsurf::TracedCurvesResult> GetTracedCurves(vtkPolyData* curves,
+    vtkPolyData* surfaceInput,
+    const boolsurf::vtkSurfaceInput& surface,
+    std::string& error);
+  /// The arrangement of `input` (port 0 of Surface Arrangement or Winding Numbers, or a copy
+  /// further down): the one attached to its ArrangementCell array, else computed again from its
+  /// field data (vtkBoolSurfArrangementRebuild.h: read from a file, deep-copied or edited
+  /// since). Null, with `error` naming what is missing or differs.
+  std::shared_ptr<const boolsurf::ArrangementResult> GetArrangement(vtkPolyData* input,
+    std::string& error);
+  /// The labeled arrangement of `input`: the one Label Arrangement Cells attached to CellLabels,
+  /// else GetArrangement() with the labels of the CellLabels table when the input has one, or
+  /// labeled with the automatic zero cell as the one-step filter labels it. Null, with `error`,
+  /// as for GetArrangement.
+  std::shared_ptr<const boolsurf::LabeledArrangementResult> GetLabeledArrangement(
+    vtkPolyData* input,
+    std::string& error);
+
   /// Each line as a warning of this filter.
   void ReportWarnings(const std::vector<std::string>& lines);
 
@@ -97,6 +129,8 @@ private:
   std::vector<int> SurfacePorts{ 0 };
   std::vector<int> OptionalPorts;
   std::unique_ptr<boolsurf::vtkSurfaceCache> Surface;
+  /// The arrangement GetArrangement() last computed again for an input without one.
+  std::unique_ptr<boolsurf::RebuiltArrangement> Rebuilt;
   /// Per output port: how many point, cell and field arrays the last update wrote (the next
   /// update reserves that many slots at once; see RequestData).
   std::vector<std::array<int, 3>> ArrayCounts;

@@ -8,7 +8,6 @@
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfSurfaceCache.h"
 #include "vtkBoolSurfTraceStage.h"
-#include "vtkBoolSurfTracedCurves.h"
 
 #include <vtkCellData.h>
 #include <vtkFieldData.h>
@@ -57,7 +56,6 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
   vtkPolyData* curvesInput = inputs[1];
   vtkPolyData* output = outputs[0];
   vtkPolyData* patches = outputs[1];
-  std::vector<std::string> problems;
   if (boolsurf::PassOnDrawingStart(curvesInput, outputs))
   {
     return true; // a drawing being started: no arrangement yet, and no message
@@ -73,31 +71,18 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
     result->Arrangement.Work = this->Internal->Work;
   }
   result->Surface = *surface;
+  // The curves as Trace Surface Curves traced them when it handed them over (on this very
+  // surface); else decoded from the arrays (a file, a script's curves).
+  const auto traced = this->GetTracedCurves(curvesInput, surfaceInput, *surface, error);
+  if (!traced)
+  {
+    return false;
+  }
   std::vector<boolsurf::TracedCurve>& curves = result->Curves;
   std::vector<boolsurf::CurveSource>& sources = result->Sources;
-  // The curves as Trace Surface Curves traced them when it handed them over (on this very
-  // surface); else read back from the arrays (a file, a script's curves).
-  const auto traced = boolsurf::FindStageResult<boolsurf::TracedCurvesResult>(
-    curvesInput ? curvesInput->GetPointData()->GetArray(boolsurf::names::TriangleId) : nullptr);
-  if (traced && traced->Surface.Matches(surfaceInput))
-  {
-    curves = traced->Curves;
-    sources = traced->Sources;
-    result->Method = traced->Method;
-  }
-  else
-  {
-    if (!boolsurf::ReadTracedCurves(curvesInput, *surface->Mesh, curves, problems))
-    {
-      error = "Invalid traced curves:" + boolsurf::JoinLines(problems);
-      return false;
-    }
-    if (!boolsurf::ReadCurveSources(curvesInput, curves, sources))
-    {
-      sources.clear();
-    }
-    result->Method = boolsurf::GeodesicMethod::Bounded; // the method is not in the arrays
-  }
+  curves = traced->Curves;
+  sources = traced->Sources;
+  result->Method = traced->Method;
   this->UpdateProgress(0.1);
   if (this->CheckAbort())
   {

@@ -51,6 +51,26 @@ constexpr const char* PatchId = "PatchId";
 constexpr const char* LeftCell = "LeftCell";
 constexpr const char* RightCell = "RightCell";
 constexpr const char* StageTimes = "StageTimes";
+/// What a refined surface read from a file needs to be arranged again (field data; see
+/// vtkBoolSurfArrangementRebuild.h): the mesh's size (components Vertices, Triangles), the
+/// corners of the mesh triangles the refined surface does not keep (components Triangle,
+/// Corner0..2), the traced curves (offsets, per curve ShapeId/CurveId/Closed, per point the
+/// canonical location Location/Id and weights U/V/T), their control points when Trace Surface
+/// Curves recorded them (per curve Type/Closed/ShapeId/CurveId/InputCurveId, offsets into the
+/// control points TriangleId/U/V and into the per traced point parameters) and the geodesic
+/// method the curves were traced with.
+constexpr const char* ArrangedMeshSize = "ArrangedMeshSize";
+constexpr const char* ArrangedMeshCorners = "ArrangedMeshCorners";
+constexpr const char* ArrangedCurveOffsets = "ArrangedCurveOffsets";
+constexpr const char* ArrangedCurveInfo = "ArrangedCurveInfo";
+constexpr const char* ArrangedCurvePointIds = "ArrangedCurvePointIds";
+constexpr const char* ArrangedCurvePointWeights = "ArrangedCurvePointWeights";
+constexpr const char* ArrangedSourceInfo = "ArrangedSourceInfo";
+constexpr const char* ArrangedSourceControlOffsets = "ArrangedSourceControlOffsets";
+constexpr const char* ArrangedSourceControls = "ArrangedSourceControls";
+constexpr const char* ArrangedSourceParameterOffsets = "ArrangedSourceParameterOffsets";
+constexpr const char* ArrangedSourceParameters = "ArrangedSourceParameters";
+constexpr const char* ArrangedTraceMethod = "ArrangedTraceMethod";
 
 // Labels and selections (field data), BSC samples (point data).
 constexpr const char* CellLabels = "CellLabels";

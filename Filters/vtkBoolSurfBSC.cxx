@@ -46,81 +46,34 @@ bool vtkBoolSurfBSC::Execute(const std::vector<vtkPolyData*>& inputs,
   vtkPolyData* boundary = outputs[1];
   vtkPolyData* controls = outputs[2];
   vtkPolyData* clipped = outputs[3];
-  std::string note;
   if (boolsurf::PassOnDrawingStart(input, outputs))
   {
     return true; // a drawing being started: no region yet, and no message
   }
-  // The arrangement in Core form when Surface Arrangement handed it over: selected and written
-  // as the one-step filter does.
-  if (const auto labeled = boolsurf::FindLabeledArrangement(input))
-  {
-    if (!this->SelectFromCore(
-          *labeled->Arranged, samples, region, boundary, controls, clipped, error))
-    {
-      return false;
-    }
-    // The labels of the arrangement's cells, as the one-step filter gives them.
-    boolsurf::AddLabelTable(labeled->Labels, region->GetFieldData());
-    return true;
-  }
-  boolsurf::ArrangementFields fields;
-  if (!boolsurf::ReadArrangementFields(input, fields, error))
-  {
-    return false;
-  }
-  std::vector<boolsurf::SampleQuery> queries;
-  if (!boolsurf::ReadSampleQueries(samples, nullptr, queries, error))
-  {
-    return false;
-  }
-  std::vector<boolsurf::PatchSnap> snaps;
-  boolsurf::BscResult result;
-  if (!boolsurf::SelectSampledCells(input,
-        fields,
-        queries,
-        boolsurf::SnapDistance(input, this->SnapTolerance),
-        this->MaxSearchStates,
-        snaps,
-        result,
-        error,
-        [this] { return this->CheckAbort(); }))
-  {
-    return false;
-  }
-  this->UpdateProgress(0.5);
-  boolsurf::WriteSelection(
-    input, fields, result.Selected, region, boundary, controls, clipped, &note);
-  if (!note.empty())
-  {
-    vtkWarningMacro(<< note);
-  }
-  boolsurf::AddSampleFields(snaps, result, region);
-  boolsurf::AddSampleFields(snaps, result, boundary);
-  return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkBoolSurfBSC::SelectFromCore(const boolsurf::ArrangementResult& arranged,
-  vtkPolyData* samples,
-  vtkPolyData* region,
-  vtkPolyData* boundary,
-  vtkPolyData* controls,
-  vtkPolyData* clipped,
-  std::string& error)
-{
   Internals& in = *this->Internal;
+  // The labeled arrangement in Core form (handed over, or computed again for a file): selected
+  // and written as the one-step filter does.
+  const auto labeled = this->GetLabeledArrangement(input, error);
+  if (!labeled)
+  {
+    return false;
+  }
+  const boolsurf::ArrangementResult& arranged = *labeled->Arranged;
   std::vector<boolsurf::SampleQuery> queries;
-  if (!boolsurf::ReadSampleQueries(samples, arranged.Surface.Mesh.get(), queries, error) ||
-    !boolsurf::SelectBySamples(*arranged.Surface.Mesh,
-      arranged.Arrangement,
-      queries,
-      boolsurf::SnapDistance(arranged.Surface.Triangles, this->SnapTolerance),
-      this->MaxSearchStates,
-      in.Snaps,
-      in.Result,
-      error,
-      [this] { return this->CheckAbort(); }))
+  if (!boolsurf::ReadSampleQueries(samples, arranged.Surface.Mesh.get(), queries, error))
+  {
+    return false;
+  }
+  const auto abort = [this] { return this->CheckAbort(); };
+  if (!boolsurf::SelectBySamples(*arranged.Surface.Mesh,
+        arranged.Arrangement,
+        queries,
+        boolsurf::SnapDistance(arranged.Surface.Triangles, this->SnapTolerance),
+        this->MaxSearchStates,
+        in.Snaps,
+        in.Result,
+        error,
+        abort))
   {
     return false;
   }
@@ -145,6 +98,8 @@ bool vtkBoolSurfBSC::SelectFromCore(const boolsurf::ArrangementResult& arranged,
   }
   boolsurf::AddSampleFields(in.Snaps, in.Result, region);
   boolsurf::AddSampleFields(in.Snaps, in.Result, boundary);
+  // The labels of the arrangement's cells, as the one-step filter gives them.
+  boolsurf::AddLabelTable(labeled->Labels, region->GetFieldData());
   return true;
 }
 

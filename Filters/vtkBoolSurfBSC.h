@@ -38,11 +38,6 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
-namespace boolsurf
-{
-struct ArrangementResult;
-}
-
 class BOOLSURFFILTERS_EXPORT vtkBoolSurfBSC : public vtkBoolSurfAlgorithm
 {
 public:
@@ -92,14 +87,6 @@ protected:
 private:
   struct Internals;
   std::unique_ptr<Internals> Internal;
-  /// BSC on an arrangement handed over in Core form, written as the one-step filter writes it.
-  bool SelectFromCore(const boolsurf::ArrangementResult& arranged,
-    vtkPolyData* samples,
-    vtkPolyData* region,
-    vtkPolyData* boundary,
-    vtkPolyData* controls,
-    vtkPolyData* clipped,
-    std::string& error);
 
   vtkBoolSurfBSC(const vtkBoolSurfBSC&) = delete;
   void operator=(const vtkBoolSurfBSC&) = delete;

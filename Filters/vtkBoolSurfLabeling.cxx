@@ -53,37 +53,32 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     return true; // a drawing being started: no labels yet, and no message
   }
-  boolsurf::ArrangementFields fields;
   boolsurf::LabelingResult labels;
   std::string warning;
   boolsurf::LabelingOutputOptions options;
   options.ZeroCellPoint = this->ZeroCellMode == POINT ? this->ZeroCellPoint : nullptr;
   options.ColorShape = this->ColorShape;
   options.PerTriangleLabels = this->PerTriangleLabels;
-  // The arrangement in Core form when Surface Arrangement handed it over: labeled as the
+  // The arrangement in Core form (handed over, or computed again for a file): labeled as the
   // one-step filter labels it.
-  const auto arranged = boolsurf::FindStageResult<boolsurf::ArrangementResult>(
-    input ? input->GetCellData()->GetArray(boolsurf::names::ArrangementCell) : nullptr);
-  if (arranged)
-  {
-    options.Arranged = arranged.get();
-    if (options.ZeroCellPoint)
-    {
-      options.SurfaceLocator = this->Internal->Locator.Get(arranged->Surface.Triangles);
-    }
-  }
-  if (!boolsurf::LabelArrangement(input, options, output, fields, labels, error, warning))
+  const auto arranged = this->GetArrangement(input, error);
+  if (!arranged)
   {
     return false;
   }
-  if (arranged)
+  if (options.ZeroCellPoint)
   {
-    auto result = std::make_shared<boolsurf::LabeledArrangementResult>();
-    result->Arranged = arranged;
-    result->Labels = std::move(labels);
-    boolsurf::AttachStageResult<boolsurf::LabeledArrangementResult>(
-      output->GetFieldData()->GetArray(boolsurf::names::CellLabels), std::move(result));
+    options.SurfaceLocator = this->Internal->Locator.Get(arranged->Surface.Triangles);
   }
+  if (!boolsurf::LabelArrangement(input, *arranged, options, output, labels, error, warning))
+  {
+    return false;
+  }
+  auto result = std::make_shared<boolsurf::LabeledArrangementResult>();
+  result->Arranged = arranged;
+  result->Labels = std::move(labels);
+  boolsurf::AttachStageResult<boolsurf::LabeledArrangementResult>(
+    output->GetFieldData()->GetArray(boolsurf::names::CellLabels), std::move(result));
   if (!warning.empty())
   {
     vtkWarningMacro(<< warning);

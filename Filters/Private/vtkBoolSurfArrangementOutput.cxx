@@ -4,6 +4,7 @@
 
 #include "Arrangement/EditBuffers.h"
 #include "Labeling/ArrangementLabelingInput.h"
+#include "vtkBoolSurfArrangementRebuild.h"
 #include "vtkBoolSurfArrayView.h"
 #include "vtkBoolSurfAttributeTransfer.h"
 #include "vtkBoolSurfOutputReuse.h"
@@ -55,25 +56,6 @@ void AddField(vtkFieldData* fd, vtkAbstractArray* a)
   {
     fd->AddArray(a);
   }
-}
-
-std::vector<int> ReadInts(vtkFieldData* fd, const char* name, int comps = 1)
-{
-  std::vector<int> v;
-  vtkDataArray* a = fd->GetArray(name);
-  if (!a)
-  {
-    return v;
-  }
-  v.resize(static_cast<size_t>(a->GetNumberOfTuples()) * comps);
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-  {
-    for (int k = 0; k < comps; ++k)
-    {
-      v[i * comps + k] = static_cast<int>(a->GetComponent(i, k));
-    }
-  }
-  return v;
 }
 
 // A triangle list as VTK cell arrays, sized by the caller: offsets 0, 3, 6, ... and the
@@ -457,111 +439,6 @@ std::vector<int> ReadTriangleCells(vtkDataArray* arrangementCell)
   return cells;
 }
 
-//------------------------------------------------------------------------------
-bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::string& error)
-{
-  out = ArrangementFields();
-  if (!input)
-  {
-    error = "no input";
-    return false;
-  }
-  vtkFieldData* fd = input->GetFieldData();
-  if (input->GetNumberOfPoints() == 0 && input->GetNumberOfCells() == 0 &&
-    !fd->GetArray(boolsurf::names::NumberOfCells))
-  {
-    // What a failed BoolSurf filter leaves: say so rather than ask for a rewiring.
-    error = "the input is empty: the filter before it (Surface Arrangement, or a stage above "
-            "it) reported an error; see its message";
-    return false;
-  }
-  for (const char* required : { boolsurf::names::NumberOfCells, boolsurf::names::NumberOfShapes })
-  {
-    if (!fd->GetArray(required))
-    {
-      error = std::string("the input lacks field data '") + required +
-        "': connect the first output of Surface Arrangement (or of Label Arrangement Cells)";
-      return false;
-    }
-  }
-  if (!input->GetCellData()->GetArray(boolsurf::names::ArrangementCell))
-  {
-    error = "the input lacks cell data 'ArrangementCell': connect the first output of "
-            "Surface Arrangement";
-    return false;
-  }
-  out.NumberOfCells = ReadInts(fd, boolsurf::names::NumberOfCells)[0];
-  out.NumberOfShapes = ReadInts(fd, boolsurf::names::NumberOfShapes)[0];
-  out.ShapeIds = ReadInts(fd, boolsurf::names::ShapeIds);
-  if (out.ShapeIds.empty())
-  {
-    // Written before shape ids were numbered densely: ids are 0..NumberOfShapes-1.
-    for (int s = 0; s < out.NumberOfShapes; ++s)
-    {
-      out.ShapeIds.push_back(s);
-    }
-  }
-  if (static_cast<int>(out.ShapeIds.size()) != out.NumberOfShapes ||
-    !std::is_sorted(out.ShapeIds.begin(), out.ShapeIds.end()))
-  {
-    error = "field data ShapeIds must hold NumberOfShapes sorted shape ids";
-    return false;
-  }
-  const std::vector<int> arcs = ReadInts(fd, "CellGraphArcs", 2);
-  const std::vector<int> shape = ReadInts(fd, "CellGraphShape");
-  const std::vector<int> location = ReadInts(fd, "CellGraphLocation");
-  // Optional (arrangements written before it existed): every arc along its place.
-  std::vector<int> direction = ReadInts(fd, "CellGraphDirection");
-  if (direction.empty())
-  {
-    direction.assign(shape.size(), 1);
-  }
-  if (shape.size() * 2 != arcs.size() || location.size() != shape.size() ||
-    direction.size() != shape.size())
-  {
-    error = "the cell graph arrays CellGraphArcs/CellGraphShape/CellGraphLocation/"
-            "CellGraphDirection disagree in size";
-    return false;
-  }
-  for (size_t i = 0; i < shape.size(); ++i)
-  {
-    const int index = ShapeIndexOf(out.ShapeIds, shape[i]);
-    if (index < 0)
-    {
-      error = "CellGraphShape names shape " + std::to_string(shape[i]) + " (arc " +
-        std::to_string(i) + "), which is not in ShapeIds";
-      return false;
-    }
-    out.Arcs.push_back({ arcs[2 * i], arcs[2 * i + 1], index, location[i], direction[i] });
-  }
-  out.CellComponent = ReadInts(fd, "CellComponent");
-  out.ZeroCellCandidates = ReadInts(fd, "ZeroCellCandidates");
-  // Absent in arrangements written before boundary plugs: no plugs, no links.
-  const std::vector<int> plugCount = ReadInts(fd, boolsurf::names::NumberOfBoundaryPlugs);
-  out.NumberOfPlugs = plugCount.empty() ? 0 : plugCount[0];
-  const std::vector<int> links = ReadInts(fd, boolsurf::names::BoundaryPlugLinks, 2);
-  for (size_t i = 0; i + 1 < links.size(); i += 2)
-  {
-    out.Links.emplace_back(links[i], links[i + 1]);
-  }
-  const std::vector<int> offsets = ReadInts(fd, "PatchOffsets");
-  const std::vector<int> points = ReadInts(fd, "PatchPoints");
-  const std::vector<int> left = ReadInts(fd, "PatchLeftCell");
-  const std::vector<int> right = ReadInts(fd, "PatchRightCell");
-  out.PatchShape = ReadInts(fd, "PatchShape");
-  out.PatchCurve = ReadInts(fd, "PatchCurve");
-  out.PatchClosed = ReadInts(fd, "PatchClosed"); // absent in files written before it
-  for (size_t p = 0; p + 1 < offsets.size() && p < left.size() && p < right.size(); ++p)
-  {
-    BoundaryPatch patch;
-    patch.Points.assign(points.begin() + offsets[p], points.begin() + offsets[p + 1]);
-    patch.LeftCell = left[p];
-    patch.RightCell = right[p];
-    out.Patches.push_back(std::move(patch));
-  }
-  return true;
-}
-
 bool ArrangeResult(const std::shared_ptr<ArrangementResult>& result,
   const std::vector<CurveSource>& sources,
   int threads,
@@ -586,6 +463,13 @@ bool ArrangeResult(const std::shared_ptr<ArrangementResult>& result,
         patches,
         error))
   {
+    // What a copy without this result (a file) needs to compute it again.
+    WriteRebuildFields(*result->Surface.Mesh,
+      result->Arrangement,
+      result->Curves,
+      sources,
+      result->Method,
+      refined->GetFieldData());
     return true;
   }
   const Arrangement& failed = result->Arrangement;

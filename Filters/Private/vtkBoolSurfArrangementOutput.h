@@ -97,29 +97,9 @@ void WriteArrangementPatches(const Arrangement& arrangement,
   vtkPolyData* refinedSurface,
   vtkPolyData* patches);
 
-/// What labeling and Booleans read back from a refined surface.
-struct ArrangementFields
-{
-  int NumberOfCells = 0;
-  int NumberOfShapes = 0;
-  std::vector<int> ShapeIds; ///< sorted; arcs name shapes by index into it
-  std::vector<CellArc> Arcs;
-  int NumberOfPlugs = 0;                  ///< boundary loops' plugs: nodes NumberOfCells + loop
-  std::vector<std::pair<int, int>> Links; ///< (cell, plug) one region (BoundaryPlugs.h)
-  std::vector<int> CellComponent;         ///< per cell, then per plug
-  std::vector<int> ZeroCellCandidates;    ///< per component: its zero node
-  std::vector<BoundaryPatch> Patches;
-  std::vector<int> PatchShape, PatchCurve;
-  std::vector<int> PatchClosed; ///< 1 a closed curve's patch; empty: all closed (older files)
-};
-
 /// Cell data `ArrangementCell` as ints (the arrangement writes a vtkIntArray; any other type is
 /// converted).
 std::vector<int> ReadTriangleCells(vtkDataArray* arrangementCell);
-
-/// Reads the field data and cell data `ArrangementCell`; false with a message naming the
-/// missing array when `input` is not an arrangement output.
-bool ReadArrangementFields(vtkPolyData* input, ArrangementFields& out, std::string& error);
 
 } // namespace boolsurf
 

@@ -27,19 +27,6 @@ bool ReadSampleQueries(vtkPolyData* samples,
 /// SnapTolerance (a fraction of the bounding-box diagonal of `surface`) as a distance.
 double SnapDistance(vtkPolyData* surface, double relativeTolerance);
 
-/// BSC on a refined surface in VTK form (port 0 of the arrangement): snaps, orients (normals
-/// of the refined triangles around the snapped segments) and selects. False with a named
-/// error.
-bool SelectSampledCells(vtkPolyData* refined,
-  const ArrangementFields& fields,
-  const std::vector<SampleQuery>& queries,
-  double tolerance,
-  int maxSearchStates,
-  std::vector<PatchSnap>& snaps,
-  BscResult& result,
-  std::string& error,
-  const std::function<bool()>& abort = {});
-
 /// Field data on `output`: `SamplePatch` (patch each sample snapped to), `SampleDistance`,
 /// `SampleOnBoundary` (1 kept on the boundary, 0 dropped), `DroppedSamples` (ids),
 /// `BoundaryLength`, `BSCCuts` (minimum cuts computed) and `Selection` = "BSC".

@@ -2,7 +2,6 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
-#include "vtkBoolSurfOutputReuse.h"
 #include "vtkBoolSurfStageHandoff.h"
 
 #include "Selection/RegionBoundary.h"
@@ -108,112 +107,6 @@ void AddExpressionField(vtkPolyData* output, const std::string& text)
   e->SetName(boolsurf::names::Expression);
   e->InsertNextValue(text);
   output->GetFieldData()->AddArray(e);
-}
-
-//------------------------------------------------------------------------------
-void WriteSelectionControlCurves(vtkPolyData* labeled,
-  const ArrangementFields& fields,
-  const std::vector<char>& selected,
-  const std::vector<BoundaryPolyline>& loops,
-  vtkPolyData* controls,
-  vtkPolyData* clipped,
-  std::string* note)
-{
-  std::vector<ControlSubCurve> perPatch, out;
-  if (!ReadPatchControlCurves(labeled->GetFieldData(), perPatch) ||
-    perPatch.size() != fields.Patches.size())
-  {
-    if (note)
-    {
-      *note = NoControlPointsNote;
-    }
-    return;
-  }
-  auto patchCurve = [&](int p) { return &perPatch[p]; };
-  AssembleBoundaryLoops(patchCurve, loops, out);
-  WriteControlSubCurves(out, "BoundaryLoop", true, controls);
-  std::vector<PatchInfo> info(perPatch.size());
-  for (std::size_t p = 0; p < info.size(); ++p)
-  {
-    info[p] = { perPatch[p].Curve,
-      perPatch[p].CurveClosed,
-      fields.Patches[p].LeftCell,
-      fields.Patches[p].RightCell };
-  }
-  AssembleClippedPieces(patchCurve, info, selected, out);
-  WriteControlSubCurves(out, "ClippedPiece", false, clipped);
-}
-
-//------------------------------------------------------------------------------
-void WriteSelection(vtkPolyData* labeled,
-  const ArrangementFields& fields,
-  const std::vector<char>& selected,
-  vtkPolyData* region,
-  vtkPolyData* boundary,
-  vtkPolyData* controls,
-  vtkPolyData* clipped,
-  std::string* note)
-{
-  ExtractRegion(labeled, selected, region);
-  // The labels table travels with the region (shared, not copied): row ArrangementCell of
-  // CellLabels gives a region triangle's labels.
-  for (const char* name :
-    { boolsurf::names::ShapeIds, boolsurf::names::ShapeConsistent, boolsurf::names::CellLabels })
-  {
-    if (vtkAbstractArray* a = labeled->GetFieldData()->GetAbstractArray(name))
-    {
-      region->GetFieldData()->AddArray(a);
-    }
-  }
-  vtkDataArray* tid = labeled->GetPointData()->GetArray(boolsurf::names::TriangleId);
-  vtkDataArray* uv = labeled->GetPointData()->GetArray(boolsurf::names::Barycentric);
-  const std::vector<BoundaryPolyline> loops = ExtractRegionBoundary(fields.Patches, selected);
-  if (controls && clipped)
-  {
-    WriteSelectionControlCurves(labeled, fields, selected, loops, controls, clipped, note);
-  }
-  WriteBoundary(
-    loops,
-    [&](int p, double x[3]) { labeled->GetPoint(p, x); },
-    [&](int p)
-    {
-      SurfacePoint sp;
-      if (tid && uv)
-      {
-        sp.Triangle = static_cast<int>(tid->GetComponent(p, 0));
-        sp.U = uv->GetComponent(p, 0);
-        sp.V = uv->GetComponent(p, 1);
-      }
-      return sp;
-    },
-    tid && uv,
-    boundary);
-}
-
-//------------------------------------------------------------------------------
-bool ComputeBoolean(vtkPolyData* labeled,
-  const ArrangementFields& fields,
-  const LabelingResult& labels,
-  const BooleanRequest& request,
-  vtkPolyData* region,
-  vtkPolyData* boundary,
-  std::string& error,
-  vtkPolyData* controls,
-  vtkPolyData* clipped,
-  std::string* note)
-{
-  EmptyPolyData(region);
-  EmptyPolyData(boundary);
-  std::string text;
-  std::vector<char> selected;
-  if (!SelectRequestedCells(labels, request, selected, text, error))
-  {
-    return false;
-  }
-  WriteSelection(labeled, fields, selected, region, boundary, controls, clipped, note);
-  AddExpressionField(region, text);
-  AddExpressionField(boundary, text);
-  return true;
 }
 
 } // namespace boolsurf

@@ -65,38 +65,6 @@ bool SelectRequestedCells(const LabelingResult& labels,
 /// The field data `Expression` (the expression a result was selected with).
 void AddExpressionField(vtkPolyData* output, const std::string& text);
 
-/// Writes the cells with selected[cell] != 0 of a refined surface (its triangles with all their
-/// arrays, and the labels table when present) and their boundary (oriented loops, region on
-/// the left, with point data TriangleId/Barycentric). Shared by the Boolean and BSC filters.
-/// When `controls`/`clipped` are given and the arrangement carries its patches' control points
-/// (field data of vtkBoolSurfArrangement when its curves came from vtkBoolSurfTraceCurves), also
-/// writes the boundary as control points of sub-curves of the input curves and the clipped open
-/// curves (see vtkBoolSurf ports 2 and 3); without them those outputs stay empty and `note`
-/// says why.
-void WriteSelection(vtkPolyData* labeled,
-  const ArrangementFields& fields,
-  const std::vector<char>& selected,
-  vtkPolyData* region,
-  vtkPolyData* boundary,
-  vtkPolyData* controls = nullptr,
-  vtkPolyData* clipped = nullptr,
-  std::string* note = nullptr);
-
-/// Selects the cells of a labeled refined surface and writes the region (its triangles with
-/// all their arrays) and its boundary (oriented loops, region on the left, with point data
-/// TriangleId/Barycentric). False with a named error: malformed expression, unknown shape,
-/// inconsistent operand.
-bool ComputeBoolean(vtkPolyData* labeled,
-  const ArrangementFields& fields,
-  const LabelingResult& labels,
-  const BooleanRequest& request,
-  vtkPolyData* region,
-  vtkPolyData* boundary,
-  std::string& error,
-  vtkPolyData* controls = nullptr,
-  vtkPolyData* clipped = nullptr,
-  std::string* note = nullptr);
-
 } // namespace boolsurf
 
 #endif

@@ -118,81 +118,39 @@ int ZeroCellAt(vtkStaticCellLocator* locator,
 
 //------------------------------------------------------------------------------
 bool LabelArrangement(vtkPolyData* input,
+  const ArrangementResult& arranged,
   const LabelingOutputOptions& options,
   vtkPolyData* output,
-  ArrangementFields& fields,
   LabelingResult& labels,
   std::string& error,
   std::string& warning)
 {
-  vtkDataArray* cellOf =
-    input ? input->GetCellData()->GetArray(boolsurf::names::ArrangementCell) : nullptr;
-  LabelingInput in;
-  if (const ArrangementResult* arranged = options.Arranged)
+  vtkDataArray* cellOf = input->GetCellData()->GetArray(boolsurf::names::ArrangementCell);
+  // The one-step filter's labeling, on the arrangement itself.
+  const Arrangement& arr = arranged.Arrangement;
+  LabelingInput in =
+    MakeLabelingInput(*arranged.Surface.Mesh, *arranged.Surface.Topology, arranged.Curves, arr);
+  if (options.ZeroCellPoint)
   {
-    // The one-step filter's labeling, on the arrangement itself.
-    const Arrangement& arr = arranged->Arrangement;
-    in = MakeLabelingInput(
-      *arranged->Surface.Mesh, *arranged->Surface.Topology, arranged->Curves, arr);
-    fields = ArrangementFields();
-    fields.NumberOfCells = in.NumberOfCells;
-    fields.NumberOfShapes = in.NumberOfShapes;
-    fields.ShapeIds = in.ShapeIds;
-    if (options.ZeroCellPoint)
+    const int zero =
+      ZeroCellAt(options.SurfaceLocator, *arranged.Surface.Mesh, arr, options.ZeroCellPoint, error);
+    if (zero < 0)
     {
-      const int zero = ZeroCellAt(
-        options.SurfaceLocator, *arranged->Surface.Mesh, arr, options.ZeroCellPoint, error);
-      if (zero < 0)
-      {
-        return false;
-      }
-      in.SetZeroCell(zero);
-    }
-  }
-  else if (!ReadArrangementFields(input, fields, error))
-  {
-    return false;
-  }
-  else
-  {
-    in.NumberOfCells = fields.NumberOfCells;
-    in.NumberOfShapes = fields.NumberOfShapes;
-    in.ShapeIds = fields.ShapeIds;
-    in.Arcs = fields.Arcs;
-    in.NumberOfPlugs = fields.NumberOfPlugs;
-    in.Links = fields.Links;
-    in.CellComponent = fields.CellComponent;
-    in.ZeroCells = fields.ZeroCellCandidates;
-  }
-  if (options.ZeroCellPoint && !options.Arranged)
-  {
-    vtkNew<vtkStaticCellLocator> locator;
-    locator->SetDataSet(input);
-    locator->BuildLocator();
-    double closest[3], dist2;
-    vtkIdType cell = -1;
-    int sub;
-    vtkNew<vtkGenericCell> scratch;
-    locator->FindClosestPoint(options.ZeroCellPoint, closest, scratch, cell, sub, dist2);
-    if (cell < 0)
-    {
-      error = "no surface cell found near ZeroCellPoint";
       return false;
     }
-    in.SetZeroCell(static_cast<int>(cellOf->GetComponent(cell, 0)));
+    in.SetZeroCell(zero);
   }
   labels = LabelCells(in);
 
   output->ShallowCopy(input);
-  const int ns = fields.NumberOfShapes;
+  const int ns = in.NumberOfShapes;
   warning = InconsistencyWarning(labels);
   AddLabelTable(labels, output->GetFieldData());
   // Generators in excess per shape, and what they mean for the inconsistent ones.
   const HomologyFields homology = ReadHomologyFields(input->GetFieldData(), false);
   if (homology.Present)
   {
-    AddHomologyExcess(
-      ShapeExcess(homology, fields.ShapeIds), fields.ShapeIds, output->GetFieldData());
+    AddHomologyExcess(ShapeExcess(homology, in.ShapeIds), in.ShapeIds, output->GetFieldData());
     const std::string why = ExplainInconsistency(labels, homology);
     warning += why.empty() ? "" : "\n" + why;
   }
@@ -207,12 +165,12 @@ bool LabelArrangement(vtkPolyData* input,
   const vtkIdType nt = static_cast<vtkIdType>(cells.size());
   if (color)
   {
-    const int s = ShapeIndexOf(fields.ShapeIds, options.ColorShape);
+    const int s = ShapeIndexOf(in.ShapeIds, options.ColorShape);
     if (s < 0)
     {
       warning += (warning.empty() ? "" : "; ") + std::string("ColorShape S") +
         std::to_string(options.ColorShape) + " is not a shape of the input (" +
-        ShapeList(fields.ShapeIds) + "): no ShapeLabel array";
+        ShapeList(in.ShapeIds) + "): no ShapeLabel array";
     }
     else
     {

@@ -6,6 +6,8 @@
 #include "Labeling/CellLabeling.h"
 #include "vtkBoolSurfArrangementOutput.h"
 
+#include <vtkSmartPointer.h>
+
 #include <string>
 
 class vtkFieldData;
@@ -37,22 +39,19 @@ struct LabelingOutputOptions
   /// Every shape's label per triangle as the cell array `Labels` (one component per shape):
   /// memory triangles x shapes, so off unless asked for.
   bool PerTriangleLabels = false;
-  /// The arrangement in Core form when Surface Arrangement handed it over: labeled the way the
-  /// one-step filter labels (then `fields` gets only the shape ids and counts), with
-  /// `SurfaceLocator` (on the arrangement's input surface) for ZeroCellPoint. Null: the input's
-  /// arrays are read.
-  const ArrangementResult* Arranged = nullptr;
+  /// For ZeroCellPoint: a locator on the arrangement's input surface.
   vtkStaticCellLocator* SurfaceLocator = nullptr;
 };
 
-/// Labels the cells of a refined surface. Adds field data `CellLabels` (cells x shapes,
-/// components named S<id>) and `ShapeConsistent` (per shape index, in the order of
-/// `ShapeIds`) to `output` (a shallow copy of the input), plus the per-triangle arrays asked
-/// for. `warning` names inconsistent shapes and unknown ColorShape ids (empty when none).
+/// Labels the cells of `arranged`, the arrangement of the refined surface `input`, the way the
+/// one-step filter labels. Adds field data `CellLabels` (cells x shapes, components named
+/// S<id>) and `ShapeConsistent` (per shape index, in the order of `ShapeIds`) to `output` (a
+/// shallow copy of the input), plus the per-triangle arrays asked for. `warning` names
+/// inconsistent shapes and unknown ColorShape ids (empty when none).
 bool LabelArrangement(vtkPolyData* input,
+  const ArrangementResult& arranged,
   const LabelingOutputOptions& options,
   vtkPolyData* output,
-  ArrangementFields& fields,
   LabelingResult& labels,
   std::string& error,
   std::string& warning);

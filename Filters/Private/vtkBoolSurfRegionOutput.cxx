@@ -8,7 +8,6 @@
 #include "Mesh/ParallelRange.h"
 
 #include <vtkDataArray.h>
-#include <vtkIdList.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
@@ -17,28 +16,6 @@ namespace boolsurf
 {
 namespace
 {
-
-vtkSmartPointer<vtkIdList> IdList(const std::vector<int>& ids)
-{
-  auto list = vtkSmartPointer<vtkIdList>::New();
-  list->SetNumberOfIds(static_cast<vtkIdType>(ids.size()));
-  std::copy(ids.begin(), ids.end(), list->GetPointer(0));
-  return list;
-}
-
-// Every array of `from` gathered at `ids` into `to` (typed bulk copies, no per-tuple calls).
-void GatherArrays(vtkDataSetAttributes* from, vtkIdList* ids, vtkDataSetAttributes* to)
-{
-  const vtkIdType n = ids->GetNumberOfIds();
-  to->CopyAllocate(from, n);
-  vtkNew<vtkIdList> destination;
-  destination->SetNumberOfIds(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    destination->SetId(i, i);
-  }
-  to->CopyData(from, ids, destination);
-}
 
 /// Cell data Region (1 everywhere) as the active scalars: ParaView colors a new display by the
 /// active scalars, and the plugin maps Region to one color distinct from the surface, so a
@@ -54,62 +31,6 @@ void MarkRegion(vtkPolyData* region)
 }
 
 } // namespace
-
-//------------------------------------------------------------------------------
-void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPolyData* region)
-{
-  const std::vector<int> cellOf =
-    ReadTriangleCells(input->GetCellData()->GetArray(boolsurf::names::ArrangementCell));
-  const vtkIdType nt =
-    std::min<vtkIdType>(input->GetNumberOfCells(), static_cast<vtkIdType>(cellOf.size()));
-  const int cells = static_cast<int>(selected.size());
-  // One pass over the triangles' cell ids.
-  std::vector<int> triangles;
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    const int c = cellOf[t];
-    if (c >= 0 && c < cells && selected[c])
-    {
-      triangles.push_back(static_cast<int>(t));
-    }
-  }
-  // The corners, read here on one thread (vtkIdList and the cell array's iteration state are
-  // not shared across threads), then renumbered.
-  vtkCellArray* polys = input->GetPolys();
-  const bool onlyPolys = input->GetNumberOfPolys() == nt;
-  vtkNew<vtkIdList> pts;
-  RegionMesh mesh;
-  mesh.Triangles = triangles;
-  mesh.Connectivity.resize(3 * triangles.size());
-  for (std::size_t i = 0; i < triangles.size(); ++i)
-  {
-    if (onlyPolys)
-    {
-      polys->GetCellAtId(triangles[i], pts);
-    }
-    else
-    {
-      input->GetCellPoints(triangles[i], pts);
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      mesh.Connectivity[3 * i + k] = static_cast<int>(pts->GetId(k));
-    }
-  }
-  RegionExtractor extractor;
-  extractor.RenumberCorners(static_cast<int>(input->GetNumberOfPoints()), mesh);
-
-  vtkSmartPointer<vtkIdList> pointIds = IdList(mesh.Points);
-  vtkNew<vtkPoints> points;
-  points->SetDataType(input->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(pointIds->GetNumberOfIds());
-  input->GetPoints()->GetData()->GetTuples(pointIds, points->GetData());
-  region->SetPoints(points);
-  SetTriangles(mesh.Connectivity.data(), static_cast<vtkIdType>(mesh.Triangles.size()), region);
-  GatherArrays(input->GetPointData(), pointIds, region->GetPointData());
-  GatherArrays(input->GetCellData(), IdList(mesh.Triangles), region->GetCellData());
-  MarkRegion(region);
-}
 
 //------------------------------------------------------------------------------
 void WriteRegion(const vtkSurfaceInput& surface,

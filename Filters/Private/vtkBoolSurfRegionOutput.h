@@ -27,10 +27,6 @@
 namespace boolsurf
 {
 
-/// The triangles of the selected cells of `input` (cell data ArrangementCell) with every point
-/// and cell array of the input.
-void ExtractRegion(vtkPolyData* input, const std::vector<char>& selected, vtkPolyData* region);
-
 /// The region `mesh` (refined triangles and points of `arrangement`) as polydata: cell data
 /// ArrangementCell, SourceTriangle and the surface's own cell arrays; point data
 /// TriangleId/Barycentric and the surface's own point arrays (interpolated). A large region is

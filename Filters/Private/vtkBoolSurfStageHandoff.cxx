@@ -1,15 +1,10 @@
 #include "vtkBoolSurfStageHandoff.h"
 
-#include "vtkBoolSurfArrayNames.h"
-
 #include "Geodesic/CurveTracer.h"
-#include "Labeling/ArrangementLabelingInput.h"
 
 #include <vtkAbstractArray.h>
 #include <vtkCellArray.h>
-#include <vtkCellData.h>
 #include <vtkDataArray.h>
-#include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationObjectBaseKey.h>
 #include <vtkObjectFactory.h>
@@ -83,32 +78,6 @@ bool SurfaceIdentity::Matches(vtkPolyData* surface) const
 const char* const NoControlPointsNote =
   "the arrangement does not carry its curves' control points (they were not traced by Trace "
   "Surface Curves): the control-point outputs are empty";
-
-//------------------------------------------------------------------------------
-std::shared_ptr<const LabeledArrangementResult> FindLabeledArrangement(vtkPolyData* input)
-{
-  if (!input)
-  {
-    return nullptr;
-  }
-  vtkAbstractArray* cellLabels =
-    input->GetFieldData()->GetAbstractArray(boolsurf::names::CellLabels);
-  if (cellLabels)
-  {
-    return FindStageResult<LabeledArrangementResult>(cellLabels);
-  }
-  auto arranged = FindStageResult<ArrangementResult>(
-    input->GetCellData()->GetArray(boolsurf::names::ArrangementCell));
-  if (!arranged)
-  {
-    return nullptr;
-  }
-  auto labeled = std::make_shared<LabeledArrangementResult>();
-  labeled->Labels = LabelCells(MakeLabelingInput(
-    *arranged->Surface.Mesh, *arranged->Surface.Topology, arranged->Curves, arranged->Arrangement));
-  labeled->Arranged = std::move(arranged);
-  return labeled;
-}
 
 //------------------------------------------------------------------------------
 ResultPathSolver::ResultPathSolver() = default;

@@ -13,7 +13,10 @@
 // that nothing but the filter holds any more, see ResultPool), so it never changes
 // what a copy already holds. A witness changed since (its MTime or size differs from
 // when the result was attached, e.g. edited in a script or deep-copied into another array), or
-// an input read from a file, has no usable result: the downstream stage reads the arrays.
+// an input read from a file, has no usable result: the result is decoded from the arrays (the
+// traced curves read, the arrangement computed again: vtkBoolSurfArrangementRebuild.h).
+// Filters ask for a result through vtkBoolSurfAlgorithm (GetTracedCurves, GetArrangement,
+// GetLabeledArrangement), which finds the attached one here or decodes it.
 #ifndef vtkBoolSurfStageHandoff_h
 #define vtkBoolSurfStageHandoff_h
 
@@ -112,12 +115,6 @@ private:
   vtkWeakPointer<vtkPolyData> Surface;
   vtkMTimeType Time = 0;
 };
-
-/// The labeled arrangement a selection filter (Surface Boolean, Boundary Sampled Curves) takes
-/// from its input: Label Arrangement Cells' result (on CellLabels), or, for an input without
-/// labels, Surface Arrangement's result labeled here with the automatic zero cell as the
-/// one-step filter labels. Null when the input carries neither: the arrays are read.
-std::shared_ptr<const LabeledArrangementResult> FindLabeledArrangement(vtkPolyData* input);
 
 /// A geodesic path solver on a result's mesh for the control points of results, kept while
 /// the mesh stays the same.

@@ -1,0 +1,76 @@
+// The arrangement of a refined surface that carries no Core result (read from a file, deep-
+// copied), computed again from what Surface Arrangement writes for it (a private header of the
+// module): the one decoder behind vtkBoolSurfAlgorithm::GetArrangement, so that labeling and
+// selections have one body, over Core types, whichever way their input came.
+//
+// The refined surface's first points are the mesh's vertices, in order, and every mesh
+// triangle the curves leave whole keeps its corners (refined triangle t is mesh triangle t):
+// the writer adds only the corners of the triangles the curves cross (and of unusable ones,
+// left out of the refined surface) and the traced curves, O(curves + crossed triangles) per
+// edit. The reader rebuilds the mesh, arranges the curves again (cells are numbered
+// canonically) and refuses when the refined triangles or their cells differ from the input's.
+#ifndef vtkBoolSurfArrangementRebuild_h
+#define vtkBoolSurfArrangementRebuild_h
+
+#include "Arrangement/Arrangement.h"
+#include "Geodesic/GeodesicPath.h"
+#include "Selection/BoundaryControlPoints.h"
+
+#include <vtkObject.h>
+#include <vtkWeakPointer.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkFieldData;
+class vtkPolyData;
+
+namespace boolsurf
+{
+
+struct ArrangementResult;
+struct LabelingResult;
+
+/// Field data names::Arranged* of port 0 (vtkBoolSurfArrayNames.h): what
+/// RebuildArrangement needs besides the refined surface's own arrays.
+void WriteRebuildFields(const TriangleMesh& mesh,
+  const Arrangement& arrangement,
+  const std::vector<TracedCurve>& curves,
+  const std::vector<CurveSource>& sources,
+  GeodesicMethod method,
+  vtkFieldData* fd);
+
+/// The arrangement of `refined` (port 0 of Surface Arrangement, or a copy of it further down)
+/// computed again into `out` (its Surface, Curves, Sources, Method and Arrangement) with
+/// `threads` (0: all). False with a message naming the missing arrays (a file written before
+/// they existed: run Surface Arrangement again) or what differs from the input.
+bool RebuildArrangement(vtkPolyData* refined,
+  int threads,
+  ArrangementResult& out,
+  std::string& error);
+
+/// The last arrangement RebuildArrangement computed for a filter's input, given again while the
+/// input's points, triangles, ArrangementCell and field data are unchanged (a file's stages
+/// below the arrangement then compute it once, not on every change of their own properties).
+class RebuiltArrangement
+{
+public:
+  std::shared_ptr<const ArrangementResult> Get(vtkPolyData* refined, std::string& error);
+
+private:
+  std::shared_ptr<const ArrangementResult> Result;
+  std::vector<vtkWeakPointer<vtkObject>> Objects;
+  std::vector<vtkMTimeType> Times;
+};
+
+/// Field data CellLabels and ShapeConsistent of `input` as Core labels of `arranged`'s cells.
+/// False with a message when they do not fit its cells and shapes.
+bool ReadLabelTable(vtkPolyData* input,
+  const ArrangementResult& arranged,
+  LabelingResult& labels,
+  std::string& error);
+
+} // namespace boolsurf
+
+#endif
