@@ -260,7 +260,7 @@ bool ReadSources(vtkFieldData* fd, std::vector<CurveSource>& sources, std::strin
     s.InputCurveId = info[5 * c + 4];
     for (int i = controlOffsets[c]; i < controlOffsets[c + 1]; ++i)
     {
-      s.Controls.push_back(SurfacePoint{
+      s.Points.push_back(SurfacePoint{
         static_cast<int>(controls[3 * i]), controls[3 * i + 1], controls[3 * i + 2] });
     }
     s.Parameter.assign(
@@ -377,7 +377,7 @@ void WriteRebuildFields(const TriangleMesh& mesh,
         s.ShapeId,
         s.CurveId,
         s.InputCurveId });
-    for (const SurfacePoint& p : s.Controls)
+    for (const SurfacePoint& p : s.Points)
     {
       controls.insert(controls.end(), { static_cast<double>(p.Triangle), p.U, p.V });
     }
