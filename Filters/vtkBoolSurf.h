@@ -49,7 +49,8 @@
 #ifndef vtkBoolSurf_h
 #define vtkBoolSurf_h
 
-#include "BoolSurfFiltersModule.h" // for export macro
+#include "BoolSurfFiltersModule.h"    // for export macro
+#include "vtkBoolSurfStageSettings.h" // for the stages' settings
 #include "vtkBoolSurfTracingAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
@@ -87,42 +88,16 @@ public:
   vtkGetMacro(Selection, int);
   void SetSelectionToBoolean() { this->SetSelection(BOOLEAN_SELECTION); }
   void SetSelectionToBSC() { this->SetSelection(BSC_SELECTION); }
-  /// BSC: snap distance as a fraction of the surface's bounding-box diagonal (default 0.01),
-  /// and the cuts of the search for a sample-connected region before it turns greedy.
-  vtkSetClampMacro(SnapTolerance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(SnapTolerance, double);
-  vtkSetClampMacro(MaxSearchStates, int, 1, 1000000);
-  vtkGetMacro(MaxSearchStates, int);
+  /// BSC: SnapTolerance and MaxSearchStates, as vtkBoolSurfBSC's (declared once in
+  /// vtkBoolSurfStageSettings.h).
+  vtkBoolSurfBSCSettingsMacro();
   ///@}
 
-  ///@{
-  /// Labeling (see vtkBoolSurfLabeling): 0 automatic, 1 the cell at ZeroCellPoint.
-  vtkSetClampMacro(ZeroCellMode, int, 0, 1);
-  vtkGetMacro(ZeroCellMode, int);
-  vtkSetVector3Macro(ZeroCellPoint, double);
-  vtkGetVector3Macro(ZeroCellPoint, double);
-  ///@}
-
-  ///@{
-  /// Boolean (see vtkBoolSurfBoolean): Operation 0 Union, 1 Intersection, 2 Difference,
-  /// 3 SymmetricDifference, 4 Expression; FillRule 0 NonZero, 1 EvenOdd, 2 Positive,
-  /// 3 Negative.
-  vtkSetClampMacro(Operation, int, 0, 4);
-  vtkGetMacro(Operation, int);
-  void SetOperationToUnion() { this->SetOperation(0); }
-  void SetOperationToIntersection() { this->SetOperation(1); }
-  void SetOperationToDifference() { this->SetOperation(2); }
-  void SetOperationToSymmetricDifference() { this->SetOperation(3); }
-  void SetOperationToExpression() { this->SetOperation(4); }
-  vtkSetMacro(ShapeA, int); // not clamped: an id below -1 is reported, not read as -1
-  vtkGetMacro(ShapeA, int);
-  vtkSetMacro(ShapeB, int);
-  vtkGetMacro(ShapeB, int);
-  vtkSetStdStringFromCharMacro(Expression);
-  vtkGetCharFromStdStringMacro(Expression);
-  vtkSetClampMacro(FillRule, int, 0, 3);
-  vtkGetMacro(FillRule, int);
-  ///@}
+  /// Labeling: ZeroCellMode and ZeroCellPoint, as vtkBoolSurfLabeling's; Boolean: Operation,
+  /// ShapeA, ShapeB, Expression, FillRule, as vtkBoolSurfBoolean's (each group declared once in
+  /// vtkBoolSurfStageSettings.h).
+  vtkBoolSurfZeroCellSettingsMacro();
+  vtkBoolSurfBooleanSettingsMacro();
 
   ///@{
   /// Inconsistent shapes (curves not null-homologous): -1 (default) labels them as they are,
@@ -185,16 +160,7 @@ protected:
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
 
-  int ZeroCellMode = 0;
-  double ZeroCellPoint[3] = { 0, 0, 0 };
-  int Operation = 0;
-  int ShapeA = 0;
-  int ShapeB = 1;
-  std::string Expression = "S0 | S1";
-  int FillRule = 0;
   int Selection = BOOLEAN_SELECTION;
-  double SnapTolerance = 0.01;
-  int MaxSearchStates = 64;
   int ResolveStrategy = -1;
   double ResolveOffset = 0;
   int OffsetShape = -1;

@@ -34,6 +34,7 @@
 
 #include "BoolSurfFiltersModule.h" // for export macro
 #include "vtkBoolSurfAlgorithm.h"
+#include "vtkBoolSurfStageSettings.h" // for the BSC settings
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -51,19 +52,11 @@ public:
   void SetSamplesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   ///@}
 
-  ///@{
-  /// How far a sample may be from its patch, as a fraction of the surface's bounding-box
-  /// diagonal (default 0.01).
-  vtkSetClampMacro(SnapTolerance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(SnapTolerance, double);
-  ///@}
-
-  ///@{
-  /// Minimum cuts the best-first search for a sample-connected region may compute before it
-  /// finishes greedily (default 64).
-  vtkSetClampMacro(MaxSearchStates, int, 1, 1000000);
-  vtkGetMacro(MaxSearchStates, int);
-  ///@}
+  /// The BSC settings, shared with vtkBoolSurf (see vtkBoolSurfStageSettings.h):
+  /// SnapTolerance, how far a sample may be from its patch as a fraction of the surface's
+  /// bounding-box diagonal (default 0.01), and MaxSearchStates, the minimum cuts the best-first
+  /// search for a sample-connected region may compute before it finishes greedily (default 64).
+  vtkBoolSurfBSCSettingsMacro();
 
   /// The boundary output (port 1).
   vtkPolyData* GetBoundaryOutput() { return this->GetOutput(1); }
@@ -80,9 +73,6 @@ protected:
   bool Execute(const std::vector<vtkPolyData*>& inputs,
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
-
-  double SnapTolerance = 0.01;
-  int MaxSearchStates = 64;
 
 private:
   struct Internals;

@@ -37,6 +37,7 @@
 
 #include "BoolSurfFiltersModule.h" // for export macro
 #include "vtkBoolSurfAlgorithm.h"
+#include "vtkBoolSurfStageSettings.h" // for the Boolean settings
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -48,52 +49,11 @@ public:
   vtkTypeMacro(vtkBoolSurfBoolean, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum Operations
-  {
-    UNION = 0,
-    INTERSECTION = 1,
-    DIFFERENCE = 2,
-    SYMMETRIC_DIFFERENCE = 3,
-    EXPRESSION = 4,
-  };
-  enum FillRules
-  {
-    NON_ZERO = 0,
-    EVEN_ODD = 1,
-    POSITIVE = 2,
-    NEGATIVE = 3,
-  };
-
-  ///@{
-  /// The operation (default Union).
-  vtkSetClampMacro(Operation, int, UNION, EXPRESSION);
-  vtkGetMacro(Operation, int);
-  void SetOperationToUnion() { this->SetOperation(UNION); }
-  void SetOperationToIntersection() { this->SetOperation(INTERSECTION); }
-  void SetOperationToDifference() { this->SetOperation(DIFFERENCE); }
-  void SetOperationToSymmetricDifference() { this->SetOperation(SYMMETRIC_DIFFERENCE); }
-  void SetOperationToExpression() { this->SetOperation(EXPRESSION); }
-  ///@}
-
-  ///@{
-  /// Operand shapes (defaults 0 and 1); -1 means all shapes.
-  vtkSetMacro(ShapeA, int); // not clamped: an id below -1 is reported, not read as -1
-  vtkGetMacro(ShapeA, int);
-  vtkSetMacro(ShapeB, int);
-  vtkGetMacro(ShapeB, int);
-  ///@}
-
-  ///@{
-  /// The expression used when Operation is Expression, e.g. "S0 & ~S1 | S2".
-  vtkSetStdStringFromCharMacro(Expression);
-  vtkGetCharFromStdStringMacro(Expression);
-  ///@}
-
-  ///@{
-  /// Fill rule (default NonZero).
-  vtkSetClampMacro(FillRule, int, NON_ZERO, NEGATIVE);
-  vtkGetMacro(FillRule, int);
-  ///@}
+  /// The Boolean settings, shared with vtkBoolSurf (see vtkBoolSurfStageSettings.h):
+  /// Operation (default Union), the operand shapes ShapeA and ShapeB (defaults 0 and 1; -1 means
+  /// all shapes), the Expression used when Operation is Expression (e.g. "S0 & ~S1 | S2") and
+  /// FillRule (default NonZero).
+  vtkBoolSurfBooleanSettingsMacro();
 
   /// The boundary output (port 1).
   vtkPolyData* GetBoundaryOutput() { return this->GetOutput(1); }
@@ -110,12 +70,6 @@ protected:
   bool Execute(const std::vector<vtkPolyData*>& inputs,
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
-
-  int Operation = UNION;
-  int ShapeA = 0;
-  int ShapeB = 1;
-  std::string Expression = "S0 | S1";
-  int FillRule = NON_ZERO;
 
 private:
   struct Internals;

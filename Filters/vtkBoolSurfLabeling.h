@@ -49,6 +49,7 @@
 
 #include "BoolSurfFiltersModule.h" // for export macro
 #include "vtkBoolSurfAlgorithm.h"
+#include "vtkBoolSurfStageSettings.h" // for the zero-cell settings
 
 #include <memory> // for std::unique_ptr
 
@@ -59,26 +60,10 @@ public:
   vtkTypeMacro(vtkBoolSurfLabeling, vtkBoolSurfAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum ZeroCellModes
-  {
-    AUTOMATIC = 0, ///< longest boundary loop, else shift to minimum 0
-    POINT = 1,     ///< the cell containing ZeroCellPoint
-  };
-
-  ///@{
-  /// How the zero cell is chosen (default Automatic).
-  vtkSetClampMacro(ZeroCellMode, int, AUTOMATIC, POINT);
-  vtkGetMacro(ZeroCellMode, int);
-  void SetZeroCellModeToAutomatic() { this->SetZeroCellMode(AUTOMATIC); }
-  void SetZeroCellModeToPoint() { this->SetZeroCellMode(POINT); }
-  ///@}
-
-  ///@{
-  /// A point on (or near) the surface inside the cell that must have label 0 for every shape;
-  /// used when ZeroCellMode is Point. Only its surface component uses it.
-  vtkSetVector3Macro(ZeroCellPoint, double);
-  vtkGetVector3Macro(ZeroCellPoint, double);
-  ///@}
+  /// How the zero cell (label 0 for every shape) is chosen, shared with vtkBoolSurf (see
+  /// vtkBoolSurfStageSettings.h): ZeroCellMode Automatic (default) or Point, the cell containing
+  /// ZeroCellPoint, a point on (or near) the surface. Only its surface component uses it.
+  vtkBoolSurfZeroCellSettingsMacro();
 
   ///@{
   /// ShapeId whose label is written per triangle as the cell array `ShapeLabel`, the active
@@ -104,8 +89,6 @@ protected:
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
 
-  int ZeroCellMode = AUTOMATIC;
-  double ZeroCellPoint[3] = { 0, 0, 0 };
   int ColorShape = -1;
   bool PerTriangleLabels = false;
 

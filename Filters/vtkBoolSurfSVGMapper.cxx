@@ -161,11 +161,11 @@ bool vtkBoolSurfSVGMapper::Execute(const std::vector<vtkPolyData*>& inputs,
   }
   writer.Write(output);
   vtkNew<vtkStringArray> rule;
-  rule->SetName("SuggestedFillRule");
+  rule->SetName(boolsurf::names::SuggestedFillRule);
   rule->InsertNextValue(allEvenOdd ? "EvenOdd" : "NonZero");
   output->GetFieldData()->AddArray(rule);
   vtkNew<vtkIntArray> perShape;
-  perShape->SetName("ShapeEvenOdd");
+  perShape->SetName(boolsurf::names::ShapeEvenOdd);
   for (int e : evenOdd)
   {
     perShape->InsertNextValue(e);
@@ -175,7 +175,7 @@ bool vtkBoolSurfSVGMapper::Execute(const std::vector<vtkPolyData*>& inputs,
   if (!warnings.empty())
   {
     vtkNew<vtkStringArray> notes;
-    notes->SetName("SvgWarnings");
+    notes->SetName(boolsurf::names::SvgWarnings);
     for (const std::string& w : warnings)
     {
       notes->InsertNextValue(w);

@@ -91,7 +91,7 @@ int PerCurve(const std::vector<int>& values, size_t curve, int fallback)
 
 /// Writes the curves held, traced on the surface, to `traced` (port 1; empty when they cannot
 /// be traced). Port 1 shows the drawing as the filters downstream will use it (the curves
-/// traced with Trace Surface Curves' defaults and this filter's GeodesicMethod), so it follows
+/// traced with this filter's trace settings), so it follows
 /// a drag in the curve editor: the held curves go through what the readers of port 0 do with
 /// them (a polyline whose ends meet is closed, a curve being drawn is shown as far as it is
 /// valid, every point checked on the surface), without reading port 0 back. The port is left
@@ -100,7 +100,7 @@ int PerCurve(const std::vector<int>& values, size_t curve, int fallback)
 void TraceForDisplay(boolsurf::vtkSurfaceCache& cache,
   vtkPolyData* surface,
   const std::vector<boolsurf::InputControlCurve>& held,
-  int geodesicMethod,
+  boolsurf::TraceOptions options,
   vtkPolyData* traced)
 {
   std::vector<std::string> warnings, problems, notes;
@@ -130,8 +130,6 @@ void TraceForDisplay(boolsurf::vtkSurfaceCache& cache,
       controls.push_back(std::move(curve));
     }
   }
-  boolsurf::TraceOptions options;
-  options.Method = static_cast<boolsurf::GeodesicMethod>(geodesicMethod);
   options.TraceValidPartOfIncompleteCurves = true;
   std::vector<boolsurf::TracedCurve> paths;
   if (!problems.empty() ||
@@ -301,7 +299,7 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   // normals).
   const bool closedSurface = points > 0 && this->Internal->IsClosed(surface);
   vtkNew<vtkDoubleArray> facetNormal;
-  facetNormal->SetName("SurfaceNormal");
+  facetNormal->SetName(boolsurf::names::SurfaceNormal);
   facetNormal->SetNumberOfComponents(3);
   facetNormal->SetNumberOfTuples(points);
   const bool snaps = !exact ||
@@ -457,7 +455,7 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     output->GetFieldData()->AddArray(incomplete);
   }
-  TraceForDisplay(this->Internal->Traced, surface, curves, this->GeodesicMethod, traced);
+  TraceForDisplay(this->Internal->Traced, surface, curves, this->GetTraceOptions(), traced);
   for (vtkPolyData* port : { output, traced })
   {
     vtkNew<vtkIntArray> drawing;
@@ -477,6 +475,4 @@ void vtkBoolSurfSurfaceCurves::PrintSelf(ostream& os, vtkIndent indent)
   os << indent
      << "Curves: " << std::max<size_t>(this->CurveSizes.size(), this->GetNumberOfPoints() > 0)
      << "\n";
-  os << indent << "GeodesicMethod: " << this->GeodesicMethod << " ("
-     << GetGeodesicMethodName(this->GeodesicMethod) << ")\n";
 }

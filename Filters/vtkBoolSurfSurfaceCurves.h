@@ -32,7 +32,8 @@
  * Bezier curve up to its last complete segment). Every other curve has `Complete` 1.
  *
  * Port 1 gives the same curves traced on the surface (geodesic polygons and Bezier splines
- * with Trace Surface Curves' defaults but this filter's GeodesicMethod, as
+ * with this filter's trace settings (vtkBoolSurfTracingAlgorithm: GeodesicMethod, the others
+ * at Trace Surface Curves' defaults), as
  * vtkBoolSurfTraceCurves outputs them), for display:
  * it follows the control points as they are edited, and is empty (no message) while the
  * drawing cannot be traced yet. Filters take port 0.
@@ -46,16 +47,16 @@
 #define vtkBoolSurfSurfaceCurves_h
 
 #include "BoolSurfFiltersModule.h" // for export macro
-#include "vtkBoolSurfAlgorithm.h"
+#include "vtkBoolSurfTracingAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
 
-class BOOLSURFFILTERS_EXPORT vtkBoolSurfSurfaceCurves : public vtkBoolSurfAlgorithm
+class BOOLSURFFILTERS_EXPORT vtkBoolSurfSurfaceCurves : public vtkBoolSurfTracingAlgorithm
 {
 public:
   static vtkBoolSurfSurfaceCurves* New();
-  vtkTypeMacro(vtkBoolSurfSurfaceCurves, vtkBoolSurfAlgorithm);
+  vtkTypeMacro(vtkBoolSurfSurfaceCurves, vtkBoolSurfTracingAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -90,20 +91,9 @@ public:
   /// Removes every point and curve.
   void RemoveAllCurves();
 
-  ///@{
-  /// How each geodesic leg is computed for the traced curves of port 1: GEODESIC_BOUNDED (0,
-  /// default), the shortest path in practice at a bounded cost per leg (exact while the exact
-  /// search stays small, else straightened in the homotopy class of a coarse per-surface graph's
-  /// route); GEODESIC_EXACT (1), the exact polyhedral shortest path (can take seconds between far
-  /// points on large meshes); GEODESIC_LOCALLY_SHORTEST (2), the straightened shortest
-  /// mesh-edge path (fastest, not guaranteed to be the shortest). See
-  /// vtkBoolSurfTraceCurves::SetGeodesicMethod.
-  vtkSetClampMacro(GeodesicMethod, int, GEODESIC_BOUNDED, GEODESIC_LOCALLY_SHORTEST);
-  vtkGetMacro(GeodesicMethod, int);
-  void SetGeodesicMethodToBounded() { this->SetGeodesicMethod(GEODESIC_BOUNDED); }
-  void SetGeodesicMethodToExact() { this->SetGeodesicMethod(GEODESIC_EXACT); }
-  void SetGeodesicMethodToLocallyShortest() { this->SetGeodesicMethod(GEODESIC_LOCALLY_SHORTEST); }
-  ///@}
+  // GeodesicMethod (how each geodesic leg of the traced curves of port 1 is computed) is
+  // vtkBoolSurfTracingAlgorithm's, as for every filter that traces; the XML exposes only it.
+  // The other trace settings keep Trace Surface Curves' defaults (the XML does not expose them).
 
 protected:
   vtkBoolSurfSurfaceCurves();
@@ -120,7 +110,6 @@ protected:
   std::vector<int> ShapeIds;
   std::vector<int> CurveTypes;
   std::vector<int> ClosedCurves;
-  int GeodesicMethod = GEODESIC_BOUNDED;
 
 private:
   vtkBoolSurfSurfaceCurves(const vtkBoolSurfSurfaceCurves&) = delete;

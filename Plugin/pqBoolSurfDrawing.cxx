@@ -1,5 +1,7 @@
 #include "pqBoolSurfDrawing.h"
 
+#include "Curves/ControlCurve.h" // for MissingControlPoints, CurveType
+
 #include <algorithm>
 #include <set>
 
@@ -81,18 +83,11 @@ int pqBoolSurfDrawing::NumberOfPoints() const
 //------------------------------------------------------------------------------
 int pqBoolSurfDrawing::MissingPoints(const Curve& curve)
 {
-  const int size = static_cast<int>(curve.Points.size());
-  if (curve.Type != 1)
-  {
-    return std::max(0, 2 - size);
-  }
-  const int base = curve.Closed ? 0 : 1;
-  int valid = std::max(curve.Closed ? 3 : 4, size);
-  while ((valid - base) % 3 != 0)
-  {
-    ++valid;
-  }
-  return valid - size;
+  // Core's rule, the one the Surface Curves source and the filters apply.
+  return boolsurf::MissingControlPoints(
+    curve.Type == static_cast<int>(boolsurf::CurveType::CubicBezier),
+    curve.Closed,
+    static_cast<int>(curve.Points.size()));
 }
 
 //------------------------------------------------------------------------------

@@ -5,8 +5,11 @@
  * pqBoolSurfDrawing is what pqBoolSurfCurveEditorWidget edits, kept apart from Qt and from the
  * server manager: a list of curves, each with its control points (a position, and the exact
  * surface point once known: a triangle and the weights of its 2nd and 3rd vertex; triangle -1
- * while the point still has to be snapped), its shape, type and closure. It converts to and
- * from the flat property values of the "Surface Curves" source (Points, TriangleIds,
+ * while the point still has to be snapped), its shape, type and closure. It is the editor's
+ * form of Core's boolsurf::ControlCurve (same shape, type, closure and surface points, and
+ * Core's rule for a complete curve), with what editing adds: each point's position and normal
+ * for picking and drawing, and points not placed exactly yet. It converts to and from the flat
+ * property values of the "Surface Curves" source (Points, TriangleIds,
  * Barycentrics, CurveSizes, ShapeIds, CurveTypes, ClosedCurves).
  */
 #ifndef pqBoolSurfDrawing_h
@@ -32,7 +35,7 @@ struct pqBoolSurfDrawing
   {
     std::vector<Point> Points;
     int Shape = 0;
-    int Type = 0; // 0 geodesic polygon, 1 cubic Bezier
+    int Type = 0; // a boolsurf::CurveType: 0 geodesic polygon, 1 cubic Bezier
     bool Closed = false;
   };
   /// A control point: its curve and its index in the curve.
@@ -66,9 +69,10 @@ struct pqBoolSurfDrawing
   Properties ToProperties() const;
 
   int NumberOfPoints() const;
-  /// How many more control points `curve` needs before it can be traced (0 when complete): a
-  /// geodesic polygon needs 2, a cubic Bezier spline 3n+1 open (n >= 1) or 3n closed. A curve
-  /// that needs more is one being drawn: the source marks it, no filter reports it.
+  /// How many more control points `curve` needs before it can be traced (0 when complete), by
+  /// Core's rule (boolsurf::MissingControlPoints): a geodesic polygon needs 2, a cubic Bezier
+  /// spline 3n+1 open (n >= 1) or 3n closed. A curve that needs more is one being drawn: the
+  /// source marks it, no filter reports it.
   static int MissingPoints(const Curve& curve);
   /// Reverses the direction of curve `curve` (which side it encloses): the points in reverse
   /// order, a closed curve keeping its first point (so a Bezier spline keeps its anchors as

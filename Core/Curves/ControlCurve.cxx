@@ -13,21 +13,15 @@ std::string WhatCurveNeeds(bool bezier, bool closed, int size)
     return size >= 2 ? std::string()
                      : "a geodesic polygon needs 2 control points; it has " + std::to_string(size);
   }
-  // The smallest valid count at or above `size`: 3n closed (n >= 1), 3n+1 open (n >= 1).
-  const int base = closed ? 0 : 1;
-  int valid = std::max(closed ? 3 : 4, size);
-  while ((valid - base) % 3 != 0)
-  {
-    ++valid;
-  }
-  if (valid == size)
+  const int missing = MissingControlPoints(bezier, closed, size);
+  if (missing == 0)
   {
     return std::string();
   }
   return std::string(closed ? "a closed" : "an open") + " cubic Bezier spline needs " +
     (closed ? "3n" : "3n+1") + " control points (anchor, handle, handle, anchor, ...); it has " +
-    std::to_string(size) + ": " + std::to_string(valid - size) + " more complete" +
-    (valid - size == 1 ? "s" : "") + " it";
+    std::to_string(size) + ": " + std::to_string(missing) + " more complete" +
+    (missing == 1 ? "s" : "") + " it";
 }
 
 //------------------------------------------------------------------------------

@@ -30,6 +30,26 @@ struct ControlCurve
   std::vector<SurfacePoint> Points; ///< the closing point of a closed curve is not repeated
 };
 
+/// How many more control points a curve of `size` points needs before it can be traced (0
+/// when it is complete): a geodesic polygon needs 2, a cubic Bezier spline 3n+1 open or 3n
+/// closed (n >= 1). Inline: the curve editor counts with it too, without linking Core.
+inline int MissingControlPoints(bool bezier, bool closed, int size)
+{
+  if (!bezier)
+  {
+    return size >= 2 ? 0 : 2 - size;
+  }
+  // The smallest valid count at or above `size`: 3n closed (n >= 1), 3n+1 open (n >= 1).
+  const int base = closed ? 0 : 1;
+  int valid = closed ? 3 : 4;
+  valid = valid > size ? valid : size;
+  while ((valid - base) % 3 != 0)
+  {
+    ++valid;
+  }
+  return valid - size;
+}
+
 /// What a curve of `size` control points still needs to be traced, as "an open cubic Bezier
 /// spline needs 3n+1 control points (...); it has 5: 2 more complete it", or empty when it
 /// is complete (a geodesic polygon needs 2 points, a Bezier spline 3n when closed, 3n+1 open).

@@ -60,9 +60,9 @@ bool IsIndex(double value)
 vtkSmartPointer<vtkPolyData> ControlCurvesOfTraced(vtkPolyData* curves, const TriangleMesh& mesh)
 {
   vtkFieldData* fd = curves->GetFieldData();
-  vtkDataArray* offsets = fd ? fd->GetArray("ControlOffsets") : nullptr;
-  vtkDataArray* triangles = fd ? fd->GetArray("ControlTriangleId") : nullptr;
-  vtkDataArray* uv = fd ? fd->GetArray("ControlBarycentric") : nullptr;
+  vtkDataArray* offsets = fd ? fd->GetArray(boolsurf::names::ControlOffsets) : nullptr;
+  vtkDataArray* triangles = fd ? fd->GetArray(boolsurf::names::ControlTriangleId) : nullptr;
+  vtkDataArray* uv = fd ? fd->GetArray(boolsurf::names::ControlBarycentric) : nullptr;
   vtkDataArray* closed = curves->GetCellData()->GetArray(boolsurf::names::Closed);
   const vtkIdType cells = curves->GetNumberOfCells();
   if (!offsets || !triangles || !uv || uv->GetNumberOfComponents() != 2 || !closed ||

@@ -57,11 +57,11 @@ void WriteControlSubCurves(const std::vector<ControlSubCurve>& curves,
   auto shape = NewSizedArray<vtkIntArray>(boolsurf::names::ShapeId, 1, nc);
   auto type = NewSizedArray<vtkIntArray>(boolsurf::names::CurveType, 1, nc);
   auto closed = NewSizedArray<vtkIntArray>(boolsurf::names::Closed, 1, nc);
-  auto sourceCurve = NewSizedArray<vtkIntArray>("SourceCurveId", 1, nc);
-  auto sourceShape = NewSizedArray<vtkIntArray>("SourceShapeId", 1, nc);
-  auto reversed = NewSizedArray<vtkIntArray>("Reversed", 1, nc);
+  auto sourceCurve = NewSizedArray<vtkIntArray>(boolsurf::names::SourceCurveId, 1, nc);
+  auto sourceShape = NewSizedArray<vtkIntArray>(boolsurf::names::SourceShapeId, 1, nc);
+  auto reversed = NewSizedArray<vtkIntArray>(boolsurf::names::Reversed, 1, nc);
   auto group = NewSizedArray<vtkIntArray>(groupName, 1, nc);
-  auto range = NewSizedArray<vtkDoubleArray>("ParameterRange", 2, nc);
+  auto range = NewSizedArray<vtkDoubleArray>(boolsurf::names::ParameterRange, 2, nc);
   double* xyz = coordinates->GetPointer(0);
   vtkIdType* tri = triangleId->GetPointer(0);
   double* uv = barycentric->GetPointer(0);
@@ -128,9 +128,9 @@ bool ReadCurveSources(vtkPolyData* traced,
 {
   out.clear();
   vtkFieldData* fd = traced ? traced->GetFieldData() : nullptr;
-  vtkDataArray* offsets = fd ? fd->GetArray("ControlOffsets") : nullptr;
-  vtkDataArray* triangles = fd ? fd->GetArray("ControlTriangleId") : nullptr;
-  vtkDataArray* uv = fd ? fd->GetArray("ControlBarycentric") : nullptr;
+  vtkDataArray* offsets = fd ? fd->GetArray(boolsurf::names::ControlOffsets) : nullptr;
+  vtkDataArray* triangles = fd ? fd->GetArray(boolsurf::names::ControlTriangleId) : nullptr;
+  vtkDataArray* uv = fd ? fd->GetArray(boolsurf::names::ControlBarycentric) : nullptr;
   vtkDataArray* parameter =
     traced ? traced->GetPointData()->GetArray(boolsurf::names::CurveParameter) : nullptr;
   vtkDataArray* types =
@@ -189,8 +189,8 @@ void WritePatchControlCurves(const std::vector<ControlSubCurve>& perPatch, vtkFi
   {
     return; // never an empty numeric field array (VTK's XML reader cannot read it back)
   }
-  auto offsets = NewSizedArray<vtkIntArray>("PatchControlOffsets", 1, nc + 1);
-  auto info = NewSizedArray<vtkIntArray>("PatchControlInfo", 7, nc);
+  auto offsets = NewSizedArray<vtkIntArray>(boolsurf::names::PatchControlOffsets, 1, nc + 1);
+  auto info = NewSizedArray<vtkIntArray>(boolsurf::names::PatchControlInfo, 7, nc);
   const char* names[] = { "CurveIndex",
     boolsurf::names::CurveType,
     "Segments",
@@ -202,10 +202,10 @@ void WritePatchControlCurves(const std::vector<ControlSubCurve>& perPatch, vtkFi
   {
     info->SetComponentName(k, names[k]);
   }
-  auto triangles = NewSizedArray<vtkIdTypeArray>("PatchControlTriangleId", 1, np);
-  auto uv = NewSizedArray<vtkDoubleArray>("PatchControlBarycentric", 2, np);
-  auto position = NewSizedArray<vtkDoubleArray>("PatchControlPosition", 3, np);
-  auto range = NewSizedArray<vtkDoubleArray>("PatchParameterRange", 2, nc);
+  auto triangles = NewSizedArray<vtkIdTypeArray>(boolsurf::names::PatchControlTriangleId, 1, np);
+  auto uv = NewSizedArray<vtkDoubleArray>(boolsurf::names::PatchControlBarycentric, 2, np);
+  auto position = NewSizedArray<vtkDoubleArray>(boolsurf::names::PatchControlPosition, 3, np);
+  auto range = NewSizedArray<vtkDoubleArray>(boolsurf::names::PatchParameterRange, 2, nc);
   vtkIdType* tri = triangles->GetPointer(0);
   double* bary = uv->GetPointer(0);
   double* xyz = position->GetPointer(0);
@@ -251,12 +251,12 @@ void WritePatchControlCurves(const std::vector<ControlSubCurve>& perPatch, vtkFi
 bool ReadPatchControlCurves(vtkFieldData* fd, std::vector<ControlSubCurve>& perPatch)
 {
   perPatch.clear();
-  vtkDataArray* offsets = fd ? fd->GetArray("PatchControlOffsets") : nullptr;
-  vtkDataArray* info = fd ? fd->GetArray("PatchControlInfo") : nullptr;
-  vtkDataArray* triangles = fd ? fd->GetArray("PatchControlTriangleId") : nullptr;
-  vtkDataArray* uv = fd ? fd->GetArray("PatchControlBarycentric") : nullptr;
-  vtkDataArray* position = fd ? fd->GetArray("PatchControlPosition") : nullptr;
-  vtkDataArray* range = fd ? fd->GetArray("PatchParameterRange") : nullptr;
+  vtkDataArray* offsets = fd ? fd->GetArray(boolsurf::names::PatchControlOffsets) : nullptr;
+  vtkDataArray* info = fd ? fd->GetArray(boolsurf::names::PatchControlInfo) : nullptr;
+  vtkDataArray* triangles = fd ? fd->GetArray(boolsurf::names::PatchControlTriangleId) : nullptr;
+  vtkDataArray* uv = fd ? fd->GetArray(boolsurf::names::PatchControlBarycentric) : nullptr;
+  vtkDataArray* position = fd ? fd->GetArray(boolsurf::names::PatchControlPosition) : nullptr;
+  vtkDataArray* range = fd ? fd->GetArray(boolsurf::names::PatchParameterRange) : nullptr;
   if (!offsets || !info || !triangles || !uv || !position || !range ||
     info->GetNumberOfComponents() != 7 || uv->GetNumberOfComponents() != 2 ||
     position->GetNumberOfComponents() != 3 || range->GetNumberOfComponents() != 2)

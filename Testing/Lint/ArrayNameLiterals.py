@@ -42,10 +42,6 @@ PENDING = {
     "Filters/Private/vtkBoolSurfBSCStage.h",
     "Filters/Private/vtkBoolSurfBooleanStage.cxx",
     "Filters/Private/vtkBoolSurfBooleanStage.h",
-    "Filters/Private/vtkBoolSurfControlCurves.cxx",
-    "Filters/Private/vtkBoolSurfControlCurves.h",
-    "Filters/Private/vtkBoolSurfControlOutput.cxx",
-    "Filters/Private/vtkBoolSurfControlOutput.h",
     "Filters/Private/vtkBoolSurfLabelingStage.cxx",
     "Filters/Private/vtkBoolSurfLabelingStage.h",
     "Filters/Private/vtkBoolSurfRegionOutput.cxx",
@@ -54,9 +50,7 @@ PENDING = {
     "Filters/Private/vtkBoolSurfSelectionOutput.h",
     "Filters/Private/vtkBoolSurfStageHandoff.cxx",
     "Filters/Private/vtkBoolSurfStageHandoff.h",
-    "Filters/vtkBoolSurfSVGMapper.cxx",
     "Filters/vtkBoolSurfSceneReader.cxx",
-    "Filters/vtkBoolSurfSurfaceCurves.cxx",
 }
 
 
