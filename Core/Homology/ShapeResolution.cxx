@@ -226,10 +226,10 @@ bool ClassifyControlCurves(CurveTracer& tracer,
   for (size_t i = 0; i < curves.size(); ++i)
   {
     const ControlCurve& c = curves[i];
-    const TraceStatus status = tracer.Trace(c.Points, c.Type, c.Closed, trace, c.CurveId);
-    if (!status.Ok)
+    std::string traceError;
+    if (!tracer.Trace(c.Points, c.Type, c.Closed, trace, traceError, c.CurveId))
     {
-      error = "curve " + std::to_string(c.CurveId) + ": " + status.Message;
+      error = "curve " + std::to_string(c.CurveId) + ": " + traceError;
       return false;
     }
     trace.Curve.ShapeId = c.ShapeId;
