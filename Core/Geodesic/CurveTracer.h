@@ -85,8 +85,7 @@ public:
 
   /// Trace() of each curve's points, type and closedness under its CurveId, for every curve of
   /// `curves` (out[c] as Trace() gives it one by one, bit for bit; errors[c] its message, empty
-  /// when the curve traced), on up to
-  /// `threads` threads (0: all cores). Curves the memory recalls are recalled; the others are
+  /// when the curve traced), on up to `threads` threads (0: all cores). Curves the memory recalls are recalled; the others are
   /// traced in parallel, by this tracer and helper tracers it keeps on the same mesh with its
   /// settings, then remembered. A leg's geodesic does not depend on which solver computes it: the
   /// Bounded and Exact methods are functions of the leg's ends (the surface's site graph and path
