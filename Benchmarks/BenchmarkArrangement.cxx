@@ -30,6 +30,12 @@ using namespace boolsurf;
 
 namespace
 {
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
+
+namespace
+{
 
 struct Scene
 {
@@ -137,7 +143,7 @@ Scene MakeTracedScene(const std::string& name, int polygons)
     if (points.size() < 3)
       continue;
     CurveTrace trace;
-    if (tracer.TraceGeodesicPolygon(points, true, trace, p))
+    if (tracer.TraceGeodesicPolygon(points, true, trace, traceError, p))
     {
       trace.Curve.ShapeId = p % 8;
       trace.Curve.CurveId = p;
@@ -185,7 +191,8 @@ Scene MakeReferenceScene(const std::string& file, const std::string& meshName)
       scene.at("are_closed")[i].get<bool>();
     CurveTrace trace;
     if (control.size() >= 2 &&
-      tracer.Trace(control, CurveType::GeodesicPolygon, closed, trace, static_cast<int>(i)))
+      tracer.Trace(
+        control, CurveType::GeodesicPolygon, closed, trace, traceError, static_cast<int>(i)))
     {
       trace.Curve.ShapeId = static_cast<int>(i);
       s.Curves.push_back(trace.Curve);

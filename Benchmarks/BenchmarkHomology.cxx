@@ -19,6 +19,12 @@
 
 namespace
 {
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
+
+namespace
+{
 
 bool LoadMesh(const std::string& name, boolsurf::MeshData& data, std::string& error)
 {
@@ -84,7 +90,7 @@ void BM_CurveClasses(benchmark::State& state)
       control.push_back({ triangle(rng), 0.3, 0.3 });
     }
     boolsurf::CurveTrace trace;
-    if (tracer.Trace(control, boolsurf::CurveType::GeodesicPolygon, true, trace).Ok)
+    if (tracer.Trace(control, boolsurf::CurveType::GeodesicPolygon, true, trace, traceError))
     {
       points += trace.Curve.Points.size();
       curves.push_back(trace.Curve);

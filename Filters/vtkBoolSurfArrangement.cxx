@@ -108,11 +108,11 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
     boolsurf::BezierPieces bezier(arr, sources); // each Bezier segment split once per cut
     for (std::size_t p = 0; p < perPatch.size(); ++p)
     {
-      const boolsurf::TraceStatus status = boolsurf::PatchControlCurve(
-        solver, arr, sources, static_cast<int>(p), perPatch[p], &bezier);
-      if (!status)
+      std::string error;
+      if (!boolsurf::PatchControlCurve(
+            solver, arr, sources, static_cast<int>(p), perPatch[p], error, &bezier))
       {
-        vtkWarningMacro("patch " << p << " has no control points (" << status.Message << ")");
+        vtkWarningMacro("patch " << p << " has no control points (" << error << ")");
         perPatch[p] = boolsurf::ControlSubCurve();
       }
     }

@@ -52,8 +52,9 @@ std::string Lower(std::string s)
   return s;
 }
 
-/// Reads a PLY or OBJ mesh and triangulates it the BoolSurf/Yocto way.
-vtkSmartPointer<vtkPolyData> ReadMesh(const fs::path& file, std::string& note)
+/// Reads a PLY or OBJ mesh and triangulates it the BoolSurf/Yocto way; null, with `error`
+/// saying why, when the file is not a mesh.
+vtkSmartPointer<vtkPolyData> ReadMesh(const fs::path& file, std::string& note, std::string& error)
 {
   const std::string ext = Lower(file.extension().string());
   vtkSmartPointer<vtkPolyData> raw;
@@ -65,7 +66,8 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const fs::path& file, std::string& note)
     std::string why;
     if (!boolsurf::ReadPly(file.string(), checked, why))
     {
-      throw boolsurf::SceneError("mesh " + file.string() + " is not a valid PLY file: " + why);
+      error = "mesh " + file.string() + " is not a valid PLY file: " + why;
+      return nullptr;
     }
     vtkNew<vtkPLYReader> reader;
     reader->SetFileName(file.string().c_str());
@@ -78,7 +80,8 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const fs::path& file, std::string& note)
     std::string why;
     if (!boolsurf::CheckObjIndices(file.string(), why))
     {
-      throw boolsurf::SceneError("mesh " + file.string() + " is not a valid OBJ file: " + why);
+      error = "mesh " + file.string() + " is not a valid OBJ file: " + why;
+      return nullptr;
     }
     vtkNew<vtkOBJReader> reader;
     reader->SetFileName(file.string().c_str());
@@ -87,12 +90,13 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const fs::path& file, std::string& note)
   }
   else
   {
-    throw boolsurf::SceneError("mesh " + file.string() + " is neither a .ply nor an .obj file");
+    error = "mesh " + file.string() + " is neither a .ply nor an .obj file";
+    return nullptr;
   }
   if (!raw || raw->GetNumberOfPolys() == 0)
   {
-    throw boolsurf::SceneError(
-      "mesh " + file.string() + " holds no triangle (unreadable or empty)");
+    error = "mesh " + file.string() + " holds no triangle (unreadable or empty)";
+    return nullptr;
   }
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->SetPoints(raw->GetPoints());
@@ -326,36 +330,58 @@ int vtkBoolSurfSceneReader::RequestData(vtkInformation*,
   vtkSmartPointer<vtkPolyData> mesh, curves;
   std::string meshFile, model;
   std::vector<std::string> notes;
-  try
+  std::string error;
+  // Core's Scene functions return false with a message; the readers VTK calls may still throw.
+  const auto readScene = [&]() -> bool
   {
     std::ifstream in(file, std::ios::binary);
     if (!in)
     {
-      throw boolsurf::SceneError("cannot open the file");
+      error = "cannot open the file";
+      return false;
     }
     // The mesh is read once the scene's curves are checked, before its points are: faces are
     // checked against it in the file's order (SceneParseOptions::FindMesh).
     boolsurf::SceneParseOptions options;
     options.ReadModel = this->MeshFileName.empty();
     std::string meshNote;
-    options.FindMesh = [&](const boolsurf::SceneModel& scene)
+    options.FindMesh =
+      [&](const boolsurf::SceneModel& scene, boolsurf::SceneMeshInfo& info, std::string& findError)
     {
       this->UpdateProgress(0.1);
-      const fs::path found =
-        boolsurf::FindSceneMesh(file, this->MeshFileName, scene.Model, this->MeshSearchPath);
-      mesh = ReadMesh(found, meshNote);
+      fs::path found;
+      if (!boolsurf::FindSceneMesh(
+            file, this->MeshFileName, scene.Model, this->MeshSearchPath, found, findError))
+      {
+        return false;
+      }
+      mesh = ReadMesh(found, meshNote, findError);
+      if (!mesh)
+      {
+        return false;
+      }
       meshFile = found.string();
-      return boolsurf::SceneMeshInfo{ mesh->GetNumberOfPolys(), meshFile };
+      info = boolsurf::SceneMeshInfo{ mesh->GetNumberOfPolys(), meshFile };
+      return true;
     };
-    boolsurf::SceneModel scene = boolsurf::ParseSceneJson(in, options);
+    boolsurf::SceneModel scene;
+    if (!boolsurf::ParseSceneJson(in, scene, error, options))
+    {
+      return false;
+    }
     if (scene.ScreenSpace)
     {
       this->UpdateProgress(0.1);
-      mesh = GridPolyData(boolsurf::PlaceScreenSpaceScene(scene, this->ScreenSpaceResolution));
+      boolsurf::MeshData grid;
+      if (!boolsurf::PlaceScreenSpaceScene(scene, this->ScreenSpaceResolution, grid, error))
+      {
+        return false;
+      }
+      mesh = GridPolyData(grid);
     }
-    else
+    else if (!boolsurf::PlaceScenePoints(scene, ToMeshData(mesh), meshFile, error))
     {
-      boolsurf::PlaceScenePoints(scene, ToMeshData(mesh), meshFile);
+      return false;
     }
     curves = CurvesPolyData(scene);
     notes = scene.Notes;
@@ -364,16 +390,21 @@ int vtkBoolSurfSceneReader::RequestData(vtkInformation*,
       notes.push_back(meshNote);
     }
     model = scene.Model;
-  }
-  catch (const boolsurf::SceneError& e)
+    return true;
+  };
+  bool read = false;
+  try
   {
-    vtkErrorMacro("BoolSurf scene " << this->FileName << ": " << e.what());
-    return 1; // empty outputs
+    read = readScene();
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro("BoolSurf scene " << this->FileName << ": " << e.what());
-    return 1;
+    error = e.what();
+  }
+  if (!read)
+  {
+    vtkErrorMacro("BoolSurf scene " << this->FileName << ": " << error);
+    return 1; // empty outputs
   }
   for (const std::string& note : notes)
   {

@@ -24,6 +24,12 @@ using namespace boolsurf;
 
 namespace
 {
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
+
+namespace
+{
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using Traits = CGAL::Surface_mesh_shortest_path_traits<Kernel, CgalMesh>;
@@ -121,7 +127,7 @@ void GeodesicVsCgal(benchmark::State& state, const std::string& name, bool far)
     }
     GeodesicPath path;
     auto start = std::chrono::steady_clock::now();
-    solver.Compute(a, b, path);
+    solver.Compute(a, b, path, traceError);
     ours.push_back(Milliseconds(start));
     windows += solver.GetLastStatistics().Windows;
     start = std::chrono::steady_clock::now();

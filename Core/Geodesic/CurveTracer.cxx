@@ -132,9 +132,10 @@ void CurveTracer::AppendPath(const GeodesicPath& path,
 }
 
 //------------------------------------------------------------------------------
-TraceStatus CurveTracer::TraceGeodesicPolygon(const std::vector<CanonicalPoint>& points,
+bool CurveTracer::TraceGeodesicPolygon(const std::vector<CanonicalPoint>& points,
   bool closed,
   CurveTrace& out,
+  std::string& error,
   int curveId)
 {
   out.Clear();
@@ -143,20 +144,21 @@ TraceStatus CurveTracer::TraceGeodesicPolygon(const std::vector<CanonicalPoint>&
   const int n = static_cast<int>(points.size());
   if (n < 2)
   {
-    return TraceStatus::Failure(CurveLabel(curveId) +
-      ": a geodesic polygon needs at least 2 control points, got " + std::to_string(n));
+    error = CurveLabel(curveId) + ": a geodesic polygon needs at least 2 control points, got " +
+      std::to_string(n);
+    return false;
   }
   const int segments = closed ? n : n - 1;
   for (int i = 0; i < segments; ++i)
   {
     const int j = (i + 1) % n;
-    const TraceStatus status = this->ComputeLeg(points[i], points[j], this->Path);
-    if (!status)
+    std::string legError;
+    if (!this->ComputeLeg(points[i], points[j], this->Path, legError))
     {
       out.Clear();
-      return TraceStatus::Failure(CurveLabel(curveId) + ", segment " + std::to_string(i) +
-        " (control points " + std::to_string(i) + " and " + std::to_string(j) +
-        "): " + status.Message);
+      error = CurveLabel(curveId) + ", segment " + std::to_string(i) + " (control points " +
+        std::to_string(i) + " and " + std::to_string(j) + "): " + legError;
+      return false;
     }
     this->AppendPath(this->Path, i, 0.0, 1.0, i, j, true, true, true, out);
     out.Length += this->Path.Length;
@@ -165,29 +167,31 @@ TraceStatus CurveTracer::TraceGeodesicPolygon(const std::vector<CanonicalPoint>&
   {
     out.DropRepeatedClosingPoint();
   }
-  return TraceStatus::Success();
+  return true;
 }
 
 //------------------------------------------------------------------------------
-TraceStatus CurveTracer::ComputeLeg(const CanonicalPoint& a,
+bool CurveTracer::ComputeLeg(const CanonicalPoint& a,
   const CanonicalPoint& b,
-  GeodesicPath& path)
+  GeodesicPath& path,
+  std::string& error)
 {
   const auto key = [](const CanonicalPoint& p)
   { return std::make_tuple(static_cast<int>(p.Location), p.Id, p.T, p.U, p.V); };
   if (!(key(b) < key(a)))
   {
-    return this->Solver.Compute(a, b, path);
+    return this->Solver.Compute(a, b, path, error);
   }
-  const TraceStatus status = this->Solver.Compute(b, a, path);
+  const bool ok = this->Solver.Compute(b, a, path, error);
   std::reverse(path.Points.begin(), path.Points.end());
-  return status;
+  return ok;
 }
 
 //------------------------------------------------------------------------------
-TraceStatus CurveTracer::TraceBezierSpline(const std::vector<CanonicalPoint>& points,
+bool CurveTracer::TraceBezierSpline(const std::vector<CanonicalPoint>& points,
   bool closed,
   CurveTrace& out,
+  std::string& error,
   int curveId)
 {
   out.Clear();
@@ -196,10 +200,11 @@ TraceStatus CurveTracer::TraceBezierSpline(const std::vector<CanonicalPoint>& po
   const int n = static_cast<int>(points.size());
   if (closed ? (n < 3 || n % 3 != 0) : (n < 4 || n % 3 != 1))
   {
-    return TraceStatus::Failure(CurveLabel(curveId) + ": " +
+    error = CurveLabel(curveId) + ": " +
       (closed ? "a closed cubic Bezier spline needs 3n control points"
               : "an open cubic Bezier spline needs 3n+1 control points") +
-      " (anchor, handle, handle, anchor, ...), got " + std::to_string(n));
+      " (anchor, handle, handle, anchor, ...), got " + std::to_string(n);
+    return false;
   }
   const int segments = closed ? n / 3 : (n - 1) / 3;
   const int pieces = 1 << this->Resolution;
@@ -209,22 +214,23 @@ TraceStatus CurveTracer::TraceBezierSpline(const std::vector<CanonicalPoint>& po
     const std::array<CanonicalPoint, 4> segment{
       points[3 * i], points[3 * i + 1], points[3 * i + 2], points[last]
     };
-    TraceStatus status =
-      SubdivideGeodesicBezier(this->Solver, segment, this->Resolution, this->Refined);
-    for (int k = 0; status && k < pieces; ++k)
+    std::string legError;
+    bool ok =
+      SubdivideGeodesicBezier(this->Solver, segment, this->Resolution, this->Refined, legError);
+    for (int k = 0; ok && k < pieces; ++k)
     {
       // The piece's three legs share the parameter range [k, k+1] / pieces by arc length;
       // only the anchors are exactly on the curve.
       const double t0 = static_cast<double>(k) / pieces, t1 = static_cast<double>(k + 1) / pieces;
       double legLength[3];
       GeodesicPath legs[3];
-      for (int leg = 0; leg < 3 && status; ++leg)
+      for (int leg = 0; leg < 3 && ok; ++leg)
       {
-        status =
-          this->ComputeLeg(this->Refined[3 * k + leg], this->Refined[3 * k + leg + 1], legs[leg]);
+        ok = this->ComputeLeg(
+          this->Refined[3 * k + leg], this->Refined[3 * k + leg + 1], legs[leg], legError);
         legLength[leg] = legs[leg].Length;
       }
-      if (!status)
+      if (!ok)
       {
         break;
       }
@@ -252,49 +258,54 @@ TraceStatus CurveTracer::TraceBezierSpline(const std::vector<CanonicalPoint>& po
         out.Length += legLength[leg];
       }
     }
-    if (!status)
+    if (!ok)
     {
       out.Clear();
-      return TraceStatus::Failure(CurveLabel(curveId) + ", Bezier segment " + std::to_string(i) +
-        " (control points " + std::to_string(3 * i) + " to " + std::to_string(last) +
-        "): " + status.Message);
+      error = CurveLabel(curveId) + ", Bezier segment " + std::to_string(i) + " (control points " +
+        std::to_string(3 * i) + " to " + std::to_string(last) + "): " + legError;
+      return false;
     }
   }
   if (closed)
   {
     out.DropRepeatedClosingPoint();
   }
-  return TraceStatus::Success();
+  return true;
 }
 
 //------------------------------------------------------------------------------
-TraceStatus CurveTracer::Trace(const std::vector<SurfacePoint>& points,
+bool CurveTracer::Trace(const std::vector<SurfacePoint>& points,
   CurveType type,
   bool closed,
   CurveTrace& out,
+  std::string& error,
   int curveId)
 {
   out.Clear();
   CurveKey key;
-  TraceStatus status = this->MakeKey(points, type, closed, curveId, key);
-  if (!status || this->Recall(key, out, curveId))
+  if (!this->MakeKey(points, type, closed, curveId, key, error))
   {
-    return status;
+    return false;
   }
-  status = this->TraceNew(key, out, curveId);
-  if (status)
+  if (this->Recall(key, out, curveId))
   {
-    this->Remember(std::move(key), out);
+    return true;
   }
-  return status;
+  if (!this->TraceNew(key, out, curveId, error))
+  {
+    return false;
+  }
+  this->Remember(std::move(key), out);
+  return true;
 }
 
 //------------------------------------------------------------------------------
-TraceStatus CurveTracer::MakeKey(const std::vector<SurfacePoint>& points,
+bool CurveTracer::MakeKey(const std::vector<SurfacePoint>& points,
   CurveType type,
   bool closed,
   int curveId,
-  CurveKey& key) const
+  CurveKey& key,
+  std::string& error) const
 {
   const TriangleMesh& mesh = this->Solver.GetMesh();
   key.Points.resize(points.size());
@@ -303,8 +314,8 @@ TraceStatus CurveTracer::MakeKey(const std::vector<SurfacePoint>& points,
   {
     if (!CheckSurfacePoint(mesh, points[i], problem))
     {
-      return TraceStatus::Failure(
-        CurveLabel(curveId) + ", control point " + std::to_string(i) + ": " + problem);
+      error = CurveLabel(curveId) + ", control point " + std::to_string(i) + ": " + problem;
+      return false;
     }
     // A weight within rounding of zero puts the point on the edge (or vertex): a point 1e-16
     // inside a triangle would make its paths cross that edge and come straight back, a
@@ -316,7 +327,7 @@ TraceStatus CurveTracer::MakeKey(const std::vector<SurfacePoint>& points,
   key.Closed = closed;
   key.Resolution = this->Resolution;
   key.Method = this->Solver.GetOptions().Method;
-  return TraceStatus::Success();
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -344,26 +355,27 @@ bool CurveTracer::Recall(const CurveKey& key, CurveTrace& out, int curveId)
 }
 
 //------------------------------------------------------------------------------
-TraceStatus CurveTracer::TraceNew(const CurveKey& key, CurveTrace& out, int curveId)
+bool CurveTracer::TraceNew(const CurveKey& key, CurveTrace& out, int curveId, std::string& error)
 {
-  TraceStatus status;
+  bool ok = false;
   switch (key.Type)
   {
     case CurveType::GeodesicPolygon:
-      status = this->TraceGeodesicPolygon(key.Points, key.Closed, out, curveId);
+      ok = this->TraceGeodesicPolygon(key.Points, key.Closed, out, error, curveId);
       break;
     case CurveType::CubicBezier:
-      status = this->TraceBezierSpline(key.Points, key.Closed, out, curveId);
+      ok = this->TraceBezierSpline(key.Points, key.Closed, out, error, curveId);
       break;
     default:
-      return TraceStatus::Failure(CurveLabel(curveId) + ": unknown curve type " +
-        std::to_string(static_cast<int>(key.Type)) + " (0: geodesic polygon, 1: cubic Bezier)");
+      error = CurveLabel(curveId) + ": unknown curve type " +
+        std::to_string(static_cast<int>(key.Type)) + " (0: geodesic polygon, 1: cubic Bezier)";
+      return false;
   }
-  if (status && this->KeepWrittenForms)
+  if (ok && this->KeepWrittenForms)
   {
     ComputeWrittenForms(this->Solver.GetMesh(), out);
   }
-  return status;
+  return ok;
 }
 
 //------------------------------------------------------------------------------
@@ -427,20 +439,20 @@ std::vector<GeodesicPathSolver*> CurveTracer::GetSolvers(int threads)
 void CurveTracer::TraceCurves(const std::vector<const ControlCurve*>& curves,
   int threads,
   std::vector<CurveTrace>& out,
-  std::vector<TraceStatus>& statuses,
+  std::vector<std::string>& errors,
   const std::function<bool(double)>& progress)
 {
   const std::size_t n = curves.size();
   out.assign(n, CurveTrace());
-  statuses.assign(n, TraceStatus::Success());
+  errors.assign(n, std::string());
   // Validation and the memory first, in order, on this thread.
   std::vector<CurveKey> keys(n);
   std::vector<std::size_t> todo;
   for (std::size_t c = 0; c < n; ++c)
   {
     const ControlCurve& r = *curves[c];
-    statuses[c] = this->MakeKey(r.Points, r.Type, r.Closed, r.CurveId, keys[c]);
-    if (statuses[c] && !this->Recall(keys[c], out[c], r.CurveId))
+    if (this->MakeKey(r.Points, r.Type, r.Closed, r.CurveId, keys[c], errors[c]) &&
+      !this->Recall(keys[c], out[c], r.CurveId))
     {
       todo.push_back(c);
     }
@@ -454,10 +466,10 @@ void CurveTracer::TraceCurves(const std::vector<const ControlCurve*>& curves,
     const std::size_t c = todo[k];
     if (stopped.load(std::memory_order_relaxed))
     {
-      statuses[c] = TraceStatus::Failure(CurveLabel(curves[c]->CurveId) + ": not traced (aborted)");
+      errors[c] = CurveLabel(curves[c]->CurveId) + ": not traced (aborted)";
       return;
     }
-    statuses[c] = tracer.TraceNew(keys[c], out[c], curves[c]->CurveId);
+    tracer.TraceNew(keys[c], out[c], curves[c]->CurveId, errors[c]);
     const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
     if (onCaller && progress && !progress(static_cast<double>(finished) / todo.size()))
     {
@@ -474,7 +486,7 @@ void CurveTracer::TraceCurves(const std::vector<const ControlCurve*>& curves,
     });
   for (std::size_t c : todo)
   {
-    if (statuses[c])
+    if (errors[c].empty())
     {
       this->Remember(CurveKey(keys[c]), out[c]);
     }

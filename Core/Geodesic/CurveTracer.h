@@ -60,40 +60,43 @@ public:
   int GetResolution() const { return this->Resolution; }
 
   /// Geodesic polygon through `points` (at least 2); closed adds the segment back to point 0.
-  TraceStatus TraceGeodesicPolygon(const std::vector<CanonicalPoint>& points,
+  bool TraceGeodesicPolygon(const std::vector<CanonicalPoint>& points,
     bool closed,
     CurveTrace& out,
+    std::string& error,
     int curveId = 0);
 
   /// Cubic geodesic Bezier spline: 3n+1 points when open, 3n when closed (segment n-1 then
   /// uses points 3n-3, 3n-2, 3n-1 and point 0).
-  TraceStatus TraceBezierSpline(const std::vector<CanonicalPoint>& points,
+  bool TraceBezierSpline(const std::vector<CanonicalPoint>& points,
     bool closed,
     CurveTrace& out,
+    std::string& error,
     int curveId = 0);
 
   /// Validates raw triangle + barycentric control points (out-of-range triangles, NaN) and
   /// dispatches on `type`. Messages name the curve and the control point.
-  TraceStatus Trace(const std::vector<SurfacePoint>& points,
+  bool Trace(const std::vector<SurfacePoint>& points,
     CurveType type,
     bool closed,
     CurveTrace& out,
+    std::string& error,
     int curveId = 0);
 
   /// Trace() of each curve's points, type and closedness under its CurveId, for every curve of
-  /// `curves` (out[c] and statuses[c] as Trace() gives them one by one, bit for bit), on up to
-  /// `threads` threads (0: all cores). Curves the memory recalls are recalled; the others are
+  /// `curves` (out[c] as Trace() gives it one by one, bit for bit; errors[c] its message, empty
+  /// when the curve traced), on up to `threads` threads (0: all cores). Curves the memory recalls are recalled; the others are
   /// traced in parallel, by this tracer and helper tracers it keeps on the same mesh with its
   /// settings, then remembered. A leg's geodesic does not depend on which solver computes it: the
   /// Bounded and Exact methods are functions of the leg's ends (the surface's site graph and path
   /// cache are shared and thread-safe). The locally shortest method is not (its edge search breaks
   /// ties by a landmark table each solver builds lazily), so it traces on this thread only.
   /// `progress` (may be empty) is called on the calling thread with the fraction done; returning
-  /// false stops the tracing (the curves not traced get a failed status).
+  /// false stops the tracing (the curves not traced get a message).
   void TraceCurves(const std::vector<const ControlCurve*>& curves,
     int threads,
     std::vector<CurveTrace>& out,
-    std::vector<TraceStatus>& statuses,
+    std::vector<std::string>& errors,
     const std::function<bool(double)>& progress = {});
   GeodesicPathSolver& GetPathSolver() { return this->Solver; }
   /// This tracer's solver then its helpers' (made as needed, given its settings): one per
@@ -124,15 +127,16 @@ private:
   CurveTracer(const CurveTracer& main, GeodesicPathSolver::HelperTag tag);
   struct CurveKey;
   /// Validates and canonicalizes a curve's control points into `key`.
-  TraceStatus MakeKey(const std::vector<SurfacePoint>& points,
+  bool MakeKey(const std::vector<SurfacePoint>& points,
     CurveType type,
     bool closed,
     int curveId,
-    CurveKey& key) const;
+    CurveKey& key,
+    std::string& error) const;
   /// The remembered trace of `key` into `out`, if any.
   bool Recall(const CurveKey& key, CurveTrace& out, int curveId);
   /// Traces `key` (without the memory).
-  TraceStatus TraceNew(const CurveKey& key, CurveTrace& out, int curveId);
+  bool TraceNew(const CurveKey& key, CurveTrace& out, int curveId, std::string& error);
   void Remember(CurveKey&& key, const CurveTrace& trace);
   /// Threads to use for `threads` (0: all cores) on `tasks` tasks, with helpers ready for them.
   int PrepareHelpers(int threads, std::size_t tasks);
@@ -140,7 +144,10 @@ private:
   /// order of surface points and reversed if needed: a leg traced both ways (two polygons
   /// sharing an edge, a spike, a curve and its reverse) is the same polyline bit for bit, so
   /// the arrangement sees the curves overlap exactly rather than run side by side.
-  TraceStatus ComputeLeg(const CanonicalPoint& a, const CanonicalPoint& b, GeodesicPath& path);
+  bool ComputeLeg(const CanonicalPoint& a,
+    const CanonicalPoint& b,
+    GeodesicPath& path,
+    std::string& error);
   /// Appends a traced path, mapping arc length onto parameters [t0, t1] of `segment`.
   void AppendPath(const GeodesicPath& path,
     int segment,

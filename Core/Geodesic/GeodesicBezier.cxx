@@ -4,76 +4,77 @@ namespace boolsurf
 {
 
 //------------------------------------------------------------------------------
-TraceStatus GeodesicMidpoint(GeodesicPathSolver& solver,
+bool GeodesicMidpoint(GeodesicPathSolver& solver,
   const CanonicalPoint& a,
   const CanonicalPoint& b,
-  CanonicalPoint& mid)
+  CanonicalPoint& mid,
+  std::string& error)
 {
   // One path per thread reused: midpoints are computed thousands of times per spline.
   thread_local GeodesicPath path;
-  TraceStatus status = solver.Compute(a, b, path);
-  if (!status)
+  if (!solver.Compute(a, b, path, error))
   {
-    return status;
+    return false;
   }
   mid = PointAlongPath(solver.GetMesh(), path, 0.5);
-  return status;
+  return true;
 }
 
 //------------------------------------------------------------------------------
-TraceStatus GeodesicLerp(GeodesicPathSolver& solver,
+bool GeodesicLerp(GeodesicPathSolver& solver,
   const CanonicalPoint& a,
   const CanonicalPoint& b,
   double t,
-  CanonicalPoint& out)
+  CanonicalPoint& out,
+  std::string& error)
 {
   if (t <= 0 || a == b)
   {
     out = a;
-    return TraceStatus::Success();
+    return true;
   }
   if (t >= 1)
   {
     out = b;
-    return TraceStatus::Success();
+    return true;
   }
   thread_local GeodesicPath path;
-  TraceStatus status = solver.Compute(a, b, path);
-  if (status)
+  if (!solver.Compute(a, b, path, error))
   {
-    out = PointAlongPath(solver.GetMesh(), path, t);
+    return false;
   }
-  return status;
+  out = PointAlongPath(solver.GetMesh(), path, t);
+  return true;
 }
 
 //------------------------------------------------------------------------------
-TraceStatus SplitGeodesicBezier(GeodesicPathSolver& solver,
+bool SplitGeodesicBezier(GeodesicPathSolver& solver,
   const std::array<CanonicalPoint, 4>& p,
   double t,
   std::array<CanonicalPoint, 4>& left,
-  std::array<CanonicalPoint, 4>& right)
+  std::array<CanonicalPoint, 4>& right,
+  std::string& error)
 {
   CanonicalPoint q0, q1, q2, r0, r1, s;
-  TraceStatus status;
-  if (!(status = GeodesicLerp(solver, p[0], p[1], t, q0)) ||
-    !(status = GeodesicLerp(solver, p[1], p[2], t, q1)) ||
-    !(status = GeodesicLerp(solver, p[2], p[3], t, q2)) ||
-    !(status = GeodesicLerp(solver, q0, q1, t, r0)) ||
-    !(status = GeodesicLerp(solver, q1, q2, t, r1)) ||
-    !(status = GeodesicLerp(solver, r0, r1, t, s)))
+  if (!GeodesicLerp(solver, p[0], p[1], t, q0, error) ||
+    !GeodesicLerp(solver, p[1], p[2], t, q1, error) ||
+    !GeodesicLerp(solver, p[2], p[3], t, q2, error) ||
+    !GeodesicLerp(solver, q0, q1, t, r0, error) || !GeodesicLerp(solver, q1, q2, t, r1, error) ||
+    !GeodesicLerp(solver, r0, r1, t, s, error))
   {
-    return status;
+    return false;
   }
   left = { p[0], q0, r0, s };
   right = { s, r1, q2, p[3] };
-  return TraceStatus::Success();
+  return true;
 }
 
 //------------------------------------------------------------------------------
-TraceStatus SubdivideGeodesicBezier(GeodesicPathSolver& solver,
+bool SubdivideGeodesicBezier(GeodesicPathSolver& solver,
   const std::array<CanonicalPoint, 4>& segment,
   int levels,
-  std::vector<CanonicalPoint>& polygon)
+  std::vector<CanonicalPoint>& polygon,
+  std::string& error)
 {
   polygon.assign(segment.begin(), segment.end());
   std::vector<CanonicalPoint> refined;
@@ -87,21 +88,19 @@ TraceStatus SubdivideGeodesicBezier(GeodesicPathSolver& solver,
     {
       const CanonicalPoint* p = &polygon[3 * k];
       CanonicalPoint q0, q1, q2, r0, r1, s;
-      TraceStatus status;
-      if (!(status = GeodesicMidpoint(solver, p[0], p[1], q0)) ||
-        !(status = GeodesicMidpoint(solver, p[1], p[2], q1)) ||
-        !(status = GeodesicMidpoint(solver, p[2], p[3], q2)) ||
-        !(status = GeodesicMidpoint(solver, q0, q1, r0)) ||
-        !(status = GeodesicMidpoint(solver, q1, q2, r1)) ||
-        !(status = GeodesicMidpoint(solver, r0, r1, s)))
+      if (!GeodesicMidpoint(solver, p[0], p[1], q0, error) ||
+        !GeodesicMidpoint(solver, p[1], p[2], q1, error) ||
+        !GeodesicMidpoint(solver, p[2], p[3], q2, error) ||
+        !GeodesicMidpoint(solver, q0, q1, r0, error) ||
+        !GeodesicMidpoint(solver, q1, q2, r1, error) || !GeodesicMidpoint(solver, r0, r1, s, error))
       {
-        return status;
+        return false;
       }
       refined.insert(refined.end(), { q0, r0, s, r1, q2, p[3] });
     }
     polygon.swap(refined);
   }
-  return TraceStatus::Success();
+  return true;
 }
 
 } // namespace boolsurf

@@ -21,35 +21,39 @@ namespace boolsurf
 {
 
 /// Geodesic midpoint of a and b (the point at half the length of their shortest path).
-TraceStatus GeodesicMidpoint(GeodesicPathSolver& solver,
+bool GeodesicMidpoint(GeodesicPathSolver& solver,
   const CanonicalPoint& a,
   const CanonicalPoint& b,
-  CanonicalPoint& mid);
+  CanonicalPoint& mid,
+  std::string& error);
 
 /// The point at fraction t of the shortest path from a to b (the geodesic lerp).
-TraceStatus GeodesicLerp(GeodesicPathSolver& solver,
+bool GeodesicLerp(GeodesicPathSolver& solver,
   const CanonicalPoint& a,
   const CanonicalPoint& b,
   double t,
-  CanonicalPoint& out);
+  CanonicalPoint& out,
+  std::string& error);
 
 /// One de Casteljau step at parameter t in (0, 1) with geodesic lerps (b/Surf's point
 /// insertion): the segment becomes `left` = (p0, q0, r0, s) and `right` = (s, r1, q2, p3), two
 /// cubic segments whose union is the curve, s on it at t. On a flat mesh this is the planar
 /// split, exactly.
-TraceStatus SplitGeodesicBezier(GeodesicPathSolver& solver,
+bool SplitGeodesicBezier(GeodesicPathSolver& solver,
   const std::array<CanonicalPoint, 4>& segment,
   double t,
   std::array<CanonicalPoint, 4>& left,
-  std::array<CanonicalPoint, 4>& right);
+  std::array<CanonicalPoint, 4>& right,
+  std::string& error);
 
 /// Refined control polygon of one cubic segment after `levels` de Casteljau subdivisions:
 /// 3 * 2^levels + 1 points; point 3k is on the curve at parameter t = k / 2^levels, the two
 /// points between consecutive anchors are handles. levels = 0 returns the segment itself.
-TraceStatus SubdivideGeodesicBezier(GeodesicPathSolver& solver,
+bool SubdivideGeodesicBezier(GeodesicPathSolver& solver,
   const std::array<CanonicalPoint, 4>& segment,
   int levels,
-  std::vector<CanonicalPoint>& polygon);
+  std::vector<CanonicalPoint>& polygon,
+  std::string& error);
 
 } // namespace boolsurf
 

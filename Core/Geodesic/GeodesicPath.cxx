@@ -127,29 +127,33 @@ void GeodesicPathSolver::SetOptions(const GeodesicPathOptions& options)
 }
 
 //------------------------------------------------------------------------------
-TraceStatus GeodesicPathSolver::Compute(const SurfacePoint& start,
+bool GeodesicPathSolver::Compute(const SurfacePoint& start,
   const SurfacePoint& end,
-  GeodesicPath& path)
+  GeodesicPath& path,
+  std::string& error)
 {
   const TriangleMesh& mesh = this->GetMesh();
   std::string problem;
   if (!CheckSurfacePoint(mesh, start, problem))
   {
     path = {};
-    return TraceStatus::Failure("start point: " + problem);
+    error = "start point: " + problem;
+    return false;
   }
   if (!CheckSurfacePoint(mesh, end, problem))
   {
     path = {};
-    return TraceStatus::Failure("end point: " + problem);
+    error = "end point: " + problem;
+    return false;
   }
-  return this->Compute(Canonicalize(mesh, start, 0.0), Canonicalize(mesh, end, 0.0), path);
+  return this->Compute(Canonicalize(mesh, start, 0.0), Canonicalize(mesh, end, 0.0), path, error);
 }
 
 //------------------------------------------------------------------------------
-TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
+bool GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   const CanonicalPoint& endIn,
-  GeodesicPath& path)
+  GeodesicPath& path,
+  std::string& error)
 {
   const TriangleMesh& mesh = this->GetMesh();
   this->Statistics = {};
@@ -158,11 +162,13 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   std::string problem;
   if (!CheckCanonicalPoint(mesh, startIn, problem))
   {
-    return TraceStatus::Failure("start point: " + problem);
+    error = "start point: " + problem;
+    return false;
   }
   if (!CheckCanonicalPoint(mesh, endIn, problem))
   {
-    return TraceStatus::Failure("end point: " + problem);
+    error = "end point: " + problem;
+    return false;
   }
   const CanonicalPoint start = Normalize(mesh, startIn);
   const CanonicalPoint end = Normalize(mesh, endIn);
@@ -170,7 +176,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   {
     this->Statistics.Exact = true;
     path.Points.push_back(start);
-    return TraceStatus::Success();
+    return true;
   }
 
   this->Straightener.ForgetUnfolding();
@@ -187,11 +193,11 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   if (!connected)
   {
     const int ta = this->StartTriangles.front(), tb = this->EndTriangles.front();
-    return TraceStatus::Failure("start point " + Describe(start) + " (triangle " +
-      std::to_string(ta) + ", component " + std::to_string(this->GetComponent(ta)) +
-      ") and end point " + Describe(end) + " (triangle " + std::to_string(tb) + ", component " +
-      std::to_string(this->GetComponent(tb)) +
-      ") lie on different connected components of the surface: no path joins them");
+    error = "start point " + Describe(start) + " (triangle " + std::to_string(ta) + ", component " +
+      std::to_string(this->GetComponent(ta)) + ") and end point " + Describe(end) + " (triangle " +
+      std::to_string(tb) + ", component " + std::to_string(this->GetComponent(tb)) +
+      ") lie on different connected components of the surface: no path joins them";
+    return false;
   }
 
   // Legs that cost real work are shared through the surface's cache (see GeodesicPathCache).
@@ -216,7 +222,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
       this->Statistics.Exact = this->CachedLeg.Exact;
       this->Statistics.Routed = this->CachedLeg.Routed;
       this->Statistics.FromCache = true;
-      return TraceStatus::Success();
+      return true;
     }
   }
 
@@ -228,13 +234,15 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   }
   else if (!this->FindStripByMethod(start, end))
   {
-    return TraceStatus::Failure("no triangle strip joins " + Describe(start) + " and " +
-      Describe(end) + " although they share a component (corrupt adjacency?)");
+    error = "no triangle strip joins " + Describe(start) + " and " + Describe(end) +
+      " although they share a component (corrupt adjacency?)";
+    return false;
   }
   if (!this->Straighten(start, end))
   {
-    return TraceStatus::Failure("the triangle strip between " + Describe(start) + " and " +
-      Describe(end) + " is broken (consecutive triangles are not neighbours)");
+    error = "the triangle strip between " + Describe(start) + " and " + Describe(end) +
+      " is broken (consecutive triangles are not neighbours)";
+    return false;
   }
   this->Statistics.StripTriangles = static_cast<int>(this->Strip.size());
 
@@ -259,7 +267,7 @@ TraceStatus GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
     this->CachedLeg.Routed = this->Statistics.Routed;
     this->Cache->Store(start, end, settings, this->CachedLeg);
   }
-  return TraceStatus::Success();
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -45,17 +45,6 @@
 namespace boolsurf
 {
 
-/// Outcome of a tracing call: Ok, or a message naming the offending points/curves.
-struct TraceStatus
-{
-  bool Ok = true;
-  std::string Message;
-
-  explicit operator bool() const { return this->Ok; }
-  static TraceStatus Success() { return {}; }
-  static TraceStatus Failure(std::string message) { return { false, std::move(message) }; }
-};
-
 struct GeodesicPath
 {
   /// Start, one point per mesh edge crossed (Edge location), the mesh vertices passed through
@@ -117,10 +106,16 @@ public:
 
   /// Locally shortest path from `start` to `end`. Fails with a message on invalid points and
   /// on points lying on different connected components.
-  TraceStatus Compute(const CanonicalPoint& start, const CanonicalPoint& end, GeodesicPath& path);
+  bool Compute(const CanonicalPoint& start,
+    const CanonicalPoint& end,
+    GeodesicPath& path,
+    std::string& error);
 
   /// Same for raw triangle + barycentric points (validated, then canonicalized exactly).
-  TraceStatus Compute(const SurfacePoint& start, const SurfacePoint& end, GeodesicPath& path);
+  bool Compute(const SurfacePoint& start,
+    const SurfacePoint& end,
+    GeodesicPath& path,
+    std::string& error);
 
   const TriangleMesh& GetMesh() const { return this->Mesh; }
   /// Connected component of usable triangle t (edge adjacency), -1 for unusable triangles.

@@ -47,7 +47,7 @@ bool ShortenGenerator(const TriangleMesh& mesh,
   TracedCurve best;
   for (int pass = 0; pass <= passes; ++pass)
   {
-    if (!tracer.Trace(control, CurveType::GeodesicPolygon, true, trace).Ok)
+    if (!tracer.Trace(control, CurveType::GeodesicPolygon, true, trace, error))
     {
       break;
     }

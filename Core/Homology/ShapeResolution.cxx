@@ -226,10 +226,10 @@ bool ClassifyControlCurves(CurveTracer& tracer,
   for (size_t i = 0; i < curves.size(); ++i)
   {
     const ControlCurve& c = curves[i];
-    const TraceStatus status = tracer.Trace(c.Points, c.Type, c.Closed, trace, c.CurveId);
-    if (!status.Ok)
+    std::string traceError;
+    if (!tracer.Trace(c.Points, c.Type, c.Closed, trace, traceError, c.CurveId))
     {
-      error = "curve " + std::to_string(c.CurveId) + ": " + status.Message;
+      error = "curve " + std::to_string(c.CurveId) + ": " + traceError;
       return false;
     }
     trace.Curve.ShapeId = c.ShapeId;
@@ -245,6 +245,209 @@ bool ClassifyControlCurves(CurveTracer& tracer,
   }
   return true;
 }
+
+namespace
+{
+/// The shape's resolution by AddGenerators: `copies` copies of each generator in excess, walked
+/// backwards where the excess is positive, appended to `added`.
+void AddGeneratorCopies(const TriangleMesh& mesh,
+  const HomologyBasis& basis,
+  int shapeId,
+  const std::string& shapeName,
+  const std::vector<int>& excess,
+  const std::string& excessText,
+  int& nextCurveId,
+  std::vector<ResolvedCurve>& added)
+{
+  const int ng = basis.GetNumberOfGenerators();
+  for (int g = 0; g < ng; ++g)
+  {
+    const int copies = std::abs(excess[g]);
+    if (copies == 0)
+    {
+      continue;
+    }
+    const HomologyGenerator& gen = basis.GetGenerator(g);
+    // Copies cross every edge between this generator's parameter and the next one's.
+    int inComponent = 0;
+    for (const HomologyGenerator& other : basis.GetGenerators())
+    {
+      inComponent += other.Component == gen.Component;
+    }
+    const double step = 0.5 / ((inComponent + 1.0) * copies);
+    for (int k = 0; k < copies; ++k)
+    {
+      std::vector<SurfacePoint> points;
+      for (CanonicalPoint p : gen.Points)
+      {
+        p.T = gen.CrossingParameter + k * step;
+        points.push_back(ToSurfacePoint(mesh, p));
+      }
+      ResolvedCurve r;
+      r.Curve.CurveId = nextCurveId++;
+      r.Curve.ShapeId = shapeId;
+      r.Curve.Closed = true;
+      // Generator g has class +1 at G g: walk it backwards where the excess is positive.
+      r.Curve.Points = excess[g] > 0 ? Reversed(points, true) : points;
+      r.Action = ResolutionAction::AddedGenerator;
+      r.Source = g;
+      r.Reason = shapeName + " had " + excessText +
+        " in excess: " + (excess[g] > 0 ? "reversed " : "") + "copy " + std::to_string(k + 1) +
+        " of " + std::to_string(copies) + " of generator G" + std::to_string(g);
+      added.push_back(std::move(r));
+    }
+  }
+}
+
+/// Control point j of `c` moved `offset` to its left (less near control points closer than the
+/// offset), on the surface.
+SurfacePoint OffsetToTheLeft(const TriangleMesh& mesh, const ControlCurve& c, int j, double offset)
+{
+  const int n = static_cast<int>(c.Points.size());
+  const SurfacePoint& p = c.Points[j];
+  const Vec3 x = mesh.Evaluate(p.Triangle, p.U, p.V);
+  // Neighbours along the polygon, skipping control points (almost) on this one.
+  auto neighbour = [&](int step)
+  {
+    Vec3 y = x;
+    for (int k = 1; k < n && Distance(x, y) <= 1e-3 * offset; ++k)
+    {
+      const int at =
+        c.Closed ? ((j + step * k) % n + n) % n : std::min(std::max(j + step * k, 0), n - 1);
+      const SurfacePoint& q = c.Points[at];
+      y = mesh.Evaluate(q.Triangle, q.U, q.V);
+    }
+    return y;
+  };
+  const Vec3 before = x - neighbour(-1);
+  const Vec3 after = neighbour(+1) - x;
+  // Bisector of the two sides: the offset stays on the left of both.
+  const Vec3 tangent = Normalized(before) + Normalized(after);
+  const Vec3 a = mesh.GetCornerPosition(p.Triangle, 0);
+  const Vec3 normal = Normalized(
+    Cross(mesh.GetCornerPosition(p.Triangle, 1) - a, mesh.GetCornerPosition(p.Triangle, 2) - a));
+  // Left of the curve seen from where the normal points: normal x tangent. Near
+  // control points closer than the offset, a third of their distance, so the copy
+  // cannot reach across a tight turn.
+  const Vec3 left = Normalized(Cross(normal, tangent));
+  double distance = offset;
+  for (double side : { Length(before), Length(after) })
+  {
+    if (side > 0)
+    {
+      distance = std::min(distance, side / 3);
+    }
+  }
+  const double d = distance;
+  return ClosestSurfacePointNear(mesh, x + d * left, p.Triangle, 3 * d);
+}
+
+/// The shape's resolution by DuplicateReversed: a reversed copy of each of its winding curves
+/// on its left, appended to `added` (the original keeps its place, with a reason).
+void DuplicateWindingCurvesReversed(const TriangleMesh& mesh,
+  const std::vector<ControlCurve>& curves,
+  const std::vector<std::vector<int>>& classes,
+  const std::vector<int>& members,
+  const std::string& shapeName,
+  const std::string& excessText,
+  double offset,
+  int& nextCurveId,
+  std::vector<ResolutionAction>& action,
+  std::vector<std::string>& reason,
+  std::vector<ResolvedCurve>& added)
+{
+  for (int i : members)
+  {
+    if (IsZero(classes[i]))
+    {
+      continue;
+    }
+    const ControlCurve& c = curves[i];
+    const int n = static_cast<int>(c.Points.size());
+    std::vector<SurfacePoint> moved(n);
+    for (int j = 0; j < n; ++j)
+    {
+      moved[j] = OffsetToTheLeft(mesh, c, j, offset);
+    }
+    ResolvedCurve r;
+    r.Curve = c;
+    r.Curve.CurveId = nextCurveId++;
+    r.Curve.Points = Reversed(moved, c.Closed);
+    r.Action = ResolutionAction::DuplicatedReversed;
+    r.Source = c.CurveId;
+    r.Reason = shapeName + " had " + excessText + " in excess: reversed copy of curve " +
+      std::to_string(c.CurveId) + " (winding " + ClassText(classes[i]) + ") at distance " +
+      std::to_string(offset) + " on its left, a solid strip";
+    action[i] = ResolutionAction::Kept;
+    reason[i] = "duplicated reversed as curve " + std::to_string(r.Curve.CurveId);
+    added.push_back(std::move(r));
+  }
+}
+
+/// The shape's resolution by RemoveCurves: the winding curves to remove or flip so that the
+/// excess cancels, marked in `action` and `reason`, with a note. False (a note says why) when
+/// no such set is found or there are too many curves to search: the shape is left unchanged.
+bool RemoveOrFlipCurves(const std::vector<ControlCurve>& curves,
+  const std::vector<std::vector<int>>& classes,
+  const std::vector<int>& members,
+  const std::vector<int>& excess,
+  const std::string& shapeName,
+  const std::string& excessText,
+  std::vector<ResolutionAction>& action,
+  std::vector<std::string>& reason,
+  std::vector<std::string>& notes)
+{
+  std::vector<int> candidates;
+  for (int i : members)
+  {
+    if (!IsZero(classes[i]))
+    {
+      candidates.push_back(i);
+    }
+  }
+  std::vector<int> choice;
+  if (candidates.size() > 12)
+  {
+    notes.push_back(shapeName + ": " + std::to_string(candidates.size()) +
+      " curves wind around the surface, too many to search for RemoveCurves; shape left "
+      "unchanged (use AddGenerators or DuplicateReversed)");
+    return false;
+  }
+  if (!FindRemovals(classes, candidates, excess, choice))
+  {
+    notes.push_back(shapeName +
+      ": no set of its curves removed or flipped has the "
+      "class " +
+      excessText + "; shape left unchanged (use AddGenerators or DuplicateReversed)");
+    return false;
+  }
+  std::string removed, flipped;
+  for (size_t k = 0; k < candidates.size(); ++k)
+  {
+    const int i = candidates[k];
+    const std::string id = std::to_string(curves[i].CurveId);
+    if (choice[k] == 1)
+    {
+      action[i] = ResolutionAction::Removed;
+      reason[i] = shapeName + " had " + excessText + " in excess: curve " + id + " (winding " +
+        ClassText(classes[i]) + ") removed";
+      removed += (removed.empty() ? "" : ", ") + id;
+    }
+    else if (choice[k] == 2)
+    {
+      action[i] = ResolutionAction::Flipped;
+      reason[i] = shapeName + " had " + excessText + " in excess: curve " + id + " (winding " +
+        ClassText(classes[i]) + ") flipped, which takes it away twice";
+      flipped += (flipped.empty() ? "" : ", ") + id;
+    }
+  }
+  notes.push_back(shapeName + ": " + excessText + " in excess; " +
+    (removed.empty() ? "" : "removed curve(s) " + removed) +
+    (!removed.empty() && !flipped.empty() ? ", " : "") +
+    (flipped.empty() ? "" : "flipped curve(s) " + flipped) + " (RemoveCurves)");
+  return true;
+}
+} // namespace
 
 //------------------------------------------------------------------------------
 ResolveResult ResolveShapes(const TriangleMesh& mesh,
@@ -297,165 +500,42 @@ ResolveResult ResolveShapes(const TriangleMesh& mesh,
     {
       case ResolveStrategy::AddGenerators:
       {
-        for (int g = 0; g < ng; ++g)
-        {
-          const int copies = std::abs(excess[g]);
-          if (copies == 0)
-          {
-            continue;
-          }
-          const HomologyGenerator& gen = basis.GetGenerator(g);
-          // Copies cross every edge between this generator's parameter and the next one's.
-          int inComponent = 0;
-          for (const HomologyGenerator& other : basis.GetGenerators())
-          {
-            inComponent += other.Component == gen.Component;
-          }
-          const double step = 0.5 / ((inComponent + 1.0) * copies);
-          for (int k = 0; k < copies; ++k)
-          {
-            std::vector<SurfacePoint> points;
-            for (CanonicalPoint p : gen.Points)
-            {
-              p.T = gen.CrossingParameter + k * step;
-              points.push_back(ToSurfacePoint(mesh, p));
-            }
-            ResolvedCurve r;
-            r.Curve.CurveId = nextCurveId++;
-            r.Curve.ShapeId = shapeId;
-            r.Curve.Closed = true;
-            // Generator g has class +1 at G g: walk it backwards where the excess is positive.
-            r.Curve.Points = excess[g] > 0 ? Reversed(points, true) : points;
-            r.Action = ResolutionAction::AddedGenerator;
-            r.Source = g;
-            r.Reason = shapeName + " had " + excessText +
-              " in excess: " + (excess[g] > 0 ? "reversed " : "") + "copy " +
-              std::to_string(k + 1) + " of " + std::to_string(copies) + " of generator G" +
-              std::to_string(g);
-            added.push_back(std::move(r));
-          }
-        }
+        AddGeneratorCopies(mesh, basis, shapeId, shapeName, excess, excessText, nextCurveId, added);
         result.Notes.push_back(shapeName + ": " + excessText +
           " in excess, cancelled by adding the generators (AddGenerators)");
         break;
       }
       case ResolveStrategy::DuplicateReversed:
       {
-        for (int i : members)
-        {
-          if (IsZero(classes[i]))
-          {
-            continue;
-          }
-          const ControlCurve& c = curves[i];
-          const int n = static_cast<int>(c.Points.size());
-          std::vector<SurfacePoint> moved(n);
-          for (int j = 0; j < n; ++j)
-          {
-            const SurfacePoint& p = c.Points[j];
-            const Vec3 x = mesh.Evaluate(p.Triangle, p.U, p.V);
-            // Neighbours along the polygon, skipping control points (almost) on this one.
-            auto neighbour = [&](int step)
-            {
-              Vec3 y = x;
-              for (int k = 1; k < n && Distance(x, y) <= 1e-3 * offset; ++k)
-              {
-                const int at = c.Closed ? ((j + step * k) % n + n) % n
-                                        : std::min(std::max(j + step * k, 0), n - 1);
-                const SurfacePoint& q = c.Points[at];
-                y = mesh.Evaluate(q.Triangle, q.U, q.V);
-              }
-              return y;
-            };
-            const Vec3 before = x - neighbour(-1);
-            const Vec3 after = neighbour(+1) - x;
-            // Bisector of the two sides: the offset stays on the left of both.
-            const Vec3 tangent = Normalized(before) + Normalized(after);
-            const Vec3 a = mesh.GetCornerPosition(p.Triangle, 0);
-            const Vec3 normal = Normalized(Cross(mesh.GetCornerPosition(p.Triangle, 1) - a,
-              mesh.GetCornerPosition(p.Triangle, 2) - a));
-            // Left of the curve seen from where the normal points: normal x tangent. Near
-            // control points closer than the offset, a third of their distance, so the copy
-            // cannot reach across a tight turn.
-            const Vec3 left = Normalized(Cross(normal, tangent));
-            double distance = offset;
-            for (double side : { Length(before), Length(after) })
-            {
-              if (side > 0)
-              {
-                distance = std::min(distance, side / 3);
-              }
-            }
-            const double d = distance;
-            moved[j] = ClosestSurfacePointNear(mesh, x + d * left, p.Triangle, 3 * d);
-          }
-          ResolvedCurve r;
-          r.Curve = c;
-          r.Curve.CurveId = nextCurveId++;
-          r.Curve.Points = Reversed(moved, c.Closed);
-          r.Action = ResolutionAction::DuplicatedReversed;
-          r.Source = c.CurveId;
-          r.Reason = shapeName + " had " + excessText + " in excess: reversed copy of curve " +
-            std::to_string(c.CurveId) + " (winding " + ClassText(classes[i]) + ") at distance " +
-            std::to_string(offset) + " on its left, a solid strip";
-          action[i] = ResolutionAction::Kept;
-          reason[i] = "duplicated reversed as curve " + std::to_string(r.Curve.CurveId);
-          added.push_back(std::move(r));
-        }
+        DuplicateWindingCurvesReversed(mesh,
+          curves,
+          classes,
+          members,
+          shapeName,
+          excessText,
+          offset,
+          nextCurveId,
+          action,
+          reason,
+          added);
         result.Notes.push_back(shapeName + ": " + excessText +
           " in excess, each winding curve duplicated reversed (DuplicateReversed)");
         break;
       }
       case ResolveStrategy::RemoveCurves:
       {
-        std::vector<int> candidates;
-        for (int i : members)
+        if (!RemoveOrFlipCurves(curves,
+              classes,
+              members,
+              excess,
+              shapeName,
+              excessText,
+              action,
+              reason,
+              result.Notes))
         {
-          if (!IsZero(classes[i]))
-          {
-            candidates.push_back(i);
-          }
-        }
-        std::vector<int> choice;
-        if (candidates.size() > 12)
-        {
-          result.Notes.push_back(shapeName + ": " + std::to_string(candidates.size()) +
-            " curves wind around the surface, too many to search for RemoveCurves; shape left "
-            "unchanged (use AddGenerators or DuplicateReversed)");
           continue;
         }
-        if (!FindRemovals(classes, candidates, excess, choice))
-        {
-          result.Notes.push_back(shapeName +
-            ": no set of its curves removed or flipped has the "
-            "class " +
-            excessText + "; shape left unchanged (use AddGenerators or DuplicateReversed)");
-          continue;
-        }
-        std::string removed, flipped;
-        for (size_t k = 0; k < candidates.size(); ++k)
-        {
-          const int i = candidates[k];
-          const std::string id = std::to_string(curves[i].CurveId);
-          if (choice[k] == 1)
-          {
-            action[i] = ResolutionAction::Removed;
-            reason[i] = shapeName + " had " + excessText + " in excess: curve " + id +
-              " (winding " + ClassText(classes[i]) + ") removed";
-            removed += (removed.empty() ? "" : ", ") + id;
-          }
-          else if (choice[k] == 2)
-          {
-            action[i] = ResolutionAction::Flipped;
-            reason[i] = shapeName + " had " + excessText + " in excess: curve " + id +
-              " (winding " + ClassText(classes[i]) + ") flipped, which takes it away twice";
-            flipped += (flipped.empty() ? "" : ", ") + id;
-          }
-        }
-        result.Notes.push_back(shapeName + ": " + excessText + " in excess; " +
-          (removed.empty() ? "" : "removed curve(s) " + removed) +
-          (!removed.empty() && !flipped.empty() ? ", " : "") +
-          (flipped.empty() ? "" : "flipped curve(s) " + flipped) + " (RemoveCurves)");
         break;
       }
     }

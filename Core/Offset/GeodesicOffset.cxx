@@ -1283,6 +1283,137 @@ std::unordered_map<int, int> BoundaryNext(const MeshTopology& topology)
   return next;
 }
 
+/// A run of contour pieces joined end to start: closed, or open from and to boundary edges of
+/// the surface.
+struct ContourChain
+{
+  std::vector<int> Pieces;
+  bool Closed = false;
+};
+
+/// The contour's chains: follow the pieces from point to point. A chain that starts at a point
+/// no piece ends at (on a boundary edge of the surface) is open; the rest close on themselves.
+std::vector<ContourChain> FollowChains(const Contour& contour)
+{
+  const int np = static_cast<int>(contour.Points.size());
+  std::vector<char> used(contour.Pieces.size(), 0);
+  std::vector<ContourChain> chains;
+  auto follow = [&](int piece)
+  {
+    ContourChain chain;
+    while (piece >= 0 && !used[piece])
+    {
+      used[piece] = 1;
+      chain.Pieces.push_back(piece);
+      piece = contour.PieceFrom[contour.Pieces[piece].To];
+    }
+    chain.Closed = piece >= 0 && piece == chain.Pieces.front();
+    chains.push_back(std::move(chain));
+  };
+  for (int p = 0; p < np; ++p)
+  {
+    if (contour.PieceTo[p] < 0 && contour.PieceFrom[p] >= 0)
+    {
+      follow(contour.PieceFrom[p]);
+    }
+  }
+  for (size_t i = 0; i < contour.Pieces.size(); ++i)
+  {
+    if (!used[i])
+    {
+      follow(static_cast<int>(i));
+    }
+  }
+  return chains;
+}
+
+/// Appends the points of `chain` to `loop`: each piece's start, its sharp corner, tip or
+/// refinement, and an open chain's last point.
+void AppendChain(const TriangleMesh& mesh,
+  OffsetField& field,
+  const Contour& contour,
+  const ContourChain& chain,
+  int resolution,
+  std::vector<CanonicalPoint>& loop)
+{
+  for (int id : chain.Pieces)
+  {
+    const Contour::Piece& piece = contour.Pieces[id];
+    const CanonicalPoint& a = contour.Points[piece.From];
+    if (loop.empty() || !(loop.back() == a))
+    {
+      loop.push_back(a);
+    }
+    CanonicalPoint corner;
+    bool outside = false;
+    if (SharpCorner(mesh, field, piece.Triangle, a, contour.Points[piece.To], corner, &outside))
+    {
+      loop.push_back(corner);
+    }
+    // (A piece ending on an edge crossed twice stops short of that edge: no tip crosses it.)
+    else if (!(outside && !contour.Twice[piece.From] && !contour.Twice[piece.To] &&
+               TipAcrossEdge(mesh, field, piece.Triangle, a, loop)) &&
+      resolution > 0)
+    {
+      RefinePiece(mesh, field, piece.Triangle, a, contour.Points[piece.To], resolution, loop);
+    }
+  }
+  if (!chain.Closed)
+  {
+    loop.push_back(contour.Points[contour.Pieces[chain.Pieces.back()].To]);
+  }
+}
+
+/// From the end of open chain `chain` (the last point of `loop`), the surface's boundary walked
+/// (the surface on the left of its half-edges) while the offset region continues along it, its
+/// vertices appended to `loop`, to the open chain starting on the boundary edge reached: that
+/// chain's index, -1 when none is reached.
+int WalkBoundary(const TriangleMesh& mesh,
+  OffsetField& field,
+  const Contour& contour,
+  const ContourChain& chain,
+  const std::unordered_map<int, int>& chainStartingOnEdge,
+  const std::unordered_map<int, int>& boundaryNext,
+  std::vector<CanonicalPoint>& loop)
+{
+  const int lastEdge = loop.back().Id;
+  int halfEdge = -1;
+  const int t = contour.Pieces[chain.Pieces.back()].Triangle;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (mesh.GetEdgeId(t, k) == lastEdge)
+    {
+      halfEdge = 3 * t + k;
+    }
+  }
+  int next = -1;
+  for (int steps = 0; halfEdge >= 0 && steps <= mesh.GetNumberOfVertices(); ++steps)
+  {
+    const int ht = halfEdge / 3, hk = halfEdge % 3;
+    const int to = mesh.GetTriangle(ht)[(hk + 1) % 3];
+    if (field.AtVertex(to) >= 0.0)
+    {
+      break; // the offset region does not continue this way: inconsistent contour
+    }
+    CanonicalPoint vertex;
+    vertex.Location = PointLocation::Vertex;
+    vertex.Id = to;
+    loop.push_back(vertex);
+    const auto it = boundaryNext.find(to);
+    if (it == boundaryNext.end())
+    {
+      break;
+    }
+    halfEdge = it->second;
+    const auto starts = chainStartingOnEdge.find(mesh.GetEdgeId(halfEdge / 3, halfEdge % 3));
+    if (starts != chainStartingOnEdge.end())
+    {
+      next = starts->second;
+      break;
+    }
+  }
+  return next;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -1342,73 +1473,7 @@ bool ComputeGeodesicOffset(const TriangleMesh& mesh,
   contour.Build(reached);
   stats.CrossedTriangles = contour.GetNumberOfCrossedTriangles();
 
-  // Chains: follow the pieces from point to point. A chain that starts at a point no piece ends
-  // at (on a boundary edge of the surface) is open; the rest close on themselves.
-  const int np = static_cast<int>(contour.Points.size());
-  std::vector<char> used(contour.Pieces.size(), 0);
-  struct Chain
-  {
-    std::vector<int> Pieces;
-    bool Closed = false;
-  };
-  std::vector<Chain> chains;
-  auto follow = [&](int piece)
-  {
-    Chain chain;
-    while (piece >= 0 && !used[piece])
-    {
-      used[piece] = 1;
-      chain.Pieces.push_back(piece);
-      piece = contour.PieceFrom[contour.Pieces[piece].To];
-    }
-    chain.Closed = piece >= 0 && piece == chain.Pieces.front();
-    chains.push_back(std::move(chain));
-  };
-  for (int p = 0; p < np; ++p)
-  {
-    if (contour.PieceTo[p] < 0 && contour.PieceFrom[p] >= 0)
-    {
-      follow(contour.PieceFrom[p]);
-    }
-  }
-  for (size_t i = 0; i < contour.Pieces.size(); ++i)
-  {
-    if (!used[i])
-    {
-      follow(static_cast<int>(i));
-    }
-  }
-
-  auto appendChain = [&](const Chain& chain, std::vector<CanonicalPoint>& loop)
-  {
-    for (int id : chain.Pieces)
-    {
-      const Contour::Piece& piece = contour.Pieces[id];
-      const CanonicalPoint& a = contour.Points[piece.From];
-      if (loop.empty() || !(loop.back() == a))
-      {
-        loop.push_back(a);
-      }
-      CanonicalPoint corner;
-      bool outside = false;
-      if (SharpCorner(mesh, field, piece.Triangle, a, contour.Points[piece.To], corner, &outside))
-      {
-        loop.push_back(corner);
-      }
-      // (A piece ending on an edge crossed twice stops short of that edge: no tip crosses it.)
-      else if (!(outside && !contour.Twice[piece.From] && !contour.Twice[piece.To] &&
-                 TipAcrossEdge(mesh, field, piece.Triangle, a, loop)) &&
-        options.Resolution > 0)
-      {
-        RefinePiece(
-          mesh, field, piece.Triangle, a, contour.Points[piece.To], options.Resolution, loop);
-      }
-    }
-    if (!chain.Closed)
-    {
-      loop.push_back(contour.Points[contour.Pieces[chain.Pieces.back()].To]);
-    }
-  };
+  const std::vector<ContourChain> chains = FollowChains(contour);
 
   // Open chains end on boundary edges of the surface: the region continues along the boundary
   // (the surface is on the left of its half-edges) to the start of the next open chain.
@@ -1435,48 +1500,14 @@ bool ComputeGeodesicOffset(const TriangleMesh& mesh,
     while (!placed[current])
     {
       placed[current] = 1;
-      appendChain(chains[current], loop);
+      AppendChain(mesh, field, contour, chains[current], options.Resolution, loop);
       if (chains[current].Closed)
       {
         break;
       }
-      // Walk the boundary from the chain's last point.
-      const int lastEdge = loop.back().Id;
-      int halfEdge = -1;
-      const int t = contour.Pieces[chains[current].Pieces.back()].Triangle;
-      for (int k = 0; k < 3; ++k)
-      {
-        if (mesh.GetEdgeId(t, k) == lastEdge)
-        {
-          halfEdge = 3 * t + k;
-        }
-      }
-      int next = -1;
-      for (int steps = 0; halfEdge >= 0 && steps <= mesh.GetNumberOfVertices(); ++steps)
-      {
-        const int ht = halfEdge / 3, hk = halfEdge % 3;
-        const int to = mesh.GetTriangle(ht)[(hk + 1) % 3];
-        if (field.AtVertex(to) >= 0.0)
-        {
-          break; // the offset region does not continue this way: inconsistent contour
-        }
-        CanonicalPoint vertex;
-        vertex.Location = PointLocation::Vertex;
-        vertex.Id = to;
-        loop.push_back(vertex);
-        const auto it = boundaryNext.find(to);
-        if (it == boundaryNext.end())
-        {
-          break;
-        }
-        halfEdge = it->second;
-        const auto starts = chainStartingOnEdge.find(mesh.GetEdgeId(halfEdge / 3, halfEdge % 3));
-        if (starts != chainStartingOnEdge.end())
-        {
-          next = starts->second;
-          break;
-        }
-      }
+      const int lastEdge = loop.back().Id; // the walk appends to the loop
+      const int next = WalkBoundary(
+        mesh, field, contour, chains[current], chainStartingOnEdge, boundaryNext, loop);
       if (next < 0)
       {
         error = "the offset contour reaches the surface's boundary at edge " +

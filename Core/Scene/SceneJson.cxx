@@ -1,6 +1,7 @@
 #include "Scene/SceneJson.h"
 
 #include "Scene/JsonNestingDepth.h"
+#include "Scene/SceneError.h"
 #include "Scene/ScenePlacement.h"
 
 #include <nlohmann/json.hpp>
@@ -514,7 +515,12 @@ void SceneParser::ReadScreenSpace(SceneModel& out)
       out.Polygons.push_back(std::move(polygon));
     }
   }
-  FitScreenSpace(out.Polygons); // all points the same: an error before any other
+  ScreenSpaceFrame frame; // all points the same: an error before any other
+  std::string error;
+  if (!FitScreenSpace(out.Polygons, frame, error))
+  {
+    throw SceneError(error);
+  }
   int nextShape = out.NumberOfShapes;
   for (ScenePolygon& polygon : out.Polygons)
   {
@@ -589,7 +595,13 @@ void SceneParser::ReadSurfaceScene(const SceneParseOptions& options, SceneModel&
   std::optional<SceneMeshInfo> mesh;
   if (options.FindMesh)
   {
-    mesh = options.FindMesh(out);
+    SceneMeshInfo found;
+    std::string error;
+    if (!options.FindMesh(out, found, error))
+    {
+      throw SceneError(error);
+    }
+    mesh = found;
   }
 
   out.Points.reserve(points.size());
@@ -653,10 +665,9 @@ void SceneParser::ReadSurfaceScene(const SceneParseOptions& options, SceneModel&
     throw SceneError("'polygons' are all empty: the scene has no curve");
   }
 }
-} // namespace
 
-//------------------------------------------------------------------------------
-SceneModel ParseSceneJson(std::istream& in, const SceneParseOptions& options)
+/// ParseSceneJson, throwing SceneError.
+SceneModel ParseScene(std::istream& in, const SceneParseOptions& options)
 {
   SceneParser parser(in);
   const json& root = parser.GetRoot();
@@ -676,6 +687,25 @@ SceneModel ParseSceneJson(std::istream& in, const SceneParseOptions& options)
   }
   parser.ReadOperations(scene);
   return scene;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+bool ParseSceneJson(std::istream& in,
+  SceneModel& scene,
+  std::string& error,
+  const SceneParseOptions& options)
+{
+  try
+  {
+    scene = ParseScene(in, options);
+    return true;
+  }
+  catch (const SceneError& e)
+  {
+    error = e.what();
+    return false;
+  }
 }
 
 //------------------------------------------------------------------------------

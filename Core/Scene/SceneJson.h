@@ -35,15 +35,17 @@ struct SceneParseOptions
   /// mesh itself: `model` is then ignored (and Model left empty).
   bool ReadModel = true;
   /// When set, called for a surface scene once its polygons, shapes and flags are checked and
-  /// before its points are read: it finds and reads the mesh (its SceneError propagates), and
+  /// before its points are read: it finds and reads the mesh (false and a message stop the
+  /// reading with that message), and
   /// each point's face is then checked against it as the points are read. So a file is
   /// checked in one order, whatever is wrong with it: the structure of its curves, the mesh,
   /// each point (face, then uv), then the operations. Without it, faces are checked later by
   /// CheckSceneFaces or PlaceScenePoints.
-  std::function<SceneMeshInfo(const SceneModel& scene)> FindMesh;
+  std::function<bool(const SceneModel& scene, SceneMeshInfo& mesh, std::string& error)> FindMesh;
 };
 
-/// Reads a scene (throws SceneError for a problem with the file, with the messages above).
+/// Reads a scene into `scene`; false, with one of the messages above in `error`, for a problem
+/// with the file.
 /// The checks: arrays and objects nested at most MaxSceneNestingDepth levels ("nesting too
 /// deep: an array at line 1, column 300 (in 'points') is 257 levels deep; ..."); valid JSON;
 /// a JSON object; `polygons` (and for a surface scene `points` and `model`) present; every
@@ -52,9 +54,12 @@ struct SceneParseOptions
 /// or 1), operation types (0..3); at least one curve. A surface scene's one-point polygon is
 /// skipped with a note; a screen-space scene's is an error, as is a screen-space scene whose
 /// points are all the same.
-SceneModel ParseSceneJson(std::istream& in, const SceneParseOptions& options = {});
+bool ParseSceneJson(std::istream& in,
+  SceneModel& scene,
+  std::string& error,
+  const SceneParseOptions& options = {});
 
-/// Whether `in` holds a JSON object with a `polygons` key. Never throws; reads the file
+/// Whether `in` holds a JSON object with a `polygons` key. Reads the file
 /// without building its values, so a file nested too deep is still recognized (and refused
 /// by ParseSceneJson with its message).
 bool LooksLikeSceneJson(std::istream& in);

@@ -1,7 +1,5 @@
 #include "Scene/SceneMeshLookup.h"
 
-#include "Scene/SceneModel.h"
-
 #include <algorithm>
 
 namespace boolsurf
@@ -136,10 +134,12 @@ std::vector<fs::path> SceneMeshCandidates(const fs::path& sceneFile,
 }
 
 //------------------------------------------------------------------------------
-fs::path FindSceneMesh(const fs::path& sceneFile,
+bool FindSceneMesh(const fs::path& sceneFile,
   const std::string& override,
   const std::string& model,
-  const std::string& searchPath)
+  const std::string& searchPath,
+  fs::path& mesh,
+  std::string& error)
 {
   const std::vector<fs::path> candidates =
     SceneMeshCandidates(sceneFile, override, model, searchPath);
@@ -148,7 +148,8 @@ fs::path FindSceneMesh(const fs::path& sceneFile,
     std::error_code ec;
     if (fs::is_regular_file(c, ec))
     {
-      return c;
+      mesh = c;
+      return true;
     }
   }
   std::string tried;
@@ -160,8 +161,9 @@ fs::path FindSceneMesh(const fs::path& sceneFile,
   {
     tried += "\n  ... (" + std::to_string(candidates.size() - 12) + " more)";
   }
-  throw SceneError("mesh '" + (override.empty() ? model : override) +
-    "' not found (set MeshFileName or MeshSearchPath); looked for:" + tried);
+  error = "mesh '" + (override.empty() ? model : override) +
+    "' not found (set MeshFileName or MeshSearchPath); looked for:" + tried;
+  return false;
 }
 
 } // namespace boolsurf

@@ -32,12 +32,14 @@ std::vector<std::filesystem::path> SceneMeshCandidates(const std::filesystem::pa
   const std::string& model,
   const std::string& searchPath);
 
-/// The first candidate that is a file; throws SceneError naming the mesh and the places
-/// looked at (at most 12) when there is none.
-std::filesystem::path FindSceneMesh(const std::filesystem::path& sceneFile,
+/// The first candidate that is a file, in `mesh`; false, with a message naming the mesh and the
+/// places looked at (at most 12), when there is none.
+bool FindSceneMesh(const std::filesystem::path& sceneFile,
   const std::string& override,
   const std::string& model,
-  const std::string& searchPath);
+  const std::string& searchPath,
+  std::filesystem::path& mesh,
+  std::string& error);
 
 } // namespace boolsurf
 

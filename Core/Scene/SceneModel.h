@@ -9,18 +9,11 @@
 #include "Mesh/Vec3.h"
 
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace boolsurf
 {
-
-/// A problem with a scene, already worded for the user (the caller names the file).
-struct SceneError : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
 
 /// A control point `{"face": f, "uv": [u, v]}`: (1-u-v) p0 + u p1 + v p2 of triangle Face.
 struct ScenePoint

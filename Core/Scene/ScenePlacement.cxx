@@ -24,9 +24,10 @@ std::string FaceOutOfRangeMessage(std::size_t index,
 }
 
 //------------------------------------------------------------------------------
-void CheckSceneFaces(const SceneModel& scene,
+bool CheckSceneFaces(const SceneModel& scene,
   long long numberOfTriangles,
-  const std::string& meshName)
+  const std::string& meshName,
+  std::string& error)
 {
   for (std::size_t k = 0; k < scene.Points.size(); ++k)
   {
@@ -34,15 +35,23 @@ void CheckSceneFaces(const SceneModel& scene,
     if (p.Face < 0 || p.Face >= numberOfTriangles)
     {
       const std::string text = p.FaceText.empty() ? std::to_string(p.Face) : p.FaceText;
-      throw SceneError(FaceOutOfRangeMessage(k, text, meshName, numberOfTriangles));
+      error = FaceOutOfRangeMessage(k, text, meshName, numberOfTriangles);
+      return false;
     }
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------
-void PlaceScenePoints(SceneModel& scene, const MeshData& mesh, const std::string& meshName)
+bool PlaceScenePoints(SceneModel& scene,
+  const MeshData& mesh,
+  const std::string& meshName,
+  std::string& error)
 {
-  CheckSceneFaces(scene, static_cast<long long>(mesh.Triangles.size()), meshName);
+  if (!CheckSceneFaces(scene, static_cast<long long>(mesh.Triangles.size()), meshName, error))
+  {
+    return false;
+  }
   for (ScenePoint& p : scene.Points)
   {
     ClampBarycentric(p.U, p.V);
@@ -55,10 +64,13 @@ void PlaceScenePoints(SceneModel& scene, const MeshData& mesh, const std::string
       (1 - u - v) * p0.y + u * p1.y + v * p2.y,
       (1 - u - v) * p0.z + u * p1.z + v * p2.z };
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------
-ScreenSpaceFrame FitScreenSpace(const std::vector<ScenePolygon>& polygons)
+bool FitScreenSpace(const std::vector<ScenePolygon>& polygons,
+  ScreenSpaceFrame& frame,
+  std::string& error)
 {
   // The bounds start where VTK_DOUBLE_MAX put them (1e299, not the largest double), so that
   // a drawing out there is framed as it always was.
@@ -79,14 +91,15 @@ ScreenSpaceFrame FitScreenSpace(const std::vector<ScenePolygon>& polygons)
   const double extent = std::max(hi[0] - lo[0], hi[1] - lo[1]);
   if (!(extent > 0))
   {
-    throw SceneError("'polygons' hold no two distinct points");
+    error = "'polygons' hold no two distinct points";
+    return false;
   }
   // Into [0.1, 0.9]^2, aspect ratio kept, centred.
-  ScreenSpaceFrame frame;
+  frame = ScreenSpaceFrame();
   frame.Scale = 0.8 / extent;
   frame.Offset[0] = 0.5 - 0.5 * (lo[0] + hi[0]) * frame.Scale;
   frame.Offset[1] = 0.5 - 0.5 * (lo[1] + hi[1]) * frame.Scale;
-  return frame;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -106,18 +119,23 @@ SurfacePoint FlatSquarePoint(int n, double x, double y)
 }
 
 //------------------------------------------------------------------------------
-MeshData PlaceScreenSpaceScene(SceneModel& scene, int resolution)
+bool PlaceScreenSpaceScene(SceneModel& scene, int resolution, MeshData& grid, std::string& error)
 {
-  const ScreenSpaceFrame frame = FitScreenSpace(scene.Polygons);
-  MeshData grid = MakeFlatSquare(resolution);
+  ScreenSpaceFrame frame;
+  if (!FitScreenSpace(scene.Polygons, frame, error))
+  {
+    return false;
+  }
+  grid = MakeFlatSquare(resolution);
   scene.Points.clear();
   for (ScenePolygon& polygon : scene.Polygons)
   {
     if (polygon.Polyline.size() < 2)
     {
-      throw SceneError(PolygonName(polygon.Index) +
+      error = PolygonName(polygon.Index) +
         (polygon.Polyline.empty() ? " is empty" : " has a single point") +
-        "; a curve needs at least 2");
+        "; a curve needs at least 2";
+      return false;
     }
     // Screen coordinates grow downwards: y flipped so that the drawing is upright.
     std::vector<Vec2> c;
@@ -153,7 +171,7 @@ MeshData PlaceScreenSpaceScene(SceneModel& scene, int resolution)
     }
   }
   scene.Notes.push_back("screen-space scene: its polylines were placed on a flat grid on [0,1]^2");
-  return grid;
+  return true;
 }
 
 } // namespace boolsurf

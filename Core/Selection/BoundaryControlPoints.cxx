@@ -30,7 +30,7 @@ int NumberOfSegments(const CurveSource& source)
 
 /// The control points of curve `c` from parameter t0 to t1 (t1 > t0; past the end of a closed
 /// curve when it wraps), between the arranged points `first` and `last`.
-TraceStatus SubCurve(GeodesicPathSolver& solver,
+bool SubCurve(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const CurveSource& source,
   int first,
@@ -40,7 +40,8 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
   bool whole,
   BezierPieces* pieces,
   int curve,
-  std::vector<SurfacePoint>& points)
+  std::vector<SurfacePoint>& points,
+  std::string& error)
 {
   const TriangleMesh& mesh = solver.GetMesh();
   const int controls = static_cast<int>(source.Points.size());
@@ -67,7 +68,7 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
       points.push_back(endsAtControl ? control(static_cast<long long>(k1))
                                      : arrangement.GetPointSurface(mesh, last));
     }
-    return TraceStatus::Success();
+    return true;
   }
 
   // Cubic Bezier: each segment over [t0, t1], cut at the range's ends.
@@ -83,11 +84,10 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
     };
     const double a = std::max(t0 - s, 0.0), b = std::min(t1 - s, 1.0);
     std::array<CanonicalPoint, 4> left, right;
-    TraceStatus status;
     bool found = false;
-    if (pieces && !(status = pieces->Get(solver, curve, seg, a, b, left, found)))
+    if (pieces && !pieces->Get(solver, curve, seg, a, b, left, found, error))
     {
-      return status;
+      return false;
     }
     if (found)
     {
@@ -95,18 +95,18 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
     }
     else if (a > SameParameter)
     {
-      if (!(status = SplitGeodesicBezier(solver, piece, a, left, right)))
+      if (!SplitGeodesicBezier(solver, piece, a, left, right, error))
       {
-        return status;
+        return false;
       }
       piece = right;
     }
     if (!found && b < 1 - SameParameter)
     {
       const double local = a > SameParameter ? (b - a) / (1 - a) : b;
-      if (!(status = SplitGeodesicBezier(solver, piece, local, left, right)))
+      if (!SplitGeodesicBezier(solver, piece, local, left, right, error))
       {
-        return status;
+        return false;
       }
       piece = left;
     }
@@ -135,7 +135,7 @@ TraceStatus SubCurve(GeodesicPathSolver& solver,
       points.push_back(ToSurfacePoint(mesh, out[i]));
     }
   }
-  return TraceStatus::Success();
+  return true;
 }
 
 /// The sub-curve of curve `c` made of the arranged points from index `first` on, `count` of
@@ -169,14 +169,15 @@ void SubCurveRange(const Arrangement& arrangement,
   }
 }
 
-TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
+bool MakeSubCurve(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   int c,
   int first,
   int count,
   BezierPieces* pieces,
-  ControlSubCurve& out)
+  ControlSubCurve& out,
+  std::string& error)
 {
   const CurveSource& source = sources[c];
   const int n = static_cast<int>(arrangement.CurvePoints[c].size());
@@ -188,7 +189,7 @@ TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
   out.SourceShapeId = source.ShapeId;
   out.SourceCurveId = source.CurveId;
   SubCurveRange(arrangement, sources, c, first, count, out.T0, out.T1, out.Whole);
-  TraceStatus status = SubCurve(solver,
+  const bool ok = SubCurve(solver,
     arrangement,
     source,
     arrangement.CurvePoints[c][first],
@@ -198,14 +199,15 @@ TraceStatus MakeSubCurve(GeodesicPathSolver& solver,
     out.Whole,
     pieces,
     c,
-    out.Points);
+    out.Points,
+    error);
   out.Positions.clear();
   out.Positions.reserve(out.Points.size());
   for (const SurfacePoint& p : out.Points)
   {
     out.Positions.push_back(solver.GetMesh().Evaluate(p.Triangle, p.U, p.V));
   }
-  return status;
+  return ok;
 }
 
 /// Appends `next` to `into` when both are pieces of one curve walked the same way and `next`
@@ -294,28 +296,28 @@ BezierPieces::BezierPieces(const Arrangement& arrangement, const std::vector<Cur
 // shortens the legs at every level, so all but the first few splits work on short legs; it
 // also takes each piece through log2(k) splits instead of up to k, so rounding accumulates
 // less.
-TraceStatus BezierPieces::SplitAtCuts(GeodesicPathSolver& solver,
+bool BezierPieces::SplitAtCuts(GeodesicPathSolver& solver,
   const std::array<CanonicalPoint, 4>& polygon,
   double from,
   double to,
   const double* first,
   const double* last,
-  std::vector<Piece>& pieces)
+  std::vector<Piece>& pieces,
+  std::string& error)
 {
   if (first == last)
   {
     pieces.push_back({ from, to, polygon });
-    return TraceStatus::Success();
+    return true;
   }
   const double* middle = first + (last - first) / 2;
   std::array<CanonicalPoint, 4> left, right;
-  TraceStatus status =
-    SplitGeodesicBezier(solver, polygon, (*middle - from) / (to - from), left, right);
-  if (!status || !(status = this->SplitAtCuts(solver, left, from, *middle, first, middle, pieces)))
+  if (!SplitGeodesicBezier(solver, polygon, (*middle - from) / (to - from), left, right, error) ||
+    !this->SplitAtCuts(solver, left, from, *middle, first, middle, pieces, error))
   {
-    return status;
+    return false;
   }
-  return this->SplitAtCuts(solver, right, *middle, to, middle + 1, last, pieces);
+  return this->SplitAtCuts(solver, right, *middle, to, middle + 1, last, pieces, error);
 }
 
 void BezierPieces::CollectCuts(const TriangleMesh& mesh, int curve, std::vector<SegmentCuts>& jobs)
@@ -385,7 +387,7 @@ void BezierPieces::CollectCuts(const TriangleMesh& mesh, int curve, std::vector<
 }
 
 //------------------------------------------------------------------------------
-TraceStatus BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve)
+bool BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve, std::string& error)
 {
   std::vector<SegmentCuts> jobs;
   this->CollectCuts(solver.GetMesh(), curve, jobs);
@@ -393,25 +395,25 @@ TraceStatus BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve)
   {
     std::vector<Piece>& pieces =
       this->Segments[(static_cast<long long>(job.Curve) << 32) | job.Segment];
-    TraceStatus status = this->SplitAtCuts(
-      solver, job.Whole, 0.0, 1.0, job.At.data(), job.At.data() + job.At.size(), pieces);
-    if (!status)
+    if (!this->SplitAtCuts(
+          solver, job.Whole, 0.0, 1.0, job.At.data(), job.At.data() + job.At.size(), pieces, error))
     {
-      return status;
+      return false;
     }
   }
-  return TraceStatus::Success();
+  return true;
 }
 
 //------------------------------------------------------------------------------
 // Segments are independent (each is split from its own control polygon), so each is one task;
 // a segment's pieces are what CutCurve gives them, since a leg does not depend on the solver.
-TraceStatus BezierPieces::CutCurves(const std::vector<int>& curves,
-  const std::vector<GeodesicPathSolver*>& solvers)
+bool BezierPieces::CutCurves(const std::vector<int>& curves,
+  const std::vector<GeodesicPathSolver*>& solvers,
+  std::string& error)
 {
   if (solvers.empty())
   {
-    return TraceStatus::Success();
+    return true;
   }
   std::vector<SegmentCuts> jobs;
   for (int curve : curves)
@@ -422,59 +424,62 @@ TraceStatus BezierPieces::CutCurves(const std::vector<int>& curves,
     }
   }
   std::vector<std::vector<Piece>> pieces(jobs.size());
-  std::vector<TraceStatus> statuses(jobs.size());
+  std::vector<std::string> errors(jobs.size());
+  std::vector<char> cut(jobs.size(), 0);
   // One solver per arena slot.
   RunTasksBySlot(static_cast<int>(solvers.size()),
     jobs.size(),
     [&](int slot, std::size_t j)
     {
       const SegmentCuts& job = jobs[j];
-      statuses[j] = this->SplitAtCuts(*solvers[slot],
+      cut[j] = this->SplitAtCuts(*solvers[slot],
         job.Whole,
         0.0,
         1.0,
         job.At.data(),
         job.At.data() + job.At.size(),
-        pieces[j]);
+        pieces[j],
+        errors[j]);
     });
   for (std::size_t j = 0; j < jobs.size(); ++j)
   {
-    if (!statuses[j])
+    if (!cut[j])
     {
-      return statuses[j];
+      error = errors[j];
+      return false;
     }
     this->Segments[(static_cast<long long>(jobs[j].Curve) << 32) | jobs[j].Segment] =
       std::move(pieces[j]);
   }
-  return TraceStatus::Success();
+  return true;
 }
 
 //------------------------------------------------------------------------------
-TraceStatus BezierPieces::Get(GeodesicPathSolver& solver,
+bool BezierPieces::Get(GeodesicPathSolver& solver,
   int curve,
   int segment,
   double a,
   double b,
   std::array<CanonicalPoint, 4>& out,
-  bool& found)
+  bool& found,
+  std::string& error)
 {
   found = false;
   if (curve < 0 || curve >= static_cast<int>(this->Sources.size()))
   {
-    return TraceStatus::Success();
+    return true;
   }
   if (!this->CurveCut[curve])
   {
-    TraceStatus status = this->CutCurve(solver, curve);
-    if (!status)
+    if (!this->CutCurve(solver, curve, error))
     {
-      return status;
+      return false;
     }
   }
   auto it = this->Segments.find((static_cast<long long>(curve) << 32) | segment);
   if (it == this->Segments.end())
   {
-    return TraceStatus::Success();
+    return true;
   }
   // The pieces tile the segment left to right (SplitAtCuts): a binary search, not a scan, since
   // a segment that another curve runs along holds thousands of them and every patch asks.
@@ -492,22 +497,23 @@ TraceStatus BezierPieces::Get(GeodesicPathSolver& solver,
       break;
     }
   }
-  return TraceStatus::Success();
+  return true;
 }
 
 //------------------------------------------------------------------------------
-TraceStatus PatchControlCurve(GeodesicPathSolver& solver,
+bool PatchControlCurve(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   int patch,
   ControlSubCurve& out,
+  std::string& error,
   BezierPieces* pieces)
 {
   const ArrangementPatch& p = arrangement.Patches[patch];
   out = ControlSubCurve();
   if (p.Curve < 0 || p.FirstIndex < 0)
   {
-    return TraceStatus::Success();
+    return true;
   }
   return MakeSubCurve(solver,
     arrangement,
@@ -516,7 +522,8 @@ TraceStatus PatchControlCurve(GeodesicPathSolver& solver,
     p.FirstIndex,
     static_cast<int>(p.Points.size()),
     pieces,
-    out);
+    out,
+    error);
 }
 
 //------------------------------------------------------------------------------
@@ -611,11 +618,12 @@ void AssembleClippedPieces(const std::function<const ControlSubCurve*(int)>& pat
 }
 
 //------------------------------------------------------------------------------
-TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
+bool BoundaryControlCurves(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   const std::vector<BoundaryPolyline>& loops,
   std::vector<ControlSubCurve>& out,
+  std::string& error,
   BezierPieces* shared)
 {
   // Only the boundary's patches are computed (a Bezier piece costs geodesic splits).
@@ -632,10 +640,9 @@ TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
     {
       if (pieces.count(p) == 0)
       {
-        TraceStatus status = PatchControlCurve(solver, arrangement, sources, p, pieces[p], &bezier);
-        if (!status)
+        if (!PatchControlCurve(solver, arrangement, sources, p, pieces[p], error, &bezier))
         {
-          return status;
+          return false;
         }
       }
     }
@@ -648,15 +655,16 @@ TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
     },
     loops,
     out);
-  return TraceStatus::Success();
+  return true;
 }
 
 //------------------------------------------------------------------------------
-TraceStatus ClippedControlCurves(GeodesicPathSolver& solver,
+bool ClippedControlCurves(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   const std::vector<char>& selected,
   std::vector<ControlSubCurve>& out,
+  std::string& error,
   BezierPieces* shared)
 {
   std::vector<PatchInfo> info(arrangement.Patches.size());
@@ -679,11 +687,10 @@ TraceStatus ClippedControlCurves(GeodesicPathSolver& solver,
     }(patch.LeftCell, patch.RightCell);
     if (!patch.Closed && inside)
     {
-      TraceStatus status =
-        PatchControlCurve(solver, arrangement, sources, static_cast<int>(p), pieces[p], &bezier);
-      if (!status)
+      if (!PatchControlCurve(
+            solver, arrangement, sources, static_cast<int>(p), pieces[p], error, &bezier))
       {
-        return status;
+        return false;
       }
     }
   }
@@ -696,7 +703,7 @@ TraceStatus ClippedControlCurves(GeodesicPathSolver& solver,
     info,
     selected,
     out);
-  return TraceStatus::Success();
+  return true;
 }
 
 } // namespace boolsurf

@@ -90,20 +90,22 @@ public:
   /// The control points of the part [a, b] (0 <= a < b <= 1) of segment `segment` of curve
   /// `curve`; `found` is false when [a, b] is not one of the pieces (the caller then splits
   /// the segment itself).
-  TraceStatus Get(GeodesicPathSolver& solver,
+  bool Get(GeodesicPathSolver& solver,
     int curve,
     int segment,
     double a,
     double b,
     std::array<CanonicalPoint, 4>& out,
-    bool& found);
+    bool& found,
+    std::string& error);
 
   /// Cuts now the Bezier segments of `curves` that Get() would cut when first asked, into the
   /// same pieces, segment by segment on several threads: `solvers` holds one solver per
   /// thread (the arena slot's), all on the arrangement's mesh with the same settings and a
   /// method whose legs do not depend on the solver (see CurveTracer::TraceCurves).
-  TraceStatus CutCurves(const std::vector<int>& curves,
-    const std::vector<GeodesicPathSolver*>& solvers);
+  bool CutCurves(const std::vector<int>& curves,
+    const std::vector<GeodesicPathSolver*>& solvers,
+    std::string& error);
 
 private:
   struct Piece
@@ -120,14 +122,15 @@ private:
   };
   /// The segments of `curve` with cuts (the curve is marked cut).
   void CollectCuts(const TriangleMesh& mesh, int curve, std::vector<SegmentCuts>& jobs);
-  TraceStatus CutCurve(GeodesicPathSolver& solver, int curve);
-  TraceStatus SplitAtCuts(GeodesicPathSolver& solver,
+  bool CutCurve(GeodesicPathSolver& solver, int curve, std::string& error);
+  bool SplitAtCuts(GeodesicPathSolver& solver,
     const std::array<CanonicalPoint, 4>& polygon,
     double from,
     double to,
     const double* first,
     const double* last,
-    std::vector<Piece>& pieces);
+    std::vector<Piece>& pieces,
+    std::string& error);
 
   const Arrangement& Arranged;
   const std::vector<CurveSource>& Sources;
@@ -138,11 +141,12 @@ private:
 
 /// The sub-curve of patch `patch` of the arrangement, forward along its curve (Group -1).
 /// `pieces` (optional) shares the Bezier splits between the patches of one update.
-TraceStatus PatchControlCurve(GeodesicPathSolver& solver,
+bool PatchControlCurve(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   int patch,
   ControlSubCurve& out,
+  std::string& error,
   BezierPieces* pieces = nullptr);
 
 /// Boundary loops from per-patch sub-curves (`patchCurve(p)`, forward, or null for a patch
@@ -164,21 +168,23 @@ void AssembleClippedPieces(const std::function<const ControlSubCurve*(int)>& pat
 /// patches), each oriented with the region on its left; Group is the loop index. `pieces`
 /// (may be null: a local one is used) holds the Bezier segments already cut: pass the same one
 /// to ClippedControlCurves on the same arrangement so no segment is split twice.
-TraceStatus BoundaryControlCurves(GeodesicPathSolver& solver,
+bool BoundaryControlCurves(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   const std::vector<BoundaryPolyline>& loops,
   std::vector<ControlSubCurve>& out,
+  std::string& error,
   BezierPieces* pieces = nullptr);
 
 /// The pieces of open curves inside the cells with selected[cell] != 0 (a piece along the
 /// region's boundary counts as inside), consecutive patches joined; Group numbers the pieces
 /// of each curve in curve order. `pieces` as for BoundaryControlCurves.
-TraceStatus ClippedControlCurves(GeodesicPathSolver& solver,
+bool ClippedControlCurves(GeodesicPathSolver& solver,
   const Arrangement& arrangement,
   const std::vector<CurveSource>& sources,
   const std::vector<char>& selected,
   std::vector<ControlSubCurve>& out,
+  std::string& error,
   BezierPieces* pieces = nullptr);
 
 } // namespace boolsurf

@@ -62,7 +62,8 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
   if (solver)
   {
     BezierPieces bezier(arr, sources); // each Bezier segment cut once for both outputs
-    TraceStatus status = TraceStatus::Success();
+    bool ok = true;
+    std::string cutError;
     if (cutSolvers.size() > 1)
     {
       // The curves both outputs need: those along the boundary and the open ones with a patch
@@ -101,20 +102,22 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
           curves.push_back(static_cast<int>(c));
         }
       }
-      status = bezier.CutCurves(curves, cutSolvers);
+      ok = bezier.CutCurves(curves, cutSolvers, cutError);
     }
-    if (status)
+    if (ok)
     {
-      status = BoundaryControlCurves(*solver, arr, sources, loops, buffers.SubCurves, &bezier);
+      ok =
+        BoundaryControlCurves(*solver, arr, sources, loops, buffers.SubCurves, cutError, &bezier);
     }
-    if (status)
+    if (ok)
     {
       WriteControlSubCurves(buffers.SubCurves, "BoundaryLoop", true, controls);
-      status = ClippedControlCurves(*solver, arr, sources, selected, buffers.SubCurves, &bezier);
+      ok =
+        ClippedControlCurves(*solver, arr, sources, selected, buffers.SubCurves, cutError, &bezier);
     }
-    if (!status)
+    if (!ok)
     {
-      error = "Control points of the result: " + status.Message;
+      error = "Control points of the result: " + cutError;
       region->Initialize();
       boundary->Initialize();
       controls->Initialize();

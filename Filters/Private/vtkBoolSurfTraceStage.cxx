@@ -330,12 +330,12 @@ bool TraceInputCurves(vtkSurfaceCache& cache,
     requests[c] = &controls[c];
   }
   std::vector<CurveTrace> traces;
-  std::vector<TraceStatus> statuses;
+  std::vector<std::string> errors;
   bool aborted = false;
   tracer.TraceCurves(requests,
     options.Threads,
     traces,
-    statuses,
+    errors,
     [&](double fraction)
     {
       if (progress)
@@ -351,9 +351,9 @@ bool TraceInputCurves(vtkSurfaceCache& cache,
   }
   for (size_t c = 0; c < controls.size(); ++c)
   {
-    if (!statuses[c])
+    if (!errors[c].empty())
     {
-      problems.push_back(statuses[c].Message);
+      problems.push_back(errors[c]);
       continue;
     }
     traces[c].Curve.ShapeId = controls[c].ShapeId;

@@ -378,11 +378,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t c = 0; c < decoded.size(); ++c)
   {
     CurveTrace trace;
-    const TraceStatus status = tracer.Trace(
-      decoded[c].Points, decoded[c].Type, decoded[c].Closed, trace, static_cast<int>(c));
-    if (!status)
+    std::string traceError;
+    const bool traced = tracer.Trace(decoded[c].Points,
+      decoded[c].Type,
+      decoded[c].Closed,
+      trace,
+      traceError,
+      static_cast<int>(c));
+    if (!traced)
     {
-      BOOLSURF_FUZZ_CHECK(!status.Message.empty(), "a failed trace must say why");
+      BOOLSURF_FUZZ_CHECK(!traceError.empty(), "a failed trace must say why");
       Reached("trace refused");
       return 0;
     }

@@ -47,6 +47,12 @@ using namespace boolsurf;
 
 namespace
 {
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
+
+namespace
+{
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using Traits = CGAL::Surface_mesh_shortest_path_traits<Kernel, CgalMesh>;
@@ -582,7 +588,7 @@ bool DrawCircle(const TriangleMesh& mesh,
       control.push_back(NearestSurfacePoint(mesh, x, distance));
       flat = distance < 0.2 * radius;
     }
-    if (!flat || !tracer.Trace(control, CurveType::GeodesicPolygon, true, trace).Ok)
+    if (!flat || !tracer.Trace(control, CurveType::GeodesicPolygon, true, trace, traceError))
     {
       continue;
     }

@@ -28,6 +28,12 @@
 #include <vector>
 
 using namespace boolsurf;
+
+namespace
+{
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
@@ -201,14 +207,14 @@ void TraceScene(const json& scene,
       closed = scene.at("are_closed")[i].get<bool>();
     }
     CurveTrace trace;
-    const TraceStatus status =
-      tracer.Trace(control, CurveType::GeodesicPolygon, closed, trace, static_cast<int>(i));
-    if (!status)
+    const bool traced = tracer.Trace(
+      control, CurveType::GeodesicPolygon, closed, trace, traceError, static_cast<int>(i));
+    if (!traced)
     {
       ++result.TraceFailures;
       if (result.Error.empty())
       {
-        result.Error = "polygon " + std::to_string(i) + ": " + status.Message;
+        result.Error = "polygon " + std::to_string(i) + ": " + traceError;
       }
       continue;
     }

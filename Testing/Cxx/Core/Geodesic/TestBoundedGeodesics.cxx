@@ -19,6 +19,12 @@ using namespace boolsurf;
 
 namespace
 {
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
+
+namespace
+{
 TriangleMesh ToMesh(const MeshData& d)
 {
   return TriangleMesh(d.Positions, d.Triangles);
@@ -98,10 +104,10 @@ bool TraceFarLeg(const TriangleMesh& mesh,
   b = FarPoint(mesh, a, rng);
   for (const auto& run : runs)
   {
-    const TraceStatus status = run.first->Compute(a, b, *run.second);
-    if (!status.Ok)
+    const bool traced = run.first->Compute(a, b, *run.second, traceError);
+    if (!traced)
     {
-      ADD_FAILURE() << Describe(a) << " -> " << Describe(b) << ": " << status.Message;
+      ADD_FAILURE() << Describe(a) << " -> " << Describe(b) << ": " << traceError;
       return false;
     }
   }
@@ -245,8 +251,8 @@ TEST(BoundedGeodesics, FarLegsAreRoutedWithinTheBudget)
   {
     const CanonicalPoint p = FacePoint(mesh, rng);
     const CanonicalPoint q = FarPoint(mesh, p, rng);
-    ASSERT_TRUE(bounded.Compute(p, q, b).Ok);
-    ASSERT_TRUE(exact.Compute(p, q, e).Ok);
+    ASSERT_TRUE(bounded.Compute(p, q, b, traceError));
+    ASSERT_TRUE(exact.Compute(p, q, e, traceError));
     ASSERT_TRUE(exact.GetLastStatistics().Exact);
     // The search stops at the first propagation past the budget (which adds at most a few).
     EXPECT_LE(bounded.GetLastStatistics().Windows, (1 << 12) + 8);
@@ -282,7 +288,7 @@ TEST(BoundedGeodesics, FarLegsAreRoutedWithinTheBudget)
       const CanonicalPoint p = FacePoint(mesh, rng);
       points.push_back({ p.Id, p.U, p.V });
     }
-    ASSERT_TRUE(tracer.Trace(points, CurveType::GeodesicPolygon, true, trace).Ok);
+    ASSERT_TRUE(tracer.Trace(points, CurveType::GeodesicPolygon, true, trace, traceError));
     ASSERT_NE(tracer.GetPathSolver().GetSiteGraph(), nullptr);
     if (!traced)
     {
@@ -396,8 +402,8 @@ TEST(BoundedGeodesics, ShortLegsAreExact)
     {
       continue;
     }
-    ASSERT_TRUE(bounded.Compute(p, q, b).Ok);
-    ASSERT_TRUE(exact.Compute(p, q, e).Ok);
+    ASSERT_TRUE(bounded.Compute(p, q, b, traceError));
+    ASSERT_TRUE(exact.Compute(p, q, e, traceError));
     EXPECT_TRUE(bounded.GetLastStatistics().Exact);
     EXPECT_FALSE(bounded.GetLastStatistics().Routed);
     EXPECT_EQ(b.Points, e.Points);
@@ -423,17 +429,17 @@ TEST(GeodesicPathCache, CostlyLegsAreSharedPerSurfaceAndSettings)
   {
     const CanonicalPoint p = FacePoint(mesh, rng);
     const CanonicalPoint q = FarPoint(mesh, p, rng);
-    ASSERT_TRUE(first.Compute(p, q, a).Ok);
+    ASSERT_TRUE(first.Compute(p, q, a, traceError));
     EXPECT_FALSE(first.GetLastStatistics().FromCache);
     const bool costly = first.GetLastStatistics().Windows >= GeodesicPathCache::MinimumWindows ||
       first.GetLastStatistics().Routed;
-    ASSERT_TRUE(second.Compute(p, q, b).Ok);
+    ASSERT_TRUE(second.Compute(p, q, b, traceError));
     EXPECT_EQ(second.GetLastStatistics().FromCache, costly);
     EXPECT_EQ(b.Points, a.Points);
     EXPECT_EQ(b.Length, a.Length);
     EXPECT_EQ(second.GetLastStatistics().Exact, first.GetLastStatistics().Exact);
     shared += costly;
-    ASSERT_TRUE(other.Compute(p, q, c).Ok);
+    ASSERT_TRUE(other.Compute(p, q, c, traceError));
     EXPECT_FALSE(other.GetLastStatistics().FromCache) << "another budget took a cached leg";
   }
   EXPECT_GE(shared, 6);
@@ -445,7 +451,7 @@ TEST(GeodesicPathCache, CostlyLegsAreSharedPerSurfaceAndSettings)
   GeodesicPathSolver elsewhere(copy);
   std::mt19937 again(31);
   const CanonicalPoint p = FacePoint(copy, again);
-  ASSERT_TRUE(elsewhere.Compute(p, FarPoint(copy, p, again), c).Ok);
+  ASSERT_TRUE(elsewhere.Compute(p, FarPoint(copy, p, again), c, traceError));
   EXPECT_FALSE(elsewhere.GetLastStatistics().FromCache) << "another surface shares the cache";
   EXPECT_NE(elsewhere.GetPathCache(), first.GetPathCache());
 }

@@ -11,6 +11,12 @@ using namespace boolsurf;
 
 namespace
 {
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
+
+namespace
+{
 TriangleMesh FlatMesh()
 {
   MeshData d = MakeFlatSquare(12, 1.0, 0.3, 4);
@@ -26,7 +32,7 @@ TEST(CurveTracer, OpenPolygonOnFlatMesh)
     { 3, 0.2, 0.3 }, { 100, 0.1, 0.1 }, { 250, 0.5, 0.25 }, { 40, 0.3, 0.3 }
   };
   CurveTrace trace;
-  ASSERT_TRUE(tracer.Trace(controls, CurveType::GeodesicPolygon, false, trace, 5).Ok);
+  ASSERT_TRUE(tracer.Trace(controls, CurveType::GeodesicPolygon, false, trace, traceError, 5));
   const std::vector<CanonicalPoint>& pts = trace.Curve.Points;
   EXPECT_EQ(trace.Curve.CurveId, 5);
   EXPECT_FALSE(trace.Curve.Closed);
@@ -75,7 +81,7 @@ TEST(CurveTracer, ClosedPolygonOnTorus)
     { 10, 0.3, 0.3 }, { 300, 0.3, 0.3 }, { 900, 0.3, 0.3 }
   };
   CurveTrace trace;
-  ASSERT_TRUE(tracer.Trace(controls, CurveType::GeodesicPolygon, true, trace).Ok);
+  ASSERT_TRUE(tracer.Trace(controls, CurveType::GeodesicPolygon, true, trace, traceError));
   const std::vector<CanonicalPoint>& pts = trace.Curve.Points;
   EXPECT_TRUE(trace.Curve.Closed);
   EXPECT_FALSE(pts.back() == pts.front());
@@ -96,29 +102,34 @@ TEST(CurveTracer, NamedErrors)
   const TriangleMesh mesh = FlatMesh();
   CurveTracer tracer(mesh);
   CurveTrace trace;
-  TraceStatus s = tracer.Trace({ { 1, 0.2, 0.2 } }, CurveType::GeodesicPolygon, false, trace, 4);
-  EXPECT_FALSE(s.Ok);
-  EXPECT_EQ(s.Message, "curve 4: a geodesic polygon needs at least 2 control points, got 1");
+  bool s =
+    tracer.Trace({ { 1, 0.2, 0.2 } }, CurveType::GeodesicPolygon, false, trace, traceError, 4);
+  EXPECT_FALSE(s);
+  EXPECT_EQ(traceError, "curve 4: a geodesic polygon needs at least 2 control points, got 1");
 
   std::vector<SurfacePoint> five(5, SurfacePoint{ 1, 0.2, 0.2 });
-  s = tracer.Trace(five, CurveType::CubicBezier, false, trace, 2);
-  EXPECT_EQ(s.Message,
+  s = tracer.Trace(five, CurveType::CubicBezier, false, trace, traceError, 2);
+  EXPECT_EQ(traceError,
     "curve 2: an open cubic Bezier spline needs 3n+1 control points (anchor, handle, handle, "
     "anchor, ...), got 5");
   std::vector<SurfacePoint> four(4, SurfacePoint{ 1, 0.2, 0.2 });
-  s = tracer.Trace(four, CurveType::CubicBezier, true, trace, 2);
-  EXPECT_EQ(s.Message,
+  s = tracer.Trace(four, CurveType::CubicBezier, true, trace, traceError, 2);
+  EXPECT_EQ(traceError,
     "curve 2: a closed cubic Bezier spline needs 3n control points (anchor, handle, handle, "
     "anchor, ...), got 4");
 
+  s = tracer.Trace({ { 1, 0.2, 0.2 }, { 2, std::nan(""), 0.1 } },
+    CurveType::GeodesicPolygon,
+    false,
+    trace,
+    traceError,
+    7);
+  EXPECT_FALSE(s);
+  EXPECT_EQ(traceError.rfind("curve 7, control point 1: barycentric coordinates", 0), 0u)
+    << traceError;
   s = tracer.Trace(
-    { { 1, 0.2, 0.2 }, { 2, std::nan(""), 0.1 } }, CurveType::GeodesicPolygon, false, trace, 7);
-  EXPECT_FALSE(s.Ok);
-  EXPECT_EQ(s.Message.rfind("curve 7, control point 1: barycentric coordinates", 0), 0u)
-    << s.Message;
-  s = tracer.Trace(
-    { { 1, 0.2, 0.2 }, { 100000, 0.1, 0.1 } }, CurveType::CubicBezier, false, trace, 0);
-  EXPECT_EQ(s.Message, "curve 0, control point 1: triangle id 100000 is out of range [0, 288)");
+    { { 1, 0.2, 0.2 }, { 100000, 0.1, 0.1 } }, CurveType::CubicBezier, false, trace, traceError, 0);
+  EXPECT_EQ(traceError, "curve 0, control point 1: triangle id 100000 is out of range [0, 288)");
   EXPECT_TRUE(trace.Curve.Points.empty());
 }
 
@@ -138,15 +149,16 @@ TEST(CurveTracer, DifferentComponentsNamesCurveAndSegment)
   const TriangleMesh mesh(a.Positions, a.Triangles);
   CurveTracer tracer(mesh);
   CurveTrace trace;
-  const TraceStatus s = tracer.Trace({ { 0, 0.2, 0.2 }, { 1, 0.2, 0.2 }, { 20, 0.2, 0.2 } },
+  const bool s = tracer.Trace({ { 0, 0.2, 0.2 }, { 1, 0.2, 0.2 }, { 20, 0.2, 0.2 } },
     CurveType::GeodesicPolygon,
     false,
     trace,
+    traceError,
     9);
-  EXPECT_FALSE(s.Ok);
-  EXPECT_EQ(s.Message.rfind("curve 9, segment 1 (control points 1 and 2): start point", 0), 0u)
-    << s.Message;
-  EXPECT_NE(s.Message.find("different connected components"), std::string::npos);
+  EXPECT_FALSE(s);
+  EXPECT_EQ(traceError.rfind("curve 9, segment 1 (control points 1 and 2): start point", 0), 0u)
+    << traceError;
+  EXPECT_NE(traceError.find("different connected components"), std::string::npos);
 }
 
 // The tracer remembers traced curves: the same control points, type, closure, resolution and
@@ -162,22 +174,22 @@ TEST(CurveTracer, RemembersTracedCurves)
   };
   CurveTrace first, again;
   tracer.StartPass();
-  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, first, 1).Ok);
-  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again, 7).Ok);
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, first, traceError, 1));
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again, traceError, 7));
   EXPECT_EQ(tracer.GetRecalledCurves(), 1u);
   EXPECT_TRUE(again.Curve.Points == first.Curve.Points);
   EXPECT_EQ(again.Parameter, first.Parameter);
   EXPECT_EQ(again.Length, first.Length);
   EXPECT_EQ(again.Curve.CurveId, 7);
   // Open instead of closed, a Bezier, another resolution, another method: traced.
-  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, false, again).Ok);
-  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, again).Ok);
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, false, again, traceError));
+  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, again, traceError));
   tracer.SetResolution(2);
-  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, again).Ok);
+  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, again, traceError));
   GeodesicPathOptions options;
   options.Method = GeodesicMethod::LocallyShortest;
   tracer.GetPathSolver().SetOptions(options);
-  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again).Ok);
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again, traceError));
   EXPECT_EQ(tracer.GetRecalledCurves(), 1u);
   options.Method = GeodesicMethod::Bounded;
   tracer.GetPathSolver().SetOptions(options);
@@ -185,15 +197,15 @@ TEST(CurveTracer, RemembersTracedCurves)
   // A control point moved by one ulp is another curve.
   std::vector<SurfacePoint> moved = polygon;
   moved[1].U = std::nextafter(moved[1].U, 1.0);
-  ASSERT_TRUE(tracer.Trace(moved, CurveType::GeodesicPolygon, true, again).Ok);
+  ASSERT_TRUE(tracer.Trace(moved, CurveType::GeodesicPolygon, true, again, traceError));
   EXPECT_EQ(tracer.GetRecalledCurves(), 1u);
   // Passes: used in the last pass, kept; unused for a whole pass, forgotten.
   tracer.StartPass();
-  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again).Ok);
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again, traceError));
   EXPECT_EQ(tracer.GetRecalledCurves(), 2u);
   tracer.StartPass(); // polygon was used during the pass that ends: kept
   tracer.StartPass(); // not used during this one: forgotten
-  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again).Ok);
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again, traceError));
   EXPECT_EQ(tracer.GetRecalledCurves(), 2u);
   EXPECT_TRUE(again.Curve.Points == first.Curve.Points); // traced again: the same result
 }
@@ -240,18 +252,19 @@ TEST(CurveTracer, KeepsWrittenForms)
   };
   CurveTrace trace;
   tracer.StartPass();
-  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, trace).Ok);
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, trace, traceError));
   EXPECT_TRUE(trace.Written.empty());
   tracer.SetKeepWrittenForms(true);
-  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, trace).Ok); // recalled
+  ASSERT_TRUE(
+    tracer.Trace(polygon, CurveType::GeodesicPolygon, true, trace, traceError)); // recalled
   EXPECT_EQ(tracer.GetRecalledCurves(), 1u);
   expectForms(trace);
-  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, trace).Ok); // fresh
+  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, trace, traceError)); // fresh
   expectForms(trace);
-  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, trace).Ok); // recalled
+  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, trace, traceError)); // recalled
   EXPECT_EQ(tracer.GetRecalledCurves(), 2u);
   expectForms(trace);
   tracer.SetKeepWrittenForms(false);
-  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, trace).Ok);
+  ASSERT_TRUE(tracer.Trace(spline, CurveType::CubicBezier, false, trace, traceError));
   EXPECT_TRUE(trace.Written.empty() && trace.Positions.empty());
 }

@@ -25,6 +25,12 @@ using boolsurf::testing::VertexPoint;
 
 namespace
 {
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
+
+namespace
+{
 constexpr double Pi = 3.14159265358979323846;
 
 /// How the grid's cells are split: all by the diagonal rising to the right (MakeFlatSquare),
@@ -331,7 +337,7 @@ TEST(ExactFlatGrid, ShortestPathsAlongLatticeDirectionsAreStraight)
         EXPECT_NEAR(
           search.FindStrip(a, startTriangles, b, endTriangles, strip), exact, 1e-12 * exact)
           << pair;
-        ASSERT_TRUE(solver.Compute(a, b, path)) << pair;
+        ASSERT_TRUE(solver.Compute(a, b, path, traceError)) << pair;
         EXPECT_TRUE(solver.GetLastStatistics().Exact) << pair;
         EXPECT_NEAR(path.Length, exact, 1e-12 * exact) << pair;
       }

@@ -12,6 +12,12 @@ using namespace boolsurf;
 
 namespace
 {
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
+
+namespace
+{
 /// Canonical point at planar (x, y) of a flat z = 0 mesh (brute force: tests only).
 CanonicalPoint Locate(const TriangleMesh& mesh, double x, double y)
 {
@@ -62,7 +68,7 @@ TEST(GeodesicBezier, FlatSplineIsThePlanarBezier)
   CurveTracer tracer(mesh);
   tracer.SetResolution(8);
   CurveTrace trace;
-  ASSERT_TRUE(tracer.TraceBezierSpline(controls, false, trace, 3).Ok);
+  ASSERT_TRUE(tracer.TraceBezierSpline(controls, false, trace, traceError, 3));
   const std::vector<CanonicalPoint>& pts = trace.Curve.Points;
   ASSERT_GT(pts.size(), 2u * 256u);
   ASSERT_EQ(trace.Parameter.size(), pts.size());
@@ -117,7 +123,7 @@ TEST(GeodesicBezier, ClosedSplineOnSphereCloses)
     controls.push_back(Canonicalize(mesh, SurfacePoint{ t, 0.3, 0.3 }));
   }
   CurveTrace trace;
-  ASSERT_TRUE(tracer.TraceBezierSpline(controls, true, trace).Ok);
+  ASSERT_TRUE(tracer.TraceBezierSpline(controls, true, trace, traceError));
   const std::vector<CanonicalPoint>& pts = trace.Curve.Points;
   EXPECT_TRUE(trace.Curve.Closed);
   EXPECT_TRUE(pts.front() == controls.front());
@@ -154,11 +160,11 @@ TEST(GeodesicBezier, MidpointIsEquidistant)
   const CanonicalPoint a = Canonicalize(mesh, SurfacePoint{ 17, 0.2, 0.3 });
   const CanonicalPoint b = Canonicalize(mesh, SurfacePoint{ 2000, 0.4, 0.1 });
   CanonicalPoint mid;
-  ASSERT_TRUE(GeodesicMidpoint(solver, a, b, mid).Ok);
+  ASSERT_TRUE(GeodesicMidpoint(solver, a, b, mid, traceError));
   GeodesicPath whole, first, second;
-  ASSERT_TRUE(solver.Compute(a, b, whole).Ok);
-  ASSERT_TRUE(solver.Compute(a, mid, first).Ok);
-  ASSERT_TRUE(solver.Compute(mid, b, second).Ok);
+  ASSERT_TRUE(solver.Compute(a, b, whole, traceError));
+  ASSERT_TRUE(solver.Compute(a, mid, first, traceError));
+  ASSERT_TRUE(solver.Compute(mid, b, second, traceError));
   EXPECT_NEAR(first.Length, 0.5 * whole.Length, 1e-9);
   EXPECT_NEAR(second.Length, 0.5 * whole.Length, 1e-9);
 }
@@ -173,9 +179,9 @@ TEST(GeodesicBezier, SubdivisionSizes)
     Canonicalize(mesh, { 20, 0.2, 0.2 }),
     Canonicalize(mesh, { 30, 0.2, 0.2 }) };
   std::vector<CanonicalPoint> polygon;
-  ASSERT_TRUE(SubdivideGeodesicBezier(solver, segment, 0, polygon).Ok);
+  ASSERT_TRUE(SubdivideGeodesicBezier(solver, segment, 0, polygon, traceError));
   EXPECT_EQ(polygon.size(), 4u);
-  ASSERT_TRUE(SubdivideGeodesicBezier(solver, segment, 3, polygon).Ok);
+  ASSERT_TRUE(SubdivideGeodesicBezier(solver, segment, 3, polygon, traceError));
   EXPECT_EQ(polygon.size(), 3u * 8u + 1u);
   EXPECT_TRUE(polygon.front() == segment[0]);
   EXPECT_TRUE(polygon.back() == segment[3]);

@@ -22,6 +22,12 @@ using boolsurf::testing::VertexPoint;
 
 namespace
 {
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
+
+namespace
+{
 constexpr double Pi = 3.14159265358979323846;
 
 TriangleMesh ToMesh(const MeshData& d)
@@ -459,7 +465,7 @@ TEST(GeodesicPath, FlatJitteredSquareIsStraight)
   for (int i = 0; i < 400; ++i)
   {
     const CanonicalPoint a = RandomPoint(mesh, rng), b = RandomPoint(mesh, rng);
-    ASSERT_TRUE(solver.Compute(a, b, path).Ok);
+    ASSERT_TRUE(solver.Compute(a, b, path, traceError));
     ExpectStraight(mesh, a, b, path);
     ExpectLocallyShortest(mesh, path);
     ExpectEdgePointsAwayFromEnds(path);
@@ -475,7 +481,7 @@ TEST(GeodesicPath, RandomInsertionTriangulationIsStraight)
   for (int i = 0; i < 400; ++i)
   {
     const CanonicalPoint a = RandomPoint(mesh, rng), b = RandomPoint(mesh, rng);
-    ASSERT_TRUE(solver.Compute(a, b, path).Ok);
+    ASSERT_TRUE(solver.Compute(a, b, path, traceError));
     ExpectStraight(mesh, a, b, path);
   }
 }
@@ -497,7 +503,7 @@ TEST(GeodesicPath, ManyFlatJitteredSquaresAreStraight)
       for (int i = 0; i < 150; ++i)
       {
         const CanonicalPoint a = RandomPoint(mesh, rng), b = RandomPoint(mesh, rng);
-        ASSERT_TRUE(solver.Compute(a, b, path).Ok);
+        ASSERT_TRUE(solver.Compute(a, b, path, traceError));
         SCOPED_TRACE("n " + std::to_string(n) + " seed " + std::to_string(seed) + " pair " +
           std::to_string(i));
         ExpectStraight(mesh, a, b, path);
@@ -524,7 +530,7 @@ TEST(GeodesicPath, FoldedFlatSquareRegression)
   GeodesicPathSolver solver(mesh);
   GeodesicPath path;
   const CanonicalPoint a = LocateFlat(mesh, 0.1, 0.15), b = LocateFlat(mesh, 0.8, 0.3);
-  ASSERT_TRUE(solver.Compute(a, b, path).Ok);
+  ASSERT_TRUE(solver.Compute(a, b, path, traceError));
   ExpectStraight(mesh, a, b, path);
   const double straight = std::hypot(0.7, 0.15);
   EXPECT_NEAR(path.Length, straight, 1e-12 * straight);
@@ -541,19 +547,19 @@ TEST(GeodesicPath, AlongGridLinesThroughVertices)
   GeodesicPathSolver solver(mesh);
   GeodesicPath path;
   auto id = [&](int i, int j) { return j * (n + 1) + i; };
-  ASSERT_TRUE(solver.Compute(VertexPoint(id(0, 3)), VertexPoint(id(n, 3)), path).Ok);
+  ASSERT_TRUE(solver.Compute(VertexPoint(id(0, 3)), VertexPoint(id(n, 3)), path, traceError));
   ExpectStraight(mesh, VertexPoint(id(0, 3)), VertexPoint(id(n, 3)), path);
   ASSERT_EQ(path.Points.size(), static_cast<size_t>(n + 1));
   for (int i = 0; i <= n; ++i)
   {
     EXPECT_TRUE(path.Points[i] == VertexPoint(id(i, 3))) << Describe(path.Points[i]);
   }
-  ASSERT_TRUE(solver.Compute(VertexPoint(id(1, 1)), VertexPoint(id(6, 6)), path).Ok);
+  ASSERT_TRUE(solver.Compute(VertexPoint(id(1, 1)), VertexPoint(id(6, 6)), path, traceError));
   ExpectStraight(mesh, VertexPoint(id(1, 1)), VertexPoint(id(6, 6)), path);
   EXPECT_EQ(path.Points.size(), 6u);
   // Vertical line x = 2: crosses the diagonals (a-c) in their interior? No: it runs along the
   // vertical edges, through vertices.
-  ASSERT_TRUE(solver.Compute(VertexPoint(id(2, 0)), VertexPoint(id(2, n)), path).Ok);
+  ASSERT_TRUE(solver.Compute(VertexPoint(id(2, 0)), VertexPoint(id(2, n)), path, traceError));
   EXPECT_EQ(path.Points.size(), static_cast<size_t>(n + 1));
   ExpectStraight(mesh, VertexPoint(id(2, 0)), VertexPoint(id(2, n)), path);
 }
@@ -564,11 +570,11 @@ TEST(GeodesicPath, SameTriangleSameEdgeSamePoint)
   GeodesicPathSolver solver(mesh);
   GeodesicPath path;
   const CanonicalPoint a = FacePoint(5, 0.2, 0.3), b = FacePoint(5, 0.6, 0.1);
-  ASSERT_TRUE(solver.Compute(a, b, path).Ok);
+  ASSERT_TRUE(solver.Compute(a, b, path, traceError));
   ASSERT_EQ(path.Points.size(), 2u);
   ExpectStraight(mesh, a, b, path);
   // Two points of one edge.
-  ASSERT_TRUE(solver.Compute(EdgePoint(7, 0.2), EdgePoint(7, 0.9), path).Ok);
+  ASSERT_TRUE(solver.Compute(EdgePoint(7, 0.2), EdgePoint(7, 0.9), path, traceError));
   ASSERT_EQ(path.Points.size(), 2u);
   EXPECT_NEAR(path.Length,
     0.7 *
@@ -577,15 +583,15 @@ TEST(GeodesicPath, SameTriangleSameEdgeSamePoint)
     1e-14);
   // A vertex and a point of an incident triangle.
   const int v = mesh.GetTriangle(5)[1];
-  ASSERT_TRUE(solver.Compute(VertexPoint(v), a, path).Ok);
+  ASSERT_TRUE(solver.Compute(VertexPoint(v), a, path, traceError));
   ASSERT_EQ(path.Points.size(), 2u);
   // Same point: one point, zero length.
-  ASSERT_TRUE(solver.Compute(a, a, path).Ok);
+  ASSERT_TRUE(solver.Compute(a, a, path, traceError));
   EXPECT_EQ(path.Points.size(), 1u);
   EXPECT_EQ(path.Length, 0.0);
   // Edge point at t = 0 is the vertex.
   const int e0 = mesh.GetEdgeVertices(7)[0];
-  ASSERT_TRUE(solver.Compute(EdgePoint(7, 0.0), VertexPoint(e0), path).Ok);
+  ASSERT_TRUE(solver.Compute(EdgePoint(7, 0.0), VertexPoint(e0), path, traceError));
   EXPECT_EQ(path.Points.size(), 1u);
 }
 
@@ -598,7 +604,7 @@ TEST(GeodesicPath, PointAlongPathOnFlatMesh)
   for (int i = 0; i < 100; ++i)
   {
     const CanonicalPoint a = RandomPoint(mesh, rng), b = RandomPoint(mesh, rng);
-    ASSERT_TRUE(solver.Compute(a, b, path).Ok);
+    ASSERT_TRUE(solver.Compute(a, b, path, traceError));
     for (double t : { 0.0, 0.25, 0.5, 0.9, 1.0 })
     {
       const Vec3 expected = (1 - t) * PositionOf(mesh, a) + t * PositionOf(mesh, b);
@@ -631,7 +637,7 @@ TEST(GeodesicPath, CylinderMatchesUnfoldedLine)
       continue;
     }
     const double expected = prism.ShortestLength(pa, pb);
-    ASSERT_TRUE(solver.Compute(a, b, path).Ok);
+    ASSERT_TRUE(solver.Compute(a, b, path, traceError));
     EXPECT_NEAR(path.Length, expected, 1e-9 * std::max(1.0, expected))
       << Describe(a) << " -> " << Describe(b);
     ExpectConsecutivePointsShareATriangle(mesh, path);
@@ -664,7 +670,7 @@ TEST(GeodesicPath, PrismNearOppositePairsAreShortest)
       continue;
     }
     const double expected = prism.ShortestLength(pa, pb);
-    ASSERT_TRUE(solver.Compute(a, b, path).Ok);
+    ASSERT_TRUE(solver.Compute(a, b, path, traceError));
     EXPECT_TRUE(solver.GetLastStatistics().Exact);
     EXPECT_NEAR(path.Length, expected, 1e-9 * expected) << Describe(a) << " -> " << Describe(b);
     ExpectConsecutivePointsShareATriangle(mesh, path);
@@ -690,8 +696,8 @@ TEST(GeodesicPath, WindowBudgetFallsBackToLocallyShortest)
   for (int i = 0; i < 40; ++i)
   {
     const CanonicalPoint p = RandomPoint(mesh, rng), q = RandomPoint(mesh, rng);
-    ASSERT_TRUE(exact.Compute(p, q, a).Ok);
-    ASSERT_TRUE(budgeted.Compute(p, q, b).Ok);
+    ASSERT_TRUE(exact.Compute(p, q, a, traceError));
+    ASSERT_TRUE(budgeted.Compute(p, q, b, traceError));
     EXPECT_TRUE(exact.GetLastStatistics().Exact);
     ExpectConsecutivePointsShareATriangle(mesh, b);
     EXPECT_GE(b.Length, a.Length * (1 - 1e-12));
@@ -739,7 +745,7 @@ TEST(GeodesicPath, BoxLateralMatchesUnfoldedLine)
     {
       continue; // keep clear of the cut-locus where two unrollings compete
     }
-    ASSERT_TRUE(solver.Compute(p, q, path).Ok);
+    ASSERT_TRUE(solver.Compute(p, q, path, traceError));
     EXPECT_NEAR(path.Length, Length(d), 1e-9 * std::max(1.0, Length(d)))
       << Describe(p) << " -> " << Describe(q);
     ExpectConsecutivePointsShareATriangle(mesh, path);
@@ -761,7 +767,7 @@ TEST(GeodesicPath, SphereConvergesToGreatCircle)
     for (size_t i = 0; i < pairs.size(); ++i)
     {
       const auto [a, b] = pairs[i];
-      ASSERT_TRUE(solver.Compute(VertexPoint(a), VertexPoint(b), path).Ok);
+      ASSERT_TRUE(solver.Compute(VertexPoint(a), VertexPoint(b), path, traceError));
       const double exact = std::acos(Dot(mesh.GetPosition(a), mesh.GetPosition(b)));
       const double error = std::abs(path.Length - exact) / exact;
       EXPECT_LT(error, previous[i]) << "level " << level << " pair " << a << "-" << b;
@@ -798,7 +804,7 @@ TEST(GeodesicPath, LocallyShortestOnCurvedMeshes)
     for (int i = 0; i < 150; ++i)
     {
       const CanonicalPoint a = RandomPoint(mesh, rng), b = RandomPoint(mesh, rng);
-      ASSERT_TRUE(solver.Compute(a, b, path).Ok);
+      ASSERT_TRUE(solver.Compute(a, b, path, traceError));
       ExpectLocallyShortest(mesh, path);
       ExpectConsecutivePointsShareATriangle(mesh, path);
       EXPECT_NEAR(path.Length, PolylineLength(mesh, path.Points), 1e-12);
@@ -808,7 +814,7 @@ TEST(GeodesicPath, LocallyShortestOnCurvedMeshes)
       {
         const int va = static_cast<int>(rng() % mesh.GetNumberOfVertices());
         const int vb = static_cast<int>(rng() % mesh.GetNumberOfVertices());
-        ASSERT_TRUE(solver.Compute(VertexPoint(va), VertexPoint(vb), path).Ok);
+        ASSERT_TRUE(solver.Compute(VertexPoint(va), VertexPoint(vb), path, traceError));
         EXPECT_LE(path.Length, EdgePathLength(mesh, va, vb) * (1 + 1e-12))
           << "mesh " << m << ": " << va << " -> " << vb;
         ExpectLocallyShortest(mesh, path);
@@ -841,7 +847,7 @@ void ExpectNeverLongerThanEdgePaths(const TriangleMesh& mesh,
   for (int i = 0; i < pairs; ++i)
   {
     const CanonicalPoint a = RandomPoint(mesh, rng), b = RandomPoint(mesh, rng);
-    ASSERT_TRUE(solver.Compute(a, b, path).Ok);
+    ASSERT_TRUE(solver.Compute(a, b, path, traceError));
     const double edgePath = EdgePathLength(mesh, a, b);
     EXPECT_LE(path.Length, edgePath * (1 + 1e-12) + 1e-14)
       << Describe(a) << " -> " << Describe(b) << " (pair " << i << ")";
@@ -896,7 +902,7 @@ TEST(GeodesicPath, LandmarksOnSeveralComponents)
   for (int i = 0; i < 300; ++i)
   {
     const CanonicalPoint a = RandomPoint(mesh, rng), b = RandomPoint(mesh, rng);
-    if (!solver.Compute(a, b, path).Ok)
+    if (!solver.Compute(a, b, path, traceError))
     {
       continue; // different components: a named error (tested elsewhere)
     }
@@ -961,7 +967,7 @@ TEST(GeodesicPath, StaysOnSurfaceAroundBoundaryCorner)
   auto id = [&](int i, int j) { return j * (n + 1) + i; };
   const int from = id(10, 3), to = id(3, 10), corner = id(5, 5);
   GeodesicPath path;
-  ASSERT_TRUE(solver.Compute(VertexPoint(from), VertexPoint(to), path).Ok);
+  ASSERT_TRUE(solver.Compute(VertexPoint(from), VertexPoint(to), path, traceError));
   const double expected = Distance(mesh.GetPosition(from), mesh.GetPosition(corner)) +
     Distance(mesh.GetPosition(corner), mesh.GetPosition(to));
   EXPECT_NEAR(path.Length, expected, 1e-12);
@@ -973,7 +979,7 @@ TEST(GeodesicPath, StaysOnSurfaceAroundBoundaryCorner)
   EXPECT_TRUE(throughCorner);
   ExpectConsecutivePointsShareATriangle(mesh, path);
   // Along the boundary itself.
-  ASSERT_TRUE(solver.Compute(VertexPoint(id(10, 5)), VertexPoint(id(5, 10)), path).Ok);
+  ASSERT_TRUE(solver.Compute(VertexPoint(id(10, 5)), VertexPoint(id(5, 10)), path, traceError));
   EXPECT_NEAR(path.Length, 1.0, 1e-12);
 }
 
@@ -995,17 +1001,17 @@ TEST(GeodesicPath, DifferentComponentsIsANamedError)
   GeodesicPathSolver solver(mesh);
   EXPECT_EQ(solver.GetNumberOfComponents(), 2);
   GeodesicPath path;
-  const TraceStatus status =
-    solver.Compute(FacePoint(2, 0.2, 0.2), FacePoint(firstOfB + 3, 0.3, 0.3), path);
-  EXPECT_FALSE(status.Ok);
-  EXPECT_NE(status.Message.find("different connected components"), std::string::npos);
-  EXPECT_NE(status.Message.find("triangle 2, component 0"), std::string::npos) << status.Message;
-  EXPECT_NE(status.Message.find("triangle " + std::to_string(firstOfB + 3) + ", component 1"),
+  const bool traced =
+    solver.Compute(FacePoint(2, 0.2, 0.2), FacePoint(firstOfB + 3, 0.3, 0.3), path, traceError);
+  EXPECT_FALSE(traced);
+  EXPECT_NE(traceError.find("different connected components"), std::string::npos);
+  EXPECT_NE(traceError.find("triangle 2, component 0"), std::string::npos) << traceError;
+  EXPECT_NE(traceError.find("triangle " + std::to_string(firstOfB + 3) + ", component 1"),
     std::string::npos)
-    << status.Message;
+    << traceError;
   EXPECT_TRUE(path.Points.empty());
   // And the solver still works afterwards.
-  EXPECT_TRUE(solver.Compute(FacePoint(2, 0.2, 0.2), FacePoint(5, 0.3, 0.3), path).Ok);
+  EXPECT_TRUE(solver.Compute(FacePoint(2, 0.2, 0.2), FacePoint(5, 0.3, 0.3), path, traceError));
 }
 
 TEST(GeodesicPath, InvalidPointsAreNamedErrors)
@@ -1013,18 +1019,18 @@ TEST(GeodesicPath, InvalidPointsAreNamedErrors)
   const TriangleMesh mesh = ToMesh(MakeFlatSquare(3));
   GeodesicPathSolver solver(mesh);
   GeodesicPath path;
-  TraceStatus s = solver.Compute(FacePoint(99, 0.1, 0.1), FacePoint(0, 0.1, 0.1), path);
-  EXPECT_FALSE(s.Ok);
-  EXPECT_EQ(s.Message, "start point: triangle id 99 is out of range [0, 18)");
-  s = solver.Compute(FacePoint(0, 0.1, 0.1), FacePoint(1, std::nan(""), 0.1), path);
-  EXPECT_FALSE(s.Ok);
-  EXPECT_NE(s.Message.find("end point: barycentric coordinates"), std::string::npos);
-  EXPECT_NE(s.Message.find("not finite"), std::string::npos);
-  s = solver.Compute(VertexPoint(-1), FacePoint(0, 0.1, 0.1), path);
-  EXPECT_EQ(s.Message, "start point: vertex id -1 is out of range [0, 16)");
-  s = solver.Compute(EdgePoint(1000, 0.5), FacePoint(0, 0.1, 0.1), path);
-  EXPECT_FALSE(s.Ok);
-  EXPECT_NE(s.Message.find("edge id 1000 is out of range"), std::string::npos);
-  s = solver.Compute(SurfacePoint{ -3, 0.1, 0.1 }, SurfacePoint{ 0, 0.1, 0.1 }, path);
-  EXPECT_EQ(s.Message, "start point: triangle id -3 is out of range [0, 18)");
+  bool s = solver.Compute(FacePoint(99, 0.1, 0.1), FacePoint(0, 0.1, 0.1), path, traceError);
+  EXPECT_FALSE(s);
+  EXPECT_EQ(traceError, "start point: triangle id 99 is out of range [0, 18)");
+  s = solver.Compute(FacePoint(0, 0.1, 0.1), FacePoint(1, std::nan(""), 0.1), path, traceError);
+  EXPECT_FALSE(s);
+  EXPECT_NE(traceError.find("end point: barycentric coordinates"), std::string::npos);
+  EXPECT_NE(traceError.find("not finite"), std::string::npos);
+  s = solver.Compute(VertexPoint(-1), FacePoint(0, 0.1, 0.1), path, traceError);
+  EXPECT_EQ(traceError, "start point: vertex id -1 is out of range [0, 16)");
+  s = solver.Compute(EdgePoint(1000, 0.5), FacePoint(0, 0.1, 0.1), path, traceError);
+  EXPECT_FALSE(s);
+  EXPECT_NE(traceError.find("edge id 1000 is out of range"), std::string::npos);
+  s = solver.Compute(SurfacePoint{ -3, 0.1, 0.1 }, SurfacePoint{ 0, 0.1, 0.1 }, path, traceError);
+  EXPECT_EQ(traceError, "start point: triangle id -3 is out of range [0, 18)");
 }

@@ -90,15 +90,15 @@ TEST(ParallelTracing, SameCurvesAsOneByOne)
     single.GetPathSolver().SetOptions(options);
     single.SetKeepWrittenForms(true);
     std::vector<CurveTrace> expected(drawing.Requests.size());
-    std::vector<TraceStatus> expectedStatus;
+    std::vector<std::string> expectedErrors(drawing.Requests.size());
     int routed = 0;
     for (std::size_t c = 0; c < drawing.Requests.size(); ++c)
     {
       const ControlCurve& r = *drawing.Requests[c];
-      expectedStatus.push_back(single.Trace(r.Points, r.Type, r.Closed, expected[c], r.CurveId));
+      single.Trace(r.Points, r.Type, r.Closed, expected[c], expectedErrors[c], r.CurveId);
       routed += single.GetPathSolver().GetLastStatistics().Routed;
     }
-    ASSERT_FALSE(expectedStatus[10].Ok);
+    ASSERT_FALSE(expectedErrors[10].empty());
     if (method == GeodesicMethod::Bounded)
     {
       EXPECT_GT(routed, 0) << "no curve's last leg was routed: the budget is too large";
@@ -109,12 +109,12 @@ TEST(ParallelTracing, SameCurvesAsOneByOne)
       parallel.GetPathSolver().SetOptions(options);
       parallel.SetKeepWrittenForms(true);
       std::vector<CurveTrace> traces;
-      std::vector<TraceStatus> statuses;
+      std::vector<std::string> errors;
       int calls = 0;
       parallel.TraceCurves(drawing.Requests,
         threads,
         traces,
-        statuses,
+        errors,
         [&](double fraction)
         {
           EXPECT_GT(fraction, 0.0);
@@ -126,17 +126,17 @@ TEST(ParallelTracing, SameCurvesAsOneByOne)
       ASSERT_EQ(traces.size(), expected.size());
       for (std::size_t c = 0; c < expected.size(); ++c)
       {
-        ASSERT_EQ(statuses[c].Ok, expectedStatus[c].Ok) << "curve " << c;
-        EXPECT_EQ(statuses[c].Message, expectedStatus[c].Message);
+        ASSERT_EQ(errors[c].empty(), expectedErrors[c].empty()) << "curve " << c;
+        EXPECT_EQ(errors[c], expectedErrors[c]);
         ExpectSameTrace(traces[c], expected[c], static_cast<int>(c));
         EXPECT_EQ(traces[c].Written.size(), expected[c].Written.size());
       }
       // The next update recalls every curve traced, and traces the broken one again.
       parallel.StartPass();
       std::vector<CurveTrace> again;
-      parallel.TraceCurves(drawing.Requests, threads, again, statuses);
+      parallel.TraceCurves(drawing.Requests, threads, again, errors);
       EXPECT_EQ(parallel.GetRecalledCurves(), drawing.Requests.size() - 1);
-      EXPECT_FALSE(statuses[10].Ok);
+      EXPECT_FALSE(errors[10].empty());
       for (std::size_t c = 0; c < expected.size(); ++c)
       {
         ExpectSameTrace(again[c], expected[c], static_cast<int>(c));
@@ -152,14 +152,13 @@ TEST(ParallelTracing, StopsWhenAsked)
   const Drawing drawing = RandomDrawing(mesh, 12, 3);
   CurveTracer tracer(mesh);
   std::vector<CurveTrace> traces;
-  std::vector<TraceStatus> statuses;
-  tracer.TraceCurves(drawing.Requests, 1, traces, statuses, [](double) { return false; });
+  std::vector<std::string> errors;
+  tracer.TraceCurves(drawing.Requests, 1, traces, errors, [](double) { return false; });
   // The first curve is traced, then the tracing stops: the others fail, named.
-  EXPECT_TRUE(statuses[0].Ok);
-  for (std::size_t c = 1; c < statuses.size(); ++c)
+  EXPECT_TRUE(errors[0].empty());
+  for (std::size_t c = 1; c < errors.size(); ++c)
   {
-    EXPECT_FALSE(statuses[c].Ok);
-    EXPECT_NE(statuses[c].Message.find("curve " + std::to_string(100 + c)), std::string::npos)
-      << statuses[c].Message;
+    EXPECT_FALSE(errors[c].empty());
+    EXPECT_NE(errors[c].find("curve " + std::to_string(100 + c)), std::string::npos) << errors[c];
   }
 }

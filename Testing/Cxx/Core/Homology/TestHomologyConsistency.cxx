@@ -20,6 +20,12 @@ using namespace boolsurf;
 
 namespace
 {
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
+
+namespace
+{
 
 // Traces a closed geodesic polygon through points strictly inside triangles (generic
 // positions: curves of different shapes do not run along the same mesh edges).
@@ -30,7 +36,7 @@ bool TraceThrough(CurveTracer& tracer,
   TracedCurve& out)
 {
   CurveTrace trace;
-  if (!tracer.Trace(points, CurveType::GeodesicPolygon, true, trace, id).Ok)
+  if (!tracer.Trace(points, CurveType::GeodesicPolygon, true, trace, traceError, id))
   {
     return false;
   }

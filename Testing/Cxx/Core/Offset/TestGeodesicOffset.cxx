@@ -31,6 +31,12 @@ using namespace boolsurf;
 
 namespace
 {
+/// The message of the last failed trace or path (a test reads it only after a failure).
+std::string traceError;
+}
+
+namespace
+{
 constexpr double Pi = 3.14159265358979323846;
 
 TriangleMesh MeshOf(const MeshData& d)
@@ -403,7 +409,7 @@ bool TraceLatitudeCircle(const TriangleMesh& mesh,
     const Vec3 x{ std::sin(theta) * std::cos(a), std::sin(theta) * std::sin(a), std::cos(theta) };
     control.push_back(NearestSurfacePoint(mesh, x));
   }
-  return tracer.Trace(control, CurveType::GeodesicPolygon, true, trace).Ok;
+  return tracer.Trace(control, CurveType::GeodesicPolygon, true, trace, traceError);
 }
 } // namespace
 
@@ -586,7 +592,7 @@ TEST(GeodesicOffset, AGrowingFrontThatClosesAroundAHandle)
     control.push_back(PointInTriangle(mesh, best, x));
   }
   CurveTrace trace;
-  ASSERT_TRUE(tracer.Trace(control, CurveType::GeodesicPolygon, true, trace).Ok);
+  ASSERT_TRUE(tracer.Trace(control, CurveType::GeodesicPolygon, true, trace, traceError));
   const Labeled disc = Label(mesh, topology, { trace.Curve });
   OffsetOptions options;
   options.Distance = 1.2; // half the girth is pi r = 0.94
@@ -1246,7 +1252,7 @@ bool TraceLatitudeArc(const TriangleMesh& mesh,
     };
     control.push_back(NearestSurfacePoint(mesh, x));
   }
-  return tracer.Trace(control, CurveType::GeodesicPolygon, false, trace).Ok;
+  return tracer.Trace(control, CurveType::GeodesicPolygon, false, trace, traceError);
 }
 
 Vec3 Normalized(const Vec3& v)

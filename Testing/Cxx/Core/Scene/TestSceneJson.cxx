@@ -18,21 +18,19 @@ namespace
 SceneModel Parse(const std::string& text, const SceneParseOptions& options = {})
 {
   std::istringstream in(text);
-  return ParseSceneJson(in, options);
+  SceneModel scene;
+  std::string error;
+  EXPECT_TRUE(ParseSceneJson(in, scene, error, options)) << error;
+  return scene;
 }
 
-/// The message of the SceneError that parsing `text` throws ("" when it throws none).
+/// The message of parsing `text` ("" when it reads).
 std::string ErrorOf(const std::string& text, const SceneParseOptions& options = {})
 {
-  try
-  {
-    Parse(text, options);
-  }
-  catch (const SceneError& e)
-  {
-    return e.what();
-  }
-  return "";
+  std::istringstream in(text);
+  SceneModel scene;
+  std::string error;
+  return ParseSceneJson(in, scene, error, options) ? "" : error;
 }
 
 const char* Scene = R"({
@@ -182,12 +180,13 @@ TEST(SceneJson, FaceOutOfRangeAndTheOrderOfChecks)
 {
   int calls = 0;
   SceneParseOptions options;
-  options.FindMesh = [&](const SceneModel& scene)
+  options.FindMesh = [&](const SceneModel& scene, SceneMeshInfo& mesh, std::string&)
   {
     ++calls;
     EXPECT_EQ(scene.Model, "m.ply");
     EXPECT_TRUE(scene.Points.empty());
-    return SceneMeshInfo{ 4, "meshes/m.ply" };
+    mesh = SceneMeshInfo{ 4, "meshes/m.ply" };
+    return true;
   };
   // Point 1's face (written 1E2) is out of range; point 2's uv is bad too: the face comes first.
   const std::string text = R"({"model": "m.ply", "points": [{"face": 3, "uv": [0.1, 0.1]},
@@ -207,24 +206,22 @@ TEST(SceneJson, FaceOutOfRangeAndTheOrderOfChecks)
   EXPECT_EQ(ErrorOf(R"({"model": "m.ply", "points": [], "polygons": [[0, 1]]})", options),
     "'polygons'[0][0] names point 0, but the scene has 0 points");
   EXPECT_EQ(calls, 0);
-  options.FindMesh = [](const SceneModel&) -> SceneMeshInfo { throw SceneError("no mesh"); };
+  options.FindMesh = [](const SceneModel&, SceneMeshInfo&, std::string& error)
+  {
+    error = "no mesh";
+    return false;
+  };
   EXPECT_EQ(ErrorOf(text, options), "no mesh");
 
   // Checked later on the parsed model, with the same message.
   const SceneModel s = Parse(R"({"model": "m.ply", "points": [{"face": 3, "uv": [0.1, 0.1]},
     {"face": 1E2, "uv": [0.1, 0.1]}], "polygons": [[0, 1]]})");
-  try
-  {
-    CheckSceneFaces(s, 4, "meshes/m.ply");
-    ADD_FAILURE() << "face 100 of 4 triangles accepted";
-  }
-  catch (const SceneError& e)
-  {
-    EXPECT_STREQ(e.what(),
-      "'points'[1].face = 1E2 is out of range: mesh meshes/m.ply has 4 "
-      "triangles");
-  }
-  EXPECT_NO_THROW(CheckSceneFaces(s, 101, "meshes/m.ply"));
+  std::string error;
+  EXPECT_FALSE(CheckSceneFaces(s, 4, "meshes/m.ply", error)) << "face 100 of 4 triangles accepted";
+  EXPECT_EQ(error,
+    "'points'[1].face = 1E2 is out of range: mesh meshes/m.ply has 4 "
+    "triangles");
+  EXPECT_TRUE(CheckSceneFaces(s, 101, "meshes/m.ply", error));
 }
 
 TEST(SceneJson, LooksLikeScene)

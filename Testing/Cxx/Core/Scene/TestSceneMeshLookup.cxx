@@ -25,6 +25,18 @@ fs::path Scratch()
     "boolsurf-scene-lookup-", { "repo/scenes", "repo/meshes", "other" });
   return dir.Path;
 }
+
+/// FindSceneMesh's mesh (empty, and a failure, when it finds none).
+fs::path Found(const fs::path& scene,
+  const std::string& override,
+  const std::string& model,
+  const std::string& searchPath)
+{
+  fs::path mesh;
+  std::string error;
+  EXPECT_TRUE(FindSceneMesh(scene, override, model, searchPath, mesh, error)) << error;
+  return mesh;
+}
 } // namespace
 
 TEST(SceneMeshLookup, PathsAndSearchPath)
@@ -45,33 +57,27 @@ TEST(SceneMeshLookup, FindsTheRenamedCopyBesideAnAncestor)
 {
   const fs::path scene = Scratch() / "repo" / "scenes" / "s.json";
   std::ofstream(Scratch() / "repo" / "meshes" / "bunny_boolsurf.ply") << "ply\n";
-  EXPECT_EQ(FindSceneMesh(scene, "", ".\\data\\bunny.ply", ""),
+  EXPECT_EQ(Found(scene, "", ".\\data\\bunny.ply", ""),
     (Scratch() / "repo" / "meshes" / "bunny_boolsurf.ply").lexically_normal());
   // The model below an ancestor comes first, then the search path.
   fs::create_directories(Scratch() / "repo" / "data");
   std::ofstream(Scratch() / "repo" / "data" / "bunny.ply") << "ply\n";
-  EXPECT_EQ(FindSceneMesh(scene, "", "./data/bunny.ply", ""),
+  EXPECT_EQ(Found(scene, "", "./data/bunny.ply", ""),
     (Scratch() / "repo" / "data" / "bunny.ply").lexically_normal());
   std::ofstream(Scratch() / "other" / "cube.ply") << "ply\n";
-  EXPECT_EQ(
-    FindSceneMesh(scene, "", "data/cube.ply", "/nonexistent:" + Scratch().string() + "/other"),
+  EXPECT_EQ(Found(scene, "", "data/cube.ply", "/nonexistent:" + Scratch().string() + "/other"),
     (Scratch() / "other" / "cube.ply").lexically_normal());
 
-  try
-  {
-    FindSceneMesh(scene, "", "./data/nowhere.ply", "");
-    ADD_FAILURE() << "a mesh that is nowhere was found";
-  }
-  catch (const SceneError& e)
-  {
-    const std::string message = e.what();
-    EXPECT_EQ(message.rfind("mesh './data/nowhere.ply' not found (set MeshFileName or "
-                            "MeshSearchPath); looked for:\n  ",
-                0),
-      0u)
-      << message;
-    EXPECT_NE(message.find((Scratch() / "repo" / "scenes" / "data" / "nowhere.ply").string()),
-      std::string::npos)
-      << message;
-  }
+  fs::path mesh;
+  std::string message;
+  EXPECT_FALSE(FindSceneMesh(scene, "", "./data/nowhere.ply", "", mesh, message))
+    << "a mesh that is nowhere was found";
+  EXPECT_EQ(message.rfind("mesh './data/nowhere.ply' not found (set MeshFileName or "
+                          "MeshSearchPath); looked for:\n  ",
+              0),
+    0u)
+    << message;
+  EXPECT_NE(message.find((Scratch() / "repo" / "scenes" / "data" / "nowhere.ply").string()),
+    std::string::npos)
+    << message;
 }

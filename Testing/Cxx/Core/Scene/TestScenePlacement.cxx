@@ -21,7 +21,10 @@ namespace
 SceneModel Parse(const std::string& text)
 {
   std::istringstream in(text);
-  return ParseSceneJson(in);
+  SceneModel scene;
+  std::string error;
+  EXPECT_TRUE(ParseSceneJson(in, scene, error)) << error;
+  return scene;
 }
 
 /// Twice the signed area of a polygon's points (x, y), counter-clockwise positive.
@@ -46,7 +49,8 @@ TEST(ScenePlacement, PointsAtTheirBarycentricPositionAfterClamping)
   SceneModel s = Parse(R"({"model": "m.ply", "points": [{"face": 0, "uv": [0.25, 0.5]},
     {"face": 1, "uv": [-5e-7, 0.5]}, {"face": 1, "uv": [0.6000004, 0.4]}],
     "polygons": [[0, 1, 2]]})");
-  PlaceScenePoints(s, mesh, "m.ply");
+  std::string error;
+  ASSERT_TRUE(PlaceScenePoints(s, mesh, "m.ply", error)) << error;
   EXPECT_EQ(s.Points[0].Position.x, 0.25 * 2);
   EXPECT_EQ(s.Points[0].Position.y, 0.5 * 4);
   EXPECT_EQ(s.Points[0].Position.z, 0.5 * 1);
@@ -63,17 +67,11 @@ TEST(ScenePlacement, PointsAtTheirBarycentricPositionAfterClamping)
   // A face beyond the mesh is an error quoting it as written.
   SceneModel far = Parse(R"({"model": "m.ply", "points": [{"face": 2.0, "uv": [0.1, 0.1]}],
     "polygons": [[0, 0]]})");
-  try
-  {
-    PlaceScenePoints(far, mesh, "dir/m.ply");
-    ADD_FAILURE() << "face 2 of a 2-triangle mesh placed";
-  }
-  catch (const SceneError& e)
-  {
-    EXPECT_STREQ(e.what(),
-      "'points'[0].face = 2.0 is out of range: mesh dir/m.ply has 2 "
-      "triangles");
-  }
+  EXPECT_FALSE(PlaceScenePoints(far, mesh, "dir/m.ply", error))
+    << "face 2 of a 2-triangle mesh placed";
+  EXPECT_EQ(error,
+    "'points'[0].face = 2.0 is out of range: mesh dir/m.ply has 2 "
+    "triangles");
 }
 
 // MakeFlatSquare(n) is the grid the reader made: vertex (i, j) at exactly (i / n, j / n),
@@ -150,7 +148,9 @@ TEST(ScenePlacement, ScreenSpaceNormalisedOrientedAndOnTheGrid)
   SceneModel s = Parse(R"({"screenspace": true,
     "polygons": [[], [[0, 0], [10, 0], [10, 10], [0, 10]], [[2, 2], [8, 3]]],
     "are_closed": [true, true, false]})");
-  const MeshData grid = PlaceScreenSpaceScene(s, 8);
+  MeshData grid;
+  std::string error;
+  ASSERT_TRUE(PlaceScreenSpaceScene(s, 8, grid, error)) << error;
   EXPECT_EQ(grid.Triangles.size(), 2u * 8 * 8);
   ASSERT_EQ(s.Points.size(), 6u);
   ASSERT_EQ(s.Polygons.size(), 2u);
@@ -201,7 +201,9 @@ TEST(ScenePlacement, ScreenSpaceKeepsTheAspectRatioAndCentres)
 {
   // 40 wide, 10 high: x spans [0.1, 0.9], y the middle 0.2 of it around 0.5.
   SceneModel s = Parse(R"({"screenspace": true, "polygons": [[[100, 5], [140, 5], [140, 15]]]})");
-  PlaceScreenSpaceScene(s, 4);
+  MeshData grid;
+  std::string error;
+  ASSERT_TRUE(PlaceScreenSpaceScene(s, 4, grid, error)) << error;
   double ylo = 1, yhi = 0, xlo = 1, xhi = 0;
   for (const ScenePoint& p : s.Points)
   {
