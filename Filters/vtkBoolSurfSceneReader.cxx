@@ -175,7 +175,7 @@ vtkSmartPointer<vtkPolyData> GridPolyData(const boolsurf::MeshData& grid)
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(grid.Positions.size()));
   vtkNew<vtkDoubleArray> normals;
-  normals->SetName("Normals");
+  normals->SetName(boolsurf::names::Normals);
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(static_cast<vtkIdType>(grid.Positions.size()));
   for (std::size_t i = 0; i < grid.Positions.size(); ++i)
@@ -284,9 +284,9 @@ vtkSmartPointer<vtkPolyData> CurvesPolyData(const boolsurf::SceneModel& scene)
       b.push_back(o.B);
       type.push_back(o.Type);
     }
-    pd->GetFieldData()->AddArray(IntArray("OperationA", a));
-    pd->GetFieldData()->AddArray(IntArray("OperationB", b));
-    pd->GetFieldData()->AddArray(IntArray("OperationType", type));
+    pd->GetFieldData()->AddArray(IntArray(boolsurf::names::OperationA, a));
+    pd->GetFieldData()->AddArray(IntArray(boolsurf::names::OperationB, b));
+    pd->GetFieldData()->AddArray(IntArray(boolsurf::names::OperationType, type));
   }
   return pd;
 }
@@ -415,14 +415,14 @@ int vtkBoolSurfSceneReader::RequestData(vtkInformation*,
   curvesOut->ShallowCopy(curves);
   for (vtkPolyData* pd : { meshOut, curvesOut })
   {
-    AddString(pd->GetFieldData(), "SceneFileName", this->FileName);
+    AddString(pd->GetFieldData(), boolsurf::names::SceneFileName, this->FileName);
     if (!meshFile.empty())
     {
-      AddString(pd->GetFieldData(), "MeshFileName", meshFile);
+      AddString(pd->GetFieldData(), boolsurf::names::MeshFileName, meshFile);
     }
     if (!model.empty())
     {
-      AddString(pd->GetFieldData(), "SceneModel", model);
+      AddString(pd->GetFieldData(), boolsurf::names::SceneModel, model);
     }
   }
   this->UpdateProgress(1.0);

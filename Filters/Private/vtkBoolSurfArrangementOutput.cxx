@@ -318,16 +318,16 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
       arcDirection.push_back(place.Direction);
     }
   }
-  AddField(fd, IntArray("CellGraphArcs", arcs, 2));
-  AddField(fd, IntArray("CellGraphShape", arcShape));
-  AddField(fd, IntArray("CellGraphPatch", arcPatch));
-  AddField(fd, IntArray("CellGraphLocation", arcLocation));
-  AddField(fd, IntArray("CellGraphDirection", arcDirection));
+  AddField(fd, IntArray(boolsurf::names::CellGraphArcs, arcs, 2));
+  AddField(fd, IntArray(boolsurf::names::CellGraphShape, arcShape));
+  AddField(fd, IntArray(boolsurf::names::CellGraphPatch, arcPatch));
+  AddField(fd, IntArray(boolsurf::names::CellGraphLocation, arcLocation));
+  AddField(fd, IntArray(boolsurf::names::CellGraphDirection, arcDirection));
 
   std::vector<int> components = CellComponents(*surface.Mesh, *surface.Topology, arr);
   components.insert(components.end(), plugs.PlugComponent.begin(), plugs.PlugComponent.end());
-  AddField(fd, IntArray("CellComponent", components));
-  AddField(fd, IntArray("ZeroCellCandidates", plugs.ZeroNodes));
+  AddField(fd, IntArray(boolsurf::names::CellComponent, components));
+  AddField(fd, IntArray(boolsurf::names::ZeroCellCandidates, plugs.ZeroNodes));
   fd->AddArray(IntArray(boolsurf::names::NumberOfBoundaryPlugs, { plugs.NumberOfPlugs }));
   std::vector<int> links;
   for (const auto& link : plugs.Links)
@@ -348,13 +348,13 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
     curve.push_back(p.CurveId);
     closed.push_back(p.Closed ? 1 : 0);
   }
-  AddField(fd, IntArray("PatchOffsets", offsets));
-  AddField(fd, IntArray("PatchPoints", pointIds));
-  AddField(fd, IntArray("PatchLeftCell", left));
-  AddField(fd, IntArray("PatchRightCell", right));
-  AddField(fd, IntArray("PatchShape", shape));
-  AddField(fd, IntArray("PatchCurve", curve));
-  AddField(fd, IntArray("PatchClosed", closed));
+  AddField(fd, IntArray(boolsurf::names::PatchOffsets, offsets));
+  AddField(fd, IntArray(boolsurf::names::PatchPoints, pointIds));
+  AddField(fd, IntArray(boolsurf::names::PatchLeftCell, left));
+  AddField(fd, IntArray(boolsurf::names::PatchRightCell, right));
+  AddField(fd, IntArray(boolsurf::names::PatchShape, shape));
+  AddField(fd, IntArray(boolsurf::names::PatchCurve, curve));
+  AddField(fd, IntArray(boolsurf::names::PatchClosed, closed));
 
   vtkNew<vtkDoubleArray> times;
   times->SetName(boolsurf::names::StageTimes);

@@ -76,12 +76,12 @@ void AddSampleFields(const std::vector<PatchSnap>& snaps,
   vtkFieldData* fd = output->GetFieldData();
   vtkNew<vtkIntArray> patch, onBoundary, dropped, cuts;
   vtkNew<vtkDoubleArray> distance, length;
-  patch->SetName("SamplePatch");
-  onBoundary->SetName("SampleOnBoundary");
-  dropped->SetName("DroppedSamples");
-  distance->SetName("SampleDistance");
-  length->SetName("BoundaryLength");
-  cuts->SetName("BSCCuts");
+  patch->SetName(boolsurf::names::SamplePatch);
+  onBoundary->SetName(boolsurf::names::SampleOnBoundary);
+  dropped->SetName(boolsurf::names::DroppedSamples);
+  distance->SetName(boolsurf::names::SampleDistance);
+  length->SetName(boolsurf::names::BoundaryLength);
+  cuts->SetName(boolsurf::names::BSCCuts);
   for (std::size_t k = 0; k < snaps.size(); ++k)
   {
     patch->InsertNextValue(snaps[k].Patch);
@@ -96,7 +96,7 @@ void AddSampleFields(const std::vector<PatchSnap>& snaps,
   length->InsertNextValue(result.BoundaryLength);
   cuts->InsertNextValue(result.Cuts);
   vtkNew<vtkStringArray> selection;
-  selection->SetName("Selection");
+  selection->SetName(boolsurf::names::Selection);
   selection->InsertNextValue("BSC");
   for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{
          patch, distance, onBoundary, dropped, length, cuts, selection })

@@ -175,7 +175,7 @@ bool LabelArrangement(vtkPolyData* input,
     else
     {
       vtkNew<vtkIntArray> shapeLabel;
-      shapeLabel->SetName("ShapeLabel");
+      shapeLabel->SetName(boolsurf::names::ShapeLabel);
       shapeLabel->SetNumberOfTuples(nt);
       int* out = shapeLabel->GetPointer(0);
       const int* table = labels.Labels.data();
@@ -186,13 +186,13 @@ bool LabelArrangement(vtkPolyData* input,
       output->GetCellData()->AddArray(shapeLabel);
       // ParaView colors a new display by the active scalars (with the plugin's categorical
       // color map for ShapeLabel).
-      output->GetCellData()->SetActiveScalars("ShapeLabel");
+      output->GetCellData()->SetActiveScalars(boolsurf::names::ShapeLabel);
     }
   }
   if (options.PerTriangleLabels && ns > 0)
   {
     vtkNew<vtkIntArray> perTriangle;
-    perTriangle->SetName("Labels");
+    perTriangle->SetName(boolsurf::names::Labels);
     NameShapeComponents(perTriangle, labels);
     perTriangle->SetNumberOfTuples(nt);
     int* out = perTriangle->GetPointer(0);

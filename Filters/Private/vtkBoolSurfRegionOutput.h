@@ -10,6 +10,7 @@
 #include "Selection/RegionBoundary.h"
 #include "Selection/RegionExtraction.h"
 #include "vtkBoolSurfArrangementOutput.h"
+#include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
 
 #include <vtkCellArray.h>
@@ -62,7 +63,7 @@ void WriteBoundary(const std::vector<BoundaryPolyline>& lines,
   offsets->SetNumberOfTuples(static_cast<vtkIdType>(lines.size()) + 1);
   connectivity->SetNumberOfTuples(cellSize);
   vtkNew<vtkIntArray> closed;
-  closed->SetName("Closed");
+  closed->SetName(boolsurf::names::Closed);
   closed->SetNumberOfTuples(static_cast<vtkIdType>(lines.size()));
   vtkIdType next = 0, slot = 0;
   for (size_t l = 0; l < lines.size(); ++l)

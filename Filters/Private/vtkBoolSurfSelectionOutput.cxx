@@ -1,6 +1,7 @@
 #include "vtkBoolSurfSelectionOutput.h"
 
 #include "Geodesic/GeodesicPath.h"
+#include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfRegionOutput.h"
 #include "vtkBoolSurfStageHandoff.h"
@@ -111,7 +112,7 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
     }
     if (ok)
     {
-      WriteControlSubCurves(buffers.SubCurves, "BoundaryLoop", true, controls);
+      WriteControlSubCurves(buffers.SubCurves, boolsurf::names::BoundaryLoop, true, controls);
       ok =
         ClippedControlCurves(*solver, arr, sources, selected, buffers.SubCurves, cutError, &bezier);
     }
@@ -123,7 +124,7 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
       controls->Initialize();
       return false;
     }
-    WriteControlSubCurves(buffers.SubCurves, "ClippedPiece", false, clipped);
+    WriteControlSubCurves(buffers.SubCurves, boolsurf::names::ClippedPiece, false, clipped);
   }
   if (times)
   {
