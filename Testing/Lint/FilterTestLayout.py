@@ -3,17 +3,17 @@
 
     FilterTestLayout.py <source dir>
 
-Every filter class Filters/vtkBoolSurf<Name>.h has its tests in Testing/Cxx/Filters/<Name>/
-(at least one Test*.cxx), and every folder there names a filter (or one of the folders listed
-below that are not a filter's). The base classes and the names header are not filters: the
-filters' tests exercise them, and ExampleStage/ holds the stage that Docs/Architecture.md walks
-through. A newcomer then finds a filter's tests where its name says, and a new filter without
+Every filter class Filters/vtkBoolSurf<Name>.h (a header declaring its class's static New():
+the base classes, the names header and the settings macros have none, and the filters' tests
+exercise them) has its tests in Testing/Cxx/Filters/<Name>/ (at least one Test*.cxx), and every
+folder there names a filter (or is ExampleStage/, the stage that Docs/Architecture.md walks
+through). A newcomer then finds a filter's tests where its name says, and a new filter without
 tests fails here.
 """
 import os
+import re
 import sys
 
-NOT_FILTERS = {"Algorithm", "TracingAlgorithm", "ArrayNames"}
 OTHER_FOLDERS = {"ExampleStage"}
 
 
@@ -21,9 +21,10 @@ def main(root):
     filters = set()
     for name in os.listdir(os.path.join(root, "Filters")):
         if name.startswith("vtkBoolSurf") and name.endswith(".h"):
-            stem = name[len("vtkBoolSurf"):-2] or "BoolSurf"
-            if stem not in NOT_FILTERS:
-                filters.add(stem)
+            with open(os.path.join(root, "Filters", name), encoding="utf-8") as f:
+                if not re.search(r"static\s+" + name[:-2] + r"\s*\*\s*New\(\)", f.read()):
+                    continue  # not a filter: a base class, the names, the settings macros
+            filters.add(name[len("vtkBoolSurf"):-2] or "BoolSurf")
     tests = os.path.join(root, "Testing", "Cxx", "Filters")
     folders = {d for d in os.listdir(tests) if os.path.isdir(os.path.join(tests, d))}
     problems = []
