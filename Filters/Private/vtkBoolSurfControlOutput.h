@@ -40,9 +40,6 @@ bool ReadCurveSources(vtkPolyData* traced,
 /// CurveClosed, SourceShapeId, SourceCurveId, Whole).
 void WritePatchControlCurves(const std::vector<ControlSubCurve>& perPatch, vtkFieldData* fd);
 
-/// Reads what WritePatchControlCurves wrote; false when `fd` does not hold it.
-bool ReadPatchControlCurves(vtkFieldData* fd, std::vector<ControlSubCurve>& perPatch);
-
 } // namespace boolsurf
 
 #endif
