@@ -85,14 +85,14 @@ public:
 
   /// Trace() of each curve's points, type and closedness under its CurveId, for every curve of
   /// `curves` (out[c] as Trace() gives it one by one, bit for bit; errors[c] its message, empty
-  /// when the curve traced), on up to `threads` threads (0: all cores). Curves the memory recalls are recalled; the others are
-  /// traced in parallel, by this tracer and helper tracers it keeps on the same mesh with its
-  /// settings, then remembered. A leg's geodesic does not depend on which solver computes it: the
-  /// Bounded and Exact methods are functions of the leg's ends (the surface's site graph and path
-  /// cache are shared and thread-safe). The locally shortest method is not (its edge search breaks
-  /// ties by a landmark table each solver builds lazily), so it traces on this thread only.
-  /// `progress` (may be empty) is called on the calling thread with the fraction done; returning
-  /// false stops the tracing (the curves not traced get a message).
+  /// when the curve traced), on up to `threads` threads (0: all cores). Curves the memory recalls
+  /// are recalled; the others are traced in parallel, by this tracer and helper tracers it keeps on
+  /// the same mesh with its settings, then remembered. A leg's geodesic does not depend on which
+  /// solver computes it: the Bounded and Exact methods are functions of the leg's ends (the
+  /// surface's site graph and path cache are shared and thread-safe). The locally shortest method
+  /// is not (its edge search breaks ties by a landmark table each solver builds lazily), so it
+  /// traces on this thread only. `progress` (may be empty) is called on the calling thread with the
+  /// fraction done; returning false stops the tracing (the curves not traced get a message).
   void TraceCurves(const std::vector<const ControlCurve*>& curves,
     int threads,
     std::vector<CurveTrace>& out,

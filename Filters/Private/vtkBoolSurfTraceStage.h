@@ -3,8 +3,8 @@
 #ifndef vtkBoolSurfTraceStage_h
 #define vtkBoolSurfTraceStage_h
 
-#include "Geodesic/TraceOptions.h"
 #include "Geodesic/CurveTracer.h"
+#include "Geodesic/TraceOptions.h"
 #include "Selection/BoundaryControlPoints.h"
 #include "vtkBoolSurfControlCurves.h"
 #include "vtkBoolSurfSurfaceCache.h"
