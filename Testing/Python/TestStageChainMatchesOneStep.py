@@ -10,26 +10,20 @@ refuse the same inputs and otherwise give the same region: the same points, cell
 import math
 import os
 import random
+import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager as sm
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdTypeArray, vtkIntArray, vtkPoints
+from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkIOPLY import vtkPLYReader
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from stage_chain_helpers import producer, random_curves, same_data, triangles  # noqa: E402
+
 LoadPlugin(os.environ["BOOLSURF_PLUGIN"], remote=False, ns=globals())
 rng = random.Random(26)
-
-
-def triangles(algorithm):
-    tri = vtkTriangleFilter()
-    tri.SetInputConnection(algorithm.GetOutputPort())
-    tri.Update()
-    out = vtkPolyData()
-    out.ShallowCopy(tri.GetOutput())
-    return out
 
 
 def torus(R=1.0, r=0.4, nu=28, nv=12):
@@ -83,91 +77,13 @@ def surfaces():
             yield "%s %s" % (name, label), with_point_type(pd, data_type)
 
 
-def random_curves(surface, form):
-    """2-3 closed polygons of 3-6 points near one place, so that they overlap."""
-    n_cells = surface.GetNumberOfCells()
-    center = [0.0] * 3
-    surface.GetPoint(surface.GetCell(rng.randrange(n_cells)).GetPointId(0), center)
-    bounds = surface.GetBounds()
-    diagonal = math.sqrt(sum((bounds[2 * k + 1] - bounds[2 * k]) ** 2 for k in range(3)))
-    near = []
-    for t in range(n_cells):
-        x = surface.GetPoint(surface.GetCell(t).GetPointId(0))
-        if math.dist(x, center) < 0.25 * diagonal:
-            near.append(t)
-    pd = vtkPolyData()
-    points = vtkPoints()
-    points.SetDataTypeToDouble()
-    polys = vtkCellArray()
-    shape = vtkIntArray()
-    shape.SetName("ShapeId")
-    tri = vtkIdTypeArray()
-    tri.SetName("TriangleId")
-    bary = vtkDoubleArray()
-    bary.SetName("Barycentric")
-    bary.SetNumberOfComponents(2)
-    for s in range(rng.choice((2, 3))):
-        ids = []
-        for _ in range(rng.randrange(3, 7)):
-            t = rng.choice(near)
-            u = 0.05 + 0.9 * rng.random()
-            v = (1 - u) * (0.05 + 0.9 * rng.random())
-            tiny = 10 ** -rng.uniform(12, 16)
-            corner = rng.randrange(3)
-            if form == "near-edge":
-                off = tiny if rng.random() < 0.5 else -tiny
-                along = 0.1 + 0.8 * rng.random()
-                u, v = [(along, 1 - along - off), (off, along), (along, off)][corner]
-            elif form == "near-vertex":
-                a, b = tiny, 10 ** -rng.uniform(12, 16)
-                u, v = [(a, b), (1 - a - b, b), (a, 1 - a - b)][corner]
-            cell = surface.GetCell(t)
-            x = [surface.GetPoint(cell.GetPointId(k)) for k in range(3)]
-            p = [(1 - u - v) * x[0][k] + u * x[1][k] + v * x[2][k] for k in range(3)]
-            ids.append(points.InsertNextPoint(p))
-            tri.InsertNextValue(t)
-            bary.InsertNextTuple2(u, v)
-        polys.InsertNextCell(len(ids), ids)
-        shape.InsertNextValue(s)
-    pd.SetPoints(points)
-    pd.SetPolys(polys)
-    pd.GetCellData().AddArray(shape)
-    if form != "coordinates":
-        pd.GetPointData().AddArray(tri)
-        pd.GetPointData().AddArray(bary)
-    return pd
-
-
-def producer(pd):
-    source = PVTrivialProducer()
-    source.GetClientSideObject().SetOutput(pd)
-    return source
-
-
-def same_data(a, b, what):
-    assert a.GetNumberOfPoints() == b.GetNumberOfPoints(), what
-    assert a.GetNumberOfCells() == b.GetNumberOfCells(), what
-    for p in range(a.GetNumberOfPoints()):
-        assert a.GetPoint(p) == b.GetPoint(p), (what, p)
-    for attributes in ("GetPointData", "GetCellData"):
-        x, y = getattr(a, attributes)(), getattr(b, attributes)()
-        assert x.GetNumberOfArrays() == y.GetNumberOfArrays(), (what, attributes)
-        for i in range(x.GetNumberOfArrays()):
-            ax = x.GetArray(i)
-            ay = y.GetArray(ax.GetName())
-            assert ay is not None, (what, ax.GetName())
-            assert ax.GetNumberOfValues() == ay.GetNumberOfValues(), (what, ax.GetName())
-            for k in range(ax.GetNumberOfValues()):
-                assert ax.GetVariantValue(k) == ay.GetVariantValue(k), (what, ax.GetName(), k)
-
-
 cases = refusals = 0
 for name, surface_pd in surfaces():
     surface = producer(surface_pd)
     for form in ("coordinates", "exact", "near-edge", "near-vertex"):
         for trial in range(3):
             what = "%s, %s, trial %d" % (name, form, trial)
-            curves = producer(random_curves(surface_pd, form))
+            curves = producer(random_curves(surface_pd, rng, form))
             operation = ["Union", "Intersection", "Difference", "SymmetricDifference"][trial % 4]
             a, b = (-1, -1) if operation == "Union" else (0, 1)
             one = BoolSurf(Surface=surface, Curves=curves, Operation=operation, ShapeA=a,
