@@ -275,7 +275,7 @@ void MarkRefinedAndBlocked(const TriangleMesh& mesh,
   for (size_t i = 0; i < map.EdgeSegments.size(); ++i)
   {
     const EdgeSegment& es = map.EdgeSegments[i];
-    if (!curves[es.Curve].Closed)
+    if (!BoundsCells(curves[es.Curve]))
     {
       continue;
     }

@@ -1,0 +1,324 @@
+#include "Distributed/PieceSummary.h"
+
+#include "Mesh/EdgeIndex.h"
+
+#include <algorithm>
+#include <tuple>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace boolsurf
+{
+
+//------------------------------------------------------------------------------
+bool BoundaryCurveStep::operator<(const BoundaryCurveStep& o) const
+{
+  return std::tie(this->Edge, this->Index, this->Shape, this->Forward) <
+    std::tie(o.Edge, o.Index, o.Shape, o.Forward);
+}
+bool BoundaryCurveStep::operator==(const BoundaryCurveStep& o) const
+{
+  return this->Edge == o.Edge && this->Index == o.Index && this->Shape == o.Shape &&
+    this->Forward == o.Forward;
+}
+bool CellGraphStep::operator<(const CellGraphStep& o) const
+{
+  return std::tie(this->RightCell, this->LeftCell, this->Shape) <
+    std::tie(o.RightCell, o.LeftCell, o.Shape);
+}
+bool CellGraphStep::operator==(const CellGraphStep& o) const
+{
+  return this->RightCell == o.RightCell && this->LeftCell == o.LeftCell && this->Shape == o.Shape;
+}
+
+//------------------------------------------------------------------------------
+std::size_t PieceSummary::GetBytes() const
+{
+  return sizeof(int) + this->Cells.size() * sizeof(PieceCell) +
+    this->Boundary.size() * sizeof(BoundarySubSegment) +
+    this->BoundarySteps.size() * sizeof(BoundaryCurveStep) +
+    this->Arcs.size() * sizeof(CellGraphStep);
+}
+
+namespace
+{
+
+double RefinedTriangleArea(const TriangleMesh& mesh, const Arrangement& arr, int r)
+{
+  const Triangle c = arr.GetTriangle(mesh, r);
+  const Vec3 a = arr.GetPosition(mesh, c[0]);
+  return 0.5 * Length(Cross(arr.GetPosition(mesh, c[1]) - a, arr.GetPosition(mesh, c[2]) - a));
+}
+
+// Per local cell with owned triangles: its lowest owned refined triangle and owned area.
+void SummarizeCells(const PieceMesh& piece, const Arrangement& arr, PieceSummary& out)
+{
+  const TriangleMesh& mesh = piece.Mesh;
+  std::vector<int> entry(arr.NumberOfCells, -1);
+  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  {
+    if (!piece.Owned[t])
+    {
+      continue;
+    }
+    int index = 0;
+    ForEachRefinedTriangle(mesh,
+      arr,
+      t,
+      [&](int r)
+      {
+        const RefinedTriangleKey key{ piece.GlobalTriangle[t], index++ };
+        const int c = arr.CellOfTriangle(r);
+        if (c < 0)
+        {
+          return;
+        }
+        if (entry[c] < 0)
+        {
+          entry[c] = static_cast<int>(out.Cells.size());
+          out.Cells.push_back({ c, key, 0.0 });
+        }
+        PieceCell& cell = out.Cells[entry[c]];
+        cell.Lowest = std::min(cell.Lowest, key);
+        cell.Area += RefinedTriangleArea(mesh, arr, r);
+      });
+  }
+  std::sort(out.Cells.begin(),
+    out.Cells.end(),
+    [](const PieceCell& a, const PieceCell& b) { return a.LocalCell < b.LocalCell; });
+}
+
+// Where refined point p lies on local edge k of triangle t, from corner k (0) to corner k + 1
+// (1); -1 when it is not on that edge.
+double PositionOnEdge(const TriangleMesh& mesh, const Arrangement& arr, int t, int k, int p)
+{
+  const Triangle& tri = mesh.GetTriangle(t);
+  const int a = tri[k], b = tri[(k + 1) % 3];
+  if (p < arr.NumberOfMeshVertices)
+  {
+    return p == a ? 0.0 : (p == b ? 1.0 : -1.0);
+  }
+  const CanonicalPoint c = arr.GetPointOnMesh(p);
+  const int e = mesh.GetEdgeId(t, k);
+  if (c.Location != PointLocation::Edge || c.Id != e)
+  {
+    return -1.0;
+  }
+  return mesh.GetEdgeVertices(e)[0] == a ? c.T : 1.0 - c.T;
+}
+
+// The refined point pairs along which cell-bounding curves run.
+std::unordered_set<std::uint64_t> BoundingSubEdges(const PieceCurves& curves,
+  const Arrangement& arr)
+{
+  std::unordered_set<std::uint64_t> pairs;
+  for (size_t c = 0; c < curves.Curves.size(); ++c)
+  {
+    const std::vector<int>& p = arr.CurvePoints[c];
+    if (!BoundsCells(curves.Curves[c]) || p.size() < 2)
+    {
+      continue;
+    }
+    for (size_t i = 0; i + 1 < p.size(); ++i)
+    {
+      pairs.insert(UndirectedPointPair(p[i], p[i + 1]));
+    }
+    if (curves.Curves[c].Closed && p.front() != p.back())
+    {
+      pairs.insert(UndirectedPointPair(p.back(), p.front()));
+    }
+  }
+  return pairs;
+}
+
+// A boundary sub-segment by its refined points: which record it is and the direction of its
+// owned triangle's edge (for the steps of curves along it).
+struct SubSegmentPlace
+{
+  int Record = -1;
+  double FromPosition = 0; ///< position of the pair's lower point id along the owned edge
+  double ToPosition = 0;
+};
+
+// The sub-segments of owned edges whose other triangle is another piece's.
+void SummarizeBoundary(const PieceMesh& piece,
+  const Arrangement& arr,
+  const std::unordered_set<std::uint64_t>& bounding,
+  PieceSummary& out,
+  std::unordered_map<std::uint64_t, SubSegmentPlace>& places)
+{
+  const TriangleMesh& mesh = piece.Mesh;
+  struct Side
+  {
+    double Lo, Hi;
+    int X, Y, Cell;
+  };
+  std::vector<Side> sides;
+  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  {
+    for (int k = 0; k < 3 && piece.Owned[t]; ++k)
+    {
+      const int n = mesh.GetNeighbor(t, k);
+      if (n < 0 || piece.Owned[n])
+      {
+        continue;
+      }
+      sides.clear();
+      ForEachRefinedTriangle(mesh,
+        arr,
+        t,
+        [&](int r)
+        {
+          const Triangle c = arr.GetTriangle(mesh, r);
+          for (int j = 0; j < 3; ++j)
+          {
+            const double x = PositionOnEdge(mesh, arr, t, k, c[j]);
+            const double y = PositionOnEdge(mesh, arr, t, k, c[(j + 1) % 3]);
+            if (x >= 0 && y >= 0 && x != y)
+            {
+              sides.push_back(
+                { std::min(x, y), std::max(x, y), c[j], c[(j + 1) % 3], arr.CellOfTriangle(r) });
+            }
+          }
+        });
+      std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) { return a.Lo < b.Lo; });
+      const Triangle& tri = mesh.GetTriangle(t);
+      const int ga = piece.GlobalVertex[tri[k]], gb = piece.GlobalVertex[tri[(k + 1) % 3]];
+      const bool forward = ga < gb;
+      const int count = static_cast<int>(sides.size());
+      for (int i = 0; i < count; ++i)
+      {
+        const Side& s = sides[i];
+        const std::uint64_t pair = UndirectedPointPair(s.X, s.Y);
+        BoundarySubSegment b;
+        b.Edge = UndirectedPointPair(ga, gb);
+        b.Index = forward ? i : count - 1 - i;
+        b.Count = count;
+        b.Cell = s.Cell;
+        b.Forward = forward;
+        b.Blocked = bounding.count(pair) > 0;
+        const bool xLow = s.X < s.Y;
+        const double px = PositionOnEdge(mesh, arr, t, k, s.X);
+        const double py = PositionOnEdge(mesh, arr, t, k, s.Y);
+        places[pair] = { static_cast<int>(out.Boundary.size()), xLow ? px : py, xLow ? py : px };
+        out.Boundary.push_back(b);
+      }
+    }
+  }
+}
+
+// The arcs between owned sides of cell-bounding curves, and the curves' steps along the piece
+// boundary.
+void SummarizeCurveSteps(const PieceMesh& piece,
+  const PieceCurves& curves,
+  const Arrangement& arr,
+  const std::unordered_map<std::uint64_t, SubSegmentPlace>& places,
+  PieceSummary& out)
+{
+  const TriangleMesh& mesh = piece.Mesh;
+  // Directed sides of the refined triangles of owned crossed triangles: every step of a curve
+  // lies on them (a curve marks both triangles of an edge it runs along as crossed).
+  std::unordered_map<std::uint64_t, int> holder;
+  for (int t : arr.RefinedSources)
+  {
+    if (!piece.Owned[t])
+    {
+      continue;
+    }
+    ForEachRefinedTriangle(mesh,
+      arr,
+      t,
+      [&](int r)
+      {
+        const Triangle c = arr.GetTriangle(mesh, r);
+        for (int j = 0; j < 3; ++j)
+        {
+          holder.emplace(DirectedPointPair(c[j], c[(j + 1) % 3]), r);
+        }
+      });
+  }
+  const auto step = [&](int u, int v, int shape)
+  {
+    if (u == v)
+    {
+      return;
+    }
+    const auto place = places.find(UndirectedPointPair(u, v));
+    if (place != places.end())
+    {
+      const BoundarySubSegment& b = out.Boundary[place->second.Record];
+      // Travel along the owned edge's direction when the lower id comes first and lies lower.
+      const bool alongEdge = (u < v) == (place->second.FromPosition < place->second.ToPosition);
+      out.BoundarySteps.push_back({ b.Edge, b.Index, shape, alongEdge == b.Forward });
+      return;
+    }
+    const auto left = holder.find(DirectedPointPair(u, v));
+    const auto right = holder.find(DirectedPointPair(v, u));
+    if (left == holder.end() || right == holder.end())
+    {
+      return; // a ghost's side, or the surface's open boundary
+    }
+    const int l = arr.CellOfTriangle(left->second), r = arr.CellOfTriangle(right->second);
+    if (l >= 0 && r >= 0)
+    {
+      out.Arcs.push_back({ r, l, shape });
+    }
+  };
+  for (size_t c = 0; c < curves.Curves.size(); ++c)
+  {
+    const std::vector<int>& p = arr.CurvePoints[c];
+    if (!BoundsCells(curves.Curves[c]) || p.size() < 2)
+    {
+      continue;
+    }
+    const int shape = curves.Curves[c].ShapeId;
+    for (size_t i = 0; i + 1 < p.size(); ++i)
+    {
+      step(p[i], p[i + 1], shape);
+    }
+    if (curves.Curves[c].Closed && p.front() != p.back())
+    {
+      step(p.back(), p.front(), shape);
+    }
+  }
+  std::sort(out.BoundarySteps.begin(), out.BoundarySteps.end());
+  out.BoundarySteps.erase(
+    std::unique(out.BoundarySteps.begin(), out.BoundarySteps.end()), out.BoundarySteps.end());
+  std::sort(out.Arcs.begin(), out.Arcs.end());
+  out.Arcs.erase(std::unique(out.Arcs.begin(), out.Arcs.end()), out.Arcs.end());
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+void SummarizePiece(const PieceMesh& piece,
+  const PieceCurves& curves,
+  const Arrangement& arr,
+  PieceSummary& out)
+{
+  out = PieceSummary();
+  out.NumberOfLocalCells = arr.NumberOfCells;
+  SummarizeCells(piece, arr, out);
+  const std::unordered_set<std::uint64_t> bounding = BoundingSubEdges(curves, arr);
+  std::unordered_map<std::uint64_t, SubSegmentPlace> places;
+  SummarizeBoundary(piece, arr, bounding, out, places);
+  SummarizeCurveSteps(piece, curves, arr, places, out);
+}
+
+//------------------------------------------------------------------------------
+bool ArrangePiece(const PieceMesh& piece,
+  const PieceCurves& curves,
+  const ArrangementOptions& options,
+  Arrangement& arr,
+  PieceSummary& out,
+  std::string& error)
+{
+  if (!ComputeArrangement(piece.Mesh, curves.Curves, options, arr, error))
+  {
+    return false;
+  }
+  SummarizePiece(piece, curves, arr, out);
+  return true;
+}
+
+} // namespace boolsurf

@@ -1,0 +1,125 @@
+// What one piece of a distributed surface tells the others about its part of the arrangement
+// (Docs/Parallel.md, "Plan for a distributed arrangement", stages 2 to 4).
+//
+// Each piece arranges its own triangles and ghost ring (ComputeArrangement on its PieceMesh
+// with its PieceCurves): its owned triangles are refined exactly as on the whole surface (the
+// piece has every segment of them and of their neighbours, in the same order), and its flood
+// fill gives local cells, each a subset of one global cell (a path through ghost triangles is
+// a path on the surface too; ghost triangles are never reported). What the merge needs of it
+// is small:
+//  * per local cell holding owned triangles: its lowest owned refined triangle as (global
+//    source triangle, index among that triangle's refined triangles) -- the global numbering
+//    orders cells by their lowest refined triangle, and refined ids order pieces that way -- and
+//    its owned area;
+//  * per sub-segment of an edge between an owned triangle and another piece's triangle (the
+//    piece boundary, split wherever curves meet it): the local cell on the owned side and
+//    whether a cell-bounding curve runs along it. Both pieces split the edge at the same points
+//    (each has all the segments of both triangles), so sub-segment i from the edge's lower
+//    global vertex is the same on both sides;
+//  * the cell graph's arcs whose two sides are owned (local cells, shape), and the curve steps
+//    along the piece boundary, whose other side only the neighbour knows.
+// Its size is O(local cells + boundary edges + curve steps), not O(triangles); computing it
+// reads the owned triangles once (O(owned triangles), the flood fill's own order).
+#ifndef boolsurf_PieceSummary_h
+#define boolsurf_PieceSummary_h
+
+#include "Arrangement/Arrangement.h"
+#include "Distributed/PieceCurves.h"
+#include "Distributed/PieceMesh.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace boolsurf
+{
+
+/// A refined triangle named independently of pieces: its global source triangle and its index
+/// among that triangle's refined triangles (0: the one that keeps the source's id). Ordered as
+/// the whole surface's refined ids: every index-0 triangle by source, then the others by
+/// (source, index).
+struct RefinedTriangleKey
+{
+  int Source = -1;
+  int Index = 0;
+  bool operator<(const RefinedTriangleKey& o) const
+  {
+    if ((this->Index == 0) != (o.Index == 0))
+    {
+      return this->Index == 0;
+    }
+    return this->Source != o.Source ? this->Source < o.Source : this->Index < o.Index;
+  }
+  bool operator==(const RefinedTriangleKey& o) const
+  {
+    return this->Source == o.Source && this->Index == o.Index;
+  }
+};
+
+struct PieceCell
+{
+  int LocalCell = -1;
+  RefinedTriangleKey Lowest; ///< its lowest owned refined triangle
+  double Area = 0;           ///< of its owned refined triangles
+};
+
+/// A sub-segment of an edge on the piece boundary, seen from the owned side.
+struct BoundarySubSegment
+{
+  std::uint64_t Edge = 0; ///< UndirectedPointPair of the edge's global vertices
+  int Index = 0;          ///< from the edge's lower global vertex
+  int Count = 0;          ///< sub-segments of the edge (both sides must agree)
+  int Cell = -1;          ///< local cell on the owned side
+  bool Forward = false;   ///< the owned triangle runs the edge from lower to higher global vertex
+  bool Blocked = false;   ///< a cell-bounding curve runs along it
+};
+
+/// A step of a cell-bounding curve along a boundary sub-segment.
+struct BoundaryCurveStep
+{
+  std::uint64_t Edge = 0;
+  int Index = 0;
+  int Shape = 0;
+  bool Forward = false; ///< the curve runs from lower to higher global vertex
+  bool operator<(const BoundaryCurveStep& o) const;
+  bool operator==(const BoundaryCurveStep& o) const;
+};
+
+/// An arc of the cell graph: crossing a curve of `Shape` from RightCell to LeftCell.
+struct CellGraphStep
+{
+  int RightCell = -1, LeftCell = -1, Shape = 0;
+  bool operator<(const CellGraphStep& o) const;
+  bool operator==(const CellGraphStep& o) const;
+};
+
+struct PieceSummary
+{
+  int NumberOfLocalCells = 0;
+  std::vector<PieceCell> Cells; ///< local cells holding owned triangles, by local cell
+  std::vector<BoundarySubSegment> Boundary;
+  std::vector<BoundaryCurveStep> BoundarySteps; ///< sorted, distinct
+  std::vector<CellGraphStep> Arcs;              ///< on local cells, sorted, distinct
+  /// Bytes a process would send (the vectors' payloads).
+  std::size_t GetBytes() const;
+};
+
+/// The summary of a piece's arrangement `arr`, computed on piece.Mesh with `curves`.
+void SummarizePiece(const PieceMesh& piece,
+  const PieceCurves& curves,
+  const Arrangement& arr,
+  PieceSummary& out);
+
+/// ComputeArrangement on the piece, then SummarizePiece. Fails with ComputeArrangement's
+/// message.
+bool ArrangePiece(const PieceMesh& piece,
+  const PieceCurves& curves,
+  const ArrangementOptions& options,
+  Arrangement& arr,
+  PieceSummary& out,
+  std::string& error);
+
+} // namespace boolsurf
+
+#endif

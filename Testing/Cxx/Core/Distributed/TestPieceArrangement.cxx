@@ -1,0 +1,530 @@
+// The distributed arrangement (Core/Distributed): a surface split into pieces (owned triangles
+// plus a ring of ghosts), each arranged alone and summarized, the summaries merged. Checked
+// against ComputeArrangement on the whole surface: the same cells with the same numbering for
+// every refined triangle, the same areas, the same cell graph and labels, on flat, spherical,
+// toroidal and genus-2 surfaces split in slabs and in random regions (with an empty piece, a
+// piece no curve touches, vertices shared by three or more pieces, curves along and across
+// piece boundaries, a shape inside one piece).
+#include "Distributed/MergedArrangement.h"
+#include "Distributed/PieceCurves.h"
+#include "Distributed/PieceMesh.h"
+#include "Distributed/PieceSummary.h"
+
+#include "Arrangement/Arrangement.h"
+#include "Geodesic/CurveTracer.h"
+#include "Mesh/PlyReader.h"
+#include "Mesh/ProceduralMeshes.h"
+#include "Support/SourceTree.h"
+#include "Support/SyntheticCurves.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <queue>
+#include <random>
+
+using namespace boolsurf;
+
+namespace
+{
+
+Vec3 Centroid(const TriangleMesh& mesh, int t)
+{
+  return (1.0 / 3.0) * (mesh.GetCornerPosition(t, 0) + mesh.GetCornerPosition(t, 1) +
+                       mesh.GetCornerPosition(t, 2));
+}
+
+// Owners by slabs of equal triangle counts along `axis` (centroid order, ties by id).
+std::vector<int> SlabOwners(const TriangleMesh& mesh, int pieces, int axis)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  std::vector<int> order(nt);
+  std::iota(order.begin(), order.end(), 0);
+  const auto coordinate = [&](int t)
+  {
+    const Vec3 c = Centroid(mesh, t);
+    return axis == 0 ? c.x : (axis == 1 ? c.y : c.z);
+  };
+  std::stable_sort(
+    order.begin(), order.end(), [&](int a, int b) { return coordinate(a) < coordinate(b); });
+  std::vector<int> owner(nt);
+  for (int i = 0; i < nt; ++i)
+  {
+    owner[order[i]] = static_cast<int>(static_cast<long long>(i) * pieces / nt);
+  }
+  return owner;
+}
+
+// Owners grown breadth-first from random seeds, one triangle per piece in turn; piece
+// `emptyPiece` (when >= 0) gets no triangle.
+std::vector<int> RegionOwners(const TriangleMesh& mesh, int pieces, unsigned seed, int emptyPiece)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  std::mt19937 rng(seed);
+  std::vector<int> owner(nt, -1);
+  std::vector<std::queue<int>> fronts(pieces);
+  for (int p = 0; p < pieces; ++p)
+  {
+    if (p == emptyPiece)
+    {
+      continue;
+    }
+    int t = std::uniform_int_distribution<int>(0, nt - 1)(rng);
+    while (owner[t] >= 0)
+    {
+      t = (t + 1) % nt;
+    }
+    owner[t] = p;
+    fronts[p].push(t);
+  }
+  for (bool grew = true; grew;)
+  {
+    grew = false;
+    for (int p = 0; p < pieces; ++p)
+    {
+      while (!fronts[p].empty())
+      {
+        const int t = fronts[p].front();
+        bool added = false;
+        for (int k = 0; k < 3 && !added; ++k)
+        {
+          const int n = mesh.GetNeighbor(t, k);
+          if (n >= 0 && owner[n] < 0)
+          {
+            owner[n] = p;
+            fronts[p].push(n);
+            added = grew = true;
+          }
+        }
+        if (added)
+        {
+          break;
+        }
+        fronts[p].pop();
+      }
+    }
+  }
+  for (int& o : owner)
+  {
+    o = o < 0 ? 0 : o;
+  }
+  return owner;
+}
+
+// Piece p as a process would receive it: owned triangles plus every triangle sharing a vertex
+// with them (ghosts), points and triangles in an order unrelated to the global one.
+PieceInput MakePiece(const TriangleMesh& mesh, const std::vector<int>& owner, int p)
+{
+  const int nt = mesh.GetNumberOfTriangles();
+  std::vector<char> touched(mesh.GetNumberOfVertices(), 0);
+  for (int t = 0; t < nt; ++t)
+  {
+    for (int k = 0; k < 3 && owner[t] == p; ++k)
+    {
+      touched[mesh.GetTriangle(t)[k]] = 1;
+    }
+  }
+  PieceInput in;
+  std::vector<int> localOf(mesh.GetNumberOfVertices(), -1);
+  for (int t = nt - 1; t >= 0; --t)
+  {
+    const Triangle& tri = mesh.GetTriangle(t);
+    if (owner[t] != p && !touched[tri[0]] && !touched[tri[1]] && !touched[tri[2]])
+    {
+      continue;
+    }
+    Triangle local;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (localOf[tri[k]] < 0)
+      {
+        localOf[tri[k]] = static_cast<int>(in.Positions.size());
+        in.Positions.push_back(mesh.GetPosition(tri[k]));
+        in.PointGlobalIds.push_back(tri[k]);
+      }
+      local[k] = localOf[tri[k]];
+    }
+    in.Triangles.push_back(local);
+    in.TriangleGlobalIds.push_back(t);
+    in.Ghost.push_back(owner[t] != p ? 1 : 0);
+  }
+  return in;
+}
+
+struct DistributedRun
+{
+  std::vector<PieceMesh> Pieces;
+  std::vector<Arrangement> Arrangements;
+  std::vector<PieceSummary> Summaries;
+  MergedArrangement Merged;
+};
+
+void RunDistributed(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  const std::vector<int>& owner,
+  int pieces,
+  DistributedRun& run)
+{
+  run.Pieces.resize(pieces);
+  run.Arrangements.resize(pieces);
+  run.Summaries.resize(pieces);
+  const GlobalEdgeVertices edgeVertices = [&](int e) { return mesh.GetEdgeVertices(e); };
+  for (int p = 0; p < pieces; ++p)
+  {
+    std::string error;
+    ASSERT_TRUE(BuildPieceMesh(MakePiece(mesh, owner, p), run.Pieces[p], error)) << error;
+    PieceCurves local;
+    RestrictCurvesToPiece(run.Pieces[p], curves, edgeVertices, local);
+    ASSERT_TRUE(ArrangePiece(
+      run.Pieces[p], local, ArrangementOptions(), run.Arrangements[p], run.Summaries[p], error))
+      << "piece " << p << ": " << error;
+  }
+  std::string error;
+  ASSERT_TRUE(MergePieceSummaries(run.Summaries, run.Merged, error)) << error;
+}
+
+double RefinedArea(const TriangleMesh& mesh, const Arrangement& arr, int r)
+{
+  const Triangle c = arr.GetTriangle(mesh, r);
+  const Vec3 a = arr.GetPosition(mesh, c[0]);
+  return 0.5 * Length(Cross(arr.GetPosition(mesh, c[1]) - a, arr.GetPosition(mesh, c[2]) - a));
+}
+
+// The merged result equals the whole-surface arrangement.
+void ExpectSameAsWhole(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  const std::vector<int>& owner,
+  int pieces)
+{
+  Arrangement whole;
+  std::string error;
+  ASSERT_TRUE(ComputeArrangement(mesh, curves, ArrangementOptions(), whole, error)) << error;
+  DistributedRun run;
+  RunDistributed(mesh, curves, owner, pieces, run);
+  if (::testing::Test::HasFatalFailure())
+  {
+    return;
+  }
+  const MergedArrangement& merged = run.Merged;
+  ASSERT_EQ(merged.NumberOfCells, whole.NumberOfCells);
+  EXPECT_GT(whole.NumberOfCells, static_cast<int>(curves.size())); // the curves cut the surface
+  // Every owned triangle's refined triangles: as many as on the whole surface, each in the
+  // cell of the same number.
+  int mismatches = 0;
+  for (int p = 0; p < pieces; ++p)
+  {
+    const PieceMesh& piece = run.Pieces[p];
+    const Arrangement& arr = run.Arrangements[p];
+    for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
+    {
+      if (!piece.Owned[t])
+      {
+        continue;
+      }
+      const int g = piece.GlobalTriangle[t];
+      std::vector<int> mine, theirs;
+      ForEachRefinedTriangle(piece.Mesh,
+        arr,
+        t,
+        [&](int r) { mine.push_back(merged.GlobalCellOfLocal[p][arr.CellOfTriangle(r)]); });
+      ForEachRefinedTriangle(mesh, whole, g, [&](int r) { theirs.push_back(whole.CellOfTriangle(r)); });
+      if (mine != theirs && ++mismatches <= 5)
+      {
+        ADD_FAILURE() << "piece " << p << ", triangle " << g << ": " << mine.size() << " vs "
+                      << theirs.size() << " refined triangles, first cell "
+                      << (mine.empty() ? -2 : mine[0]) << " vs " << (theirs.empty() ? -2 : theirs[0]);
+      }
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+  std::vector<double> areas(whole.NumberOfCells, 0.0);
+  for (int r = 0; r < whole.GetNumberOfTriangles(); ++r)
+  {
+    const int c = whole.CellOfTriangle(r);
+    if (c >= 0)
+    {
+      areas[c] += RefinedArea(mesh, whole, r);
+    }
+  }
+  for (int c = 0; c < whole.NumberOfCells; ++c)
+  {
+    EXPECT_NEAR(merged.CellArea[c], areas[c], 1e-12 * std::max(1.0, areas[c])) << "cell " << c;
+    const int first = whole.CellFirstTriangle[c];
+    const int source = whole.GetSourceTriangle(mesh, first);
+    int index = 0, found = -1;
+    ForEachRefinedTriangle(mesh,
+      whole,
+      source,
+      [&](int r)
+      {
+        found = r == first ? index : found;
+        ++index;
+      });
+    EXPECT_TRUE((merged.CellLowestTriangle[c] == RefinedTriangleKey{ source, found }))
+      << "cell " << c;
+  }
+  const std::vector<CellGraphStep> steps = DistinctCellGraphSteps(whole.CellGraph);
+  EXPECT_EQ(merged.Arcs, steps);
+  const LabelingResult labels = LabelCells(LabelingInputOfSteps(whole.NumberOfCells, steps));
+  const LabelingResult mergedLabels =
+    LabelCells(LabelingInputOfSteps(merged.NumberOfCells, merged.Arcs));
+  EXPECT_EQ(mergedLabels.Labels, labels.Labels);
+  EXPECT_EQ(mergedLabels.ShapeConsistent, labels.ShapeConsistent);
+}
+
+// Every split of the test: slabs along each axis and random regions (one of them with an
+// empty piece), for 1, 2, 3, 4 and 7 pieces.
+void ExpectSameForEverySplit(const TriangleMesh& mesh, const std::vector<TracedCurve>& curves)
+{
+  for (int pieces : { 1, 2, 3, 4, 7 })
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      SCOPED_TRACE("slabs along axis " + std::to_string(axis) + ", " + std::to_string(pieces) +
+        " pieces");
+      ExpectSameAsWhole(mesh, curves, SlabOwners(mesh, pieces, axis), pieces);
+    }
+    for (unsigned seed = 1; seed <= 3; ++seed)
+    {
+      SCOPED_TRACE("regions, seed " + std::to_string(seed) + ", " + std::to_string(pieces) +
+        " pieces");
+      const int empty = seed == 2 ? pieces : -1;
+      const int count = empty >= 0 ? pieces + 1 : pieces;
+      ExpectSameAsWhole(mesh, curves, RegionOwners(mesh, count, seed, empty), count);
+    }
+  }
+}
+
+// Random closed geodesic polygons through points inside random triangles, one shape each.
+std::vector<TracedCurve> RandomGeodesicCurves(const TriangleMesh& mesh, unsigned seed, int count)
+{
+  CurveTracer tracer(mesh);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> triangle(0, mesh.GetNumberOfTriangles() - 1);
+  std::uniform_real_distribution<double> weight(0.1, 0.45);
+  std::vector<TracedCurve> curves;
+  for (int id = 0; static_cast<int>(curves.size()) < count && id < 4 * count; ++id)
+  {
+    std::vector<SurfacePoint> points(std::uniform_int_distribution<int>(3, 5)(rng));
+    for (SurfacePoint& x : points)
+    {
+      x = { triangle(rng), weight(rng), weight(rng) };
+    }
+    CurveTrace trace;
+    std::string error;
+    if (tracer.Trace(points, CurveType::GeodesicPolygon, true, trace, error, id) &&
+      trace.Curve.Points.size() >= 3)
+    {
+      trace.Curve.ShapeId = static_cast<int>(curves.size());
+      trace.Curve.CurveId = static_cast<int>(curves.size());
+      curves.push_back(trace.Curve);
+    }
+  }
+  return curves;
+}
+
+TracedCurve FlatCurve(const FlatPolygonTracer& tracer, const std::vector<Vec2>& polygon, int shape)
+{
+  TracedCurve c;
+  EXPECT_TRUE(tracer.Trace(polygon, true, shape, shape, c));
+  return c;
+}
+
+} // namespace
+
+TEST(PieceArrangement, FlatSquareCurvesAlongAndAcrossPieceBoundaries)
+{
+  const MeshData data = MakeFlatSquare(20);
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  FlatPolygonTracer tracer(mesh);
+  std::vector<TracedCurve> curves;
+  // Along the line x = 0.5, the boundary of two slabs along x, and through grid vertices.
+  curves.push_back(FlatCurve(tracer, { { 0.5, 0.1 }, { 0.5, 0.9 }, { 0.85, 0.5 } }, 0));
+  // A zigzag crossing the slab boundaries many times.
+  std::vector<Vec2> zigzag;
+  for (int i = 0; i <= 12; ++i)
+  {
+    zigzag.push_back({ 0.08 + 0.07 * i, i % 2 ? 0.6 : 0.3 });
+  }
+  zigzag.push_back({ 0.9, 0.95 });
+  zigzag.push_back({ 0.1, 0.95 });
+  curves.push_back(FlatCurve(tracer, zigzag, 1));
+  // A small shape inside the first slab, and random polygons.
+  curves.push_back(FlatCurve(tracer, { { 0.01, 0.02 }, { 0.04, 0.03 }, { 0.02, 0.06 } }, 2));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coord(0.03, 0.97);
+  for (int s = 3; s < 6; ++s)
+  {
+    curves.push_back(FlatCurve(tracer, { { coord(rng), coord(rng) }, { coord(rng), coord(rng) },
+      { coord(rng), coord(rng) }, { coord(rng), coord(rng) } }, s));
+  }
+  ExpectSameForEverySplit(mesh, curves);
+  // Two slabs along x meet on x = 0.5, where the first curve runs: its steps there are known
+  // to the boundary only, and the small shape lies inside one of seven slabs.
+  DistributedRun run;
+  RunDistributed(mesh, curves, SlabOwners(mesh, 2, 0), 2, run);
+  EXPECT_FALSE(run.Summaries[0].BoundarySteps.empty());
+  EXPECT_FALSE(run.Summaries[1].BoundarySteps.empty());
+  RunDistributed(mesh, curves, SlabOwners(mesh, 7, 0), 7, run);
+  const auto untouched = std::count_if(run.Summaries.begin(),
+    run.Summaries.end(),
+    [](const PieceSummary& s) { return s.Arcs.empty() && s.BoundarySteps.empty(); });
+  EXPECT_EQ(untouched, 0); // every slab meets a curve here; the regions below leave some alone
+}
+
+TEST(PieceArrangement, JitteredSquareRandomPolygons)
+{
+  const MeshData data = MakeFlatSquare(16, 1.0, 0.3, 5);
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  FlatPolygonTracer tracer(mesh);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> coord(0.02, 0.98);
+  std::vector<TracedCurve> curves;
+  for (int s = 0; s < 6; ++s)
+  {
+    std::vector<Vec2> polygon(5);
+    for (Vec2& v : polygon)
+    {
+      v = { coord(rng), coord(rng) };
+    }
+    curves.push_back(FlatCurve(tracer, polygon, s % 3));
+  }
+  ExpectSameForEverySplit(mesh, curves);
+}
+
+TEST(PieceArrangement, SphereRandomCurves)
+{
+  const MeshData data = MakeIcosphere(3);
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  const std::vector<TracedCurve> curves = RandomGeodesicCurves(mesh, 3, 4);
+  ASSERT_EQ(curves.size(), 4u);
+  ExpectSameForEverySplit(mesh, curves);
+}
+
+TEST(PieceArrangement, TorusRandomCurves)
+{
+  const MeshData data = MakeTorus(1.0, 0.4, 32, 16);
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  const std::vector<TracedCurve> curves = RandomGeodesicCurves(mesh, 5, 4);
+  ASSERT_EQ(curves.size(), 4u);
+  ExpectSameForEverySplit(mesh, curves);
+}
+
+TEST(PieceArrangement, GenusTwoRandomCurves)
+{
+  MeshData data;
+  std::string error;
+  ASSERT_TRUE(ReadPly((boolsurf::testing::SourceTree() / "Data" / "eight.ply").string(), data, error))
+    << error;
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  const std::vector<TracedCurve> curves = RandomGeodesicCurves(mesh, 9, 4);
+  ASSERT_EQ(curves.size(), 4u);
+  ExpectSameForEverySplit(mesh, curves);
+}
+
+TEST(PieceArrangement, PieceWithoutItsGhostsIsNamed)
+{
+  const MeshData data = MakeFlatSquare(8);
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  FlatPolygonTracer tracer(mesh);
+  const std::vector<TracedCurve> curves{ FlatCurve(
+    tracer, { { 0.1, 0.1 }, { 0.9, 0.2 }, { 0.5, 0.9 } }, 0) };
+  const std::vector<int> owner = SlabOwners(mesh, 2, 0);
+  std::vector<PieceSummary> summaries(2);
+  const GlobalEdgeVertices edgeVertices = [&](int e) { return mesh.GetEdgeVertices(e); };
+  for (int p = 0; p < 2; ++p)
+  {
+    PieceInput in = MakePiece(mesh, owner, p);
+    if (p == 1)
+    {
+      // Drop the ghosts.
+      PieceInput owned;
+      owned.Positions = in.Positions;
+      owned.PointGlobalIds = in.PointGlobalIds;
+      for (size_t t = 0; t < in.Triangles.size(); ++t)
+      {
+        if (!in.Ghost[t])
+        {
+          owned.Triangles.push_back(in.Triangles[t]);
+          owned.TriangleGlobalIds.push_back(in.TriangleGlobalIds[t]);
+          owned.Ghost.push_back(0);
+        }
+      }
+      in = owned;
+    }
+    PieceMesh piece;
+    std::string error;
+    ASSERT_TRUE(BuildPieceMesh(in, piece, error)) << error;
+    PieceCurves local;
+    RestrictCurvesToPiece(piece, curves, edgeVertices, local);
+    Arrangement arr;
+    ASSERT_TRUE(ArrangePiece(piece, local, ArrangementOptions(), arr, summaries[p], error)) << error;
+  }
+  MergedArrangement merged;
+  std::string error;
+  EXPECT_FALSE(MergePieceSummaries(summaries, merged, error));
+  EXPECT_NE(error.find("ghost"), std::string::npos) << error;
+}
+
+TEST(PieceArrangement, RepeatedGlobalIdIsNamed)
+{
+  PieceInput in;
+  in.Positions = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
+  in.PointGlobalIds = { 4, 7, 4 };
+  in.Triangles = { { 0, 1, 2 } };
+  in.TriangleGlobalIds = { 0 };
+  in.Ghost = { 0 };
+  PieceMesh piece;
+  std::string error;
+  EXPECT_FALSE(BuildPieceMesh(in, piece, error));
+  EXPECT_NE(error.find("point global id 4"), std::string::npos) << error;
+}
+
+// Summary sizes against piece sizes on a 100k-triangle torus split in 4 slabs, with plane
+// sections (meridians and parallels) as curves.
+TEST(PieceArrangement, SummariesAreSmallNextToPieces)
+{
+  const MeshData data = MakeTorus(1.0, 0.35, 320, 160);
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  std::vector<TracedCurve> curves;
+  for (int i = 0; i < 5; ++i)
+  {
+    const double angle = 0.3 + 0.55 * i;
+    for (TracedCurve& c : PlaneSectionCurves(
+           mesh, Vec3{ std::cos(angle), std::sin(angle), 0.0 }, 0.0, i, 10 * i))
+    {
+      curves.push_back(std::move(c));
+    }
+  }
+  for (TracedCurve& c : PlaneSectionCurves(mesh, Vec3{ 0.0, 0.0, 1.0 }, 0.11, 9, 100))
+  {
+    curves.push_back(std::move(c));
+  }
+  const int pieces = 4;
+  const std::vector<int> owner = SlabOwners(mesh, pieces, 0);
+  ExpectSameAsWhole(mesh, curves, owner, pieces);
+  DistributedRun run;
+  RunDistributed(mesh, curves, owner, pieces, run);
+  for (int p = 0; p < pieces; ++p)
+  {
+    const PieceSummary& s = run.Summaries[p];
+    const std::size_t meshBytes =
+      run.Pieces[p].Mesh.GetNumberOfTriangles() * (sizeof(Triangle) + sizeof(int)) +
+      run.Pieces[p].Mesh.GetNumberOfVertices() * (sizeof(Vec3) + sizeof(int));
+    std::printf("piece %d: %d owned + %d ghost triangles (%zu bytes), summary %zu bytes: %zu "
+                "cells, %zu boundary sub-segments, %zu boundary curve steps, %zu arcs\n",
+      p,
+      run.Pieces[p].NumberOfOwnedTriangles,
+      run.Pieces[p].Mesh.GetNumberOfTriangles() - run.Pieces[p].NumberOfOwnedTriangles,
+      meshBytes,
+      s.GetBytes(),
+      s.Cells.size(),
+      s.Boundary.size(),
+      s.BoundarySteps.size(),
+      s.Arcs.size());
+    EXPECT_LT(s.GetBytes() * 20, meshBytes);
+  }
+}
