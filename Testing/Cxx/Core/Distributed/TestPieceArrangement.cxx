@@ -275,6 +275,23 @@ void ExpectSameAsWhole(const TriangleMesh& mesh,
   EXPECT_EQ(mergedLabels.ShapeConsistent, labels.ShapeConsistent);
 }
 
+// Vertices whose triangles belong to three pieces or more.
+int VerticesOfThreeOrMorePieces(const TriangleMesh& mesh, const std::vector<int>& owner)
+{
+  int count = 0;
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    std::vector<int> owners;
+    for (int c : mesh.GetVertexCorners(v))
+    {
+      owners.push_back(owner[c / 3]);
+    }
+    std::sort(owners.begin(), owners.end());
+    count += std::unique(owners.begin(), owners.end()) - owners.begin() >= 3;
+  }
+  return count;
+}
+
 // Every split of the test: slabs along each axis and random regions (one of them with an
 // empty piece), for 1, 2, 3, 4 and 7 pieces.
 void ExpectSameForEverySplit(const TriangleMesh& mesh, const std::vector<TracedCurve>& curves)
@@ -293,7 +310,12 @@ void ExpectSameForEverySplit(const TriangleMesh& mesh, const std::vector<TracedC
         " pieces");
       const int empty = seed == 2 ? pieces : -1;
       const int count = empty >= 0 ? pieces + 1 : pieces;
-      ExpectSameAsWhole(mesh, curves, RegionOwners(mesh, count, seed, empty), count);
+      const std::vector<int> owner = RegionOwners(mesh, count, seed, empty);
+      if (pieces == 7)
+      {
+        EXPECT_GT(VerticesOfThreeOrMorePieces(mesh, owner), 0);
+      }
+      ExpectSameAsWhole(mesh, curves, owner, count);
     }
   }
 }
@@ -368,11 +390,29 @@ TEST(PieceArrangement, FlatSquareCurvesAlongAndAcrossPieceBoundaries)
   RunDistributed(mesh, curves, SlabOwners(mesh, 2, 0), 2, run);
   EXPECT_FALSE(run.Summaries[0].BoundarySteps.empty());
   EXPECT_FALSE(run.Summaries[1].BoundarySteps.empty());
-  RunDistributed(mesh, curves, SlabOwners(mesh, 7, 0), 7, run);
-  const auto untouched = std::count_if(run.Summaries.begin(),
-    run.Summaries.end(),
-    [](const PieceSummary& s) { return s.Arcs.empty() && s.BoundarySteps.empty(); });
-  EXPECT_EQ(untouched, 0); // every slab meets a curve here; the regions below leave some alone
+}
+
+TEST(PieceArrangement, ShapeInsideOnePieceAndPiecesNoCurveTouches)
+{
+  const MeshData data = MakeFlatSquare(20, 1.0, 0.2, 3);
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  FlatPolygonTracer tracer(mesh);
+  const std::vector<TracedCurve> curves{
+    FlatCurve(tracer, { { 0.05, 0.1 }, { 0.2, 0.15 }, { 0.1, 0.8 } }, 0),
+    FlatCurve(tracer, { { 0.02, 0.5 }, { 0.22, 0.3 }, { 0.2, 0.6 } }, 1),
+  };
+  const std::vector<int> owner = SlabOwners(mesh, 4, 0);
+  ExpectSameAsWhole(mesh, curves, owner, 4);
+  DistributedRun run;
+  RunDistributed(mesh, curves, owner, 4, run);
+  EXPECT_FALSE(run.Summaries[0].Arcs.empty());
+  for (int p = 1; p < 4; ++p)
+  {
+    // No curve: one local cell, nothing but the boundary to tell.
+    EXPECT_EQ(run.Summaries[p].Cells.size(), 1u) << "piece " << p;
+    EXPECT_TRUE(run.Summaries[p].Arcs.empty()) << "piece " << p;
+    EXPECT_TRUE(run.Summaries[p].BoundarySteps.empty()) << "piece " << p;
+  }
 }
 
 TEST(PieceArrangement, JitteredSquareRandomPolygons)
