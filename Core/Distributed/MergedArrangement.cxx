@@ -221,9 +221,9 @@ LabelingInput LabelingInputOfSteps(int numberOfCells, const std::vector<CellGrap
     CellArc arc;
     arc.RightCell = s.RightCell;
     arc.LeftCell = s.LeftCell;
-    arc.Shape = static_cast<int>(
-      std::lower_bound(input.ShapeIds.begin(), input.ShapeIds.end(), s.Shape) -
-      input.ShapeIds.begin());
+    arc.Shape =
+      static_cast<int>(std::lower_bound(input.ShapeIds.begin(), input.ShapeIds.end(), s.Shape) -
+        input.ShapeIds.begin());
     arc.Location = static_cast<long long>(
       UndirectedPointPair(std::min(s.RightCell, s.LeftCell), std::max(s.RightCell, s.LeftCell)));
     input.Arcs.push_back(arc);

@@ -90,8 +90,8 @@ bool BuildPieceMesh(const PieceInput& input, PieceMesh& out, std::string& error)
       const int p = input.Triangles[t][k];
       if (p < 0 || p >= np)
       {
-        error = "piece: triangle " + std::to_string(input.TriangleGlobalIds[t]) +
-          " names point " + std::to_string(p) + " of " + std::to_string(np);
+        error = "piece: triangle " + std::to_string(input.TriangleGlobalIds[t]) + " names point " +
+          std::to_string(p) + " of " + std::to_string(np);
         return false;
       }
       triangles[i][k] = localOfPoint[p];

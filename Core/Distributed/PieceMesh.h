@@ -26,10 +26,10 @@ namespace boolsurf
 struct PieceInput
 {
   std::vector<Vec3> Positions;
-  std::vector<int> PointGlobalIds;   ///< per point
-  std::vector<Triangle> Triangles;   ///< corners index Positions
+  std::vector<int> PointGlobalIds;    ///< per point
+  std::vector<Triangle> Triangles;    ///< corners index Positions
   std::vector<int> TriangleGlobalIds; ///< per triangle
-  std::vector<char> Ghost;           ///< per triangle: 1 for a ghost (owned by another piece)
+  std::vector<char> Ghost;            ///< per triangle: 1 for a ghost (owned by another piece)
 };
 
 struct PieceMesh

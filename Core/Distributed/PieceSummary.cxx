@@ -181,7 +181,8 @@ void SummarizeBoundary(const PieceMesh& piece,
             }
           }
         });
-      std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) { return a.Lo < b.Lo; });
+      std::sort(
+        sides.begin(), sides.end(), [](const Side& a, const Side& b) { return a.Lo < b.Lo; });
       const Triangle& tri = mesh.GetTriangle(t);
       const int ga = piece.GlobalVertex[tri[k]], gb = piece.GlobalVertex[tri[(k + 1) % 3]];
       const bool forward = ga < gb;
@@ -207,6 +208,34 @@ void SummarizeBoundary(const PieceMesh& piece,
   }
 }
 
+// The owned refined triangle with the directed side u -> v, -1 when none.
+int OwnedHolder(const PieceMesh& piece,
+  const Arrangement& arr,
+  const std::unordered_map<std::uint64_t, int>& holder,
+  int u,
+  int v)
+{
+  const auto found = holder.find(DirectedPointPair(u, v));
+  if (found != holder.end())
+  {
+    return found->second;
+  }
+  if (u >= arr.NumberOfMeshVertices || v >= arr.NumberOfMeshVertices)
+  {
+    return -1;
+  }
+  const TriangleMesh& mesh = piece.Mesh;
+  for (int c : mesh.GetVertexCorners(u))
+  {
+    const int t = c / 3;
+    if (piece.Owned[t] && arr.GetRefinedSlot(t) < 0 && mesh.GetTriangle(t)[(c % 3 + 1) % 3] == v)
+    {
+      return t;
+    }
+  }
+  return -1;
+}
+
 // The arcs between owned sides of cell-bounding curves, and the curves' steps along the piece
 // boundary.
 void SummarizeCurveSteps(const PieceMesh& piece,
@@ -216,8 +245,9 @@ void SummarizeCurveSteps(const PieceMesh& piece,
   PieceSummary& out)
 {
   const TriangleMesh& mesh = piece.Mesh;
-  // Directed sides of the refined triangles of owned crossed triangles: every step of a curve
-  // lies on them (a curve marks both triangles of an edge it runs along as crossed).
+  // Directed sides of the refined triangles of owned crossed triangles, where steps inside
+  // triangles and through edge points lie; a step from vertex to vertex along a mesh edge may
+  // leave both triangles unrefined, and is looked up around its first vertex.
   std::unordered_map<std::uint64_t, int> holder;
   for (int t : arr.RefinedSources)
   {
@@ -252,13 +282,13 @@ void SummarizeCurveSteps(const PieceMesh& piece,
       out.BoundarySteps.push_back({ b.Edge, b.Index, shape, alongEdge == b.Forward });
       return;
     }
-    const auto left = holder.find(DirectedPointPair(u, v));
-    const auto right = holder.find(DirectedPointPair(v, u));
-    if (left == holder.end() || right == holder.end())
+    const int lt = OwnedHolder(piece, arr, holder, u, v);
+    const int rt = OwnedHolder(piece, arr, holder, v, u);
+    if (lt < 0 || rt < 0)
     {
       return; // a ghost's side, or the surface's open boundary
     }
-    const int l = arr.CellOfTriangle(left->second), r = arr.CellOfTriangle(right->second);
+    const int l = arr.CellOfTriangle(lt), r = arr.CellOfTriangle(rt);
     if (l >= 0 && r >= 0)
     {
       out.Arcs.push_back({ r, l, shape });

@@ -28,13 +28,22 @@
 
 using namespace boolsurf;
 
+namespace boolsurf
+{
+// Readable failures.
+void PrintTo(const CellGraphStep& s, std::ostream* os)
+{
+  *os << "(" << s.RightCell << " -> " << s.LeftCell << ", shape " << s.Shape << ")";
+}
+} // namespace boolsurf
+
 namespace
 {
 
 Vec3 Centroid(const TriangleMesh& mesh, int t)
 {
-  return (1.0 / 3.0) * (mesh.GetCornerPosition(t, 0) + mesh.GetCornerPosition(t, 1) +
-                       mesh.GetCornerPosition(t, 2));
+  return (1.0 / 3.0) *
+    (mesh.GetCornerPosition(t, 0) + mesh.GetCornerPosition(t, 1) + mesh.GetCornerPosition(t, 2));
 }
 
 // Owners by slabs of equal triangle counts along `axis` (centroid order, ties by id).
@@ -230,12 +239,14 @@ void ExpectSameAsWhole(const TriangleMesh& mesh,
         arr,
         t,
         [&](int r) { mine.push_back(merged.GlobalCellOfLocal[p][arr.CellOfTriangle(r)]); });
-      ForEachRefinedTriangle(mesh, whole, g, [&](int r) { theirs.push_back(whole.CellOfTriangle(r)); });
+      ForEachRefinedTriangle(
+        mesh, whole, g, [&](int r) { theirs.push_back(whole.CellOfTriangle(r)); });
       if (mine != theirs && ++mismatches <= 5)
       {
         ADD_FAILURE() << "piece " << p << ", triangle " << g << ": " << mine.size() << " vs "
                       << theirs.size() << " refined triangles, first cell "
-                      << (mine.empty() ? -2 : mine[0]) << " vs " << (theirs.empty() ? -2 : theirs[0]);
+                      << (mine.empty() ? -2 : mine[0]) << " vs "
+                      << (theirs.empty() ? -2 : theirs[0]);
       }
     }
   }
@@ -300,14 +311,14 @@ void ExpectSameForEverySplit(const TriangleMesh& mesh, const std::vector<TracedC
   {
     for (int axis = 0; axis < 3; ++axis)
     {
-      SCOPED_TRACE("slabs along axis " + std::to_string(axis) + ", " + std::to_string(pieces) +
-        " pieces");
+      SCOPED_TRACE(
+        "slabs along axis " + std::to_string(axis) + ", " + std::to_string(pieces) + " pieces");
       ExpectSameAsWhole(mesh, curves, SlabOwners(mesh, pieces, axis), pieces);
     }
     for (unsigned seed = 1; seed <= 3; ++seed)
     {
-      SCOPED_TRACE("regions, seed " + std::to_string(seed) + ", " + std::to_string(pieces) +
-        " pieces");
+      SCOPED_TRACE(
+        "regions, seed " + std::to_string(seed) + ", " + std::to_string(pieces) + " pieces");
       const int empty = seed == 2 ? pieces : -1;
       const int count = empty >= 0 ? pieces + 1 : pieces;
       const std::vector<int> owner = RegionOwners(mesh, count, seed, empty);
@@ -380,8 +391,12 @@ TEST(PieceArrangement, FlatSquareCurvesAlongAndAcrossPieceBoundaries)
   std::uniform_real_distribution<double> coord(0.03, 0.97);
   for (int s = 3; s < 6; ++s)
   {
-    curves.push_back(FlatCurve(tracer, { { coord(rng), coord(rng) }, { coord(rng), coord(rng) },
-      { coord(rng), coord(rng) }, { coord(rng), coord(rng) } }, s));
+    curves.push_back(FlatCurve(tracer,
+      { { coord(rng), coord(rng) },
+        { coord(rng), coord(rng) },
+        { coord(rng), coord(rng) },
+        { coord(rng), coord(rng) } },
+      s));
   }
   ExpectSameForEverySplit(mesh, curves);
   // Two slabs along x meet on x = 0.5, where the first curve runs: its steps there are known
@@ -457,7 +472,8 @@ TEST(PieceArrangement, GenusTwoRandomCurves)
 {
   MeshData data;
   std::string error;
-  ASSERT_TRUE(ReadPly((boolsurf::testing::SourceTree() / "Data" / "eight.ply").string(), data, error))
+  ASSERT_TRUE(
+    ReadPly((boolsurf::testing::SourceTree() / "Data" / "eight.ply").string(), data, error))
     << error;
   const TriangleMesh mesh(data.Positions, data.Triangles);
   const std::vector<TracedCurve> curves = RandomGeodesicCurves(mesh, 9, 4);
@@ -501,7 +517,8 @@ TEST(PieceArrangement, PieceWithoutItsGhostsIsNamed)
     PieceCurves local;
     RestrictCurvesToPiece(piece, curves, edgeVertices, local);
     Arrangement arr;
-    ASSERT_TRUE(ArrangePiece(piece, local, ArrangementOptions(), arr, summaries[p], error)) << error;
+    ASSERT_TRUE(ArrangePiece(piece, local, ArrangementOptions(), arr, summaries[p], error))
+      << error;
   }
   MergedArrangement merged;
   std::string error;
@@ -533,8 +550,8 @@ TEST(PieceArrangement, SummariesAreSmallNextToPieces)
   for (int i = 0; i < 5; ++i)
   {
     const double angle = 0.3 + 0.55 * i;
-    for (TracedCurve& c : PlaneSectionCurves(
-           mesh, Vec3{ std::cos(angle), std::sin(angle), 0.0 }, 0.0, i, 10 * i))
+    for (TracedCurve& c :
+      PlaneSectionCurves(mesh, Vec3{ std::cos(angle), std::sin(angle), 0.0 }, 0.0, i, 10 * i))
     {
       curves.push_back(std::move(c));
     }
@@ -566,5 +583,60 @@ TEST(PieceArrangement, SummariesAreSmallNextToPieces)
       s.BoundarySteps.size(),
       s.Arcs.size());
     EXPECT_LT(s.GetBytes() * 20, meshBytes);
+  }
+}
+
+// Many random drawings: geodesic polygons on a sphere and a torus split in random regions,
+// and grid-aligned polygons on a flat square (curves along mesh edges and through vertices,
+// shared by several shapes) split in slabs and regions.
+TEST(PieceArrangement, ManyRandomDrawings)
+{
+  for (unsigned seed = 20; seed < 32; ++seed)
+  {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const MeshData data = seed % 2 ? MakeTorus(1.0, 0.4, 24, 12) : MakeIcosphere(2);
+    const TriangleMesh mesh(data.Positions, data.Triangles);
+    const std::vector<TracedCurve> curves = RandomGeodesicCurves(mesh, seed, 7);
+    for (int pieces : { 2, 5, 9 })
+    {
+      for (unsigned s = 1; s <= 3; ++s)
+      {
+        ExpectSameAsWhole(mesh, curves, RegionOwners(mesh, pieces, seed * 7 + s, -1), pieces);
+      }
+    }
+    const MeshData flat = MakeFlatSquare(12, 1.0, seed % 3 ? 0.0 : 0.3, seed);
+    const TriangleMesh square(flat.Positions, flat.Triangles);
+    FlatPolygonTracer tracer(square);
+    std::mt19937 rng(seed);
+    // Grid-aligned coordinates: curves along edges and through vertices, shared between shapes.
+    std::uniform_int_distribution<int> grid(1, 11);
+    std::vector<TracedCurve> flatCurves;
+    for (int c = 0; c < 6; ++c)
+    {
+      std::vector<Vec2> polygon(4);
+      for (Vec2& v : polygon)
+      {
+        v = { grid(rng) / 12.0, grid(rng) / 12.0 };
+      }
+      TracedCurve curve;
+      if (tracer.Trace(polygon, true, c % 3, c, curve) && curve.Points.size() >= 3)
+      {
+        flatCurves.push_back(curve);
+      }
+    }
+    Arrangement probe;
+    std::string error;
+    if (!ComputeArrangement(square, flatCurves, ArrangementOptions(), probe, error))
+    {
+      continue;
+    }
+    for (int pieces : { 2, 3, 6 })
+    {
+      for (int axis = 0; axis < 2; ++axis)
+      {
+        ExpectSameAsWhole(square, flatCurves, SlabOwners(square, pieces, axis), pieces);
+      }
+      ExpectSameAsWhole(square, flatCurves, RegionOwners(square, pieces, seed, -1), pieces);
+    }
   }
 }
