@@ -1,4 +1,5 @@
 #include "Arrangement/Arrangement.h"
+#include "Arrangement/ArrangementOfRuns.h"
 
 #include "Arrangement/EditBuffers.h"
 
@@ -275,7 +276,7 @@ void MarkRefinedAndBlocked(const TriangleMesh& mesh,
   for (size_t i = 0; i < map.EdgeSegments.size(); ++i)
   {
     const EdgeSegment& es = map.EdgeSegments[i];
-    if (!BoundsCells(curves[es.Curve]))
+    if (!curves[es.Curve].Closed)
     {
       continue;
     }
@@ -562,14 +563,15 @@ bool AssembleRefinedCurves(const TriangleMesh& mesh,
   return true;
 }
 
-} // namespace
-
 //------------------------------------------------------------------------------
 // The stages in order, timed: the segment map, the crossings, the refinement (local
 // triangulations, point numbering, blocked edges, piece layout), the flood fill into cells,
 // and the curves on the refined surface with the patches and the cell graph.
-bool ComputeArrangement(const TriangleMesh& mesh,
+// `bounding`: the curves as the refinement and the blocked edges read them, whose Closed says
+// which bound cells (the curves themselves, or ComputeArrangementOfRuns' copy).
+bool ComputeArrangementBoundedBy(const TriangleMesh& mesh,
   const std::vector<TracedCurve>& curves,
+  const std::vector<TracedCurve>& bounding,
   const ArrangementOptions& options,
   Arrangement& out,
   std::string& error)
@@ -598,16 +600,16 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   const Clock::time_point hashed = Clock::now();
 
   // --- 2. intersections
-  IntersectSegments(mesh, curves, work, arena);
+  IntersectSegments(mesh, bounding, work, arena);
   const Clock::time_point intersected = Clock::now();
 
   // --- 3. refinement, then assembly of the refined surface
-  if (!RefineTriangles(mesh, curves, work, arena, error))
+  if (!RefineTriangles(mesh, bounding, work, arena, error))
   {
     return false;
   }
   NumberRefinedPoints(mesh, work, out, arena);
-  MarkRefinedAndBlocked(mesh, curves, work);
+  MarkRefinedAndBlocked(mesh, bounding, work);
   if (!LayOutRefinedPieces(mesh, work, out, arena, error))
   {
     return false;
@@ -642,6 +644,34 @@ bool ComputeArrangement(const TriangleMesh& mesh,
   out.Times.CellGraph = Milliseconds(filled, done);
   out.Times.Total = Milliseconds(start, done);
   return true;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+bool ComputeArrangement(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  const ArrangementOptions& options,
+  Arrangement& out,
+  std::string& error)
+{
+  return ComputeArrangementBoundedBy(mesh, curves, curves, options, out, error);
+}
+
+//------------------------------------------------------------------------------
+bool ComputeArrangementOfRuns(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  const std::vector<char>& cutFromClosed,
+  const ArrangementOptions& options,
+  Arrangement& out,
+  std::string& error)
+{
+  std::vector<TracedCurve> bounding = curves;
+  for (size_t c = 0; c < bounding.size() && c < cutFromClosed.size(); ++c)
+  {
+    bounding[c].Closed = bounding[c].Closed || cutFromClosed[c] != 0;
+  }
+  return ComputeArrangementBoundedBy(mesh, curves, bounding, options, out, error);
 }
 
 //------------------------------------------------------------------------------

@@ -336,7 +336,7 @@ void IntersectTriangleSegments(const TriangleMesh& mesh,
     }
     out.Chains[i].push_back(a);
     out.Chains[i].push_back(b);
-    out.ChainClosed[i] = BoundsCells(curves[s.Curve]) ? 1 : 0;
+    out.ChainClosed[i] = curves[s.Curve].Closed ? 1 : 0;
   }
   CutSegmentsAtIntersections(out, mergeDistance);
 }

@@ -114,7 +114,6 @@ void AppendRun(const TracedCurve& curve,
   run.ShapeId = curve.ShapeId;
   run.CurveId = curve.CurveId;
   run.Closed = whole && curve.Closed;
-  run.CutFromClosed = !whole && curve.Closed;
   const int points = whole ? n : count + 1;
   run.Points.reserve(points);
   for (int i = 0; i < points; ++i)
@@ -124,6 +123,7 @@ void AppendRun(const TracedCurve& curve,
   out.Curves.push_back(std::move(run));
   out.SourceCurve.push_back(source);
   out.FirstPoint.push_back(first);
+  out.CutFromClosed.push_back(!whole && curve.Closed ? 1 : 0);
 }
 
 } // namespace

@@ -5,7 +5,8 @@
 // owned triangle exactly as on the whole surface needs (its own segments and the points its
 // neighbours put on its edges). Runs of kept segments become curves of the piece, renumbered
 // to local ids; a run of a closed curve is open there but still separates cells
-// (TracedCurve::CutFromClosed). A closed curve the piece keeps whole stays closed.
+// (PieceCurves::CutFromClosed, arranged by ComputeArrangementOfRuns). A closed curve the piece
+// keeps whole stays closed.
 //
 // Runs keep the order of the global curve's segments (a closed curve's run through its first
 // point is cut there into two runs), so inside every triangle the segments come in the same
@@ -36,6 +37,10 @@ struct PieceCurves
   std::vector<TracedCurve> Curves; ///< on the piece's local ids
   std::vector<int> SourceCurve;    ///< per curve: index of the global curve it is a run of
   std::vector<int> FirstPoint;     ///< per curve: index of its first point in the global curve
+  /// Per curve: 1 for an open run of a closed curve, which bounds cells all the same.
+  std::vector<char> CutFromClosed;
+  /// Whether curve c separates cells: closed, or a run of a closed curve.
+  bool BoundsCells(int c) const { return this->Curves[c].Closed || this->CutFromClosed[c] != 0; }
 };
 
 /// Restricts `curves` (on global ids) to the piece. Points the piece does not have drop out

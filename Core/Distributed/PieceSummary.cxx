@@ -1,5 +1,6 @@
 #include "Distributed/PieceSummary.h"
 
+#include "Arrangement/ArrangementOfRuns.h"
 #include "Mesh/EdgeIndex.h"
 
 #include <algorithm>
@@ -115,7 +116,7 @@ std::unordered_set<std::uint64_t> BoundingSubEdges(const PieceCurves& curves,
   for (size_t c = 0; c < curves.Curves.size(); ++c)
   {
     const std::vector<int>& p = arr.CurvePoints[c];
-    if (!BoundsCells(curves.Curves[c]) || p.size() < 2)
+    if (!curves.BoundsCells(static_cast<int>(c)) || p.size() < 2)
     {
       continue;
     }
@@ -297,7 +298,7 @@ void SummarizeCurveSteps(const PieceMesh& piece,
   for (size_t c = 0; c < curves.Curves.size(); ++c)
   {
     const std::vector<int>& p = arr.CurvePoints[c];
-    if (!BoundsCells(curves.Curves[c]) || p.size() < 2)
+    if (!curves.BoundsCells(static_cast<int>(c)) || p.size() < 2)
     {
       continue;
     }
@@ -343,7 +344,8 @@ bool ArrangePiece(const PieceMesh& piece,
   PieceSummary& out,
   std::string& error)
 {
-  if (!ComputeArrangement(piece.Mesh, curves.Curves, options, arr, error))
+  if (!ComputeArrangementOfRuns(
+        piece.Mesh, curves.Curves, curves.CutFromClosed, options, arr, error))
   {
     return false;
   }

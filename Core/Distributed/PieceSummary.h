@@ -1,9 +1,9 @@
 // What one piece of a distributed surface tells the others about its part of the arrangement
 // (Docs/Parallel.md, "Plan for a distributed arrangement", stages 2 to 4).
 //
-// Each piece arranges its own triangles and ghost ring (ComputeArrangement on its PieceMesh
-// with its PieceCurves): its owned triangles are refined exactly as on the whole surface (the
-// piece has every segment of them and of their neighbours, in the same order), and its flood
+// Each piece arranges its own triangles and ghost ring (ComputeArrangementOfRuns on its
+// PieceMesh with its PieceCurves): its owned triangles are refined exactly as on the whole surface
+// (the piece has every segment of them and of their neighbours, in the same order), and its flood
 // fill gives local cells, each a subset of one global cell (a path through ghost triangles is
 // a path on the surface too; ghost triangles are never reported). What the merge needs of it
 // is small:
@@ -111,7 +111,7 @@ void SummarizePiece(const PieceMesh& piece,
   const Arrangement& arr,
   PieceSummary& out);
 
-/// ComputeArrangement on the piece, then SummarizePiece. Fails with ComputeArrangement's
+/// ComputeArrangementOfRuns on the piece, then SummarizePiece. Fails with the arrangement's
 /// message.
 bool ArrangePiece(const PieceMesh& piece,
   const PieceCurves& curves,

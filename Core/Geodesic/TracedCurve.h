@@ -26,17 +26,7 @@ struct TracedCurve
   bool Closed = true;
   int ShapeId = 0; ///< >= 0
   int CurveId = 0; ///< index of the curve in the user's input, reported back in patches
-  /// An open run of a closed curve, cut where the curve leaves a piece of a distributed
-  /// surface (Core/Distributed/PieceCurves.h): it separates cells like the closed curve it is
-  /// part of, but its ends are not joined. Only read when Closed is false.
-  bool CutFromClosed = false;
 };
-
-/// Whether the curve separates cells: closed, or a piece's run of a closed curve.
-inline bool BoundsCells(const TracedCurve& curve)
-{
-  return curve.Closed || curve.CutFromClosed;
-}
 
 } // namespace boolsurf
 

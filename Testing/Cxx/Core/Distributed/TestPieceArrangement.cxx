@@ -14,6 +14,7 @@
 #include "Geodesic/CurveTracer.h"
 #include "Mesh/PlyReader.h"
 #include "Mesh/ProceduralMeshes.h"
+#include "Support/PieceSplits.h"
 #include "Support/SourceTree.h"
 #include "Support/SyntheticCurves.h"
 
@@ -27,6 +28,9 @@
 #include <random>
 
 using namespace boolsurf;
+using boolsurf::testing::MakePiece;
+using boolsurf::testing::RegionOwners;
+using boolsurf::testing::SlabOwners;
 
 namespace boolsurf
 {
@@ -39,129 +43,6 @@ void PrintTo(const CellGraphStep& s, std::ostream* os)
 
 namespace
 {
-
-Vec3 Centroid(const TriangleMesh& mesh, int t)
-{
-  return (1.0 / 3.0) *
-    (mesh.GetCornerPosition(t, 0) + mesh.GetCornerPosition(t, 1) + mesh.GetCornerPosition(t, 2));
-}
-
-// Owners by slabs of equal triangle counts along `axis` (centroid order, ties by id).
-std::vector<int> SlabOwners(const TriangleMesh& mesh, int pieces, int axis)
-{
-  const int nt = mesh.GetNumberOfTriangles();
-  std::vector<int> order(nt);
-  std::iota(order.begin(), order.end(), 0);
-  const auto coordinate = [&](int t)
-  {
-    const Vec3 c = Centroid(mesh, t);
-    return axis == 0 ? c.x : (axis == 1 ? c.y : c.z);
-  };
-  std::stable_sort(
-    order.begin(), order.end(), [&](int a, int b) { return coordinate(a) < coordinate(b); });
-  std::vector<int> owner(nt);
-  for (int i = 0; i < nt; ++i)
-  {
-    owner[order[i]] = static_cast<int>(static_cast<long long>(i) * pieces / nt);
-  }
-  return owner;
-}
-
-// Owners grown breadth-first from random seeds, one triangle per piece in turn; piece
-// `emptyPiece` (when >= 0) gets no triangle.
-std::vector<int> RegionOwners(const TriangleMesh& mesh, int pieces, unsigned seed, int emptyPiece)
-{
-  const int nt = mesh.GetNumberOfTriangles();
-  std::mt19937 rng(seed);
-  std::vector<int> owner(nt, -1);
-  std::vector<std::queue<int>> fronts(pieces);
-  for (int p = 0; p < pieces; ++p)
-  {
-    if (p == emptyPiece)
-    {
-      continue;
-    }
-    int t = std::uniform_int_distribution<int>(0, nt - 1)(rng);
-    while (owner[t] >= 0)
-    {
-      t = (t + 1) % nt;
-    }
-    owner[t] = p;
-    fronts[p].push(t);
-  }
-  for (bool grew = true; grew;)
-  {
-    grew = false;
-    for (int p = 0; p < pieces; ++p)
-    {
-      while (!fronts[p].empty())
-      {
-        const int t = fronts[p].front();
-        bool added = false;
-        for (int k = 0; k < 3 && !added; ++k)
-        {
-          const int n = mesh.GetNeighbor(t, k);
-          if (n >= 0 && owner[n] < 0)
-          {
-            owner[n] = p;
-            fronts[p].push(n);
-            added = grew = true;
-          }
-        }
-        if (added)
-        {
-          break;
-        }
-        fronts[p].pop();
-      }
-    }
-  }
-  for (int& o : owner)
-  {
-    o = o < 0 ? 0 : o;
-  }
-  return owner;
-}
-
-// Piece p as a process would receive it: owned triangles plus every triangle sharing a vertex
-// with them (ghosts), points and triangles in an order unrelated to the global one.
-PieceInput MakePiece(const TriangleMesh& mesh, const std::vector<int>& owner, int p)
-{
-  const int nt = mesh.GetNumberOfTriangles();
-  std::vector<char> touched(mesh.GetNumberOfVertices(), 0);
-  for (int t = 0; t < nt; ++t)
-  {
-    for (int k = 0; k < 3 && owner[t] == p; ++k)
-    {
-      touched[mesh.GetTriangle(t)[k]] = 1;
-    }
-  }
-  PieceInput in;
-  std::vector<int> localOf(mesh.GetNumberOfVertices(), -1);
-  for (int t = nt - 1; t >= 0; --t)
-  {
-    const Triangle& tri = mesh.GetTriangle(t);
-    if (owner[t] != p && !touched[tri[0]] && !touched[tri[1]] && !touched[tri[2]])
-    {
-      continue;
-    }
-    Triangle local;
-    for (int k = 0; k < 3; ++k)
-    {
-      if (localOf[tri[k]] < 0)
-      {
-        localOf[tri[k]] = static_cast<int>(in.Positions.size());
-        in.Positions.push_back(mesh.GetPosition(tri[k]));
-        in.PointGlobalIds.push_back(tri[k]);
-      }
-      local[k] = localOf[tri[k]];
-    }
-    in.Triangles.push_back(local);
-    in.TriangleGlobalIds.push_back(t);
-    in.Ghost.push_back(owner[t] != p ? 1 : 0);
-  }
-  return in;
-}
 
 struct DistributedRun
 {

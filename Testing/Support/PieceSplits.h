@@ -1,0 +1,30 @@
+// Surfaces split into pieces as processes would receive them, for the tests and benchmarks of
+// the distributed arrangement (Core/Distributed): owners per triangle by slabs or by random
+// regions, and each piece with its ring of ghost triangles and global ids.
+#ifndef boolsurf_PieceSplits_h
+#define boolsurf_PieceSplits_h
+
+#include "Distributed/PieceMesh.h"
+
+#include <vector>
+
+namespace boolsurf
+{
+namespace testing
+{
+
+/// Owners by slabs of equal triangle counts along `axis` (centroid order, ties by id).
+std::vector<int> SlabOwners(const TriangleMesh& mesh, int pieces, int axis);
+
+/// Owners grown breadth-first from random seeds, one triangle per piece in turn; piece
+/// `emptyPiece` (when >= 0) gets no triangle.
+std::vector<int> RegionOwners(const TriangleMesh& mesh, int pieces, unsigned seed, int emptyPiece);
+
+/// Piece p as a process would receive it: owned triangles plus every triangle sharing a vertex
+/// with them (ghosts), points and triangles in an order unrelated to the global one.
+PieceInput MakePiece(const TriangleMesh& mesh, const std::vector<int>& owner, int p);
+
+} // namespace testing
+} // namespace boolsurf
+
+#endif
