@@ -1,8 +1,7 @@
 #include "Distributed/MergedArrangement.h"
 
-#include "Mesh/EdgeIndex.h"
-
 #include <algorithm>
+#include <cstdlib>
 #include <map>
 #include <numeric>
 #include <tuple>
@@ -129,39 +128,62 @@ void NumberCells(const std::vector<PieceSummary>& pieces,
   }
 }
 
-// The pieces' arcs on global cells, and the arcs of the curve steps along the boundary.
-void GatherArcs(const std::vector<PieceSummary>& pieces,
+// The pieces' crossings on global cells, and those of the boundary sub-segments curves run
+// along.
+void GatherCrossings(const std::vector<PieceSummary>& pieces,
   const std::map<std::pair<std::uint64_t, int>, SubSegmentSides>& sides,
   const std::vector<int>& nodeBase,
   MergedArrangement& out)
 {
-  const auto cellOfNode = [&](int piece, int node)
-  { return out.GlobalCellOfLocal[piece][node - nodeBase[piece]]; };
   std::vector<int> pieceOfNode(nodeBase.back());
   for (size_t p = 0; p < pieces.size(); ++p)
   {
     std::fill(pieceOfNode.begin() + nodeBase[p], pieceOfNode.begin() + nodeBase[p + 1], p);
   }
-  out.Arcs.clear();
+  const auto cellOfNode = [&](int node)
+  { return out.GlobalCellOfLocal[pieceOfNode[node]][node - nodeBase[pieceOfNode[node]]]; };
+  out.Crossings.clear();
   for (size_t p = 0; p < pieces.size(); ++p)
   {
     const std::vector<int>& global = out.GlobalCellOfLocal[p];
-    for (const CellGraphStep& a : pieces[p].Arcs)
+    for (const CellCrossing& c : pieces[p].Crossings)
     {
-      out.Arcs.push_back({ global[a.RightCell], global[a.LeftCell], a.Shape });
-    }
-    for (const BoundaryCurveStep& step : pieces[p].BoundarySteps)
-    {
-      const SubSegmentSides& s = sides.at({ step.Edge, step.Index });
-      // The left side runs the edge the way the curve does.
-      const int left = s.Forward[0] == step.Forward ? 0 : 1;
-      const int l = cellOfNode(pieceOfNode[s.Node[left]], s.Node[left]);
-      const int r = cellOfNode(pieceOfNode[s.Node[1 - left]], s.Node[1 - left]);
-      out.Arcs.push_back({ r, l, step.Shape });
+      CellCrossing g = c;
+      g.FromCell = global[c.FromCell];
+      g.ToCell = global[c.ToCell];
+      g.Normalize();
+      out.Crossings.push_back(std::move(g));
     }
   }
-  std::sort(out.Arcs.begin(), out.Arcs.end());
-  out.Arcs.erase(std::unique(out.Arcs.begin(), out.Arcs.end()), out.Arcs.end());
+  // Boundary steps, grouped by sub-segment: a step running the edge upwards crosses from the
+  // side whose triangle runs it downwards to the other (a triangle lies left of its edges).
+  std::vector<BoundaryCurveStep> steps;
+  for (const PieceSummary& piece : pieces)
+  {
+    steps.insert(steps.end(), piece.BoundarySteps.begin(), piece.BoundarySteps.end());
+  }
+  std::sort(steps.begin(), steps.end());
+  for (size_t i = 0; i < steps.size();)
+  {
+    size_t j = i;
+    std::vector<std::pair<int, int>> delta;
+    for (; j < steps.size() && steps[j].Edge == steps[i].Edge && steps[j].Index == steps[i].Index;
+         ++j)
+    {
+      delta.push_back({ steps[j].Shape, steps[j].Forward ? 1 : -1 });
+    }
+    const SubSegmentSides& s = sides.at({ steps[i].Edge, steps[i].Index });
+    const int up = s.Forward[0] ? 0 : 1;
+    CellCrossing c;
+    c.FromCell = cellOfNode(s.Node[1 - up]);
+    c.ToCell = cellOfNode(s.Node[up]);
+    c.Delta = SumByShape(std::move(delta));
+    c.Normalize();
+    out.Crossings.push_back(std::move(c));
+    i = j;
+  }
+  std::sort(out.Crossings.begin(), out.Crossings.end());
+  out.Crossings.erase(std::unique(out.Crossings.begin(), out.Crossings.end()), out.Crossings.end());
 }
 
 } // namespace
@@ -185,48 +207,51 @@ bool MergePieceSummaries(const std::vector<PieceSummary>& pieces,
     return false;
   }
   NumberCells(pieces, nodeBase, parent, out);
-  GatherArcs(pieces, sides, nodeBase, out);
+  GatherCrossings(pieces, sides, nodeBase, out);
   return true;
 }
 
 //------------------------------------------------------------------------------
-std::vector<CellGraphStep> DistinctCellGraphSteps(const std::vector<CellGraphArc>& arcs)
-{
-  std::vector<CellGraphStep> steps;
-  steps.reserve(arcs.size());
-  for (const CellGraphArc& a : arcs)
-  {
-    steps.push_back({ a.RightCell, a.LeftCell, a.Shape });
-  }
-  std::sort(steps.begin(), steps.end());
-  steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
-  return steps;
-}
-
-//------------------------------------------------------------------------------
-LabelingInput LabelingInputOfSteps(int numberOfCells, const std::vector<CellGraphStep>& steps)
+LabelingInput LabelingInputOfCrossings(int numberOfCells,
+  const std::vector<CellCrossing>& crossings,
+  const std::vector<int>& shapeIds)
 {
   LabelingInput input;
   input.NumberOfCells = numberOfCells;
-  for (const CellGraphStep& s : steps)
+  input.ShapeIds = shapeIds;
+  for (const CellCrossing& c : crossings)
   {
-    input.ShapeIds.push_back(s.Shape);
+    for (const std::pair<int, int>& d : c.Delta)
+    {
+      input.ShapeIds.push_back(d.first);
+    }
   }
   std::sort(input.ShapeIds.begin(), input.ShapeIds.end());
   input.ShapeIds.erase(
     std::unique(input.ShapeIds.begin(), input.ShapeIds.end()), input.ShapeIds.end());
   input.NumberOfShapes = static_cast<int>(input.ShapeIds.size());
-  for (const CellGraphStep& s : steps)
+  for (size_t k = 0; k < crossings.size(); ++k)
   {
-    CellArc arc;
-    arc.RightCell = s.RightCell;
-    arc.LeftCell = s.LeftCell;
-    arc.Shape =
-      static_cast<int>(std::lower_bound(input.ShapeIds.begin(), input.ShapeIds.end(), s.Shape) -
-        input.ShapeIds.begin());
-    arc.Location = static_cast<long long>(
-      UndirectedPointPair(std::min(s.RightCell, s.LeftCell), std::max(s.RightCell, s.LeftCell)));
-    input.Arcs.push_back(arc);
+    const CellCrossing& c = crossings[k];
+    if (c.Delta.empty() && c.FromCell != c.ToCell)
+    {
+      input.Links.push_back({ c.FromCell, c.ToCell }); // curves that cancel: equal labels
+    }
+    for (const std::pair<int, int>& d : c.Delta)
+    {
+      CellArc arc;
+      arc.RightCell = d.second > 0 ? c.FromCell : c.ToCell;
+      arc.LeftCell = d.second > 0 ? c.ToCell : c.FromCell;
+      arc.Shape =
+        static_cast<int>(std::lower_bound(input.ShapeIds.begin(), input.ShapeIds.end(), d.first) -
+          input.ShapeIds.begin());
+      arc.Location = static_cast<long long>(k);
+      arc.Direction = d.second > 0 ? 1 : -1;
+      for (int n = 0; n < std::abs(d.second); ++n)
+      {
+        input.Arcs.push_back(arc);
+      }
+    }
   }
   return input;
 }

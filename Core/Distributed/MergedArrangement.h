@@ -6,8 +6,9 @@
 // within a piece, the flood fill already joined everything else. Global cells are numbered by
 // their lowest refined triangle (the smallest RefinedTriangleKey of their nodes), as
 // ComputeArrangement numbers them on the whole surface, so the numbering does not depend on
-// how the surface was split. The cell graph is the pieces' arcs on global cells plus, for
-// each curve step along the piece boundary, the arc between the cells of its two sides.
+// how the surface was split. The cell graph is the pieces' crossings on global cells plus the
+// crossings of the boundary sub-segments curves run along (their steps from one side, the
+// cells from both).
 //
 // Cost: O(S log S) for S the summaries' total size (sorting the boundary sub-segments and the
 // cells' keys), independent of the surface's triangles. Run on one process after a gather of
@@ -31,8 +32,8 @@ struct MergedArrangement
   std::vector<std::vector<int>> GlobalCellOfLocal;
   std::vector<RefinedTriangleKey> CellLowestTriangle; ///< per global cell
   std::vector<double> CellArea;                       ///< per global cell
-  /// The cell graph without repeats: one step per (right cell, left cell, shape id).
-  std::vector<CellGraphStep> Arcs;
+  /// The cell graph as distinct crossings (normalized, sorted).
+  std::vector<CellCrossing> Crossings;
 };
 
 /// Merges the pieces' summaries (piece p's at index p). Fails, naming the edge's global
@@ -42,15 +43,14 @@ bool MergePieceSummaries(const std::vector<PieceSummary>& pieces,
   MergedArrangement& out,
   std::string& error);
 
-/// The one-step-per-arc cell graph of a whole-surface arrangement (its CellGraph without
-/// repeats), to compare with MergedArrangement::Arcs or label alike.
-std::vector<CellGraphStep> DistinctCellGraphSteps(const std::vector<CellGraphArc>& arcs);
-
-/// Labeling input for a cell graph given as distinct steps: shapes indexed by ascending id;
-/// the steps between two cells are one crossing (curves of several shapes along the same
-/// place are crossed at once). The labels of consistent shapes equal those of the
-/// arrangement's own patch-by-patch graph.
-LabelingInput LabelingInputOfSteps(int numberOfCells, const std::vector<CellGraphStep>& steps);
+/// Labeling input for a cell graph given as crossings: shapes indexed by ascending id (those
+/// of `shapeIds` and of the crossings), one Location per crossing, |count| arcs per shape, a
+/// link for a crossing whose curves cancel. Labels
+/// agree with the labeling stage's on the whole arrangement (MakeLabelingInput) up to each
+/// shape's zero; so does every shape's consistency on a closed surface.
+LabelingInput LabelingInputOfCrossings(int numberOfCells,
+  const std::vector<CellCrossing>& crossings,
+  const std::vector<int>& shapeIds = {});
 
 } // namespace boolsurf
 

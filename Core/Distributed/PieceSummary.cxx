@@ -17,28 +17,63 @@ bool BoundaryCurveStep::operator<(const BoundaryCurveStep& o) const
   return std::tie(this->Edge, this->Index, this->Shape, this->Forward) <
     std::tie(o.Edge, o.Index, o.Shape, o.Forward);
 }
-bool BoundaryCurveStep::operator==(const BoundaryCurveStep& o) const
+bool CellCrossing::operator<(const CellCrossing& o) const
 {
-  return this->Edge == o.Edge && this->Index == o.Index && this->Shape == o.Shape &&
-    this->Forward == o.Forward;
+  return std::tie(this->FromCell, this->ToCell, this->Delta) <
+    std::tie(o.FromCell, o.ToCell, o.Delta);
 }
-bool CellGraphStep::operator<(const CellGraphStep& o) const
+bool CellCrossing::operator==(const CellCrossing& o) const
 {
-  return std::tie(this->RightCell, this->LeftCell, this->Shape) <
-    std::tie(o.RightCell, o.LeftCell, o.Shape);
+  return this->FromCell == o.FromCell && this->ToCell == o.ToCell && this->Delta == o.Delta;
 }
-bool CellGraphStep::operator==(const CellGraphStep& o) const
+void CellCrossing::Normalize()
 {
-  return this->RightCell == o.RightCell && this->LeftCell == o.LeftCell && this->Shape == o.Shape;
+  const bool flip = this->FromCell > this->ToCell ||
+    (this->FromCell == this->ToCell && !this->Delta.empty() && this->Delta[0].second < 0);
+  if (flip)
+  {
+    std::swap(this->FromCell, this->ToCell);
+    for (std::pair<int, int>& d : this->Delta)
+    {
+      d.second = -d.second;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::pair<int, int>> SumByShape(std::vector<std::pair<int, int>> steps)
+{
+  std::sort(steps.begin(), steps.end());
+  std::vector<std::pair<int, int>> delta;
+  for (const std::pair<int, int>& s : steps)
+  {
+    if (!delta.empty() && delta.back().first == s.first)
+    {
+      delta.back().second += s.second;
+    }
+    else
+    {
+      delta.push_back(s);
+    }
+  }
+  delta.erase(
+    std::remove_if(
+      delta.begin(), delta.end(), [](const std::pair<int, int>& d) { return d.second == 0; }),
+    delta.end());
+  return delta;
 }
 
 //------------------------------------------------------------------------------
 std::size_t PieceSummary::GetBytes() const
 {
+  std::size_t crossings = 0;
+  for (const CellCrossing& c : this->Crossings)
+  {
+    crossings += 2 * sizeof(int) + c.Delta.size() * sizeof(std::pair<int, int>);
+  }
   return sizeof(int) + this->Cells.size() * sizeof(PieceCell) +
     this->Boundary.size() * sizeof(BoundarySubSegment) +
-    this->BoundarySteps.size() * sizeof(BoundaryCurveStep) +
-    this->Arcs.size() * sizeof(CellGraphStep);
+    this->BoundarySteps.size() * sizeof(BoundaryCurveStep) + crossings;
 }
 
 namespace
@@ -237,8 +272,7 @@ int OwnedHolder(const PieceMesh& piece,
   return -1;
 }
 
-// The arcs between owned sides of cell-bounding curves, and the curves' steps along the piece
-// boundary.
+// The crossings whose two sides are owned, and the curves' steps along the piece boundary.
 void SummarizeCurveSteps(const PieceMesh& piece,
   const PieceCurves& curves,
   const Arrangement& arr,
@@ -268,6 +302,9 @@ void SummarizeCurveSteps(const PieceMesh& piece,
         }
       });
   }
+  // Per place off the boundary (refined point pair x < y): the shapes crossing it, +1 for a
+  // step from x to y.
+  std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> placeSteps;
   const auto step = [&](int u, int v, int shape)
   {
     if (u == v)
@@ -278,22 +315,15 @@ void SummarizeCurveSteps(const PieceMesh& piece,
     if (place != places.end())
     {
       const BoundarySubSegment& b = out.Boundary[place->second.Record];
-      // Travel along the owned edge's direction when the lower id comes first and lies lower.
-      const bool alongEdge = (u < v) == (place->second.FromPosition < place->second.ToPosition);
-      out.BoundarySteps.push_back({ b.Edge, b.Index, shape, alongEdge == b.Forward });
+      if (b.Forward) // the other side reports the steps of the other half
+      {
+        // Travel along the owned edge's direction when the lower id comes first and lies lower.
+        const bool alongEdge = (u < v) == (place->second.FromPosition < place->second.ToPosition);
+        out.BoundarySteps.push_back({ b.Edge, b.Index, shape, alongEdge });
+      }
       return;
     }
-    const int lt = OwnedHolder(piece, arr, holder, u, v);
-    const int rt = OwnedHolder(piece, arr, holder, v, u);
-    if (lt < 0 || rt < 0)
-    {
-      return; // a ghost's side, or the surface's open boundary
-    }
-    const int l = arr.CellOfTriangle(lt), r = arr.CellOfTriangle(rt);
-    if (l >= 0 && r >= 0)
-    {
-      out.Arcs.push_back({ r, l, shape });
-    }
+    placeSteps[UndirectedPointPair(u, v)].push_back({ shape, u < v ? 1 : -1 });
   };
   for (size_t c = 0; c < curves.Curves.size(); ++c)
   {
@@ -313,10 +343,30 @@ void SummarizeCurveSteps(const PieceMesh& piece,
     }
   }
   std::sort(out.BoundarySteps.begin(), out.BoundarySteps.end());
-  out.BoundarySteps.erase(
-    std::unique(out.BoundarySteps.begin(), out.BoundarySteps.end()), out.BoundarySteps.end());
-  std::sort(out.Arcs.begin(), out.Arcs.end());
-  out.Arcs.erase(std::unique(out.Arcs.begin(), out.Arcs.end()), out.Arcs.end());
+  for (auto& entry : placeSteps)
+  {
+    const int x = static_cast<int>(entry.first >> 32);
+    const int y = static_cast<int>(entry.first & 0xffffffffu);
+    // A step x -> y has the triangle holding x -> y on its left: it crosses from the right.
+    const int lt = OwnedHolder(piece, arr, holder, x, y);
+    const int rt = OwnedHolder(piece, arr, holder, y, x);
+    if (lt < 0 || rt < 0)
+    {
+      continue; // a ghost's side, or the surface's open boundary
+    }
+    CellCrossing crossing;
+    crossing.FromCell = arr.CellOfTriangle(rt);
+    crossing.ToCell = arr.CellOfTriangle(lt);
+    if (crossing.FromCell < 0 || crossing.ToCell < 0)
+    {
+      continue;
+    }
+    crossing.Delta = SumByShape(std::move(entry.second));
+    crossing.Normalize();
+    out.Crossings.push_back(std::move(crossing));
+  }
+  std::sort(out.Crossings.begin(), out.Crossings.end());
+  out.Crossings.erase(std::unique(out.Crossings.begin(), out.Crossings.end()), out.Crossings.end());
 }
 
 } // namespace

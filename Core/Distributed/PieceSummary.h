@@ -16,8 +16,10 @@
 //    whether a cell-bounding curve runs along it. Both pieces split the edge at the same points
 //    (each has all the segments of both triangles), so sub-segment i from the edge's lower
 //    global vertex is the same on both sides;
-//  * the cell graph's arcs whose two sides are owned (local cells, shape), and the curve steps
-//    along the piece boundary, whose other side only the neighbour knows.
+//  * the crossings of the cell graph whose two sides are owned (local cells, and per shape how
+//    the labels change across: curves along one place are crossed together, as the labeling
+//    stage crosses the arcs of one place), and the curve steps along the piece boundary, whose
+//    other side only the neighbour knows.
 // Its size is O(local cells + boundary edges + curve steps), not O(triangles); computing it
 // reads the owned triangles once (O(owned triangles), the flood fill's own order).
 #ifndef boolsurf_PieceSummary_h
@@ -30,6 +32,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace boolsurf
@@ -75,7 +78,9 @@ struct BoundarySubSegment
   bool Blocked = false;   ///< a cell-bounding curve runs along it
 };
 
-/// A step of a cell-bounding curve along a boundary sub-segment.
+/// A step of a cell-bounding curve along a boundary sub-segment, reported by the piece whose
+/// owned side runs the edge from lower to higher global vertex (each step once, repeats kept:
+/// two curves of one shape along the sub-segment cross it twice).
 struct BoundaryCurveStep
 {
   std::uint64_t Edge = 0;
@@ -83,24 +88,32 @@ struct BoundaryCurveStep
   int Shape = 0;
   bool Forward = false; ///< the curve runs from lower to higher global vertex
   bool operator<(const BoundaryCurveStep& o) const;
-  bool operator==(const BoundaryCurveStep& o) const;
 };
 
-/// An arc of the cell graph: crossing a curve of `Shape` from RightCell to LeftCell.
-struct CellGraphStep
+/// What crossing one place of the curves does to the labels (CellLabeling.h: curves along the
+/// same place are crossed at once): from FromCell to ToCell, shape id s changes by its count in
+/// Delta. Normalized so that FromCell <= ToCell (and, within one cell, the first count is
+/// positive), so that equal crossings found by several pieces are one.
+struct CellCrossing
 {
-  int RightCell = -1, LeftCell = -1, Shape = 0;
-  bool operator<(const CellGraphStep& o) const;
-  bool operator==(const CellGraphStep& o) const;
+  int FromCell = -1, ToCell = -1;
+  std::vector<std::pair<int, int>> Delta; ///< (shape id, count): ascending ids, no zero count
+  bool operator<(const CellCrossing& o) const;
+  bool operator==(const CellCrossing& o) const;
+  /// FromCell <= ToCell, Delta's signs to match.
+  void Normalize();
 };
+
+/// The (shape id, count) pairs summed per shape: ascending ids, zero counts dropped.
+std::vector<std::pair<int, int>> SumByShape(std::vector<std::pair<int, int>> steps);
 
 struct PieceSummary
 {
   int NumberOfLocalCells = 0;
   std::vector<PieceCell> Cells; ///< local cells holding owned triangles, by local cell
   std::vector<BoundarySubSegment> Boundary;
-  std::vector<BoundaryCurveStep> BoundarySteps; ///< sorted, distinct
-  std::vector<CellGraphStep> Arcs;              ///< on local cells, sorted, distinct
+  std::vector<BoundaryCurveStep> BoundarySteps; ///< sorted
+  std::vector<CellCrossing> Crossings;          ///< on local cells, sorted, distinct
   /// Bytes a process would send (the vectors' payloads).
   std::size_t GetBytes() const;
 };
