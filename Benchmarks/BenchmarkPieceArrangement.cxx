@@ -5,11 +5,14 @@
 //    arrangements and summaries (the largest is what P processes would wait for);
 //    restrict_max_ms: restricting the curves to a piece; merge_ms: the merge of the summaries;
 //  * piece_bytes_max: the largest piece as received (positions, ids, triangles, ghost marks);
-//    summary_bytes_max / summary_bytes_total: what the pieces would send to be merged;
+//    boundary_bytes_max: the largest piece's boundary records (sent to its neighbours);
+//    to_merge_bytes_max / _total: what the pieces would send to the merge (cells, crossings,
+//    the joins they matched with their neighbours);
 //  * boundary_max: the largest piece's boundary sub-segments; same_cells: 1 when the merged
 //    cells are as many as the whole surface's (the tests check every triangle's cell).
 // Curves: ten plane sections (loops) of the mesh, outside the timed loop. The argument is P.
 #include "Arrangement/Arrangement.h"
+#include "Distributed/BoundaryJoins.h"
 #include "Distributed/MergedArrangement.h"
 #include "Distributed/PieceCurves.h"
 #include "Distributed/PieceSummary.h"
@@ -130,11 +133,32 @@ void RunPieces(benchmark::State& state, const std::string& name)
     MergePieceSummaries(summaries, merged, error);
     mergeMs = Milliseconds(m0, Clock::now());
   }
-  double summaryMax = 0, summaryTotal = 0, boundaryMax = 0;
-  for (const PieceSummary& s : summaries)
+  // What each piece would send: its boundary records to its neighbours (the owners of its
+  // ghosts), then its cells, crossings and the joins it matched to the merge.
+  double boundaryBytesMax = 0, toMergeMax = 0, toMergeTotal = 0, boundaryMax = 0;
+  for (int p = 0; p < pieces; ++p)
   {
-    summaryMax = std::max(summaryMax, static_cast<double>(s.GetBytes()));
-    summaryTotal += static_cast<double>(s.GetBytes());
+    std::vector<int> ids{ p };
+    for (int g : meshes[p].GlobalTriangle)
+    {
+      ids.push_back(owner[g]);
+    }
+    std::sort(ids.begin() + 1, ids.end());
+    ids.erase(std::unique(ids.begin() + 1, ids.end()), ids.end());
+    ids.erase(std::remove(ids.begin() + 1, ids.end(), p), ids.end());
+    std::vector<const PieceSummary*> given;
+    for (int q : ids)
+    {
+      given.push_back(&summaries[q]);
+    }
+    BoundaryJoins joins;
+    JoinPieceBoundaries(ids, given, p, joins, error);
+    const PieceSummary& s = summaries[p];
+    const double toMerge =
+      static_cast<double>(s.GetBytes() - s.GetBoundaryBytes() + joins.GetBytes());
+    toMergeMax = std::max(toMergeMax, toMerge);
+    toMergeTotal += toMerge;
+    boundaryBytesMax = std::max(boundaryBytesMax, static_cast<double>(s.GetBoundaryBytes()));
     boundaryMax = std::max(boundaryMax, static_cast<double>(s.Boundary.size()));
   }
   state.counters["triangles"] = mesh->GetNumberOfTriangles();
@@ -151,8 +175,9 @@ void RunPieces(benchmark::State& state, const std::string& name)
   state.counters["restrict_max_ms"] = restrictMax;
   state.counters["merge_ms"] = mergeMs;
   state.counters["piece_bytes_max"] = pieceBytesMax;
-  state.counters["summary_bytes_max"] = summaryMax;
-  state.counters["summary_bytes_total"] = summaryTotal;
+  state.counters["boundary_bytes_max"] = boundaryBytesMax;
+  state.counters["to_merge_bytes_max"] = toMergeMax;
+  state.counters["to_merge_bytes_total"] = toMergeTotal;
   state.counters["boundary_max"] = boundaryMax;
   state.counters["cells"] = merged.NumberOfCells;
   state.counters["same_cells"] = merged.NumberOfCells == whole.NumberOfCells ? 1 : 0;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <map>
 #include <numeric>
 #include <tuple>
 
@@ -19,63 +18,6 @@ int FindRoot(std::vector<int>& parent, int x)
     x = parent[x];
   }
   return x;
-}
-
-std::string EdgeName(std::uint64_t edge)
-{
-  return "(" + std::to_string(edge >> 32) + ", " + std::to_string(edge & 0xffffffffu) + ")";
-}
-
-// A boundary sub-segment's two sides, by node.
-struct SubSegmentSides
-{
-  int Node[2] = { -1, -1 };
-  bool Forward[2] = { false, false };
-  int Count = 0, Sides = 0;
-  bool Blocked = false;
-};
-
-// Joins the two sides of every unblocked boundary sub-segment; `sides` keeps them for the arcs.
-bool JoinAcrossBoundary(const std::vector<PieceSummary>& pieces,
-  const std::vector<int>& nodeBase,
-  std::vector<int>& parent,
-  std::map<std::pair<std::uint64_t, int>, SubSegmentSides>& sides,
-  std::string& error)
-{
-  for (size_t p = 0; p < pieces.size(); ++p)
-  {
-    for (const BoundarySubSegment& b : pieces[p].Boundary)
-    {
-      SubSegmentSides& s = sides[{ b.Edge, b.Index }];
-      if (s.Sides == 2 || (s.Sides == 1 && (s.Count != b.Count || s.Blocked != b.Blocked)))
-      {
-        error = "pieces disagree on edge " + EdgeName(b.Edge) + " (piece " + std::to_string(p) +
-          "): " + (s.Sides == 2 ? "more than two sides" : "different sub-segments");
-        return false;
-      }
-      s.Node[s.Sides] = nodeBase[p] + b.Cell;
-      s.Forward[s.Sides] = b.Forward;
-      s.Count = b.Count;
-      s.Blocked = b.Blocked;
-      ++s.Sides;
-    }
-  }
-  for (const auto& entry : sides)
-  {
-    const SubSegmentSides& s = entry.second;
-    if (s.Sides != 2)
-    {
-      error = "edge " + EdgeName(entry.first.first) +
-        " has one side only: a piece lacks its ring of ghost triangles";
-      return false;
-    }
-    if (!s.Blocked)
-    {
-      const int a = FindRoot(parent, s.Node[0]), b = FindRoot(parent, s.Node[1]);
-      parent[std::max(a, b)] = std::min(a, b);
-    }
-  }
-  return true;
 }
 
 // Global cells numbered by their lowest refined triangle; each node's cell and the areas.
@@ -128,20 +70,11 @@ void NumberCells(const std::vector<PieceSummary>& pieces,
   }
 }
 
-// The pieces' crossings on global cells, and those of the boundary sub-segments curves run
-// along.
+// The pieces' crossings and the boundary's on global cells.
 void GatherCrossings(const std::vector<PieceSummary>& pieces,
-  const std::map<std::pair<std::uint64_t, int>, SubSegmentSides>& sides,
-  const std::vector<int>& nodeBase,
+  const BoundaryJoins& joins,
   MergedArrangement& out)
 {
-  std::vector<int> pieceOfNode(nodeBase.back());
-  for (size_t p = 0; p < pieces.size(); ++p)
-  {
-    std::fill(pieceOfNode.begin() + nodeBase[p], pieceOfNode.begin() + nodeBase[p + 1], p);
-  }
-  const auto cellOfNode = [&](int node)
-  { return out.GlobalCellOfLocal[pieceOfNode[node]][node - nodeBase[pieceOfNode[node]]]; };
   out.Crossings.clear();
   for (size_t p = 0; p < pieces.size(); ++p)
   {
@@ -155,41 +88,60 @@ void GatherCrossings(const std::vector<PieceSummary>& pieces,
       out.Crossings.push_back(std::move(g));
     }
   }
-  // Boundary steps, grouped by sub-segment: a step running the edge upwards crosses from the
-  // side whose triangle runs it downwards to the other (a triangle lies left of its edges).
-  std::vector<BoundaryCurveStep> steps;
-  for (const PieceSummary& piece : pieces)
+  for (const BoundaryCrossing& b : joins.Crossings)
   {
-    steps.insert(steps.end(), piece.BoundarySteps.begin(), piece.BoundarySteps.end());
-  }
-  std::sort(steps.begin(), steps.end());
-  for (size_t i = 0; i < steps.size();)
-  {
-    size_t j = i;
-    std::vector<std::pair<int, int>> delta;
-    for (; j < steps.size() && steps[j].Edge == steps[i].Edge && steps[j].Index == steps[i].Index;
-         ++j)
-    {
-      delta.push_back({ steps[j].Shape, steps[j].Forward ? 1 : -1 });
-    }
-    const SubSegmentSides& s = sides.at({ steps[i].Edge, steps[i].Index });
-    const int up = s.Forward[0] ? 0 : 1;
-    CellCrossing c;
-    c.FromCell = cellOfNode(s.Node[1 - up]);
-    c.ToCell = cellOfNode(s.Node[up]);
-    c.Delta = SumByShape(std::move(delta));
-    c.Normalize();
-    out.Crossings.push_back(std::move(c));
-    i = j;
+    CellCrossing g;
+    g.FromCell = out.GlobalCellOfLocal[b.From.Piece][b.From.Cell];
+    g.ToCell = out.GlobalCellOfLocal[b.To.Piece][b.To.Cell];
+    g.Delta = b.Delta;
+    g.Normalize();
+    out.Crossings.push_back(std::move(g));
   }
   std::sort(out.Crossings.begin(), out.Crossings.end());
   out.Crossings.erase(std::unique(out.Crossings.begin(), out.Crossings.end()), out.Crossings.end());
 }
 
+// Whether every cell named is one of the pieces' local cells holding owned triangles (the
+// others have no global cell).
+bool CheckCellRefs(const std::vector<PieceSummary>& pieces,
+  const std::vector<int>& nodeBase,
+  const std::vector<char>& owned,
+  const BoundaryJoins& joins,
+  std::string& error)
+{
+  const auto valid = [&](const PieceCellRef& r)
+  {
+    return r.Piece >= 0 && r.Piece < static_cast<int>(pieces.size()) && r.Cell >= 0 &&
+      r.Cell < pieces[r.Piece].NumberOfLocalCells && owned[nodeBase[r.Piece] + r.Cell];
+  };
+  const auto name = [](const PieceCellRef& r)
+  { return "cell " + std::to_string(r.Cell) + " of piece " + std::to_string(r.Piece); };
+  for (const auto& j : joins.Joins)
+  {
+    if (!valid(j.first) || !valid(j.second))
+    {
+      error = "boundary join names " + name(valid(j.first) ? j.second : j.first) +
+        ", which holds no owned triangle";
+      return false;
+    }
+  }
+  for (const BoundaryCrossing& c : joins.Crossings)
+  {
+    if (!valid(c.From) || !valid(c.To))
+    {
+      error = "boundary crossing names " + name(valid(c.From) ? c.To : c.From) +
+        ", which holds no owned triangle";
+      return false;
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
-bool MergePieceSummaries(const std::vector<PieceSummary>& pieces,
+bool MergeCellGraph(const std::vector<PieceSummary>& pieces,
+  const BoundaryJoins& joins,
   MergedArrangement& out,
   std::string& error)
 {
@@ -199,16 +151,49 @@ bool MergePieceSummaries(const std::vector<PieceSummary>& pieces,
   {
     nodeBase[p + 1] = nodeBase[p] + pieces[p].NumberOfLocalCells;
   }
-  std::vector<int> parent(nodeBase.back());
-  std::iota(parent.begin(), parent.end(), 0);
-  std::map<std::pair<std::uint64_t, int>, SubSegmentSides> sides;
-  if (!JoinAcrossBoundary(pieces, nodeBase, parent, sides, error))
+  std::vector<char> owned(nodeBase.back(), 0);
+  for (size_t p = 0; p < pieces.size(); ++p)
+  {
+    for (const PieceCell& c : pieces[p].Cells)
+    {
+      owned[nodeBase[p] + c.LocalCell] = 1;
+    }
+  }
+  if (!CheckCellRefs(pieces, nodeBase, owned, joins, error))
   {
     return false;
   }
+  std::vector<int> parent(nodeBase.back());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& j : joins.Joins)
+  {
+    const int a = FindRoot(parent, nodeBase[j.first.Piece] + j.first.Cell);
+    const int b = FindRoot(parent, nodeBase[j.second.Piece] + j.second.Cell);
+    parent[std::max(a, b)] = std::min(a, b);
+  }
   NumberCells(pieces, nodeBase, parent, out);
-  GatherCrossings(pieces, sides, nodeBase, out);
+  GatherCrossings(pieces, joins, out);
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool MergePieceSummaries(const std::vector<PieceSummary>& pieces,
+  MergedArrangement& out,
+  std::string& error)
+{
+  std::vector<int> ids(pieces.size());
+  std::vector<const PieceSummary*> summaries(pieces.size());
+  for (size_t p = 0; p < pieces.size(); ++p)
+  {
+    ids[p] = static_cast<int>(p);
+    summaries[p] = &pieces[p];
+  }
+  BoundaryJoins joins;
+  if (!JoinPieceBoundaries(ids, summaries, -1, joins, error))
+  {
+    return false;
+  }
+  return MergeCellGraph(pieces, joins, out, error);
 }
 
 //------------------------------------------------------------------------------

@@ -2,20 +2,22 @@
 // the distributed union-find of Docs/Parallel.md, stage 3, and the cell graph of stage 4.
 //
 // Nodes are the pieces' local cells that hold owned triangles. Two nodes are one cell when
-// they are the two sides of a piece-boundary sub-segment no cell-bounding curve runs along;
-// within a piece, the flood fill already joined everything else. Global cells are numbered by
+// they are the two sides of a piece-boundary sub-segment no cell-bounding curve runs along
+// (BoundaryJoins.h, matched between neighbours); within a piece, the flood fill already joined
+// everything else. Global cells are numbered by
 // their lowest refined triangle (the smallest RefinedTriangleKey of their nodes), as
 // ComputeArrangement numbers them on the whole surface, so the numbering does not depend on
 // how the surface was split. The cell graph is the pieces' crossings on global cells plus the
 // crossings of the boundary sub-segments curves run along (their steps from one side, the
 // cells from both).
 //
-// Cost: O(S log S) for S the summaries' total size (sorting the boundary sub-segments and the
-// cells' keys), independent of the surface's triangles. Run on one process after a gather of
-// the summaries, or (not built) by pointer jumping over the processes' boundary pairs.
+// Cost: O(S log S) for S the size of what is merged (local cells, joins, crossings: bounded by
+// the curves and the number of pieces, not the triangles), on the process that merges; the
+// boundary records (O(shared boundary)) never reach it when neighbours match them first.
 #ifndef boolsurf_MergedArrangement_h
 #define boolsurf_MergedArrangement_h
 
+#include "Distributed/BoundaryJoins.h"
 #include "Distributed/PieceSummary.h"
 #include "Labeling/CellLabeling.h"
 
@@ -36,9 +38,18 @@ struct MergedArrangement
   std::vector<CellCrossing> Crossings;
 };
 
-/// Merges the pieces' summaries (piece p's at index p). Fails, naming the edge's global
-/// vertices, when the two sides of a boundary edge disagree (a piece without its ghost ring,
-/// or pieces whose curves differ).
+/// The merge on the merging process: `pieces[p]` is piece p's summary, of which only
+/// NumberOfLocalCells, Cells and Crossings are read (its boundary records stayed with its
+/// neighbours), and `joins` what the neighbours matched (JoinPieceBoundaries, every piece's
+/// results appended). Fails, naming it, on a join or crossing naming a cell out of range.
+bool MergeCellGraph(const std::vector<PieceSummary>& pieces,
+  const BoundaryJoins& joins,
+  MergedArrangement& out,
+  std::string& error);
+
+/// Both steps on one process: JoinPieceBoundaries over all pieces (piece p's summary at index
+/// p), then MergeCellGraph. Fails, naming the edge's global vertices, when the two sides of a
+/// boundary edge disagree (a piece without its ghost ring, or pieces whose curves differ).
 bool MergePieceSummaries(const std::vector<PieceSummary>& pieces,
   MergedArrangement& out,
   std::string& error);

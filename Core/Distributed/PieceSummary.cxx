@@ -71,9 +71,14 @@ std::size_t PieceSummary::GetBytes() const
   {
     crossings += 2 * sizeof(int) + c.Delta.size() * sizeof(std::pair<int, int>);
   }
-  return sizeof(int) + this->Cells.size() * sizeof(PieceCell) +
-    this->Boundary.size() * sizeof(BoundarySubSegment) +
-    this->BoundarySteps.size() * sizeof(BoundaryCurveStep) + crossings;
+  return sizeof(int) + this->Cells.size() * sizeof(PieceCell) + this->GetBoundaryBytes() +
+    crossings;
+}
+
+std::size_t PieceSummary::GetBoundaryBytes() const
+{
+  return this->Boundary.size() * sizeof(BoundarySubSegment) +
+    this->BoundarySteps.size() * sizeof(BoundaryCurveStep);
 }
 
 namespace

@@ -114,8 +114,10 @@ struct PieceSummary
   std::vector<BoundarySubSegment> Boundary;
   std::vector<BoundaryCurveStep> BoundarySteps; ///< sorted
   std::vector<CellCrossing> Crossings;          ///< on local cells, sorted, distinct
-  /// Bytes a process would send (the vectors' payloads).
+  /// Bytes a process would send (the vectors' payloads): all of it, and the boundary records
+  /// alone (Boundary and BoundarySteps, which only its neighbours need).
   std::size_t GetBytes() const;
+  std::size_t GetBoundaryBytes() const;
 };
 
 /// The summary of a piece's arrangement `arr`, computed on piece.Mesh with `curves`.

@@ -5,6 +5,7 @@
 // toroidal and genus-2 surfaces split in slabs and in random regions (with an empty piece, a
 // piece no curve touches, vertices shared by three or more pieces, curves along and across
 // piece boundaries, a shape inside one piece).
+#include "Distributed/BoundaryJoins.h"
 #include "Distributed/MergedArrangement.h"
 #include "Distributed/PieceCurves.h"
 #include "Distributed/PieceMesh.h"
@@ -44,6 +45,8 @@ struct DistributedRun
   std::vector<Arrangement> Arrangements;
   std::vector<PieceSummary> Summaries;
   MergedArrangement Merged;
+  /// Per piece: the neighbours' boundary records it receives, and what it sends to the merge.
+  std::vector<std::size_t> NeighbourBytes, SentBytes;
 };
 
 void RunDistributed(const TriangleMesh& mesh,
@@ -66,8 +69,44 @@ void RunDistributed(const TriangleMesh& mesh,
       run.Pieces[p], local, ArrangementOptions(), run.Arrangements[p], run.Summaries[p], error))
       << "piece " << p << ": " << error;
   }
+  // As processes would merge: each matches its boundary records with its neighbours' (the
+  // owners of its ghosts) and sends on the joins; the merge never sees a boundary record.
+  std::vector<PieceSummary> sent = run.Summaries;
+  BoundaryJoins joins;
+  run.NeighbourBytes.assign(pieces, 0);
+  run.SentBytes.assign(pieces, 0);
+  for (int p = 0; p < pieces; ++p)
+  {
+    std::vector<int> ids{ p };
+    for (size_t t = 0; t < run.Pieces[p].GlobalTriangle.size(); ++t)
+    {
+      ids.push_back(owner[run.Pieces[p].GlobalTriangle[t]]);
+    }
+    std::sort(ids.begin() + 1, ids.end());
+    ids.erase(std::unique(ids.begin() + 1, ids.end()), ids.end());
+    ids.erase(std::remove(ids.begin() + 1, ids.end(), p), ids.end());
+    std::vector<const PieceSummary*> given;
+    for (int q : ids)
+    {
+      given.push_back(&run.Summaries[q]);
+      run.NeighbourBytes[p] += q == p ? 0 : run.Summaries[q].GetBoundaryBytes();
+    }
+    BoundaryJoins mine;
+    std::string error;
+    ASSERT_TRUE(JoinPieceBoundaries(ids, given, p, mine, error)) << "piece " << p << ": " << error;
+    sent[p].Boundary.clear();
+    sent[p].BoundarySteps.clear();
+    run.SentBytes[p] = sent[p].GetBytes() + mine.GetBytes();
+    joins.Joins.insert(joins.Joins.end(), mine.Joins.begin(), mine.Joins.end());
+    joins.Crossings.insert(joins.Crossings.end(), mine.Crossings.begin(), mine.Crossings.end());
+  }
   std::string error;
-  ASSERT_TRUE(MergePieceSummaries(run.Summaries, run.Merged, error)) << error;
+  ASSERT_TRUE(MergeCellGraph(sent, joins, run.Merged, error)) << error;
+  // The same as matching everything in one place.
+  MergedArrangement direct;
+  ASSERT_TRUE(MergePieceSummaries(run.Summaries, direct, error)) << error;
+  EXPECT_EQ(direct.GlobalCellOfLocal, run.Merged.GlobalCellOfLocal);
+  EXPECT_EQ(direct.Crossings, run.Merged.Crossings);
 }
 
 double RefinedArea(const TriangleMesh& mesh, const Arrangement& arr, int r)
@@ -475,17 +514,21 @@ TEST(PieceArrangement, SummariesAreSmallNextToPieces)
     const std::size_t meshBytes =
       run.Pieces[p].Mesh.GetNumberOfTriangles() * (sizeof(Triangle) + sizeof(int)) +
       run.Pieces[p].Mesh.GetNumberOfVertices() * (sizeof(Vec3) + sizeof(int));
-    std::printf("piece %d: %d owned + %d ghost triangles (%zu bytes), summary %zu bytes: %zu "
-                "cells, %zu boundary sub-segments, %zu boundary curve steps, %zu crossings\n",
+    std::printf("piece %d: %d owned + %d ghost triangles (%zu bytes); boundary records %zu "
+                "bytes (%zu sub-segments, %zu curve steps), from neighbours %zu bytes; sent "
+                "to the merge %zu bytes (%zu cells, %zu crossings)\n",
       p,
       run.Pieces[p].NumberOfOwnedTriangles,
       run.Pieces[p].Mesh.GetNumberOfTriangles() - run.Pieces[p].NumberOfOwnedTriangles,
       meshBytes,
-      s.GetBytes(),
-      s.Cells.size(),
+      s.GetBoundaryBytes(),
       s.Boundary.size(),
       s.BoundarySteps.size(),
+      run.NeighbourBytes[p],
+      run.SentBytes[p],
+      s.Cells.size(),
       s.Crossings.size());
+    EXPECT_LT(run.SentBytes[p] * 100, meshBytes);
     EXPECT_LT(s.GetBytes() * 20, meshBytes);
   }
 }
