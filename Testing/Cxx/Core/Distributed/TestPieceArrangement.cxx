@@ -174,10 +174,38 @@ void ExpectSameAsWhole(const TriangleMesh& mesh,
       }
       const int g = piece.GlobalTriangle[t];
       std::vector<int> mine, theirs;
+      std::vector<Vec3> myCorners, theirCorners;
       ForEachRefinedTriangle(piece.Mesh,
         arr,
         t,
-        [&](int r) { mine.push_back(merged.GlobalCellOfLocal[p][arr.CellOfTriangle(r)]); });
+        [&](int r)
+        {
+          mine.push_back(merged.GlobalCellOfLocal[p][arr.CellOfTriangle(r)]);
+          for (int q : arr.GetTriangle(piece.Mesh, r))
+          {
+            myCorners.push_back(arr.GetPosition(piece.Mesh, q));
+          }
+        });
+      ForEachRefinedTriangle(mesh,
+        whole,
+        g,
+        [&](int r)
+        {
+          for (int q : whole.GetTriangle(mesh, r))
+          {
+            theirCorners.push_back(whole.GetPosition(mesh, q));
+          }
+        });
+      // Refined the same way, bit for bit.
+      const bool sameCorners = myCorners.size() == theirCorners.size() &&
+        std::equal(myCorners.begin(),
+          myCorners.end(),
+          theirCorners.begin(),
+          [](const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; });
+      if (!sameCorners && ++mismatches <= 5)
+      {
+        ADD_FAILURE() << "piece " << p << ", triangle " << g << ": refined differently";
+      }
       ForEachRefinedTriangle(
         mesh, whole, g, [&](int r) { theirs.push_back(whole.CellOfTriangle(r)); });
       if (mine != theirs && ++mismatches <= 5)
