@@ -2,10 +2,12 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
+#include "vtkBoolSurfControlCurveWriter.h"
 #include "vtkBoolSurfRankGather.h"
 
 #include "Mesh/ObjCheck.h"
 #include "Mesh/PlyReader.h"
+#include "Scene/SceneCurves.h"
 #include "Scene/SceneJson.h"
 #include "Scene/SceneMeshLookup.h"
 #include "Scene/ScenePlacement.h"
@@ -14,7 +16,6 @@
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -27,7 +28,6 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <array>
@@ -217,63 +217,26 @@ void AddString(vtkFieldData* fd, const char* name, const std::string& value)
   fd->AddArray(a);
 }
 
-/// The curves output of a placed scene: one point per scene point (TriangleId, Barycentric,
-/// ControlPointId), one polyline per curve (a closed one repeats its first point), cell data
-/// CurveId, ShapeId, CurveType, Closed; the operations as field data.
+/// The curves output of a placed scene: its control curves (SceneControlCurves) through the
+/// one writer of control-curve arrays, each point at its placed position and with cell data
+/// CurveId; the operations as field data.
 vtkSmartPointer<vtkPolyData> CurvesPolyData(const boolsurf::SceneModel& scene)
 {
-  const vtkIdType numberOfPoints = static_cast<vtkIdType>(scene.Points.size());
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(numberOfPoints);
-  vtkNew<vtkIdTypeArray> triangleId;
-  triangleId->SetName(boolsurf::names::TriangleId);
-  triangleId->SetNumberOfTuples(numberOfPoints);
-  vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName(boolsurf::names::Barycentric);
-  barycentric->SetNumberOfComponents(2);
-  barycentric->SetNumberOfTuples(numberOfPoints);
-  vtkNew<vtkIntArray> controlPointId;
-  controlPointId->SetName(boolsurf::names::ControlPointId);
-  controlPointId->SetNumberOfTuples(numberOfPoints);
-  for (vtkIdType k = 0; k < numberOfPoints; ++k)
+  // Every point comes with its placed position: the writer computes none.
+  boolsurf::ControlCurveWriter writer(boolsurf::ControlCurveWriter::PositionOf(), nullptr, true);
+  const std::vector<boolsurf::ControlCurve> curves = boolsurf::SceneControlCurves(scene);
+  std::vector<boolsurf::Vec3> positions;
+  for (std::size_t c = 0; c < curves.size(); ++c)
   {
-    const boolsurf::ScenePoint& p = scene.Points[static_cast<std::size_t>(k)];
-    points->SetPoint(k, p.Position.x, p.Position.y, p.Position.z);
-    triangleId->SetValue(k, static_cast<vtkIdType>(p.Face));
-    barycentric->SetTuple2(k, p.U, p.V);
-    controlPointId->SetValue(k, static_cast<int>(k));
-  }
-  vtkNew<vtkCellArray> lines;
-  std::vector<int> curveId, shapeId, curveType;
-  vtkNew<vtkUnsignedCharArray> closed;
-  closed->SetName(boolsurf::names::Closed);
-  for (const boolsurf::ScenePolygon& polygon : scene.Polygons)
-  {
-    lines->InsertNextCell(static_cast<vtkIdType>(polygon.Points.size() + (polygon.Closed ? 1 : 0)));
-    for (int id : polygon.Points)
+    positions.clear();
+    for (int id : scene.Polygons[c].Points)
     {
-      lines->InsertCellPoint(id);
+      positions.push_back(scene.Points[static_cast<std::size_t>(id)].Position);
     }
-    if (polygon.Closed)
-    {
-      lines->InsertCellPoint(polygon.Points.front());
-    }
-    curveId.push_back(polygon.Index);
-    shapeId.push_back(polygon.Shape);
-    curveType.push_back(polygon.CurveType);
-    closed->InsertNextValue(polygon.Closed ? 1 : 0);
+    writer.Add(curves[c], positions);
   }
   auto pd = vtkSmartPointer<vtkPolyData>::New();
-  pd->SetPoints(points);
-  pd->SetLines(lines);
-  pd->GetPointData()->AddArray(triangleId);
-  pd->GetPointData()->AddArray(barycentric);
-  pd->GetPointData()->AddArray(controlPointId);
-  pd->GetCellData()->AddArray(IntArray(boolsurf::names::CurveId, curveId));
-  pd->GetCellData()->AddArray(IntArray(boolsurf::names::ShapeId, shapeId));
-  pd->GetCellData()->AddArray(IntArray(boolsurf::names::CurveType, curveType));
-  pd->GetCellData()->AddArray(closed);
+  writer.Write(pd);
   // Never an empty numeric field array (VTK's XML writer cannot read it back).
   if (scene.Operations && !scene.Operations->empty())
   {

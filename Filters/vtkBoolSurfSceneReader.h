@@ -19,14 +19,17 @@
  * [0,1]^2 (z = 0, normals +z) with ScreenSpaceResolution quads per side.
  *
  * Output port 1: the curves as control polygons on that surface, ready for
- * vtkBoolSurfTraceCurves: one point per scene point (point id = index in `points`) at its 3D
- * position with point data `TriangleId` and `Barycentric` (exactly face and uv) and
- * `ControlPointId`; one polyline per non-empty polygon (a closed one repeats its first point
- * id at its end, which the tracer reads as closed; polylines rather than polygon cells so
- * that ParaView draws them as curves); cell data `CurveId` (the scene's polygon index: empty
- * polygons are skipped but do not renumber the others), `ShapeId`, `CurveType` (0, geodesic
- * polygon) and `Closed`. Field data: `OperationA`, `OperationB`, `OperationType` (only when
- * the scene has operations), `SceneFileName`, `MeshFileName` (the file actually read).
+ * vtkBoolSurfTraceCurves, written as every BoolSurf filter writes control curves (Core's
+ * SceneControlCurves through the module's one control-curve writer): one polyline per
+ * non-empty polygon with points of its own, at their 3D positions, with point data
+ * `TriangleId` and `Barycentric` (exactly face and uv). Points are not shared between
+ * polygons: a scene point that two polygons name is a point of each (a closed polyline
+ * repeats its own first point id at its end, which the tracer reads as closed; polylines
+ * rather than polygon cells so that ParaView draws them as curves). Cell data `ShapeId`,
+ * `CurveType` (0, geodesic polygon), `Closed` and `CurveId` (the scene's polygon index: empty
+ * polygons are skipped but do not renumber the others). Field data: `OperationA`,
+ * `OperationB`, `OperationType` (only when the scene has operations), `SceneFileName`,
+ * `MeshFileName` (the file actually read).
  *
  * ShapeId keeps the scene's numbering so that operations (which name shapes) apply directly:
  * with `shapes`, the index of the shape listing the polygon; without, the polygon index
@@ -41,8 +44,9 @@
  * of MeshSearchPath (separated by ';' or ':') and in a `meshes` folder beside any ancestor.
  * PLY (vtkPLYReader) and OBJ (vtkOBJReader) meshes are read.
  *
- * The format, its checks and the placement of the points are Core's (Core/Scene: SceneJson,
- * ScenePlacement, SceneMeshLookup); this class reads the mesh and makes the outputs.
+ * The format, its checks, the placement of the points and the curves are Core's (Core/Scene:
+ * SceneJson, ScenePlacement, SceneMeshLookup, SceneCurves); this class reads the mesh and
+ * makes the outputs.
  *
  * Errors (vtkErrorMacro naming the file, the key, the polygon and point index; empty outputs):
  * unreadable file, bad JSON, missing `polygons` or `points`, a value of the wrong type, a

@@ -648,8 +648,8 @@ bool pqBoolSurfCurveEditorWidget::HandleInteractorEvent(unsigned long event)
       if (starts)
       {
         pqBoolSurfDrawing::Curve& curve = internal.Drawing.Curves[internal.Current];
-        curve.Shape = internal.NewShape >= 0 ? internal.NewShape : curve.Shape;
-        curve.Type = internal.NewType;
+        curve.ShapeId = internal.NewShape >= 0 ? internal.NewShape : curve.ShapeId;
+        curve.Type = static_cast<boolsurf::CurveType>(internal.NewType);
         internal.NewShape = -1; // the curve after it gets a shape of its own again
       }
       this->Push();
@@ -778,8 +778,9 @@ void pqBoolSurfCurveEditorWidget::ReadBackExactPoints()
   {
     for (auto& point : curve.Points)
     {
-      point.Triangle = static_cast<vtkIdType>(triangles->GetComponent(next, 0));
-      point.Weights = { weights->GetComponent(next, 0), weights->GetComponent(next, 1) };
+      point.Triangle = static_cast<int>(triangles->GetComponent(next, 0));
+      point.U = weights->GetComponent(next, 0);
+      point.V = weights->GetComponent(next, 1);
       output->GetPoint(next, point.Position.data());
       ++next;
     }
@@ -895,9 +896,10 @@ void pqBoolSurfCurveEditorWidget::UpdateControls()
   internal.Controls->ReverseCurve->setEnabled(curve != nullptr && curve->Points.size() >= 2);
   internal.Controls->DeletePoint->setEnabled(internal.Drawing.Find(internal.Selected) != nullptr);
   internal.Controls->Shape->setValue(curve
-      ? curve->Shape
+      ? curve->ShapeId
       : (internal.NewShape >= 0 ? internal.NewShape : internal.Drawing.UnusedShape()));
-  internal.Controls->Type->setCurrentIndex(curve ? curve->Type : internal.NewType);
+  internal.Controls->Type->setCurrentIndex(
+    curve ? static_cast<int>(curve->Type) : internal.NewType);
   internal.Controls->Closed->setChecked(curve ? curve->Closed : false);
   for (QWidget* w : std::initializer_list<QWidget*>{ internal.Controls->CurveIndex,
          internal.Controls->Shape,
@@ -920,7 +922,7 @@ void pqBoolSurfCurveEditorWidget::UpdateControls()
         tr("Curve %1 needs %2 more point(s)%3.")
           .arg(c)
           .arg(missing)
-          .arg(each.Type == 1
+          .arg(each.Type == boolsurf::CurveType::CubicBezier
               ? (each.Closed ? tr(" (a closed Bezier spline has 3n points: anchor, handle, "
                                   "handle, ...)")
                              : tr(" (an open Bezier spline has 3n+1 points: anchor, handle, "
@@ -1117,7 +1119,7 @@ void pqBoolSurfCurveEditorWidget::setShape(int shape)
     this->Internal->NewShape = shape; // for the next new curve
     return;
   }
-  this->EditCurrentCurve(tr("Set curve shape"), [shape](auto& curve) { curve.Shape = shape; });
+  this->EditCurrentCurve(tr("Set curve shape"), [shape](auto& curve) { curve.ShapeId = shape; });
 }
 
 //------------------------------------------------------------------------------
@@ -1128,7 +1130,8 @@ void pqBoolSurfCurveEditorWidget::setCurveType(int type)
     this->Internal->NewType = type;
     return;
   }
-  this->EditCurrentCurve(tr("Set curve type"), [type](auto& curve) { curve.Type = type; });
+  this->EditCurrentCurve(tr("Set curve type"),
+    [type](auto& curve) { curve.Type = static_cast<boolsurf::CurveType>(type); });
 }
 
 //------------------------------------------------------------------------------

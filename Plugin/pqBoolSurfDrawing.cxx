@@ -1,7 +1,5 @@
 #include "pqBoolSurfDrawing.h"
 
-#include "Curves/ControlCurve.h" // for MissingControlPoints, CurveType
-
 #include <algorithm>
 #include <set>
 
@@ -29,8 +27,8 @@ pqBoolSurfDrawing pqBoolSurfDrawing::FromProperties(const Properties& values)
   for (size_t c = 0; c < sizes.size(); ++c)
   {
     Curve curve;
-    curve.Shape = PerCurve(values.ShapeIds, c, static_cast<int>(c));
-    curve.Type = PerCurve(values.CurveTypes, c, 0);
+    curve.ShapeId = PerCurve(values.ShapeIds, c, static_cast<int>(c));
+    curve.Type = static_cast<boolsurf::CurveType>(PerCurve(values.CurveTypes, c, 0));
     curve.Closed = PerCurve(values.ClosedCurves, c, 1) != 0;
     for (int k = 0; k < sizes[c] && next < points; ++k, ++next)
     {
@@ -38,8 +36,9 @@ pqBoolSurfDrawing pqBoolSurfDrawing::FromProperties(const Properties& values)
       std::copy_n(&values.Points[3 * next], 3, point.Position.begin());
       if (exact)
       {
-        point.Triangle = values.TriangleIds[next];
-        std::copy_n(&values.Barycentrics[2 * next], 2, point.Weights.begin());
+        point.Triangle = static_cast<int>(values.TriangleIds[next]);
+        point.U = values.Barycentrics[2 * next];
+        point.V = values.Barycentrics[2 * next + 1];
       }
       curve.Points.push_back(point);
     }
@@ -58,12 +57,12 @@ pqBoolSurfDrawing::Properties pqBoolSurfDrawing::ToProperties() const
     {
       values.Points.insert(values.Points.end(), point.Position.begin(), point.Position.end());
       values.TriangleIds.push_back(point.Triangle);
-      values.Barycentrics.insert(
-        values.Barycentrics.end(), point.Weights.begin(), point.Weights.end());
+      values.Barycentrics.push_back(point.U);
+      values.Barycentrics.push_back(point.V);
     }
     values.CurveSizes.push_back(static_cast<int>(curve.Points.size()));
-    values.ShapeIds.push_back(curve.Shape);
-    values.CurveTypes.push_back(curve.Type);
+    values.ShapeIds.push_back(curve.ShapeId);
+    values.CurveTypes.push_back(static_cast<int>(curve.Type));
     values.ClosedCurves.push_back(curve.Closed ? 1 : 0);
   }
   return values;
@@ -84,8 +83,7 @@ int pqBoolSurfDrawing::NumberOfPoints() const
 int pqBoolSurfDrawing::MissingPoints(const Curve& curve)
 {
   // Core's rule, the one the Surface Curves source and the filters apply.
-  return boolsurf::MissingControlPoints(
-    curve.Type == static_cast<int>(boolsurf::CurveType::CubicBezier),
+  return boolsurf::MissingControlPoints(curve.Type == boolsurf::CurveType::CubicBezier,
     curve.Closed,
     static_cast<int>(curve.Points.size()));
 }
@@ -110,7 +108,7 @@ int pqBoolSurfDrawing::UnusedShape() const
   std::set<int> used;
   for (const Curve& curve : this->Curves)
   {
-    used.insert(curve.Shape);
+    used.insert(curve.ShapeId);
   }
   int shape = 0;
   while (used.count(shape))
@@ -124,7 +122,8 @@ int pqBoolSurfDrawing::UnusedShape() const
 int pqBoolSurfDrawing::AddCurve()
 {
   Curve curve;
-  curve.Shape = this->UnusedShape();
+  curve.ShapeId = this->UnusedShape();
+  curve.Closed = false; // drawn point by point: closed by a click on its first point
   this->Curves.push_back(curve);
   return static_cast<int>(this->Curves.size()) - 1;
 }

@@ -5,39 +5,38 @@
  * pqBoolSurfDrawing is what pqBoolSurfCurveEditorWidget edits, kept apart from Qt and from the
  * server manager: a list of curves, each with its control points (a position, and the exact
  * surface point once known: a triangle and the weights of its 2nd and 3rd vertex; triangle -1
- * while the point still has to be snapped), its shape, type and closure. It is the editor's
- * form of Core's boolsurf::ControlCurve (same shape, type, closure and surface points, and
- * Core's rule for a complete curve), with what editing adds: each point's position and normal
- * for picking and drawing, and points not placed exactly yet. It converts to and from the flat
- * property values of the "Surface Curves" source (Points, TriangleIds,
- * Barycentrics, CurveSizes, ShapeIds, CurveTypes, ClosedCurves).
+ * while the point still has to be snapped), its shape, type and closure. A curve is Core's one
+ * drawn curve (boolsurf::ControlCurveOf, the type of boolsurf::ControlCurve) over points that
+ * are Core's surface points with what editing adds: each point's position and normal for
+ * picking and drawing (a point not placed exactly yet has triangle -1); Core's rule says when
+ * a curve is complete. It converts to and from the flat property values of the "Surface
+ * Curves" source (Points, TriangleIds, Barycentrics, CurveSizes, ShapeIds, CurveTypes,
+ * ClosedCurves).
  */
 #ifndef pqBoolSurfDrawing_h
 #define pqBoolSurfDrawing_h
 
 #include "vtkType.h" // for vtkIdType
 
+#include "Curves/ControlCurve.h" // for boolsurf::ControlCurveOf (header-only)
+
 #include <array>  // for std::array
 #include <vector> // for std::vector
 
 struct pqBoolSurfDrawing
 {
-  struct Point
+  /// A control point: Core's surface point (Triangle -1 while not placed exactly yet: the
+  /// source snaps Position; U, V the weights of the triangle's 2nd and 3rd vertex) with where
+  /// it is drawn.
+  struct Point : boolsurf::SurfacePoint
   {
     std::array<double, 3> Position{ { 0, 0, 0 } };
-    vtkIdType Triangle = -1; // -1: not placed exactly yet (the source snaps Position)
-    std::array<double, 2> Weights{ { 0, 0 } };
     /// The surface's unit normal there (from the pick or the source's SurfaceNormal), zero
     /// while unknown.
     std::array<double, 3> Normal{ { 0, 0, 0 } };
   };
-  struct Curve
-  {
-    std::vector<Point> Points;
-    int Shape = 0;
-    int Type = 0; // a boolsurf::CurveType: 0 geodesic polygon, 1 cubic Bezier
-    bool Closed = false;
-  };
+  /// A drawn curve (its CurveId unused: a curve is its index in Curves).
+  using Curve = boolsurf::ControlCurveOf<Point>;
   /// A control point: its curve and its index in the curve.
   struct Handle
   {
@@ -86,7 +85,8 @@ struct pqBoolSurfDrawing
   /// The smallest shape id no curve uses (a new curve's shape).
   int UnusedShape() const;
 
-  /// Appends a curve (open, polygon, an unused shape); returns its index.
+  /// Appends a curve (open, unlike a curve read from the properties; polygon; an unused shape);
+  /// returns its index.
   int AddCurve();
   /// Inserts a point into curve `curve` after `after` (its end when `after` is -1); returns
   /// the new point.

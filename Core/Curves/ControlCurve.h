@@ -21,14 +21,22 @@ enum class CurveType : int
   CubicBezier = 1,     ///< anchor, handle, handle, anchor, ... (3n+1 open, 3n closed)
 };
 
-struct ControlCurve
+/// The one definition of a drawn curve, over the type of its points: ControlCurve holds exact
+/// surface points; the curve editor's drawing (Plugin/pqBoolSurfDrawing) holds points that are
+/// surface points with what drawing adds (a position to snap, a normal for picking).
+/// Header-only, so that the editor uses it without linking Core.
+template <class PointType>
+struct ControlCurveOf
 {
   int CurveId = -1; ///< its id in its input (the cell id of the curves input); -1: none
   int ShapeId = 0;
   CurveType Type = CurveType::GeodesicPolygon;
   bool Closed = true; ///< a drawn curve is a loop unless said otherwise (as Surface Curves)
-  std::vector<SurfacePoint> Points; ///< the closing point of a closed curve is not repeated
+  std::vector<PointType> Points; ///< the closing point of a closed curve is not repeated
 };
+
+/// A control curve of exact surface points: what every stage makes and reads.
+using ControlCurve = ControlCurveOf<SurfacePoint>;
 
 /// How many more control points a curve of `size` points needs before it can be traced (0
 /// when it is complete): a geodesic polygon needs 2, a cubic Bezier spline 3n+1 open or 3n

@@ -332,7 +332,7 @@ public:
       std::vector<std::vector<CanonicalPoint>> curves;
       std::vector<char> curvesClosed;
       std::vector<FlatCurve> flat;
-      for (const BandCurve& band : this->Region.Bands)
+      for (const TracedCurve& band : this->Region.Bands)
       {
         const std::vector<CanonicalPoint>& curve = band.Points;
         if (curve.size() < 2)

@@ -38,6 +38,7 @@
 #define boolsurf_GeodesicOffset_h
 
 #include "Geodesic/ExactGeodesicSearch.h"
+#include "Geodesic/TracedCurve.h"
 #include "Mesh/MeshTopology.h"
 #include "Mesh/SurfacePoint.h"
 
@@ -71,12 +72,6 @@ struct OffsetOptions
   int MaximumWindows = 1 << 23;
 };
 
-struct BandCurve
-{
-  std::vector<CanonicalPoint> Points; ///< consecutive points share a triangle
-  bool Closed = false;                ///< a closed curve does not repeat its first point
-};
-
 struct OffsetRegion
 {
   /// Closed loops bounding the region, the region on their left.
@@ -90,8 +85,10 @@ struct OffsetRegion
   std::function<int(int)> TriangleSide;
   /// Curves whose bands (the points within the distance of them) are added to a grown region,
   /// left out when shrinking: open curves, or closed ones taken as curves rather than as the
-  /// boundary of a region (a band around a loop on a handle).
-  std::vector<BandCurve> Bands;
+  /// boundary of a region (a band around a loop on a handle). A band is around a traced curve
+  /// (its points canonical, consecutive ones sharing a triangle), so it is one: only its Points
+  /// and Closed matter here (a TracedCurve is closed unless said otherwise).
+  std::vector<TracedCurve> Bands;
 };
 
 struct OffsetStatistics

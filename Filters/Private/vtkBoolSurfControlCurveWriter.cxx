@@ -20,19 +20,25 @@ ControlCurveWriter::ControlCurveWriter(const TriangleMesh& mesh,
   const char* markName,
   bool curveIds,
   bool shapeNames)
-  : ControlCurveWriter(
-      [&mesh](const SurfacePoint& p) { return mesh.Evaluate(p.Triangle, p.U, p.V); })
+  : ControlCurveWriter([&mesh](const SurfacePoint& p)
+      { return mesh.Evaluate(p.Triangle, p.U, p.V); },
+      markName,
+      curveIds,
+      shapeNames)
 {
-  this->WriteMark = markName != nullptr;
-  this->WriteCurveIds = curveIds;
-  this->WriteShapeNames = shapeNames;
-  this->Mark->SetName(markName);
 }
 
 //------------------------------------------------------------------------------
-ControlCurveWriter::ControlCurveWriter(PositionOf position)
+ControlCurveWriter::ControlCurveWriter(PositionOf position,
+  const char* markName,
+  bool curveIds,
+  bool shapeNames)
   : Position(std::move(position))
+  , WriteMark(markName != nullptr)
+  , WriteCurveIds(curveIds)
+  , WriteShapeNames(shapeNames)
 {
+  this->Mark->SetName(markName);
   this->Points->SetDataTypeToDouble();
   this->TriangleId->SetName(names::TriangleId);
   this->Barycentric->SetName(names::Barycentric);
@@ -50,10 +56,26 @@ ControlCurveWriter::~ControlCurveWriter() = default;
 //------------------------------------------------------------------------------
 void ControlCurveWriter::Add(const ControlCurve& curve, int mark, const std::string& shapeName)
 {
+  this->AddCurve(curve, nullptr, mark, shapeName);
+}
+
+//------------------------------------------------------------------------------
+void ControlCurveWriter::Add(const ControlCurve& curve, const std::vector<Vec3>& positions)
+{
+  this->AddCurve(curve, &positions, 0, std::string());
+}
+
+//------------------------------------------------------------------------------
+void ControlCurveWriter::AddCurve(const ControlCurve& curve,
+  const std::vector<Vec3>* positions,
+  int mark,
+  const std::string& shapeName)
+{
   const vtkIdType first = this->Points->GetNumberOfPoints();
-  for (const SurfacePoint& p : curve.Points)
+  for (std::size_t i = 0; i < curve.Points.size(); ++i)
   {
-    const Vec3 x = this->Position(p);
+    const SurfacePoint& p = curve.Points[i];
+    const Vec3 x = positions ? (*positions)[i] : this->Position(p);
     this->Points->InsertNextPoint(x.x, x.y, x.z);
     this->TriangleId->InsertNextValue(p.Triangle);
     this->Barycentric->InsertNextTuple2(p.U, p.V);

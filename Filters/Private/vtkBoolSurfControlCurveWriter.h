@@ -1,6 +1,6 @@
 // The one writer of control curves as VTK arrays (a private header of the module), the form
-// ReadControlCurves reads back: Surface Curves, the SVG mapper, the resolve and offset stages
-// and the winding numbers' completed curves all write through it.
+// ReadControlCurves reads back: Surface Curves, the SVG mapper, the scene reader, the resolve
+// and offset stages and the winding numbers' completed curves all write through it.
 #ifndef vtkBoolSurfControlCurveWriter_h
 #define vtkBoolSurfControlCurveWriter_h
 
@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 class vtkCellArray;
 class vtkDoubleArray;
@@ -41,16 +42,27 @@ public:
     bool curveIds = false,
     bool shapeNames = false);
   /// Positions from `position`, for a writer without a TriangleMesh (Surface Curves places its
-  /// points on the VTK surface itself).
-  explicit ControlCurveWriter(PositionOf position);
+  /// points on the VTK surface itself); empty when every curve comes with its positions.
+  explicit ControlCurveWriter(PositionOf position,
+    const char* markName = nullptr,
+    bool curveIds = false,
+    bool shapeNames = false);
   ~ControlCurveWriter();
 
   void Add(const ControlCurve& curve, int mark = 0, const std::string& shapeName = std::string());
+  /// `curve` at the 3D points its caller already has (`positions`, one per control point: a
+  /// scene's placed points, written as placed).
+  void Add(const ControlCurve& curve, const std::vector<Vec3>& positions);
 
   /// Points, lines and arrays into `output` (which should be empty).
   void Write(vtkPolyData* output);
 
 private:
+  void AddCurve(const ControlCurve& curve,
+    const std::vector<Vec3>* positions,
+    int mark,
+    const std::string& shapeName);
+
   PositionOf Position;
   vtkNew<vtkPoints> Points;
   vtkNew<vtkCellArray> Lines;

@@ -190,7 +190,7 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
     }
     if (options.Bands || !c.Closed)
     {
-      region.Bands.push_back({ c.Points, c.Closed });
+      region.Bands.push_back(c);
     }
     if (!options.Bands)
     {

@@ -30,7 +30,10 @@ cd = curves.GetCellData()
 assert [cd.GetArray("CurveId").GetValue(i) for i in range(2)] == [1, 3]
 assert [cd.GetArray("ShapeId").GetValue(i) for i in range(2)] == [1, 2]
 assert curves.GetFieldData().GetArray("OperationType").GetValue(0) == 0
-assert int(curves.GetPointData().GetArray("TriangleId").GetValue(4)) == 50
+# Each curve has points of its own (scene point 2 is written in both): scene point 4, the last
+# point of polygon 3, is output point 5.
+assert curves.GetNumberOfPoints() == 6, curves.GetNumberOfPoints()
+assert int(curves.GetPointData().GetArray("TriangleId").GetValue(5)) == 50
 # The mesh path is resolved by base name through MeshSearchPath.
 assert curves.GetFieldData().GetAbstractArray("MeshFileName").GetValue(0).endswith("Data/eight.ply")
 traced = TraceSurfaceCurves(Surface=reader, Curves=OutputPort(reader, 1))

@@ -110,7 +110,7 @@ struct Offset
 Offset OffsetOf(const TriangleMesh& mesh,
   const MeshTopology& topology,
   const std::vector<TracedCurve>& curves,
-  const std::vector<BandCurve>& bands,
+  const std::vector<TracedCurve>& bands,
   OffsetOptions options)
 {
   Offset out;
@@ -355,7 +355,8 @@ TEST(GeodesicOffset, BandsAroundOpenCurvesMatchClipper)
   const std::vector<Vec2> path = { { 0.2, 0.3 }, { 0.6, 0.35 }, { 0.7, 0.7 } };
   TracedCurve open;
   ASSERT_TRUE(tracer.Trace(path, false, 0, 0, open));
-  BandCurve band;
+  TracedCurve band;
+  band.Closed = false;
   band.Points = open.Points;
   for (OffsetEndStyle ends : { OffsetEndStyle::Round, OffsetEndStyle::Flat })
   {
@@ -449,7 +450,7 @@ TEST(GeodesicOffset, BandAroundATorusMeridianIsAnAnnulus)
   const TriangleMesh mesh = MeshOf(MakeTorus(R, r, 96, 48));
   const MeshTopology topology = MeshTopology::Compute(mesh);
   // The meridian at angle 0 runs along mesh edges (a loop of vertices), a geodesic.
-  BandCurve meridian;
+  TracedCurve meridian;
   meridian.Closed = true;
   for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
   {
@@ -678,7 +679,8 @@ TEST(GeodesicOffset, FlatEndsKeepWhatOtherLegsReach)
   {
     TracedCurve open;
     ASSERT_TRUE(tracer.Trace(c.Path, false, 0, 0, open));
-    BandCurve band;
+    TracedCurve band;
+    band.Closed = false;
     band.Points = open.Points;
     OffsetOptions options;
     options.Distance = d;
@@ -999,7 +1001,7 @@ TEST(GeodesicOffset, RandomFlatCasesMatchClipper)
                  const TriangleMesh& on,
                  const MeshTopology& onTopology,
                  const std::vector<TracedCurve>& curves,
-                 const std::vector<BandCurve>& bands,
+                 const std::vector<TracedCurve>& bands,
                  OffsetOptions options,
                  double expected,
                  double joinAngle,
@@ -1138,7 +1140,8 @@ TEST(GeodesicOffset, RandomFlatCasesMatchClipper)
       ASSERT_FALSE(path.empty());
       TracedCurve open;
       ASSERT_TRUE(tracer.Trace(path, false, 0, 0, open));
-      BandCurve band;
+      TracedCurve band;
+      band.Closed = false;
       band.Points = open.Points;
       for (OffsetEndStyle ends : { OffsetEndStyle::Round, OffsetEndStyle::Flat })
       {
@@ -1285,7 +1288,8 @@ TEST(GeodesicOffset, FlatBandEndsOnASphereFollowTheGeodesicNormals)
     SCOPED_TRACE("latitude " + std::to_string(phi));
     CurveTrace trace;
     ASSERT_TRUE(TraceLatitudeArc(mesh, tracer, phi, L, 0.05, trace));
-    BandCurve band;
+    TracedCurve band;
+    band.Closed = false;
     band.Points = trace.Curve.Points;
     const double l = trace.Length; // on the mesh: its lengths are the sphere's less ~1e-4
     EXPECT_NEAR(l, L * std::cos(phi), 1e-3 * l);
@@ -1462,7 +1466,8 @@ TEST(GeodesicOffset, InsetAndFlatEndCornersStaySharpOnIrregularMeshes)
     OffsetOptions options;
     options.Distance = band ? c.D : -c.D;
     options.Ends = OffsetEndStyle::Flat;
-    BandCurve open;
+    TracedCurve open;
+    open.Closed = false;
     open.Points = curve.Points;
     const Offset result = band ? OffsetOf(mesh, topology, {}, { open }, options)
                                : OffsetOf(mesh, topology, { curve }, {}, options);

@@ -124,8 +124,10 @@ TEST(SceneReader, SurfacePointsShapesAndOperations)
     (std::vector<vtkIdType>{ ids[0], ids[1], ids[2] }), (std::vector<vtkIdType>{ 4, 3, 1 }));
 
   vtkPolyData* c = r.Curves();
-  ASSERT_EQ(c->GetNumberOfPoints(), 5); // point id = index in 'points'
-  ASSERT_EQ(c->GetNumberOfLines(), 3);  // empty polygons 0 and 3 skipped
+  // Every curve has points of its own (3 + 3 + 2): the writer of control curves shares none,
+  // so scene points 1, 2 and 4, named by two polygons each, are written twice.
+  ASSERT_EQ(c->GetNumberOfPoints(), 8);
+  ASSERT_EQ(c->GetNumberOfLines(), 3); // empty polygons 0 and 3 skipped
   EXPECT_EQ(r.CellInts("CurveId"), (std::vector<int>{ 1, 2, 4 }));
   // Polygons 1, 2 are shape 1; polygon 4 is in no shape: a new shape after the scene's two.
   EXPECT_EQ(r.CellInts("ShapeId"), (std::vector<int>{ 1, 1, 2 }));
@@ -135,7 +137,9 @@ TEST(SceneReader, SurfacePointsShapesAndOperations)
   c->GetLines()->GetCellAtId(0, n, ids);
   EXPECT_EQ((std::vector<vtkIdType>(ids, ids + n)), (std::vector<vtkIdType>{ 0, 1, 2, 0 }));
   c->GetLines()->GetCellAtId(1, n, ids);
-  EXPECT_EQ((std::vector<vtkIdType>(ids, ids + n)), (std::vector<vtkIdType>{ 2, 3, 4 }));
+  EXPECT_EQ((std::vector<vtkIdType>(ids, ids + n)), (std::vector<vtkIdType>{ 3, 4, 5 }));
+  c->GetLines()->GetCellAtId(2, n, ids);
+  EXPECT_EQ((std::vector<vtkIdType>(ids, ids + n)), (std::vector<vtkIdType>{ 6, 7, 6 }));
 
   // TriangleId/Barycentric are exactly face/uv, and the point is (1-u-v)p0 + u p1 + v p2.
   vtkDataArray* tid = c->GetPointData()->GetArray("TriangleId");

@@ -37,8 +37,8 @@ TEST(CurveEditorDrawing, ReadsTheSourceDefaults)
   values.ClosedCurves = { 0 }; // curve 1: closed
   pqBoolSurfDrawing d = pqBoolSurfDrawing::FromProperties(values);
   ASSERT_EQ(d.Curves.size(), 2u);
-  EXPECT_EQ(d.Curves[0].Shape, 7);
-  EXPECT_EQ(d.Curves[1].Shape, 1);
+  EXPECT_EQ(d.Curves[0].ShapeId, 7);
+  EXPECT_EQ(d.Curves[1].ShapeId, 1);
   EXPECT_FALSE(d.Curves[0].Closed);
   EXPECT_TRUE(d.Curves[1].Closed);
   EXPECT_EQ(d.Curves[1].Points[1].Position[0], 6);
@@ -58,7 +58,8 @@ TEST(CurveEditorDrawing, WritesCompleteProperties)
   pqBoolSurfDrawing::Point* p = d.Find({ c, 1 });
   ASSERT_NE(p, nullptr);
   p->Triangle = 12;
-  p->Weights = { 0.25, 0.5 };
+  p->U = 0.25;
+  p->V = 0.5;
   const pqBoolSurfDrawing::Properties v = d.ToProperties();
   EXPECT_EQ(v.Points, (std::vector<double>{ 0, 0, 0, 1, 0, 0 }));
   EXPECT_EQ(v.TriangleIds, (std::vector<vtkIdType>{ -1, 12 }));
@@ -69,7 +70,7 @@ TEST(CurveEditorDrawing, WritesCompleteProperties)
   // Read back: the exact points stay exact.
   pqBoolSurfDrawing again = pqBoolSurfDrawing::FromProperties(v);
   EXPECT_EQ(again.Curves.at(0).Points.at(1).Triangle, 12);
-  EXPECT_EQ(again.Curves.at(0).Points.at(1).Weights[1], 0.5);
+  EXPECT_EQ(again.Curves.at(0).Points.at(1).V, 0.5);
 }
 
 TEST(CurveEditorDrawing, EditsAsAUserMakesThem)
@@ -85,7 +86,7 @@ TEST(CurveEditorDrawing, EditsAsAUserMakesThem)
   EXPECT_EQ(d.Curves[0].Points[1].Position[0], 1);
   EXPECT_EQ(d.Curves[0].Points[2].Position[0], 2);
   const int second = d.AddCurve();
-  EXPECT_EQ(d.Curves[second].Shape, 1); // shape 0 is used
+  EXPECT_EQ(d.Curves[second].ShapeId, 1); // shape 0 is used
   d.InsertPoint(second, -1, { 9, 9, 9 });
   EXPECT_EQ(d.NumberOfPoints(), 4);
   // Deleting a curve's last point deletes the curve.
@@ -218,7 +219,7 @@ TEST(CurveEditorDrawing, MissingPointsFollowEachType)
   pqBoolSurfDrawing::Curve c;
   const auto missing = [&](int type, bool closed, int size)
   {
-    c.Type = type;
+    c.Type = static_cast<boolsurf::CurveType>(type);
     c.Closed = closed;
     c.Points.assign(size, pqBoolSurfDrawing::Point());
     return pqBoolSurfDrawing::MissingPoints(c);
@@ -242,7 +243,7 @@ TEST(CurveEditorDrawing, ReversalKeepsBezierAnchors)
   for (const bool closed : { false, true })
   {
     d.Curves.assign(1, pqBoolSurfDrawing::Curve());
-    d.Curves[0].Type = 1;
+    d.Curves[0].Type = boolsurf::CurveType::CubicBezier;
     d.Curves[0].Closed = closed;
     const int n = closed ? 6 : 7;
     for (int i = 0; i < n; ++i)
