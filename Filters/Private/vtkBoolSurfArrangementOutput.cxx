@@ -4,7 +4,7 @@
 
 #include "Arrangement/EditBuffers.h"
 #include "Labeling/ArrangementLabelingInput.h"
-#include "vtkBoolSurfArrangementRebuild.h"
+#include "vtkBoolSurfArrangementRebuildWriter.h"
 #include "vtkBoolSurfArrayView.h"
 #include "vtkBoolSurfAttributeTransfer.h"
 #include "vtkBoolSurfOutputReuse.h"
