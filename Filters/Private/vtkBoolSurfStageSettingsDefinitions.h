@@ -44,6 +44,13 @@ bool ChangeClampedSetting(Field& field, Value value, Value low, Value high)
 
 } // namespace boolsurf
 
+/// Get##name() of a setting held in `field`, as its Set/Get macros declare it.
+#define vtkBoolSurfSettingGetterDefinition(cls, name, type, field)                                 \
+  type cls::Get##name()                                                                            \
+  {                                                                                                \
+    return static_cast<type>(field);                                                               \
+  }
+
 /// The methods of vtkBoolSurfSettingMacro(name, type) on `field`, e.g.
 /// this->BooleanSettings->ShapeA (`type` may be an enumeration's integer type).
 #define vtkBoolSurfSettingDefinition(cls, name, type, field)                                       \
@@ -54,10 +61,7 @@ bool ChangeClampedSetting(Field& field, Value value, Value low, Value high)
       this->Modified();                                                                            \
     }                                                                                              \
   }                                                                                                \
-  type cls::Get##name()                                                                            \
-  {                                                                                                \
-    return static_cast<type>(field);                                                               \
-  }
+  vtkBoolSurfSettingGetterDefinition(cls, name, type, field)
 
 /// The methods of vtkBoolSurfClampedSettingMacro: the range is the one its Get...MinValue()
 /// and Get...MaxValue() give.
@@ -70,10 +74,7 @@ bool ChangeClampedSetting(Field& field, Value value, Value low, Value high)
       this->Modified();                                                                            \
     }                                                                                              \
   }                                                                                                \
-  type cls::Get##name()                                                                            \
-  {                                                                                                \
-    return static_cast<type>(field);                                                               \
-  }
+  vtkBoolSurfSettingGetterDefinition(cls, name, type, field)
 
 /// The methods of vtkBoolSurfStringSettingMacro on a std::string `field` (null sets "").
 #define vtkBoolSurfStringSettingDefinition(cls, name, field)                                       \
@@ -110,22 +111,21 @@ bool ChangeClampedSetting(Field& field, Value value, Value low, Value high)
 
 /// vtkBoolSurfBooleanSettingsMacro's methods, on this->BooleanSettings.
 #define vtkBoolSurfBooleanSettingsDefinitions(cls)                                                 \
-  vtkBoolSurfClampedSettingDefinition(cls, Operation, int, this->BooleanSettings->Operation)       \
-    vtkBoolSurfSettingDefinition(cls, ShapeA, int, this->BooleanSettings->ShapeA)                  \
-      vtkBoolSurfSettingDefinition(cls, ShapeB, int, this->BooleanSettings->ShapeB)                \
-        vtkBoolSurfStringSettingDefinition(cls, Expression, this->BooleanSettings->Expression)     \
-          vtkBoolSurfClampedSettingDefinition(cls, FillRule, int, this->BooleanSettings->Rule)
+  vtkBoolSurfClampedSettingDefinition(cls, Operation, int, this->BooleanSettings->Operation);      \
+  vtkBoolSurfSettingDefinition(cls, ShapeA, int, this->BooleanSettings->ShapeA);                   \
+  vtkBoolSurfSettingDefinition(cls, ShapeB, int, this->BooleanSettings->ShapeB);                   \
+  vtkBoolSurfStringSettingDefinition(cls, Expression, this->BooleanSettings->Expression);          \
+  vtkBoolSurfClampedSettingDefinition(cls, FillRule, int, this->BooleanSettings->Rule)
 
 /// vtkBoolSurfZeroCellSettingsMacro's methods, on this->ZeroCellSettings.
 #define vtkBoolSurfZeroCellSettingsDefinitions(cls)                                                \
-  vtkBoolSurfClampedSettingDefinition(cls, ZeroCellMode, int, this->ZeroCellSettings->Mode)        \
-    vtkBoolSurfVector3SettingDefinition(cls, ZeroCellPoint, double, this->ZeroCellSettings->Point)
+  vtkBoolSurfClampedSettingDefinition(cls, ZeroCellMode, int, this->ZeroCellSettings->Mode);       \
+  vtkBoolSurfVector3SettingDefinition(cls, ZeroCellPoint, double, this->ZeroCellSettings->Point)
 
 /// vtkBoolSurfBSCSettingsMacro's methods, on this->BscSettings.
 #define vtkBoolSurfBSCSettingsDefinitions(cls)                                                     \
   vtkBoolSurfClampedSettingDefinition(                                                             \
-    cls, SnapTolerance, double, this->BscSettings->SnapTolerance)                                  \
-    vtkBoolSurfClampedSettingDefinition(                                                           \
-      cls, MaxSearchStates, int, this->BscSettings->MaxSearchStates)
+    cls, SnapTolerance, double, this->BscSettings->SnapTolerance);                                 \
+  vtkBoolSurfClampedSettingDefinition(cls, MaxSearchStates, int, this->BscSettings->MaxSearchStates)
 
 #endif
