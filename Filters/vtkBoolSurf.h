@@ -102,9 +102,10 @@ public:
 
   // The optional steps' settings below are declared here, not shared with the stage filters
   // (vtkBoolSurfResolve, vtkBoolSurfOffset, vtkBoolSurfWindingNumbers): their names and
-  // defaults differ from the stages' on purpose. Each switches its step on (ResolveStrategy -1,
-  // OffsetShape -1, an empty CloseBrokenShapes: off) and takes one value where the stage takes
-  // a list (one offset shape, one distance, the resolved shapes all at once).
+  // defaults differ from the stages' on purpose. Each switches its step on, with an "off" value
+  // the stage does not have (ResolveStrategy -1, OffsetShape -1, an empty CloseBrokenShapes),
+  // and takes one value where the stage takes a list or an expression (OffsetShape for Shapes
+  // or Expression; ResolveStrategy for every shape, where Resolve also takes ShapeStrategies).
 
   ///@{
   /// Inconsistent shapes (curves not null-homologous): -1 (default) labels them as they are,
