@@ -14,6 +14,7 @@
 #include "vtkBoolSurfRegionOutput.h"
 #include "vtkBoolSurfResolveStage.h"
 #include "vtkBoolSurfSelectionOutput.h"
+#include "vtkBoolSurfStageSettingsDefinitions.h"
 #include "vtkBoolSurfTraceStage.h"
 #include "vtkBoolSurfWindingStage.h"
 
@@ -144,6 +145,10 @@ struct vtkBoolSurf::Internals
 vtkBoolSurf::vtkBoolSurf()
   : Internal(new Internals)
 {
+  // The stages' settings, as the stage filters hold them.
+  this->BscSettings.reset(new boolsurf::BscOptions);
+  this->ZeroCellSettings.reset(new boolsurf::ZeroCellOptions);
+  this->BooleanSettings.reset(new boolsurf::BooleanOptions);
   this->SetNumberOfInputPorts(3);
   this->SetInputPortOptional(2); // BSC samples
   this->SetNumberOfOutputPorts(4);
@@ -151,6 +156,11 @@ vtkBoolSurf::vtkBoolSurf()
 
 //------------------------------------------------------------------------------
 vtkBoolSurf::~vtkBoolSurf() = default;
+
+//------------------------------------------------------------------------------
+vtkBoolSurfBSCSettingsDefinitions(vtkBoolSurf);
+vtkBoolSurfZeroCellSettingsDefinitions(vtkBoolSurf);
+vtkBoolSurfBooleanSettingsDefinitions(vtkBoolSurf);
 
 //------------------------------------------------------------------------------
 bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
@@ -176,6 +186,7 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
   // Inputs and properties the labeled arrangement depends on; the surface's cached
   // conversion is keyed separately.
   Internals& in = *this->Internal;
+  const boolsurf::ZeroCellOptions& zeroCell = *this->ZeroCellSettings;
   const Internals::Key key{ surfaceInput,
     surfaceInput->GetMTime(),
     curvesInput,
@@ -183,8 +194,8 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
     this->GetResolution(),
     this->GetGeodesicMethod(),
     this->GetProjectionTolerance(),
-    this->ZeroCellMode,
-    { this->ZeroCellPoint[0], this->ZeroCellPoint[1], this->ZeroCellPoint[2] },
+    static_cast<int>(zeroCell.Mode),
+    zeroCell.Point,
     this->GetNumberOfThreads(),
     this->ResolveStrategy,
     this->ResolveOffset,
@@ -207,8 +218,6 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
 
   // 5. Boolean: once per cell, then only the region's triangles are written.
   const Clock::time_point selectStart = Clock::now();
-  const boolsurf::BooleanRequest request = boolsurf::MakeBooleanRequest(
-    this->Operation, this->ShapeA, this->ShapeB, this->Expression, this->FillRule);
   std::string text;
   const bool bsc = this->Selection == BSC_SELECTION;
   if (bsc)
@@ -218,7 +227,8 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
       return false;
     }
   }
-  else if (!boolsurf::SelectRequestedCells(in.Labels, request, in.Selected, text, error))
+  else if (!boolsurf::SelectBooleanCells(
+             in.Labels, *this->BooleanSettings, in.Selected, text, error))
   {
     return false;
   }
@@ -281,8 +291,8 @@ bool vtkBoolSurf::SelectBySamples(const boolsurf::vtkSurfaceInput& surface,
     !boolsurf::SelectBySamples(*surface.Mesh,
       in.Arrangement,
       queries,
-      boolsurf::SnapDistance(surfaceInput, this->SnapTolerance),
-      this->MaxSearchStates,
+      *this->BscSettings,
+      surfaceInput->GetLength(),
       in.Snaps,
       in.Bsc,
       error,
@@ -463,10 +473,9 @@ bool vtkBoolSurf::LabelCurves(const boolsurf::vtkSurfaceInput& surface,
   boolsurf::AddShapesWithoutCurves(labeling, boolsurf::ShapesBeingDrawn(curvesInput));
   if (boolsurf::IsDrawing(curvesInput))
   {
-    boolsurf::AddShapesWithoutCurves(labeling,
-      boolsurf::ShapesNamed(this->Operation, this->ShapeA, this->ShapeB, this->Expression));
+    boolsurf::AddShapesWithoutCurves(labeling, boolsurf::ShapesNamed(*this->BooleanSettings));
   }
-  if (this->ZeroCellMode == 1)
+  if (this->ZeroCellSettings->Mode == boolsurf::ZeroCellMode::Point)
   {
     const int zero = this->FindZeroCell(surface, error);
     if (zero < 0)
@@ -500,7 +509,7 @@ int vtkBoolSurf::FindZeroCell(const boolsurf::vtkSurfaceInput& surface, std::str
   return boolsurf::ZeroCellAt(this->GetSurfaceCache().GetLocator(),
     *surface.Mesh,
     this->Internal->Arrangement,
-    this->ZeroCellPoint,
+    this->ZeroCellSettings->Point.data(),
     error);
 }
 
@@ -591,12 +600,12 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
 void vtkBoolSurf::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Operation: " << this->Operation << "\n";
-  os << indent << "ShapeA: " << this->ShapeA << " ShapeB: " << this->ShapeB << "\n";
-  os << indent << "Expression: " << this->Expression << "\n";
-  os << indent << "FillRule: " << this->FillRule << "\n";
+  os << indent << "Operation: " << this->GetOperation() << "\n";
+  os << indent << "ShapeA: " << this->GetShapeA() << " ShapeB: " << this->GetShapeB() << "\n";
+  os << indent << "Expression: " << this->GetExpression() << "\n";
+  os << indent << "FillRule: " << this->GetFillRule() << "\n";
   os << indent << "Selection: " << (this->Selection == BSC_SELECTION ? "BSC" : "Boolean") << "\n";
-  os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
+  os << indent << "SnapTolerance: " << this->GetSnapTolerance() << "\n";
   os << indent << "OffsetShape: " << this->OffsetShape
      << " OffsetDistance: " << this->OffsetDistance << "\n";
   os << indent << "CloseBrokenShapes: " << this->CloseBrokenShapes

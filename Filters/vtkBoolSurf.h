@@ -89,15 +89,23 @@ public:
   void SetSelectionToBoolean() { this->SetSelection(BOOLEAN_SELECTION); }
   void SetSelectionToBSC() { this->SetSelection(BSC_SELECTION); }
   /// BSC: SnapTolerance and MaxSearchStates, as vtkBoolSurfBSC's (declared once in
-  /// vtkBoolSurfStageSettings.h).
+  /// vtkBoolSurfStageSettings.h, held in the same boolsurf::BscOptions).
   vtkBoolSurfBSCSettingsMacro();
   ///@}
 
   /// Labeling: ZeroCellMode and ZeroCellPoint, as vtkBoolSurfLabeling's; Boolean: Operation,
   /// ShapeA, ShapeB, Expression, FillRule, as vtkBoolSurfBoolean's (each group declared once in
-  /// vtkBoolSurfStageSettings.h).
+  /// vtkBoolSurfStageSettings.h and held in the stage's Core options struct,
+  /// boolsurf::ZeroCellOptions and boolsurf::BooleanOptions).
   vtkBoolSurfZeroCellSettingsMacro();
   vtkBoolSurfBooleanSettingsMacro();
+
+  // The optional steps' settings below are declared here, not shared with the stage filters
+  // (vtkBoolSurfResolve, vtkBoolSurfOffset, vtkBoolSurfWindingNumbers): their names and
+  // defaults differ from the stages' on purpose. Each switches its step on, with an "off" value
+  // the stage does not have (ResolveStrategy -1, OffsetShape -1, an empty CloseBrokenShapes),
+  // and takes one value where the stage takes a list or an expression (OffsetShape for Shapes
+  // or Expression; ResolveStrategy for every shape, where Resolve also takes ShapeStrategies).
 
   ///@{
   /// Inconsistent shapes (curves not null-homologous): -1 (default) labels them as they are,

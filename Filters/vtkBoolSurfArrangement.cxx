@@ -6,6 +6,7 @@
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfStageHandoff.h"
+#include "vtkBoolSurfStageSettingsDefinitions.h"
 #include "vtkBoolSurfSurfaceCache.h"
 #include "vtkBoolSurfTraceStage.h"
 
@@ -32,7 +33,8 @@ struct vtkBoolSurfArrangement::Internals
 
 //------------------------------------------------------------------------------
 vtkBoolSurfArrangement::vtkBoolSurfArrangement()
-  : Internal(new Internals)
+  : ArrangementSettings(new boolsurf::ArrangementOptions)
+  , Internal(new Internals)
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
@@ -40,6 +42,9 @@ vtkBoolSurfArrangement::vtkBoolSurfArrangement()
 
 //------------------------------------------------------------------------------
 vtkBoolSurfArrangement::~vtkBoolSurfArrangement() = default;
+
+//------------------------------------------------------------------------------
+vtkBoolSurfThreadSettingsDefinitions(vtkBoolSurfArrangement, this->ArrangementSettings->Threads);
 
 //------------------------------------------------------------------------------
 vtkPolyData* vtkBoolSurfArrangement::GetPatchesOutput()
@@ -88,7 +93,7 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     return true;
   }
-  if (!boolsurf::ArrangeResult(result, sources, this->NumberOfThreads, output, patches, error))
+  if (!boolsurf::ArrangeResult(result, sources, *this->ArrangementSettings, output, patches, error))
   {
     this->Internal->Work = result->Arrangement.Work;
     return false;
@@ -148,5 +153,5 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
 void vtkBoolSurfArrangement::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "NumberOfThreads: " << this->GetNumberOfThreads() << "\n";
 }

@@ -58,8 +58,14 @@
 
 #include "BoolSurfFiltersModule.h" // for export macro
 #include "vtkBoolSurfAlgorithm.h"
+#include "vtkBoolSurfStageSettings.h" // for the thread count's declaration
 
 #include <memory> // for std::unique_ptr
+
+namespace boolsurf
+{
+struct ArrangementOptions;
+}
 
 class BOOLSURFFILTERS_EXPORT vtkBoolSurfArrangement : public vtkBoolSurfAlgorithm
 {
@@ -74,11 +80,9 @@ public:
   void SetCurvesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   ///@}
 
-  ///@{
-  /// Threads for the refinement; 0 (default) uses every hardware thread.
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
+  /// Threads for the intersections and the refinement; 0 (default) uses every hardware
+  /// thread. Declared once for every filter that has it (vtkBoolSurfStageSettings.h).
+  vtkBoolSurfThreadSettingsMacro();
 
   /// The patches output (port 1).
   vtkPolyData* GetPatchesOutput();
@@ -91,7 +95,8 @@ protected:
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
 
-  int NumberOfThreads = 0;
+  /// The arrangement's settings (the thread count), as the stage takes them.
+  std::unique_ptr<boolsurf::ArrangementOptions> ArrangementSettings;
 
 private:
   vtkBoolSurfArrangement(const vtkBoolSurfArrangement&) = delete;

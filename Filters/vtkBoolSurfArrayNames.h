@@ -52,7 +52,7 @@ constexpr const char* LeftCell = "LeftCell";
 constexpr const char* RightCell = "RightCell";
 constexpr const char* StageTimes = "StageTimes";
 /// What a refined surface read from a file needs to be arranged again (field data; see
-/// vtkBoolSurfArrangementRebuild.h): the mesh's size (components Vertices, Triangles), the
+/// vtkBoolSurfArrangementRebuildWriter.h): the mesh's size (components Vertices, Triangles), the
 /// corners of the mesh triangles the refined surface does not keep (components Triangle,
 /// Corner0..2), the traced curves (offsets, per curve ShapeId/CurveId/Closed, per point the
 /// canonical location Location/Id and weights U/V/T), their control points when Trace Surface

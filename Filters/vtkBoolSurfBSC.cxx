@@ -3,10 +3,10 @@
 #include "vtkBoolSurfControlCurves.h"
 
 #include "vtkBoolSurfBSCStage.h"
-#include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfSelectionOutput.h"
 #include "vtkBoolSurfStageHandoff.h"
+#include "vtkBoolSurfStageSettingsDefinitions.h"
 
 #include <vtkCellData.h>
 #include <vtkInformation.h>
@@ -31,9 +31,13 @@ vtkBoolSurfBSC::~vtkBoolSurfBSC() = default;
 vtkBoolSurfBSC::vtkBoolSurfBSC()
   : Internal(new Internals)
 {
+  this->BscSettings.reset(new boolsurf::BscOptions);
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(4);
 }
+
+//------------------------------------------------------------------------------
+vtkBoolSurfBSCSettingsDefinitions(vtkBoolSurfBSC);
 
 //------------------------------------------------------------------------------
 bool vtkBoolSurfBSC::Execute(const std::vector<vtkPolyData*>& inputs,
@@ -68,8 +72,8 @@ bool vtkBoolSurfBSC::Execute(const std::vector<vtkPolyData*>& inputs,
   if (!boolsurf::SelectBySamples(*arranged.Surface.Mesh,
         arranged.Arrangement,
         queries,
-        boolsurf::SnapDistance(arranged.Surface.Triangles, this->SnapTolerance),
-        this->MaxSearchStates,
+        *this->BscSettings,
+        arranged.Surface.Triangles->GetLength(),
         in.Snaps,
         in.Result,
         error,
@@ -107,6 +111,6 @@ bool vtkBoolSurfBSC::Execute(const std::vector<vtkPolyData*>& inputs,
 void vtkBoolSurfBSC::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
-  os << indent << "MaxSearchStates: " << this->MaxSearchStates << "\n";
+  os << indent << "SnapTolerance: " << this->GetSnapTolerance() << "\n";
+  os << indent << "MaxSearchStates: " << this->GetMaxSearchStates() << "\n";
 }

@@ -6,6 +6,7 @@
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfSelectionOutput.h"
 #include "vtkBoolSurfStageHandoff.h"
+#include "vtkBoolSurfStageSettingsDefinitions.h"
 
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -25,11 +26,15 @@ struct vtkBoolSurfBoolean::Internals
 vtkBoolSurfBoolean::vtkBoolSurfBoolean()
   : Internal(new Internals)
 {
+  this->BooleanSettings.reset(new boolsurf::BooleanOptions);
   this->SetNumberOfOutputPorts(4);
 }
 
 //------------------------------------------------------------------------------
 vtkBoolSurfBoolean::~vtkBoolSurfBoolean() = default;
+
+//------------------------------------------------------------------------------
+vtkBoolSurfBooleanSettingsDefinitions(vtkBoolSurfBoolean);
 
 //------------------------------------------------------------------------------
 bool vtkBoolSurfBoolean::Execute(const std::vector<vtkPolyData*>& inputs,
@@ -54,12 +59,8 @@ bool vtkBoolSurfBoolean::Execute(const std::vector<vtkPolyData*>& inputs,
     return false;
   }
   std::string text, note;
-  if (!boolsurf::SelectRequestedCells(labeled->Labels,
-        boolsurf::MakeBooleanRequest(
-          this->Operation, this->ShapeA, this->ShapeB, this->Expression, this->FillRule),
-        in.Selected,
-        text,
-        error) ||
+  if (!boolsurf::SelectBooleanCells(
+        labeled->Labels, *this->BooleanSettings, in.Selected, text, error) ||
     !boolsurf::WriteHandedOverSelection(*labeled->Arranged,
       in.Selected,
       in.Solver,
@@ -88,9 +89,9 @@ bool vtkBoolSurfBoolean::Execute(const std::vector<vtkPolyData*>& inputs,
 void vtkBoolSurfBoolean::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Operation: " << this->Operation << "\n";
-  os << indent << "ShapeA: " << this->ShapeA << "\n";
-  os << indent << "ShapeB: " << this->ShapeB << "\n";
-  os << indent << "Expression: " << this->Expression << "\n";
-  os << indent << "FillRule: " << this->FillRule << "\n";
+  os << indent << "Operation: " << this->GetOperation() << "\n";
+  os << indent << "ShapeA: " << this->GetShapeA() << "\n";
+  os << indent << "ShapeB: " << this->GetShapeB() << "\n";
+  os << indent << "Expression: " << this->GetExpression() << "\n";
+  os << indent << "FillRule: " << this->GetFillRule() << "\n";
 }

@@ -7,6 +7,7 @@
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfStageHandoff.h"
+#include "vtkBoolSurfStageSettingsDefinitions.h"
 
 #include <vtkAbstractArray.h>
 #include <vtkCellData.h>
@@ -35,11 +36,15 @@ struct vtkBoolSurfLabeling::Internals
 vtkBoolSurfLabeling::vtkBoolSurfLabeling()
   : Internal(new Internals)
 {
+  this->ZeroCellSettings.reset(new boolsurf::ZeroCellOptions);
   this->SetNumberOfOutputPorts(2);
 }
 
 //------------------------------------------------------------------------------
 vtkBoolSurfLabeling::~vtkBoolSurfLabeling() = default;
+
+//------------------------------------------------------------------------------
+vtkBoolSurfZeroCellSettingsDefinitions(vtkBoolSurfLabeling);
 
 //------------------------------------------------------------------------------
 bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
@@ -56,7 +61,7 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   boolsurf::LabelingResult labels;
   std::string warning;
   boolsurf::LabelingOutputOptions options;
-  options.ZeroCellPoint = this->ZeroCellMode == POINT ? this->ZeroCellPoint : nullptr;
+  options.ZeroCell = *this->ZeroCellSettings;
   options.ColorShape = this->ColorShape;
   options.PerTriangleLabels = this->PerTriangleLabels;
   // The arrangement in Core form (handed over, or computed again for a file): labeled as the
@@ -66,7 +71,7 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     return false;
   }
-  if (options.ZeroCellPoint)
+  if (options.ZeroCell.Mode == boolsurf::ZeroCellMode::Point)
   {
     options.SurfaceLocator = this->Internal->Locator.Get(arranged->Surface.Triangles);
   }
@@ -111,9 +116,10 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
 void vtkBoolSurfLabeling::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ZeroCellMode: " << this->ZeroCellMode << "\n";
-  os << indent << "ZeroCellPoint: " << this->ZeroCellPoint[0] << " " << this->ZeroCellPoint[1]
-     << " " << this->ZeroCellPoint[2] << "\n";
+  const double* zeroCellPoint = this->GetZeroCellPoint();
+  os << indent << "ZeroCellMode: " << this->GetZeroCellMode() << "\n";
+  os << indent << "ZeroCellPoint: " << zeroCellPoint[0] << " " << zeroCellPoint[1] << " "
+     << zeroCellPoint[2] << "\n";
   os << indent << "ColorShape: " << this->ColorShape << "\n";
   os << indent << "PerTriangleLabels: " << this->PerTriangleLabels << "\n";
 }

@@ -7,7 +7,8 @@
  * the same settings: Resolution, ProjectionTolerance, GeodesicMethod (with the deprecated
  * ExactGeodesics switch) and NumberOfThreads. They are held here as one Core options value
  * (boolsurf::TraceOptions) that a filter hands to its stage as it is, so that a new setting, or
- * a new filter that traces, is written once. The server-manager XML declares the same
+ * a new filter that traces, is written once (NumberOfThreads, which Surface Arrangement has
+ * too, is declared in vtkBoolSurfStageSettings.h). The server-manager XML declares the same
  * properties once too (XML/Shared/TraceSettings.xml); a filter's XML exposes the ones it uses.
  *
  * @sa vtkBoolSurfAlgorithm, vtkBoolSurfTraceCurves
@@ -17,6 +18,7 @@
 
 #include "BoolSurfFiltersModule.h" // for export macro
 #include "vtkBoolSurfAlgorithm.h"
+#include "vtkBoolSurfStageSettings.h" // for the settings' declarations
 
 #include <memory> // for std::unique_ptr
 
@@ -34,19 +36,13 @@ public:
   ///@{
   /// De Casteljau subdivision levels of Bezier splines (default 4: 16 pieces per segment),
   /// in [0, 16].
-  virtual void SetResolution(int resolution);
-  virtual int GetResolution();
-  virtual int GetResolutionMinValue() { return 0; }
-  virtual int GetResolutionMaxValue() { return 16; }
+  vtkBoolSurfClampedSettingMacro(Resolution, int, 0, 16);
   ///@}
 
   ///@{
   /// Largest allowed distance from a control point to the surface, as a fraction of the
   /// surface's bounding-box diagonal (default 0.01). Farther points are errors.
-  virtual void SetProjectionTolerance(double tolerance);
-  virtual double GetProjectionTolerance();
-  virtual double GetProjectionToleranceMinValue() { return 0.0; }
-  virtual double GetProjectionToleranceMaxValue() { return VTK_DOUBLE_MAX; }
+  vtkBoolSurfClampedSettingMacro(ProjectionTolerance, double, 0.0, VTK_DOUBLE_MAX);
   ///@}
 
   ///@{
@@ -61,10 +57,7 @@ public:
   /// - GEODESIC_LOCALLY_SHORTEST (2): the shortest mesh-edge path, straightened: the fastest,
   ///   but with no guarantee of being the shortest (it may pass on the wrong side of a bump, a
   ///   saddle or a handle).
-  virtual void SetGeodesicMethod(int method);
-  virtual int GetGeodesicMethod();
-  virtual int GetGeodesicMethodMinValue() { return GEODESIC_BOUNDED; }
-  virtual int GetGeodesicMethodMaxValue() { return GEODESIC_LOCALLY_SHORTEST; }
+  vtkBoolSurfClampedSettingMacro(GeodesicMethod, int, GEODESIC_BOUNDED, GEODESIC_LOCALLY_SHORTEST);
   void SetGeodesicMethodToBounded() { this->SetGeodesicMethod(GEODESIC_BOUNDED); }
   void SetGeodesicMethodToExact() { this->SetGeodesicMethod(GEODESIC_EXACT); }
   void SetGeodesicMethodToLocallyShortest() { this->SetGeodesicMethod(GEODESIC_LOCALLY_SHORTEST); }
@@ -83,15 +76,10 @@ public:
   void ExactGeodesicsOff() { this->SetExactGeodesics(0); }
   ///@}
 
-  ///@{
   /// Threads of the tracing and of the filter's own stage (the arrangement, the winding
   /// numbers); 0 (default) uses every hardware thread, in [0, 1024]. Results do not depend on
-  /// it.
-  virtual void SetNumberOfThreads(int threads);
-  virtual int GetNumberOfThreads();
-  virtual int GetNumberOfThreadsMinValue() { return 0; }
-  virtual int GetNumberOfThreadsMaxValue() { return 1024; }
-  ///@}
+  /// it. Declared once for every filter that has it (vtkBoolSurfStageSettings.h).
+  vtkBoolSurfThreadSettingsMacro();
 
 protected:
   vtkBoolSurfTracingAlgorithm();

@@ -158,8 +158,10 @@ bool vtkBoolSurfWindingNumbers::Execute(const std::vector<vtkPolyData*>& inputs,
   }
 
   // 2. the arrangement (port 0 as Surface Arrangement writes it)
+  boolsurf::ArrangementOptions arrangementOptions;
+  arrangementOptions.Threads = this->GetNumberOfThreads();
   if (!boolsurf::ArrangeResult(
-        result, result->Sources, this->GetNumberOfThreads(), refined, nullptr, error))
+        result, result->Sources, arrangementOptions, refined, nullptr, error))
   {
     this->Internal->Work = result->Arrangement.Work;
     return false;

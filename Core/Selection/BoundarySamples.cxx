@@ -216,4 +216,26 @@ bool SelectBySamples(const TriangleMesh& mesh,
     error);
 }
 
+//------------------------------------------------------------------------------
+bool SelectBySamples(const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const std::vector<SampleQuery>& queries,
+  const BscOptions& options,
+  double diagonal,
+  std::vector<PatchSnap>& snaps,
+  BscResult& result,
+  std::string& error,
+  const std::function<bool()>& abort)
+{
+  return SelectBySamples(mesh,
+    arr,
+    queries,
+    options.SnapTolerance * diagonal,
+    options.MaxSearchStates,
+    snaps,
+    result,
+    error,
+    abort);
+}
+
 } // namespace boolsurf

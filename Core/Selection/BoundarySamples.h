@@ -141,6 +141,29 @@ bool SelectBySamples(const TriangleMesh& mesh,
   std::string& error,
   const std::function<bool()>& abort = {});
 
+/// The BSC settings the BSC and one-step filters hold (SnapTolerance, MaxSearchStates).
+struct BscOptions
+{
+  /// How far a sample may be from its patch, as a fraction of the surface's bounding-box
+  /// diagonal.
+  double SnapTolerance = 0.01;
+  /// Minimum cuts the best-first search computes before it finishes greedily
+  /// (BscInput::MaxSearchStates).
+  int MaxSearchStates = 64;
+};
+
+/// SelectBySamples above with the filters' settings: the snap tolerance is
+/// options.SnapTolerance times `diagonal`, the bounding-box diagonal of the surface.
+bool SelectBySamples(const TriangleMesh& mesh,
+  const Arrangement& arrangement,
+  const std::vector<SampleQuery>& queries,
+  const BscOptions& options,
+  double diagonal,
+  std::vector<PatchSnap>& snaps,
+  BscResult& result,
+  std::string& error,
+  const std::function<bool()>& abort = {});
+
 } // namespace boolsurf
 
 #endif

@@ -4,7 +4,7 @@
 
 #include "Arrangement/EditBuffers.h"
 #include "Labeling/ArrangementLabelingInput.h"
-#include "vtkBoolSurfArrangementRebuild.h"
+#include "vtkBoolSurfArrangementRebuildWriter.h"
 #include "vtkBoolSurfArrayView.h"
 #include "vtkBoolSurfAttributeTransfer.h"
 #include "vtkBoolSurfOutputReuse.h"
@@ -122,21 +122,19 @@ void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData
 //------------------------------------------------------------------------------
 bool ArrangeCurves(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
-  int threads,
+  const ArrangementOptions& options,
   Arrangement& arrangement,
   const ArrangementMemory& memory,
   vtkPolyData* refined,
   vtkPolyData* patches,
   std::string& error)
 {
-  ArrangementOptions options;
-  options.Threads = threads;
   if (!ComputeArrangement(*surface.Mesh, curves, options, arrangement, error))
   {
     error = "Arrangement failed: " + error;
     return false;
   }
-  WriteArrangementSurface(surface, curves, arrangement, memory, refined, threads);
+  WriteArrangementSurface(surface, curves, arrangement, memory, refined, options.Threads);
   if (patches)
   {
     WriteArrangementPatches(arrangement, refined, patches);
@@ -441,7 +439,7 @@ std::vector<int> ReadTriangleCells(vtkDataArray* arrangementCell)
 
 bool ArrangeResult(const std::shared_ptr<ArrangementResult>& result,
   const std::vector<CurveSource>& sources,
-  int threads,
+  const ArrangementOptions& options,
   vtkPolyData* refined,
   vtkPolyData* patches,
   std::string& error)
@@ -456,7 +454,7 @@ bool ArrangeResult(const std::shared_ptr<ArrangementResult>& result,
     &result->Whole };
   if (ArrangeCurves(result->Surface,
         result->Curves,
-        threads,
+        options,
         result->Arrangement,
         memory,
         refined,

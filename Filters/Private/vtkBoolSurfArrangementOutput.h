@@ -50,11 +50,11 @@ struct ArrangementMemory
 };
 
 /// The arrangement stage: computes the arrangement of `curves` into `arrangement` (reusing
-/// its buffers) and writes port 0 (`refined`) and, when not null, port 1 (`patches`). False
-/// with a message naming the curve and point.
+/// its buffers) with `options` and writes port 0 (`refined`) and, when not null, port 1
+/// (`patches`) with as many threads. False with a message naming the curve and point.
 bool ArrangeCurves(const vtkSurfaceInput& surface,
   const std::vector<TracedCurve>& curves,
-  int threads,
+  const ArrangementOptions& options,
   Arrangement& arrangement,
   const ArrangementMemory& memory,
   vtkPolyData* refined,
@@ -69,7 +69,7 @@ struct CurveSource;
 /// names the curve point as the user gave it (`sources`, may be empty).
 bool ArrangeResult(const std::shared_ptr<ArrangementResult>& result,
   const std::vector<CurveSource>& sources,
-  int threads,
+  const ArrangementOptions& options,
   vtkPolyData* refined,
   vtkPolyData* patches,
   std::string& error);

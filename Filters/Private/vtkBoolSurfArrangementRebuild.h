@@ -1,20 +1,12 @@
 // The arrangement of a refined surface that carries no Core result (read from a file, deep-
-// copied), computed again from what Surface Arrangement writes for it (a private header of the
-// module): the one decoder behind vtkBoolSurfAlgorithm::GetArrangement, so that labeling and
-// selections have one body, over Core types, whichever way their input came.
-//
-// The refined surface's first points are the mesh's vertices, in order, and every mesh
-// triangle the curves leave whole keeps its corners (refined triangle t is mesh triangle t):
-// the writer adds only the corners of the triangles the curves cross (and of unusable ones,
-// left out of the refined surface) and the traced curves, O(curves + crossed triangles) per
-// edit. The reader rebuilds the mesh, arranges the curves again (cells are numbered
-// canonically) and refuses when the refined triangles or their cells differ from the input's.
+// copied), computed again from what Surface Arrangement writes for it
+// (vtkBoolSurfArrangementRebuildWriter.h; a private header of the module): the one decoder
+// behind vtkBoolSurfAlgorithm::GetArrangement, so that labeling and selections have one body,
+// over Core types, whichever way their input came. The reader rebuilds the mesh, arranges the
+// curves again (cells are numbered canonically) and refuses when the refined triangles or
+// their cells differ from the input's.
 #ifndef vtkBoolSurfArrangementRebuild_h
 #define vtkBoolSurfArrangementRebuild_h
-
-#include "Arrangement/Arrangement.h"
-#include "Geodesic/GeodesicPath.h"
-#include "Selection/BoundaryControlPoints.h"
 
 #include <vtkObject.h>
 #include <vtkWeakPointer.h>
@@ -23,7 +15,6 @@
 #include <string>
 #include <vector>
 
-class vtkFieldData;
 class vtkPolyData;
 
 namespace boolsurf
@@ -31,15 +22,6 @@ namespace boolsurf
 
 struct ArrangementResult;
 struct LabelingResult;
-
-/// Field data names::Arranged* of port 0 (vtkBoolSurfArrayNames.h): what
-/// RebuildArrangement needs besides the refined surface's own arrays.
-void WriteRebuildFields(const TriangleMesh& mesh,
-  const Arrangement& arrangement,
-  const std::vector<TracedCurve>& curves,
-  const std::vector<CurveSource>& sources,
-  GeodesicMethod method,
-  vtkFieldData* fd);
 
 /// The arrangement of `refined` (port 0 of Surface Arrangement, or a copy of it further down)
 /// computed again into `out` (its Surface, Curves, Sources, Method and Arrangement) with

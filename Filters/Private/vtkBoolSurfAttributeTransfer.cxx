@@ -15,7 +15,9 @@ namespace boolsurf
 namespace
 {
 // Arrays BoolSurf computes itself: an input carrying them (e.g. the output of an earlier run)
-// must not shadow the new values.
+// must not shadow the new values. The labeling's per-triangle arrays (Labels, ShapeLabel) are
+// among them: a region's labels are the field data CellLabels, whether the labeled surface came
+// handed over (its Core result has no such arrays) or from a file (its cell data has them).
 bool IsBoolSurfArray(const char* name)
 {
   static const char* const names[] = { boolsurf::names::TriangleId,
@@ -25,6 +27,7 @@ bool IsBoolSurfArray(const char* name)
     boolsurf::names::Region,
     boolsurf::names::WindingNumber,
     boolsurf::names::Labels,
+    boolsurf::names::ShapeLabel,
     boolsurf::names::ComponentId,
     boolsurf::names::BoundaryLoopId,
     "vtkOriginalCellIds",

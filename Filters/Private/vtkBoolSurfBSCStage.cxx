@@ -63,12 +63,6 @@ bool ReadSampleQueries(vtkPolyData* samples,
 }
 
 //------------------------------------------------------------------------------
-double SnapDistance(vtkPolyData* surface, double relativeTolerance)
-{
-  return relativeTolerance * surface->GetLength();
-}
-
-//------------------------------------------------------------------------------
 void AddSampleFields(const std::vector<PatchSnap>& snaps,
   const BscResult& result,
   vtkPolyData* output)

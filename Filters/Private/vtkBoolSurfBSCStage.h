@@ -24,9 +24,6 @@ bool ReadSampleQueries(vtkPolyData* samples,
   std::vector<SampleQuery>& queries,
   std::string& error);
 
-/// SnapTolerance (a fraction of the bounding-box diagonal of `surface`) as a distance.
-double SnapDistance(vtkPolyData* surface, double relativeTolerance);
-
 /// Field data on `output`: `SamplePatch` (patch each sample snapped to), `SampleDistance`,
 /// `SampleOnBoundary` (1 kept on the boundary, 0 dropped), `DroppedSamples` (ids),
 /// `BoundaryLength`, `BSCCuts` (minimum cuts computed) and `Selection` = "BSC".

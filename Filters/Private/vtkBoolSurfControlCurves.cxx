@@ -19,7 +19,6 @@
 #include <vtkSmartPointer.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -167,45 +166,6 @@ bool IsDrawing(vtkPolyData* curves)
   vtkDataArray* drawing =
     curves ? curves->GetFieldData()->GetArray(boolsurf::names::Drawing) : nullptr;
   return drawing && drawing->GetNumberOfTuples() == 1 && drawing->GetComponent(0, 0) == 1;
-}
-
-//------------------------------------------------------------------------------
-std::vector<int> ShapesNamed(int operation, int shapeA, int shapeB, const std::string& expression)
-{
-  std::vector<int> shapes;
-  if (operation != 4) // not an expression: ShapeA and ShapeB (-1: all shapes)
-  {
-    for (int id : { shapeA, shapeB })
-    {
-      if (id >= 0)
-      {
-        shapes.push_back(id);
-      }
-    }
-    return shapes;
-  }
-  // S<digits> tokens; the expression's own parser checks everything else.
-  for (std::size_t i = 0; i + 1 < expression.size(); ++i)
-  {
-    if ((expression[i] == 'S' || expression[i] == 's') && std::isdigit(expression[i + 1]) &&
-      (i == 0 || !std::isalnum(static_cast<unsigned char>(expression[i - 1]))))
-    {
-      long long id = 0;
-      std::size_t k = i + 1;
-      for (; k < expression.size() && std::isdigit(static_cast<unsigned char>(expression[k])) &&
-           id <= std::numeric_limits<int>::max();
-           ++k)
-      {
-        id = 10 * id + (expression[k] - '0');
-      }
-      if (id <= std::numeric_limits<int>::max())
-      {
-        shapes.push_back(static_cast<int>(id));
-      }
-      i = k - 1;
-    }
-  }
-  return shapes;
 }
 
 //------------------------------------------------------------------------------

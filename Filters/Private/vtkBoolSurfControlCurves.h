@@ -47,10 +47,6 @@ std::vector<int> ShapesBeingDrawn(vtkPolyData* curves);
 /// drawing, where a shape not drawn yet is an empty shape rather than an error.
 bool IsDrawing(vtkPolyData* curves);
 
-/// The shape ids an operation names: ShapeA and ShapeB (those >= 0) of a two-shape operation,
-/// or the S<id> of an expression.
-std::vector<int> ShapesNamed(int operation, int shapeA, int shapeB, const std::string& expression);
-
 /// Whether `curves` is a drawing (Surface Curves' field data Drawing) without a complete
 /// curve yet: empty, or only curves being drawn. Filters give no region then, without a
 /// message (the user is starting to draw).

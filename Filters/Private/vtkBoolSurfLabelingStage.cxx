@@ -130,10 +130,10 @@ bool LabelArrangement(vtkPolyData* input,
   const Arrangement& arr = arranged.Arrangement;
   LabelingInput in =
     MakeLabelingInput(*arranged.Surface.Mesh, *arranged.Surface.Topology, arranged.Curves, arr);
-  if (options.ZeroCellPoint)
+  if (options.ZeroCell.Mode == ZeroCellMode::Point)
   {
-    const int zero =
-      ZeroCellAt(options.SurfaceLocator, *arranged.Surface.Mesh, arr, options.ZeroCellPoint, error);
+    const int zero = ZeroCellAt(
+      options.SurfaceLocator, *arranged.Surface.Mesh, arr, options.ZeroCell.Point.data(), error);
     if (zero < 0)
     {
       return false;

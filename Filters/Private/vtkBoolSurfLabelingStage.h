@@ -4,6 +4,7 @@
 #define vtkBoolSurfLabelingStage_h
 
 #include "Labeling/CellLabeling.h"
+#include "Labeling/ZeroCellOptions.h"
 #include "vtkBoolSurfArrangementOutput.h"
 
 #include <vtkSmartPointer.h>
@@ -31,15 +32,15 @@ int ZeroCellAt(vtkStaticCellLocator* locator,
 /// What the labeling writes besides the per-cell table.
 struct LabelingOutputOptions
 {
-  /// The cell containing this point is the zero cell; null: automatic.
-  const double* ZeroCellPoint = nullptr;
+  /// How the zero cell is chosen (the filters' ZeroCellMode and ZeroCellPoint).
+  ZeroCellOptions ZeroCell;
   /// ShapeId whose label is written per triangle as the 1-component cell array `ShapeLabel`
   /// (for coloring); -1: none.
   int ColorShape = -1;
   /// Every shape's label per triangle as the cell array `Labels` (one component per shape):
   /// memory triangles x shapes, so off unless asked for.
   bool PerTriangleLabels = false;
-  /// For ZeroCellPoint: a locator on the arrangement's input surface.
+  /// For ZeroCellMode Point: a locator on the arrangement's input surface.
   vtkStaticCellLocator* SurfaceLocator = nullptr;
 };
 

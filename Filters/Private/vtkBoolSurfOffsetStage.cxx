@@ -6,8 +6,7 @@
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Labeling/CellLabeling.h"
 #include "Offset/OffsetRegionOfCells.h"
-#include "Selection/BooleanExpression.h"
-#include "vtkBoolSurfBooleanStage.h"
+#include "Selection/BooleanOptions.h"
 #include "vtkBoolSurfControlCurveWriter.h"
 #include "vtkBoolSurfTraceStage.h"
 
@@ -208,12 +207,12 @@ bool OffsetControlCurves(vtkSurfaceCache& cache,
       return false;
     }
     labels = LabelCells(MakeLabelingInput(mesh, *surface.Topology, arranged, arrangement));
-    BooleanRequest request;
-    request.Operation = BooleanOperation::Expression;
-    request.Expression = text;
-    request.Rule = static_cast<FillRule>(options.FillRule);
+    BooleanOptions boolean;
+    boolean.Operation = BooleanOperation::Expression;
+    boolean.Expression = text;
+    boolean.Rule = static_cast<FillRule>(options.FillRule);
     std::string ran;
-    if (!SelectRequestedCells(labels, request, selected, ran, error))
+    if (!SelectBooleanCells(labels, boolean, selected, ran, error))
     {
       return false;
     }
