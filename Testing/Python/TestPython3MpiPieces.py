@@ -27,7 +27,7 @@ env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
            OMPI_MCA_rmaps_base_oversubscribe="1")
 out = scratch.folder("boolsurf-pieces-")
 shared = os.environ.get("BOOLSURF_SHARED_DATA") or os.path.join(source_dir, "..", "shared", "data")
-scan = os.path.join(shared, "meshes", "bunny_npm.ply")
+scan = os.path.join(shared, "meshes", "fertility.ply")
 if not os.path.exists(scan):
     print("shared data not found (%s): the shared scan is skipped" % shared)
     scan = None
