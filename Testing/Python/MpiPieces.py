@@ -8,8 +8,8 @@ cell id (each rank checks its own piece; nothing is gathered).
 Surfaces: a sphere, a sphere with an open cap (one boundary loop), a torus, Data/eight.ply
 (genus 2) and optionally a shared scan; each gets global ids in its serial order
 (GenerateGlobalIds), then RedistributeDataSet and Extract Surface split it across the ranks.
-Also: a rank with no triangles (fewer partitions than ranks), pieces without global ids
-(generated, with a warning) and overlapping pieces without ghost marks (every rank holds the
+Also: a rank with no triangles (fewer partitions than ranks), pieces with ghost cells (cells on
+a cut copied to every region they touch), pieces without global ids (generated, with a warning) and overlapping pieces without ghost marks (every rank holds the
 whole surface: a clear error, no hang). --pvtp writes eight.ply's pieces as a partitioned file.
 """
 import argparse
@@ -84,6 +84,19 @@ out.GetCellData().AddArray(digest)
 """
 
 
+# The ghost cells of a rank's piece, as cells (the fetched union counts them over ranks).
+GHOSTS = """
+inp = self.GetInput()
+out = self.GetOutput()
+ghosts = inp.GetCellGhostArray()
+ids = [c for c in range(inp.GetNumberOfCells()) if ghosts and ghosts.GetValue(c)]
+out.SetPoints(inp.GetPoints())
+out.Allocate(len(ids))
+for c in ids:
+    out.InsertNextCell(inp.GetCellType(c), inp.GetCell(c).GetPointIds())
+"""
+
+
 def checked(surface, ids=True):
     check = CheckSurface(Input=surface)
     data = sm.Fetch(ProgrammableFilter(Input=check, Script=DIGEST))
@@ -110,12 +123,16 @@ def checked(surface, ids=True):
     return result
 
 
-def distributed(reader, partitions=None, ids=True):
+def distributed(reader, partitions=None, ids=True, ghosts=False):
     source = GenerateGlobalIds(Input=reader) if ids else reader
     redistributed = RedistributeDataSet(Input=source)
     if partitions:
         redistributed.NumberOfPartitions = partitions
-    return ExtractSurface(Input=redistributed)
+    surface = ExtractSurface(Input=redistributed)
+    if ghosts:
+        # A layer of the neighbours' cells on each piece, marked as ghost cells.
+        surface = GhostCellsGenerator(Input=surface, BuildIfRequired=0)
+    return surface
 
 
 eight = PLYReader(FileNames=[os.path.join(source_dir, "Data", "eight.ply")])
@@ -133,7 +150,12 @@ if ranks() >= 3:
     held = pieces.GetPointData().GetArray("ProcessId")
     results["empty_rank"]["holding"] = len({held.GetValue(i)
                                             for i in range(held.GetNumberOfTuples())})
+    results["empty_rank_no_ids"] = checked(distributed(eight, partitions=ranks() - 1, ids=False),
+                                           ids=False)
 results["no_ids"] = checked(distributed(eight, ids=False), ids=False)
+results["ghosts"] = checked(distributed(eight, ghosts=True))
+ghost_counts = sm.Fetch(ProgrammableFilter(Input=distributed(eight, ghosts=True), Script=GHOSTS))
+results["ghosts"]["ghost_cells"] = ghost_counts.GetNumberOfCells()
 
 # Every rank holds the whole surface with the same global ids: overlapping pieces.
 WHOLE = """

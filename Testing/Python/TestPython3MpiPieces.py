@@ -1,6 +1,6 @@
 """A surface split across MPI ranks stays split: Check Surface on 1, 2, 3 and 4 ranks
 (MpiPieces.py) gives, per global cell id and per point, the one-rank answers, with the same
-field data on every rank; a rank with no triangles, pieces without global ids (generated, with
+field data on every rank; pieces with ghost cells, a rank with no triangles, pieces without global ids (generated, with
 a warning) and overlapping pieces (a clear error on every rank, no hang) are handled; and the
 pieces of a .pvtp written on 3 ranks, read back in one process, give the undistributed
 surface's answers through every filter of the one-step pipeline (PvtpSerialPipeline.py).
@@ -89,6 +89,10 @@ for ranks in (2, 3, 4):
         same_field(got["field"], expected["field"], where)
         assert got["components"] == expected["components"], where
         assert got["loops"] == expected["loops"], where
+    # Pieces holding copies of their neighbours' cells, marked as ghosts: each cell counted once.
+    assert result["ghosts"]["ghost_cells"] > 0, "no ghost cells generated"
+    assert result["ghosts"]["components"] == serial["eight"]["components"], "ghosts"
+    same_field(result["ghosts"]["field"], serial["eight"]["field"], "ghosts, %d ranks" % ranks)
     # Without global ids: generated, with a warning; the same topology.
     same_field(result["no_ids"]["field"], serial["no_ids"]["field"], "no ids, %d ranks" % ranks)
     assert "carry no global cell ids: generated them" in output, output
@@ -100,6 +104,8 @@ for ranks in (2, 3, 4):
         assert result["empty_rank"]["holding"] == ranks - 1, result["empty_rank"]
         same_field(result["empty_rank"]["field"], serial["eight"]["field"], "rank with no triangles")
         assert result["empty_rank"]["components"] == serial["eight"]["components"]
+        same_field(result["empty_rank_no_ids"]["field"], serial["eight"]["field"],
+                   "rank with no triangles, no ids")
     print("%d ranks: Check Surface on the pieces gives the one-rank answers" % ranks)
 
 print(run([pvbatch, os.path.join(python_dir, "PvtpSerialPipeline.py"),
