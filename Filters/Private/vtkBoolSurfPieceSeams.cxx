@@ -18,6 +18,12 @@
 
 namespace boolsurf
 {
+namespace
+{
+/// The piece of each point when the mesh is appended pieces (see WeldPieceSeams), all 0
+/// otherwise.
+std::vector<int> PointPieces(const TriangleMesh& mesh);
+}
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* input)
@@ -43,6 +49,53 @@ vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* input)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+std::vector<int> PointPieces(const TriangleMesh& mesh)
+{
+  // Appended pieces are runs of cells on runs of points of their own: a cut after cell c
+  // where every point of the cells up to c comes before every point of the cells after it.
+  const int nt = mesh.GetNumberOfTriangles();
+  const int nv = mesh.GetNumberOfVertices();
+  std::vector<int> largestUpTo(nt, -1);
+  int largest = -1;
+  for (int t = 0; t < nt; ++t)
+  {
+    for (int k = 0; mesh.IsUsable(t) && k < 3; ++k)
+    {
+      largest = std::max(largest, mesh.GetTriangle(t)[k]);
+    }
+    largestUpTo[t] = largest;
+  }
+  std::vector<int> firstPoints; // the first point of each piece after the first
+  int smallest = nv;
+  for (int t = nt - 1; t > 0; --t)
+  {
+    for (int k = 0; mesh.IsUsable(t) && k < 3; ++k)
+    {
+      smallest = std::min(smallest, mesh.GetTriangle(t)[k]);
+    }
+    if (largestUpTo[t - 1] < smallest && smallest < nv &&
+      (firstPoints.empty() || firstPoints.back() != smallest))
+    {
+      firstPoints.push_back(smallest);
+    }
+  }
+  std::sort(firstPoints.begin(), firstPoints.end());
+  std::vector<int> piece(nv, 0);
+  for (int v = 0, p = 0; v < nv; ++v)
+  {
+    while (p < static_cast<int>(firstPoints.size()) && firstPoints[p] <= v)
+    {
+      ++p;
+    }
+    piece[v] = p;
+  }
+  return piece;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> WeldPieceSeams(vtkPolyData* triangles, const TriangleMesh& mesh)
 {
   // Only points on edges with one triangle (or more than two) can be a piece's copy of a
@@ -50,6 +103,7 @@ vtkSmartPointer<vtkPolyData> WeldPieceSeams(vtkPolyData* triangles, const Triang
   // the boundary's points, nothing on a closed surface.
   const int nv = mesh.GetNumberOfVertices();
   std::vector<char> border(nv, 0);
+  bool anyBorder = false;
   for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
   {
     for (int k = 0; mesh.IsUsable(t) && k < 3; ++k)
@@ -58,8 +112,20 @@ vtkSmartPointer<vtkPolyData> WeldPieceSeams(vtkPolyData* triangles, const Triang
       {
         border[mesh.GetTriangle(t)[k]] = 1;
         border[mesh.GetTriangle(t)[(k + 1) % 3]] = 1;
+        anyBorder = true;
       }
     }
+  }
+  if (!anyBorder)
+  {
+    return nullptr;
+  }
+  // Points are welded across pieces only: a mesh of one piece cut along a seam (its points
+  // doubled there, as for texture coordinates) keeps its seam.
+  const std::vector<int> piece = PointPieces(mesh);
+  if (piece.empty() || piece.back() == 0)
+  {
+    return nullptr;
   }
   std::map<std::array<double, 3>, int> first;
   std::vector<int> into(nv);
@@ -67,12 +133,15 @@ vtkSmartPointer<vtkPolyData> WeldPieceSeams(vtkPolyData* triangles, const Triang
   bool welded = false;
   for (int v = 0; v < nv; ++v)
   {
-    if (border[v])
+    const Vec3& p = mesh.GetPosition(v);
+    if (border[v] && IsFinite(p)) // NaN does not order: such points are never welded
     {
-      const Vec3& p = mesh.GetPosition(v);
       const auto found = first.emplace(std::array<double, 3>{ p[0], p[1], p[2] }, v);
-      into[v] = found.first->second;
-      welded = welded || into[v] != v;
+      if (piece[found.first->second] != piece[v])
+      {
+        into[v] = found.first->second;
+        welded = true;
+      }
     }
   }
   if (!welded)
@@ -86,6 +155,8 @@ vtkSmartPointer<vtkPolyData> WeldPieceSeams(vtkPolyData* triangles, const Triang
   vtkNew<vtkPoints> points;
   points->SetDataType(triangles->GetPoints()->GetDataType());
   vtkPointData* pointData = out->GetPointData();
+  // Every array follows, global and pedigree ids too (VTK copies those only when told).
+  pointData->CopyAllOn();
   pointData->CopyAllocate(triangles->GetPointData(), nv);
   for (int v = 0; v < nv; ++v)
   {
@@ -112,6 +183,7 @@ vtkSmartPointer<vtkPolyData> WeldPieceSeams(vtkPolyData* triangles, const Triang
   vtkNew<vtkCellArray> polys;
   polys->AllocateExact(nt, 3 * nt);
   vtkCellData* cellData = out->GetCellData();
+  cellData->CopyAllOn();
   cellData->CopyAllocate(triangles->GetCellData(), nt);
   for (vtkIdType t : order)
   {

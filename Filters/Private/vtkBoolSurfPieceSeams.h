@@ -26,11 +26,15 @@ namespace boolsurf
 vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* input);
 
 /// `triangles` (whose triangles are `mesh`'s) with the points on boundary or non-manifold
-/// edges that share their exact position merged into the first of them, the merged copies
-/// removed and the triangles put in the order of their global cell ids when they carry them
-/// (as the gather of pieces does); null when no two such points coincide, which is the case
-/// of every surface that is not made of separate pieces (a closed surface has no boundary
-/// point to compare; an open one compares only its boundary points).
+/// edges of different pieces that share their exact position merged into the first of them,
+/// the merged copies removed and the triangles put in the order of their global cell ids when
+/// they carry them (as the gather of pieces does); null when nothing is welded.
+///
+/// Pieces are what appending leaves: runs of cells that use runs of points of their own (a cut
+/// after a cell where every point used so far comes before every point used after it). A
+/// surface stored as one piece is never changed, even where its boundary points coincide (a
+/// mesh cut along a seam, its points doubled for texture coordinates, keeps its seam); a closed
+/// surface has no boundary point to compare, an open one compares only its boundary points.
 vtkSmartPointer<vtkPolyData> WeldPieceSeams(vtkPolyData* triangles, const TriangleMesh& mesh);
 
 } // namespace boolsurf

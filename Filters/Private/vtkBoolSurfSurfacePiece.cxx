@@ -158,7 +158,10 @@ bool vtkBoolSurfSurfacePiece::Build(vtkMultiProcessController* controller,
       for (int v : { mesh.GetTriangle(t)[k], mesh.GetTriangle(t)[(k + 1) % 3] })
       {
         const boolsurf::Vec3& p = mesh.GetPosition(v);
-        border.emplace(Position{ p[0], p[1], p[2] }, v);
+        if (boolsurf::IsFinite(p)) // NaN does not order, and matches no other rank's point
+        {
+          border.emplace(Position{ p[0], p[1], p[2] }, v);
+        }
       }
     }
   }
