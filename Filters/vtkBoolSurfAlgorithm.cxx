@@ -10,6 +10,7 @@
 #include "vtkBoolSurfRankGather.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfSurfaceCache.h"
+#include "vtkBoolSurfSurfacePiece.h"
 #include "vtkBoolSurfTracedCurves.h"
 
 #include <vtkAbstractArray.h>
@@ -18,6 +19,7 @@
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -60,6 +62,14 @@ vtkBoolSurfAlgorithm::~vtkBoolSurfAlgorithm() = default;
 
 //------------------------------------------------------------------------------
 void vtkBoolSurfAlgorithm::RecordFailure(const std::string&, const std::vector<vtkPolyData*>&) {}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfAlgorithm::ExecutePiece(vtkPolyData*,
+  const std::vector<vtkPolyData*>&,
+  std::string&)
+{
+  return false;
+}
 
 //------------------------------------------------------------------------------
 boolsurf::vtkSurfaceCache& vtkBoolSurfAlgorithm::GetSurfaceCache()
@@ -214,9 +224,19 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
+  const int ports = this->GetNumberOfInputPorts();
+  // A surface split across ranks stays where it is for the filters that work on pieces: every
+  // rank decides the same way (one all-reduce), then runs the filter on its piece.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  vtkPolyData* local = ports > 0 && inputVector[0]->GetNumberOfInformationObjects() > 0
+    ? vtkPolyData::GetData(inputVector[0], 0)
+    : nullptr;
+  if (this->ExecutesOnPieces() && vtkBoolSurfSurfacePiece::IsDistributed(controller, local))
+  {
+    return this->RunOnPiece(local, outputVector);
+  }
   // Every rank takes part in the gather first, before anything that may fail or return early
   // (see vtkBoolSurfRankGather); only the computing rank runs the filter.
-  const int ports = this->GetNumberOfInputPorts();
   vtkBoolSurfRankGather gather(this, inputVector, ports, this->SurfacePorts);
   std::vector<vtkPolyData*> inputs(static_cast<std::size_t>(ports));
   for (int p = 0; p < ports; ++p)
@@ -268,6 +288,32 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
   for (std::size_t p = 0; p < outputs.size(); ++p)
   {
     this->ArrayCounts[p] = boolsurf::CountArrays(outputs[p]);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfAlgorithm::RunOnPiece(vtkPolyData* local, vtkInformationVector* outputVector)
+{
+  std::vector<vtkPolyData*> outputs(static_cast<std::size_t>(this->GetNumberOfOutputPorts()));
+  for (std::size_t p = 0; p < outputs.size(); ++p)
+  {
+    outputs[p] = vtkPolyData::GetData(outputVector, static_cast<int>(p));
+    boolsurf::EmptyPolyData(outputs[p]);
+  }
+  std::string error;
+  if (!this->ExecutePiece(local, outputs, error))
+  {
+    for (vtkPolyData* output : outputs)
+    {
+      output->Initialize();
+    }
+    this->RecordFailure(error, outputs);
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< error);
+    }
+    return vtkBoolSurfErrorReported;
   }
   return 1;
 }

@@ -76,6 +76,16 @@ protected:
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) = 0;
 
+  /// A filter that works on each rank's piece of a surface distributed across MPI ranks
+  /// (port 0; see vtkBoolSurfSurfacePiece) returns true: when two or more ranks hold triangles
+  /// of it, ExecutePiece() runs on every rank instead of gathering the inputs to the first.
+  virtual bool ExecutesOnPieces() const { return false; }
+  /// The work of such a filter on this rank's piece `local` (possibly empty): called on every
+  /// rank, which must all take part in the same collective calls before anything can fail.
+  virtual bool ExecutePiece(vtkPolyData* local,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error);
+
   /// Called after a failed Execute(), with the outputs emptied: a filter may record the failure
   /// in them (Trace Surface Curves lists its problems in field data `TraceErrors`).
   virtual void RecordFailure(const std::string& error, const std::vector<vtkPolyData*>& outputs);
@@ -126,6 +136,9 @@ protected:
     vtkInformationVector* outputVector) final;
 
 private:
+  /// RequestData for a surface distributed across ranks: ExecutePiece() on every rank.
+  int RunOnPiece(vtkPolyData* local, vtkInformationVector* outputVector);
+
   std::vector<int> SurfacePorts{ 0 };
   std::vector<int> OptionalPorts;
   std::unique_ptr<boolsurf::vtkSurfaceCache> Surface;

@@ -3,7 +3,9 @@
 #include "vtkBoolSurfArrayNames.h"
 
 #include "vtkBoolSurfArrayView.h"
+#include "vtkBoolSurfDistributedCheck.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
+#include "vtkBoolSurfSurfacePiece.h"
 
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -11,6 +13,7 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
@@ -37,61 +40,109 @@ bool vtkBoolSurfCheckSurface::Execute(const std::vector<vtkPolyData*>& inputs,
   const std::vector<vtkPolyData*>& outputs,
   std::string& vtkNotUsed(error))
 {
-  vtkPolyData* input = inputs[0];
-  vtkPolyData* output = outputs[0];
-
   boolsurf::SurfaceCheckOptions options;
   options.DegenerateTolerance = this->DegenerateTolerance;
   boolsurf::vtkSurfaceInput surface;
-  boolsurf::ConvertSurface(input, surface, options);
+  boolsurf::ConvertSurface(inputs[0], surface, options);
   this->UpdateProgress(0.7);
 
-  output->ShallowCopy(surface.Triangles);
   const boolsurf::TriangleMesh& mesh = *surface.Mesh;
   const boolsurf::MeshTopology& topo = *surface.Topology;
-
-  auto componentId = NamedIntArray(boolsurf::names::ComponentId, mesh.GetNumberOfTriangles(), -1);
+  boolsurf::SurfaceCheckOutput check;
+  check.ComponentId.resize(mesh.GetNumberOfTriangles());
   for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
   {
-    componentId->SetValue(t, topo.TriangleComponent[t]);
+    check.ComponentId[t] = topo.TriangleComponent[t];
+  }
+  check.BoundaryLoopId.resize(mesh.GetNumberOfVertices());
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    check.BoundaryLoopId[v] = topo.GetVertexBoundaryLoop(v);
+  }
+  check.Components = topo.Components;
+  check.IsManifold = surface.Check.IsManifold;
+  for (const boolsurf::BoundaryLoop& loop : topo.BoundaryLoops)
+  {
+    check.BoundaryLoopLengths.push_back(loop.Length);
+  }
+  for (const std::string& w : surface.Warnings)
+  {
+    check.Problems.push_back("Warning Conversion: " + w);
+  }
+  for (const boolsurf::SurfaceProblem& p : surface.Check.Problems)
+  {
+    check.Problems.push_back(
+      (p.Level == boolsurf::Severity::Error ? "Error " : "Warning ") + p.Kind + ": " + p.Message);
+  }
+  this->WriteOutput(surface.Triangles, check, outputs[0]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfCheckSurface::ExecutePiece(vtkPolyData* local,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
+{
+  // Every rank builds its piece and checks it; the collective calls inside are the same on
+  // every rank, and a failure (overlapping pieces) is known on every rank.
+  vtkBoolSurfSurfacePiece piece;
+  std::vector<std::string> warnings;
+  if (!piece.Build(vtkMultiProcessController::GetGlobalController(), local, error, warnings))
+  {
+    return false;
+  }
+  this->ReportWarnings(warnings);
+  boolsurf::SurfaceCheckOutput check;
+  boolsurf::CheckDistributedSurface(piece, check);
+  this->WriteOutput(piece.GetSurface().Triangles, check, outputs[0]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfCheckSurface::WriteOutput(vtkPolyData* triangles,
+  const boolsurf::SurfaceCheckOutput& check,
+  vtkPolyData* output)
+{
+  output->ShallowCopy(triangles);
+  const vtkIdType nt = static_cast<vtkIdType>(check.ComponentId.size());
+  auto componentId = NamedIntArray(boolsurf::names::ComponentId, nt, -1);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    componentId->SetValue(t, check.ComponentId[t]);
   }
   output->GetCellData()->AddArray(componentId);
 
-  auto loopId = NamedIntArray(boolsurf::names::BoundaryLoopId, mesh.GetNumberOfVertices(), -1);
-  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  const vtkIdType nv = static_cast<vtkIdType>(check.BoundaryLoopId.size());
+  auto loopId = NamedIntArray(boolsurf::names::BoundaryLoopId, nv, -1);
+  for (vtkIdType v = 0; v < nv; ++v)
   {
-    loopId->SetValue(v, topo.GetVertexBoundaryLoop(v));
+    loopId->SetValue(v, check.BoundaryLoopId[v]);
   }
   output->GetPointData()->AddArray(loopId);
 
-  const int nc = topo.GetNumberOfComponents();
+  const int nc = static_cast<int>(check.Components.size());
   auto components = NamedIntArray(boolsurf::names::Components, 1, nc);
   auto genus = NamedIntArray(boolsurf::names::Genus, nc, 0);
   auto loops = NamedIntArray(boolsurf::names::BoundaryLoops, nc, 0);
   auto euler = NamedIntArray(boolsurf::names::EulerCharacteristic, nc, 0);
   for (int c = 0; c < nc; ++c)
   {
-    genus->SetValue(c, topo.Components[c].Genus);
-    loops->SetValue(c, topo.Components[c].BoundaryLoops);
-    euler->SetValue(c, topo.Components[c].EulerCharacteristic);
+    genus->SetValue(c, check.Components[c].Genus);
+    loops->SetValue(c, check.Components[c].BoundaryLoops);
+    euler->SetValue(c, check.Components[c].EulerCharacteristic);
   }
-  auto manifold = NamedIntArray(boolsurf::names::IsManifold, 1, surface.Check.IsManifold ? 1 : 0);
+  auto manifold = NamedIntArray(boolsurf::names::IsManifold, 1, check.IsManifold ? 1 : 0);
   vtkNew<vtkDoubleArray> loopLength;
   loopLength->SetName(boolsurf::names::BoundaryLoopLength);
-  for (const boolsurf::BoundaryLoop& loop : topo.BoundaryLoops)
+  for (double length : check.BoundaryLoopLengths)
   {
-    loopLength->InsertNextValue(loop.Length);
+    loopLength->InsertNextValue(length);
   }
   vtkNew<vtkStringArray> problems;
   problems->SetName(boolsurf::names::Problems);
-  for (const std::string& w : surface.Warnings)
+  for (const std::string& line : check.Problems)
   {
-    problems->InsertNextValue("Warning Conversion: " + w);
-  }
-  for (const boolsurf::SurfaceProblem& p : surface.Check.Problems)
-  {
-    problems->InsertNextValue(
-      (p.Level == boolsurf::Severity::Error ? "Error " : "Warning ") + p.Kind + ": " + p.Message);
+    problems->InsertNextValue(line);
   }
 
   vtkFieldData* fd = output->GetFieldData();
@@ -113,7 +164,6 @@ bool vtkBoolSurfCheckSurface::Execute(const std::vector<vtkPolyData*>& inputs,
       vtkWarningMacro(<< problems->GetValue(i));
     }
   }
-  return true;
 }
 
 //------------------------------------------------------------------------------

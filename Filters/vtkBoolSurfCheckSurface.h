@@ -20,6 +20,12 @@
  * non-orientable components, unreferenced points. Non-triangle polygons and strips are
  * triangulated and vertex/line cells ignored, each with a warning naming how many.
  *
+ * Under MPI, a surface split across ranks (RedistributeDataSet, D3, a parallel reader) is
+ * checked where it is: each rank outputs its own piece's triangles (ghost cells dropped)
+ * annotated with the numbers of the undistributed surface (components by their smallest global
+ * cell id, boundary loops by their first half-edge in global cell id order), and the same field
+ * data on every rank. Problems then name triangles by global cell id.
+ *
  * The filter never fails on a bad surface: it reports. The genus of a component is
  * (2 - boundary loops - Euler characteristic) / 2, or -1 when it is not orientable; a
  * non-manifold vertex is counted once per fan of triangles around it.
@@ -31,6 +37,11 @@
 
 #include "BoolSurfFiltersModule.h" // for export macro
 #include "vtkBoolSurfAlgorithm.h"
+
+namespace boolsurf
+{
+struct SurfaceCheckOutput;
+}
 
 class BOOLSURFFILTERS_EXPORT vtkBoolSurfCheckSurface : public vtkBoolSurfAlgorithm
 {
@@ -65,11 +76,22 @@ protected:
   bool Execute(const std::vector<vtkPolyData*>& inputs,
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
+  /// Under MPI with the surface split across ranks: each rank checks its own piece and the
+  /// topology is combined across the shared border (vtkBoolSurfDistributedCheck.h).
+  bool ExecutesOnPieces() const override { return true; }
+  bool ExecutePiece(vtkPolyData* local,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   double DegenerateTolerance = 1e-12;
   bool WarnOnProblems = true;
 
 private:
+  /// The triangles annotated with the check's arrays, into `output`.
+  void WriteOutput(vtkPolyData* triangles,
+    const boolsurf::SurfaceCheckOutput& check,
+    vtkPolyData* output);
+
   vtkBoolSurfCheckSurface(const vtkBoolSurfCheckSurface&) = delete;
   void operator=(const vtkBoolSurfCheckSurface&) = delete;
 };

@@ -1,5 +1,7 @@
 #include "vtkBoolSurfSurfaceAdapter.h"
 
+#include "vtkBoolSurfPieceSeams.h"
+
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
@@ -108,10 +110,8 @@ vtkIdType CountNonTriangles(vtkCellArray* polys)
   return count;
 }
 
-} // namespace
-
-//------------------------------------------------------------------------------
-void ConvertSurface(vtkPolyData* input, vtkSurfaceInput& out, const SurfaceCheckOptions& options)
+// ConvertSurface without the pieces' seams: the input as it is.
+void ConvertOnce(vtkPolyData* input, vtkSurfaceInput& out, const SurfaceCheckOptions& options)
 {
   out = vtkSurfaceInput();
   out.Triangles = vtkSmartPointer<vtkPolyData>::New();
@@ -247,6 +247,38 @@ void ConvertSurface(vtkPolyData* input, vtkSurfaceInput& out, const SurfaceCheck
   }
   out.Mesh = mesh;
   out.Topology = topology;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+void ConvertSurface(vtkPolyData* input, vtkSurfaceInput& out, const SurfaceCheckOptions& options)
+{
+  // The appended pieces of a partitioned file (vtkBoolSurfPieceSeams.h): their ghost cells
+  // dropped, then their shared points welded and the triangles converted again.
+  vtkSmartPointer<vtkPolyData> owned = WithoutGhostCells(input);
+  ConvertOnce(owned ? owned.GetPointer() : input, out, options);
+  if (!out.Mesh || out.Mesh->GetNumberOfTriangles() == 0)
+  {
+    return;
+  }
+  if (vtkSmartPointer<vtkPolyData> welded = WeldPieceSeams(out.Triangles, *out.Mesh))
+  {
+    // The first conversion's notes and id problems are the input's; the welded triangles have
+    // none of their own.
+    std::vector<std::string> warnings = std::move(out.Warnings);
+    std::vector<SurfaceProblem> inputProblems;
+    for (const SurfaceProblem& p : out.Check.Problems)
+    {
+      if (p.Kind == "InvalidVertexIndex" || p.Kind == "TooManyPoints")
+      {
+        inputProblems.push_back(p);
+      }
+    }
+    ConvertOnce(welded, out, options);
+    out.Warnings = std::move(warnings);
+    out.Check.Problems.insert(
+      out.Check.Problems.begin(), inputProblems.begin(), inputProblems.end());
+  }
 }
 
 } // namespace boolsurf
