@@ -9,7 +9,8 @@ XML/Shared/*.xml; a filter's XML takes it where its panel wants it with
     <SharedProperty name="GeodesicMethod"/>
 
 Attributes given there beside `name` are added to the shared declaration's opening tag (or
-replace the same attribute), and a nested <Documentation> replaces the shared one:
+replace the same attribute), a nested <Documentation> replaces the shared one, and nested
+<Hints> replace the shared ones or, when it has none, are added as its last element:
 
     <SharedProperty name="Resolution" panel_visibility="advanced">
       <Documentation>As in Trace Surface Curves (Bezier subdivision levels).</Documentation>
@@ -32,6 +33,7 @@ DECLARATION = re.compile(
     r"^([ \t]*)<(\w+Property)\b[^>]*?\bname=\"([^\"]+)\"[^>]*?(?:/>|>.*?</\2>)", re.S | re.M)
 ATTRIBUTE = re.compile(r"([\w:]+)=\"([^\"]*)\"")
 DOCUMENTATION = re.compile(r"<Documentation\b.*?</Documentation>", re.S)
+HINTS = re.compile(r"<Hints\b.*?</Hints>", re.S)
 
 
 def fail(message):
@@ -69,6 +71,19 @@ def with_attribute(declaration, key, value):
     return tag + declaration[end:]
 
 
+def with_hints(declaration, hints, indent):
+    """The declaration with its <Hints> element replaced by `hints`, or `hints` added before
+    its closing tag (one indentation step inside it) when it has none."""
+    if HINTS.search(declaration):
+        return HINTS.sub(lambda _: hints, declaration, count=1)
+    closing = declaration.rindex("</")
+    if declaration[:closing].endswith("/"):
+        fail("a property without elements cannot take hints")
+    line_start = declaration.rindex("\n", 0, closing) + 1
+    return (declaration[:line_start] + indent + "  " + hints + "\n" +
+            declaration[line_start:])
+
+
 def expand(text, declarations, path):
     def replace(match):
         indent, attributes, body = match.group(1), match.group(2), match.group(3) or ""
@@ -87,6 +102,9 @@ def expand(text, declarations, path):
                 fail("%s: %s has no shared documentation to replace" % (path, name))
             declaration = DOCUMENTATION.sub(lambda _: documentation.group(0), declaration,
                                             count=1)
+        hints = HINTS.search(body)
+        if hints:
+            declaration = with_hints(declaration, hints.group(0), indent)
         return declaration
 
     return MARKER.sub(replace, text)
