@@ -7,8 +7,12 @@
 // cell graph equal to the labeling stage's on the whole arrangement. Surfaces: a sphere, a
 // torus and the genus-2 eight.ply, with random closed geodesic polygons crossing the ranks'
 // boundaries many times; splits in slabs and in random regions, one with an empty rank.
-// Prints, per rank, the bytes it sent and received per message.
+// Each rank's piece arrives as VTK data (owned triangles with cell and point GlobalIds) and
+// gets its ring of ghosts from vtkGhostCellsGenerator (vtkBoolSurfRingedPiece.h), checked
+// against the ring Core's tests build. Prints, per rank, the bytes it sent and received per
+// message.
 #include "vtkBoolSurfPieceArrangement.h"
+#include "vtkBoolSurfRingedPiece.h"
 
 #include "Arrangement/Arrangement.h"
 #include "Distributed/MergedArrangement.h"
@@ -20,9 +24,16 @@
 #include "Support/PieceSplits.h"
 #include "Support/SourceTree.h"
 
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCommunicator.h>
+#include <vtkIdTypeArray.h>
 #include <vtkMPIController.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 
 #include <algorithm>
 #include <cmath>
@@ -78,6 +89,48 @@ double RefinedArea(const TriangleMesh& mesh, const Arrangement& arr, int r)
   const Triangle c = arr.GetTriangle(mesh, r);
   const Vec3 a = arr.GetPosition(mesh, c[0]);
   return 0.5 * Length(Cross(arr.GetPosition(mesh, c[1]) - a, arr.GetPosition(mesh, c[2]) - a));
+}
+
+/// This rank's owned triangles as a parallel reader or RedistributeDataSet would give them:
+/// their own points, cell and point global ids, no ghosts.
+vtkSmartPointer<vtkPolyData> OwnedTriangles(const TriangleMesh& mesh,
+  const std::vector<int>& owner,
+  int rank)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkIdTypeArray> pointIds, cellIds;
+  pointIds->SetName("GlobalIds");
+  cellIds->SetName("GlobalIds");
+  vtkNew<vtkCellArray> polys;
+  std::vector<vtkIdType> localOf(mesh.GetNumberOfVertices(), -1);
+  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  {
+    if (owner[t] != rank)
+    {
+      continue;
+    }
+    vtkIdType corners[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const int v = mesh.GetTriangle(t)[k];
+      if (localOf[v] < 0)
+      {
+        const Vec3 x = mesh.GetPosition(v);
+        localOf[v] = points->InsertNextPoint(x.x, x.y, x.z);
+        pointIds->InsertNextValue(v);
+      }
+      corners[k] = localOf[v];
+    }
+    polys->InsertNextCell(3, corners);
+    cellIds->InsertNextValue(t);
+  }
+  pd->SetPoints(points);
+  pd->SetPolys(polys);
+  pd->GetPointData()->SetGlobalIds(pointIds);
+  pd->GetCellData()->SetGlobalIds(cellIds);
+  return pd;
 }
 
 /// Ranks owning the piece's ghosts, ascending.
@@ -197,10 +250,21 @@ void RunSplit(vtkMultiProcessController* controller,
     Fail(rank, what + ": whole surface: " + error);
     return;
   }
-  PieceMesh piece;
-  if (!BuildPieceMesh(testing::MakePiece(mesh, owner, rank), piece, error))
+  PieceInput ringed;
+  if (!BuildRingedPiece(controller, OwnedTriangles(mesh, owner, rank), ringed, error))
   {
     Fail(rank, what + ": " + error);
+  }
+  PieceMesh piece, expected;
+  if (!BuildPieceMesh(ringed, piece, error) ||
+    !BuildPieceMesh(testing::MakePiece(mesh, owner, rank), expected, error))
+  {
+    Fail(rank, what + ": " + error);
+  }
+  if (piece.GlobalTriangle != expected.GlobalTriangle ||
+    piece.GlobalVertex != expected.GlobalVertex || piece.Owned != expected.Owned)
+  {
+    Fail(rank, what + ": the ghost ring is not every triangle sharing a point with the piece");
   }
   const GlobalEdgeVertices edgeVertices = [&](int e) { return mesh.GetEdgeVertices(e); };
   PieceCurves local;
