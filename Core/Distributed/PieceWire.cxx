@@ -1,6 +1,7 @@
 #include "Distributed/PieceWire.h"
 
 #include <cstring>
+#include <unordered_map>
 
 namespace boolsurf
 {
@@ -91,6 +92,99 @@ private:
 };
 
 } // namespace
+
+//------------------------------------------------------------------------------
+void PackTracedCurves(const std::vector<TracedCurve>& curves,
+  const TriangleMesh& mesh,
+  const std::vector<int>& vertexGlobalId,
+  const std::vector<int>& triangleGlobalId,
+  WireBuffer& out)
+{
+  auto vertex = [&](int v) { return vertexGlobalId.empty() ? v : vertexGlobalId[v]; };
+  out.clear();
+  std::unordered_map<int, int> edgeIndex; // mesh edge -> index in the message's edge table
+  WireBuffer edges;
+  out.push_back(static_cast<long long>(curves.size()));
+  for (const TracedCurve& c : curves)
+  {
+    out.insert(out.end(),
+      { c.Closed ? 1 : 0, c.ShapeId, c.CurveId, static_cast<long long>(c.Points.size()) });
+    for (const CanonicalPoint& p : c.Points)
+    {
+      long long id = p.Id;
+      if (p.Location == PointLocation::Vertex)
+      {
+        id = vertex(p.Id);
+      }
+      else if (p.Location == PointLocation::Edge)
+      {
+        const auto found = edgeIndex.emplace(p.Id, static_cast<int>(edgeIndex.size()));
+        if (found.second)
+        {
+          const std::array<int, 2> ends = mesh.GetEdgeVertices(p.Id);
+          edges.push_back(vertex(ends[0]));
+          edges.push_back(vertex(ends[1]));
+        }
+        id = found.first->second;
+      }
+      else if (!triangleGlobalId.empty())
+      {
+        id = triangleGlobalId[p.Id];
+      }
+      out.insert(out.end(),
+        { static_cast<long long>(p.Location), id, BitsOf(p.U), BitsOf(p.V), BitsOf(p.T) });
+    }
+  }
+  out.push_back(static_cast<long long>(edges.size() / 2));
+  out.insert(out.end(), edges.begin(), edges.end());
+}
+
+//------------------------------------------------------------------------------
+bool UnpackTracedCurves(const WireBuffer& in,
+  std::vector<TracedCurve>& curves,
+  std::vector<std::array<int, 2>>& edgeVertices,
+  std::string& error)
+{
+  WireReader r(in);
+  curves.resize(r.NextCount(4));
+  for (TracedCurve& c : curves)
+  {
+    c.Closed = r.Next() != 0;
+    c.ShapeId = r.NextInt();
+    c.CurveId = r.NextInt();
+    c.Points.resize(r.NextCount(5));
+    for (CanonicalPoint& p : c.Points)
+    {
+      p.Location = static_cast<PointLocation>(r.NextInt());
+      p.Id = r.NextInt();
+      p.U = DoubleOf(r.Next());
+      p.V = DoubleOf(r.Next());
+      p.T = DoubleOf(r.Next());
+    }
+  }
+  edgeVertices.resize(r.NextCount(2));
+  for (std::array<int, 2>& e : edgeVertices)
+  {
+    e = { r.NextInt(), r.NextInt() };
+  }
+  if (!r.Done("traced curves", error))
+  {
+    return false;
+  }
+  for (const TracedCurve& c : curves)
+  {
+    for (const CanonicalPoint& p : c.Points)
+    {
+      if (p.Location == PointLocation::Edge &&
+        (p.Id < 0 || p.Id >= static_cast<int>(edgeVertices.size())))
+      {
+        error = "malformed traced curves message (edge " + std::to_string(p.Id) + ")";
+        return false;
+      }
+    }
+  }
+  return true;
+}
 
 //------------------------------------------------------------------------------
 void PackBoundaryRecords(const PieceSummary& summary, WireBuffer& out)

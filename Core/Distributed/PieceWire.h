@@ -3,7 +3,9 @@
 // message-passing layer sends as it is (vtkMultiProcessController's vtkTypeInt64 arrays), with
 // no padding, no pointer and no byte order question between processes of one machine type.
 //
-// Three messages, in the order a distributed run sends them:
+// Four messages, in the order a distributed run sends them:
+//  0. the traced curves, from the process that traced them to every piece: points on global
+//     ids, an edge point naming its edge by its global vertices (PieceCurves.h needs them);
 //  1. a piece's boundary records (PieceSummary's Boundary and BoundarySteps), to each neighbour
 //     (the owners of its ghosts), which matches them with its own (JoinPieceBoundaries);
 //  2. what a piece sends to the merge: its local cells and crossings and the joins and crossings
@@ -23,6 +25,10 @@
 #include "Distributed/MergedArrangement.h"
 #include "Distributed/PieceSummary.h"
 
+#include "Geodesic/TracedCurve.h"
+#include "Mesh/TriangleMesh.h"
+
+#include <array>
 #include <string>
 #include <vector>
 
@@ -30,6 +36,23 @@ namespace boolsurf
 {
 
 using WireBuffer = std::vector<long long>;
+
+/// Message 0: `curves`, traced on `mesh`, with their points named by the undistributed
+/// surface's ids: vertexGlobalId[v] and triangleGlobalId[t] for the mesh's vertex v and
+/// triangle t (empty: the mesh's own ids), an edge by its two global vertices in the direction
+/// its parameter runs. 6 words per point, 2 per distinct edge.
+void PackTracedCurves(const std::vector<TracedCurve>& curves,
+  const TriangleMesh& mesh,
+  const std::vector<int>& vertexGlobalId,
+  const std::vector<int>& triangleGlobalId,
+  WireBuffer& out);
+/// The curves on global ids; an edge point's Id indexes `edgeVertices` (its edge's global
+/// vertices, from the end where its parameter is 0): what RestrictCurvesToPiece's
+/// GlobalEdgeVertices gives.
+bool UnpackTracedCurves(const WireBuffer& in,
+  std::vector<TracedCurve>& curves,
+  std::vector<std::array<int, 2>>& edgeVertices,
+  std::string& error);
 
 /// Message 1: `summary`'s Boundary and BoundarySteps.
 void PackBoundaryRecords(const PieceSummary& summary, WireBuffer& out);

@@ -1,21 +1,22 @@
 // The distributed arrangement on real MPI ranks (Filters/Private/vtkBoolSurfPieceArrangement):
 // run as `mpiexec -np P BoolSurfMpiTests`. Every rank builds the same surface and curves,
 // keeps its piece (owned triangles plus the ring of ghosts, as vtkGhostCellsGenerator's one
-// layer gives it), arranges it, talks to its neighbours and rank 0 only, and must end with the
-// whole surface's arrangement: for every owned triangle the same refined triangles in the cells
-// of the same numbers, the same cell areas, and labels and consistency verdicts of the merged
-// cell graph equal to the labeling stage's on the whole arrangement. Surfaces: a sphere, a
-// torus and the genus-2 eight.ply, with random closed geodesic polygons crossing the ranks'
-// boundaries many times; splits in slabs and in random regions, one with an empty rank.
-// Each rank's piece arrives as VTK data (owned triangles with cell and point GlobalIds) and
-// gets its ring of ghosts from vtkGhostCellsGenerator (vtkBoolSurfRingedPiece.h), checked
-// against the ring Core's tests build. Prints, per rank, the bytes it sent and received per
-// message.
+// layer gives it) and the curves rank 0 broadcasts (Distributed/PieceWire.h), arranges it, talks to
+// its neighbours and rank 0 only, and must end with the whole surface's arrangement: for every
+// owned triangle the same refined triangles in the cells of the same numbers, the same cell areas,
+// and labels and consistency verdicts of the merged cell graph equal to the labeling stage's on the
+// whole arrangement. Surfaces: a sphere, a torus and the genus-2 eight.ply, with random closed
+// geodesic polygons crossing the ranks' boundaries many times; splits in slabs and in random
+// regions, one with an empty rank. Each rank's piece arrives as VTK data (owned triangles with cell
+// and point GlobalIds) and gets its ring of ghosts from vtkGhostCellsGenerator
+// (vtkBoolSurfRingedPiece.h), checked against the ring Core's tests build. Prints, per rank, the
+// bytes it sent and received per message.
 #include "vtkBoolSurfPieceArrangement.h"
 #include "vtkBoolSurfRingedPiece.h"
 
 #include "Arrangement/Arrangement.h"
 #include "Distributed/MergedArrangement.h"
+#include "Distributed/PieceWire.h"
 #include "Geodesic/CurveTracer.h"
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Mesh/MeshTopology.h"
@@ -36,6 +37,7 @@
 #include <vtkSmartPointer.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -266,9 +268,26 @@ void RunSplit(vtkMultiProcessController* controller,
   {
     Fail(rank, what + ": the ghost ring is not every triangle sharing a point with the piece");
   }
-  const GlobalEdgeVertices edgeVertices = [&](int e) { return mesh.GetEdgeVertices(e); };
+  // The curves as rank 0 (the tracer) broadcasts them: on global ids, edges by their vertices.
+  WireBuffer message;
+  if (rank == 0)
+  {
+    PackTracedCurves(curves, mesh, {}, {}, message);
+  }
+  long long length = static_cast<long long>(message.size());
+  controller->Broadcast(&length, 1, 0);
+  message.resize(static_cast<std::size_t>(length));
+  controller->Broadcast(message.data(), length, 0);
+  std::vector<TracedCurve> received;
+  std::vector<std::array<int, 2>> edgeTable;
+  if (!UnpackTracedCurves(message, received, edgeTable, error))
+  {
+    Fail(rank, what + ": " + error);
+    return;
+  }
+  const GlobalEdgeVertices edgeVertices = [&](int e) { return edgeTable[e]; };
   PieceCurves local;
-  RestrictCurvesToPiece(piece, curves, edgeVertices, local);
+  RestrictCurvesToPiece(piece, received, edgeVertices, local);
   vtkBoolSurfPieceArrangement run;
   if (!run.Run(
         controller, piece, local, NeighboursOf(piece, owner, rank), ArrangementOptions(), error))
@@ -278,12 +297,16 @@ void RunSplit(vtkMultiProcessController* controller,
   }
   CompareWithWhole(mesh, curves, whole, piece, run, rank, what);
   const vtkBoolSurfPieceArrangement::Traffic& bytes = run.GetTraffic();
-  std::printf("%s, rank %d of %d: %d owned triangles; bytes sent/received: boundary records "
+  std::printf("%s, rank %d of %d: %d owned triangles; bytes sent/received: curves %zu/%zu, "
+              "boundary records "
               "%zu/%zu, to the merge %zu/%zu, merged cells %zu/%zu\n",
     what.c_str(),
     rank,
     controller->GetNumberOfProcesses(),
     piece.NumberOfOwnedTriangles,
+    rank == 0 ? (controller->GetNumberOfProcesses() - 1) * (message.size() + 1) * sizeof(long long)
+              : std::size_t(0),
+    rank == 0 ? std::size_t(0) : (message.size() + 1) * sizeof(long long),
     bytes.BoundarySent,
     bytes.BoundaryReceived,
     bytes.MergeSent,

@@ -1,5 +1,6 @@
 // The distributed arrangement's messages (Core/Distributed/PieceWire.h): pieces that talk only
-// through packed buffers -- boundary records to their neighbours, their cells, crossings and
+// through packed buffers -- the traced curves from the tracer (restricted to each piece as the
+// curves themselves are), boundary records to their neighbours, their cells, crossings and
 // joins to the merge, the merged cells back -- end with what merging every summary in one place
 // gives (MergePieceSummaries), and a short or corrupt buffer is an error, not a crash. Prints
 // the words each piece sends per message, as a run on processes would send them.
@@ -17,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 
 using namespace boolsurf;
@@ -51,6 +53,14 @@ void ExpectWireRunEqualsMerge(const TriangleMesh& mesh,
   int pieces)
 {
   const GlobalEdgeVertices edgeVertices = [&](int e) { return mesh.GetEdgeVertices(e); };
+  // The curves as the pieces receive them: edges named by their global vertices.
+  WireBuffer curvesMessage;
+  PackTracedCurves(curves, mesh, {}, {}, curvesMessage);
+  std::vector<TracedCurve> received;
+  std::vector<std::array<int, 2>> edgeTable;
+  std::string curvesError;
+  ASSERT_TRUE(UnpackTracedCurves(curvesMessage, received, edgeTable, curvesError)) << curvesError;
+  const GlobalEdgeVertices receivedEdges = [&](int e) { return edgeTable[e]; };
   std::vector<PieceMesh> meshes(pieces);
   std::vector<PieceSummary> summaries(pieces);
   std::vector<WireBuffer> boundary(pieces);
@@ -58,8 +68,19 @@ void ExpectWireRunEqualsMerge(const TriangleMesh& mesh,
   {
     std::string error;
     ASSERT_TRUE(BuildPieceMesh(MakePiece(mesh, owner, p), meshes[p], error)) << error;
-    PieceCurves local;
+    PieceCurves local, fromMessage;
     RestrictCurvesToPiece(meshes[p], curves, edgeVertices, local);
+    RestrictCurvesToPiece(meshes[p], received, receivedEdges, fromMessage);
+    ASSERT_EQ(fromMessage.Curves.size(), local.Curves.size());
+    for (std::size_t c = 0; c < local.Curves.size(); ++c)
+    {
+      EXPECT_TRUE(fromMessage.Curves[c].Points == local.Curves[c].Points) << "curve " << c;
+      EXPECT_EQ(fromMessage.Curves[c].Closed, local.Curves[c].Closed);
+      EXPECT_EQ(fromMessage.Curves[c].ShapeId, local.Curves[c].ShapeId);
+    }
+    EXPECT_EQ(fromMessage.SourceCurve, local.SourceCurve);
+    EXPECT_EQ(fromMessage.FirstPoint, local.FirstPoint);
+    EXPECT_EQ(fromMessage.CutFromClosed, local.CutFromClosed);
     Arrangement arr;
     ASSERT_TRUE(ArrangePiece(meshes[p], local, ArrangementOptions(), arr, summaries[p], error))
       << error;
@@ -200,4 +221,9 @@ TEST(PieceWire, ShortOrCorruptMessagesAreErrors)
   MergedArrangement merged;
   EXPECT_FALSE(UnpackMergedForPiece({ 3, -1 }, merged, error));
   EXPECT_NE(error.find("merged arrangement"), std::string::npos) << error;
+  std::vector<TracedCurve> curves;
+  std::vector<std::array<int, 2>> edges;
+  // One curve of one edge point naming edge 5 of an empty edge table.
+  EXPECT_FALSE(UnpackTracedCurves({ 1, 1, 0, 0, 1, 1, 5, 0, 0, 0, 0 }, curves, edges, error));
+  EXPECT_NE(error.find("edge 5"), std::string::npos) << error;
 }
