@@ -201,7 +201,8 @@ bool vtkBoolSurfSurfacePiece::Build(vtkMultiProcessController* controller,
       }
     }
   }
-  const std::vector<std::vector<long long>> received = this->ExchangeWith(partners, send);
+  const std::vector<std::vector<long long>> received =
+    ExchangeWith(this->Controller, partners, send);
   this->Neighbours.clear();
   for (size_t i = 0; i < partners.size(); ++i)
   {
@@ -270,15 +271,15 @@ std::vector<std::vector<long long>> vtkBoolSurfSurfacePiece::Exchange(
   {
     partners.push_back(n.Rank);
   }
-  return this->ExchangeWith(partners, send);
+  return ExchangeWith(this->Controller, partners, send);
 }
 
 //------------------------------------------------------------------------------
 std::vector<std::vector<long long>> vtkBoolSurfSurfacePiece::ExchangeWith(
+  vtkMultiProcessController* controller,
   const std::vector<int>& partners,
-  const std::vector<std::vector<long long>>& send) const
+  const std::vector<std::vector<long long>>& send)
 {
-  vtkMultiProcessController* controller = this->Controller;
   const int rank = controller->GetLocalProcessId();
   const int ranks = controller->GetNumberOfProcesses();
   std::vector<std::vector<long long>> received(partners.size());

@@ -69,10 +69,14 @@ public:
   std::vector<std::vector<long long>> Exchange(
     const std::vector<std::vector<long long>>& send) const;
 
+  /// Collective among `partners`: sends send[i] to partners[i] and returns what each sent. The
+  /// partner lists must be symmetric (q lists p when p lists q); ranks are paired in a
+  /// round-robin schedule, the lower rank of a pair sending first.
+  static std::vector<std::vector<long long>> ExchangeWith(vtkMultiProcessController* controller,
+    const std::vector<int>& partners,
+    const std::vector<std::vector<long long>>& send);
+
 private:
-  /// Exchange with the given (symmetric) partner ranks.
-  std::vector<std::vector<long long>> ExchangeWith(const std::vector<int>& partners,
-    const std::vector<std::vector<long long>>& send) const;
   /// The error message naming overlapping global cell ids and their ranks (collective; only
   /// called when an overlap was detected, so gathering every id costs nothing in a valid run).
   std::string NameOverlaps();

@@ -1,0 +1,68 @@
+/**
+ * @class   vtkBoolSurfPieceArrangement
+ * @brief   the arrangement of curves on a surface split across MPI ranks, each rank on its piece
+ *
+ * The processes' side of Core's distributed arrangement (Core/Distributed, Docs/Parallel.md):
+ * each rank arranges its piece (its owned triangles and their ring of ghosts, with the curves
+ * restricted to it), sends its boundary records to its neighbours only and matches theirs with
+ * its own, sends its cells, crossings and joins to rank 0, which merges the cell graph and
+ * numbers the cells as the whole surface's arrangement numbers them, and gets back the global
+ * cell of each of its local cells and the cell graph. The messages are Core's
+ * (Distributed/PieceWire.h); what travels grows with the pieces' shared boundary (to the
+ * neighbours) and with the curves (to and from rank 0), never with the surface.
+ *
+ * Run() is collective: every rank calls it, with its own (possibly empty) piece, and every rank
+ * learns of a failure on any rank (one all-reduce after each step that can fail), so no rank
+ * is left waiting.
+ */
+#ifndef vtkBoolSurfPieceArrangement_h
+#define vtkBoolSurfPieceArrangement_h
+
+#include "Arrangement/Arrangement.h"
+#include "Distributed/MergedArrangement.h"
+#include "Distributed/PieceCurves.h"
+#include "Distributed/PieceMesh.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+class vtkMultiProcessController;
+
+class vtkBoolSurfPieceArrangement
+{
+public:
+  /// Bytes this rank sent and received, per message.
+  struct Traffic
+  {
+    std::size_t BoundarySent = 0, BoundaryReceived = 0; ///< boundary records, neighbours
+    std::size_t MergeSent = 0, MergeReceived = 0;       ///< cells, crossings, joins to rank 0
+    std::size_t BackSent = 0, BackReceived = 0;         ///< merged cells from rank 0
+  };
+
+  /// Collective. `neighbours`: the ranks owning this piece's ghost triangles (symmetric: the
+  /// ranks sharing points with it), ascending. False on every rank, with `error` naming the
+  /// rank and its problem, when any rank fails.
+  bool Run(vtkMultiProcessController* controller,
+    const boolsurf::PieceMesh& piece,
+    const boolsurf::PieceCurves& curves,
+    const std::vector<int>& neighbours,
+    const boolsurf::ArrangementOptions& options,
+    std::string& error);
+
+  /// The piece's own arrangement (on piece.Mesh; cells are local).
+  const boolsurf::Arrangement& GetArrangement() const { return this->Local; }
+  /// The merged arrangement as this rank has it: GlobalCellOfLocal holds this rank's row only
+  /// (GetGlobalCell), CellLowestTriangle is empty.
+  const boolsurf::MergedArrangement& GetMerged() const { return this->Merged; }
+  /// Global cell of local cell c (-1 for a cell of ghost triangles only).
+  int GetGlobalCell(int c) const { return this->Merged.GlobalCellOfLocal[0][c]; }
+  const Traffic& GetTraffic() const { return this->Bytes; }
+
+private:
+  boolsurf::Arrangement Local;
+  boolsurf::MergedArrangement Merged;
+  Traffic Bytes;
+};
+
+#endif

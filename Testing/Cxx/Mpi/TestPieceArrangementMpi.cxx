@@ -1,0 +1,377 @@
+// The distributed arrangement on real MPI ranks (Filters/Private/vtkBoolSurfPieceArrangement):
+// run as `mpiexec -np P BoolSurfMpiTests`. Every rank builds the same surface and curves,
+// keeps its piece (owned triangles plus the ring of ghosts, as vtkGhostCellsGenerator's one
+// layer gives it) and the curves rank 0 broadcasts (Distributed/PieceWire.h), arranges it, talks to
+// its neighbours and rank 0 only, and must end with the whole surface's arrangement: for every
+// owned triangle the same refined triangles in the cells of the same numbers, the same cell areas,
+// and labels and consistency verdicts of the merged cell graph equal to the labeling stage's on the
+// whole arrangement. Surfaces: a sphere, a torus and the genus-2 eight.ply, with random closed
+// geodesic polygons crossing the ranks' boundaries many times; splits in slabs and in random
+// regions, one with an empty rank. Each rank's piece arrives as VTK data (owned triangles with cell
+// and point GlobalIds) and gets its ring of ghosts from vtkGhostCellsGenerator
+// (vtkBoolSurfRingedPiece.h), checked against the ring Core's tests build. Prints, per rank, the
+// bytes it sent and received per message.
+#include "vtkBoolSurfPieceArrangement.h"
+#include "vtkBoolSurfRingedPiece.h"
+
+#include "Arrangement/Arrangement.h"
+#include "Distributed/MergedArrangement.h"
+#include "Distributed/PieceWire.h"
+#include "Geodesic/CurveTracer.h"
+#include "Labeling/ArrangementLabelingInput.h"
+#include "Mesh/MeshTopology.h"
+#include "Mesh/PlyReader.h"
+#include "Mesh/ProceduralMeshes.h"
+#include "Support/PieceSplits.h"
+#include "Support/SourceTree.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCommunicator.h>
+#include <vtkIdTypeArray.h>
+#include <vtkMPIController.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace boolsurf;
+
+namespace
+{
+
+int failures = 0;
+
+void Fail(int rank, const std::string& what)
+{
+  if (++failures <= 10)
+  {
+    std::printf("rank %d: FAILED %s\n", rank, what.c_str());
+  }
+}
+
+std::vector<TracedCurve> RandomGeodesicCurves(const TriangleMesh& mesh, unsigned seed, int count)
+{
+  CurveTracer tracer(mesh);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> triangle(0, mesh.GetNumberOfTriangles() - 1);
+  std::uniform_real_distribution<double> weight(0.1, 0.45);
+  std::vector<TracedCurve> curves;
+  for (int id = 0; static_cast<int>(curves.size()) < count && id < 4 * count; ++id)
+  {
+    std::vector<SurfacePoint> points(std::uniform_int_distribution<int>(3, 5)(rng));
+    for (SurfacePoint& x : points)
+    {
+      x = { triangle(rng), weight(rng), weight(rng) };
+    }
+    CurveTrace trace;
+    std::string error;
+    if (tracer.Trace(points, CurveType::GeodesicPolygon, true, trace, error, id) &&
+      trace.Curve.Points.size() >= 3)
+    {
+      trace.Curve.ShapeId = static_cast<int>(curves.size());
+      trace.Curve.CurveId = static_cast<int>(curves.size());
+      curves.push_back(trace.Curve);
+    }
+  }
+  return curves;
+}
+
+double RefinedArea(const TriangleMesh& mesh, const Arrangement& arr, int r)
+{
+  const Triangle c = arr.GetTriangle(mesh, r);
+  const Vec3 a = arr.GetPosition(mesh, c[0]);
+  return 0.5 * Length(Cross(arr.GetPosition(mesh, c[1]) - a, arr.GetPosition(mesh, c[2]) - a));
+}
+
+/// This rank's owned triangles as a parallel reader or RedistributeDataSet would give them:
+/// their own points, cell and point global ids, no ghosts.
+vtkSmartPointer<vtkPolyData> OwnedTriangles(const TriangleMesh& mesh,
+  const std::vector<int>& owner,
+  int rank)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkIdTypeArray> pointIds, cellIds;
+  pointIds->SetName("GlobalIds");
+  cellIds->SetName("GlobalIds");
+  vtkNew<vtkCellArray> polys;
+  std::vector<vtkIdType> localOf(mesh.GetNumberOfVertices(), -1);
+  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  {
+    if (owner[t] != rank)
+    {
+      continue;
+    }
+    vtkIdType corners[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const int v = mesh.GetTriangle(t)[k];
+      if (localOf[v] < 0)
+      {
+        const Vec3 x = mesh.GetPosition(v);
+        localOf[v] = points->InsertNextPoint(x.x, x.y, x.z);
+        pointIds->InsertNextValue(v);
+      }
+      corners[k] = localOf[v];
+    }
+    polys->InsertNextCell(3, corners);
+    cellIds->InsertNextValue(t);
+  }
+  pd->SetPoints(points);
+  pd->SetPolys(polys);
+  pd->GetPointData()->SetGlobalIds(pointIds);
+  pd->GetCellData()->SetGlobalIds(cellIds);
+  return pd;
+}
+
+/// Ranks owning the piece's ghosts, ascending.
+std::vector<int> NeighboursOf(const PieceMesh& piece, const std::vector<int>& owner, int rank)
+{
+  std::vector<int> ids;
+  for (int g : piece.GlobalTriangle)
+  {
+    if (owner[g] != rank)
+    {
+      ids.push_back(owner[g]);
+    }
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+/// This rank's owned triangles against the whole surface's arrangement.
+void CompareWithWhole(const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  const Arrangement& whole,
+  const PieceMesh& piece,
+  const vtkBoolSurfPieceArrangement& run,
+  int rank,
+  const std::string& what)
+{
+  const Arrangement& arr = run.GetArrangement();
+  const MergedArrangement& merged = run.GetMerged();
+  if (merged.NumberOfCells != whole.NumberOfCells)
+  {
+    Fail(rank,
+      what + ": " + std::to_string(merged.NumberOfCells) + " cells, whole surface " +
+        std::to_string(whole.NumberOfCells));
+    return;
+  }
+  for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
+  {
+    if (!piece.Owned[t])
+    {
+      continue;
+    }
+    std::vector<int> mine, theirs;
+    std::vector<double> myAreas, theirAreas;
+    ForEachRefinedTriangle(piece.Mesh,
+      arr,
+      t,
+      [&](int r)
+      {
+        mine.push_back(run.GetGlobalCell(arr.CellOfTriangle(r)));
+        myAreas.push_back(RefinedArea(piece.Mesh, arr, r));
+      });
+    ForEachRefinedTriangle(mesh,
+      whole,
+      piece.GlobalTriangle[t],
+      [&](int r)
+      {
+        theirs.push_back(whole.CellOfTriangle(r));
+        theirAreas.push_back(RefinedArea(mesh, whole, r));
+      });
+    if (mine != theirs || myAreas != theirAreas)
+    {
+      Fail(rank, what + ": triangle " + std::to_string(piece.GlobalTriangle[t]) + " differs");
+    }
+  }
+  std::vector<double> areas(whole.NumberOfCells, 0.0);
+  for (int r = 0; r < whole.GetNumberOfTriangles(); ++r)
+  {
+    const int c = whole.CellOfTriangle(r);
+    if (c >= 0)
+    {
+      areas[c] += RefinedArea(mesh, whole, r);
+    }
+  }
+  for (int c = 0; c < whole.NumberOfCells; ++c)
+  {
+    if (std::abs(merged.CellArea[c] - areas[c]) > 1e-12 * std::max(1.0, areas[c]))
+    {
+      Fail(rank, what + ": area of cell " + std::to_string(c));
+    }
+  }
+  // Labels of the merged cell graph: the labeling stage's (closed surfaces: exactly, up to
+  // each shape's zero, which the stage puts in its zero cell).
+  const LabelingResult stage =
+    LabelCells(MakeLabelingInput(mesh, MeshTopology::Compute(mesh), curves, whole));
+  const LabelingResult mine = LabelCells(
+    LabelingInputOfCrossings(merged.NumberOfCells, merged.Crossings, DistinctShapeIds(curves)));
+  if (mine.ShapeIds != stage.ShapeIds || mine.ShapeConsistent != stage.ShapeConsistent)
+  {
+    Fail(rank, what + ": shapes or consistency verdicts differ");
+    return;
+  }
+  for (int s = 0; s < mine.NumberOfShapes; ++s)
+  {
+    for (int c = 0; c < merged.NumberOfCells && mine.ShapeConsistent[s]; ++c)
+    {
+      if (mine.GetLabel(c, s) - mine.GetLabel(0, s) != stage.GetLabel(c, s) - stage.GetLabel(0, s))
+      {
+        Fail(rank, what + ": label of cell " + std::to_string(c));
+        break;
+      }
+    }
+  }
+}
+
+void RunSplit(vtkMultiProcessController* controller,
+  const TriangleMesh& mesh,
+  const std::vector<TracedCurve>& curves,
+  const std::vector<int>& owner,
+  const std::string& what)
+{
+  const int rank = controller->GetLocalProcessId();
+  std::string error;
+  Arrangement whole;
+  if (!ComputeArrangement(mesh, curves, ArrangementOptions(), whole, error))
+  {
+    Fail(rank, what + ": whole surface: " + error);
+    return;
+  }
+  PieceInput ringed;
+  if (!BuildRingedPiece(controller, OwnedTriangles(mesh, owner, rank), ringed, error))
+  {
+    Fail(rank, what + ": " + error);
+  }
+  PieceMesh piece, expected;
+  if (!BuildPieceMesh(ringed, piece, error) ||
+    !BuildPieceMesh(testing::MakePiece(mesh, owner, rank), expected, error))
+  {
+    Fail(rank, what + ": " + error);
+  }
+  if (piece.GlobalTriangle != expected.GlobalTriangle ||
+    piece.GlobalVertex != expected.GlobalVertex || piece.Owned != expected.Owned)
+  {
+    Fail(rank, what + ": the ghost ring is not every triangle sharing a point with the piece");
+  }
+  // The curves as rank 0 (the tracer) broadcasts them: on global ids, edges by their vertices.
+  WireBuffer message;
+  if (rank == 0)
+  {
+    PackTracedCurves(curves, mesh, {}, {}, message);
+  }
+  long long length = static_cast<long long>(message.size());
+  controller->Broadcast(&length, 1, 0);
+  message.resize(static_cast<std::size_t>(length));
+  controller->Broadcast(message.data(), length, 0);
+  std::vector<TracedCurve> received;
+  std::vector<std::array<int, 2>> edgeTable;
+  if (!UnpackTracedCurves(message, received, edgeTable, error))
+  {
+    Fail(rank, what + ": " + error);
+    return;
+  }
+  const GlobalEdgeVertices edgeVertices = [&](int e) { return edgeTable[e]; };
+  PieceCurves local;
+  RestrictCurvesToPiece(piece, received, edgeVertices, local);
+  vtkBoolSurfPieceArrangement run;
+  if (!run.Run(
+        controller, piece, local, NeighboursOf(piece, owner, rank), ArrangementOptions(), error))
+  {
+    Fail(rank, what + ": " + error);
+    return;
+  }
+  CompareWithWhole(mesh, curves, whole, piece, run, rank, what);
+  const vtkBoolSurfPieceArrangement::Traffic& bytes = run.GetTraffic();
+  std::printf("%s, rank %d of %d: %d owned triangles; bytes sent/received: curves %zu/%zu, "
+              "boundary records "
+              "%zu/%zu, to the merge %zu/%zu, merged cells %zu/%zu\n",
+    what.c_str(),
+    rank,
+    controller->GetNumberOfProcesses(),
+    piece.NumberOfOwnedTriangles,
+    rank == 0 ? (controller->GetNumberOfProcesses() - 1) * (message.size() + 1) * sizeof(long long)
+              : std::size_t(0),
+    rank == 0 ? std::size_t(0) : (message.size() + 1) * sizeof(long long),
+    bytes.BoundarySent,
+    bytes.BoundaryReceived,
+    bytes.MergeSent,
+    bytes.MergeReceived,
+    bytes.BackSent,
+    bytes.BackReceived);
+  std::fflush(stdout);
+}
+
+void RunSurface(vtkMultiProcessController* controller, const MeshData& data, const char* name)
+{
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  const int ranks = controller->GetNumberOfProcesses();
+  const std::vector<TracedCurve> curves = RandomGeodesicCurves(mesh, 5, 6);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    RunSplit(controller,
+      mesh,
+      curves,
+      testing::SlabOwners(mesh, ranks, axis),
+      std::string(name) + ", slabs along axis " + std::to_string(axis));
+  }
+  RunSplit(controller,
+    mesh,
+    curves,
+    testing::RegionOwners(mesh, ranks, 3, -1),
+    std::string(name) + ", random regions");
+  if (ranks >= 2)
+  {
+    RunSplit(controller,
+      mesh,
+      curves,
+      testing::RegionOwners(mesh, ranks, 4, ranks - 1),
+      std::string(name) + ", random regions, last rank empty");
+  }
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  vtkNew<vtkMPIController> controller;
+  controller->Initialize(&argc, &argv);
+  vtkMultiProcessController::SetGlobalController(controller);
+  RunSurface(controller, MakeIcosphere(3), "sphere");
+  RunSurface(controller, MakeTorus(1.0, 0.4, 40, 20), "torus");
+  MeshData eight;
+  std::string error;
+  if (ReadPly((testing::SourceTree() / "Data" / "eight.ply").string(), eight, error))
+  {
+    RunSurface(controller, eight, "eight.ply");
+  }
+  else
+  {
+    Fail(controller->GetLocalProcessId(), "eight.ply: " + error);
+  }
+  int all = 0;
+  controller->AllReduce(&failures, &all, 1, vtkCommunicator::SUM_OP);
+  if (controller->GetLocalProcessId() == 0)
+  {
+    std::printf("%s: %d failures on %d ranks\n",
+      all == 0 ? "PASSED" : "FAILED",
+      all,
+      controller->GetNumberOfProcesses());
+  }
+  controller->Finalize();
+  return all == 0 ? 0 : 1;
+}
