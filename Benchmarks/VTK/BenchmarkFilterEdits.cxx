@@ -53,6 +53,8 @@
 // - BM_StageChainCurveEdit/threads:N: BM_OneStepCurveEdit's edits through the four stage
 //   filters, one update of the last filter per edit, with each filter's mean execution time:
 //   the stage chain's cost against the one-step filter's.
+// - BM_StageChainPaperScaleXor/threads:N: BM_OneStepPaperScaleXor's edits through the stage
+//   filters (symmetric difference of all shapes).
 //
 // Run: BoolSurfVTKBenchmarks --benchmark_filter='OneStep|StageChain'
 #include "FilterUpdateTimer.h"
@@ -1096,9 +1098,8 @@ void BM_OneStepPaperScaleSelection(benchmark::State& state)
 /// Surface Arrangement -> Label Arrangement Cells -> Surface Boolean), each updated in turn so
 /// that each stage's share is timed: counters Trace_ms, Arrangement_ms, Labeling_ms, Boolean_ms
 /// (means), and ChainRegionTriangles, which must equal the one-step RegionTriangles.
-void BM_StageChainCurveEdit(benchmark::State& state)
+void StageChainEdits(benchmark::State& state, const Scene& scene, int operation)
 {
-  const Scene& scene = TenCircles();
   if (!scene.Error.empty())
   {
     state.SkipWithError(scene.Error.c_str());
@@ -1119,6 +1120,7 @@ void BM_StageChainCurveEdit(benchmark::State& state)
   boolean->SetInputConnection(label->GetOutputPort(0));
   boolean->SetShapeA(-1);
   boolean->SetShapeB(-1);
+  boolean->SetOperation(operation);
   boolean->Update();
   if (boolean->GetOutput(0)->GetNumberOfCells() == 0)
   {
@@ -1177,6 +1179,18 @@ void BM_StageChainCurveEdit(benchmark::State& state)
     static_cast<double>(boolean->GetOutput(0)->GetNumberOfCells());
   state.counters["DeepCopyMs"] = scene.Mesh->DeepCopyMs;
   state.counters["PeakRSSGrowth_MB"] = PeakRssMB() - startRss;
+}
+
+void BM_StageChainCurveEdit(benchmark::State& state)
+{
+  StageChainEdits(state, TenCircles(), 0);
+}
+
+// BM_OneStepPaperScaleXor's edits through the stage filters: the one-step filter must never be
+// slower on the same edit.
+void BM_StageChainPaperScaleXor(benchmark::State& state)
+{
+  StageChainEdits(state, PaperScale(), 3);
 }
 
 // One thread: the scene is two circles, there is nothing to share out. Few iterations: with
@@ -1303,6 +1317,7 @@ BENCHMARK(BM_OneStepDragOneCurve)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepOperationChange)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepPaperScaleXor)->Apply(AtOneAndTwoThreads<6>);
 BENCHMARK(BM_OneStepPaperScaleXorAllPorts)->Apply(AtOneAndTwoThreads<6>);
+BENCHMARK(BM_StageChainPaperScaleXor)->Apply(AtOneAndTwoThreads<6>);
 BENCHMARK(BM_OneStepPaperScaleSelection)
   ->ArgName("bsc")
   ->Arg(0)
