@@ -577,43 +577,37 @@ void CurveTracer::TraceCurves(const std::vector<const ControlCurve*>& curves,
         stopped.store(true, std::memory_order_release);
       }
     });
-  for (std::size_t k = 0; k < todo.size(); ++k)
-  {
-    const std::size_t c = todo[k];
-    if (!errors[c].empty())
+  // Each curve assembled from its pieces in order (and its written forms), curves in parallel.
+  RunTasksBySlot(workers,
+    todo.size(),
+    [&](int, std::size_t k)
     {
-      continue;
-    }
-    for (std::size_t p = firstPiece[k]; p < firstPiece[k + 1]; ++p)
-    {
-      if (!legs[p].Ok)
+      const std::size_t c = todo[k];
+      if (!errors[c].empty())
       {
-        out[c].Clear();
-        errors[c] = legs[p].Error;
-        break;
+        return;
       }
-      this->AppendPiece(
-        keys[c].Points, keys[c].Type, static_cast<int>(p - firstPiece[k]), legs[p], out[c]);
-      legs[p] = PieceLegs(); // its paths are in the curve now
-    }
-    if (errors[c].empty() && keys[c].Closed)
-    {
-      out[c].DropRepeatedClosingPoint();
-    }
-  }
-  if (this->KeepWrittenForms)
-  {
-    RunTasksBySlot(workers,
-      todo.size(),
-      [&](int, std::size_t k)
+      for (std::size_t p = firstPiece[k]; p < firstPiece[k + 1]; ++p)
       {
-        const std::size_t c = todo[k];
-        if (errors[c].empty())
+        if (!legs[p].Ok)
         {
-          ComputeWrittenForms(this->Solver.GetMesh(), out[c]);
+          out[c].Clear();
+          errors[c] = legs[p].Error;
+          return;
         }
-      });
-  }
+        this->AppendPiece(
+          keys[c].Points, keys[c].Type, static_cast<int>(p - firstPiece[k]), legs[p], out[c]);
+        legs[p] = PieceLegs(); // its paths are in the curve now
+      }
+      if (keys[c].Closed)
+      {
+        out[c].DropRepeatedClosingPoint();
+      }
+      if (this->KeepWrittenForms)
+      {
+        ComputeWrittenForms(this->Solver.GetMesh(), out[c]);
+      }
+    });
   for (std::size_t c : todo)
   {
     if (errors[c].empty())
