@@ -508,33 +508,63 @@ void CurveTracer::TraceCurves(const std::vector<const ControlCurve*>& curves,
       todo.push_back(c);
     }
   }
-  // The pieces of the curves to trace (a polygon's legs, a Bezier's segments) are independent
-  // once the control points are known: they are the tasks, so one long curve is shared between
-  // threads. Each curve is then assembled from its pieces in order, as Trace() would.
-  std::vector<std::size_t> firstPiece(todo.size() + 1, 0);
-  std::vector<std::size_t> curveOf; // piece -> index into todo
+  // The pieces of a curve (a polygon's legs, a Bezier's segments) are independent once the
+  // control points are known. A curve holding a large share of all the pieces (one long curve
+  // among short ones, or alone) is split into its pieces, so that it is traced on every thread,
+  // then assembled from them in order, as Trace() would; the other curves are one task each
+  // (their legs traced in order into one buffer: splitting them only adds copies).
+  std::vector<int> pieces(todo.size(), 0);
+  std::size_t totalPieces = 0;
   for (std::size_t k = 0; k < todo.size(); ++k)
   {
     const std::size_t c = todo[k];
     const CurveKey& key = keys[c];
-    int pieces = 0;
     if (key.Type == CurveType::GeodesicPolygon || key.Type == CurveType::CubicBezier)
     {
       out[c].Curve.Closed = key.Closed;
       out[c].Curve.CurveId = curves[c]->CurveId;
-      pieces = std::max(
+      pieces[k] = std::max(
         0, this->CountPieces(key.Points, key.Type, key.Closed, curves[c]->CurveId, errors[c]));
+      totalPieces += static_cast<std::size_t>(pieces[k]);
     }
     else
     {
       this->TraceNew(key, out[c], curves[c]->CurveId, errors[c]); // names the unknown type
     }
-    firstPiece[k + 1] = firstPiece[k] + static_cast<std::size_t>(pieces);
-    curveOf.insert(curveOf.end(), static_cast<std::size_t>(pieces), k);
   }
-  const std::size_t total = firstPiece.back();
-  const int workers = this->PrepareHelpers(threads, total);
-  std::vector<PieceLegs> legs(total);
+  const int workers = this->PrepareHelpers(threads, totalPieces);
+  const std::size_t splitAbove = totalPieces / (2 * static_cast<std::size_t>(workers));
+  struct Task
+  {
+    std::size_t K; ///< index into todo
+    int Piece;     ///< -1: the whole curve
+  };
+  std::vector<Task> tasks;
+  std::vector<std::size_t> firstLeg(todo.size(), 0);
+  std::vector<char> split(todo.size(), 0);
+  std::size_t splitPieces = 0;
+  for (std::size_t k = 0; k < todo.size(); ++k)
+  {
+    if (pieces[k] == 0)
+    {
+      continue; // its error is named
+    }
+    if (workers > 1 && pieces[k] > 1 && static_cast<std::size_t>(pieces[k]) > splitAbove)
+    {
+      split[k] = 1;
+      firstLeg[k] = splitPieces;
+      splitPieces += static_cast<std::size_t>(pieces[k]);
+      for (int i = 0; i < pieces[k]; ++i)
+      {
+        tasks.push_back({ k, i });
+      }
+    }
+    else
+    {
+      tasks.push_back({ k, -1 });
+    }
+  }
+  std::vector<PieceLegs> legs(splitPieces);
   // Stopping is decided per curve, as when curves were the tasks: a curve with a piece begun is
   // finished, the others fail named; progress counts finished curves.
   std::atomic<bool> stopped{ false };
@@ -543,29 +573,39 @@ void CurveTracer::TraceCurves(const std::vector<const ControlCurve*>& curves,
   const std::unique_ptr<std::atomic<bool>[]> begun(new std::atomic<bool>[todo.size()]);
   for (std::size_t k = 0; k < todo.size(); ++k)
   {
-    remaining[k] = static_cast<int>(firstPiece[k + 1] - firstPiece[k]);
+    remaining[k] = split[k] ? pieces[k] : 1;
     begun[k] = false;
   }
   const std::thread::id caller = std::this_thread::get_id();
   // Each arena slot has its own tracer: this one for slot 0, a helper for each other.
   RunTasksBySlot(workers,
-    total,
-    [&](int slot, std::size_t p)
+    tasks.size(),
+    [&](int slot, std::size_t t)
     {
-      const std::size_t k = curveOf[p], c = todo[k];
+      const std::size_t k = tasks[t].K, c = todo[k];
+      const int piece = tasks[t].Piece;
       const int curveId = curves[c]->CurveId;
       if (!begun[k].load(std::memory_order_acquire))
       {
         if (stopped.load(std::memory_order_acquire))
         {
-          legs[p].Error = CurveLabel(curveId) + ": not traced (aborted)";
+          (piece < 0 ? errors[c] : legs[firstLeg[k] + piece].Error) =
+            CurveLabel(curveId) + ": not traced (aborted)";
           return;
         }
         begun[k].store(true, std::memory_order_release);
       }
       CurveTracer& tracer = slot == 0 ? *this : *this->Helpers[slot - 1];
-      tracer.ComputePiece(
-        keys[c].Points, keys[c].Type, static_cast<int>(p - firstPiece[k]), curveId, legs[p]);
+      if (piece < 0)
+      {
+        tracer.TracePieces(
+          keys[c].Points, keys[c].Type, keys[c].Closed, out[c], errors[c], curveId);
+      }
+      else
+      {
+        tracer.ComputePiece(
+          keys[c].Points, keys[c].Type, piece, curveId, legs[firstLeg[k] + piece]);
+      }
       if (remaining[k].fetch_sub(1, std::memory_order_acq_rel) != 1)
       {
         return; // the curve's last piece reports it
@@ -577,33 +617,30 @@ void CurveTracer::TraceCurves(const std::vector<const ControlCurve*>& curves,
         stopped.store(true, std::memory_order_release);
       }
     });
-  // Each curve assembled from its pieces in order (and its written forms), curves in parallel.
+  // The split curves assembled from their pieces in order, and the written forms, curves in
+  // parallel.
   RunTasksBySlot(workers,
     todo.size(),
     [&](int, std::size_t k)
     {
       const std::size_t c = todo[k];
-      if (!errors[c].empty())
+      for (int i = 0; split[k] && errors[c].empty() && i < pieces[k]; ++i)
       {
-        return;
-      }
-      for (std::size_t p = firstPiece[k]; p < firstPiece[k + 1]; ++p)
-      {
-        if (!legs[p].Ok)
+        PieceLegs& piece = legs[firstLeg[k] + static_cast<std::size_t>(i)];
+        if (!piece.Ok)
         {
           out[c].Clear();
-          errors[c] = legs[p].Error;
-          return;
+          errors[c] = piece.Error;
+          break;
         }
-        this->AppendPiece(
-          keys[c].Points, keys[c].Type, static_cast<int>(p - firstPiece[k]), legs[p], out[c]);
-        legs[p] = PieceLegs(); // its paths are in the curve now
+        this->AppendPiece(keys[c].Points, keys[c].Type, i, piece, out[c]);
+        piece = PieceLegs(); // its paths are in the curve now
+        if (i + 1 == pieces[k] && keys[c].Closed)
+        {
+          out[c].DropRepeatedClosingPoint();
+        }
       }
-      if (keys[c].Closed)
-      {
-        out[c].DropRepeatedClosingPoint();
-      }
-      if (this->KeepWrittenForms)
+      if (errors[c].empty() && this->KeepWrittenForms)
       {
         ComputeWrittenForms(this->Solver.GetMesh(), out[c]);
       }
