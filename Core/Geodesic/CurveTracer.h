@@ -91,8 +91,9 @@ public:
   /// solver computes it: the Bounded and Exact methods are functions of the leg's ends (the
   /// surface's site graph and path cache are shared and thread-safe). The locally shortest method
   /// is not (its edge search breaks ties by a landmark table each solver builds lazily), so it
-  /// traces on this thread only. The tasks are the curves' pieces (legs, Bezier segments), so
-  /// one long curve is traced on every thread. `progress` (may be empty) is called on the calling
+  /// traces on this thread only. A curve holding a large share of all the pieces to trace
+  /// (polygon legs, Bezier segments) is split into them, so one long curve is traced on every
+  /// thread; the others are one task each. `progress` (may be empty) is called on the calling
   /// thread with the fraction done; returning false stops the tracing (the curves not traced get a
   /// message).
   void TraceCurves(const std::vector<const ControlCurve*>& curves,
