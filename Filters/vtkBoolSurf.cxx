@@ -71,6 +71,8 @@ struct vtkBoolSurf::Internals
   std::vector<boolsurf::PatchSnap> Snaps;
   boolsurf::BscResult Bsc;
   double ControlCurvesTime = 0;
+  /// Milliseconds of the last update per output port (see SelectionOutputTimes::Ports).
+  std::array<double, 4> PortTimes{};
   /// Milliseconds of the stages of the last labeled arrangement (tracing, labeling).
   double TraceTime = 0, LabelingTime = 0;
   /// What the resolution of inconsistent shapes did (ResolveStrategy >= 0), one note per shape.
@@ -264,6 +266,7 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
     return false;
   }
   in.ControlCurvesTime = times.ControlCurves;
+  std::copy(std::begin(times.Ports), std::end(times.Ports), in.PortTimes.begin());
   const Clock::time_point selected = Clock::now();
   this->WriteFieldData(text,
     reuse,
@@ -564,8 +567,13 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
     "Selection",
     "Output",
     "ControlCurves",
-    "Total" };
-  std::array<double, 11> times{ in.TraceTime,
+    "Total",
+    "Port0Region",
+    "Port1Boundary",
+    "Port2BoundaryControlCurves",
+    "Port3ClippedCurves" };
+  // The ports' times after Total: a split of Selection's extraction, Output and ControlCurves.
+  std::array<double, 15> times{ in.TraceTime,
     t.Hash,
     t.Intersections,
     t.Refinement,
@@ -575,7 +583,11 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
     selectionTime,
     outputTime - in.ControlCurvesTime,
     in.ControlCurvesTime,
-    0 };
+    0,
+    in.PortTimes[0],
+    in.PortTimes[1],
+    in.PortTimes[2],
+    in.PortTimes[3] };
   if (reused)
   {
     std::fill(times.begin(), times.begin() + 7, 0.0);
@@ -586,8 +598,8 @@ void vtkBoolSurf::WriteFieldData(const std::string& expression,
   }
   vtkNew<vtkDoubleArray> stageTimes;
   stageTimes->SetName(boolsurf::names::StageTimes);
-  stageTimes->SetNumberOfComponents(11);
-  for (int k = 0; k < 11; ++k)
+  stageTimes->SetNumberOfComponents(static_cast<int>(times.size()));
+  for (int k = 0; k < static_cast<int>(times.size()); ++k)
   {
     stageTimes->SetComponentName(k, names[k]);
   }

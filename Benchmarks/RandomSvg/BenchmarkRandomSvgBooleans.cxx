@@ -14,7 +14,8 @@
 // Output: one CSV row per trial (mesh, drawings, operation, placement, times per stage from
 // the filter's StageTimes field data, region size, status), and a summary on stdout: trials,
 // failures with their messages, min / median / max of the full-update time per mesh and over
-// all, and the core count. Benchmarks/RandomSvg/plot_histogram.py draws the histogram PNG.
+// all, the core count, and the CPU time over the wall time of the trials' updates (how busy
+// the cores were). Benchmarks/RandomSvg/plot_histogram.py draws the histogram PNG.
 //
 // Usage: BoolSurfRandomSvgBenchmark [--trials N] [--seed S] [--csv FILE] [--mesh NAME]...
 //        [--only-trial K] (replays trial K of each mesh: each mesh has its own generator)
@@ -43,6 +44,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -67,6 +70,16 @@ using Clock = std::chrono::steady_clock;
 double Ms(Clock::time_point from, Clock::time_point to)
 {
   return std::chrono::duration<double, std::milli>(to - from).count();
+}
+
+/// User and system CPU time of the process (every thread; RUSAGE_THREAD: the calling thread
+/// only), in seconds.
+double ProcessCpuSeconds(int who = RUSAGE_SELF)
+{
+  rusage usage{};
+  getrusage(who, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+    1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
 /// Collects the ErrorEvent texts and counts the WarningEvents of the algorithms it observes
@@ -347,6 +360,7 @@ int main(int argc, char** argv)
   int failedTrials = 0, warnedTrials = 0;
 
   std::vector<double> all;
+  double wallMs = 0, cpuMs = 0, mainCpuMs = 0; // the trials' updates: how busy the cores were
   // The same trials without the one-off build of the surface's geodesic site graph: it is
   // built lazily, by the first leg that needs a route, so whichever trial of a mesh routes
   // first pays it once (its time is in the CSV's site_graph_build_ms).
@@ -418,6 +432,7 @@ int main(int argc, char** argv)
 
       // The expression needs each drawing's shape ids, and the fill rule what the SVGs say:
       // both come from the mappers' outputs, so the mappers run first (timed as part of it).
+      const double cpu0 = ProcessCpuSeconds(), mainCpu0 = ProcessCpuSeconds(RUSAGE_THREAD);
       const auto start = Clock::now();
       pipeline.DrawingA->Update();
       pipeline.DrawingB->Update();
@@ -431,6 +446,8 @@ int main(int argc, char** argv)
       pipeline.Boolean->Update();
       const auto done = Clock::now();
       const double updateMs = Ms(start, done);
+      const double updateCpuMs = 1000.0 * (ProcessCpuSeconds() - cpu0);
+      const double updateMainCpuMs = 1000.0 * (ProcessCpuSeconds(RUSAGE_THREAD) - mainCpu0);
 
       vtkPolyData* region = pipeline.Boolean->GetOutput();
       const std::string error = pipeline.Errors.Text;
@@ -491,6 +508,9 @@ int main(int argc, char** argv)
       }
       times.push_back(updateMs);
       all.push_back(updateMs);
+      wallMs += updateMs;
+      cpuMs += updateCpuMs;
+      mainCpuMs += updateMainCpuMs;
       allWithoutBuilds.push_back(updateMs - buildMs);
       mapTimes.push_back(Ms(start, mapped));
       const std::vector<double>& stagesOfTrial = rows.back().Stages;
@@ -533,7 +553,13 @@ int main(int argc, char** argv)
             << warnedTrials << " with warnings (unknown SVG attributes, points stopped at a "
             << "boundary), " << Summary(all) << " (" << cores << " cores)\n"
             << "without the one-off geodesic site-graph builds: " << Summary(allWithoutBuilds)
-            << "\n";
+            << "\n"
+            << "CPU time / wall time of the trials' updates: " << std::setprecision(2)
+            << (wallMs > 0 ? cpuMs / wallMs : 0.0) << " (" << std::setprecision(1) << cpuMs / 1000.0
+            << " s CPU in " << wallMs / 1000.0
+            << " s); share of that CPU time on other threads than the caller's: "
+            << std::setprecision(0) << (cpuMs > 0 ? 100.0 * (cpuMs - mainCpuMs) / cpuMs : 0.0)
+            << " % (on a loaded machine the wall time grows, this share does not)\n";
   for (const auto& [name, messages] : failures)
   {
     for (const std::string& message : messages)

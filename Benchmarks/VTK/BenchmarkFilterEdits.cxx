@@ -23,6 +23,10 @@
 //   SymmetricDifference (the labeled arrangement is reused, only the Boolean reruns).
 // - BM_OneStepPaperScaleXor/threads:N: 112 circles x 32 control points (the scale of the paper's
 //   largest scenes) in clusters of 4, symmetric difference of all shapes, curve edits as above.
+// - BM_OneStepPaperScaleXorAllPorts/threads:N: the same edits with every output port updated
+//   and read as ParaView does (UpdateEveryPort, ReadPortInformation): the default outputs a
+//   pvpython user gets. Counters Port0Region_ms ... Port3ClippedCurves_ms (the filter's own
+//   time per port), PortInformation_ms (reading the ports), ExecutionsPerEdit (must be 1).
 // - BM_OneStepPaperScaleSelection/bsc:B: the paper-scale scene with the labeled arrangement
 //   reused, only the selection reruns: the Boolean (B = 0) or BSC with 112 samples (B = 1).
 // - BM_OneStepHugeShapeId: two overlapping circles with ShapeIds 0 and 1000000 on a small mesh
@@ -49,6 +53,8 @@
 // - BM_StageChainCurveEdit/threads:N: BM_OneStepCurveEdit's edits through the four stage
 //   filters, one update of the last filter per edit, with each filter's mean execution time:
 //   the stage chain's cost against the one-step filter's.
+// - BM_StageChainPaperScaleXor/threads:N: BM_OneStepPaperScaleXor's edits through the stage
+//   filters (symmetric difference of all shapes).
 //
 // Run: BoolSurfVTKBenchmarks --benchmark_filter='OneStep|StageChain'
 #include "FilterUpdateTimer.h"
@@ -60,14 +66,18 @@
 #include "vtkBoolSurfTraceCurves.h"
 #include "vtkBoolSurfWindingNumbers.h"
 
+#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkGenericCell.h>
 #include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
 #include <vtkIntArray.h>
 #include <vtkLinearSubdivisionFilter.h>
 #include <vtkMath.h>
@@ -78,6 +88,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <benchmark/benchmark.h>
 
@@ -730,6 +741,77 @@ vtkSmartPointer<vtkPolyData> Moved(vtkPolyData* curves, vtkIdType first, vtkIdTy
   return moved;
 }
 
+/// Counts the filter's executions (RequestData runs between StartEvent and EndEvent): an edit
+/// that updates several ports must execute once.
+struct ExecutionCounter
+{
+  vtkNew<vtkCallbackCommand> Callback;
+  vtkAlgorithm* Filter;
+  unsigned long Tag;
+  long Count = 0;
+
+  explicit ExecutionCounter(vtkAlgorithm* filter)
+    : Filter(filter)
+  {
+    this->Callback->SetClientData(&this->Count);
+    this->Callback->SetCallback(
+      [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<long*>(count); });
+    this->Tag = filter->AddObserver(vtkCommand::StartEvent, this->Callback);
+  }
+  ~ExecutionCounter() { this->Filter->RemoveObserver(this->Tag); }
+};
+
+/// Updates every output port in turn, each asking for piece 0 of 1 without ghost levels, as
+/// ParaView's UpdatePipeline does (vtkSISourceProxy: one request per output port): what a
+/// pvpython user's edit executes when the filter's default outputs are all shown.
+void UpdateEveryPort(vtkAlgorithm* filter)
+{
+  auto* executive = vtkStreamingDemandDrivenPipeline::SafeDownCast(filter->GetExecutive());
+  for (int port = 0; port < filter->GetNumberOfOutputPorts(); ++port)
+  {
+    if (executive)
+    {
+      executive->UpdateInformation();
+      vtkInformation* request = executive->GetOutputInformation(port);
+      request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+      request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+      request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    }
+    filter->Update(port);
+  }
+}
+
+/// What ParaView reads of every port after an update (vtkPVDataInformation: bounds, and each
+/// point and cell array's component ranges): O(output) work outside the filter, timed apart.
+void ReadPortInformation(vtkAlgorithm* filter)
+{
+  for (int port = 0; port < filter->GetNumberOfOutputPorts(); ++port)
+  {
+    vtkPolyData* output = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(port));
+    if (!output)
+    {
+      continue;
+    }
+    double bounds[6];
+    output->GetBounds(bounds);
+    for (vtkDataSetAttributes* data : { static_cast<vtkDataSetAttributes*>(output->GetPointData()),
+           static_cast<vtkDataSetAttributes*>(output->GetCellData()) })
+    {
+      for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+      {
+        if (vtkDataArray* array = data->GetArray(a))
+        {
+          for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+          {
+            double range[2];
+            array->GetRange(range, c);
+          }
+        }
+      }
+    }
+  }
+}
+
 /// Each iteration switches the curves to the other prepared version, every control point
 /// moved slightly (see Moved: a new input object, the filter retraces, rearranges, relabels),
 /// and updates. With `dragOne`, only one circle moves per iteration (the next one each time)
@@ -739,7 +821,8 @@ void CurveEdits(benchmark::State& state,
   int operation,
   int threads,
   bool dragOne = false,
-  int geodesicMethod = vtkBoolSurf::GEODESIC_BOUNDED)
+  int geodesicMethod = vtkBoolSurf::GEODESIC_BOUNDED,
+  bool allPorts = false)
 {
   if (!scene.Error.empty())
   {
@@ -758,10 +841,11 @@ void CurveEdits(benchmark::State& state,
   StageSums firstStages; // the first update's stages; the rest of it prepares the surface
   firstStages.Add(filter->GetOutput(0));
   StageSums stages;
-  double updateMs = 0, faults = 0;
+  double updateMs = 0, faults = 0, portsMs = 0;
   size_t version = 0;
   int step = 0;
   vtkSmartPointer<vtkPolyData> input;
+  ExecutionCounter executions(filter);
   for (auto _ : state)
   {
     state.PauseTiming();
@@ -780,8 +864,22 @@ void CurveEdits(benchmark::State& state,
     state.ResumeTiming();
     const double faults0 = benchutil::ProcessMinorFaults();
     const auto t0 = std::chrono::steady_clock::now();
-    filter->Update();
-    updateMs += Milliseconds(t0, std::chrono::steady_clock::now());
+    if (allPorts)
+    {
+      UpdateEveryPort(filter);
+    }
+    else
+    {
+      filter->Update();
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    if (allPorts)
+    {
+      ReadPortInformation(filter);
+    }
+    const auto t2 = std::chrono::steady_clock::now();
+    updateMs += Milliseconds(t0, t2);
+    portsMs += Milliseconds(t1, t2);
     faults += benchutil::ProcessMinorFaults() - faults0;
     stages.Add(filter->GetOutput(0));
   }
@@ -797,6 +895,12 @@ void CurveEdits(benchmark::State& state,
   state.counters["EditOverDeepCopy"] =
     updateMs / static_cast<double>(state.iterations()) / scene.Mesh->DeepCopyMs;
   state.counters["MinorFaults"] = faults / static_cast<double>(state.iterations());
+  state.counters["ExecutionsPerEdit"] =
+    static_cast<double>(executions.Count) / static_cast<double>(state.iterations());
+  if (allPorts)
+  {
+    state.counters["PortInformation_ms"] = portsMs / static_cast<double>(state.iterations());
+  }
   state.counters["FirstUpdateMs"] = firstUpdateMs;
   firstStages.Report(state, "First");
 }
@@ -883,6 +987,20 @@ void BM_OneStepPaperScaleXor(benchmark::State& state)
   }
   CurveEdits(state, scene, 3, static_cast<int>(state.range(0)));
   state.counters["TracedVertices"] = static_cast<double>(tracedVertices);
+}
+
+// The same edits with every output port updated as ParaView does (UpdateEveryPort) and read
+// as its data information reads them (PortInformation_ms, inside the update's time): a
+// pvpython user's edit with the filter's default outputs.
+void BM_OneStepPaperScaleXorAllPorts(benchmark::State& state)
+{
+  CurveEdits(state,
+    PaperScale(),
+    3,
+    static_cast<int>(state.range(0)),
+    false,
+    vtkBoolSurf::GEODESIC_BOUNDED,
+    true);
 }
 
 /// BSC samples on the scene's circles (version 0): control point `index` of each circle,
@@ -980,9 +1098,8 @@ void BM_OneStepPaperScaleSelection(benchmark::State& state)
 /// Surface Arrangement -> Label Arrangement Cells -> Surface Boolean), each updated in turn so
 /// that each stage's share is timed: counters Trace_ms, Arrangement_ms, Labeling_ms, Boolean_ms
 /// (means), and ChainRegionTriangles, which must equal the one-step RegionTriangles.
-void BM_StageChainCurveEdit(benchmark::State& state)
+void StageChainEdits(benchmark::State& state, const Scene& scene, int operation)
 {
-  const Scene& scene = TenCircles();
   if (!scene.Error.empty())
   {
     state.SkipWithError(scene.Error.c_str());
@@ -1003,6 +1120,7 @@ void BM_StageChainCurveEdit(benchmark::State& state)
   boolean->SetInputConnection(label->GetOutputPort(0));
   boolean->SetShapeA(-1);
   boolean->SetShapeB(-1);
+  boolean->SetOperation(operation);
   boolean->Update();
   if (boolean->GetOutput(0)->GetNumberOfCells() == 0)
   {
@@ -1061,6 +1179,18 @@ void BM_StageChainCurveEdit(benchmark::State& state)
     static_cast<double>(boolean->GetOutput(0)->GetNumberOfCells());
   state.counters["DeepCopyMs"] = scene.Mesh->DeepCopyMs;
   state.counters["PeakRSSGrowth_MB"] = PeakRssMB() - startRss;
+}
+
+void BM_StageChainCurveEdit(benchmark::State& state)
+{
+  StageChainEdits(state, TenCircles(), 0);
+}
+
+// BM_OneStepPaperScaleXor's edits through the stage filters: the one-step filter must never be
+// slower on the same edit.
+void BM_StageChainPaperScaleXor(benchmark::State& state)
+{
+  StageChainEdits(state, PaperScale(), 3);
 }
 
 // One thread: the scene is two circles, there is nothing to share out. Few iterations: with
@@ -1186,6 +1316,8 @@ BENCHMARK(BM_StageChainCurveEdit)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepDragOneCurve)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepOperationChange)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepPaperScaleXor)->Apply(AtOneAndTwoThreads<6>);
+BENCHMARK(BM_OneStepPaperScaleXorAllPorts)->Apply(AtOneAndTwoThreads<6>);
+BENCHMARK(BM_StageChainPaperScaleXor)->Apply(AtOneAndTwoThreads<6>);
 BENCHMARK(BM_OneStepPaperScaleSelection)
   ->ArgName("bsc")
   ->Arg(0)

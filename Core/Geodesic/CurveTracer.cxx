@@ -132,7 +132,133 @@ void CurveTracer::AppendPath(const GeodesicPath& path,
 }
 
 //------------------------------------------------------------------------------
-bool CurveTracer::TraceGeodesicPolygon(const std::vector<CanonicalPoint>& points,
+int CurveTracer::CountPieces(const std::vector<CanonicalPoint>& points,
+  CurveType type,
+  bool closed,
+  int curveId,
+  std::string& error) const
+{
+  const int n = static_cast<int>(points.size());
+  if (type == CurveType::GeodesicPolygon)
+  {
+    if (n < 2)
+    {
+      error = CurveLabel(curveId) + ": a geodesic polygon needs at least 2 control points, got " +
+        std::to_string(n);
+      return -1;
+    }
+    return closed ? n : n - 1;
+  }
+  if (closed ? (n < 3 || n % 3 != 0) : (n < 4 || n % 3 != 1))
+  {
+    error = CurveLabel(curveId) + ": " +
+      (closed ? "a closed cubic Bezier spline needs 3n control points"
+              : "an open cubic Bezier spline needs 3n+1 control points") +
+      " (anchor, handle, handle, anchor, ...), got " + std::to_string(n);
+    return -1;
+  }
+  return closed ? n / 3 : (n - 1) / 3;
+}
+
+//------------------------------------------------------------------------------
+bool CurveTracer::ComputePiece(const std::vector<CanonicalPoint>& points,
+  CurveType type,
+  int piece,
+  int curveId,
+  PieceLegs& legs)
+{
+  const int n = static_cast<int>(points.size());
+  std::string legError;
+  if (type == CurveType::GeodesicPolygon)
+  {
+    const int i = piece, j = (i + 1) % n;
+    legs.Legs.resize(1);
+    legs.Ok = this->ComputeLeg(points[i], points[j], legs.Legs[0], legError);
+    if (!legs.Ok)
+    {
+      legs.Error = CurveLabel(curveId) + ", segment " + std::to_string(i) + " (control points " +
+        std::to_string(i) + " and " + std::to_string(j) + "): " + legError;
+    }
+    return legs.Ok;
+  }
+  const int i = piece, last = (3 * i + 3) % n;
+  const std::array<CanonicalPoint, 4> segment{
+    points[3 * i], points[3 * i + 1], points[3 * i + 2], points[last]
+  };
+  const int pieces = 1 << this->Resolution;
+  legs.Legs.resize(static_cast<std::size_t>(3 * pieces));
+  legs.Ok =
+    SubdivideGeodesicBezier(this->Solver, segment, this->Resolution, this->Refined, legError);
+  for (int leg = 0; legs.Ok && leg < 3 * pieces; ++leg)
+  {
+    legs.Ok =
+      this->ComputeLeg(this->Refined[leg], this->Refined[leg + 1], legs.Legs[leg], legError);
+  }
+  if (!legs.Ok)
+  {
+    legs.Error = CurveLabel(curveId) + ", Bezier segment " + std::to_string(i) +
+      " (control points " + std::to_string(3 * i) + " to " + std::to_string(last) +
+      "): " + legError;
+  }
+  return legs.Ok;
+}
+
+//------------------------------------------------------------------------------
+void CurveTracer::AppendPiece(const std::vector<CanonicalPoint>& points,
+  CurveType type,
+  int piece,
+  const PieceLegs& legs,
+  CurveTrace& out) const
+{
+  const int n = static_cast<int>(points.size());
+  if (type == CurveType::GeodesicPolygon)
+  {
+    const int i = piece;
+    this->AppendPath(legs.Legs[0], i, 0.0, 1.0, i, (i + 1) % n, true, true, true, out);
+    out.Length += legs.Legs[0].Length;
+    return;
+  }
+  const int i = piece, last = (3 * i + 3) % n;
+  const int pieces = 1 << this->Resolution;
+  for (int k = 0; k < pieces; ++k)
+  {
+    // The piece's three legs share the parameter range [k, k+1] / pieces by arc length;
+    // only the anchors are exactly on the curve.
+    const double t0 = static_cast<double>(k) / pieces, t1 = static_cast<double>(k + 1) / pieces;
+    double legLength[3];
+    for (int leg = 0; leg < 3; ++leg)
+    {
+      legLength[leg] = legs.Legs[3 * k + leg].Length;
+    }
+    const double total = legLength[0] + legLength[1] + legLength[2];
+    double start = 0.0;
+    for (int leg = 0; leg < 3; ++leg)
+    {
+      const double a = total > 0 ? t0 + (t1 - t0) * start / total : t0 + (t1 - t0) * leg / 3.0;
+      start += legLength[leg];
+      const double b =
+        total > 0 ? t0 + (t1 - t0) * start / total : t0 + (t1 - t0) * (leg + 1) / 3.0;
+      const int firstControl = (leg == 0 && k == 0) ? 3 * i : -1;
+      const int lastControl = (leg == 2 && k == pieces - 1) ? last : -1;
+      // Only the anchor ends (start of leg 0, end of leg 2) are on the curve.
+      this->AppendPath(legs.Legs[3 * k + leg],
+        i,
+        a,
+        leg == 2 ? t1 : b,
+        firstControl,
+        lastControl,
+        leg == 0,
+        leg == 2,
+        false,
+        out);
+      out.Length += legLength[leg];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool CurveTracer::TracePieces(const std::vector<CanonicalPoint>& points,
+  CurveType type,
   bool closed,
   CurveTrace& out,
   std::string& error,
@@ -141,33 +267,36 @@ bool CurveTracer::TraceGeodesicPolygon(const std::vector<CanonicalPoint>& points
   out.Clear();
   out.Curve.Closed = closed;
   out.Curve.CurveId = curveId;
-  const int n = static_cast<int>(points.size());
-  if (n < 2)
+  const int pieces = this->CountPieces(points, type, closed, curveId, error);
+  if (pieces < 0)
   {
-    error = CurveLabel(curveId) + ": a geodesic polygon needs at least 2 control points, got " +
-      std::to_string(n);
     return false;
   }
-  const int segments = closed ? n : n - 1;
-  for (int i = 0; i < segments; ++i)
+  for (int i = 0; i < pieces; ++i)
   {
-    const int j = (i + 1) % n;
-    std::string legError;
-    if (!this->ComputeLeg(points[i], points[j], this->Path, legError))
+    if (!this->ComputePiece(points, type, i, curveId, this->Legs))
     {
       out.Clear();
-      error = CurveLabel(curveId) + ", segment " + std::to_string(i) + " (control points " +
-        std::to_string(i) + " and " + std::to_string(j) + "): " + legError;
+      error = this->Legs.Error;
       return false;
     }
-    this->AppendPath(this->Path, i, 0.0, 1.0, i, j, true, true, true, out);
-    out.Length += this->Path.Length;
+    this->AppendPiece(points, type, i, this->Legs, out);
   }
   if (closed)
   {
     out.DropRepeatedClosingPoint();
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool CurveTracer::TraceGeodesicPolygon(const std::vector<CanonicalPoint>& points,
+  bool closed,
+  CurveTrace& out,
+  std::string& error,
+  int curveId)
+{
+  return this->TracePieces(points, CurveType::GeodesicPolygon, closed, out, error, curveId);
 }
 
 //------------------------------------------------------------------------------
@@ -194,83 +323,7 @@ bool CurveTracer::TraceBezierSpline(const std::vector<CanonicalPoint>& points,
   std::string& error,
   int curveId)
 {
-  out.Clear();
-  out.Curve.Closed = closed;
-  out.Curve.CurveId = curveId;
-  const int n = static_cast<int>(points.size());
-  if (closed ? (n < 3 || n % 3 != 0) : (n < 4 || n % 3 != 1))
-  {
-    error = CurveLabel(curveId) + ": " +
-      (closed ? "a closed cubic Bezier spline needs 3n control points"
-              : "an open cubic Bezier spline needs 3n+1 control points") +
-      " (anchor, handle, handle, anchor, ...), got " + std::to_string(n);
-    return false;
-  }
-  const int segments = closed ? n / 3 : (n - 1) / 3;
-  const int pieces = 1 << this->Resolution;
-  for (int i = 0; i < segments; ++i)
-  {
-    const int last = (3 * i + 3) % n;
-    const std::array<CanonicalPoint, 4> segment{
-      points[3 * i], points[3 * i + 1], points[3 * i + 2], points[last]
-    };
-    std::string legError;
-    bool ok =
-      SubdivideGeodesicBezier(this->Solver, segment, this->Resolution, this->Refined, legError);
-    for (int k = 0; ok && k < pieces; ++k)
-    {
-      // The piece's three legs share the parameter range [k, k+1] / pieces by arc length;
-      // only the anchors are exactly on the curve.
-      const double t0 = static_cast<double>(k) / pieces, t1 = static_cast<double>(k + 1) / pieces;
-      double legLength[3];
-      GeodesicPath legs[3];
-      for (int leg = 0; leg < 3 && ok; ++leg)
-      {
-        ok = this->ComputeLeg(
-          this->Refined[3 * k + leg], this->Refined[3 * k + leg + 1], legs[leg], legError);
-        legLength[leg] = legs[leg].Length;
-      }
-      if (!ok)
-      {
-        break;
-      }
-      const double total = legLength[0] + legLength[1] + legLength[2];
-      double start = 0.0;
-      for (int leg = 0; leg < 3; ++leg)
-      {
-        const double a = total > 0 ? t0 + (t1 - t0) * start / total : t0 + (t1 - t0) * leg / 3.0;
-        start += legLength[leg];
-        const double b =
-          total > 0 ? t0 + (t1 - t0) * start / total : t0 + (t1 - t0) * (leg + 1) / 3.0;
-        const int firstControl = (leg == 0 && k == 0) ? 3 * i : -1;
-        const int lastControl = (leg == 2 && k == pieces - 1) ? last : -1;
-        // Only the anchor ends (start of leg 0, end of leg 2) are on the curve.
-        this->AppendPath(legs[leg],
-          i,
-          a,
-          leg == 2 ? t1 : b,
-          firstControl,
-          lastControl,
-          leg == 0,
-          leg == 2,
-          false,
-          out);
-        out.Length += legLength[leg];
-      }
-    }
-    if (!ok)
-    {
-      out.Clear();
-      error = CurveLabel(curveId) + ", Bezier segment " + std::to_string(i) + " (control points " +
-        std::to_string(3 * i) + " to " + std::to_string(last) + "): " + legError;
-      return false;
-    }
-  }
-  if (closed)
-  {
-    out.DropRepeatedClosingPoint();
-  }
-  return true;
+  return this->TracePieces(points, CurveType::CubicBezier, closed, out, error, curveId);
 }
 
 //------------------------------------------------------------------------------
@@ -361,10 +414,8 @@ bool CurveTracer::TraceNew(const CurveKey& key, CurveTrace& out, int curveId, st
   switch (key.Type)
   {
     case CurveType::GeodesicPolygon:
-      ok = this->TraceGeodesicPolygon(key.Points, key.Closed, out, error, curveId);
-      break;
     case CurveType::CubicBezier:
-      ok = this->TraceBezierSpline(key.Points, key.Closed, out, error, curveId);
+      ok = this->TracePieces(key.Points, key.Type, key.Closed, out, error, curveId);
       break;
     default:
       error = CurveLabel(curveId) + ": unknown curve type " +
@@ -457,32 +508,142 @@ void CurveTracer::TraceCurves(const std::vector<const ControlCurve*>& curves,
       todo.push_back(c);
     }
   }
-  const int workers = this->PrepareHelpers(threads, todo.size());
-  std::atomic<bool> stopped{ false };
-  std::atomic<std::size_t> done{ 0 };
-  const std::thread::id caller = std::this_thread::get_id();
-  const auto traceOne = [&](CurveTracer& tracer, std::size_t k, bool onCaller)
+  // The pieces of a curve (a polygon's legs, a Bezier's segments) are independent once the
+  // control points are known. A curve holding a large share of all the pieces (one long curve
+  // among short ones, or alone) is split into its pieces, so that it is traced on every thread,
+  // then assembled from them in order, as Trace() would; the other curves are one task each
+  // (their legs traced in order into one buffer: splitting them only adds copies).
+  std::vector<int> pieces(todo.size(), 0);
+  std::size_t totalPieces = 0;
+  for (std::size_t k = 0; k < todo.size(); ++k)
   {
     const std::size_t c = todo[k];
-    if (stopped.load(std::memory_order_relaxed))
+    const CurveKey& key = keys[c];
+    if (key.Type == CurveType::GeodesicPolygon || key.Type == CurveType::CubicBezier)
     {
-      errors[c] = CurveLabel(curves[c]->CurveId) + ": not traced (aborted)";
-      return;
+      out[c].Curve.Closed = key.Closed;
+      out[c].Curve.CurveId = curves[c]->CurveId;
+      pieces[k] = std::max(
+        0, this->CountPieces(key.Points, key.Type, key.Closed, curves[c]->CurveId, errors[c]));
+      totalPieces += static_cast<std::size_t>(pieces[k]);
     }
-    tracer.TraceNew(keys[c], out[c], curves[c]->CurveId, errors[c]);
-    const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
-    if (onCaller && progress && !progress(static_cast<double>(finished) / todo.size()))
+    else
     {
-      stopped = true;
+      this->TraceNew(key, out[c], curves[c]->CurveId, errors[c]); // names the unknown type
     }
+  }
+  const int workers = this->PrepareHelpers(threads, totalPieces);
+  const std::size_t splitAbove = totalPieces / (2 * static_cast<std::size_t>(workers));
+  struct Task
+  {
+    std::size_t K; ///< index into todo
+    int Piece;     ///< -1: the whole curve
   };
+  std::vector<Task> tasks;
+  std::vector<std::size_t> firstLeg(todo.size(), 0);
+  std::vector<char> split(todo.size(), 0);
+  std::size_t splitPieces = 0;
+  for (std::size_t k = 0; k < todo.size(); ++k)
+  {
+    if (pieces[k] == 0)
+    {
+      continue; // its error is named
+    }
+    if (workers > 1 && pieces[k] > 1 && static_cast<std::size_t>(pieces[k]) > splitAbove)
+    {
+      split[k] = 1;
+      firstLeg[k] = splitPieces;
+      splitPieces += static_cast<std::size_t>(pieces[k]);
+      for (int i = 0; i < pieces[k]; ++i)
+      {
+        tasks.push_back({ k, i });
+      }
+    }
+    else
+    {
+      tasks.push_back({ k, -1 });
+    }
+  }
+  std::vector<PieceLegs> legs(splitPieces);
+  // Stopping is decided per curve, as when curves were the tasks: a curve with a piece begun is
+  // finished, the others fail named; progress counts finished curves.
+  std::atomic<bool> stopped{ false };
+  std::atomic<std::size_t> done{ 0 };
+  const std::unique_ptr<std::atomic<int>[]> remaining(new std::atomic<int>[todo.size()]);
+  const std::unique_ptr<std::atomic<bool>[]> begun(new std::atomic<bool>[todo.size()]);
+  for (std::size_t k = 0; k < todo.size(); ++k)
+  {
+    remaining[k] = split[k] ? pieces[k] : 1;
+    begun[k] = false;
+  }
+  const std::thread::id caller = std::this_thread::get_id();
   // Each arena slot has its own tracer: this one for slot 0, a helper for each other.
   RunTasksBySlot(workers,
-    todo.size(),
-    [&](int slot, std::size_t k)
+    tasks.size(),
+    [&](int slot, std::size_t t)
     {
-      traceOne(
-        slot == 0 ? *this : *this->Helpers[slot - 1], k, std::this_thread::get_id() == caller);
+      const std::size_t k = tasks[t].K, c = todo[k];
+      const int piece = tasks[t].Piece;
+      const int curveId = curves[c]->CurveId;
+      if (!begun[k].load(std::memory_order_acquire))
+      {
+        if (stopped.load(std::memory_order_acquire))
+        {
+          (piece < 0 ? errors[c] : legs[firstLeg[k] + piece].Error) =
+            CurveLabel(curveId) + ": not traced (aborted)";
+          return;
+        }
+        begun[k].store(true, std::memory_order_release);
+      }
+      CurveTracer& tracer = slot == 0 ? *this : *this->Helpers[slot - 1];
+      if (piece < 0)
+      {
+        tracer.TracePieces(
+          keys[c].Points, keys[c].Type, keys[c].Closed, out[c], errors[c], curveId);
+      }
+      else
+      {
+        tracer.ComputePiece(
+          keys[c].Points, keys[c].Type, piece, curveId, legs[firstLeg[k] + piece]);
+      }
+      if (remaining[k].fetch_sub(1, std::memory_order_acq_rel) != 1)
+      {
+        return; // the curve's last piece reports it
+      }
+      const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
+      if (std::this_thread::get_id() == caller && progress &&
+        !progress(static_cast<double>(finished) / todo.size()))
+      {
+        stopped.store(true, std::memory_order_release);
+      }
+    });
+  // The split curves assembled from their pieces in order, and the written forms, curves in
+  // parallel.
+  RunTasksBySlot(workers,
+    todo.size(),
+    [&](int, std::size_t k)
+    {
+      const std::size_t c = todo[k];
+      for (int i = 0; split[k] && errors[c].empty() && i < pieces[k]; ++i)
+      {
+        PieceLegs& piece = legs[firstLeg[k] + static_cast<std::size_t>(i)];
+        if (!piece.Ok)
+        {
+          out[c].Clear();
+          errors[c] = piece.Error;
+          break;
+        }
+        this->AppendPiece(keys[c].Points, keys[c].Type, i, piece, out[c]);
+        piece = PieceLegs(); // its paths are in the curve now
+        if (i + 1 == pieces[k] && keys[c].Closed)
+        {
+          out[c].DropRepeatedClosingPoint();
+        }
+      }
+      if (errors[c].empty() && this->KeepWrittenForms)
+      {
+        ComputeWrittenForms(this->Solver.GetMesh(), out[c]);
+      }
     });
   for (std::size_t c : todo)
   {

@@ -91,8 +91,11 @@ public:
   /// solver computes it: the Bounded and Exact methods are functions of the leg's ends (the
   /// surface's site graph and path cache are shared and thread-safe). The locally shortest method
   /// is not (its edge search breaks ties by a landmark table each solver builds lazily), so it
-  /// traces on this thread only. `progress` (may be empty) is called on the calling thread with the
-  /// fraction done; returning false stops the tracing (the curves not traced get a message).
+  /// traces on this thread only. A curve holding a large share of all the pieces to trace
+  /// (polygon legs, Bezier segments) is split into them, so one long curve is traced on every
+  /// thread; the others are one task each. `progress` (may be empty) is called on the calling
+  /// thread with the fraction done; returning false stops the tracing (the curves not traced get a
+  /// message).
   void TraceCurves(const std::vector<const ControlCurve*>& curves,
     int threads,
     std::vector<CurveTrace>& out,
@@ -138,6 +141,40 @@ private:
   /// Traces `key` (without the memory).
   bool TraceNew(const CurveKey& key, CurveTrace& out, int curveId, std::string& error);
   void Remember(CurveKey&& key, const CurveTrace& trace);
+  /// The geodesics of one piece of a curve (a polygon's leg, or a Bezier segment's 3 x 2^Resolution
+  /// legs), computed apart from the curve's other pieces; Error names the curve and the piece.
+  struct PieceLegs
+  {
+    std::vector<GeodesicPath> Legs;
+    bool Ok = false;
+    std::string Error;
+  };
+  /// The number of pieces of a curve of `points`, or -1 and a message when their number does
+  /// not make such a curve.
+  int CountPieces(const std::vector<CanonicalPoint>& points,
+    CurveType type,
+    bool closed,
+    int curveId,
+    std::string& error) const;
+  /// Computes piece `piece` of a curve (with this tracer's solver) into `legs`.
+  bool ComputePiece(const std::vector<CanonicalPoint>& points,
+    CurveType type,
+    int piece,
+    int curveId,
+    PieceLegs& legs);
+  /// Appends a computed piece to `out` (pieces in order: the trace Trace() gives).
+  void AppendPiece(const std::vector<CanonicalPoint>& points,
+    CurveType type,
+    int piece,
+    const PieceLegs& legs,
+    CurveTrace& out) const;
+  /// A polygon or Bezier spline traced piece after piece on this thread.
+  bool TracePieces(const std::vector<CanonicalPoint>& points,
+    CurveType type,
+    bool closed,
+    CurveTrace& out,
+    std::string& error,
+    int curveId);
   /// Threads to use for `threads` (0: all cores) on `tasks` tasks, with helpers ready for them.
   int PrepareHelpers(int threads, std::size_t tasks);
   /// The geodesic between a and b, computed from whichever of the two comes first in a fixed
@@ -192,7 +229,7 @@ private:
   bool KeepWrittenForms = false;
   std::size_t Recalled = 0;
   std::size_t MemoryPoints = 0; ///< traced points held by Memory
-  GeodesicPath Path;
+  PieceLegs Legs;               ///< TracePieces' piece being appended
   std::vector<CanonicalPoint> Refined;
   /// TraceCurves()'s other tracers, one per extra thread (built on first use).
   std::vector<std::unique_ptr<CurveTracer>> Helpers;

@@ -1,6 +1,7 @@
 #include "Geodesic/SurfaceSiteGraph.h"
 
 #include "Mesh/MeshTopology.h"
+#include "Mesh/ParallelRange.h"
 #include "Mesh/PerMeshRegistry.h"
 
 #include <algorithm>
@@ -12,38 +13,76 @@
 #include <queue>
 #include <random>
 
+#include <tbb/parallel_invoke.h>
+
 namespace boolsurf
 {
 
 namespace
 {
-/// Vertex adjacency over the edges of usable triangles (compressed rows, mesh ids).
+/// The sorted, distinct neighbours of vertex v over the edges of usable triangles, into `row`.
+void VertexRow(const TriangleMesh& mesh, int v, std::vector<int>& row)
+{
+  row.clear();
+  for (int corner : mesh.GetVertexCorners(v))
+  {
+    const int t = corner / 3, k = corner % 3;
+    if (mesh.IsUsable(t))
+    {
+      const Triangle& tri = mesh.GetTriangle(t);
+      row.push_back(tri[(k + 1) % 3]);
+      row.push_back(tri[(k + 2) % 3]);
+    }
+  }
+  std::sort(row.begin(), row.end());
+  row.erase(std::unique(row.begin(), row.end()), row.end());
+}
+
+/// Meshes below this many vertices build their graph on one thread (waking others costs more).
+constexpr int ParallelVertices = 50000;
+
+/// Vertex adjacency over the edges of usable triangles (compressed rows, mesh ids). Rows are
+/// counted, then written, each vertex's by one thread: the same rows on any number of threads.
 void BuildAdjacency(const TriangleMesh& mesh,
   std::vector<int>& offsets,
   std::vector<int>& neighbors)
 {
   const int nv = mesh.GetNumberOfVertices();
+  const bool parallel = nv >= ParallelVertices;
   offsets.assign(nv + 1, 0);
-  neighbors.clear();
-  std::vector<int> row;
+  ParallelBlocks(
+    0,
+    parallel,
+    nv,
+    [&](int first, int last)
+    {
+      std::vector<int> row;
+      for (int v = first; v < last; ++v)
+      {
+        VertexRow(mesh, v, row);
+        offsets[v + 1] = static_cast<int>(row.size());
+      }
+    },
+    4096);
   for (int v = 0; v < nv; ++v)
   {
-    row.clear();
-    for (int corner : mesh.GetVertexCorners(v))
-    {
-      const int t = corner / 3, k = corner % 3;
-      if (mesh.IsUsable(t))
-      {
-        const Triangle& tri = mesh.GetTriangle(t);
-        row.push_back(tri[(k + 1) % 3]);
-        row.push_back(tri[(k + 2) % 3]);
-      }
-    }
-    std::sort(row.begin(), row.end());
-    row.erase(std::unique(row.begin(), row.end()), row.end());
-    neighbors.insert(neighbors.end(), row.begin(), row.end());
-    offsets[v + 1] = static_cast<int>(neighbors.size());
+    offsets[v + 1] += offsets[v];
   }
+  neighbors.resize(offsets[nv]);
+  ParallelBlocks(
+    0,
+    parallel,
+    nv,
+    [&](int first, int last)
+    {
+      std::vector<int> row;
+      for (int v = first; v < last; ++v)
+      {
+        VertexRow(mesh, v, row);
+        std::copy(row.begin(), row.end(), neighbors.begin() + offsets[v]);
+      }
+    },
+    4096);
 }
 } // namespace
 
@@ -53,16 +92,37 @@ SurfaceSiteGraph::SurfaceSiteGraph(const TriangleMesh& mesh, int hops)
   , MeshSerial(mesh.GetSerial())
 {
   const auto begin = std::chrono::steady_clock::now();
-  std::vector<int> offsets, neighbors;
-  BuildAdjacency(mesh, offsets, neighbors);
-  this->ChooseSites(offsets, neighbors, hops > 0 ? hops : DefaultHops(mesh.GetNumberOfVertices()));
-  this->GrowCells(offsets, neighbors);
-  this->BuildArcs(offsets, neighbors);
-  this->ComputeSiteNormals();
-  const MeshTopology topology = MeshTopology::Compute(mesh);
-  this->AllSpheres = std::all_of(topology.Components.begin(),
-    topology.Components.end(),
-    [](const ComponentTopology& c) { return c.BoundaryLoops == 0 && c.EulerCharacteristic == 2; });
+  // The topology (whether every component is a sphere) does not depend on the sites: it is
+  // computed on another thread while the sites, cells and arcs are built.
+  const auto sites = [&]
+  {
+    std::vector<int> offsets, neighbors;
+    BuildAdjacency(mesh, offsets, neighbors);
+    this->ChooseSites(
+      offsets, neighbors, hops > 0 ? hops : DefaultHops(mesh.GetNumberOfVertices()));
+    this->GrowCells(offsets, neighbors);
+    this->BuildArcs(offsets, neighbors);
+    this->ComputeSiteNormals();
+  };
+  bool allSpheres = false;
+  const auto topology = [&]
+  {
+    const MeshTopology t = MeshTopology::Compute(mesh);
+    allSpheres = std::all_of(t.Components.begin(),
+      t.Components.end(),
+      [](const ComponentTopology& c)
+      { return c.BoundaryLoops == 0 && c.EulerCharacteristic == 2; });
+  };
+  if (mesh.GetNumberOfVertices() >= ParallelVertices)
+  {
+    tbb::parallel_invoke(sites, topology);
+  }
+  else
+  {
+    sites();
+    topology();
+  }
+  this->AllSpheres = allSpheres;
   this->BuildSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   static std::atomic<std::uint64_t> builds{ 0 };
@@ -198,30 +258,57 @@ void SurfaceSiteGraph::BuildArcs(const std::vector<int>& offsets, const std::vec
       return A != o.A ? A < o.A : B != o.B ? B < o.B : Length < o.Length;
     }
   };
-  std::vector<Candidate> candidates;
+  // The edges between cells, in vertex order (counted per vertex, then written in parallel:
+  // the same list as one thread makes, so the sort below keeps the same first edge per run).
   const int nv = this->Mesh.GetNumberOfVertices();
+  const bool parallel = nv >= ParallelVertices;
+  const auto crosses = [&](int u, int i)
+  {
+    const int a = this->Cell[u], b = this->Cell[neighbors[i]];
+    return a >= 0 && b >= 0 && b != a;
+  };
+  std::vector<int> first(nv + 1, 0);
+  ParallelRange(
+    0,
+    parallel,
+    nv,
+    [&](int u)
+    {
+      int count = 0;
+      for (int i = offsets[u]; i < offsets[u + 1]; ++i)
+      {
+        count += crosses(u, i) ? 1 : 0;
+      }
+      first[u + 1] = count;
+    },
+    4096);
   for (int u = 0; u < nv; ++u)
   {
-    const int a = this->Cell[u];
-    if (a < 0)
-    {
-      continue;
-    }
-    for (int i = offsets[u]; i < offsets[u + 1]; ++i)
-    {
-      const int w = neighbors[i];
-      const int b = this->Cell[w];
-      if (b >= 0 && b != a)
-      {
-        candidates.push_back({ a,
-          b,
-          this->SiteDistance[u] + Distance(this->Mesh.GetPosition(u), this->Mesh.GetPosition(w)) +
-            this->SiteDistance[w],
-          u,
-          w });
-      }
-    }
+    first[u + 1] += first[u];
   }
+  std::vector<Candidate> candidates(first[nv]);
+  ParallelRange(
+    0,
+    parallel,
+    nv,
+    [&](int u)
+    {
+      int k = first[u];
+      for (int i = offsets[u]; i < offsets[u + 1]; ++i)
+      {
+        if (crosses(u, i))
+        {
+          const int w = neighbors[i];
+          candidates[k++] = { this->Cell[u],
+            this->Cell[w],
+            this->SiteDistance[u] + Distance(this->Mesh.GetPosition(u), this->Mesh.GetPosition(w)) +
+              this->SiteDistance[w],
+            u,
+            w };
+        }
+      }
+    },
+    4096);
   std::sort(candidates.begin(), candidates.end());
   const int ns = static_cast<int>(this->Sites.size());
   this->ArcOffsets.assign(ns + 1, 0);

@@ -46,6 +46,7 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
     buffers.Threads);
   const Clock::time_point extracted = Clock::now();
   WriteRegion(surface, arr, buffers.Region, region, buffers.Threads);
+  const Clock::time_point regionWritten = Clock::now();
   const std::vector<BoundaryPolyline> loops = ExtractRegionBoundary(arr.Patches, selected);
   WriteBoundary(
     loops,
@@ -60,6 +61,7 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
     true,
     boundary);
   const Clock::time_point written = Clock::now();
+  Clock::time_point controlsWritten = written;
   if (solver)
   {
     BezierPieces bezier(arr, sources); // each Bezier segment cut once for both outputs
@@ -113,6 +115,7 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
     if (ok)
     {
       WriteControlSubCurves(buffers.SubCurves, boolsurf::names::BoundaryLoop, true, controls);
+      controlsWritten = Clock::now();
       ok =
         ClippedControlCurves(*solver, arr, sources, selected, buffers.SubCurves, cutError, &bezier);
     }
@@ -130,7 +133,12 @@ bool WriteSelectedCells(const vtkSurfaceInput& surface,
   {
     times->Extraction = Milliseconds(start, extracted);
     times->Output = Milliseconds(extracted, written);
-    times->ControlCurves = Milliseconds(written, Clock::now());
+    const Clock::time_point end = Clock::now();
+    times->ControlCurves = Milliseconds(written, end);
+    times->Ports[0] = Milliseconds(start, regionWritten);
+    times->Ports[1] = Milliseconds(regionWritten, written);
+    times->Ports[2] = Milliseconds(written, controlsWritten);
+    times->Ports[3] = Milliseconds(controlsWritten, end);
   }
   return true;
 }

@@ -39,6 +39,11 @@ struct SelectionOutputTimes
   double Extraction = 0;    ///< finding the region's triangles and points
   double Output = 0;        ///< region and boundary polydata
   double ControlCurves = 0; ///< ports 2 and 3
+  /// The same time per output port (what a user pays for each port ParaView shows): the
+  /// region's triangles found and written (port 0), its boundary loops (1), the boundary's
+  /// control curves with the Bezier cuts both control outputs share (2), the clipped open
+  /// curves (3).
+  double Ports[4] = { 0, 0, 0, 0 };
 };
 
 /// Writes the cells with selected[cell] != 0: `region` (the refined triangles with

@@ -7,9 +7,11 @@
 #include "Mesh/ProceduralMeshes.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <queue>
 #include <random>
 #include <utility>
@@ -175,6 +177,47 @@ TEST(SurfaceSiteGraph, SharedPerSurfaceAndDeterministic)
   {
     ASSERT_EQ(ga->GetCell(v), gb->GetCell(v));
   }
+}
+
+// A mesh large enough that the graph is built on several threads (adjacency rows, arc
+// candidates, the topology beside the sites) gives the graph one thread builds.
+TEST(SurfaceSiteGraph, SameGraphOnOneThread)
+{
+  const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 400, 140)); // 56,000 vertices
+  const SurfaceSiteGraph parallel(mesh);
+  std::unique_ptr<SurfaceSiteGraph> serial;
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    serial = std::make_unique<SurfaceSiteGraph>(mesh);
+  }
+  ASSERT_EQ(serial->GetNumberOfSites(), parallel.GetNumberOfSites());
+  ASSERT_EQ(serial->GetNumberOfArcs(), parallel.GetNumberOfArcs());
+  EXPECT_EQ(serial->IsAllSpheres(), parallel.IsAllSpheres());
+  for (int s = 0; s < parallel.GetNumberOfSites(); ++s)
+  {
+    ASSERT_EQ(serial->GetSite(s), parallel.GetSite(s));
+  }
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    ASSERT_EQ(serial->GetCell(v), parallel.GetCell(v));
+  }
+  // The same route, vertex for vertex, between two far points.
+  SurfaceSiteGraph::Scratch a, b;
+  std::vector<int> routeA, routeB;
+  const auto route =
+    [&](const SurfaceSiteGraph& g, SurfaceSiteGraph::Scratch& scratch, std::vector<int>& vertices)
+  {
+    const int from = 0, to = mesh.GetNumberOfVertices() / 2 + 17;
+    return g.FindRoute({ { from, 0.0 } },
+      mesh.GetPosition(from),
+      { { to, 0.0 } },
+      mesh.GetPosition(to),
+      {},
+      scratch,
+      vertices);
+  };
+  EXPECT_EQ(route(*serial, a, routeA), route(parallel, b, routeB));
+  EXPECT_EQ(routeA, routeB);
 }
 
 // The route's distortion: on a flat square the geodesic is the straight segment, so a route's

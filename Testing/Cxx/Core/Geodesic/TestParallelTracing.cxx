@@ -162,3 +162,48 @@ TEST(ParallelTracing, StopsWhenAsked)
     EXPECT_NE(errors[c].find("curve " + std::to_string(100 + c)), std::string::npos) << errors[c];
   }
 }
+
+// One long curve (a polygon of 40 far-apart points, a closed Bezier spline of 8 segments) is
+// shared between threads piece by piece: each is still, bit for bit, the curve one thread
+// traces.
+TEST(ParallelTracing, OneLongCurveOnEveryThread)
+{
+  const MeshData torus = MakeTorus(1.0, 0.35, 96, 40);
+  const TriangleMesh mesh(torus.Positions, torus.Triangles);
+  std::mt19937 rng(11);
+  std::vector<ControlCurve> curves(2);
+  for (int k = 0; k < 40; ++k)
+  {
+    curves[0].Points.push_back(RandomPoint(mesh, rng));
+  }
+  for (int k = 0; k < 24; ++k)
+  {
+    curves[1].Points.push_back(RandomPoint(mesh, rng));
+  }
+  curves[0].Type = CurveType::GeodesicPolygon;
+  curves[1].Type = CurveType::CubicBezier;
+  for (int c = 0; c < 2; ++c)
+  {
+    curves[c].Closed = true;
+    curves[c].CurveId = c;
+    CurveTracer single(mesh);
+    CurveTrace expected;
+    std::string expectedError;
+    ASSERT_TRUE(single.Trace(curves[c].Points,
+      curves[c].Type,
+      curves[c].Closed,
+      expected,
+      expectedError,
+      curves[c].CurveId))
+      << expectedError;
+    for (int threads : { 2, 4 })
+    {
+      CurveTracer parallel(mesh);
+      std::vector<CurveTrace> traces;
+      std::vector<std::string> errors;
+      parallel.TraceCurves({ &curves[c] }, threads, traces, errors);
+      ASSERT_TRUE(errors[0].empty()) << errors[0];
+      ExpectSameTrace(traces[0], expected, c);
+    }
+  }
+}
