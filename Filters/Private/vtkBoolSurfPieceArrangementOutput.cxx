@@ -7,8 +7,10 @@
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
@@ -30,6 +32,11 @@ void WritePieceArrangement(const PieceMesh& piece,
   vtkNew<vtkIntArray> cellOf, source;
   cellOf->SetName(names::ArrangementCell);
   source->SetName(names::SourceTriangle);
+  vtkNew<vtkIdTypeArray> triangleId;
+  vtkNew<vtkDoubleArray> barycentric;
+  triangleId->SetName(names::TriangleId);
+  barycentric->SetName(names::Barycentric);
+  barycentric->SetNumberOfComponents(2);
   // Output point of each refined point, made on first use (a piece uses few of the refined
   // points of its ring).
   std::vector<vtkIdType> outputPoint(static_cast<std::size_t>(arr.GetNumberOfPoints()), -1);
@@ -55,6 +62,10 @@ void WritePieceArrangement(const PieceMesh& piece,
           {
             const Vec3 x = arr.GetPosition(mesh, corners[k]);
             id = points->InsertNextPoint(x.x, x.y, x.z);
+            // On global triangle ids; a mesh vertex names one of its triangles in the piece.
+            const SurfacePoint p = arr.GetPointSurface(mesh, corners[k]);
+            triangleId->InsertNextValue(piece.GlobalTriangle[p.Triangle]);
+            barycentric->InsertNextTuple2(p.U, p.V);
           }
           ids[k] = id;
         }
@@ -67,6 +78,8 @@ void WritePieceArrangement(const PieceMesh& piece,
   output->SetPolys(polys);
   output->GetCellData()->AddArray(cellOf);
   output->GetCellData()->AddArray(source);
+  output->GetPointData()->AddArray(triangleId);
+  output->GetPointData()->AddArray(barycentric);
   vtkNew<vtkIntArray> cells;
   cells->SetName(names::NumberOfCells);
   cells->InsertNextValue(run.GetMerged().NumberOfCells);

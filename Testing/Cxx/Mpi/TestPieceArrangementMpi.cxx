@@ -190,6 +190,25 @@ void CompareOutputWithWhole(const TriangleMesh& mesh,
     Fail(rank, what + ": output arrays missing or wrong NumberOfCells");
     return;
   }
+  vtkDataArray* pointTriangle = output->GetPointData()->GetArray("TriangleId");
+  vtkDataArray* pointBarycentric = output->GetPointData()->GetArray("Barycentric");
+  if (!pointTriangle || !pointBarycentric)
+  {
+    Fail(rank, what + ": output point arrays missing");
+    return;
+  }
+  for (vtkIdType p = 0; p < output->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    output->GetPoint(p, x);
+    const double* uv = pointBarycentric->GetTuple2(p);
+    const Vec3 y = mesh.Evaluate(static_cast<int>(pointTriangle->GetTuple1(p)), uv[0], uv[1]);
+    if (Length(y - Vec3{ x[0], x[1], x[2] }) > 1e-12)
+    {
+      Fail(rank, what + ": output point " + std::to_string(p) + " is not at its surface point");
+      return;
+    }
+  }
   vtkIdType i = 0;
   for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
   {
