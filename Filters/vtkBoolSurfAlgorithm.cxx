@@ -64,7 +64,7 @@ vtkBoolSurfAlgorithm::~vtkBoolSurfAlgorithm() = default;
 void vtkBoolSurfAlgorithm::RecordFailure(const std::string&, const std::vector<vtkPolyData*>&) {}
 
 //------------------------------------------------------------------------------
-bool vtkBoolSurfAlgorithm::ExecutePiece(vtkPolyData*,
+bool vtkBoolSurfAlgorithm::ExecutePiece(const std::vector<vtkPolyData*>&,
   const std::vector<vtkPolyData*>&,
   std::string&)
 {
@@ -233,7 +233,15 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
     : nullptr;
   if (this->ExecutesOnPieces() && vtkBoolSurfSurfacePiece::IsDistributed(controller, local))
   {
-    return this->RunOnPiece(local, outputVector);
+    std::vector<vtkPolyData*> locals(static_cast<std::size_t>(ports), nullptr);
+    for (int p = 0; p < ports; ++p)
+    {
+      if (inputVector[p]->GetNumberOfInformationObjects() > 0)
+      {
+        locals[p] = vtkPolyData::GetData(inputVector[p], 0);
+      }
+    }
+    return this->RunOnPiece(locals, outputVector);
   }
   // Every rank takes part in the gather first, before anything that may fail or return early
   // (see vtkBoolSurfRankGather); only the computing rank runs the filter.
@@ -293,7 +301,8 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
 }
 
 //------------------------------------------------------------------------------
-int vtkBoolSurfAlgorithm::RunOnPiece(vtkPolyData* local, vtkInformationVector* outputVector)
+int vtkBoolSurfAlgorithm::RunOnPiece(const std::vector<vtkPolyData*>& locals,
+  vtkInformationVector* outputVector)
 {
   std::vector<vtkPolyData*> outputs(static_cast<std::size_t>(this->GetNumberOfOutputPorts()));
   for (std::size_t p = 0; p < outputs.size(); ++p)
@@ -302,7 +311,7 @@ int vtkBoolSurfAlgorithm::RunOnPiece(vtkPolyData* local, vtkInformationVector* o
     boolsurf::EmptyPolyData(outputs[p]);
   }
   std::string error;
-  if (!this->ExecutePiece(local, outputs, error))
+  if (!this->ExecutePiece(locals, outputs, error))
   {
     for (vtkPolyData* output : outputs)
     {

@@ -80,9 +80,12 @@ protected:
   /// (port 0; see vtkBoolSurfSurfacePiece) returns true: when two or more ranks hold triangles
   /// of it, ExecutePiece() runs on every rank instead of gathering the inputs to the first.
   virtual bool ExecutesOnPieces() const { return false; }
-  /// The work of such a filter on this rank's piece `local` (possibly empty): called on every
-  /// rank, which must all take part in the same collective calls before anything can fail.
-  virtual bool ExecutePiece(vtkPolyData* local,
+  /// The work of such a filter on this rank's inputs: locals[p] is this rank's own data on
+  /// input port p, not gathered (locals[0] its piece of the surface, possibly empty; null for
+  /// an optional port left unconnected). A filter whose other inputs live on one rank only (the
+  /// traced curves, on the first) sends what the pieces need itself. Called on every rank,
+  /// which must all take part in the same collective calls before anything can fail.
+  virtual bool ExecutePiece(const std::vector<vtkPolyData*>& locals,
     const std::vector<vtkPolyData*>& outputs,
     std::string& error);
 
@@ -137,7 +140,7 @@ protected:
 
 private:
   /// RequestData for a surface distributed across ranks: ExecutePiece() on every rank.
-  int RunOnPiece(vtkPolyData* local, vtkInformationVector* outputVector);
+  int RunOnPiece(const std::vector<vtkPolyData*>& locals, vtkInformationVector* outputVector);
 
   std::vector<int> SurfacePorts{ 0 };
   std::vector<int> OptionalPorts;

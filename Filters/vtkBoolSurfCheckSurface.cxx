@@ -79,7 +79,7 @@ bool vtkBoolSurfCheckSurface::Execute(const std::vector<vtkPolyData*>& inputs,
 }
 
 //------------------------------------------------------------------------------
-bool vtkBoolSurfCheckSurface::ExecutePiece(vtkPolyData* local,
+bool vtkBoolSurfCheckSurface::ExecutePiece(const std::vector<vtkPolyData*>& locals,
   const std::vector<vtkPolyData*>& outputs,
   std::string& error)
 {
@@ -87,7 +87,7 @@ bool vtkBoolSurfCheckSurface::ExecutePiece(vtkPolyData* local,
   // every rank, and a failure (overlapping pieces) is known on every rank.
   vtkBoolSurfSurfacePiece piece;
   std::vector<std::string> warnings;
-  if (!piece.Build(vtkMultiProcessController::GetGlobalController(), local, error, warnings))
+  if (!piece.Build(vtkMultiProcessController::GetGlobalController(), locals[0], error, warnings))
   {
     return false;
   }

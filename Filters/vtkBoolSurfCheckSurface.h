@@ -79,7 +79,7 @@ protected:
   /// Under MPI with the surface split across ranks: each rank checks its own piece and the
   /// topology is combined across the shared border (vtkBoolSurfDistributedCheck.h).
   bool ExecutesOnPieces() const override { return true; }
-  bool ExecutePiece(vtkPolyData* local,
+  bool ExecutePiece(const std::vector<vtkPolyData*>& locals,
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
 

@@ -12,6 +12,7 @@
 // (vtkBoolSurfRingedPiece.h), checked against the ring Core's tests build. Prints, per rank, the
 // bytes it sent and received per message.
 #include "vtkBoolSurfPieceArrangement.h"
+#include "vtkBoolSurfPieceArrangementOutput.h"
 #include "vtkBoolSurfRingedPiece.h"
 
 #include "Arrangement/Arrangement.h"
@@ -28,6 +29,8 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCommunicator.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkMPIController.h>
 #include <vtkNew.h>
@@ -149,6 +152,92 @@ std::vector<int> NeighboursOf(const PieceMesh& piece, const std::vector<int>& ow
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   return ids;
+}
+
+/// Area of output triangle i (corners as the arrangement orders them).
+double OutputArea(vtkPolyData* output, vtkIdType i)
+{
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  output->GetPolys()->GetCellAtId(i, n, ids);
+  Vec3 x[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    double p[3];
+    output->GetPoint(ids[k], p);
+    x[k] = { p[0], p[1], p[2] };
+  }
+  return 0.5 * Length(Cross(x[1] - x[0], x[2] - x[0]));
+}
+
+/// This rank's part of Surface Arrangement's port 0 (vtkBoolSurfPieceArrangementOutput.h)
+/// against the whole surface's arrangement: per owned source triangle, the same refined
+/// triangles (areas bit for bit) in the same cells, in the same order.
+void CompareOutputWithWhole(const TriangleMesh& mesh,
+  const Arrangement& whole,
+  const PieceMesh& piece,
+  const vtkBoolSurfPieceArrangement& run,
+  int rank,
+  const std::string& what)
+{
+  vtkNew<vtkPolyData> output;
+  WritePieceArrangement(piece, run, output);
+  vtkDataArray* cells = output->GetCellData()->GetArray("ArrangementCell");
+  vtkDataArray* sources = output->GetCellData()->GetArray("SourceTriangle");
+  vtkDataArray* count = output->GetFieldData()->GetArray("NumberOfCells");
+  if (!cells || !sources || !count || count->GetTuple1(0) != whole.NumberOfCells)
+  {
+    Fail(rank, what + ": output arrays missing or wrong NumberOfCells");
+    return;
+  }
+  vtkDataArray* pointTriangle = output->GetPointData()->GetArray("TriangleId");
+  vtkDataArray* pointBarycentric = output->GetPointData()->GetArray("Barycentric");
+  if (!pointTriangle || !pointBarycentric)
+  {
+    Fail(rank, what + ": output point arrays missing");
+    return;
+  }
+  for (vtkIdType p = 0; p < output->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    output->GetPoint(p, x);
+    const double* uv = pointBarycentric->GetTuple2(p);
+    const Vec3 y = mesh.Evaluate(static_cast<int>(pointTriangle->GetTuple1(p)), uv[0], uv[1]);
+    if (Length(y - Vec3{ x[0], x[1], x[2] }) > 1e-12)
+    {
+      Fail(rank, what + ": output point " + std::to_string(p) + " is not at its surface point");
+      return;
+    }
+  }
+  vtkIdType i = 0;
+  for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
+  {
+    if (!piece.Owned[t])
+    {
+      continue;
+    }
+    const int g = piece.GlobalTriangle[t];
+    bool same = true;
+    ForEachRefinedTriangle(mesh,
+      whole,
+      g,
+      [&](int r)
+      {
+        same = same && i < output->GetNumberOfCells() && sources->GetTuple1(i) == g &&
+          cells->GetTuple1(i) == whole.CellOfTriangle(r) &&
+          OutputArea(output, i) == RefinedArea(mesh, whole, r);
+        ++i;
+      });
+    if (!same)
+    {
+      Fail(rank, what + ": output of triangle " + std::to_string(g) + " differs");
+      return;
+    }
+  }
+  if (i != output->GetNumberOfCells())
+  {
+    Fail(rank, what + ": output has triangles no owned triangle has");
+  }
 }
 
 /// This rank's owned triangles against the whole surface's arrangement.
@@ -296,6 +385,7 @@ void RunSplit(vtkMultiProcessController* controller,
     return;
   }
   CompareWithWhole(mesh, curves, whole, piece, run, rank, what);
+  CompareOutputWithWhole(mesh, whole, piece, run, rank, what);
   const vtkBoolSurfPieceArrangement::Traffic& bytes = run.GetTraffic();
   std::printf("%s, rank %d of %d: %d owned triangles; bytes sent/received: curves %zu/%zu, "
               "boundary records "

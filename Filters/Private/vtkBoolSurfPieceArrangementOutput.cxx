@@ -1,0 +1,89 @@
+#include "vtkBoolSurfPieceArrangementOutput.h"
+
+#include "vtkBoolSurfArrayNames.h"
+#include "vtkBoolSurfPieceArrangement.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <vector>
+
+namespace boolsurf
+{
+
+void WritePieceArrangement(const PieceMesh& piece,
+  const vtkBoolSurfPieceArrangement& run,
+  vtkPolyData* output)
+{
+  output->Initialize();
+  const Arrangement& arr = run.GetArrangement();
+  const TriangleMesh& mesh = piece.Mesh;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIntArray> cellOf, source;
+  cellOf->SetName(names::ArrangementCell);
+  source->SetName(names::SourceTriangle);
+  vtkNew<vtkIdTypeArray> triangleId;
+  vtkNew<vtkDoubleArray> barycentric;
+  triangleId->SetName(names::TriangleId);
+  barycentric->SetName(names::Barycentric);
+  barycentric->SetNumberOfComponents(2);
+  // Output point of each refined point, made on first use (a piece uses few of the refined
+  // points of its ring).
+  std::vector<vtkIdType> outputPoint(static_cast<std::size_t>(arr.GetNumberOfPoints()), -1);
+  // Local triangles are in ascending global order (PieceMesh), so the owned ones come out in
+  // the one-rank output's order of source triangles.
+  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  {
+    if (!piece.Owned[t])
+    {
+      continue;
+    }
+    ForEachRefinedTriangle(mesh,
+      arr,
+      t,
+      [&](int r)
+      {
+        const Triangle corners = arr.GetTriangle(mesh, r);
+        vtkIdType ids[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          vtkIdType& id = outputPoint[corners[k]];
+          if (id < 0)
+          {
+            const Vec3 x = arr.GetPosition(mesh, corners[k]);
+            id = points->InsertNextPoint(x.x, x.y, x.z);
+            // On global triangle ids; a mesh vertex names one of its triangles in the piece.
+            const SurfacePoint p = arr.GetPointSurface(mesh, corners[k]);
+            triangleId->InsertNextValue(piece.GlobalTriangle[p.Triangle]);
+            barycentric->InsertNextTuple2(p.U, p.V);
+          }
+          ids[k] = id;
+        }
+        polys->InsertNextCell(3, ids);
+        cellOf->InsertNextValue(run.GetGlobalCell(arr.CellOfTriangle(r)));
+        source->InsertNextValue(piece.GlobalTriangle[t]);
+      });
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  output->GetCellData()->AddArray(cellOf);
+  output->GetCellData()->AddArray(source);
+  output->GetPointData()->AddArray(triangleId);
+  output->GetPointData()->AddArray(barycentric);
+  vtkNew<vtkIntArray> cells;
+  cells->SetName(names::NumberOfCells);
+  cells->InsertNextValue(run.GetMerged().NumberOfCells);
+  output->GetFieldData()->AddArray(cells);
+}
+
+} // namespace boolsurf
