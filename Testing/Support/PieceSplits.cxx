@@ -1,5 +1,7 @@
 #include "Support/PieceSplits.h"
 
+#include "Geodesic/CurveTracer.h"
+
 #include <algorithm>
 #include <numeric>
 #include <queue>
@@ -133,6 +135,34 @@ PieceInput MakePiece(const TriangleMesh& mesh, const std::vector<int>& owner, in
     in.Ghost.push_back(owner[t] != p ? 1 : 0);
   }
   return in;
+}
+
+//------------------------------------------------------------------------------
+std::vector<TracedCurve> RandomGeodesicCurves(const TriangleMesh& mesh, unsigned seed, int count)
+{
+  CurveTracer tracer(mesh);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> triangle(0, mesh.GetNumberOfTriangles() - 1);
+  std::uniform_real_distribution<double> weight(0.1, 0.45);
+  std::vector<TracedCurve> curves;
+  for (int id = 0; static_cast<int>(curves.size()) < count && id < 4 * count; ++id)
+  {
+    std::vector<SurfacePoint> points(std::uniform_int_distribution<int>(3, 5)(rng));
+    for (SurfacePoint& x : points)
+    {
+      x = { triangle(rng), weight(rng), weight(rng) };
+    }
+    CurveTrace trace;
+    std::string error;
+    if (tracer.Trace(points, CurveType::GeodesicPolygon, true, trace, error, id) &&
+      trace.Curve.Points.size() >= 3)
+    {
+      trace.Curve.ShapeId = static_cast<int>(curves.size());
+      trace.Curve.CurveId = static_cast<int>(curves.size());
+      curves.push_back(trace.Curve);
+    }
+  }
+  return curves;
 }
 
 } // namespace testing

@@ -5,6 +5,7 @@
 #define boolsurf_PieceSplits_h
 
 #include "Distributed/PieceMesh.h"
+#include "Geodesic/TracedCurve.h"
 
 #include <vector>
 
@@ -23,6 +24,11 @@ std::vector<int> RegionOwners(const TriangleMesh& mesh, int pieces, unsigned see
 /// Piece p as a process would receive it: owned triangles plus every triangle sharing a vertex
 /// with them (ghosts), points and triangles in an order unrelated to the global one.
 PieceInput MakePiece(const TriangleMesh& mesh, const std::vector<int>& owner, int p);
+
+/// Up to `count` random closed geodesic polygons (3 to 5 control points inside random
+/// triangles), traced on `mesh`, one shape each: drawings crossing the pieces' borders many
+/// times.
+std::vector<TracedCurve> RandomGeodesicCurves(const TriangleMesh& mesh, unsigned seed, int count);
 
 } // namespace testing
 } // namespace boolsurf

@@ -48,6 +48,7 @@
 #include <vector>
 
 using namespace boolsurf;
+using boolsurf::testing::RandomGeodesicCurves;
 
 namespace
 {
@@ -60,33 +61,6 @@ void Fail(int rank, const std::string& what)
   {
     std::printf("rank %d: FAILED %s\n", rank, what.c_str());
   }
-}
-
-std::vector<TracedCurve> RandomGeodesicCurves(const TriangleMesh& mesh, unsigned seed, int count)
-{
-  CurveTracer tracer(mesh);
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> triangle(0, mesh.GetNumberOfTriangles() - 1);
-  std::uniform_real_distribution<double> weight(0.1, 0.45);
-  std::vector<TracedCurve> curves;
-  for (int id = 0; static_cast<int>(curves.size()) < count && id < 4 * count; ++id)
-  {
-    std::vector<SurfacePoint> points(std::uniform_int_distribution<int>(3, 5)(rng));
-    for (SurfacePoint& x : points)
-    {
-      x = { triangle(rng), weight(rng), weight(rng) };
-    }
-    CurveTrace trace;
-    std::string error;
-    if (tracer.Trace(points, CurveType::GeodesicPolygon, true, trace, error, id) &&
-      trace.Curve.Points.size() >= 3)
-    {
-      trace.Curve.ShapeId = static_cast<int>(curves.size());
-      trace.Curve.CurveId = static_cast<int>(curves.size());
-      curves.push_back(trace.Curve);
-    }
-  }
-  return curves;
 }
 
 double RefinedArea(const TriangleMesh& mesh, const Arrangement& arr, int r)

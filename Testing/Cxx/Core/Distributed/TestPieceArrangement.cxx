@@ -33,6 +33,7 @@
 
 using namespace boolsurf;
 using boolsurf::testing::MakePiece;
+using boolsurf::testing::RandomGeodesicCurves;
 using boolsurf::testing::RegionOwners;
 using boolsurf::testing::SlabOwners;
 
@@ -301,34 +302,6 @@ void ExpectSameForEverySplit(const TriangleMesh& mesh, const std::vector<TracedC
       ExpectSameAsWhole(mesh, curves, owner, count);
     }
   }
-}
-
-// Random closed geodesic polygons through points inside random triangles, one shape each.
-std::vector<TracedCurve> RandomGeodesicCurves(const TriangleMesh& mesh, unsigned seed, int count)
-{
-  CurveTracer tracer(mesh);
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> triangle(0, mesh.GetNumberOfTriangles() - 1);
-  std::uniform_real_distribution<double> weight(0.1, 0.45);
-  std::vector<TracedCurve> curves;
-  for (int id = 0; static_cast<int>(curves.size()) < count && id < 4 * count; ++id)
-  {
-    std::vector<SurfacePoint> points(std::uniform_int_distribution<int>(3, 5)(rng));
-    for (SurfacePoint& x : points)
-    {
-      x = { triangle(rng), weight(rng), weight(rng) };
-    }
-    CurveTrace trace;
-    std::string error;
-    if (tracer.Trace(points, CurveType::GeodesicPolygon, true, trace, error, id) &&
-      trace.Curve.Points.size() >= 3)
-    {
-      trace.Curve.ShapeId = static_cast<int>(curves.size());
-      trace.Curve.CurveId = static_cast<int>(curves.size());
-      curves.push_back(trace.Curve);
-    }
-  }
-  return curves;
 }
 
 TracedCurve FlatCurve(const FlatPolygonTracer& tracer, const std::vector<Vec2>& polygon, int shape)
