@@ -28,7 +28,7 @@ begin_phase 2 "ctest in build/ (every test)"
 end_phase
 
 # The C++ tests again under AddressSanitizer and UndefinedBehaviorSanitizer (a second build in
-# build-sanitize/: Core, the filters module and the two test executables).
+# build-sanitize/: Core, the filters module and the C++ test programs, MPI's included).
 begin_phase 3 "sanitizer build in build-sanitize/ (-fsanitize=address,undefined)"
 # Leak checks off (VTK keeps singletons alive until exit); test discovery runs the executables
 # at build time, so this holds for the build too.
@@ -36,11 +36,11 @@ export ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBOOLSURF_SANITIZE=ON \
   -DBOOLSURF_BUILD_BENCHMARKS=OFF -DPython3_EXECUTABLE=/usr/bin/python3 \
   > build-sanitize.log 2>&1 || { cat build-sanitize.log; exit 1; }
-cmake --build build-sanitize --target BoolSurfCoreTests BoolSurfFilterTests -- -j"$(nproc)" \
+cmake --build build-sanitize --target BoolSurfCxxTests -- -j"$(nproc)" \
   >> build-sanitize.log 2>&1 || { tail -50 build-sanitize.log; exit 1; }
 end_phase
 
-begin_phase 4 "sanitizer ctest in build-sanitize/ (Core and filter tests)"
+begin_phase 4 "sanitizer ctest in build-sanitize/ (Core, filter and MPI tests)"
 # BOOLSURF_SANITIZER_PASS: tests at scale (ten thousand segments in one triangle) run a
 # smaller drawing here; they ran at full size above.
 (cd build-sanitize && BOOLSURF_SANITIZER_PASS=1 ctest -j"$(nproc)" --output-on-failure --timeout 1800)
