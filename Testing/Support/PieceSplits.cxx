@@ -165,5 +165,28 @@ std::vector<TracedCurve> RandomGeodesicCurves(const TriangleMesh& mesh, unsigned
   return curves;
 }
 
+//------------------------------------------------------------------------------
+double RefinedArea(const TriangleMesh& mesh, const Arrangement& arr, int r)
+{
+  const Triangle c = arr.GetTriangle(mesh, r);
+  const Vec3 a = arr.GetPosition(mesh, c[0]);
+  return 0.5 * Length(Cross(arr.GetPosition(mesh, c[1]) - a, arr.GetPosition(mesh, c[2]) - a));
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> CellAreas(const TriangleMesh& mesh, const Arrangement& arr)
+{
+  std::vector<double> areas(arr.NumberOfCells, 0.0);
+  for (int r = 0; r < arr.GetNumberOfTriangles(); ++r)
+  {
+    const int c = arr.CellOfTriangle(r);
+    if (c >= 0)
+    {
+      areas[c] += RefinedArea(mesh, arr, r);
+    }
+  }
+  return areas;
+}
+
 } // namespace testing
 } // namespace boolsurf

@@ -4,6 +4,7 @@
 #ifndef boolsurf_PieceSplits_h
 #define boolsurf_PieceSplits_h
 
+#include "Arrangement/Arrangement.h"
 #include "Distributed/PieceMesh.h"
 #include "Geodesic/TracedCurve.h"
 
@@ -29,6 +30,13 @@ PieceInput MakePiece(const TriangleMesh& mesh, const std::vector<int>& owner, in
 /// triangles), traced on `mesh`, one shape each: drawings crossing the pieces' borders many
 /// times.
 std::vector<TracedCurve> RandomGeodesicCurves(const TriangleMesh& mesh, unsigned seed, int count);
+
+/// Area of refined triangle r of an arrangement computed on `mesh`.
+double RefinedArea(const TriangleMesh& mesh, const Arrangement& arr, int r);
+
+/// Area of each cell of an arrangement computed on `mesh` (the sum of its refined triangles'):
+/// what the pieces' merged cell areas must equal.
+std::vector<double> CellAreas(const TriangleMesh& mesh, const Arrangement& arr);
 
 } // namespace testing
 } // namespace boolsurf

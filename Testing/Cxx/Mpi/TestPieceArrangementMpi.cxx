@@ -48,7 +48,9 @@
 #include <vector>
 
 using namespace boolsurf;
+using boolsurf::testing::CellAreas;
 using boolsurf::testing::RandomGeodesicCurves;
+using boolsurf::testing::RefinedArea;
 
 namespace
 {
@@ -61,13 +63,6 @@ void Fail(int rank, const std::string& what)
   {
     std::printf("rank %d: FAILED %s\n", rank, what.c_str());
   }
-}
-
-double RefinedArea(const TriangleMesh& mesh, const Arrangement& arr, int r)
-{
-  const Triangle c = arr.GetTriangle(mesh, r);
-  const Vec3 a = arr.GetPosition(mesh, c[0]);
-  return 0.5 * Length(Cross(arr.GetPosition(mesh, c[1]) - a, arr.GetPosition(mesh, c[2]) - a));
 }
 
 /// This rank's owned triangles as a parallel reader or RedistributeDataSet would give them:
@@ -261,15 +256,7 @@ void CompareWithWhole(const TriangleMesh& mesh,
       Fail(rank, what + ": triangle " + std::to_string(piece.GlobalTriangle[t]) + " differs");
     }
   }
-  std::vector<double> areas(whole.NumberOfCells, 0.0);
-  for (int r = 0; r < whole.GetNumberOfTriangles(); ++r)
-  {
-    const int c = whole.CellOfTriangle(r);
-    if (c >= 0)
-    {
-      areas[c] += RefinedArea(mesh, whole, r);
-    }
-  }
+  const std::vector<double> areas = CellAreas(mesh, whole);
   for (int c = 0; c < whole.NumberOfCells; ++c)
   {
     if (std::abs(merged.CellArea[c] - areas[c]) > 1e-12 * std::max(1.0, areas[c]))

@@ -32,8 +32,10 @@
 #include <set>
 
 using namespace boolsurf;
+using boolsurf::testing::CellAreas;
 using boolsurf::testing::MakePiece;
 using boolsurf::testing::RandomGeodesicCurves;
+using boolsurf::testing::RefinedArea;
 using boolsurf::testing::RegionOwners;
 using boolsurf::testing::SlabOwners;
 
@@ -108,13 +110,6 @@ void RunDistributed(const TriangleMesh& mesh,
   ASSERT_TRUE(MergePieceSummaries(run.Summaries, direct, error)) << error;
   EXPECT_EQ(direct.GlobalCellOfLocal, run.Merged.GlobalCellOfLocal);
   EXPECT_EQ(direct.Crossings, run.Merged.Crossings);
-}
-
-double RefinedArea(const TriangleMesh& mesh, const Arrangement& arr, int r)
-{
-  const Triangle c = arr.GetTriangle(mesh, r);
-  const Vec3 a = arr.GetPosition(mesh, c[0]);
-  return 0.5 * Length(Cross(arr.GetPosition(mesh, c[1]) - a, arr.GetPosition(mesh, c[2]) - a));
 }
 
 // The merged graph's labels are the labeling stage's own (from the whole arrangement's patches):
@@ -219,15 +214,7 @@ void ExpectSameAsWhole(const TriangleMesh& mesh,
     }
   }
   EXPECT_EQ(mismatches, 0);
-  std::vector<double> areas(whole.NumberOfCells, 0.0);
-  for (int r = 0; r < whole.GetNumberOfTriangles(); ++r)
-  {
-    const int c = whole.CellOfTriangle(r);
-    if (c >= 0)
-    {
-      areas[c] += RefinedArea(mesh, whole, r);
-    }
-  }
+  const std::vector<double> areas = CellAreas(mesh, whole);
   for (int c = 0; c < whole.NumberOfCells; ++c)
   {
     EXPECT_NEAR(merged.CellArea[c], areas[c], 1e-12 * std::max(1.0, areas[c])) << "cell " << c;
