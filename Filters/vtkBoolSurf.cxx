@@ -1,6 +1,7 @@
 #include "vtkBoolSurf.h"
 
 #include "vtkBoolSurfArrayNames.h"
+#include "vtkBoolSurfArrayRanges.h"
 
 #include "Geodesic/CurveTracer.h"
 #include "Labeling/ArrangementLabelingInput.h"
@@ -264,6 +265,17 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
         cutSolvers))
   {
     return false;
+  }
+  // ParaView reads every array's ranges after the update: each output's arrays carry them,
+  // found in one pass per array here rather than in VTK's pass per component and kind.
+  const std::array<vtkPolyData*, 4> ports{ region, boundary, boundaryControls, clipped };
+  for (std::size_t p = 0; p < ports.size(); ++p)
+  {
+    const Clock::time_point start = Clock::now();
+    boolsurf::CacheDataRanges(ports[p], this->GetNumberOfThreads());
+    const double ranges = Milliseconds(start, Clock::now());
+    times.Ports[p] += ranges;
+    times.Output += ranges;
   }
   in.ControlCurvesTime = times.ControlCurves;
   std::copy(std::begin(times.Ports), std::end(times.Ports), in.PortTimes.begin());

@@ -1,6 +1,7 @@
 #include "vtkBoolSurfSurfaceCurves.h"
 
 #include "vtkBoolSurfArrayNames.h"
+#include "vtkBoolSurfArrayRanges.h"
 #include "vtkBoolSurfControlCurveWriter.h"
 #include "vtkBoolSurfControlCurves.h"
 
@@ -462,6 +463,8 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
     drawing->SetName(boolsurf::names::Drawing);
     drawing->InsertNextValue(1);
     port->GetFieldData()->AddArray(drawing);
+    // The ranges ParaView reads after every edit (see vtkBoolSurfArrayRanges.h).
+    boolsurf::CacheDataRanges(port, this->GetNumberOfThreads());
   }
   return true;
 }
