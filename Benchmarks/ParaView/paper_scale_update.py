@@ -16,10 +16,13 @@ and load, and the process's resident memory (current and peak) after each phase.
 
     pvpython Benchmarks/ParaView/paper_scale_update.py [--mesh PATH] [--edits N]
         [--scene paper|ten] [--scene-cache FILE.json] [--threads N] [--no-control-curves]
-        [--show]
+        [--show] [--stage-chain]
 
 --show also shows the four ports in a render view and renders once per edit (needs a display:
-xvfb-run -a). The plugin: $BOOLSURF_PLUGIN, else build/ beside Benchmarks/.
+Testing/run-with-xvfb.sh). --stage-chain runs the same edits through the stage filters (Trace
+Surface Curves -> Surface Arrangement -> Label Arrangement Cells -> Surface Boolean, the last
+one updated and its ports read; StageTimes are then absent and "the rest" is the whole chain).
+The plugin: $BOOLSURF_PLUGIN, else build/ beside Benchmarks/.
 """
 import argparse
 import os
@@ -99,6 +102,9 @@ def main():
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--no-control-curves", action="store_true")
     parser.add_argument("--show", action="store_true")
+    parser.add_argument("--stage-chain", action="store_true",
+                        help="the same edits through Trace Surface Curves, Surface Arrangement, "
+                        "Label Arrangement Cells and Surface Boolean instead of BoolSurf")
     args = parser.parse_args()
 
     print("cores %d, load %s" % (os.cpu_count(), load_average()))
@@ -120,9 +126,15 @@ def main():
                            ShapeIds=list(range(len(sizes))))
     curves.UpdatePipeline()
     memory.append(("curves source updated", memory_mb()))
-    one = BoolSurf(Surface=mesh, Curves=curves, Operation="SymmetricDifference", ShapeA=-1,
-                   ShapeB=-1, NumberOfThreads=args.threads,
-                   ComputeControlCurves=0 if args.no_control_curves else 1)
+    if args.stage_chain:
+        traced = TraceSurfaceCurves(Surface=mesh, Curves=curves)
+        arranged = SurfaceArrangement(Surface=mesh, Curves=traced, NumberOfThreads=args.threads)
+        labeled = LabelArrangementCells(Input=arranged)
+        one = SurfaceBoolean(Input=labeled, Operation="SymmetricDifference", ShapeA=-1, ShapeB=-1)
+    else:
+        one = BoolSurf(Surface=mesh, Curves=curves, Operation="SymmetricDifference", ShapeA=-1,
+                       ShapeB=-1, NumberOfThreads=args.threads,
+                       ComputeControlCurves=0 if args.no_control_curves else 1)
     t0 = time.perf_counter()
     one.UpdatePipeline()
     first = 1000 * (time.perf_counter() - t0)
@@ -131,7 +143,7 @@ def main():
     view = None
     if args.show:
         view = CreateView("RenderView")
-        for port in range(4):
+        for port in range(one.SMProxy.GetNumberOfOutputPorts()):
             Show(OutputPort(one, port), view)
         Render(view)
         memory.append(("shown and rendered", memory_mb()))
@@ -153,7 +165,7 @@ def main():
         if view is not None:
             Render(view)
         t4 = time.perf_counter()
-        times = stage_times(one)
+        times = {} if args.stage_chain else stage_times(one)
         rows["curves"].append(1000 * (t1 - t0))
         rows["update"].append(1000 * (t2 - t1))
         rows["info"].append(1000 * (t3 - t2))
