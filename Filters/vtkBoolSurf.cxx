@@ -291,6 +291,10 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
     boolsurf::AddSampleFields(in.Snaps, in.Bsc, region);
     boolsurf::AddSampleFields(in.Snaps, in.Bsc, boundary);
   }
+  // The field arrays written since (the label table has a component per shape); the arrays
+  // that hold their ranges already are skipped.
+  boolsurf::CacheDataRanges(region);
+  boolsurf::CacheDataRanges(boundary);
   return true;
 }
 

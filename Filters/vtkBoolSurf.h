@@ -20,8 +20,9 @@
  * `StageTimes` (milliseconds of this update per stage: Trace, Hash, Intersections,
  * Refinement, FloodFill, CellGraph, Labeling, Selection, Output, ControlCurves, Total; 0 for
  * the stages reused from the previous update; then the same update's time per output port,
- * Port0Region, Port1Boundary, Port2BoundaryControlCurves, Port3ClippedCurves); port 1 its boundary
- * as oriented polylines (region on the left) with point data `TriangleId`/`Barycentric`.
+ * Port0Region, Port1Boundary, Port2BoundaryControlCurves, Port3ClippedCurves, each with the
+ * one pass that stores its arrays' ranges for ParaView, also counted in Output); port 1 its
+ * boundary as oriented polylines (region on the left) with point data `TriangleId`/`Barycentric`.
  *
  * Speed: the surface's adjacency, topology, locator and geodesic search state are built once
  * and reused while only the curves or the operation change; an edit reuses the arrangement's
