@@ -1049,6 +1049,16 @@ double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
 }
 
 //------------------------------------------------------------------------------
+void ExactGeodesicSearch::AppendLitTriangles(std::vector<int>& out) const
+{
+  for (const Window& w : this->Windows)
+  {
+    out.push_back(w.Face);
+    out.push_back(w.Origin);
+  }
+}
+
+//------------------------------------------------------------------------------
 // Triangles around v from `from` (excluded) to `to` (included), the shorter way round.
 bool ExactGeodesicSearch::FanWalk(int v, int from, int to, std::vector<int>& out) const
 {

@@ -65,6 +65,12 @@ public:
   void SetPruning(bool on) { this->Pruning = on; }
   /// True when the last FindStrip stopped at the window budget.
   bool GetLastBudgetExceeded() const { return this->BudgetExceeded; }
+  /// Appends the triangles the last FindStrip read a window's geometry from: each window's
+  /// lit triangle and the triangle on its source side (with repeats). Every vertex the search
+  /// labelled, walked around or emitted from is a corner of one of them, so a search on a part
+  /// of a surface is the whole surface's search when these triangles and the triangles round
+  /// their corners are whole there (GeodesicPathSolver::SetPieceReads).
+  void AppendLitTriangles(std::vector<int>& out) const;
 
   ///@{
   /// Distance field mode (geodesic offsets): the exact distance from the nearest of `curves`
