@@ -100,8 +100,36 @@ bool PartialSurface::Build(std::string& error)
   {
     this->WholeLocal[v] = this->Whole.count(this->Piece.GlobalVertex[v]) ? 1 : 0;
   }
+  this->Exact.assign(this->Piece.Mesh.GetNumberOfTriangles(), 0);
   this->Built = true;
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool PartialSurface::IsExactTriangle(int t) const
+{
+  char& known = this->Exact[t];
+  if (known == 0)
+  {
+    const TriangleMesh& mesh = this->Piece.Mesh;
+    known = 1;
+    for (int v : mesh.GetTriangle(t))
+    {
+      if (!this->WholeLocal[v])
+      {
+        known = 2;
+        break;
+      }
+      for (int corner : mesh.GetVertexCorners(v))
+      {
+        for (int w : mesh.GetTriangle(corner / 3))
+        {
+          known = this->WholeLocal[w] ? known : 2;
+        }
+      }
+    }
+  }
+  return known == 1;
 }
 
 //------------------------------------------------------------------------------

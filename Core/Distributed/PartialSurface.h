@@ -51,6 +51,10 @@ public:
   /// Whether local vertex v of the built mesh is whole.
   bool IsWhole(int v) const { return this->WholeLocal[v] != 0; }
 
+  /// Whether local triangle t's corners are whole and so are the corners of the triangles
+  /// round them: a search reading t reads what it reads on the whole surface.
+  bool IsExactTriangle(int t) const;
+
   /// The global vertices to fetch whole before the reads `reads` (local triangles of the built
   /// mesh, with repeats) are the whole surface's: the corners of every read triangle and of
   /// every triangle round those corners that are not whole yet. Empty: the reads are exact.
@@ -71,7 +75,8 @@ private:
   bool Built = false;
   PieceMesh Piece;
   std::vector<char> WholeLocal;
-  mutable std::vector<char> Seen; // FindMissing's marks per local triangle and vertex
+  mutable std::vector<char> Seen;  // FindMissing's marks per local triangle and vertex
+  mutable std::vector<char> Exact; // per local triangle: 0 not known yet, 1 exact, 2 not
 };
 
 } // namespace boolsurf

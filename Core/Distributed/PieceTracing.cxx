@@ -101,11 +101,19 @@ bool PieceCurveTracer::Prepare(std::string& error)
     this->Tracer->SetResolution(this->Resolution);
     GeodesicPathSolver& solver = this->Tracer->GetPathSolver();
     solver.SetOptions(this->Options);
-    solver.SetPieceReads(&this->Reads);
     if (this->MeanEdgeLength >= 0.0)
     {
       solver.SetMeanEdgeLength(this->MeanEdgeLength);
     }
+    // A search that meets a triangle not whole yet goes on a margin's width further (walls
+    // there too), so one round fetches what the next search would meet next.
+    const double edge =
+      this->MeanEdgeLength >= 0.0 ? this->MeanEdgeLength : EstimateMeanEdgeLength(mesh);
+    const PartialSurface& surface = this->Surface;
+    solver.SetPieceReads(
+      &this->Reads,
+      [&surface](int t) { return surface.IsExactTriangle(t); },
+      this->MarginRings * edge);
     this->TracedSerial = mesh.GetSerial();
   }
   return true;

@@ -101,8 +101,10 @@ public:
   void SetResolution(int levels);
   /// The whole surface's EstimateMeanEdgeLength (the Bounded method's budget test).
   void SetMeanEdgeLength(double length);
-  /// Rings fetched round each vertex that must become whole (default 2: the fan and one more
-  /// ring, which the next legs' searches usually need too).
+  /// Rings fetched round each vertex that must become whole, and the width (in mean edge
+  /// lengths) a search goes on past the first triangle it finds missing (default 3: 2.3 rounds
+  /// per short curve on a 20k-triangle sphere, against 4.5 with 2 and 8.7 with 1, for as many
+  /// triangles).
   void SetMarginRings(int rings) { this->MarginRings = rings < 1 ? 1 : rings; }
 
   /// CurveTracer::Trace of control points on global triangle ids, on this piece, fetching
@@ -128,7 +130,7 @@ private:
   GeodesicPathOptions Options;
   int Resolution = 4;
   double MeanEdgeLength = -1.0;
-  int MarginRings = 2;
+  int MarginRings = 3;
   std::unique_ptr<CurveTracer> Tracer; // on Surface's mesh, rebuilt with it
   std::uint64_t TracedSerial = 0;
   std::vector<int> Reads, Missing, Absent;

@@ -127,10 +127,13 @@ void GeodesicPathSolver::SetOptions(const GeodesicPathOptions& options)
 }
 
 //------------------------------------------------------------------------------
-void GeodesicPathSolver::SetPieceReads(std::vector<int>* reads)
+void GeodesicPathSolver::SetPieceReads(std::vector<int>* reads,
+  std::function<bool(int)> exact,
+  double wallSlack)
 {
   this->PieceReads = reads;
   this->Straightener.SetStripRecorder(reads);
+  this->Exact.SetPieceTriangles(reads ? std::move(exact) : nullptr, wallSlack);
 }
 
 //------------------------------------------------------------------------------

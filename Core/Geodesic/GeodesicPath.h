@@ -37,6 +37,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -135,8 +136,14 @@ public:
   /// On such a mesh the components are the part's, not the surface's, so legs are not refused
   /// across them, and only the exact window search gives the strip: a leg whose search fails
   /// (a Bounded leg routed on the site graph, an Exact leg past its window budget) and the
-  /// LocallyShortest method fail with a message saying so. Null (default): the whole surface.
-  void SetPieceReads(std::vector<int>* reads);
+  /// LocallyShortest method fail with a message saying so. `exact(t)`, when given, tells
+  /// whether triangle t and the triangles round its corners are whole: the exact search then
+  /// stops soon after meeting one that is not (ExactGeodesicSearch::SetPieceTriangles, with
+  /// `wallSlack`), so that what it read is near the part it needs next, not the whole part it
+  /// holds. Null (default): the whole surface.
+  void SetPieceReads(std::vector<int>* reads,
+    std::function<bool(int)> exact = nullptr,
+    double wallSlack = 0.0);
   bool IsOnPiece() const { return this->PieceReads != nullptr; }
   /// The mean edge length the Bounded method's budget test uses (ExceedsBoundedWindows), for a
   /// solver on a part of a surface: the whole surface's EstimateMeanEdgeLength. Default: this
