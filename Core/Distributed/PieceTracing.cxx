@@ -1,5 +1,9 @@
 #include "Distributed/PieceTracing.h"
 
+#include <cstring>
+#include <map>
+#include <utility>
+
 namespace boolsurf
 {
 
@@ -16,6 +20,9 @@ GlobalCurveTrace ToGlobalTrace(const CurveTrace& trace,
   {
     GlobalCurvePoint g;
     g.Location = c.Location;
+    g.U = c.U; // as they are, whatever the location: PackGlobalTraces sends them
+    g.V = c.V;
+    g.T = c.T;
     if (c.Location == PointLocation::Vertex)
     {
       g.Id = vertex(c.Id);
@@ -25,23 +32,63 @@ GlobalCurveTrace ToGlobalTrace(const CurveTrace& trace,
       const std::array<int, 2> ends = mesh.GetEdgeVertices(c.Id);
       g.Id = vertex(ends[0]);
       g.Second = vertex(ends[1]);
-      g.T = c.T;
     }
     else
     {
       g.Id = triangleGlobalId.empty() ? c.Id : triangleGlobalId[c.Id];
-      g.U = c.U;
-      g.V = c.V;
     }
     out.Points.push_back(g);
   }
   out.Closed = trace.Curve.Closed;
+  out.ShapeId = trace.Curve.ShapeId;
+  out.CurveId = trace.Curve.CurveId;
   out.Segment = trace.Segment;
   out.ControlPoint = trace.ControlPoint;
   out.Parameter = trace.Parameter;
   out.OnCurve = trace.OnCurve;
   out.Length = trace.Length;
   return out;
+}
+
+//------------------------------------------------------------------------------
+// PackTracedCurves' layout: curves, then the table of the edges named, in the order the
+// points first name them (an edge by its global vertices, in its parameter's direction).
+void PackGlobalTraces(const std::vector<GlobalCurveTrace>& traces, WireBuffer& out)
+{
+  auto bits = [](double x)
+  {
+    long long b = 0;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  };
+  out.clear();
+  std::map<std::pair<int, int>, int> edgeIndex;
+  WireBuffer edges;
+  out.push_back(static_cast<long long>(traces.size()));
+  for (const GlobalCurveTrace& c : traces)
+  {
+    out.insert(out.end(),
+      { c.Closed ? 1 : 0, c.ShapeId, c.CurveId, static_cast<long long>(c.Points.size()) });
+    for (const GlobalCurvePoint& p : c.Points)
+    {
+      long long id = p.Id;
+      if (p.Location == PointLocation::Edge)
+      {
+        const auto found =
+          edgeIndex.emplace(std::make_pair(p.Id, p.Second), static_cast<int>(edgeIndex.size()));
+        if (found.second)
+        {
+          edges.push_back(p.Id);
+          edges.push_back(p.Second);
+        }
+        id = found.first->second;
+      }
+      out.insert(
+        out.end(), { static_cast<long long>(p.Location), id, bits(p.U), bits(p.V), bits(p.T) });
+    }
+  }
+  out.push_back(static_cast<long long>(edges.size() / 2));
+  out.insert(out.end(), edges.begin(), edges.end());
 }
 
 //------------------------------------------------------------------------------

@@ -19,6 +19,7 @@
 #define boolsurf_PieceTracing_h
 
 #include "Distributed/PartialSurface.h"
+#include "Distributed/PieceWire.h"
 #include "Geodesic/CurveTracer.h"
 
 #include <cstdint>
@@ -66,6 +67,7 @@ struct GlobalCurveTrace
 {
   std::vector<GlobalCurvePoint> Points;
   bool Closed = true;
+  int ShapeId = 0, CurveId = 0;
   std::vector<int> Segment, ControlPoint;
   std::vector<double> Parameter;
   std::vector<char> OnCurve;
@@ -78,6 +80,11 @@ GlobalCurveTrace ToGlobalTrace(const CurveTrace& trace,
   const TriangleMesh& mesh,
   const std::vector<int>& vertexGlobalId,
   const std::vector<int>& triangleGlobalId);
+
+/// Message 0 of PieceWire (the traced curves, to every piece) from traces on global ids: the
+/// very buffer PackTracedCurves gives for the same curves traced on the whole surface, so
+/// UnpackTracedCurves and RestrictCurvesToPiece read it as they are.
+void PackGlobalTraces(const std::vector<GlobalCurveTrace>& traces, WireBuffer& out);
 
 /// What the last PieceCurveTracer::Trace did.
 struct PieceTracingStatistics

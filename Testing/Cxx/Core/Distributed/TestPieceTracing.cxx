@@ -200,6 +200,8 @@ void ExpectSameTrace(const GlobalCurveTrace& a, const GlobalCurveTrace& b, const
     ASSERT_TRUE(a.Points[i] == b.Points[i]) << what << ", point " << i;
   }
   EXPECT_EQ(a.Closed, b.Closed) << what;
+  EXPECT_EQ(a.ShapeId, b.ShapeId) << what;
+  EXPECT_EQ(a.CurveId, b.CurveId) << what;
   EXPECT_EQ(a.Segment, b.Segment) << what;
   EXPECT_EQ(a.ControlPoint, b.ControlPoint) << what;
   EXPECT_EQ(a.Parameter, b.Parameter) << what;
@@ -212,7 +214,8 @@ constexpr int Resolution = 2;
 /// Every curve traced on the whole surface with `method`.
 std::vector<GlobalCurveTrace> TraceWhole(const TriangleMesh& mesh,
   const std::vector<TestCurve>& curves,
-  GeodesicMethod method)
+  GeodesicMethod method,
+  std::vector<TracedCurve>* traced = nullptr)
 {
   CurveTracer tracer(mesh);
   tracer.SetResolution(Resolution);
@@ -228,6 +231,10 @@ std::vector<GlobalCurveTrace> TraceWhole(const TriangleMesh& mesh,
       curves[c].Points, curves[c].Type, curves[c].Closed, trace, error, static_cast<int>(c)))
       << error;
     out.push_back(ToGlobalTrace(trace, mesh, {}, {}));
+    if (traced)
+    {
+      traced->push_back(trace.Curve);
+    }
   }
   return out;
 }
@@ -421,6 +428,42 @@ TEST(PieceTracing, ShortCurvesFetchAFewTrianglesOfALargeSphere)
       // A curve's neighbourhood, far below the surface.
       EXPECT_LT(maximumFetched, mesh.GetNumberOfTriangles() / 10);
     }
+  }
+}
+
+TEST(PieceTracing, MessageOfPieceTracesIsTheWholeSurfaces)
+{
+  // What a piece sends to every piece (message 0) is the buffer the whole surface's traces
+  // give, and reads back to the same curves and edges.
+  const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.4, 32, 16));
+  const std::vector<TestCurve> curves = RandomCurves(mesh, 23, 6, 100);
+  std::vector<TracedCurve> traced;
+  TraceWhole(mesh, curves, GeodesicMethod::Bounded, &traced);
+  WireBuffer expected;
+  PackTracedCurves(traced, mesh, {}, {}, expected);
+  WholeSurfaceFetcher fetcher(mesh);
+  PieceCurveTracer tracer(MakePiece(mesh, RegionOwners(mesh, 4, 3, -1), 1), fetcher);
+  tracer.SetResolution(Resolution);
+  tracer.SetMeanEdgeLength(EstimateMeanEdgeLength(mesh));
+  std::vector<GlobalCurveTrace> traces(curves.size());
+  for (size_t c = 0; c < curves.size(); ++c)
+  {
+    std::string error;
+    ASSERT_TRUE(tracer.Trace(
+      curves[c].Points, curves[c].Type, curves[c].Closed, traces[c], error, static_cast<int>(c)))
+      << error;
+  }
+  WireBuffer sent;
+  PackGlobalTraces(traces, sent);
+  EXPECT_EQ(sent, expected);
+  std::vector<TracedCurve> unpacked;
+  std::vector<std::array<int, 2>> edges;
+  std::string error;
+  ASSERT_TRUE(UnpackTracedCurves(sent, unpacked, edges, error)) << error;
+  ASSERT_EQ(unpacked.size(), traced.size());
+  for (size_t c = 0; c < traced.size(); ++c)
+  {
+    EXPECT_EQ(unpacked[c].Points.size(), traced[c].Points.size());
   }
 }
 
