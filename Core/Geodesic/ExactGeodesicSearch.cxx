@@ -970,13 +970,17 @@ bool ExactGeodesicSearch::Run(const std::vector<int>& endTriangles)
     std::pop_heap(this->Heap.begin(), this->Heap.end());
     const Event e = this->Heap.back();
     this->Heap.pop_back();
-    if (e.Key >= this->Best)
+    if (e.Key >= this->Best || (this->StoppedAtWall && e.Key > this->WallKey))
     {
       break;
     }
     if (e.Id >= 0)
     {
       if (e.D >= this->Best)
+      {
+        continue;
+      }
+      if (this->PieceExact && !this->PieceWindow(e))
       {
         continue;
       }
@@ -1009,6 +1013,26 @@ bool ExactGeodesicSearch::Run(const std::vector<int>& endTriangles)
 }
 
 //------------------------------------------------------------------------------
+// On a part of a surface: records the window's triangles; false (a wall, not propagated) when
+// its lit triangle's neighbourhood is not the surface's.
+bool ExactGeodesicSearch::PieceWindow(const Event& e)
+{
+  const Window& w = this->Windows[e.Id];
+  this->PieceRead.push_back(w.Face);
+  this->PieceRead.push_back(w.Origin);
+  if (this->PieceExact(w.Face))
+  {
+    return true;
+  }
+  if (!this->StoppedAtWall)
+  {
+    this->StoppedAtWall = true;
+    this->WallKey = e.Key + this->WallSlack;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
   const std::vector<int>& startTriangles,
   const CanonicalPoint& end,
@@ -1031,13 +1055,15 @@ double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
   this->HasStartPoint = false;
   this->LastVertexCount = 0;
   this->BudgetExceeded = false;
+  this->StoppedAtWall = false;
+  this->PieceRead.clear();
   strip.clear();
   for (int t : endTriangles)
   {
     this->EndMark[t] = this->CurrentStamp;
   }
   this->SeedFromPoint(start, startTriangles);
-  if (!this->Run(endTriangles))
+  if (!this->Run(endTriangles) || this->StoppedAtWall)
   {
     return -1.0;
   }
@@ -1046,6 +1072,21 @@ double ExactGeodesicSearch::FindStrip(const CanonicalPoint& start,
     return -1.0;
   }
   return this->Best;
+}
+
+//------------------------------------------------------------------------------
+void ExactGeodesicSearch::AppendLitTriangles(std::vector<int>& out) const
+{
+  if (this->PieceExact)
+  {
+    out.insert(out.end(), this->PieceRead.begin(), this->PieceRead.end());
+    return;
+  }
+  for (const Window& w : this->Windows)
+  {
+    out.push_back(w.Face);
+    out.push_back(w.Origin);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -65,6 +65,24 @@ public:
   void SetPruning(bool on) { this->Pruning = on; }
   /// True when the last FindStrip stopped at the window budget.
   bool GetLastBudgetExceeded() const { return this->BudgetExceeded; }
+  /// Searching a part of a surface (GeodesicPathSolver::SetPieceReads): `exact(t)` tells
+  /// whether the neighbourhood of triangle t (its neighbours, its corners' fans and theirs) is
+  /// the surface's there. A window lighting a triangle that is not is not propagated (a wall),
+  /// and once one is met the search goes on only while its queue is less than `slack` past
+  /// that window: FindStrip then returns -1 and GetLastStoppedAtWall is true. The walls it met
+  /// are what the caller must complete, nearest the target first. Null (default): the whole
+  /// surface.
+  void SetPieceTriangles(std::function<bool(int)> exact, double slack)
+  {
+    this->PieceExact = std::move(exact);
+    this->WallSlack = slack;
+  }
+  bool GetLastStoppedAtWall() const { return this->StoppedAtWall; }
+  /// Appends the triangles the last FindStrip read a window's geometry from, with repeats: on a
+  /// part of a surface, the lit and source-side triangles of the windows it propagated and the
+  /// walls it met; else those of every window it made. Every vertex the search labelled, walked
+  /// around or emitted from is a corner of one of them.
+  void AppendLitTriangles(std::vector<int>& out) const;
 
   ///@{
   /// Distance field mode (geodesic offsets): the exact distance from the nearest of `curves`
@@ -153,6 +171,7 @@ private:
     int kind,
     int parent) const;
   void Propagate(int id);
+  bool PieceWindow(const Event& e);
   void EmitFromVertex(int v);
   struct ShadowCorner
   {
@@ -250,6 +269,12 @@ private:
   std::vector<std::array<Vec3, 2>> FieldSources;
   std::vector<int> FieldVertices;
   std::function<bool(int)> Allowed;
+  // A part of a surface (SetPieceTriangles): the triangles read, and the walls.
+  std::function<bool(int)> PieceExact;
+  double WallSlack = 0.0;
+  bool StoppedAtWall = false;
+  double WallKey = 0.0;
+  std::vector<int> PieceRead;
 };
 
 } // namespace boolsurf

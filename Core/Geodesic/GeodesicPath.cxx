@@ -127,6 +127,16 @@ void GeodesicPathSolver::SetOptions(const GeodesicPathOptions& options)
 }
 
 //------------------------------------------------------------------------------
+void GeodesicPathSolver::SetPieceReads(std::vector<int>* reads,
+  std::function<bool(int)> exact,
+  double wallSlack)
+{
+  this->PieceReads = reads;
+  this->Straightener.SetStripRecorder(reads);
+  this->Exact.SetPieceTriangles(reads ? std::move(exact) : nullptr, wallSlack);
+}
+
+//------------------------------------------------------------------------------
 bool GeodesicPathSolver::Compute(const SurfacePoint& start,
   const SurfacePoint& end,
   GeodesicPath& path,
@@ -182,7 +192,16 @@ bool GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   this->Straightener.ForgetUnfolding();
   TrianglesOf(mesh, start, this->StartTriangles);
   TrianglesOf(mesh, end, this->EndTriangles);
-  bool connected = false;
+  // On a part of a surface, its components are not the surface's: a leg leaving the part is
+  // not refused but reads a triangle that is not whole there, which the caller fetches.
+  bool connected = this->PieceReads != nullptr;
+  if (this->PieceReads)
+  {
+    this->PieceReads->insert(
+      this->PieceReads->end(), this->StartTriangles.begin(), this->StartTriangles.end());
+    this->PieceReads->insert(
+      this->PieceReads->end(), this->EndTriangles.begin(), this->EndTriangles.end());
+  }
   for (int a : this->StartTriangles)
   {
     for (int b : this->EndTriangles)
@@ -234,8 +253,12 @@ bool GeodesicPathSolver::Compute(const CanonicalPoint& startIn,
   }
   else if (!this->FindStripByMethod(start, end))
   {
-    error = "no triangle strip joins " + Describe(start) + " and " + Describe(end) +
-      " although they share a component (corrupt adjacency?)";
+    error = this->PieceReads
+      ? "on a piece of the surface, the leg from " + Describe(start) + " to " + Describe(end) +
+        " needs more than the exact window search within its budget (the site-graph route, the " +
+        "edge path or the dual search, which need the whole surface)"
+      : "no triangle strip joins " + Describe(start) + " and " + Describe(end) +
+        " although they share a component (corrupt adjacency?)";
     return false;
   }
   if (!this->Straighten(start, end))
@@ -289,6 +312,14 @@ bool GeodesicPathSolver::FindStripByMethod(const CanonicalPoint& start, const Ca
     this->Statistics.Windows = this->Exact.GetLastWindowCount();
     haveStrip = this->Statistics.ExactLength >= 0.0;
     this->Statistics.Exact = haveStrip;
+    if (this->PieceReads)
+    {
+      this->Exact.AppendLitTriangles(*this->PieceReads);
+    }
+  }
+  if (this->PieceReads)
+  {
+    return haveStrip; // the other strips need the whole surface (SetPieceReads)
   }
   if (!haveStrip && this->Options.Method == GeodesicMethod::Bounded)
   {

@@ -37,6 +37,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -126,6 +127,28 @@ public:
   /// The settings of every following Compute (see GeodesicPathOptions for the defaults).
   void SetOptions(const GeodesicPathOptions& options);
   const GeodesicPathOptions& GetOptions() const { return this->Options; }
+
+  /// Tracing on a part of a surface (Core/Distributed/PieceTracing): when `reads` is set,
+  /// every following Compute appends to it the triangles it read (its ends' triangles, the
+  /// exact search's lit triangles, every strip it straightened); the leg is the whole
+  /// surface's leg bit for bit when each of them, and each triangle round their corners, is
+  /// whole on this mesh (all its neighbours as on the surface, numbered in the same order).
+  /// On such a mesh the components are the part's, not the surface's, so legs are not refused
+  /// across them, and only the exact window search gives the strip: a leg whose search fails
+  /// (a Bounded leg routed on the site graph, an Exact leg past its window budget) and the
+  /// LocallyShortest method fail with a message saying so. `exact(t)`, when given, tells
+  /// whether triangle t and the triangles round its corners are whole: the exact search then
+  /// stops soon after meeting one that is not (ExactGeodesicSearch::SetPieceTriangles, with
+  /// `wallSlack`), so that what it read is near the part it needs next, not the whole part it
+  /// holds. Null (default): the whole surface.
+  void SetPieceReads(std::vector<int>* reads,
+    std::function<bool(int)> exact = nullptr,
+    double wallSlack = 0.0);
+  bool IsOnPiece() const { return this->PieceReads != nullptr; }
+  /// The mean edge length the Bounded method's budget test uses (ExceedsBoundedWindows), for a
+  /// solver on a part of a surface: the whole surface's EstimateMeanEdgeLength. Default: this
+  /// mesh's, computed on first use.
+  void SetMeanEdgeLength(double length) { this->MeanEdgeLength = length; }
 
   /// Builds the landmark table now rather than lazily.
   void PrepareLandmarks() { this->Edges().BuildLandmarks(); }
@@ -221,6 +244,7 @@ private:
   std::vector<EdgeGraphSearch::Terminal> Sources, Targets;
   std::vector<int> VertexPath;
   GeodesicPathStatistics Statistics;
+  std::vector<int>* PieceReads = nullptr; // see SetPieceReads
 
   // Per-call scratch, kept to reuse capacity.
   std::vector<int> StartTriangles, EndTriangles;
@@ -231,6 +255,11 @@ private:
 /// The point at fraction t in [0, 1] of the path's length (t is clamped), found in the
 /// triangle shared by the two path points around it. Used for geodesic midpoints.
 CanonicalPoint PointAlongPath(const TriangleMesh& mesh, const GeodesicPath& path, double t);
+
+/// The Bounded method's estimate of `mesh`'s mean edge length: the mean over every edge when
+/// there are at most 2^16, else over edges 0, s, 2 s, ... (s = edges / 2^16, rounded down),
+/// summed in edge order.
+double EstimateMeanEdgeLength(const TriangleMesh& mesh);
 
 /// Sum of the straight distances between consecutive points (exact for traced paths, whose
 /// consecutive points share a triangle).

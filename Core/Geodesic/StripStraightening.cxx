@@ -38,6 +38,10 @@ bool StripStraightener::Straighten(const CanonicalPoint& start,
   for (;;)
   {
     this->TrimStrip(start, end, strip);
+    if (this->Recorder)
+    {
+      this->Recorder->insert(this->Recorder->end(), strip.begin(), strip.end());
+    }
     if (!this->UnfoldStrip(start, end, strip))
     {
       return false;

@@ -67,6 +67,11 @@ public:
   /// The path of the last successful Straighten, start to end.
   const std::vector<PathPoint>& GetPoints() const { return this->Points; }
 
+  /// When set, every Straighten appends each strip it unfolds (the path's rounds): the
+  /// triangles it read, with the fans of their corners it may sweep (see
+  /// GeodesicPathSolver::SetPieceReads). Null (default): nothing is recorded.
+  void SetStripRecorder(std::vector<int>* recorder) { this->Recorder = recorder; }
+
 private:
   struct Portal
   {
@@ -109,6 +114,7 @@ private:
   std::vector<Corner> Corners;
   std::vector<PathPoint> Points;
   EdgeIndex StripPosition; ///< triangle -> its index in the strip (keyed by triangle id)
+  std::vector<int>* Recorder = nullptr;
 };
 
 } // namespace boolsurf
