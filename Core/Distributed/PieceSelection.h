@@ -3,8 +3,8 @@
 // global cells once with the selection stage's own evaluation (Selection/BooleanOptions.h) and
 // keeps the refined triangles of its owned triangles that lie in selected cells. The union over
 // pieces is the whole surface's region, triangle for triangle (each refined triangle of an owned
-// triangle is the whole surface's, PieceSummary.h). Cost: O(owned triangles) to walk them, or
-// the owned crossed triangles only when no cell is selected at all.
+// triangle is the whole surface's, PieceSummary.h). Cost: O(owned triangles) per piece, and
+// the selection's O(cells x shapes) on the labels.
 #ifndef boolsurf_PieceSelection_h
 #define boolsurf_PieceSelection_h
 
