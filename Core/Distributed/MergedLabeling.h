@@ -7,8 +7,13 @@
 // cells (canonical numbers) and crossings, the plugs of the surface's boundary loops numbered
 // as MeshTopology numbers the loops, each component's zero node (the plug of its longest loop)
 // and the cells' components. Labels of consistent shapes and every shape's consistency are
-// therefore the whole surface's; an inconsistent shape's labels are those of one search of the
-// graph, as on the whole surface, where they have no meaning of their own.
+// therefore the whole surface's. An inconsistent shape's labels are those of one search of the
+// graph, as on the whole surface, where they have no meaning of their own: the search meets the
+// cells in the same order as on the whole arrangement (crossings are sorted by their cells, which
+// are numbered alike), so they are equal too, except where two crossings join the same two cells
+// with different changes or curves of one shape cancel along a stretch between two cells (one
+// crossing there, several places on the whole arrangement). Which cell a conflict is reported at
+// (LabelingResult::Conflicts) may differ the same way.
 #ifndef boolsurf_MergedLabeling_h
 #define boolsurf_MergedLabeling_h
 
