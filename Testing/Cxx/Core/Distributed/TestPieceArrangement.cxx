@@ -320,7 +320,18 @@ void ExpectSameAsWhole(const TriangleMesh& mesh,
   {
     merging.insert({ c.FromCell, c.ToCell });
   }
-  EXPECT_EQ(merging, meeting);
+  // On a surface with a boundary, a curve through a boundary vertex has two cells on one side
+  // there (the boundary parts them) in one patch, and the whole arrangement's cell graph, one
+  // arc per patch, names one of them: the pieces, which report crossings per sub-edge, meet
+  // both. The labels are the same (the other cell is linked to the boundary's plug).
+  if (MeshTopology::Compute(mesh).BoundaryLoops.empty())
+  {
+    EXPECT_EQ(merging, meeting);
+  }
+  else
+  {
+    EXPECT_TRUE(std::includes(merging.begin(), merging.end(), meeting.begin(), meeting.end()));
+  }
   LabelingResult mine;
   const LabelingResult stage = ExpectLabelsOfTheStage(mesh, curves, whole, merged, mine);
   ExpectRegionsOfTheStage(mesh, whole, stage, mine, run);
