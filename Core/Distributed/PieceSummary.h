@@ -19,7 +19,9 @@
 //  * the crossings of the cell graph whose two sides are owned (local cells, and per shape how
 //    the labels change across: curves along one place are crossed together, as the labeling
 //    stage crosses the arcs of one place), and the curve steps along the piece boundary, whose
-//    other side only the neighbour knows.
+//    other side only the neighbour knows;
+//  * the fragments of the surface's own boundary loops on its owned triangles and the cells
+//    along them, for the loops' plugs (PieceBoundaryLoops.h).
 // The boundary records (sub-segments and the curve steps along them: O(piece-boundary edges))
 // go to the neighbours only, which match them (BoundaryJoins.h); the cells and crossings
 // (O(local cells + curve places in owned triangles)) go to the merge (MergedArrangement.h).
@@ -34,6 +36,7 @@
 #define boolsurf_PieceSummary_h
 
 #include "Arrangement/Arrangement.h"
+#include "Distributed/PieceBoundaryLoops.h"
 #include "Distributed/PieceCurves.h"
 #include "Distributed/PieceMesh.h"
 
@@ -122,6 +125,10 @@ struct PieceSummary
   std::vector<BoundarySubSegment> Boundary;
   std::vector<BoundaryCurveStep> BoundarySteps; ///< sorted
   std::vector<CellCrossing> Crossings;          ///< on local cells, sorted, distinct
+  /// The surface's own boundary loops on the owned triangles (PieceBoundaryLoops.h): for the
+  /// plugs of the labeling, sent to the merge with the cells.
+  std::vector<BoundaryLoopFragment> LoopFragments;
+  std::vector<PlugCrossing> PlugCrossings;
   /// Bytes a process would send (the vectors' payloads): all of it, and the boundary records
   /// alone (Boundary and BoundarySteps, which only its neighbours need).
   std::size_t GetBytes() const;
