@@ -2,14 +2,17 @@
 
 #include "vtkBoolSurfControlCurves.h"
 
+#include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfSelectionOutput.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfStageSettingsDefinitions.h"
 
+#include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 
@@ -83,6 +86,16 @@ bool vtkBoolSurfBoolean::Execute(const std::vector<vtkPolyData*>& inputs,
     vtkWarningMacro(<< note);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfBoolean::ExecutePiece(const std::vector<vtkPolyData*>&,
+  const std::vector<vtkPolyData*>&,
+  std::string& error)
+{
+  error = "Surface Boolean cannot run on each rank's piece yet, and its input comes from Surface "
+          "Arrangement run on the pieces of a split surface";
+  return false;
 }
 
 //------------------------------------------------------------------------------

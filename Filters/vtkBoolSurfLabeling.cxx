@@ -14,6 +14,7 @@
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkWeakPointer.h>
@@ -110,6 +111,17 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   }
   generators->ShallowCopy(in.Generators);
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfLabeling::ExecutePiece(const std::vector<vtkPolyData*>&,
+  const std::vector<vtkPolyData*>&,
+  std::string& error)
+{
+  error =
+    "Label Arrangement Cells cannot run on each rank's piece yet, and its input comes from Surface "
+    "Arrangement run on the pieces of a split surface";
+  return false;
 }
 
 //------------------------------------------------------------------------------

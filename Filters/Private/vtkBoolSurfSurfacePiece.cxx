@@ -6,6 +6,7 @@
 #include <vtkGenerateGlobalIds.h>
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <algorithm>
@@ -83,6 +84,19 @@ bool vtkBoolSurfSurfacePiece::IsDistributed(vtkMultiProcessController* controlle
   int holding = 0;
   controller->AllReduce(&holds, &holding, 1, vtkCommunicator::SUM_OP);
   return holding >= 2;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfSurfacePiece::HasGlobalIds(vtkMultiProcessController* controller,
+  vtkPolyData* local)
+{
+  int has = !local || local->GetNumberOfCells() == 0 ||
+      (local->GetPointData()->GetGlobalIds() && local->GetCellData()->GetGlobalIds())
+    ? 1
+    : 0;
+  int all = 0;
+  controller->AllReduce(&has, &all, 1, vtkCommunicator::MIN_OP);
+  return all == 1;
 }
 
 //------------------------------------------------------------------------------
