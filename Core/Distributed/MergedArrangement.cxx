@@ -1,5 +1,7 @@
 #include "Distributed/MergedArrangement.h"
 
+#include "Distributed/MergedBoundaryLoops.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <numeric>
@@ -173,7 +175,7 @@ bool MergeCellGraph(const std::vector<PieceSummary>& pieces,
   }
   NumberCells(pieces, nodeBase, parent, out);
   GatherCrossings(pieces, joins, out);
-  return true;
+  return MergeBoundaryLoops(pieces, out, error);
 }
 
 //------------------------------------------------------------------------------

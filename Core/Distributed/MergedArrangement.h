@@ -36,12 +36,24 @@ struct MergedArrangement
   std::vector<double> CellArea;                       ///< per global cell
   /// The cell graph as distinct crossings (normalized, sorted).
   std::vector<CellCrossing> Crossings;
+  /// The surface's boundary loops (PieceBoundaryLoops.h), numbered as MeshTopology numbers them
+  /// on the whole surface: loop l's plug is labeling node NumberOfCells + l.
+  int NumberOfPlugs = 0;
+  /// Surface component of each node (the cells, then the plugs), numbered as MeshTopology
+  /// numbers the whole surface's components (by their lowest triangle, so by their lowest cell).
+  std::vector<int> NodeComponent;
+  /// Per component: the plug node of its longest boundary loop, -1 for a closed component.
+  std::vector<int> ZeroNodes;
+  /// Between a cell (FromCell) and a plug node (ToCell): the label change from the cell into
+  /// the plug (normalized, sorted, distinct; no Delta: a link, one region).
+  std::vector<CellCrossing> PlugCrossings;
 };
 
 /// The merge on the merging process: `pieces[p]` is piece p's summary, of which only
-/// NumberOfLocalCells, Cells and Crossings are read (its boundary records stayed with its
-/// neighbours), and `joins` what the neighbours matched (JoinPieceBoundaries, every piece's
-/// results appended). Fails, naming it, on a join or crossing naming a cell out of range.
+/// NumberOfLocalCells, Cells, Crossings, LoopFragments and PlugCrossings are read (its boundary
+/// records stayed with its neighbours), and `joins` what the neighbours matched
+/// (JoinPieceBoundaries, every piece's results appended). Fails, naming it, on a join or crossing
+/// naming a cell out of range, or on boundary loop fragments that do not chain into loops.
 bool MergeCellGraph(const std::vector<PieceSummary>& pieces,
   const BoundaryJoins& joins,
   MergedArrangement& out,
@@ -56,9 +68,10 @@ bool MergePieceSummaries(const std::vector<PieceSummary>& pieces,
 
 /// Labeling input for a cell graph given as crossings: shapes indexed by ascending id (those
 /// of `shapeIds` and of the crossings), one Location per crossing, |count| arcs per shape, a
-/// link for a crossing whose curves cancel. Labels
-/// agree with the labeling stage's on the whole arrangement (MakeLabelingInput) up to each
-/// shape's zero; so does every shape's consistency on a closed surface.
+/// link for a crossing whose curves cancel; no plugs and no components (MergedLabeling.h has
+/// the labeling stage's whole input). Labels agree with the labeling stage's on the whole
+/// arrangement (MakeLabelingInput) up to each shape's zero; so does every shape's consistency
+/// on a closed surface.
 LabelingInput LabelingInputOfCrossings(int numberOfCells,
   const std::vector<CellCrossing>& crossings,
   const std::vector<int>& shapeIds = {});

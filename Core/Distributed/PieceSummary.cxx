@@ -71,6 +71,15 @@ std::size_t PieceSummary::GetBytes() const
   {
     crossings += 2 * sizeof(int) + c.Delta.size() * sizeof(std::pair<int, int>);
   }
+  for (const PlugCrossing& c : this->PlugCrossings)
+  {
+    crossings += 2 * sizeof(int) + c.Delta.size() * sizeof(std::pair<int, int>);
+  }
+  for (const BoundaryLoopFragment& f : this->LoopFragments)
+  {
+    crossings += 2 * sizeof(std::uint64_t) + sizeof(long long) + sizeof(int) +
+      f.EdgeLengths.size() * sizeof(double);
+  }
   return sizeof(int) + this->Cells.size() * sizeof(PieceCell) + this->GetBoundaryBytes() +
     crossings;
 }
@@ -389,6 +398,7 @@ void SummarizePiece(const PieceMesh& piece,
   std::unordered_map<std::uint64_t, SubSegmentPlace> places;
   SummarizeBoundary(piece, arr, bounding, out, places);
   SummarizeCurveSteps(piece, curves, arr, places, out);
+  SummarizeBoundaryLoops(piece, curves, arr, out.LoopFragments, out.PlugCrossings);
 }
 
 //------------------------------------------------------------------------------

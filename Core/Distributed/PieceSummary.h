@@ -34,6 +34,7 @@
 #define boolsurf_PieceSummary_h
 
 #include "Arrangement/Arrangement.h"
+#include "Distributed/PieceBoundaryLoops.h"
 #include "Distributed/PieceCurves.h"
 #include "Distributed/PieceMesh.h"
 
@@ -122,6 +123,10 @@ struct PieceSummary
   std::vector<BoundarySubSegment> Boundary;
   std::vector<BoundaryCurveStep> BoundarySteps; ///< sorted
   std::vector<CellCrossing> Crossings;          ///< on local cells, sorted, distinct
+  /// The surface's own boundary loops on the owned triangles (PieceBoundaryLoops.h): for the
+  /// plugs of the labeling, sent to the merge with the cells.
+  std::vector<BoundaryLoopFragment> LoopFragments;
+  std::vector<PlugCrossing> PlugCrossings;
   /// Bytes a process would send (the vectors' payloads): all of it, and the boundary records
   /// alone (Boundary and BoundarySteps, which only its neighbours need).
   std::size_t GetBytes() const;

@@ -267,6 +267,27 @@ void PackMergeInput(const PieceSummary& summary, const BoundaryJoins& joins, Wir
     out.insert(out.end(), { c.From.Piece, c.From.Cell, c.To.Piece, c.To.Cell });
     PackDelta(c.Delta, out);
   }
+  out.push_back(static_cast<long long>(summary.LoopFragments.size()));
+  for (const BoundaryLoopFragment& f : summary.LoopFragments)
+  {
+    out.insert(out.end(),
+      { static_cast<long long>(f.First),
+        static_cast<long long>(f.Next),
+        f.LowestHalfEdge,
+        f.LowestIndex });
+    out.push_back(static_cast<long long>(f.EdgeLengths.size()));
+    for (const double l : f.EdgeLengths)
+    {
+      out.push_back(BitsOf(l));
+    }
+  }
+  out.push_back(static_cast<long long>(summary.PlugCrossings.size()));
+  for (const PlugCrossing& c : summary.PlugCrossings)
+  {
+    out.push_back(c.Fragment);
+    out.push_back(c.Cell);
+    PackDelta(c.Delta, out);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -314,6 +335,26 @@ bool UnpackMergeInput(const WireBuffer& in,
     c.Delta = r.NextDelta();
     joins.Crossings.push_back(std::move(c));
   }
+  summary.LoopFragments.resize(r.NextCount(5));
+  for (BoundaryLoopFragment& f : summary.LoopFragments)
+  {
+    f.First = static_cast<std::uint64_t>(r.Next());
+    f.Next = static_cast<std::uint64_t>(r.Next());
+    f.LowestHalfEdge = r.Next();
+    f.LowestIndex = r.NextInt();
+    f.EdgeLengths.resize(r.NextCount(1));
+    for (double& l : f.EdgeLengths)
+    {
+      l = DoubleOf(r.Next());
+    }
+  }
+  summary.PlugCrossings.resize(r.NextCount(3));
+  for (PlugCrossing& c : summary.PlugCrossings)
+  {
+    c.Fragment = r.NextInt();
+    c.Cell = r.NextInt();
+    c.Delta = r.NextDelta();
+  }
   return r.Done("merge input", error);
 }
 
@@ -330,12 +371,21 @@ void PackMergedForPiece(const MergedArrangement& merged, int piece, WireBuffer& 
   {
     out.push_back(BitsOf(a));
   }
-  out.push_back(static_cast<long long>(merged.Crossings.size()));
-  for (const CellCrossing& c : merged.Crossings)
+  for (const std::vector<CellCrossing>* crossings : { &merged.Crossings, &merged.PlugCrossings })
   {
-    out.push_back(c.FromCell);
-    out.push_back(c.ToCell);
-    PackDelta(c.Delta, out);
+    out.push_back(static_cast<long long>(crossings->size()));
+    for (const CellCrossing& c : *crossings)
+    {
+      out.push_back(c.FromCell);
+      out.push_back(c.ToCell);
+      PackDelta(c.Delta, out);
+    }
+  }
+  out.push_back(merged.NumberOfPlugs);
+  for (const std::vector<int>* numbers : { &merged.NodeComponent, &merged.ZeroNodes })
+  {
+    out.push_back(static_cast<long long>(numbers->size()));
+    out.insert(out.end(), numbers->begin(), numbers->end());
   }
 }
 
@@ -356,12 +406,24 @@ bool UnpackMergedForPiece(const WireBuffer& in, MergedArrangement& out, std::str
   {
     a = DoubleOf(r.Next());
   }
-  out.Crossings.resize(r.NextCount(3));
-  for (CellCrossing& c : out.Crossings)
+  for (std::vector<CellCrossing>* crossings : { &out.Crossings, &out.PlugCrossings })
   {
-    c.FromCell = r.NextInt();
-    c.ToCell = r.NextInt();
-    c.Delta = r.NextDelta();
+    crossings->resize(r.NextCount(3));
+    for (CellCrossing& c : *crossings)
+    {
+      c.FromCell = r.NextInt();
+      c.ToCell = r.NextInt();
+      c.Delta = r.NextDelta();
+    }
+  }
+  out.NumberOfPlugs = r.NextInt();
+  for (std::vector<int>* numbers : { &out.NodeComponent, &out.ZeroNodes })
+  {
+    numbers->resize(r.NextCount(1));
+    for (int& n : *numbers)
+    {
+      n = r.NextInt();
+    }
   }
   return r.Done("merged arrangement", error);
 }

@@ -8,13 +8,16 @@
 //     ids, an edge point naming its edge by its global vertices (PieceCurves.h needs them);
 //  1. a piece's boundary records (PieceSummary's Boundary and BoundarySteps), to each neighbour
 //     (the owners of its ghosts), which matches them with its own (JoinPieceBoundaries);
-//  2. what a piece sends to the merge: its local cells and crossings and the joins and crossings
-//     it matched with its neighbours (MergeCellGraph reads nothing else);
+//  2. what a piece sends to the merge: its local cells and crossings, the joins and crossings
+//     it matched with its neighbours, and the fragments of the surface's boundary loops on its
+//     owned triangles with the cells along them (MergeCellGraph reads nothing else);
 //  3. what the merge sends back to a piece: the number of cells, the global cell of each of its
-//     local cells, and the cell graph (small: for the labeling, on every piece or one).
+//     local cells, the cells' areas and the cell graph with the boundary loops' plugs, the
+//     nodes' components and zero nodes: everything the labeling reads (MergedLabeling.h), so
+//     that every piece labels the graph itself.
 // Sizes: 6 integers per boundary sub-segment, 4 per curve step along the boundary, 4 per local
-// cell, 2 + 2 per shape per crossing, 4 per join: what PieceSummary::GetBytes() counts, in
-// 8-byte words.
+// cell, 2 + 2 per shape per crossing, 4 per join, 5 per boundary loop fragment and 1 per
+// boundary edge of the surface: what PieceSummary::GetBytes() counts, in 8-byte words.
 //
 // Unpacking checks every count against the buffer's length, so a short or corrupt message is an
 // error naming the message, never a read out of bounds.
@@ -59,8 +62,8 @@ void PackBoundaryRecords(const PieceSummary& summary, WireBuffer& out);
 /// Fills out.Boundary and out.BoundarySteps (the rest of `out` is left as it is).
 bool UnpackBoundaryRecords(const WireBuffer& in, PieceSummary& out, std::string& error);
 
-/// Message 2: NumberOfLocalCells, Cells and Crossings of `summary`, and `joins` (what the piece
-/// matched with its neighbours).
+/// Message 2: NumberOfLocalCells, Cells, Crossings, LoopFragments and PlugCrossings of
+/// `summary`, and `joins` (what the piece matched with its neighbours).
 void PackMergeInput(const PieceSummary& summary, const BoundaryJoins& joins, WireBuffer& out);
 /// `summary` gets the piece's cells and crossings (no boundary records); `joins` gets the joins
 /// and crossings appended, so that one BoundaryJoins collects every piece's.
@@ -69,8 +72,8 @@ bool UnpackMergeInput(const WireBuffer& in,
   BoundaryJoins& joins,
   std::string& error);
 
-/// Message 3: of `merged`, NumberOfCells, piece `piece`'s row of GlobalCellOfLocal, CellArea
-/// and Crossings.
+/// Message 3: of `merged`, NumberOfCells, piece `piece`'s row of GlobalCellOfLocal, CellArea,
+/// Crossings, PlugCrossings, NumberOfPlugs, NodeComponent and ZeroNodes.
 void PackMergedForPiece(const MergedArrangement& merged, int piece, WireBuffer& out);
 /// `out` as the merge has it, with one row of GlobalCellOfLocal (the piece's) and no
 /// CellLowestTriangle.

@@ -179,34 +179,6 @@ void ComputeFans(const TriangleMesh& mesh, MeshTopology& topo)
   }
 }
 
-// Next boundary half-edge after boundary half-edge h (a->b): rotate around b inside the fan
-// of h's triangle until the outgoing edge has no neighbour. Stays in the right fan at a
-// non-manifold vertex.
-int NextBoundaryHalfEdge(const TriangleMesh& mesh, int h)
-{
-  int t = h / 3;
-  int out = (h % 3 + 1) % 3; // local edge leaving b in t
-  const int b = mesh.GetTriangle(t)[out];
-  const int limit = mesh.GetVertexCorners(b).size() + 1;
-  for (int step = 0; step < limit; ++step)
-  {
-    const int n = mesh.GetNeighbor(t, out);
-    if (n < 0)
-    {
-      return mesh.GetEdgeValence(mesh.GetEdgeId(t, out)) == 1 ? 3 * t + out : -1;
-    }
-    const int m = mesh.GetNeighborEdge(t, out);
-    const Triangle& ntri = mesh.GetTriangle(n);
-    if (ntri[(m + 1) % 3] != b)
-    {
-      return -1; // misoriented neighbour: the rotation is undefined
-    }
-    t = n;
-    out = (m + 1) % 3;
-  }
-  return -1;
-}
-
 void ComputeBoundaryLoops(const TriangleMesh& mesh, MeshTopology& topo)
 {
   const int nt = mesh.GetNumberOfTriangles();
@@ -267,6 +239,33 @@ void ComputeBoundaryLoops(const TriangleMesh& mesh, MeshTopology& topo)
 }
 
 } // namespace
+
+//------------------------------------------------------------------------------
+// Rotates around b inside the fan of h's triangle until the outgoing edge has no neighbour.
+int NextBoundaryHalfEdge(const TriangleMesh& mesh, int h)
+{
+  int t = h / 3;
+  int out = (h % 3 + 1) % 3; // local edge leaving b in t
+  const int b = mesh.GetTriangle(t)[out];
+  const int limit = mesh.GetVertexCorners(b).size() + 1;
+  for (int step = 0; step < limit; ++step)
+  {
+    const int n = mesh.GetNeighbor(t, out);
+    if (n < 0)
+    {
+      return mesh.GetEdgeValence(mesh.GetEdgeId(t, out)) == 1 ? 3 * t + out : -1;
+    }
+    const int m = mesh.GetNeighborEdge(t, out);
+    const Triangle& ntri = mesh.GetTriangle(n);
+    if (ntri[(m + 1) % 3] != b)
+    {
+      return -1; // misoriented neighbour: the rotation is undefined
+    }
+    t = n;
+    out = (m + 1) % 3;
+  }
+  return -1;
+}
 
 //------------------------------------------------------------------------------
 int MeshTopology::GetEulerCharacteristic() const

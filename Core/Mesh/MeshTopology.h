@@ -57,6 +57,12 @@ struct MeshTopology
   static MeshTopology Compute(const TriangleMesh& mesh);
 };
 
+/// The boundary half-edge after boundary half-edge h (a -> b) along its boundary loop, as
+/// MeshTopology walks the loops (staying in h's fan at a non-manifold vertex), or -1 where the
+/// rotation around b is undefined (a misoriented neighbour). It reads only the triangles around
+/// b, so a piece of a surface with every triangle around b walks its loops as the whole does.
+int NextBoundaryHalfEdge(const TriangleMesh& mesh, int h);
+
 } // namespace boolsurf
 
 #endif

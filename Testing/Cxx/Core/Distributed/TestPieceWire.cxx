@@ -23,6 +23,7 @@
 
 using namespace boolsurf;
 using boolsurf::testing::MakePiece;
+using boolsurf::testing::RandomGeodesicCurves;
 using boolsurf::testing::RegionOwners;
 using boolsurf::testing::SlabOwners;
 
@@ -137,6 +138,10 @@ void ExpectWireRunEqualsMerge(const TriangleMesh& mesh,
   EXPECT_EQ(merged.GlobalCellOfLocal, direct.GlobalCellOfLocal);
   EXPECT_EQ(merged.CellArea, direct.CellArea);
   EXPECT_EQ(merged.Crossings, direct.Crossings);
+  EXPECT_EQ(merged.NumberOfPlugs, direct.NumberOfPlugs);
+  EXPECT_EQ(merged.PlugCrossings, direct.PlugCrossings);
+  EXPECT_EQ(merged.NodeComponent, direct.NodeComponent);
+  EXPECT_EQ(merged.ZeroNodes, direct.ZeroNodes);
   // Back to each piece.
   for (int p = 0; p < pieces; ++p)
   {
@@ -148,6 +153,10 @@ void ExpectWireRunEqualsMerge(const TriangleMesh& mesh,
     EXPECT_EQ(mine.GlobalCellOfLocal[0], direct.GlobalCellOfLocal[p]);
     EXPECT_EQ(mine.CellArea, direct.CellArea);
     EXPECT_EQ(mine.Crossings, direct.Crossings);
+    EXPECT_EQ(mine.NumberOfPlugs, direct.NumberOfPlugs);
+    EXPECT_EQ(mine.PlugCrossings, direct.PlugCrossings);
+    EXPECT_EQ(mine.NodeComponent, direct.NodeComponent);
+    EXPECT_EQ(mine.ZeroNodes, direct.ZeroNodes);
     std::printf(
       "%d pieces, piece %d: from the merge %zu B\n", pieces, p, back.size() * sizeof(long long));
   }
@@ -180,6 +189,27 @@ TEST(PieceWire, MessagesCarryTheMergeOfATorusInSlabsAndRegions)
     SCOPED_TRACE(std::to_string(pieces) + " pieces");
     ExpectWireRunEqualsMerge(mesh, curves, SlabOwners(mesh, pieces, 0), pieces);
     ExpectWireRunEqualsMerge(mesh, curves, RegionOwners(mesh, pieces + 1, 7, pieces), pieces + 1);
+  }
+}
+
+// An open cylinder: its two boundary loops cut by the piece borders, their fragments and plugs
+// through messages 2 and 3.
+TEST(PieceWire, MessagesCarryTheBoundaryLoopsOfAnOpenCylinder)
+{
+  const MeshData data = MakeOpenCylinder(0.5, 1.0, 32, 12);
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  std::vector<TracedCurve> curves = PlaneSectionCurves(mesh, Vec3{ 0.0, 0.0, 1.0 }, 0.4, 0);
+  for (TracedCurve& c : RandomGeodesicCurves(mesh, 6, 3))
+  {
+    c.ShapeId += 1;
+    curves.push_back(std::move(c));
+  }
+  ASSERT_GE(curves.size(), 2u);
+  for (int pieces : { 1, 2, 3, 4 })
+  {
+    SCOPED_TRACE(std::to_string(pieces) + " pieces");
+    ExpectWireRunEqualsMerge(mesh, curves, SlabOwners(mesh, pieces, 0), pieces);
+    ExpectWireRunEqualsMerge(mesh, curves, RegionOwners(mesh, pieces, 9, -1), pieces);
   }
 }
 
