@@ -6,6 +6,7 @@
 
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
+#include "vtkBoolSurfPieceLabels.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfStageSettingsDefinitions.h"
 
@@ -114,14 +115,37 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
 }
 
 //------------------------------------------------------------------------------
-bool vtkBoolSurfLabeling::ExecutePiece(const std::vector<vtkPolyData*>&,
-  const std::vector<vtkPolyData*>&,
+bool vtkBoolSurfLabeling::ExecutePiece(const std::vector<vtkPolyData*>& locals,
+  const std::vector<vtkPolyData*>& outputs,
   std::string& error)
 {
-  error =
-    "Label Arrangement Cells cannot run on each rank's piece yet, and its input comes from Surface "
-    "Arrangement run on the pieces of a split surface";
-  return false;
+  if (boolsurf::PassOnDrawingStart(locals[0], outputs))
+  {
+    return true; // a drawing being started (on every rank: the arrangement marked each piece)
+  }
+  boolsurf::LabelingOutputOptions options;
+  options.ZeroCell = *this->ZeroCellSettings;
+  options.ColorShape = this->ColorShape;
+  options.PerTriangleLabels = this->PerTriangleLabels;
+  std::shared_ptr<boolsurf::PieceLabeledResult> result;
+  std::string warning;
+  if (!boolsurf::LabelPiece(locals[0], options, outputs[0], result, error, warning))
+  {
+    return false;
+  }
+  boolsurf::AttachStageResult<boolsurf::PieceLabeledResult>(
+    outputs[0]->GetFieldData()->GetArray(boolsurf::names::CellLabels), std::move(result));
+  // The labels are the same on every rank: one rank says what they mean.
+  if (vtkMultiProcessController::GetGlobalController()->GetLocalProcessId() == 0)
+  {
+    if (!warning.empty())
+    {
+      vtkWarningMacro(<< warning);
+    }
+    vtkWarningMacro("ran on each rank's piece of the surface: port 1 (the homology generators) "
+                    "is not yet computed on pieces and stays empty");
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

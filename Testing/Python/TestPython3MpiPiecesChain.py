@@ -46,11 +46,16 @@ def run(ranks):
         return json.load(f), output
 
 
-def same_by_source(a, b, where):
-    """Per source triangle: the same rows (area to 1e-12, every other value exactly)."""
+def same_by_source(a, b, where, ordered):
+    """Per source triangle: the same rows (area to 1e-12, every other value exactly), in the
+    same order when `ordered` (the refined surface), else as sets (the one-rank region lists a
+    source triangle's triangles in its extractor's order)."""
     assert a.keys() == b.keys(), (where, sorted(set(a) ^ set(b))[:10])
     for source in a:
         rows_a, rows_b = a[source], b[source]
+        if not ordered:
+            rows_a = sorted(rows_a, key=lambda row: (row[1:], row[0]))
+            rows_b = sorted(rows_b, key=lambda row: (row[1:], row[0]))
         assert len(rows_a) == len(rows_b), (where, source, rows_a, rows_b)
         for x, y in zip(rows_a, rows_b):
             assert abs(x[0] - y[0]) <= 1e-12, (where, source, x, y)
@@ -71,11 +76,13 @@ for ranks in (2, 3):
         assert got["pieces"], (where, "did not run on the pieces")
         assert got["triangles"] == expected["triangles"], (where, got["triangles"],
                                                            expected["triangles"])
-        same_by_source(got["by_source"], expected["by_source"], where)
+        same_by_source(got["by_source"], expected["by_source"], where, stage != "boolean")
         assert got["NumberOfCells"] == expected["NumberOfCells"], where
-        # Each rank holds only its part: several ranks hold triangles, none holds them all.
+        # Each rank holds only its part: every rank holds refined triangles (the region may miss
+        # a rank's piece), at least two hold parts, none holds them all.
         held = got["held"]
-        assert len(held) == ranks and max(held.values()) < got["triangles"], (where, held)
+        assert len(held) == ranks or (stage == "boolean" and len(held) >= 2), (where, held)
+        assert max(held.values()) < got["triangles"], (where, held)
     for table in ("CellLabels", "ShapeConsistent"):
         assert result["labels"][table] == serial["labels"][table], (ranks, table)
     assert "ran on each rank's piece of the surface" in output, output
