@@ -1,8 +1,11 @@
 #include "vtkBoolSurfSurfacePiece.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include <vtkCellData.h>
 #include <vtkCommunicator.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkGenerateGlobalIds.h>
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
@@ -80,7 +83,13 @@ bool vtkBoolSurfSurfacePiece::IsDistributed(vtkMultiProcessController* controlle
   {
     return false;
   }
-  int holds = local && local->GetNumberOfPolys() + local->GetNumberOfStrips() > 0 ? 1 : 0;
+  // A rank's part of Surface Arrangement on pieces counts even without triangles (a rank may
+  // own none of the refined surface): the stages after it stay on the pieces.
+  int holds = local &&
+      (local->GetNumberOfPolys() + local->GetNumberOfStrips() > 0 ||
+        local->GetFieldData()->GetAbstractArray(boolsurf::names::ArrangementOnPieces))
+    ? 1
+    : 0;
   int holding = 0;
   controller->AllReduce(&holds, &holding, 1, vtkCommunicator::SUM_OP);
   return holding >= 2;
