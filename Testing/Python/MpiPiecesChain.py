@@ -3,13 +3,13 @@ split across MPI ranks, their outputs written as JSON per source triangle: run b
 TestPython3MpiPiecesChain.py with pvbatch on 1, 2 and 3 ranks, whose unions over ranks must
 agree with one rank's outputs.
 
-    mpiexec -np N pvbatch Testing/Python/MpiPiecesChain.py --json out.json
+    mpiexec -np N pvbatch Testing/Python/MpiPiecesChain.py --json out.json [--partitions K]
 
 The surface (Data/eight.ply) gets global ids in its serial order (Generate Global Ids), then
 RedistributeDataSet and Extract Surface split it across the ranks; on one rank it stays whole
 and every filter computes as ever. Three circles, one crossing many pieces. Each output is
 fetched with the rank that holds each triangle, so the test sees that every rank holds only
-its part; a filter that gathers its input (Boundary Sampled Curves) fed the labeled pieces
+its part (--partitions 2 on 3 ranks: a rank with no triangles); a filter that gathers its input (Boundary Sampled Curves) fed the labeled pieces
 must refuse them.
 """
 import argparse
@@ -28,11 +28,15 @@ from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--json", required=True)
+parser.add_argument("--partitions", type=int)
 args = parser.parse_args()
 load_plugin(globals())
 
 mesh = PLYReader(FileNames=[os.path.join(source_dir, "Data", "eight.ply")])
-surface = ExtractSurface(Input=RedistributeDataSet(Input=GenerateGlobalIds(Input=mesh)))
+redistributed = RedistributeDataSet(Input=GenerateGlobalIds(Input=mesh))
+if args.partitions:
+    redistributed.NumberOfPartitions = args.partitions
+surface = ExtractSurface(Input=redistributed)
 surface.UpdatePipeline()
 rays = SurfaceRays(mesh, axis=1)
 circles = [(surface_circle(rays, (0.0, -0.035), 0.06), 0),

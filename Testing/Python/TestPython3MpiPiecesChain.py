@@ -1,5 +1,6 @@
 """Surface Arrangement, Label Arrangement Cells and Surface Boolean on each rank's piece of a
-split surface (MpiPiecesChain.py, pvbatch on 1, 2 and 3 ranks): the union over ranks of each
+split surface (MpiPiecesChain.py, pvbatch on 1, 2 and 3 ranks, and on 3 ranks with the
+surface split in 2, one rank holding none): the union over ranks of each
 output equals the one-rank output per source triangle (the same refined triangles in the same
 cells with the same labels, areas to 1e-12), every rank holds only its part (no rank holds the
 whole region), the piece outputs say so, and a filter that gathers its input refuses them with
@@ -27,9 +28,11 @@ env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
 out = scratch.folder("boolsurf-pieces-chain-")
 
 
-def run(ranks):
-    path = os.path.join(out, "r%d.json" % ranks)
+def run(ranks, partitions=None):
+    path = os.path.join(out, "r%d%s.json" % (ranks, "p%d" % partitions if partitions else ""))
     command = [mpiexec, "-np", str(ranks), pvbatch, script, "--json", path]
+    if partitions:
+        command += ["--partitions", str(partitions)]
     # Its own process group, so a hung run's ranks can all be stopped.
     process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True, start_new_session=True)
@@ -67,11 +70,12 @@ assert not serial["arrangement"]["pieces"], "one rank: the surface is whole"
 assert serial["boolean"]["triangles"] > 0 and serial["bsc"]["triangles"] > 0, serial["bsc"]
 cells = int(serial["arrangement"]["NumberOfCells"][0])
 assert cells > 4, cells  # three crossing circles
-for ranks in (2, 3):
-    result, output = run(ranks)
+for ranks, partitions in ((2, None), (3, None), (3, 2)):
+    result, output = run(ranks, partitions)
     assert result["ranks"] == ranks, result["ranks"]
+    holding = partitions or ranks  # ranks holding triangles (the others hold none)
     for stage in ("arrangement", "labels", "boolean"):
-        where = "%s on %d ranks" % (stage, ranks)
+        where = "%s on %d ranks, %d holding triangles" % (stage, ranks, holding)
         got, expected = result[stage], serial[stage]
         assert got["pieces"], (where, "did not run on the pieces")
         assert got["triangles"] == expected["triangles"], (where, got["triangles"],
@@ -81,7 +85,7 @@ for ranks in (2, 3):
         # Each rank holds only its part: every rank holds refined triangles (the region may miss
         # a rank's piece), at least two hold parts, none holds them all.
         held = got["held"]
-        assert len(held) == ranks or (stage == "boolean" and len(held) >= 2), (where, held)
+        assert len(held) == holding or (stage == "boolean" and len(held) >= 2), (where, held)
         assert max(held.values()) < got["triangles"], (where, held)
     for table in ("CellLabels", "ShapeConsistent"):
         assert result["labels"][table] == serial["labels"][table], (ranks, table)
@@ -89,6 +93,6 @@ for ranks in (2, 3):
     # Boundary Sampled Curves gathers its input: it refuses the labeled pieces, naming them.
     assert result["bsc"]["triangles"] == 0, result["bsc"]
     assert "comes from Surface Arrangement run on each rank's piece" in output, output
-    print("%d ranks: Surface Arrangement, labels and Boolean on the pieces give the one-rank "
-          "answers" % ranks)
+    print("%d ranks, %d holding triangles: Surface Arrangement, labels and Boolean on the "
+          "pieces give the one-rank answers" % (ranks, holding))
 shutil.rmtree(out, ignore_errors=True)
