@@ -19,7 +19,9 @@
 //  * the crossings of the cell graph whose two sides are owned (local cells, and per shape how
 //    the labels change across: curves along one place are crossed together, as the labeling
 //    stage crosses the arcs of one place), and the curve steps along the piece boundary, whose
-//    other side only the neighbour knows.
+//    other side only the neighbour knows;
+//  * the fragments of the surface's own boundary loops on its owned triangles and the cells
+//    along them, for the loops' plugs (PieceBoundaryLoops.h).
 // The boundary records (sub-segments and the curve steps along them: O(piece-boundary edges))
 // go to the neighbours only, which match them (BoundaryJoins.h); the cells and crossings
 // (O(local cells + curve places in owned triangles)) go to the merge (MergedArrangement.h).

@@ -7,7 +7,10 @@
  * restricted to it), sends its boundary records to its neighbours only and matches theirs with
  * its own, sends its cells, crossings and joins to rank 0, which merges the cell graph and
  * numbers the cells as the whole surface's arrangement numbers them, and gets back the global
- * cell of each of its local cells and the cell graph. The messages are Core's
+ * cell of each of its local cells and the cell graph with the plugs of the surface's boundary
+ * loops: what each rank labels itself (Core's LabelMergedArrangement on GetMerged(), the
+ * labeling stage's labels) and selects a Boolean's owned triangles from (SelectPieceBoolean
+ * with GetArrangement() and GetMerged().GlobalCellOfLocal[0]). The messages are Core's
  * (Distributed/PieceWire.h); what travels grows with the pieces' shared boundary (to the
  * neighbours) and with the curves (to and from rank 0), never with the surface.
  *
@@ -58,7 +61,8 @@ public:
   /// The piece's own arrangement (on piece.Mesh; cells are local).
   const boolsurf::Arrangement& GetArrangement() const { return this->Local; }
   /// The merged arrangement as this rank has it: GlobalCellOfLocal holds this rank's row only
-  /// (GetGlobalCell), CellLowestTriangle is empty.
+  /// (GetGlobalCell), CellLowestTriangle is empty; the cell graph, plugs, components and zero
+  /// nodes are whole (the same on every rank).
   const boolsurf::MergedArrangement& GetMerged() const { return this->Merged; }
   /// Global cell of local cell c (-1 for a cell of ghost triangles only).
   int GetGlobalCell(int c) const { return this->Merged.GlobalCellOfLocal[0][c]; }

@@ -166,6 +166,31 @@ std::vector<TracedCurve> RandomGeodesicCurves(const TriangleMesh& mesh, unsigned
 }
 
 //------------------------------------------------------------------------------
+MeshData SphereWithHoles()
+{
+  const MeshData sphere = MakeIcosphere(3);
+  const Vec3 centers[] = { { 1, 0, 0 }, { -0.6, 0.8, 0 }, { 0, -0.6, 0.8 }, { 0, 0, -1 } };
+  const double radii[] = { 0.3, 0.2, 0.35, 0.25 };
+  MeshData out;
+  out.Positions = sphere.Positions;
+  for (const Triangle& t : sphere.Triangles)
+  {
+    const Vec3 c =
+      (1.0 / 3.0) * (sphere.Positions[t[0]] + sphere.Positions[t[1]] + sphere.Positions[t[2]]);
+    bool keep = true;
+    for (int h = 0; h < 4; ++h)
+    {
+      keep = keep && Distance(c, centers[h]) > radii[h];
+    }
+    if (keep)
+    {
+      out.Triangles.push_back(t);
+    }
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
 double RefinedArea(const TriangleMesh& mesh, const Arrangement& arr, int r)
 {
   const Triangle c = arr.GetTriangle(mesh, r);

@@ -7,6 +7,7 @@
 #include "Arrangement/Arrangement.h"
 #include "Distributed/PieceMesh.h"
 #include "Geodesic/TracedCurve.h"
+#include "Mesh/ProceduralMeshes.h"
 
 #include <vector>
 
@@ -30,6 +31,10 @@ PieceInput MakePiece(const TriangleMesh& mesh, const std::vector<int>& owner, in
 /// triangles), traced on `mesh`, one shape each: drawings crossing the pieces' borders many
 /// times.
 std::vector<TracedCurve> RandomGeodesicCurves(const TriangleMesh& mesh, unsigned seed, int count);
+
+/// A sphere (MakeIcosphere(3)) with four round holes of different sizes cut out: an open
+/// surface of four boundary loops, which piece borders cut.
+MeshData SphereWithHoles();
 
 /// Area of refined triangle r of an arrangement computed on `mesh`.
 double RefinedArea(const TriangleMesh& mesh, const Arrangement& arr, int r);

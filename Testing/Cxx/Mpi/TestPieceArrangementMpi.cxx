@@ -4,9 +4,12 @@
 // layer gives it) and the curves rank 0 broadcasts (Distributed/PieceWire.h), arranges it, talks to
 // its neighbours and rank 0 only, and must end with the whole surface's arrangement: for every
 // owned triangle the same refined triangles in the cells of the same numbers, the same cell areas,
-// and labels and consistency verdicts of the merged cell graph equal to the labeling stage's on the
-// whole arrangement. Surfaces: a sphere, a torus and the genus-2 eight.ply, with random closed
-// geodesic polygons crossing the ranks' boundaries many times; splits in slabs and in random
+// the labels and consistency verdicts each rank computes on the merged cell graph equal to the
+// labeling stage's on the whole arrangement (with the plugs of the surface's boundary loops),
+// and each Boolean's region on the rank its owned triangles' share of the whole surface's region
+// (per source triangle, areas to 1e-12). Surfaces: a sphere, a sphere with four holes, a flat
+// square, a torus and the genus-2 eight.ply, with random closed geodesic polygons crossing the
+// ranks' boundaries many times; splits in slabs and in random
 // regions, one with an empty rank. Each rank's piece arrives as VTK data (owned triangles with cell
 // and point GlobalIds) and gets its ring of ghosts from vtkGhostCellsGenerator
 // (vtkBoolSurfRingedPiece.h), checked against the ring Core's tests build. Prints, per rank, the
@@ -17,12 +20,15 @@
 
 #include "Arrangement/Arrangement.h"
 #include "Distributed/MergedArrangement.h"
+#include "Distributed/MergedLabeling.h"
+#include "Distributed/PieceSelection.h"
 #include "Distributed/PieceWire.h"
 #include "Geodesic/CurveTracer.h"
 #include "Labeling/ArrangementLabelingInput.h"
 #include "Mesh/MeshTopology.h"
 #include "Mesh/PlyReader.h"
 #include "Mesh/ProceduralMeshes.h"
+#include "Support/PieceRegions.h"
 #include "Support/PieceSplits.h"
 #include "Support/SourceTree.h"
 
@@ -264,26 +270,66 @@ void CompareWithWhole(const TriangleMesh& mesh,
       Fail(rank, what + ": area of cell " + std::to_string(c));
     }
   }
-  // Labels of the merged cell graph: the labeling stage's (closed surfaces: exactly, up to
-  // each shape's zero, which the stage puts in its zero cell).
-  const LabelingResult stage =
-    LabelCells(MakeLabelingInput(mesh, MeshTopology::Compute(mesh), curves, whole));
-  const LabelingResult mine = LabelCells(
-    LabelingInputOfCrossings(merged.NumberOfCells, merged.Crossings, DistinctShapeIds(curves)));
-  if (mine.ShapeIds != stage.ShapeIds || mine.ShapeConsistent != stage.ShapeConsistent)
+  // Labels of the merged cell graph, labeled on this rank from what rank 0 sent back: the
+  // labeling stage's on the whole arrangement (plugs of the boundary loops and all).
+  const MeshTopology topology = MeshTopology::Compute(mesh);
+  const LabelingInput stageInput = MakeLabelingInput(mesh, topology, curves, whole);
+  const LabelingResult stage = LabelCells(stageInput);
+  const LabelingInput input = MergedLabelingInput(merged, DistinctShapeIds(curves));
+  if (merged.NumberOfPlugs != static_cast<int>(topology.BoundaryLoops.size()) ||
+    input.CellComponent != stageInput.CellComponent || input.ZeroCells != stageInput.ZeroCells)
+  {
+    Fail(rank, what + ": plugs, components or zero nodes differ");
+  }
+  const LabelingResult mine = LabelMergedArrangement(merged, DistinctShapeIds(curves));
+  if (mine.ShapeIds != stage.ShapeIds || mine.ShapeConsistent != stage.ShapeConsistent ||
+    mine.Labels.size() != stage.Labels.size())
   {
     Fail(rank, what + ": shapes or consistency verdicts differ");
     return;
   }
-  for (int s = 0; s < mine.NumberOfShapes; ++s)
+  if (mine.Labels != stage.Labels)
   {
-    for (int c = 0; c < merged.NumberOfCells && mine.ShapeConsistent[s]; ++c)
+    Fail(rank, what + ": labels differ");
+  }
+  // Each Boolean's region on this rank: its owned triangles' share of the whole region.
+  for (const BooleanOptions& options : testing::TestBooleanOptions(stage.ShapeIds))
+  {
+    const std::string operation =
+      what + ", operation " + std::to_string(static_cast<int>(options.Operation));
+    std::vector<char> selected, mySelected;
+    std::string text, error, myText, myError;
+    const bool ok = SelectBooleanCells(stage, options, selected, text, error);
+    PieceRegion region;
+    if (SelectPieceBoolean(piece,
+          arr,
+          merged.GlobalCellOfLocal[0],
+          mine,
+          options,
+          region,
+          mySelected,
+          myText,
+          myError) != ok)
     {
-      if (mine.GetLabel(c, s) - mine.GetLabel(0, s) != stage.GetLabel(c, s) - stage.GetLabel(0, s))
-      {
-        Fail(rank, what + ": label of cell " + std::to_string(c));
-        break;
-      }
+      Fail(rank, operation + ": selected on one side only: " + error + myError);
+      continue;
+    }
+    if (!ok)
+    {
+      continue;
+    }
+    std::vector<char> owned(mesh.GetNumberOfTriangles(), 0);
+    for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
+    {
+      owned[piece.GlobalTriangle[t]] = piece.Owned[t];
+    }
+    const std::string difference =
+      testing::CompareRegions(testing::PieceRegionBySource(piece, arr, region),
+        testing::WholeRegionBySource(mesh, whole, selected),
+        &owned);
+    if (mySelected != selected || !difference.empty())
+    {
+      Fail(rank, operation + ": region differs: " + difference);
     }
   }
 }
@@ -403,6 +449,8 @@ int main(int argc, char* argv[])
   controller->Initialize(&argc, &argv);
   vtkMultiProcessController::SetGlobalController(controller);
   RunSurface(controller, MakeIcosphere(3), "sphere");
+  RunSurface(controller, testing::SphereWithHoles(), "sphere with four holes");
+  RunSurface(controller, MakeFlatSquare(24, 1.0, 0.2, 3), "square");
   RunSurface(controller, MakeTorus(1.0, 0.4, 40, 20), "torus");
   MeshData eight;
   std::string error;

@@ -45,6 +45,7 @@ using boolsurf::testing::RefinedArea;
 using boolsurf::testing::RegionOwners;
 using boolsurf::testing::SlabOwners;
 using boolsurf::testing::SourceShare;
+using boolsurf::testing::SphereWithHoles;
 using boolsurf::testing::TestBooleanOptions;
 using boolsurf::testing::WholeRegionBySource;
 
@@ -319,7 +320,18 @@ void ExpectSameAsWhole(const TriangleMesh& mesh,
   {
     merging.insert({ c.FromCell, c.ToCell });
   }
-  EXPECT_EQ(merging, meeting);
+  // On a surface with a boundary, a curve through a boundary vertex has two cells on one side
+  // there (the boundary parts them) in one patch, and the whole arrangement's cell graph, one
+  // arc per patch, names one of them: the pieces, which report crossings per sub-edge, meet
+  // both. The labels are the same (the other cell is linked to the boundary's plug).
+  if (MeshTopology::Compute(mesh).BoundaryLoops.empty())
+  {
+    EXPECT_EQ(merging, meeting);
+  }
+  else
+  {
+    EXPECT_TRUE(std::includes(merging.begin(), merging.end(), meeting.begin(), meeting.end()));
+  }
   LabelingResult mine;
   const LabelingResult stage = ExpectLabelsOfTheStage(mesh, curves, whole, merged, mine);
   ExpectRegionsOfTheStage(mesh, whole, stage, mine, run);
@@ -655,40 +667,11 @@ TEST(PieceArrangement, ManyRandomDrawings)
   }
 }
 
-namespace
-{
-
-// `data` without the triangles whose centroid lies within `radius` of one of `centers`: holes,
-// each a boundary loop that piece borders cut.
-MeshData WithHoles(const MeshData& data, const std::vector<Vec3>& centers, double radius)
-{
-  MeshData out;
-  out.Positions = data.Positions;
-  for (const Triangle& t : data.Triangles)
-  {
-    const Vec3 c =
-      (1.0 / 3.0) * (data.Positions[t[0]] + data.Positions[t[1]] + data.Positions[t[2]]);
-    bool keep = true;
-    for (const Vec3& h : centers)
-    {
-      keep = keep && Distance(c, h) > radius;
-    }
-    if (keep)
-    {
-      out.Triangles.push_back(t);
-    }
-  }
-  return out;
-}
-
-} // namespace
-
 // A sphere with four holes of different sizes: every boundary loop has a plug, the largest is
 // the zero node, and the labels are the stage's exactly whatever the split.
 TEST(PieceArrangement, OpenSphereWithHolesRandomCurves)
 {
-  const MeshData data = WithHoles(
-    MakeIcosphere(3), { { 1, 0, 0 }, { -0.6, 0.8, 0 }, { 0, -0.6, 0.8 }, { 0, 0, -1 } }, 0.3);
+  const MeshData data = SphereWithHoles();
   const TriangleMesh mesh(data.Positions, data.Triangles);
   const MeshTopology topology = MeshTopology::Compute(mesh);
   ASSERT_EQ(topology.BoundaryLoops.size(), 4u);
