@@ -231,7 +231,20 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* local = ports > 0 && inputVector[0]->GetNumberOfInformationObjects() > 0
     ? vtkPolyData::GetData(inputVector[0], 0)
     : nullptr;
-  if (this->ExecutesOnPieces() && vtkBoolSurfSurfacePiece::IsDistributed(controller, local))
+  bool onPieces =
+    this->ExecutesOnPieces() && vtkBoolSurfSurfacePiece::IsDistributed(controller, local);
+  if (onPieces && this->PiecesNeedGlobalIds() &&
+    !vtkBoolSurfSurfacePiece::HasGlobalIds(controller, local))
+  {
+    onPieces = false;
+    if (controller->GetLocalProcessId() == 0)
+    {
+      vtkWarningMacro("the surface is split across ranks, but its pieces carry no point and cell "
+                      "GlobalIds: gathered to rank 0 (Generate Global Ids on the undistributed "
+                      "surface lets this filter run on each rank's piece)");
+    }
+  }
+  if (onPieces)
   {
     std::vector<vtkPolyData*> locals(static_cast<std::size_t>(ports), nullptr);
     for (int p = 0; p < ports; ++p)
@@ -276,6 +289,24 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
   for (std::size_t p = 0; p < outputs.size(); ++p)
   {
     boolsurf::ReserveArraySlots(outputs[p], this->ArrayCounts[p]);
+  }
+  // An input from Surface Arrangement on pieces is one rank's part, or the parts appended: no
+  // whole arrangement to compute from (Docs/Parallel.md, "What still gathers").
+  for (int p = 0; p < ports; ++p)
+  {
+    if (inputs[p] &&
+      inputs[p]->GetFieldData()->GetAbstractArray(boolsurf::names::ArrangementOnPieces))
+    {
+      vtkErrorMacro(
+        "input " << p
+                 << " comes from Surface Arrangement run on each rank's piece "
+                    "of a split surface; "
+                 << this->GetClassName()
+                 << " gathers its inputs to rank 0 and cannot use pieces yet (Label "
+                    "Arrangement Cells and Surface Boolean run on them; the one-step BoolSurf "
+                    "filter on the surface gathers it)");
+      return vtkBoolSurfErrorReported;
+    }
   }
   // No UpdateProgress(0) here nor (1) at the end: the executive reports both around
   // RequestData (vtkDemandDrivenPipeline::ExecuteDataStart/End), and each report is an event.

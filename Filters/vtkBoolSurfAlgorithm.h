@@ -80,6 +80,10 @@ protected:
   /// (port 0; see vtkBoolSurfSurfacePiece) returns true: when two or more ranks hold triangles
   /// of it, ExecutePiece() runs on every rank instead of gathering the inputs to the first.
   virtual bool ExecutesOnPieces() const { return false; }
+  /// A filter on pieces that names the surface by the undistributed surface's ids (the
+  /// distributed arrangement) returns true: it then runs on pieces only when every piece carries
+  /// point and cell GlobalIds, and otherwise gathers as the other filters do, saying why.
+  virtual bool PiecesNeedGlobalIds() const { return false; }
   /// The work of such a filter on this rank's inputs: locals[p] is this rank's own data on
   /// input port p, not gathered (locals[0] its piece of the surface, possibly empty; null for
   /// an optional port left unconnected). A filter whose other inputs live on one rank only (the

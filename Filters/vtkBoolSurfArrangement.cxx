@@ -3,8 +3,10 @@
 #include "vtkBoolSurfArrayNames.h"
 
 #include "vtkBoolSurfArrangementOutput.h"
+#include "vtkBoolSurfControlCurves.h"
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfHomologyOutput.h"
+#include "vtkBoolSurfPieceArrangementStage.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfStageSettingsDefinitions.h"
 #include "vtkBoolSurfSurfaceCache.h"
@@ -14,6 +16,7 @@
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -146,6 +149,46 @@ bool vtkBoolSurfArrangement::Execute(const std::vector<vtkPolyData*>& inputs,
   // The arrangement in Core form for the labeling and selections (vtkBoolSurfStageHandoff.h).
   boolsurf::AttachStageResult<boolsurf::ArrangementResult>(
     output->GetCellData()->GetArray(boolsurf::names::ArrangementCell), std::move(result));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfArrangement::ExecutePiece(const std::vector<vtkPolyData*>& locals,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  std::shared_ptr<boolsurf::PieceArrangementResult> result;
+  bool drawingStart = false;
+  std::vector<std::string> warnings;
+  const bool ok = boolsurf::ArrangeOnPiece(controller,
+    locals[0],
+    locals[1],
+    *this->ArrangementSettings,
+    outputs[0],
+    result,
+    drawingStart,
+    error,
+    warnings);
+  this->ReportWarnings(warnings);
+  if (!ok)
+  {
+    return false;
+  }
+  if (drawingStart)
+  {
+    boolsurf::MarkDrawingStart(outputs);
+    return true;
+  }
+  if (controller->GetLocalProcessId() == 0)
+  {
+    vtkWarningMacro("ran on each rank's piece of the surface: its output is one rank's part of "
+                    "the refined surface, without "
+      << boolsurf::ArraysNotOnPieces << " (not yet computed on pieces)");
+  }
+  // The piece and its arrangement for the labeling and the Boolean on this rank.
+  boolsurf::AttachStageResult<boolsurf::PieceArrangementResult>(
+    outputs[0]->GetCellData()->GetArray(boolsurf::names::ArrangementCell), std::move(result));
   return true;
 }
 

@@ -46,6 +46,11 @@
  * the generators and their shortened loops; see vtkBoolSurfLabeling and Docs/Homology.md).
  * Downstream filters (labeling, Booleans) need only this port.
  *
+ * Under MPI, on a surface split across ranks whose pieces carry point and cell GlobalIds, each
+ * rank arranges its own piece and port 0 is its part of the refined surface (field data
+ * `ArrangementOnPieces`; which arrays it has is in Docs/Parallel.md); Label Arrangement Cells
+ * and Surface Boolean then run on the pieces too, and the other filters refuse such an input.
+ *
  * Output port 1, the patches as polylines on the refined surface's points, cell data
  * `PatchId`, `ShapeId`, `CurveId`, `LeftCell`, `RightCell`, `Length`.
  *
@@ -92,6 +97,14 @@ protected:
   ~vtkBoolSurfArrangement() override;
 
   bool Execute(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
+
+  /// On a surface split across ranks (with point and cell GlobalIds), each rank arranges its
+  /// piece (vtkBoolSurfPieceArrangementStage.h): port 0 is its part of the refined surface.
+  bool ExecutesOnPieces() const override { return true; }
+  bool PiecesNeedGlobalIds() const override { return true; }
+  bool ExecutePiece(const std::vector<vtkPolyData*>& locals,
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
 

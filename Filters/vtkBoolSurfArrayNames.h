@@ -112,6 +112,13 @@ constexpr const char* GeodesicSiteGraph = "GeodesicSiteGraph";
 constexpr const char* ControlOffsets = "ControlOffsets";
 constexpr const char* ControlTriangleId = "ControlTriangleId";
 constexpr const char* ControlBarycentric = "ControlBarycentric";
+/// Under MPI (field data, 64-bit integers): the traced curves as the pieces of a surface split
+/// across ranks need them (Core/Distributed/PieceWire.h, message 0: points on the surface's
+/// point and cell GlobalIds), for Surface Arrangement on each rank's piece.
+constexpr const char* PieceCurvesMessage = "PieceCurvesMessage";
+/// Surface Arrangement's output on each rank's piece (field data, int: the number of
+/// ranks): the output is one rank's part of the refined surface, not the whole.
+constexpr const char* ArrangementOnPieces = "ArrangementOnPieces";
 /// Surface Curves (point data of the traced curves): the surface's normal at each point.
 constexpr const char* SurfaceNormal = "SurfaceNormal";
 

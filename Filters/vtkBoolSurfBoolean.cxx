@@ -2,14 +2,18 @@
 
 #include "vtkBoolSurfControlCurves.h"
 
+#include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
+#include "vtkBoolSurfPieceLabels.h"
 #include "vtkBoolSurfSelectionOutput.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfStageSettingsDefinitions.h"
 
+#include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 
@@ -81,6 +85,36 @@ bool vtkBoolSurfBoolean::Execute(const std::vector<vtkPolyData*>& inputs,
   if (!note.empty())
   {
     vtkWarningMacro(<< note);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfBoolean::ExecutePiece(const std::vector<vtkPolyData*>& locals,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
+{
+  if (boolsurf::PassOnDrawingStart(locals[0], outputs))
+  {
+    return true; // a drawing being started (on every rank: the arrangement marked each piece)
+  }
+  std::string text;
+  if (!boolsurf::WritePieceRegion(locals[0], *this->BooleanSettings, outputs[0], text, error))
+  {
+    return false;
+  }
+  // The region's boundary and the vector outputs need boundary loops stitched across ranks:
+  // empty, marked as coming from pieces so that the filters that gather refuse them.
+  for (std::size_t p = 1; p < outputs.size(); ++p)
+  {
+    outputs[p]->GetFieldData()->AddArray(
+      outputs[0]->GetFieldData()->GetAbstractArray(boolsurf::names::ArrangementOnPieces));
+  }
+  if (vtkMultiProcessController::GetGlobalController()->GetLocalProcessId() == 0)
+  {
+    vtkWarningMacro("ran on each rank's piece of the surface: each rank's port 0 is its part of "
+                    "the region; ports 1 to 3 (the boundary, its control points and the clipped "
+                    "curves) are not yet computed on pieces and stay empty");
   }
   return true;
 }

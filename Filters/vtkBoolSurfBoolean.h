@@ -71,6 +71,13 @@ protected:
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
 
+  /// After Surface Arrangement on each rank's piece: on the rank's piece, from the result it
+  /// attached (vtkBoolSurfPieceLabels.h), nothing gathered.
+  bool ExecutesOnPieces() const override { return true; }
+  bool ExecutePiece(const std::vector<vtkPolyData*>& locals,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
+
 private:
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -6,6 +6,7 @@
 
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
+#include "vtkBoolSurfPieceLabels.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfStageSettingsDefinitions.h"
 
@@ -14,6 +15,7 @@
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkWeakPointer.h>
@@ -109,6 +111,40 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
     in.GeneratorsDrawn = true;
   }
   generators->ShallowCopy(in.Generators);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfLabeling::ExecutePiece(const std::vector<vtkPolyData*>& locals,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
+{
+  if (boolsurf::PassOnDrawingStart(locals[0], outputs))
+  {
+    return true; // a drawing being started (on every rank: the arrangement marked each piece)
+  }
+  boolsurf::LabelingOutputOptions options;
+  options.ZeroCell = *this->ZeroCellSettings;
+  options.ColorShape = this->ColorShape;
+  options.PerTriangleLabels = this->PerTriangleLabels;
+  std::shared_ptr<boolsurf::PieceLabeledResult> result;
+  std::string warning;
+  if (!boolsurf::LabelPiece(locals[0], options, outputs[0], result, error, warning))
+  {
+    return false;
+  }
+  boolsurf::AttachStageResult<boolsurf::PieceLabeledResult>(
+    outputs[0]->GetFieldData()->GetArray(boolsurf::names::CellLabels), std::move(result));
+  // The labels are the same on every rank: one rank says what they mean.
+  if (vtkMultiProcessController::GetGlobalController()->GetLocalProcessId() == 0)
+  {
+    if (!warning.empty())
+    {
+      vtkWarningMacro(<< warning);
+    }
+    vtkWarningMacro("ran on each rank's piece of the surface: port 1 (the homology generators) "
+                    "is not yet computed on pieces and stays empty");
+  }
   return true;
 }
 

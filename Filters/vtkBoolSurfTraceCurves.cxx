@@ -2,12 +2,14 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
+#include "vtkBoolSurfCurvesMessage.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfTraceStage.h"
 
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
@@ -75,6 +77,22 @@ bool vtkBoolSurfTraceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   // The traced curves in Core form for Surface Arrangement (see vtkBoolSurfStageHandoff.h).
   result->Surface = boolsurf::SurfaceIdentity(surfaceInput);
   result->Method = this->GetTraceOptions().Method;
+  // Under MPI, the curves as the pieces of a split surface need them, for Surface Arrangement
+  // on each rank's piece (vtkBoolSurfCurvesMessage.h): packed here, where the traced mesh is.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    std::string note;
+    if (boolsurf::PackPieceCurvesMessage(
+          this->GetSurfaceCache().GetCurrent(), result->Curves, result->PieceMessage, note))
+    {
+      boolsurf::AddPieceCurvesField(result->PieceMessage, output->GetFieldData());
+    }
+    if (!note.empty() && !result->PieceMessage.empty())
+    {
+      vtkWarningMacro(<< note);
+    }
+  }
   boolsurf::AttachStageResult<boolsurf::TracedCurvesResult>(
     output->GetPointData()->GetArray(boolsurf::names::TriangleId), std::move(result));
   return true;

@@ -188,6 +188,13 @@ bool PassOnDrawingStart(vtkPolyData* input, const std::vector<vtkPolyData*>& out
   {
     return false;
   }
+  MarkDrawingStart(outputs);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void MarkDrawingStart(const std::vector<vtkPolyData*>& outputs)
+{
   for (vtkPolyData* output : outputs)
   {
     if (output)
@@ -199,7 +206,6 @@ bool PassOnDrawingStart(vtkPolyData* input, const std::vector<vtkPolyData*>& out
       output->GetFieldData()->AddArray(drawing);
     }
   }
-  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -57,6 +57,9 @@ bool IsDrawingWithoutCurves(vtkPolyData* curves);
 /// `outputs` and marks each as such (field data Drawing), so that every stage down the chain
 /// does the same: no region yet and no message. Returns whether it did.
 bool PassOnDrawingStart(vtkPolyData* input, const std::vector<vtkPolyData*>& outputs);
+/// Every output emptied and marked as a drawing being started (field data Drawing), as
+/// PassOnDrawingStart marks them (a filter on pieces whose curves live on another rank).
+void MarkDrawingStart(const std::vector<vtkPolyData*>& outputs);
 
 /// Reads every line and polygon cell of `curves` (vertex cells and strips are ignored with a
 /// note in `notes`). A curve marked as being drawn (cell data Complete 0, as Surface Curves

@@ -125,7 +125,6 @@ bool LabelArrangement(vtkPolyData* input,
   std::string& error,
   std::string& warning)
 {
-  vtkDataArray* cellOf = input->GetCellData()->GetArray(boolsurf::names::ArrangementCell);
   // The one-step filter's labeling, on the arrangement itself.
   const Arrangement& arr = arranged.Arrangement;
   LabelingInput in =
@@ -141,16 +140,28 @@ bool LabelArrangement(vtkPolyData* input,
     in.SetZeroCell(zero);
   }
   labels = LabelCells(in);
+  WriteLabelingOutput(input, labels, options, output, warning);
+  return true;
+}
 
+//------------------------------------------------------------------------------
+void WriteLabelingOutput(vtkPolyData* input,
+  const LabelingResult& labels,
+  const LabelingOutputOptions& options,
+  vtkPolyData* output,
+  std::string& warning)
+{
+  vtkDataArray* cellOf = input->GetCellData()->GetArray(boolsurf::names::ArrangementCell);
   output->ShallowCopy(input);
-  const int ns = in.NumberOfShapes;
+  const int ns = labels.NumberOfShapes;
   warning = InconsistencyWarning(labels);
   AddLabelTable(labels, output->GetFieldData());
   // Generators in excess per shape, and what they mean for the inconsistent ones.
   const HomologyFields homology = ReadHomologyFields(input->GetFieldData(), false);
   if (homology.Present)
   {
-    AddHomologyExcess(ShapeExcess(homology, in.ShapeIds), in.ShapeIds, output->GetFieldData());
+    AddHomologyExcess(
+      ShapeExcess(homology, labels.ShapeIds), labels.ShapeIds, output->GetFieldData());
     const std::string why = ExplainInconsistency(labels, homology);
     warning += why.empty() ? "" : "\n" + why;
   }
@@ -159,18 +170,18 @@ bool LabelArrangement(vtkPolyData* input,
   const bool color = options.ColorShape >= 0;
   if (!color && !options.PerTriangleLabels)
   {
-    return true;
+    return;
   }
   const std::vector<int> cells = ReadTriangleCells(cellOf);
   const vtkIdType nt = static_cast<vtkIdType>(cells.size());
   if (color)
   {
-    const int s = ShapeIndexOf(in.ShapeIds, options.ColorShape);
+    const int s = ShapeIndexOf(labels.ShapeIds, options.ColorShape);
     if (s < 0)
     {
       warning += (warning.empty() ? "" : "; ") + std::string("ColorShape S") +
         std::to_string(options.ColorShape) + " is not a shape of the input (" +
-        ShapeList(in.ShapeIds) + "): no ShapeLabel array";
+        ShapeList(labels.ShapeIds) + "): no ShapeLabel array";
     }
     else
     {
@@ -202,7 +213,6 @@ bool LabelArrangement(vtkPolyData* input,
     }
     output->GetCellData()->AddArray(perTriangle);
   }
-  return true;
 }
 
 } // namespace boolsurf

@@ -57,6 +57,15 @@ bool LabelArrangement(vtkPolyData* input,
   std::string& error,
   std::string& warning);
 
+/// LabelArrangement's output for labels computed elsewhere (on the merged cell graph of a
+/// distributed arrangement, vtkBoolSurfPieceLabels.h): `output` a shallow copy of `input` with
+/// the label table and the per-triangle arrays asked for (read through ArrangementCell).
+void WriteLabelingOutput(vtkPolyData* input,
+  const LabelingResult& labels,
+  const LabelingOutputOptions& options,
+  vtkPolyData* output,
+  std::string& warning);
+
 /// Field data `ShapeIds`, `ShapeConsistent` (per shape) and `CellLabels` (cells x shapes,
 /// components named S<id>): the labels as a table, written by the labeling and the one-step
 /// filters alike.

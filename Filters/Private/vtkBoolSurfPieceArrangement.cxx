@@ -17,9 +17,12 @@ constexpr int DataTag = 56012;
 
 using boolsurf::WireBuffer;
 
-/// Collective: true when `ok` on every rank; else `error` names the first failing rank (its
-/// own message on that rank).
-bool AllSucceeded(vtkMultiProcessController* controller, bool ok, std::string& error)
+} // namespace
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfPieceArrangement::AllSucceeded(vtkMultiProcessController* controller,
+  bool ok,
+  std::string& error)
 {
   const int rank = controller->GetLocalProcessId();
   int failing = ok ? controller->GetNumberOfProcesses() : rank;
@@ -34,6 +37,8 @@ bool AllSucceeded(vtkMultiProcessController* controller, bool ok, std::string& e
   return false;
 }
 
+namespace
+{
 void SendBuffer(vtkMultiProcessController* controller, const WireBuffer& buffer, int to)
 {
   long long length = static_cast<long long>(buffer.size());

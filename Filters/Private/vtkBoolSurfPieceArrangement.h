@@ -53,6 +53,11 @@ public:
     const boolsurf::ArrangementOptions& options,
     std::string& error);
 
+  /// Collective: true when `ok` on every rank; else false on every rank, `error` naming the
+  /// first failing rank (its own message on that rank). What each step of a distributed run
+  /// that can fail on one rank ends with, so that no rank goes on to wait for the others.
+  static bool AllSucceeded(vtkMultiProcessController* controller, bool ok, std::string& error);
+
   /// The piece's own arrangement (on piece.Mesh; cells are local).
   const boolsurf::Arrangement& GetArrangement() const { return this->Local; }
   /// The merged arrangement as this rank has it: GlobalCellOfLocal holds this rank's row only

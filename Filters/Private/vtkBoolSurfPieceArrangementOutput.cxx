@@ -19,8 +19,11 @@
 namespace boolsurf
 {
 
-void WritePieceArrangement(const PieceMesh& piece,
+void WritePieceTriangles(const PieceMesh& piece,
   const vtkBoolSurfPieceArrangement& run,
+  const std::vector<int>& triangles,
+  const std::vector<int>& sources,
+  const std::vector<int>& cells,
   vtkPolyData* output)
 {
   output->Initialize();
@@ -40,39 +43,27 @@ void WritePieceArrangement(const PieceMesh& piece,
   // Output point of each refined point, made on first use (a piece uses few of the refined
   // points of its ring).
   std::vector<vtkIdType> outputPoint(static_cast<std::size_t>(arr.GetNumberOfPoints()), -1);
-  // Local triangles are in ascending global order (PieceMesh), so the owned ones come out in
-  // the one-rank output's order of source triangles.
-  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  for (std::size_t i = 0; i < triangles.size(); ++i)
   {
-    if (!piece.Owned[t])
+    const Triangle corners = arr.GetTriangle(mesh, triangles[i]);
+    vtkIdType ids[3];
+    for (int k = 0; k < 3; ++k)
     {
-      continue;
-    }
-    ForEachRefinedTriangle(mesh,
-      arr,
-      t,
-      [&](int r)
+      vtkIdType& id = outputPoint[corners[k]];
+      if (id < 0)
       {
-        const Triangle corners = arr.GetTriangle(mesh, r);
-        vtkIdType ids[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          vtkIdType& id = outputPoint[corners[k]];
-          if (id < 0)
-          {
-            const Vec3 x = arr.GetPosition(mesh, corners[k]);
-            id = points->InsertNextPoint(x.x, x.y, x.z);
-            // On global triangle ids; a mesh vertex names one of its triangles in the piece.
-            const SurfacePoint p = arr.GetPointSurface(mesh, corners[k]);
-            triangleId->InsertNextValue(piece.GlobalTriangle[p.Triangle]);
-            barycentric->InsertNextTuple2(p.U, p.V);
-          }
-          ids[k] = id;
-        }
-        polys->InsertNextCell(3, ids);
-        cellOf->InsertNextValue(run.GetGlobalCell(arr.CellOfTriangle(r)));
-        source->InsertNextValue(piece.GlobalTriangle[t]);
-      });
+        const Vec3 x = arr.GetPosition(mesh, corners[k]);
+        id = points->InsertNextPoint(x.x, x.y, x.z);
+        // On global triangle ids; a mesh vertex names one of its triangles in the piece.
+        const SurfacePoint p = arr.GetPointSurface(mesh, corners[k]);
+        triangleId->InsertNextValue(piece.GlobalTriangle[p.Triangle]);
+        barycentric->InsertNextTuple2(p.U, p.V);
+      }
+      ids[k] = id;
+    }
+    polys->InsertNextCell(3, ids);
+    cellOf->InsertNextValue(cells[i]);
+    source->InsertNextValue(sources[i]);
   }
   output->SetPoints(points);
   output->SetPolys(polys);
@@ -80,10 +71,37 @@ void WritePieceArrangement(const PieceMesh& piece,
   output->GetCellData()->AddArray(source);
   output->GetPointData()->AddArray(triangleId);
   output->GetPointData()->AddArray(barycentric);
-  vtkNew<vtkIntArray> cells;
-  cells->SetName(names::NumberOfCells);
-  cells->InsertNextValue(run.GetMerged().NumberOfCells);
-  output->GetFieldData()->AddArray(cells);
+}
+
+void WritePieceArrangement(const PieceMesh& piece,
+  const vtkBoolSurfPieceArrangement& run,
+  vtkPolyData* output)
+{
+  const Arrangement& arr = run.GetArrangement();
+  std::vector<int> triangles, sources, cells;
+  // Local triangles are in ascending global order (PieceMesh), so the owned ones come out in
+  // the one-rank output's order of source triangles.
+  for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
+  {
+    if (!piece.Owned[t])
+    {
+      continue;
+    }
+    ForEachRefinedTriangle(piece.Mesh,
+      arr,
+      t,
+      [&](int r)
+      {
+        triangles.push_back(r);
+        sources.push_back(piece.GlobalTriangle[t]);
+        cells.push_back(run.GetGlobalCell(arr.CellOfTriangle(r)));
+      });
+  }
+  WritePieceTriangles(piece, run, triangles, sources, cells, output);
+  vtkNew<vtkIntArray> count;
+  count->SetName(names::NumberOfCells);
+  count->InsertNextValue(run.GetMerged().NumberOfCells);
+  output->GetFieldData()->AddArray(count);
 }
 
 } // namespace boolsurf

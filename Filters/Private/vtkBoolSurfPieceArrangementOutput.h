@@ -18,11 +18,24 @@
 
 #include "Distributed/PieceMesh.h"
 
+#include <vector>
+
 class vtkBoolSurfPieceArrangement;
 class vtkPolyData;
 
 namespace boolsurf
 {
+/// Fills `output` (emptied first) with refined triangles `triangles` of `run`'s arrangement on
+/// `piece`, with their global source triangles and global cells: points, ArrangementCell,
+/// SourceTriangle, TriangleId and Barycentric as WritePieceArrangement writes them (a region
+/// of the piece: vtkBoolSurfPieceLabels.h).
+void WritePieceTriangles(const PieceMesh& piece,
+  const vtkBoolSurfPieceArrangement& run,
+  const std::vector<int>& triangles,
+  const std::vector<int>& sources,
+  const std::vector<int>& cells,
+  vtkPolyData* output);
+
 /// Fills `output` (emptied first) with the owned refined triangles of `run` on `piece`.
 void WritePieceArrangement(const PieceMesh& piece,
   const vtkBoolSurfPieceArrangement& run,

@@ -8,6 +8,7 @@
 #include <vtkCommand.h>
 #include <vtkCommunicator.h>
 #include <vtkDataArray.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkInformationVector.h>
@@ -21,6 +22,7 @@
 #include <map>
 #include <mutex>
 #include <numeric>
+#include <string>
 #include <utility>
 
 namespace
@@ -70,11 +72,35 @@ void ForgetOnDelete(vtkAlgorithm* filter)
   kept.Watched[filter] = filter->AddObserver(vtkCommand::DeleteEvent, forget);
 }
 
-/// The cells of pd in the order of their global ids (pieces of a redistributed surface come
-/// back in rank order; the ids, when present, give the input's order).
-vtkSmartPointer<vtkPolyData> InGlobalIdOrder(vtkPolyData* pd)
+/// The name of `attributes`' GlobalIds, now a plain array ("" when none). VTK's copies of
+/// point and cell data leave the GlobalIds attribute out (and vtkStaticCleanPolyData crashed on
+/// it), so the merge carries the ids as a plain array and marks them again at the end: the
+/// gathered surface keeps the pieces' global ids (what Trace Surface Curves names the curves by
+/// for the pieces, vtkBoolSurfCurvesMessage.h).
+std::string UnmarkGlobalIds(vtkDataSetAttributes* attributes)
 {
-  vtkDataArray* ids = pd->GetCellData()->GetGlobalIds();
+  vtkDataArray* ids = attributes->GetGlobalIds();
+  if (!ids || !ids->GetName())
+  {
+    return std::string();
+  }
+  attributes->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS);
+  return ids->GetName();
+}
+
+void MarkGlobalIds(vtkDataSetAttributes* attributes, const std::string& name)
+{
+  if (!name.empty() && attributes->GetArray(name.c_str()))
+  {
+    attributes->SetActiveGlobalIds(name.c_str());
+  }
+}
+
+/// The cells of pd in the order of their global ids `name` (pieces of a redistributed surface
+/// come back in rank order; the ids, when present, give the input's order).
+vtkSmartPointer<vtkPolyData> InGlobalIdOrder(vtkPolyData* pd, const std::string& name)
+{
+  vtkDataArray* ids = name.empty() ? nullptr : pd->GetCellData()->GetArray(name.c_str());
   if (!ids || ids->GetNumberOfTuples() != pd->GetNumberOfCells())
   {
     return pd;
@@ -132,6 +158,8 @@ vtkSmartPointer<vtkPolyData> Merge(const std::vector<vtkSmartPointer<vtkDataObje
   }
   append->Update();
   vtkSmartPointer<vtkPolyData> merged = append->GetOutput();
+  const std::string pointIds = UnmarkGlobalIds(merged->GetPointData());
+  const std::string cellIds = UnmarkGlobalIds(merged->GetCellData());
   if (surface)
   {
     // Pieces of one surface repeat the points on their shared edges: merge exact duplicates
@@ -146,7 +174,9 @@ vtkSmartPointer<vtkPolyData> Merge(const std::vector<vtkSmartPointer<vtkDataObje
     clean->Update();
     merged = clean->GetOutput();
   }
-  merged = InGlobalIdOrder(merged);
+  merged = InGlobalIdOrder(merged, cellIds);
+  MarkGlobalIds(merged->GetPointData(), pointIds);
+  MarkGlobalIds(merged->GetCellData(), cellIds);
   merged->GetFieldData()->ShallowCopy(filled[0]->GetFieldData());
   return merged;
 }

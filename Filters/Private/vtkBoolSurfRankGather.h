@@ -18,7 +18,8 @@
  * RedistributeDataSet/D3 or a parallel reader), the pieces are appended, ghost cells dropped,
  * coincident points of surface ports merged (exact positions), and cells put back in the
  * order of their global ids when the pieces carry them (so TriangleId of exact surface points
- * keep meaning the input's triangles); field data is that of the first non-empty piece.
+ * keep meaning the input's triangles), the pieces' point and cell GlobalIds kept; field data is
+ * that of the first non-empty piece.
  *
  * The gathered data is kept from one update to the next (per filter and port) while no rank's
  * input changed, so the filters' caches, keyed by input object and modification time, still

@@ -71,6 +71,9 @@ struct TracedCurvesResult
   std::vector<CurveSource> Sources;
   /// How the legs were traced; the control points of results are traced the same way.
   GeodesicMethod Method = GeodesicMethod::Bounded;
+  /// Under MPI: the curves as the pieces of a split surface need them (message 0,
+  /// vtkBoolSurfCurvesMessage.h); empty otherwise.
+  std::vector<long long> PieceMessage;
 };
 
 /// Surface Arrangement -> labeling and selections: the arrangement with what it was computed

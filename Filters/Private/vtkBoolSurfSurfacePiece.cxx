@@ -1,11 +1,15 @@
 #include "vtkBoolSurfSurfacePiece.h"
 
+#include "vtkBoolSurfArrayNames.h"
+
 #include <vtkCellData.h>
 #include <vtkCommunicator.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkGenerateGlobalIds.h>
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <algorithm>
@@ -79,10 +83,29 @@ bool vtkBoolSurfSurfacePiece::IsDistributed(vtkMultiProcessController* controlle
   {
     return false;
   }
-  int holds = local && local->GetNumberOfPolys() + local->GetNumberOfStrips() > 0 ? 1 : 0;
+  // A rank's part of Surface Arrangement on pieces counts even without triangles (a rank may
+  // own none of the refined surface): the stages after it stay on the pieces.
+  int holds = local &&
+      (local->GetNumberOfPolys() + local->GetNumberOfStrips() > 0 ||
+        local->GetFieldData()->GetAbstractArray(boolsurf::names::ArrangementOnPieces))
+    ? 1
+    : 0;
   int holding = 0;
   controller->AllReduce(&holds, &holding, 1, vtkCommunicator::SUM_OP);
   return holding >= 2;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfSurfacePiece::HasGlobalIds(vtkMultiProcessController* controller,
+  vtkPolyData* local)
+{
+  int has = !local || local->GetNumberOfCells() == 0 ||
+      (local->GetPointData()->GetGlobalIds() && local->GetCellData()->GetGlobalIds())
+    ? 1
+    : 0;
+  int all = 0;
+  controller->AllReduce(&has, &all, 1, vtkCommunicator::MIN_OP);
+  return all == 1;
 }
 
 //------------------------------------------------------------------------------

@@ -39,8 +39,12 @@ class vtkBoolSurfSurfacePiece
 {
 public:
   /// Collective: true when two or more ranks hold triangles of `local` (the filter's input on
-  /// this rank, possibly null). A surface on one rank only is processed there as it is.
+  /// this rank, possibly null), or a part of Surface Arrangement's output on pieces (field data
+  /// ArrangementOnPieces). A surface on one rank only is processed there as it is.
   static bool IsDistributed(vtkMultiProcessController* controller, vtkPolyData* local);
+  /// Collective: true when every rank holding cells of `local` has their point and cell
+  /// GlobalIds (the ids the distributed arrangement names the surface by).
+  static bool HasGlobalIds(vtkMultiProcessController* controller, vtkPolyData* local);
 
   /// Collective: the piece of `local` on this rank. False on every rank, with `error` naming
   /// the global cell ids owned on two ranks, when pieces overlap without ghost marks.

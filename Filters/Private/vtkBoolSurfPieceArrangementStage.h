@@ -1,0 +1,71 @@
+/**
+ * @brief   Surface Arrangement on each rank's piece of a surface split across MPI ranks
+ *
+ * The filter side of the distributed arrangement (Docs/Parallel.md, "What runs on each rank's
+ * piece"): rank 0 broadcasts the traced curves as Trace Surface Curves packed them
+ * (vtkBoolSurfCurvesMessage.h); every rank builds its piece (vtkBoolSurfSurfacePiece: owned
+ * triangles, the neighbour ranks, overlapping pieces refused) and its ring of ghosts
+ * (vtkBoolSurfRingedPiece.h), restricts the curves to it and runs the distributed arrangement
+ * (vtkBoolSurfPieceArrangement.h); port 0 is the rank's part of the refined surface
+ * (vtkBoolSurfPieceArrangementOutput.h) with the field array ArrangementOnPieces, and the piece
+ * with its arrangement and the merged cell graph is handed to Label Arrangement Cells and Surface
+ * Boolean on the same rank (attached to ArrangementCell, vtkBoolSurfStageHandoff.h).
+ *
+ * Nothing proportional to the surface travels: the curves from rank 0, the ring and the
+ * boundary records between neighbours, the cells and the cell graph to and from rank 0.
+ */
+#ifndef vtkBoolSurfPieceArrangementStage_h
+#define vtkBoolSurfPieceArrangementStage_h
+
+#include "vtkBoolSurfPieceArrangement.h"
+
+#include "Arrangement/Arrangement.h"
+#include "Distributed/PieceMesh.h"
+
+#include <vtkSmartPointer.h>
+#include <vtkType.h>
+
+#include <string>
+#include <vector>
+
+class vtkMultiProcessController;
+class vtkPolyData;
+
+namespace boolsurf
+{
+
+/// Surface Arrangement on a piece -> Label Arrangement Cells and Surface Boolean on that piece.
+struct PieceArrangementResult
+{
+  PieceMesh Piece;
+  vtkBoolSurfPieceArrangement Run;
+  /// The curves' distinct ShapeIds (the whole drawing's, the same on every rank).
+  std::vector<int> ShapeIds;
+  /// The rank's piece as it arrived, and per local triangle of Piece its cell there (-1 for a
+  /// ghost): the surface's own cell arrays, carried to the owned triangles' regions.
+  vtkSmartPointer<vtkPolyData> Surface;
+  std::vector<vtkIdType> SurfaceCell;
+};
+
+/// The arrays of the one-rank port 0 that a piece's output does not have yet, named for the
+/// warning that says so (Docs/Parallel.md).
+extern const char* const ArraysNotOnPieces;
+
+/// Collective: Surface Arrangement on this rank's piece `local` with the curves `curves` (Trace
+/// Surface Curves' output; read on rank 0 only). Fills `output` and `result`. Returns false on
+/// every rank, with `error`, when any rank fails; true with `drawingStart` when rank 0's curves
+/// are a drawing being started (no arrangement, and no message). `warnings` gets the piece's
+/// notes (generated global ids).
+bool ArrangeOnPiece(vtkMultiProcessController* controller,
+  vtkPolyData* local,
+  vtkPolyData* curves,
+  const ArrangementOptions& options,
+  vtkPolyData* output,
+  std::shared_ptr<PieceArrangementResult>& result,
+  bool& drawingStart,
+  std::string& error,
+  std::vector<std::string>& warnings);
+
+}
+
+#endif

@@ -1,0 +1,120 @@
+"""Surface Arrangement, Label Arrangement Cells and Surface Boolean on the pieces of a surface
+split across MPI ranks, their outputs written as JSON per source triangle: run by
+TestPython3MpiPiecesChain.py with pvbatch on 1, 2 and 3 ranks, whose unions over ranks must
+agree with one rank's outputs.
+
+    mpiexec -np N pvbatch Testing/Python/MpiPiecesChain.py --json out.json [--partitions K]
+
+The surface (Data/eight.ply) gets global ids in its serial order (Generate Global Ids), then
+RedistributeDataSet and Extract Surface split it across the ranks; on one rank it stays whole
+and every filter computes as ever. Three circles, one crossing many pieces. Each output is
+fetched with the rank that holds each triangle, so the test sees that every rank holds only
+its part (--partitions 2 on 3 ranks: a rank with no triangles); a filter that gathers its input (Boundary Sampled Curves) fed the labeled pieces
+must refuse them.
+"""
+import argparse
+import json
+import os
+import sys
+
+source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
+                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, os.path.join(source_dir, "Examples"))
+from boolsurf_example_utils import (SurfaceRays, curves_source, load_plugin,  # noqa: E402
+                                    ranks, sample_source, surface_circle)
+from paraview.simple import *  # noqa: E402,F401,F403
+from paraview import servermanager as sm  # noqa: E402
+from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
+
+parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+parser.add_argument("--json", required=True)
+parser.add_argument("--partitions", type=int)
+args = parser.parse_args()
+load_plugin(globals())
+
+mesh = PLYReader(FileNames=[os.path.join(source_dir, "Data", "eight.ply")])
+redistributed = RedistributeDataSet(Input=GenerateGlobalIds(Input=mesh))
+if args.partitions:
+    redistributed.NumberOfPartitions = args.partitions
+surface = ExtractSurface(Input=redistributed)
+surface.UpdatePipeline()
+rays = SurfaceRays(mesh, axis=1)
+circles = [(surface_circle(rays, (0.0, -0.035), 0.06), 0),
+           (surface_circle(rays, (0.0, 0.035), 0.06), 1),
+           (surface_circle(rays, (0.0, 0.05), 0.08, n=40), 2)]
+control = curves_source(circles, surface)
+
+# Each rank's output with its rank as a cell array: the fetched union says who holds what.
+RANK = """
+from vtkmodules.vtkCommonCore import vtkIntArray
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+inp = self.GetInput()
+out = self.GetOutput()
+out.ShallowCopy(inp)
+rank = vtkMultiProcessController.GetGlobalController().GetLocalProcessId()
+held = vtkIntArray()
+held.SetName("HeldBy")
+held.SetNumberOfTuples(out.GetNumberOfCells())
+held.Fill(rank)
+out.GetCellData().AddArray(held)
+"""
+
+
+def fetched(proxy):
+    return sm.Fetch(ProgrammableFilter(Input=proxy, Script=RANK))
+
+
+def per_source(data, arrays):
+    """Per SourceTriangle: the triangles' [area, *values of `arrays`], in output order."""
+    sizes = vtkCellSizeFilter()
+    sizes.SetInputData(data)
+    sizes.Update()
+    area = sizes.GetOutput().GetCellData().GetArray("Area")
+    source = data.GetCellData().GetArray("SourceTriangle")
+    values = [data.GetCellData().GetArray(a) for a in arrays]
+    out = {}
+    for c in range(data.GetNumberOfCells()):
+        row = [area.GetValue(c)]
+        for v in values:
+            row += [v.GetComponent(c, k) for k in range(v.GetNumberOfComponents())]
+        out.setdefault(str(int(source.GetTuple1(c))), []).append(row)
+    return out
+
+
+def holders(data):
+    held = data.GetCellData().GetArray("HeldBy")
+    counts = {}
+    for c in range(data.GetNumberOfCells()):
+        counts[held.GetValue(c)] = counts.get(held.GetValue(c), 0) + 1
+    return {str(k): v for k, v in sorted(counts.items())}
+
+
+def field(data, name):
+    a = data.GetFieldData().GetAbstractArray(name)
+    return [a.GetVariantValue(i).ToString() for i in range(a.GetNumberOfValues())] if a else None
+
+
+traced = TraceSurfaceCurves(Surface=surface, Curves=control)
+arrangement = SurfaceArrangement(Surface=surface, Curves=traced)
+labels = LabelArrangementCells(Input=arrangement, PerTriangleLabels=1)
+boolean = SurfaceBoolean(Input=labels, Operation="Union", ShapeA=0, ShapeB=2)
+results = {"ranks": ranks()}
+for name, proxy, arrays in (("arrangement", arrangement, ["ArrangementCell"]),
+                            ("labels", labels, ["ArrangementCell", "Labels"]),
+                            ("boolean", boolean, ["ArrangementCell", "Region"])):
+    data = fetched(proxy)
+    results[name] = {"triangles": data.GetNumberOfCells(), "by_source": per_source(data, arrays),
+                     "held": holders(data), "NumberOfCells": field(data, "NumberOfCells"),
+                     "CellLabels": field(data, "CellLabels"),
+                     "ShapeConsistent": field(data, "ShapeConsistent"),
+                     "pieces": field(data, "ArrangementOnPieces") is not None}
+# A filter that gathers its input cannot use the pieces: it refuses (empty output), never a
+# wrong answer.
+middle = rays.hit(0.0, 0.0)
+samples = sample_source([(circles[0][0][18], tuple(m - x for m, x in zip(middle,
+                                                                            circles[0][0][18])))])
+bsc = BoundarySampledCurves(Input=labels, Samples=samples)
+results["bsc"] = {"triangles": sm.Fetch(bsc).GetNumberOfCells()}
+with open(args.json, "w") as f:
+    json.dump(results, f, indent=1, sort_keys=True)
+print("done", ranks())

@@ -1,0 +1,98 @@
+"""Surface Arrangement, Label Arrangement Cells and Surface Boolean on each rank's piece of a
+split surface (MpiPiecesChain.py, pvbatch on 1, 2 and 3 ranks, and on 3 ranks with the
+surface split in 2, one rank holding none): the union over ranks of each
+output equals the one-rank output per source triangle (the same refined triangles in the same
+cells with the same labels, areas to 1e-12), every rank holds only its part (no rank holds the
+whole region), the piece outputs say so, and a filter that gathers its input refuses them with
+an error instead of answering wrongly. Each run has a time limit: a rank left waiting fails the
+test.
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scratch  # noqa: E402
+
+source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
+                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+script = os.path.join(source_dir, "Testing", "Python", "MpiPiecesChain.py")
+mpiexec = shutil.which("mpiexec")
+pvbatch = shutil.which("pvbatch")
+if not mpiexec or not pvbatch:
+    print("mpiexec or pvbatch not found: nothing to test")
+    sys.exit(0)
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+out = scratch.folder("boolsurf-pieces-chain-")
+
+
+def run(ranks, partitions=None):
+    path = os.path.join(out, "r%d%s.json" % (ranks, "p%d" % partitions if partitions else ""))
+    command = [mpiexec, "-np", str(ranks), pvbatch, script, "--json", path]
+    if partitions:
+        command += ["--partitions", str(partitions)]
+    # Its own process group, so a hung run's ranks can all be stopped.
+    process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    try:
+        output, _ = process.communicate(timeout=240)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, 9)
+        process.communicate()
+        raise SystemExit("%d ranks: no answer within 240 s (a rank waits for another)" % ranks)
+    if process.returncode != 0 or not os.path.exists(path):
+        print(output)
+        raise SystemExit("%d ranks: pvbatch failed (exit code %d)" % (ranks, process.returncode))
+    with open(path) as f:
+        return json.load(f), output
+
+
+def same_by_source(a, b, where, ordered):
+    """Per source triangle: the same rows (area to 1e-12, every other value exactly), in the
+    same order when `ordered` (the refined surface), else as sets (the one-rank region lists a
+    source triangle's triangles in its extractor's order)."""
+    assert a.keys() == b.keys(), (where, sorted(set(a) ^ set(b))[:10])
+    for source in a:
+        rows_a, rows_b = a[source], b[source]
+        if not ordered:
+            rows_a = sorted(rows_a, key=lambda row: (row[1:], row[0]))
+            rows_b = sorted(rows_b, key=lambda row: (row[1:], row[0]))
+        assert len(rows_a) == len(rows_b), (where, source, rows_a, rows_b)
+        for x, y in zip(rows_a, rows_b):
+            assert abs(x[0] - y[0]) <= 1e-12, (where, source, x, y)
+            assert x[1:] == y[1:], (where, source, x, y)
+
+
+serial, _ = run(1)
+assert not serial["arrangement"]["pieces"], "one rank: the surface is whole"
+assert serial["boolean"]["triangles"] > 0 and serial["bsc"]["triangles"] > 0, serial["bsc"]
+cells = int(serial["arrangement"]["NumberOfCells"][0])
+assert cells > 4, cells  # three crossing circles
+for ranks, partitions in ((2, None), (3, None), (3, 2)):
+    result, output = run(ranks, partitions)
+    assert result["ranks"] == ranks, result["ranks"]
+    holding = partitions or ranks  # ranks holding triangles (the others hold none)
+    for stage in ("arrangement", "labels", "boolean"):
+        where = "%s on %d ranks, %d holding triangles" % (stage, ranks, holding)
+        got, expected = result[stage], serial[stage]
+        assert got["pieces"], (where, "did not run on the pieces")
+        assert got["triangles"] == expected["triangles"], (where, got["triangles"],
+                                                           expected["triangles"])
+        same_by_source(got["by_source"], expected["by_source"], where, stage != "boolean")
+        assert got["NumberOfCells"] == expected["NumberOfCells"], where
+        # Each rank holds only its part: every rank holds refined triangles (the region may miss
+        # a rank's piece), at least two hold parts, none holds them all.
+        held = got["held"]
+        assert len(held) == holding or (stage == "boolean" and len(held) >= 2), (where, held)
+        assert max(held.values()) < got["triangles"], (where, held)
+    for table in ("CellLabels", "ShapeConsistent"):
+        assert result["labels"][table] == serial["labels"][table], (ranks, table)
+    assert "ran on each rank's piece of the surface" in output, output
+    # Boundary Sampled Curves gathers its input: it refuses the labeled pieces, naming them.
+    assert result["bsc"]["triangles"] == 0, result["bsc"]
+    assert "comes from Surface Arrangement run on each rank's piece" in output, output
+    print("%d ranks, %d holding triangles: Surface Arrangement, labels and Boolean on the "
+          "pieces give the one-rank answers" % (ranks, holding))
+shutil.rmtree(out, ignore_errors=True)
