@@ -55,6 +55,8 @@
 //   the stage chain's cost against the one-step filter's.
 // - BM_StageChainPaperScaleXor/threads:N: BM_OneStepPaperScaleXor's edits through the stage
 //   filters (symmetric difference of all shapes).
+// - BM_StageChainPaperScaleXorColored, BM_StageChainCurveEditLabeled: the same with Label
+//   Arrangement Cells' per-triangle arrays (ShapeLabel of shape 0; and Labels for ten circles).
 //
 // Run: BoolSurfVTKBenchmarks --benchmark_filter='OneStep|StageChain'
 #include "FilterUpdateTimer.h"
@@ -1098,7 +1100,13 @@ void BM_OneStepPaperScaleSelection(benchmark::State& state)
 /// Surface Arrangement -> Label Arrangement Cells -> Surface Boolean), each updated in turn so
 /// that each stage's share is timed: counters Trace_ms, Arrangement_ms, Labeling_ms, Boolean_ms
 /// (means), and ChainRegionTriangles, which must equal the one-step RegionTriangles.
-void StageChainEdits(benchmark::State& state, const Scene& scene, int operation)
+/// `colorShape` >= 0 and `perTriangleLabels` ask Label Arrangement Cells for its per-triangle
+/// arrays (ShapeLabel of that shape, Labels), as a user coloring the surface does.
+void StageChainEdits(benchmark::State& state,
+  const Scene& scene,
+  int operation,
+  int colorShape = -1,
+  bool perTriangleLabels = false)
 {
   if (!scene.Error.empty())
   {
@@ -1117,6 +1125,8 @@ void StageChainEdits(benchmark::State& state, const Scene& scene, int operation)
   arrange->SetInputConnection(1, trace->GetOutputPort());
   arrange->SetNumberOfThreads(threads);
   label->SetInputConnection(arrange->GetOutputPort(0));
+  label->SetColorShape(colorShape);
+  label->SetPerTriangleLabels(perTriangleLabels);
   boolean->SetInputConnection(label->GetOutputPort(0));
   boolean->SetShapeA(-1);
   boolean->SetShapeB(-1);
@@ -1191,6 +1201,20 @@ void BM_StageChainCurveEdit(benchmark::State& state)
 void BM_StageChainPaperScaleXor(benchmark::State& state)
 {
   StageChainEdits(state, PaperScale(), 3);
+}
+
+// The same edits with the labeled surface colored by shape 0 (ShapeLabel, a label per refined
+// triangle): what keeping that array from edit to edit saves (Labeling_ms).
+void BM_StageChainPaperScaleXorColored(benchmark::State& state)
+{
+  StageChainEdits(state, PaperScale(), 3, 0);
+}
+
+// BM_StageChainCurveEdit with ShapeLabel of shape 0 and every shape's label per triangle
+// (Labels: ten components per refined triangle).
+void BM_StageChainCurveEditLabeled(benchmark::State& state)
+{
+  StageChainEdits(state, TenCircles(), 0, 0, true);
 }
 
 // One thread: the scene is two circles, there is nothing to share out. Few iterations: with
@@ -1318,6 +1342,8 @@ BENCHMARK(BM_OneStepOperationChange)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepPaperScaleXor)->Apply(AtOneAndTwoThreads<6>);
 BENCHMARK(BM_OneStepPaperScaleXorAllPorts)->Apply(AtOneAndTwoThreads<6>);
 BENCHMARK(BM_StageChainPaperScaleXor)->Apply(AtOneAndTwoThreads<6>);
+BENCHMARK(BM_StageChainPaperScaleXorColored)->Apply(AtOneAndTwoThreads<6>);
+BENCHMARK(BM_StageChainCurveEditLabeled)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepPaperScaleSelection)
   ->ArgName("bsc")
   ->Arg(0)
