@@ -56,7 +56,8 @@
 // - BM_StageChainPaperScaleXor/threads:N: BM_OneStepPaperScaleXor's edits through the stage
 //   filters (symmetric difference of all shapes).
 // - BM_StageChainPaperScaleXorColored, BM_StageChainCurveEditLabeled: the same with Label
-//   Arrangement Cells' per-triangle arrays (ShapeLabel of shape 0; and Labels for ten circles).
+//   Arrangement Cells' per-triangle arrays (ShapeLabel of shape 0; and Labels for ten circles,
+//   on the surface with a point and a cell scalar of its own).
 //
 // Run: BoolSurfVTKBenchmarks --benchmark_filter='OneStep|StageChain'
 #include "FilterUpdateTimer.h"
@@ -1101,12 +1102,15 @@ void BM_OneStepPaperScaleSelection(benchmark::State& state)
 /// that each stage's share is timed: counters Trace_ms, Arrangement_ms, Labeling_ms, Boolean_ms
 /// (means), and ChainRegionTriangles, which must equal the one-step RegionTriangles.
 /// `colorShape` >= 0 and `perTriangleLabels` ask Label Arrangement Cells for its per-triangle
-/// arrays (ShapeLabel of that shape, Labels), as a user coloring the surface does.
+/// arrays (ShapeLabel of that shape, Labels), as a user coloring the surface does;
+/// `surfaceArrays` gives the surface a point scalar and a cell scalar of its own, which Surface
+/// Arrangement carries onto the refined surface.
 void StageChainEdits(benchmark::State& state,
   const Scene& scene,
   int operation,
   int colorShape = -1,
-  bool perTriangleLabels = false)
+  bool perTriangleLabels = false,
+  bool surfaceArrays = false)
 {
   if (!scene.Error.empty())
   {
@@ -1119,9 +1123,33 @@ void StageChainEdits(benchmark::State& state,
   vtkNew<vtkBoolSurfArrangement> arrange;
   vtkNew<vtkBoolSurfLabeling> label;
   vtkNew<vtkBoolSurfBoolean> boolean;
-  trace->SetInputData(0, scene.Mesh->Mesh);
+  vtkSmartPointer<vtkPolyData> surface = scene.Mesh->Mesh;
+  if (surfaceArrays)
+  {
+    // The same points and triangles (the same converted surface) with a height field per
+    // point and an id per triangle.
+    surface = vtkSmartPointer<vtkPolyData>::New();
+    surface->ShallowCopy(scene.Mesh->Mesh);
+    vtkNew<vtkDoubleArray> height;
+    height->SetName("Height");
+    height->SetNumberOfValues(surface->GetNumberOfPoints());
+    for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
+    {
+      height->SetValue(p, surface->GetPoint(p)[2]);
+    }
+    surface->GetPointData()->AddArray(height);
+    vtkNew<vtkIntArray> inputCell;
+    inputCell->SetName("InputCell");
+    inputCell->SetNumberOfValues(surface->GetNumberOfCells());
+    for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+    {
+      inputCell->SetValue(c, static_cast<int>(c));
+    }
+    surface->GetCellData()->AddArray(inputCell);
+  }
+  trace->SetInputData(0, surface);
   trace->SetInputData(1, scene.Curves[0]);
-  arrange->SetInputData(0, scene.Mesh->Mesh);
+  arrange->SetInputData(0, surface);
   arrange->SetInputConnection(1, trace->GetOutputPort());
   arrange->SetNumberOfThreads(threads);
   label->SetInputConnection(arrange->GetOutputPort(0));
@@ -1211,10 +1239,11 @@ void BM_StageChainPaperScaleXorColored(benchmark::State& state)
 }
 
 // BM_StageChainCurveEdit with ShapeLabel of shape 0 and every shape's label per triangle
-// (Labels: ten components per refined triangle).
+// (Labels: ten components per refined triangle), on the surface with arrays of its own (a
+// point scalar and a cell scalar, carried onto the refined surface).
 void BM_StageChainCurveEditLabeled(benchmark::State& state)
 {
-  StageChainEdits(state, TenCircles(), 0, 0, true);
+  StageChainEdits(state, TenCircles(), 0, 0, true, true);
 }
 
 // One thread: the scene is two circles, there is nothing to share out. Few iterations: with
