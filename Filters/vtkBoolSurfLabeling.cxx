@@ -9,6 +9,7 @@
 #include "vtkBoolSurfPieceLabels.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfStageSettingsDefinitions.h"
+#include "vtkBoolSurfTriangleLabels.h"
 
 #include <vtkAbstractArray.h>
 #include <vtkCellData.h>
@@ -32,6 +33,8 @@ struct vtkBoolSurfLabeling::Internals
   vtkMTimeType GeneratorTime = 0;
   bool GeneratorsHadKey = false;
   bool GeneratorsDrawn = false;
+  /// ShapeLabel and Labels, kept so that an edit writes only the triangles whose labels change.
+  boolsurf::KeptTriangleLabels ShapeLabel, Labels;
 };
 
 //------------------------------------------------------------------------------
@@ -66,6 +69,8 @@ bool vtkBoolSurfLabeling::Execute(const std::vector<vtkPolyData*>& inputs,
   options.ZeroCell = *this->ZeroCellSettings;
   options.ColorShape = this->ColorShape;
   options.PerTriangleLabels = this->PerTriangleLabels;
+  options.KeptShapeLabel = &this->Internal->ShapeLabel;
+  options.KeptLabels = &this->Internal->Labels;
   // The arrangement in Core form (handed over, or computed again for a file): labeled as the
   // one-step filter labels it.
   const auto arranged = this->GetArrangement(input, error);

@@ -55,6 +55,9 @@
 //   the stage chain's cost against the one-step filter's.
 // - BM_StageChainPaperScaleXor/threads:N: BM_OneStepPaperScaleXor's edits through the stage
 //   filters (symmetric difference of all shapes).
+// - BM_StageChainPaperScaleXorColored, BM_StageChainCurveEditLabeled: the same with Label
+//   Arrangement Cells' per-triangle arrays (ShapeLabel of shape 0; and Labels for ten circles,
+//   on the surface with a point and a cell scalar of its own).
 //
 // Run: BoolSurfVTKBenchmarks --benchmark_filter='OneStep|StageChain'
 #include "FilterUpdateTimer.h"
@@ -1098,7 +1101,16 @@ void BM_OneStepPaperScaleSelection(benchmark::State& state)
 /// Surface Arrangement -> Label Arrangement Cells -> Surface Boolean), each updated in turn so
 /// that each stage's share is timed: counters Trace_ms, Arrangement_ms, Labeling_ms, Boolean_ms
 /// (means), and ChainRegionTriangles, which must equal the one-step RegionTriangles.
-void StageChainEdits(benchmark::State& state, const Scene& scene, int operation)
+/// `colorShape` >= 0 and `perTriangleLabels` ask Label Arrangement Cells for its per-triangle
+/// arrays (ShapeLabel of that shape, Labels), as a user coloring the surface does;
+/// `surfaceArrays` gives the surface a point scalar and a cell scalar of its own, which Surface
+/// Arrangement carries onto the refined surface.
+void StageChainEdits(benchmark::State& state,
+  const Scene& scene,
+  int operation,
+  int colorShape = -1,
+  bool perTriangleLabels = false,
+  bool surfaceArrays = false)
 {
   if (!scene.Error.empty())
   {
@@ -1111,12 +1123,38 @@ void StageChainEdits(benchmark::State& state, const Scene& scene, int operation)
   vtkNew<vtkBoolSurfArrangement> arrange;
   vtkNew<vtkBoolSurfLabeling> label;
   vtkNew<vtkBoolSurfBoolean> boolean;
-  trace->SetInputData(0, scene.Mesh->Mesh);
+  vtkSmartPointer<vtkPolyData> surface = scene.Mesh->Mesh;
+  if (surfaceArrays)
+  {
+    // The same points and triangles (the same converted surface) with a height field per
+    // point and an id per triangle.
+    surface = vtkSmartPointer<vtkPolyData>::New();
+    surface->ShallowCopy(scene.Mesh->Mesh);
+    vtkNew<vtkDoubleArray> height;
+    height->SetName("Height");
+    height->SetNumberOfValues(surface->GetNumberOfPoints());
+    for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
+    {
+      height->SetValue(p, surface->GetPoint(p)[2]);
+    }
+    surface->GetPointData()->AddArray(height);
+    vtkNew<vtkIntArray> inputCell;
+    inputCell->SetName("InputCell");
+    inputCell->SetNumberOfValues(surface->GetNumberOfCells());
+    for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+    {
+      inputCell->SetValue(c, static_cast<int>(c));
+    }
+    surface->GetCellData()->AddArray(inputCell);
+  }
+  trace->SetInputData(0, surface);
   trace->SetInputData(1, scene.Curves[0]);
-  arrange->SetInputData(0, scene.Mesh->Mesh);
+  arrange->SetInputData(0, surface);
   arrange->SetInputConnection(1, trace->GetOutputPort());
   arrange->SetNumberOfThreads(threads);
   label->SetInputConnection(arrange->GetOutputPort(0));
+  label->SetColorShape(colorShape);
+  label->SetPerTriangleLabels(perTriangleLabels);
   boolean->SetInputConnection(label->GetOutputPort(0));
   boolean->SetShapeA(-1);
   boolean->SetShapeB(-1);
@@ -1191,6 +1229,21 @@ void BM_StageChainCurveEdit(benchmark::State& state)
 void BM_StageChainPaperScaleXor(benchmark::State& state)
 {
   StageChainEdits(state, PaperScale(), 3);
+}
+
+// The same edits with the labeled surface colored by shape 0 (ShapeLabel, a label per refined
+// triangle): what keeping that array from edit to edit saves (Labeling_ms).
+void BM_StageChainPaperScaleXorColored(benchmark::State& state)
+{
+  StageChainEdits(state, PaperScale(), 3, 0);
+}
+
+// BM_StageChainCurveEdit with ShapeLabel of shape 0 and every shape's label per triangle
+// (Labels: ten components per refined triangle), on the surface with arrays of its own (a
+// point scalar and a cell scalar, carried onto the refined surface).
+void BM_StageChainCurveEditLabeled(benchmark::State& state)
+{
+  StageChainEdits(state, TenCircles(), 0, 0, true, true);
 }
 
 // One thread: the scene is two circles, there is nothing to share out. Few iterations: with
@@ -1318,6 +1371,8 @@ BENCHMARK(BM_OneStepOperationChange)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepPaperScaleXor)->Apply(AtOneAndTwoThreads<6>);
 BENCHMARK(BM_OneStepPaperScaleXorAllPorts)->Apply(AtOneAndTwoThreads<6>);
 BENCHMARK(BM_StageChainPaperScaleXor)->Apply(AtOneAndTwoThreads<6>);
+BENCHMARK(BM_StageChainPaperScaleXorColored)->Apply(AtOneAndTwoThreads<6>);
+BENCHMARK(BM_StageChainCurveEditLabeled)->Apply(AtOneAndTwoThreads<10>);
 BENCHMARK(BM_OneStepPaperScaleSelection)
   ->ArgName("bsc")
   ->Arg(0)

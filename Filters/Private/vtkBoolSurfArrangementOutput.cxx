@@ -272,18 +272,31 @@ void WriteArrangementSurface(const vtkSurfaceInput& surface,
   polys->SetData(cellOffsets, connectivity);
   output->SetPolys(polys);
 
-  TransferSurfaceAttributes(
-    surface.Triangles,
-    *surface.Mesh,
-    np,
-    [&](vtkIdType p) // the surface points just written, not derived again
-    {
-      return SurfacePoint{
-        static_cast<int>(pointTriangle[p]), pointBarycentric[2 * p], pointBarycentric[2 * p + 1]
-      };
-    },
-    compacted ? compactSource : whole.SourceTriangle,
-    output);
+  const auto pointSurface = [&](vtkIdType p) // the surface points just written, not derived again
+  {
+    return SurfacePoint{
+      static_cast<int>(pointTriangle[p]), pointBarycentric[2 * p], pointBarycentric[2 * p + 1]
+    };
+  };
+  const std::vector<int>& sources = compacted ? compactSource : whole.SourceTriangle;
+  if (memory.Attributes)
+  {
+    // Points are numbered the mesh's vertices first, and triangles the mesh's first unless
+    // holes were compacted away.
+    UpdateSurfaceAttributes(surface.Triangles,
+      *surface.Mesh,
+      np,
+      arr.NumberOfMeshVertices,
+      compacted ? 0 : arr.NumberOfMeshTriangles,
+      pointSurface,
+      sources,
+      *memory.Attributes,
+      output);
+  }
+  else
+  {
+    TransferSurfaceAttributes(surface.Triangles, *surface.Mesh, np, pointSurface, sources, output);
+  }
   output->GetCellData()->AddArray(cellOf);
   output->GetCellData()->AddArray(source);
   output->GetPointData()->AddArray(triangleId);
@@ -451,7 +464,8 @@ bool ArrangeResult(const std::shared_ptr<ArrangementResult>& result,
     &result->PointArraysMeshSerial,
     &result->TriangleCells,
     &result->WrittenCells,
-    &result->Whole };
+    &result->Whole,
+    &result->Attributes };
   if (ArrangeCurves(result->Surface,
         result->Curves,
         options,

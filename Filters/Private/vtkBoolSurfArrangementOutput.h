@@ -8,6 +8,7 @@
 #include "Arrangement/RefinedSurfaceArrays.h"
 #include "Labeling/CellLabeling.h"
 #include "Selection/RegionBoundary.h"
+#include "vtkBoolSurfAttributeTransfer.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
 
 #include <vtkDoubleArray.h>
@@ -47,6 +48,9 @@ struct ArrangementMemory
   WrittenTriangleCells* WrittenCells = nullptr;
   /// The refined surface's points, triangles and source triangles, updated per edit.
   RefinedSurfaceArrays* Surface = nullptr;
+  /// The input surface's own arrays as carried onto the refined surface, updated per edit
+  /// (null: carried whole every time).
+  CarriedAttributes* Attributes = nullptr;
 };
 
 /// The arrangement stage: computes the arrangement of `curves` into `arrangement` (reusing

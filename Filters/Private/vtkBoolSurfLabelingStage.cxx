@@ -6,6 +6,7 @@
 #include "Selection/BooleanExpression.h"
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfStageHandoff.h"
+#include "vtkBoolSurfTriangleLabels.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -172,8 +173,20 @@ void WriteLabelingOutput(vtkPolyData* input,
   {
     return;
   }
-  const std::vector<int> cells = ReadTriangleCells(cellOf);
-  const vtkIdType nt = static_cast<vtkIdType>(cells.size());
+  // The arrangement's cells read in place (it writes them as ints), else converted.
+  std::vector<int> converted;
+  const int* cells = nullptr;
+  if (auto* ints = vtkArrayDownCast<vtkIntArray>(cellOf))
+  {
+    cells = ints->GetPointer(0);
+  }
+  else
+  {
+    converted = ReadTriangleCells(cellOf);
+    cells = converted.data();
+  }
+  const vtkIdType nt = cellOf->GetNumberOfTuples();
+  KeptTriangleLabels fresh; // when the caller keeps no arrays: written whole
   if (color)
   {
     const int s = ShapeIndexOf(labels.ShapeIds, options.ColorShape);
@@ -185,15 +198,14 @@ void WriteLabelingOutput(vtkPolyData* input,
     }
     else
     {
-      vtkNew<vtkIntArray> shapeLabel;
-      shapeLabel->SetName(boolsurf::names::ShapeLabel);
-      shapeLabel->SetNumberOfTuples(nt);
-      int* out = shapeLabel->GetPointer(0);
-      const int* table = labels.Labels.data();
-      for (vtkIdType t = 0; t < nt; ++t)
+      std::vector<int> column(labels.Labels.size() / ns);
+      for (std::size_t c = 0; c < column.size(); ++c)
       {
-        out[t] = table[static_cast<size_t>(cells[t]) * ns + s];
+        column[c] = labels.Labels[c * ns + s];
       }
+      KeptTriangleLabels& kept = options.KeptShapeLabel ? *options.KeptShapeLabel : fresh;
+      vtkSmartPointer<vtkIntArray> shapeLabel = kept.Update(arr, cells, nt, column, 1);
+      shapeLabel->SetName(boolsurf::names::ShapeLabel);
       output->GetCellData()->AddArray(shapeLabel);
       // ParaView colors a new display by the active scalars (with the plugin's categorical
       // color map for ShapeLabel).
@@ -202,15 +214,10 @@ void WriteLabelingOutput(vtkPolyData* input,
   }
   if (options.PerTriangleLabels && ns > 0)
   {
-    vtkNew<vtkIntArray> perTriangle;
+    KeptTriangleLabels& kept = options.KeptLabels ? *options.KeptLabels : fresh;
+    vtkSmartPointer<vtkIntArray> perTriangle = kept.Update(arr, cells, nt, labels.Labels, ns);
     perTriangle->SetName(boolsurf::names::Labels);
     NameShapeComponents(perTriangle, labels);
-    perTriangle->SetNumberOfTuples(nt);
-    int* out = perTriangle->GetPointer(0);
-    for (vtkIdType t = 0; t < nt; ++t)
-    {
-      std::copy_n(labels.Labels.data() + static_cast<size_t>(cells[t]) * ns, ns, out + t * ns);
-    }
     output->GetCellData()->AddArray(perTriangle);
   }
 }

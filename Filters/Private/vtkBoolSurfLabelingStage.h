@@ -19,6 +19,7 @@ namespace boolsurf
 {
 
 struct ArrangementResult;
+class KeptTriangleLabels;
 
 /// The arrangement cell holding the point of the surface closest to `point` (the one-step
 /// filter's and the labeling's ZeroCellPoint): `locator` is built on the surface's triangles.
@@ -42,6 +43,10 @@ struct LabelingOutputOptions
   bool PerTriangleLabels = false;
   /// For ZeroCellMode Point: a locator on the arrangement's input surface.
   vtkStaticCellLocator* SurfaceLocator = nullptr;
+  /// Where the per-triangle arrays are kept from update to update (a filter's, so that an edit
+  /// writes only what changed: vtkBoolSurfTriangleLabels.h); null: written whole.
+  KeptTriangleLabels* KeptShapeLabel = nullptr;
+  KeptTriangleLabels* KeptLabels = nullptr;
 };
 
 /// Labels the cells of `arranged`, the arrangement of the refined surface `input`, the way the

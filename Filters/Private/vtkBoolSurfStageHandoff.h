@@ -24,6 +24,7 @@
 #include "Arrangement/RefinedSurfaceArrays.h"
 #include "Labeling/CellLabeling.h"
 #include "Selection/BoundaryControlPoints.h"
+#include "vtkBoolSurfAttributeTransfer.h"
 #include "vtkBoolSurfSurfaceAdapter.h"
 
 #include <vtkSmartPointer.h>
@@ -96,7 +97,8 @@ struct ArrangementResult
   /// ArrangementCell array needs one per triangle.
   std::vector<int> TriangleCells;
   WrittenTriangleCells WrittenCells; ///< what TriangleCells holds per tile (edits rewrite less)
-  RefinedSurfaceArrays Whole; ///< port 0's points, triangles and sources (edits rewrite less)
+  RefinedSurfaceArrays Whole;   ///< port 0's points, triangles and sources (edits rewrite less)
+  CarriedAttributes Attributes; ///< port 0's copies of the input's arrays (edits rewrite less)
 };
 
 /// Label Arrangement Cells -> Surface Boolean / Boundary Sampled Curves.
