@@ -141,12 +141,13 @@ bool LabelArrangement(vtkPolyData* input,
     in.SetZeroCell(zero);
   }
   labels = LabelCells(in);
-  WriteLabelingOutput(input, labels, options, output, warning);
+  WriteLabelingOutput(input, &arr, labels, options, output, warning);
   return true;
 }
 
 //------------------------------------------------------------------------------
 void WriteLabelingOutput(vtkPolyData* input,
+  const Arrangement* arrangement,
   const LabelingResult& labels,
   const LabelingOutputOptions& options,
   vtkPolyData* output,
@@ -204,7 +205,7 @@ void WriteLabelingOutput(vtkPolyData* input,
         column[c] = labels.Labels[c * ns + s];
       }
       KeptTriangleLabels& kept = options.KeptShapeLabel ? *options.KeptShapeLabel : fresh;
-      vtkSmartPointer<vtkIntArray> shapeLabel = kept.Update(arr, cells, nt, column, 1);
+      vtkSmartPointer<vtkIntArray> shapeLabel = kept.Update(arrangement, cells, nt, column, 1);
       shapeLabel->SetName(boolsurf::names::ShapeLabel);
       output->GetCellData()->AddArray(shapeLabel);
       // ParaView colors a new display by the active scalars (with the plugin's categorical
@@ -215,7 +216,8 @@ void WriteLabelingOutput(vtkPolyData* input,
   if (options.PerTriangleLabels && ns > 0)
   {
     KeptTriangleLabels& kept = options.KeptLabels ? *options.KeptLabels : fresh;
-    vtkSmartPointer<vtkIntArray> perTriangle = kept.Update(arr, cells, nt, labels.Labels, ns);
+    vtkSmartPointer<vtkIntArray> perTriangle =
+      kept.Update(arrangement, cells, nt, labels.Labels, ns);
     perTriangle->SetName(boolsurf::names::Labels);
     NameShapeComponents(perTriangle, labels);
     output->GetCellData()->AddArray(perTriangle);

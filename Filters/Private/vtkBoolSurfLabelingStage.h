@@ -64,8 +64,10 @@ bool LabelArrangement(vtkPolyData* input,
 
 /// LabelArrangement's output for labels computed elsewhere (on the merged cell graph of a
 /// distributed arrangement, vtkBoolSurfPieceLabels.h): `output` a shallow copy of `input` with
-/// the label table and the per-triangle arrays asked for (read through ArrangementCell).
+/// the label table and the per-triangle arrays asked for (read through ArrangementCell; kept
+/// from update to update per tile of `arrangement`, written whole when it is null).
 void WriteLabelingOutput(vtkPolyData* input,
+  const Arrangement* arrangement,
   const LabelingResult& labels,
   const LabelingOutputOptions& options,
   vtkPolyData* output,

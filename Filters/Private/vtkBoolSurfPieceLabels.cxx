@@ -42,7 +42,7 @@ bool LabelPiece(vtkPolyData* input,
   result = std::make_shared<PieceLabeledResult>();
   result->Arranged = arranged;
   result->Labels = LabelMergedArrangement(arranged->Run.GetMerged(), arranged->ShapeIds);
-  WriteLabelingOutput(input, result->Labels, options, output, warning);
+  WriteLabelingOutput(input, nullptr, result->Labels, options, output, warning);
   return true;
 }
 

@@ -12,7 +12,7 @@ namespace boolsurf
 {
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkIntArray> KeptTriangleLabels::Update(const Arrangement& arr,
+vtkSmartPointer<vtkIntArray> KeptTriangleLabels::Update(const Arrangement* arrangement,
   const int* cells,
   vtkIdType count,
   const std::vector<int>& rows,
@@ -20,6 +20,8 @@ vtkSmartPointer<vtkIntArray> KeptTriangleLabels::Update(const Arrangement& arr,
 {
   std::shared_ptr<Buffer> buffer = this->Buffers.Acquire(); // held by no array handed out
   Buffer& b = *buffer;
+  static const Arrangement none;
+  const Arrangement& arr = arrangement ? *arrangement : none;
   const MeshTiles* tiles = arr.Tiles.get();
   const vtkIdType nt = arr.NumberOfMeshTriangles;
   // Entries below nt are the mesh triangles' (the first piece of a refined one) only when no

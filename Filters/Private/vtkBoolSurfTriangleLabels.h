@@ -27,10 +27,11 @@ class KeptTriangleLabels
 {
 public:
   /// The array of triangle t's row of `rows` (`components` values per cell): row cells[t]
-  /// for each of the `count` refined triangles of `arr` (`cells` is their ArrangementCell).
-  /// Written in place into a buffer of an earlier update where its values differ, or whole
-  /// when the tiles, the row width or the numbering (holes) do not allow it.
-  vtkSmartPointer<vtkIntArray> Update(const Arrangement& arr,
+  /// for each of the `count` refined triangles of `arrangement` (`cells` is their
+  /// ArrangementCell). Written in place into a buffer of an earlier update where its values
+  /// differ, or whole when the tiles, the row width or the numbering (holes) do not allow it,
+  /// or when `arrangement` is null (a rank's piece, whose tiles are not the whole mesh's).
+  vtkSmartPointer<vtkIntArray> Update(const Arrangement* arrangement,
     const int* cells,
     vtkIdType count,
     const std::vector<int>& rows,
