@@ -1,5 +1,6 @@
 #include "vtkBoolSurfPieceTracing.h"
 
+#include "vtkBoolSurfPieceEdgeLength.h"
 #include "vtkBoolSurfSurfacePiece.h"
 
 #include <vtkCommunicator.h>
@@ -571,6 +572,9 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
     }
   }
 
+  this->UsedMeanEdgeLength = this->MeanEdgeLength >= 0.0
+    ? this->MeanEdgeLength
+    : boolsurf::PieceMeanEdgeLength(controller, piece);
   MessageFetcher fetcher(controller, piece, this->Bytes);
   for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
   {
@@ -597,7 +601,7 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
   boolsurf::PieceCurveTracer tracer(ringed, fetcher);
   tracer.SetOptions(this->Options);
   tracer.SetResolution(this->Resolution);
-  tracer.SetMeanEdgeLength(this->MeanEdgeLength);
+  tracer.SetMeanEdgeLength(this->UsedMeanEdgeLength);
   tracer.SetMarginRings(this->MarginRings);
   const int ownTriangles = tracer.GetSurface().GetNumberOfTriangles();
   WireBuffer results; // per curve: id, 1 and its trace, or 0 and its error

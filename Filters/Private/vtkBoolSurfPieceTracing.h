@@ -62,8 +62,11 @@ public:
 
   void SetOptions(const boolsurf::GeodesicPathOptions& options) { this->Options = options; }
   void SetResolution(int levels) { this->Resolution = levels; }
-  /// The whole surface's EstimateMeanEdgeLength (Bounded's budget test); see Docs/Parallel.md.
+  /// The whole surface's EstimateMeanEdgeLength (Bounded's budget test). Default (negative):
+  /// Run computes it from the pieces, bit for bit (PieceMeanEdgeLength).
   void SetMeanEdgeLength(double length) { this->MeanEdgeLength = length; }
+  /// The mean edge length the last Run used.
+  double GetMeanEdgeLength() const { return this->UsedMeanEdgeLength; }
   void SetMarginRings(int rings) { this->MarginRings = rings; }
 
   /// Collective. `ringed`: this rank's owned triangles and ring of ghosts (BuildRingedPiece);
@@ -82,6 +85,7 @@ private:
   boolsurf::GeodesicPathOptions Options;
   int Resolution = 4;
   double MeanEdgeLength = -1.0;
+  double UsedMeanEdgeLength = -1.0;
   int MarginRings = 3;
   Traffic Bytes;
 };

@@ -8,6 +8,7 @@
 // rank), with the Exact and the Bounded methods. Short curves on a larger sphere: no rank
 // holds or receives anything near the surface. A control point on a triangle no rank has: the
 // same error, naming the curve, on every rank. Prints the rounds and bytes of every rank.
+#include "vtkBoolSurfPieceEdgeLength.h"
 #include "vtkBoolSurfPieceTracing.h"
 #include "vtkBoolSurfRingedPiece.h"
 
@@ -157,9 +158,17 @@ bool TraceOnPieces(vtkMultiProcessController* controller,
   options.Method = method;
   tracing.SetOptions(options);
   tracing.SetResolution(Resolution);
-  // The one-rank estimate, which every rank here can compute (Docs/Parallel.md).
-  tracing.SetMeanEdgeLength(EstimateMeanEdgeLength(mesh));
-  return tracing.Run(controller, ringed, curves, message, error);
+  if (!tracing.Run(controller, ringed, curves, message, error))
+  {
+    return false;
+  }
+  // Computed from the pieces, it must be the one-rank estimate bit for bit.
+  if (tracing.GetMeanEdgeLength() != EstimateMeanEdgeLength(mesh))
+  {
+    error = "the pieces' mean edge length is not the one-rank estimate";
+    return false;
+  }
+  return true;
 }
 
 void Report(vtkMultiProcessController* controller,
@@ -295,6 +304,33 @@ void RunLargeSphere(vtkMultiProcessController* controller)
   }
 }
 
+/// The mean edge length on a surface of more than 2^17 edges (the estimate samples every
+/// other edge), split in random regions: the one-rank estimate bit for bit.
+void RunSampledMeanEdgeLength(vtkMultiProcessController* controller)
+{
+  const int rank = controller->GetLocalProcessId();
+  const int ranks = controller->GetNumberOfProcesses();
+  const MeshData data = MakeTorus(1.0, 0.4, 300, 150);
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  PieceInput ringed;
+  PieceMesh piece;
+  std::string error;
+  if (!BuildRingedPiece(controller,
+        testing::OwnedTriangles(mesh, testing::RegionOwners(mesh, ranks, 5, -1), rank),
+        ringed,
+        error) ||
+    !BuildPieceMesh(ringed, piece, error))
+  {
+    Fail(rank, "sampled mean edge length: " + error);
+    return;
+  }
+  const double length = PieceMeanEdgeLength(controller, piece);
+  if (length != EstimateMeanEdgeLength(mesh))
+  {
+    Fail(rank, "sampled mean edge length differs from the one-rank estimate");
+  }
+}
+
 /// A control point on a triangle no rank has: every rank fails with the same message naming
 /// the curve, and none is left waiting.
 void RunBadInput(vtkMultiProcessController* controller)
@@ -359,6 +395,7 @@ int main(int argc, char* argv[])
     Fail(controller->GetLocalProcessId(), "eight.ply: " + error);
   }
   RunLargeSphere(controller);
+  RunSampledMeanEdgeLength(controller);
   RunBadInput(controller);
   int all = 0;
   controller->AllReduce(&failures, &all, 1, vtkCommunicator::SUM_OP);
