@@ -331,16 +331,17 @@ void RunSampledMeanEdgeLength(vtkMultiProcessController* controller)
   }
 }
 
-/// A control point on a triangle no rank has: every rank fails with the same message naming
-/// the curve, and none is left waiting.
-void RunBadInput(vtkMultiProcessController* controller)
+/// Curves that cannot be traced: every rank fails with the same message naming the curve
+/// (`curve`), and none is left waiting.
+void ExpectSameFailure(vtkMultiProcessController* controller,
+  const TriangleMesh& mesh,
+  const std::vector<Curve>& curves,
+  GeodesicMethod method,
+  const std::string& curve,
+  const std::string& what)
 {
   const int rank = controller->GetLocalProcessId();
   const int ranks = controller->GetNumberOfProcesses();
-  const MeshData data = MakeTorus(1.0, 0.4, 40, 20);
-  const TriangleMesh mesh(data.Positions, data.Triangles);
-  std::vector<Curve> curves = RandomCurves(mesh, 5, 3, 100);
-  curves[1].Points[2].Triangle = mesh.GetNumberOfTriangles() + 7;
   vtkBoolSurfPieceTracing tracing;
   WireBuffer message;
   std::string error;
@@ -348,17 +349,17 @@ void RunBadInput(vtkMultiProcessController* controller)
         mesh,
         curves,
         testing::RegionOwners(mesh, ranks, 3, -1),
-        GeodesicMethod::Bounded,
+        method,
         message,
         tracing,
         error))
   {
-    Fail(rank, "a control point on a missing triangle was traced");
+    Fail(rank, what + " was traced");
     return;
   }
-  if (error.find("curve 1") == std::string::npos)
+  if (error.find(curve) == std::string::npos)
   {
-    Fail(rank, "the error does not name the curve: " + error);
+    Fail(rank, what + ": the error does not name " + curve + ": " + error);
   }
   std::vector<char> first(error.begin(), error.end());
   long long length = static_cast<long long>(first.size());
@@ -371,8 +372,24 @@ void RunBadInput(vtkMultiProcessController* controller)
   }
   if (rank == 0)
   {
-    std::printf("bad input, every rank: %s\n", error.c_str());
+    std::printf("%s, every rank: %s\n", what.c_str(), error.c_str());
   }
+}
+
+void RunBadInput(vtkMultiProcessController* controller)
+{
+  const MeshData data = MakeTorus(1.0, 0.4, 40, 20);
+  const TriangleMesh mesh(data.Positions, data.Triangles);
+  std::vector<Curve> curves = RandomCurves(mesh, 5, 3, 100);
+  ExpectSameFailure(controller,
+    mesh,
+    curves,
+    GeodesicMethod::LocallyShortest,
+    "curve 0",
+    "the LocallyShortest method");
+  curves[1].Points[2].Triangle = mesh.GetNumberOfTriangles() + 7;
+  ExpectSameFailure(
+    controller, mesh, curves, GeodesicMethod::Bounded, "curve 1", "a missing triangle");
 }
 
 } // namespace
