@@ -18,6 +18,8 @@
 #include "vtkBoolSurfPieceArrangementOutput.h"
 #include "vtkBoolSurfRingedPiece.h"
 
+#include "OwnedTriangles.h"
+
 #include "Arrangement/Arrangement.h"
 #include "Distributed/MergedArrangement.h"
 #include "Distributed/MergedLabeling.h"
@@ -55,6 +57,7 @@
 
 using namespace boolsurf;
 using boolsurf::testing::CellAreas;
+using boolsurf::testing::OwnedTriangles;
 using boolsurf::testing::RandomGeodesicCurves;
 using boolsurf::testing::RefinedArea;
 
@@ -69,48 +72,6 @@ void Fail(int rank, const std::string& what)
   {
     std::printf("rank %d: FAILED %s\n", rank, what.c_str());
   }
-}
-
-/// This rank's owned triangles as a parallel reader or RedistributeDataSet would give them:
-/// their own points, cell and point global ids, no ghosts.
-vtkSmartPointer<vtkPolyData> OwnedTriangles(const TriangleMesh& mesh,
-  const std::vector<int>& owner,
-  int rank)
-{
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkIdTypeArray> pointIds, cellIds;
-  pointIds->SetName("GlobalIds");
-  cellIds->SetName("GlobalIds");
-  vtkNew<vtkCellArray> polys;
-  std::vector<vtkIdType> localOf(mesh.GetNumberOfVertices(), -1);
-  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
-  {
-    if (owner[t] != rank)
-    {
-      continue;
-    }
-    vtkIdType corners[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      const int v = mesh.GetTriangle(t)[k];
-      if (localOf[v] < 0)
-      {
-        const Vec3 x = mesh.GetPosition(v);
-        localOf[v] = points->InsertNextPoint(x.x, x.y, x.z);
-        pointIds->InsertNextValue(v);
-      }
-      corners[k] = localOf[v];
-    }
-    polys->InsertNextCell(3, corners);
-    cellIds->InsertNextValue(t);
-  }
-  pd->SetPoints(points);
-  pd->SetPolys(polys);
-  pd->GetPointData()->SetGlobalIds(pointIds);
-  pd->GetCellData()->SetGlobalIds(cellIds);
-  return pd;
 }
 
 /// Ranks owning the piece's ghosts, ascending.

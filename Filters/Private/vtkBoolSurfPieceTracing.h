@@ -1,0 +1,93 @@
+/**
+ * @class   vtkBoolSurfPieceTracing
+ * @brief   curves traced on a surface split across MPI ranks, no rank holding the whole surface
+ *
+ * The processes' side of Core's tracing on pieces (Core/Distributed/PieceTracing.h,
+ * Docs/Parallel.md): each curve is traced by one rank (the owner of its first control point's
+ * triangle) on that rank's ringed piece, which fetches the fans its legs read from their
+ * owners until every read is the whole surface's; the traces go to rank 0, which packs them
+ * as message 0 (PackGlobalTraces: the buffer PackTracedCurves gives for the whole surface's
+ * traces) and broadcasts it.
+ *
+ * Owners: a directory of global triangle ids (rank g % ranks knows who owns triangle g), built
+ * once by one exchange, names the owners of the ring's ghosts and of the control points'
+ * triangles; fetched triangles carry their owner. A vertex's fan is held whole by every rank
+ * owning one of its triangles, so a request for vertex v goes to the owner of a held triangle
+ * round v, which answers from its ringed piece.
+ *
+ * Rounds are bulk-synchronous: a rank whose tracer needs triangles starts a round, a rank done
+ * with its curves joins rounds with no request, and every round begins with an all-reduce
+ * saying whether any rank still asks, so all ranks leave together. Run() is collective and
+ * fails on every rank with the same message (the lowest failing curve, named) when one fails.
+ */
+#ifndef vtkBoolSurfPieceTracing_h
+#define vtkBoolSurfPieceTracing_h
+
+#include "Curves/ControlCurve.h"
+#include "Distributed/PieceMesh.h"
+#include "Distributed/PieceTracing.h"
+#include "Distributed/PieceWire.h"
+#include "Geodesic/GeodesicPath.h"
+#include "Mesh/SurfacePoint.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+class vtkMultiProcessController;
+
+class vtkBoolSurfPieceTracing
+{
+public:
+  /// A curve to trace: control points naming triangles by global cell id.
+  struct Curve
+  {
+    std::vector<boolsurf::SurfacePoint> Points;
+    boolsurf::CurveType Type = boolsurf::CurveType::GeodesicPolygon;
+    bool Closed = true;
+  };
+
+  /// What this rank sent and received (bytes, lengths included) and did.
+  struct Traffic
+  {
+    std::size_t DirectorySent = 0, DirectoryReceived = 0; ///< owners of ids, once
+    std::size_t FetchSent = 0, FetchReceived = 0;         ///< requests and answers
+    std::size_t TracesSent = 0, TracesReceived = 0;       ///< traces to rank 0, message 0 back
+    int Rounds = 0;           ///< fetch rounds taken part in (the same on every rank)
+    int OwnRounds = 0;        ///< rounds this rank asked in
+    int TracedCurves = 0;     ///< curves this rank traced
+    int FetchedTriangles = 0; ///< triangles its tracer holds beyond its ringed piece
+    int HeldTriangles = 0;    ///< everything its tracer holds at the end
+  };
+
+  void SetOptions(const boolsurf::GeodesicPathOptions& options) { this->Options = options; }
+  void SetResolution(int levels) { this->Resolution = levels; }
+  /// The whole surface's EstimateMeanEdgeLength (Bounded's budget test). Default (negative):
+  /// Run computes it from the pieces, bit for bit (PieceMeanEdgeLength).
+  void SetMeanEdgeLength(double length) { this->MeanEdgeLength = length; }
+  /// The mean edge length the last Run used.
+  double GetMeanEdgeLength() const { return this->UsedMeanEdgeLength; }
+  void SetMarginRings(int rings) { this->MarginRings = rings; }
+
+  /// Collective. `ringed`: this rank's owned triangles and ring of ghosts (BuildRingedPiece);
+  /// `curves`: the same list on every rank, curve c traced with curve id c. On success
+  /// `message0` is, on every rank, PackTracedCurves of the whole surface's traces. False on
+  /// every rank with the same `error` when any curve or rank fails.
+  bool Run(vtkMultiProcessController* controller,
+    const boolsurf::PieceInput& ringed,
+    const std::vector<Curve>& curves,
+    boolsurf::WireBuffer& message0,
+    std::string& error);
+
+  const Traffic& GetTraffic() const { return this->Bytes; }
+
+private:
+  boolsurf::GeodesicPathOptions Options;
+  int Resolution = 4;
+  double MeanEdgeLength = -1.0;
+  double UsedMeanEdgeLength = -1.0;
+  int MarginRings = 3;
+  Traffic Bytes;
+};
+
+#endif
