@@ -1,6 +1,5 @@
 #include "Distributed/PieceTracing.h"
 
-#include <cstring>
 #include <map>
 #include <utility>
 
@@ -55,12 +54,6 @@ GlobalCurveTrace ToGlobalTrace(const CurveTrace& trace,
 // points first name them (an edge by its global vertices, in its parameter's direction).
 void PackGlobalTraces(const std::vector<GlobalCurveTrace>& traces, WireBuffer& out)
 {
-  auto bits = [](double x)
-  {
-    long long b = 0;
-    std::memcpy(&b, &x, sizeof b);
-    return b;
-  };
   out.clear();
   std::map<std::pair<int, int>, int> edgeIndex;
   WireBuffer edges;
@@ -83,8 +76,12 @@ void PackGlobalTraces(const std::vector<GlobalCurveTrace>& traces, WireBuffer& o
         }
         id = found.first->second;
       }
-      out.insert(
-        out.end(), { static_cast<long long>(p.Location), id, bits(p.U), bits(p.V), bits(p.T) });
+      out.insert(out.end(),
+        { static_cast<long long>(p.Location),
+          id,
+          WireBitsOf(p.U),
+          WireBitsOf(p.V),
+          WireBitsOf(p.T) });
     }
   }
   out.push_back(static_cast<long long>(edges.size() / 2));

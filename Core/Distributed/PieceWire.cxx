@@ -5,22 +5,25 @@
 
 namespace boolsurf
 {
-namespace
-{
 
-long long BitsOf(double x)
+//------------------------------------------------------------------------------
+long long WireBitsOf(double x)
 {
   long long bits = 0;
   std::memcpy(&bits, &x, sizeof bits);
   return bits;
 }
 
-double DoubleOf(long long bits)
+//------------------------------------------------------------------------------
+double WireDoubleOf(long long bits)
 {
   double x = 0;
   std::memcpy(&x, &bits, sizeof x);
   return x;
 }
+
+namespace
+{
 
 void PackDelta(const std::vector<std::pair<int, int>>& delta, WireBuffer& out)
 {
@@ -132,7 +135,11 @@ void PackTracedCurves(const std::vector<TracedCurve>& curves,
         id = triangleGlobalId[p.Id];
       }
       out.insert(out.end(),
-        { static_cast<long long>(p.Location), id, BitsOf(p.U), BitsOf(p.V), BitsOf(p.T) });
+        { static_cast<long long>(p.Location),
+          id,
+          WireBitsOf(p.U),
+          WireBitsOf(p.V),
+          WireBitsOf(p.T) });
     }
   }
   out.push_back(static_cast<long long>(edges.size() / 2));
@@ -157,9 +164,9 @@ bool UnpackTracedCurves(const WireBuffer& in,
     {
       p.Location = static_cast<PointLocation>(r.NextInt());
       p.Id = r.NextInt();
-      p.U = DoubleOf(r.Next());
-      p.V = DoubleOf(r.Next());
-      p.T = DoubleOf(r.Next());
+      p.U = WireDoubleOf(r.Next());
+      p.V = WireDoubleOf(r.Next());
+      p.T = WireDoubleOf(r.Next());
     }
   }
   edgeVertices.resize(r.NextCount(2));
@@ -247,7 +254,7 @@ void PackMergeInput(const PieceSummary& summary, const BoundaryJoins& joins, Wir
     out.push_back(c.LocalCell);
     out.push_back(c.Lowest.Source);
     out.push_back(c.Lowest.Index);
-    out.push_back(BitsOf(c.Area));
+    out.push_back(WireBitsOf(c.Area));
   }
   out.push_back(static_cast<long long>(summary.Crossings.size()));
   for (const CellCrossing& c : summary.Crossings)
@@ -278,7 +285,7 @@ void PackMergeInput(const PieceSummary& summary, const BoundaryJoins& joins, Wir
     out.push_back(static_cast<long long>(f.EdgeLengths.size()));
     for (const double l : f.EdgeLengths)
     {
-      out.push_back(BitsOf(l));
+      out.push_back(WireBitsOf(l));
     }
   }
   out.push_back(static_cast<long long>(summary.PlugCrossings.size()));
@@ -305,7 +312,7 @@ bool UnpackMergeInput(const WireBuffer& in,
     c.LocalCell = r.NextInt();
     c.Lowest.Source = r.NextInt();
     c.Lowest.Index = r.NextInt();
-    c.Area = DoubleOf(r.Next());
+    c.Area = WireDoubleOf(r.Next());
   }
   summary.Crossings.resize(r.NextCount(3));
   for (CellCrossing& c : summary.Crossings)
@@ -345,7 +352,7 @@ bool UnpackMergeInput(const WireBuffer& in,
     f.EdgeLengths.resize(r.NextCount(1));
     for (double& l : f.EdgeLengths)
     {
-      l = DoubleOf(r.Next());
+      l = WireDoubleOf(r.Next());
     }
   }
   summary.PlugCrossings.resize(r.NextCount(3));
@@ -369,7 +376,7 @@ void PackMergedForPiece(const MergedArrangement& merged, int piece, WireBuffer& 
   out.push_back(static_cast<long long>(merged.CellArea.size()));
   for (double a : merged.CellArea)
   {
-    out.push_back(BitsOf(a));
+    out.push_back(WireBitsOf(a));
   }
   for (const std::vector<CellCrossing>* crossings : { &merged.Crossings, &merged.PlugCrossings })
   {
@@ -404,7 +411,7 @@ bool UnpackMergedForPiece(const WireBuffer& in, MergedArrangement& out, std::str
   out.CellArea.resize(r.NextCount(1));
   for (double& a : out.CellArea)
   {
-    a = DoubleOf(r.Next());
+    a = WireDoubleOf(r.Next());
   }
   for (std::vector<CellCrossing>* crossings : { &out.Crossings, &out.PlugCrossings })
   {

@@ -40,6 +40,11 @@ namespace boolsurf
 
 using WireBuffer = std::vector<long long>;
 
+/// A double as a message entry, bit for bit (so a value read back is the value sent).
+long long WireBitsOf(double x);
+/// The double a message entry holds (WireBitsOf's inverse).
+double WireDoubleOf(long long bits);
+
 /// Message 0: `curves`, traced on `mesh`, with their points named by the undistributed
 /// surface's ids: vertexGlobalId[v] and triangleGlobalId[t] for the mesh's vertex v and
 /// triangle t (empty: the mesh's own ids), an edge by its two global vertices in the direction

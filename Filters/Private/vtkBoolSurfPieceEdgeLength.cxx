@@ -2,11 +2,12 @@
 
 #include "vtkBoolSurfSurfacePiece.h"
 
+#include "Distributed/PieceWire.h"
+
 #include <vtkCommunicator.h>
 #include <vtkMultiProcessController.h>
 
 #include <algorithm>
-#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -14,44 +15,6 @@ namespace
 {
 using Buffer = std::vector<long long>;
 
-long long Bits(double x)
-{
-  long long b = 0;
-  std::memcpy(&b, &x, sizeof b);
-  return b;
-}
-
-double Real(long long b)
-{
-  double x = 0.0;
-  std::memcpy(&x, &b, sizeof x);
-  return x;
-}
-
-/// Collective among every rank: send[r] to rank r; what each rank sent (its own included).
-std::vector<Buffer> ExchangeAll(vtkMultiProcessController* controller, std::vector<Buffer> send)
-{
-  const int rank = controller->GetLocalProcessId();
-  const int ranks = controller->GetNumberOfProcesses();
-  std::vector<int> partners;
-  std::vector<Buffer> out;
-  for (int r = 0; r < ranks; ++r)
-  {
-    if (r != rank)
-    {
-      partners.push_back(r);
-      out.push_back(std::move(send[r]));
-    }
-  }
-  std::vector<Buffer> back = vtkBoolSurfSurfacePiece::ExchangeWith(controller, partners, out);
-  std::vector<Buffer> result(ranks);
-  for (std::size_t i = 0; i < partners.size(); ++i)
-  {
-    result[partners[i]] = std::move(back[i]);
-  }
-  result[rank] = std::move(send[rank]);
-  return result;
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -83,7 +46,8 @@ double boolsurf::PieceMeanEdgeLength(vtkMultiProcessController* controller, cons
       if (mesh.GetEdgeHalfEdge(e) == 3 * t + k)
       {
         const std::array<int, 2> v = mesh.GetEdgeVertices(e);
-        lengths[n++] = Bits(Distance(mesh.GetPosition(v[0]), mesh.GetPosition(v[1])));
+        lengths[n++] =
+          boolsurf::WireBitsOf(Distance(mesh.GetPosition(v[0]), mesh.GetPosition(v[1])));
       }
     }
     Buffer& b = send[piece.GlobalTriangle[t] / range];
@@ -91,7 +55,7 @@ double boolsurf::PieceMeanEdgeLength(vtkMultiProcessController* controller, cons
     b.push_back(n);
     b.insert(b.end(), lengths, lengths + n);
   }
-  const std::vector<Buffer> got = ExchangeAll(controller, std::move(send));
+  const std::vector<Buffer> got = vtkBoolSurfSurfacePiece::ExchangeAll(controller, std::move(send));
   // This range's triangles in id order, and the edges before the range.
   std::vector<std::pair<long long, std::pair<int, std::size_t>>> held; // id, (rank, offset)
   for (int r = 0; r < ranks; ++r)
@@ -152,7 +116,7 @@ double boolsurf::PieceMeanEdgeLength(vtkMultiProcessController* controller, cons
       }
       for (std::size_t i = 0; i + 1 < part.size(); i += 2)
       {
-        lengths.emplace_back(part[i], Real(part[i + 1]));
+        lengths.emplace_back(part[i], boolsurf::WireDoubleOf(part[i + 1]));
       }
     }
     // In edge order, as one rank sums them.
@@ -163,7 +127,7 @@ double boolsurf::PieceMeanEdgeLength(vtkMultiProcessController* controller, cons
       sum += l.second;
     }
     const int count = static_cast<int>(lengths.size());
-    message[0] = Bits(count > 0 ? sum / count : 0.0);
+    message[0] = boolsurf::WireBitsOf(count > 0 ? sum / count : 0.0);
   }
   else
   {
@@ -172,5 +136,5 @@ double boolsurf::PieceMeanEdgeLength(vtkMultiProcessController* controller, cons
     controller->Send(sampled.data(), n, 0, 56032);
   }
   controller->Broadcast(message.data(), 1, 0);
-  return Real(message[0]);
+  return boolsurf::WireDoubleOf(message[0]);
 }

@@ -7,7 +7,6 @@
 #include <vtkMultiProcessController.h>
 
 #include <algorithm>
-#include <cstring>
 #include <map>
 #include <unordered_map>
 
@@ -18,30 +17,6 @@ using boolsurf::WireBuffer;
 
 namespace
 {
-
-std::size_t BytesOf(const std::vector<WireBuffer>& buffers)
-{
-  std::size_t n = 0;
-  for (const WireBuffer& b : buffers)
-  {
-    n += (b.size() + 1) * sizeof(long long); // with its length
-  }
-  return n;
-}
-
-long long Bits(double x)
-{
-  long long b = 0;
-  std::memcpy(&b, &x, sizeof b);
-  return b;
-}
-
-double Real(long long b)
-{
-  double x = 0.0;
-  std::memcpy(&x, &b, sizeof x);
-  return x;
-}
 
 /// Reads a WireBuffer front to back; past its end it gives 0 and marks itself bad.
 struct Reader
@@ -59,38 +34,8 @@ struct Reader
     return this->In[this->At++];
   }
   int Int() { return static_cast<int>(this->Next()); }
-  double Double() { return Real(this->Next()); }
+  double Double() { return boolsurf::WireDoubleOf(this->Next()); }
 };
-
-/// Collective among every rank: send[r] to rank r, what each rank sent back (its own included).
-std::vector<WireBuffer> ExchangeAll(vtkMultiProcessController* controller,
-  std::vector<WireBuffer> send,
-  std::size_t& sent,
-  std::size_t& received)
-{
-  const int rank = controller->GetLocalProcessId();
-  const int ranks = controller->GetNumberOfProcesses();
-  std::vector<int> partners;
-  std::vector<WireBuffer> out;
-  for (int r = 0; r < ranks; ++r)
-  {
-    if (r != rank)
-    {
-      partners.push_back(r);
-      out.push_back(send[r]);
-    }
-  }
-  sent += BytesOf(out);
-  std::vector<WireBuffer> back = vtkBoolSurfSurfacePiece::ExchangeWith(controller, partners, out);
-  received += BytesOf(back);
-  std::vector<WireBuffer> result(ranks);
-  for (std::size_t i = 0; i < partners.size(); ++i)
-  {
-    result[partners[i]] = std::move(back[i]);
-  }
-  result[rank] = std::move(send[rank]);
-  return result;
-}
 
 /// The triangle fetcher over messages, and the owner side answering other ranks' requests.
 class MessageFetcher : public boolsurf::TriangleFetcher
@@ -231,10 +176,10 @@ public:
     }
     ++this->Bytes.Rounds;
     const int ranks = this->Controller->GetNumberOfProcesses();
-    const std::vector<WireBuffer> asked = ExchangeAll(this->Controller,
+    const std::vector<WireBuffer> asked = vtkBoolSurfSurfacePiece::ExchangeAll(this->Controller,
       requests ? *requests : std::vector<WireBuffer>(ranks),
-      this->Bytes.FetchSent,
-      this->Bytes.FetchReceived);
+      &this->Bytes.FetchSent,
+      &this->Bytes.FetchReceived);
     std::vector<WireBuffer> replies(ranks);
     for (int r = 0; r < ranks; ++r)
     {
@@ -243,8 +188,8 @@ public:
         this->Answer(asked[r], replies[r]);
       }
     }
-    answers = ExchangeAll(
-      this->Controller, std::move(replies), this->Bytes.FetchSent, this->Bytes.FetchReceived);
+    answers = vtkBoolSurfSurfacePiece::ExchangeAll(
+      this->Controller, std::move(replies), &this->Bytes.FetchSent, &this->Bytes.FetchReceived);
     return true;
   }
 
@@ -334,7 +279,11 @@ private:
     for (int v : points)
     {
       const boolsurf::Vec3 x = mesh.GetPosition(v);
-      reply.insert(reply.end(), { p.GlobalVertex[v], Bits(x.x), Bits(x.y), Bits(x.z) });
+      reply.insert(reply.end(),
+        { p.GlobalVertex[v],
+          boolsurf::WireBitsOf(x.x),
+          boolsurf::WireBitsOf(x.y),
+          boolsurf::WireBitsOf(x.z) });
     }
     reply.push_back(static_cast<long long>(whole.size()));
     reply.insert(reply.end(), whole.begin(), whole.end());
@@ -375,9 +324,14 @@ void PackTrace(int curve, const GlobalCurveTrace& t, WireBuffer& out)
   for (const GlobalCurvePoint& p : t.Points)
   {
     out.insert(out.end(),
-      { static_cast<long long>(p.Location), p.Id, p.Second, Bits(p.U), Bits(p.V), Bits(p.T) });
+      { static_cast<long long>(p.Location),
+        p.Id,
+        p.Second,
+        boolsurf::WireBitsOf(p.U),
+        boolsurf::WireBitsOf(p.V),
+        boolsurf::WireBitsOf(p.T) });
   }
-  out.insert(out.end(), { t.Closed ? 1 : 0, t.ShapeId, t.CurveId, Bits(t.Length) });
+  out.insert(out.end(), { t.Closed ? 1 : 0, t.ShapeId, t.CurveId, boolsurf::WireBitsOf(t.Length) });
   out.push_back(static_cast<long long>(t.Segment.size()));
   out.insert(out.end(), t.Segment.begin(), t.Segment.end());
   out.push_back(static_cast<long long>(t.ControlPoint.size()));
@@ -385,7 +339,7 @@ void PackTrace(int curve, const GlobalCurveTrace& t, WireBuffer& out)
   out.push_back(static_cast<long long>(t.Parameter.size()));
   for (double x : t.Parameter)
   {
-    out.push_back(Bits(x));
+    out.push_back(boolsurf::WireBitsOf(x));
   }
   out.push_back(static_cast<long long>(t.OnCurve.size()));
   out.insert(out.end(), t.OnCurve.begin(), t.OnCurve.end());
@@ -489,8 +443,8 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
   }
   std::unordered_map<int, int> directory;
   {
-    const std::vector<WireBuffer> got = ExchangeAll(
-      controller, std::move(owned), this->Bytes.DirectorySent, this->Bytes.DirectoryReceived);
+    const std::vector<WireBuffer> got = vtkBoolSurfSurfacePiece::ExchangeAll(
+      controller, std::move(owned), &this->Bytes.DirectorySent, &this->Bytes.DirectoryReceived);
     for (int r = 0; r < ranks; ++r)
     {
       for (long long g : got[r])
@@ -527,8 +481,8 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
   }
   std::vector<WireBuffer> replies(ranks);
   {
-    const std::vector<WireBuffer> got =
-      ExchangeAll(controller, questions, this->Bytes.DirectorySent, this->Bytes.DirectoryReceived);
+    const std::vector<WireBuffer> got = vtkBoolSurfSurfacePiece::ExchangeAll(
+      controller, questions, &this->Bytes.DirectorySent, &this->Bytes.DirectoryReceived);
     for (int r = 0; r < ranks; ++r)
     {
       for (long long g : got[r])
@@ -540,8 +494,8 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
   }
   std::unordered_map<int, int> ownerOf;
   {
-    const std::vector<WireBuffer> got = ExchangeAll(
-      controller, std::move(replies), this->Bytes.DirectorySent, this->Bytes.DirectoryReceived);
+    const std::vector<WireBuffer> got = vtkBoolSurfSurfacePiece::ExchangeAll(
+      controller, std::move(replies), &this->Bytes.DirectorySent, &this->Bytes.DirectoryReceived);
     for (int r = 0; r < ranks; ++r)
     {
       for (std::size_t i = 0; i < questions[r].size() && i < got[r].size(); ++i)

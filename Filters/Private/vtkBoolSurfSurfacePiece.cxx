@@ -403,3 +403,49 @@ std::string vtkBoolSurfSurfacePiece::NameOverlaps()
   controller->Broadcast(&message[0], length, 0);
   return message;
 }
+
+//------------------------------------------------------------------------------
+std::vector<std::vector<long long>> vtkBoolSurfSurfacePiece::ExchangeAll(
+  vtkMultiProcessController* controller,
+  std::vector<std::vector<long long>> send,
+  std::size_t* sent,
+  std::size_t* received)
+{
+  const auto bytesOf = [](const std::vector<std::vector<long long>>& buffers)
+  {
+    std::size_t n = 0;
+    for (const std::vector<long long>& b : buffers)
+    {
+      n += (b.size() + 1) * sizeof(long long); // with its length
+    }
+    return n;
+  };
+  const int rank = controller->GetLocalProcessId();
+  const int ranks = controller->GetNumberOfProcesses();
+  std::vector<int> partners;
+  std::vector<std::vector<long long>> out;
+  for (int r = 0; r < ranks; ++r)
+  {
+    if (r != rank)
+    {
+      partners.push_back(r);
+      out.push_back(std::move(send[r]));
+    }
+  }
+  if (sent)
+  {
+    *sent += bytesOf(out);
+  }
+  std::vector<std::vector<long long>> back = ExchangeWith(controller, partners, out);
+  if (received)
+  {
+    *received += bytesOf(back);
+  }
+  std::vector<std::vector<long long>> result(ranks);
+  for (std::size_t i = 0; i < partners.size(); ++i)
+  {
+    result[partners[i]] = std::move(back[i]);
+  }
+  result[rank] = std::move(send[rank]);
+  return result;
+}

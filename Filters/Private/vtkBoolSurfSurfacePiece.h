@@ -80,6 +80,15 @@ public:
     const std::vector<int>& partners,
     const std::vector<std::vector<long long>>& send);
 
+  /// Collective among every rank: sends send[r] to rank r (the round-robin ExchangeWith with
+  /// every other rank) and returns what each rank sent this one, its own send[rank] included.
+  /// `sent` and `received`, when given, grow by the bytes that travelled (each buffer with its
+  /// length).
+  static std::vector<std::vector<long long>> ExchangeAll(vtkMultiProcessController* controller,
+    std::vector<std::vector<long long>> send,
+    std::size_t* sent = nullptr,
+    std::size_t* received = nullptr);
+
 private:
   /// The error message naming overlapping global cell ids and their ranks (collective; only
   /// called when an overlap was detected, so gathering every id costs nothing in a valid run).
