@@ -5,6 +5,7 @@
 
 #include "vtkBoolSurfArrangementRebuild.h"
 #include "vtkBoolSurfArrayNames.h"
+#include "vtkBoolSurfArrayRanges.h"
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfOutputReuse.h"
 #include "vtkBoolSurfRankGather.h"
@@ -327,6 +328,10 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
   for (std::size_t p = 0; p < outputs.size(); ++p)
   {
     this->ArrayCounts[p] = boolsurf::CountArrays(outputs[p]);
+    // The ranges ParaView's data information reads after every update, one pass per array
+    // (vtkBoolSurfArrayRanges.h); arrays kept unchanged from the last update, and those the
+    // filter stored already, hold theirs.
+    boolsurf::CacheDataRanges(outputs[p]);
   }
   return 1;
 }
@@ -354,6 +359,10 @@ int vtkBoolSurfAlgorithm::RunOnPiece(const std::vector<vtkPolyData*>& locals,
       vtkErrorMacro(<< error);
     }
     return vtkBoolSurfErrorReported;
+  }
+  for (vtkPolyData* output : outputs)
+  {
+    boolsurf::CacheDataRanges(output);
   }
   return 1;
 }

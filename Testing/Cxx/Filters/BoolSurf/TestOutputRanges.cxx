@@ -1,9 +1,15 @@
-// The one-step filter's outputs carry their arrays' ranges (vtkBoolSurfArrayRanges), so that
-// ParaView's data information reads them without a pass per component: every range an array
-// answers must be, bit for bit, the one VTK computes on a copy of the array holding none.
+// The one-step filter's and the stage filters' outputs carry their arrays' ranges
+// (vtkBoolSurfArrayRanges), so that ParaView's data information reads them without a pass per
+// component: every range an array answers must be, bit for bit, the one VTK computes on a copy
+// of the array holding none, after the first update and after edits (a stage output keeps
+// arrays from one update to the next; a kept array's ranges must still be its values').
 #include "FilterTestUtils.h"
 
 #include "vtkBoolSurf.h"
+#include "vtkBoolSurfArrangement.h"
+#include "vtkBoolSurfBoolean.h"
+#include "vtkBoolSurfLabeling.h"
+#include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -89,7 +95,70 @@ void ExpectAttributeRanges(vtkFieldData* data, const std::string& what)
   }
 }
 
+void ExpectOutputRanges(vtkAlgorithm* filter, const std::string& name)
+{
+  for (int port = 0; port < filter->GetNumberOfOutputPorts(); ++port)
+  {
+    vtkPolyData* output = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(port));
+    ASSERT_NE(output, nullptr);
+    const std::string what = name + " port " + std::to_string(port);
+    if (output->GetPoints())
+    {
+      ExpectRangesAsComputed(output->GetPoints()->GetData(), what + " points");
+    }
+    ExpectAttributeRanges(output->GetPointData(), what + " point data");
+    ExpectAttributeRanges(output->GetCellData(), what + " cell data");
+    ExpectAttributeRanges(output->GetFieldData(), what + " field data");
+  }
+}
+
+/// Three circles on the sphere, the third centred on `third`.
+vtkSmartPointer<vtkPolyData> ThreeCircles(const std::array<double, 3>& third)
+{
+  testutils::ControlPolygon outside = SphereCircle({ 0, 0, 1 }, 0.5, 16, 0);
+  std::reverse(outside.Points.begin(), outside.Points.end());
+  return testutils::ToCurves(
+    { outside, SphereCircle({ 0.3, 0, 0.95 }, 0.5, 16, 1), SphereCircle(third, 0.4, 12, 2) });
+}
+
 } // namespace
+
+TEST(OutputRanges, StageFiltersCarryTheRangesVTKComputesAfterEdits)
+{
+  auto surface = testutils::ToPolyData(boolsurf::MakeIcosphere(5));
+  vtkNew<vtkBoolSurfTraceCurves> trace;
+  vtkNew<vtkBoolSurfArrangement> arrange;
+  vtkNew<vtkBoolSurfLabeling> label;
+  vtkNew<vtkBoolSurfBoolean> boolean;
+  trace->SetInputData(0, surface);
+  arrange->SetInputData(0, surface);
+  arrange->SetInputConnection(1, trace->GetOutputPort());
+  label->SetInputConnection(arrange->GetOutputPort(0));
+  label->SetPerTriangleLabels(true);
+  boolean->SetInputConnection(label->GetOutputPort(0));
+  boolean->SetShapeA(-1);
+  boolean->SetShapeB(-1);
+  // The first update, then the third circle moved twice: the stage outputs keep what the
+  // edit left unchanged.
+  for (const std::array<double, 3>& third :
+    { std::array<double, 3>{ 0, 0.3, 0.95 }, std::array<double, 3>{ 0.1, 0.35, 0.93 },
+      std::array<double, 3>{ -0.5, 0.2, 0.84 } })
+  {
+    trace->SetInputData(1, ThreeCircles(third));
+    boolean->Update();
+    ASSERT_EQ(testutils::ErrorsOf(boolean), "");
+    ASSERT_GT(boolean->GetOutput(0)->GetNumberOfCells(), 1000);
+    // The filters stored them, not VTK on first use.
+    vtkDataArray* cells = arrange->GetOutput(0)->GetCellData()->GetArray("ArrangementCell");
+    ASSERT_NE(cells, nullptr);
+    ASSERT_TRUE(cells->HasInformation());
+    EXPECT_TRUE(cells->GetInformation()->Has(vtkAbstractArray::PER_COMPONENT()));
+    ExpectOutputRanges(trace, "Trace Surface Curves");
+    ExpectOutputRanges(arrange, "Surface Arrangement");
+    ExpectOutputRanges(label, "Label Arrangement Cells");
+    ExpectOutputRanges(boolean, "Surface Boolean");
+  }
+}
 
 TEST(OutputRanges, EveryPortCarriesTheRangesVTKComputes)
 {
