@@ -379,7 +379,7 @@ bool CurveTracer::MakeKey(const std::vector<SurfacePoint>& points,
   key.Type = type;
   key.Closed = closed;
   key.Resolution = this->Resolution;
-  key.Method = this->Solver.GetOptions().Method;
+  key.Options = this->Solver.GetOptions();
   return true;
 }
 
@@ -676,13 +676,13 @@ void CurveTracer::StartPass()
 bool CurveTracer::CurveKey::operator==(const CurveKey& o) const
 {
   return this->Type == o.Type && this->Closed == o.Closed && this->Resolution == o.Resolution &&
-    this->Method == o.Method && this->Points == o.Points;
+    this->Options == o.Options && this->Points == o.Points;
 }
 
 std::size_t CurveTracer::CurveKeyHash::operator()(const CurveKey& k) const
 {
   std::size_t h = static_cast<std::size_t>(k.Type) * 31 + (k.Closed ? 17 : 0) +
-    static_cast<std::size_t>(k.Resolution) * 131 + static_cast<std::size_t>(k.Method) * 7;
+    static_cast<std::size_t>(k.Resolution) * 131 + static_cast<std::size_t>(k.Options.Method) * 7;
   auto mix = [&h](std::size_t v) { h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); };
   for (const CanonicalPoint& p : k.Points)
   {

@@ -212,7 +212,9 @@ private:
     CurveType Type = CurveType::GeodesicPolygon;
     bool Closed = true;
     int Resolution = 0;
-    GeodesicMethod Method = GeodesicMethod::Bounded;
+    /// Every setting of the solver, not the method alone: filters on one surface share a
+    /// tracer (vtkSurfaceCache), each setting its own before tracing.
+    GeodesicPathOptions Options;
     bool operator==(const CurveKey& o) const;
   };
   struct CurveKeyHash

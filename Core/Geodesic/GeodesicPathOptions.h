@@ -63,6 +63,17 @@ struct GeodesicPathOptions
   /// Upper bound on funnel runs per path (each run after the first shortens the path, so the
   /// loop ends anyway; the bound only guards against numerical ping-pong).
   int MaximumStraighteningRounds = 10000;
+
+  bool operator==(const GeodesicPathOptions& o) const
+  {
+    return Method == o.Method && MaximumWindows == o.MaximumWindows &&
+      BoundedWindows == o.BoundedWindows && RouteTolerance == o.RouteTolerance &&
+      CorridorRefinement == o.CorridorRefinement && ExactPruning == o.ExactPruning &&
+      UseEdgePathStrip == o.UseEdgePathStrip && NumberOfLandmarks == o.NumberOfLandmarks &&
+      LandmarkBuildThreshold == o.LandmarkBuildThreshold && HeuristicWeight == o.HeuristicWeight &&
+      MaximumStraighteningRounds == o.MaximumStraighteningRounds;
+  }
+  bool operator!=(const GeodesicPathOptions& o) const { return !(*this == o); }
 };
 
 } // namespace boolsurf

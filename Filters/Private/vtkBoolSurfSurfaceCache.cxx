@@ -13,8 +13,10 @@
 #include <vtkPolyData.h>
 #include <vtkStaticCellLocator.h>
 
+#include <cstdint>
 #include <map>
 #include <mutex>
+#include <thread>
 #include <tuple>
 
 namespace boolsurf
@@ -91,6 +93,50 @@ std::shared_ptr<const vtkSurfaceInput> ConvertedSurface(vtkPolyData* input,
   std::lock_guard<std::mutex> lock(SharedSurfacesMutex());
   SharedSurfaces()[key] = surface;
   return surface;
+}
+
+/// The tracers in use on each converted surface, per thread: filters on one surface share the
+/// tracer of the thread they update on (a tracer is used by one thread at a time; VTK's
+/// pipelines update a chain's filters on one thread). Entries are weak, as SharedSurfaces'; a
+/// tracer lives as long as a cache holds it, and every cache holding it holds its surface.
+struct TracerKey
+{
+  const vtkSurfaceInput* Surface = nullptr;
+  std::uint64_t MeshSerial = 0;
+  std::thread::id Thread;
+  bool operator<(const TracerKey& o) const
+  {
+    return std::tie(Surface, MeshSerial, Thread) < std::tie(o.Surface, o.MeshSerial, o.Thread);
+  }
+};
+
+std::map<TracerKey, std::weak_ptr<CurveTracer>>& SharedTracers()
+{
+  static std::map<TracerKey, std::weak_ptr<CurveTracer>> tracers;
+  return tracers;
+}
+
+std::shared_ptr<CurveTracer> SharedTracer(const vtkSurfaceInput& surface)
+{
+  const TracerKey key{ &surface, surface.Mesh->GetSerial(), std::this_thread::get_id() };
+  std::lock_guard<std::mutex> lock(SharedSurfacesMutex());
+  auto& all = SharedTracers();
+  for (auto it = all.begin(); it != all.end();)
+  {
+    it = it->second.expired() ? all.erase(it) : std::next(it);
+  }
+  if (auto found = all.find(key); found != all.end())
+  {
+    if (auto tracer = found->second.lock())
+    {
+      return tracer;
+    }
+  }
+  // The solver's triangle components are the topology's, shared.
+  auto tracer = std::make_shared<CurveTracer>(*surface.Mesh,
+    surface.Topology ? std::make_shared<TriangleComponents>(surface.Topology) : nullptr);
+  all[key] = tracer;
+  return tracer;
 }
 
 } // namespace
@@ -179,12 +225,10 @@ OffsetWorkspace& vtkSurfaceCache::GetOffsetWorkspace()
 //------------------------------------------------------------------------------
 CurveTracer& vtkSurfaceCache::GetTracer()
 {
-  if (!this->Tracer)
+  if (!this->Tracer || this->TracerThread != std::this_thread::get_id())
   {
-    // The solver's triangle components are the topology's, shared.
-    this->Tracer = std::make_unique<CurveTracer>(*this->Surface->Mesh,
-      this->Surface->Topology ? std::make_shared<TriangleComponents>(this->Surface->Topology)
-                              : nullptr);
+    this->Tracer = SharedTracer(*this->Surface);
+    this->TracerThread = std::this_thread::get_id();
   }
   return *this->Tracer;
 }

@@ -17,6 +17,7 @@
 #include <vtkType.h>
 
 #include <memory>
+#include <thread>
 
 class vtkStaticCellLocator;
 
@@ -55,7 +56,11 @@ public:
   const ClosestTriangleGrid& GetClosestTriangles();
 
   /// Curve tracer on the mesh of the last Get() (built on first use; its geodesic search
-  /// state is reused by every path).
+  /// state is reused by every path). Shared by every cache of the same converted surface on
+  /// the same thread: Surface Curves traces its display port, then Trace Surface Curves or
+  /// the one-step filter traces the same curves and recalls them from the tracer's memory
+  /// instead of tracing them again, and the search states exist once. Each user sets the
+  /// method and resolution it traces with (the memory keys curves by every setting).
   CurveTracer& GetTracer();
 
   /// What offsets reuse on the mesh of the last Get() (distance searches, the arrangement of the
@@ -83,7 +88,8 @@ private:
   std::shared_ptr<const vtkSurfaceInput> Surface;
   vtkSmartPointer<vtkStaticCellLocator> Locator;
   std::unique_ptr<ClosestTriangleGrid> Closest;
-  std::unique_ptr<CurveTracer> Tracer;
+  std::shared_ptr<CurveTracer> Tracer; ///< shared (see GetTracer)
+  std::thread::id TracerThread;
   std::unique_ptr<OffsetWorkspace> Offset;
 };
 

@@ -194,6 +194,18 @@ TEST(CurveTracer, RemembersTracedCurves)
   options.Method = GeodesicMethod::Bounded;
   tracer.GetPathSolver().SetOptions(options);
   tracer.SetResolution(4);
+  // Any other setting of the solver is another trace too (filters share a tracer, each with
+  // its own settings): a smaller window budget, no corridor refinement.
+  GeodesicPathOptions budget = options;
+  budget.BoundedWindows = 1 << 10;
+  tracer.GetPathSolver().SetOptions(budget);
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again, traceError));
+  GeodesicPathOptions corridor = options;
+  corridor.CorridorRefinement = false;
+  tracer.GetPathSolver().SetOptions(corridor);
+  ASSERT_TRUE(tracer.Trace(polygon, CurveType::GeodesicPolygon, true, again, traceError));
+  EXPECT_EQ(tracer.GetRecalledCurves(), 1u);
+  tracer.GetPathSolver().SetOptions(options);
   // A control point moved by one ulp is another curve.
   std::vector<SurfacePoint> moved = polygon;
   moved[1].U = std::nextafter(moved[1].U, 1.0);
