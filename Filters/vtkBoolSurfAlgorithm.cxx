@@ -314,16 +314,7 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
   std::string error;
   if (!this->Execute(inputs, outputs, error))
   {
-    for (vtkPolyData* output : outputs)
-    {
-      output->Initialize();
-    }
-    this->RecordFailure(error, outputs);
-    if (!error.empty())
-    {
-      vtkErrorMacro(<< error);
-    }
-    return vtkBoolSurfErrorReported;
+    return this->Fail(error, outputs);
   }
   for (std::size_t p = 0; p < outputs.size(); ++p)
   {
@@ -349,22 +340,28 @@ int vtkBoolSurfAlgorithm::RunOnPiece(const std::vector<vtkPolyData*>& locals,
   std::string error;
   if (!this->ExecutePiece(locals, outputs, error))
   {
-    for (vtkPolyData* output : outputs)
-    {
-      output->Initialize();
-    }
-    this->RecordFailure(error, outputs);
-    if (!error.empty())
-    {
-      vtkErrorMacro(<< error);
-    }
-    return vtkBoolSurfErrorReported;
+    return this->Fail(error, outputs);
   }
   for (vtkPolyData* output : outputs)
   {
     boolsurf::CacheDataRanges(output);
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoolSurfAlgorithm::Fail(const std::string& error, const std::vector<vtkPolyData*>& outputs)
+{
+  for (vtkPolyData* output : outputs)
+  {
+    output->Initialize();
+  }
+  this->RecordFailure(error, outputs);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+  }
+  return vtkBoolSurfErrorReported;
 }
 
 //------------------------------------------------------------------------------

@@ -145,6 +145,8 @@ protected:
 private:
   /// RequestData for a surface distributed across ranks: ExecutePiece() on every rank.
   int RunOnPiece(const std::vector<vtkPolyData*>& locals, vtkInformationVector* outputVector);
+  /// A failed Execute or ExecutePiece: empty outputs, RecordFailure, the error reported.
+  int Fail(const std::string& error, const std::vector<vtkPolyData*>& outputs);
 
   std::vector<int> SurfacePorts{ 0 };
   std::vector<int> OptionalPorts;

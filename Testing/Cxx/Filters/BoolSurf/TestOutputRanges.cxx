@@ -140,9 +140,9 @@ TEST(OutputRanges, StageFiltersCarryTheRangesVTKComputesAfterEdits)
   boolean->SetShapeB(-1);
   // The first update, then the third circle moved twice: the stage outputs keep what the
   // edit left unchanged.
-  for (const std::array<double, 3>& third :
-    { std::array<double, 3>{ 0, 0.3, 0.95 }, std::array<double, 3>{ 0.1, 0.35, 0.93 },
-      std::array<double, 3>{ -0.5, 0.2, 0.84 } })
+  for (const std::array<double, 3>& third : { std::array<double, 3>{ 0, 0.3, 0.95 },
+         std::array<double, 3>{ 0.1, 0.35, 0.93 },
+         std::array<double, 3>{ -0.5, 0.2, 0.84 } })
   {
     trace->SetInputData(1, ThreeCircles(third));
     boolean->Update();
