@@ -115,7 +115,8 @@ def measure(proxy):
 
 def render_region(session, png, size=(800, 600)):
     """The surface in gray and the region in flat orange, seen along y, rendered on the server
-    when connected to one; returns the number of the region's pixels in the PNG."""
+    when connected to one; returns the number of the region's pixels in the PNG and whether
+    the server rendered it."""
     from render_pixels import paint_unlit, view_pixels
     simple.GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
     view = simple.GetActiveViewOrCreate("RenderView")
@@ -131,7 +132,9 @@ def render_region(session, png, size=(800, 600)):
     camera.SetViewUp(0, 0, 1)
     view.ResetCamera(False)
     pixels = view_pixels(view, png, size)
-    return sum(1 for p in pixels if tuple(int(round(x)) for x in p) == REGION_RGB)
+    # Whether the last render ran on the server's ranks (composited there), not on the client.
+    on_server = bool(view.GetClientSideObject().GetUseDistributedRenderingForRender())
+    return sum(1 for p in pixels if tuple(int(round(x)) for x in p) == REGION_RGB), on_server
 
 
 def save_pieces(region, path):
@@ -153,7 +156,7 @@ def run_session(folder):
               "surface": measure_surface(session["surface"]),
               "region": measure(region)}
     result["png"] = os.path.join(folder, "region.png")
-    result["region_pixels"] = render_region(session, result["png"])
+    result["region_pixels"], result["rendered_on_server"] = render_region(session, result["png"])
     pvtp = os.path.join(folder, "region.pvtp")
     result["pvtp"] = pvtp
     result["pvtp_pieces"] = save_pieces(region, pvtp)

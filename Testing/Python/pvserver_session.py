@@ -164,6 +164,8 @@ def check_session(remote, serial, ranks, failures):
     # The screenshot shows the region (its flat color) on the surface.
     if remote["region_pixels"] < 1000:
         failures.append("the screenshot shows %d pixels of the region" % remote["region_pixels"])
+    if not remote["rendered_on_server"]:
+        failures.append("the view was rendered on the client, not on the server's ranks")
     # Save Data wrote a piece per rank holding part of the region (ParaView's writer leaves
     # out empty pieces); read back in the same session on the ranks, it is the same region,
     # in pieces of the same sizes.
