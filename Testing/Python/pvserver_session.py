@@ -2,8 +2,9 @@
 (TestPython3PvserverSession.py, GuiPvserverSession.py; the session itself is
 PvserverSessionPipeline.py).
 
-pvserver runs in its own process group under `timeout`, so that it is stopped when the test
-ends, fails, or is itself killed before it could stop the server.
+pvserver runs in a session of its own under `timeout`: the test stops it (mpiexec, then every
+process left in that session) when it ends or fails, and `timeout` stops it if the test itself
+was killed first.
 """
 import os
 import queue
@@ -111,15 +112,47 @@ class PvServer:
             self.log.append(line)
 
     def stop(self):
-        if self.process and self.process.poll() is None:
+        """mpiexec forwards a SIGTERM to the ranks and waits for them; whatever is left after
+        that (Open MPI puts each rank in a process group of its own, but in our session) is
+        killed."""
+        if self.process is None:
+            return
+        if self.process.poll() is None:
+            os.kill(self.process.pid, signal.SIGTERM)  # `timeout` passes it on to mpiexec
             try:
-                os.killpg(self.process.pid, signal.SIGKILL)
+                self.process.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                pass
+        for pid in session_processes(self.process.pid):
+            try:
+                os.kill(pid, signal.SIGKILL)
             except ProcessLookupError:
                 pass
-        if self.process:
-            self.process.wait()
+        self.process.wait()
+        # Let the killed ranks go, so that the next test starts on an idle machine.
+        deadline = time.monotonic() + 10
+        while session_processes(self.process.pid) and time.monotonic() < deadline:
+            time.sleep(0.2)
         self.process = None
 
+
+def session_processes(session):
+    """The processes of the session whose leader is `session` (a process we started with
+    start_new_session), from /proc."""
+    found = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open("/proc/%s/stat" % entry) as f:
+                stat = f.read()
+        except OSError:
+            continue
+        # pid (comm) state ppid pgrp session ...: comm may hold spaces, so split after it.
+        fields = stat[stat.rindex(")") + 2:].split()
+        if int(fields[3]) == session:
+            found.append(int(entry))
+    return found
 
 def same_region(got, expected, where, failures):
     """The same region per SourceTriangle: the same triangles in each, the same area to
@@ -181,7 +214,10 @@ def check_session(remote, serial, ranks, failures):
 
 def run_client(command, timeout, what):
     """Runs a client (pvpython, paraview) in its own process group, all of it stopped after
-    `timeout` seconds; returns its output, raises naming `what` when it fails."""
+    `timeout` seconds (by `timeout` as well, should the test be killed first); returns its
+    output, raises naming `what` when it fails."""
+    if shutil.which("timeout"):
+        command = [shutil.which("timeout"), "--kill-after=10", str(timeout + 30)] + command
     process = subprocess.Popen(command, env=mpi_env(), stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True, start_new_session=True)
     try:
