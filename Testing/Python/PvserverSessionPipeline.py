@@ -34,7 +34,8 @@ REGION_RGB = (255, 115, 25)
 def load_plugin_everywhere():
     """The filters run on the server (every rank loads the plugin), the client needs the proxy
     definitions too."""
-    plugin = os.environ["BOOLSURF_PLUGIN"]
+    plugin = os.environ.get("BOOLSURF_PLUGIN") or os.path.join(
+        source_dir, "build", "lib", "paraview-5.11", "plugins", "BoolSurf", "BoolSurf.so")
     if sm.ActiveConnection.IsRemote():
         simple.LoadPlugin(plugin, remote=True)
     simple.LoadPlugin(plugin, remote=False)
