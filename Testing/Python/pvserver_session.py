@@ -45,7 +45,7 @@ def free_port():
 
 class PvServer:
     """`mpiexec -np ranks pvserver` on a free port, listening once the context is entered;
-    stopped (its whole process group) when it is left. A port taken between our probe and
+    stopped (every process of its session) when it is left. A port taken between our probe and
     pvserver's bind, or a slow start, gets one more try on another port."""
 
     def __init__(self, ranks, tries=2):
@@ -56,7 +56,7 @@ class PvServer:
         self.log = []
 
     def __enter__(self):
-        for attempt in range(self.tries):
+        for _ in range(self.tries):
             self.port = free_port()
             if self._start():
                 return self
