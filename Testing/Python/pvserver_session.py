@@ -212,10 +212,26 @@ def check_session(remote, serial, ranks, failures):
         failures.append("the .pvtp read back lies on the ranks as %s, the region as %s"
                         % (back["held"], held))
 
-def run_client(command, timeout, what):
+# Open MPI's words when a client's MPI_Init could not start its local daemon (seen once with
+# other MPI jobs starting at the same time on the machine): the client never ran, run it again.
+MPI_INIT_FAILED = "Unable to start a daemon on the local node"
+
+
+def run_client(command, timeout, what, tries=2):
     """Runs a client (pvpython, paraview) in its own process group, all of it stopped after
     `timeout` seconds (by `timeout` as well, should the test be killed first); returns its
-    output, raises naming `what` when it fails."""
+    output, raises naming `what` when it fails. A client whose MPI could not start is run
+    again (up to `tries` times)."""
+    for attempt in range(1, tries + 1):
+        try:
+            return run_client_once(command, timeout, what)
+        except RuntimeError as error:
+            if attempt == tries or MPI_INIT_FAILED not in str(error):
+                raise
+            print("%s: MPI did not start, once more" % what)
+
+
+def run_client_once(command, timeout, what):
     if shutil.which("timeout"):
         command = [shutil.which("timeout"), "--kill-after=10", str(timeout + 30)] + command
     process = subprocess.Popen(command, env=mpi_env(), stdout=subprocess.PIPE,
