@@ -183,6 +183,14 @@ samples = sample_source([(circles[0][0][18], tuple(m - x for m, x in zip(middle,
 bsc = BoundarySampledCurves(Input=labels, Samples=samples)
 results["bsc"] = {"triangles": sm.Fetch(bsc).GetNumberOfCells()}
 
+# The LocallyShortest method does not trace on pieces: gathered (a warning says why), with the
+# one-rank polylines and a message 0 on rank 0 for Surface Arrangement on pieces.
+shortest = TraceSurfaceCurves(Surface=surface, Curves=control, GeodesicMethod="Locally shortest")
+shortest_reference = TraceSurfaceCurves(Surface=whole, Curves=control,
+                                        GeodesicMethod="Locally shortest")
+results["shortest"] = {"traced": polylines(sm.Fetch(shortest)),
+                       "tracing": per_rank(shortest, shortest_reference)}
+
 # An edit of the curves only (the first circle moved): the ringed piece and the directory are
 # kept, and the message still equals the gathered path's.
 moved = list(control.Points)
@@ -218,8 +226,8 @@ if vtkMultiProcessController.GetGlobalController().GetLocalProcessId() == 0:
     out.GetPointData().AddArray(triangles)
     out.GetPointData().AddArray(uv)
 """
-bad = TraceSurfaceCurves(Surface=surface, Curves=ProgrammableSource(Script=BAD,
-                                                                     OutputDataSetType="vtkPolyData"))
+bad_curves = ProgrammableSource(Script=BAD, OutputDataSetType="vtkPolyData")
+bad = TraceSurfaceCurves(Surface=surface, Curves=bad_curves)
 bad.UpdatePipeline()
 errors = sm.Fetch(bad).GetFieldData().GetAbstractArray("TraceErrors")
 results["bad"] = [errors.GetValue(i) for i in range(errors.GetNumberOfValues())] if errors else []

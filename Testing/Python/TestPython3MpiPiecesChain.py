@@ -6,8 +6,9 @@ with the same labels, areas to 1e-12), every rank holds only its part (no rank h
 region), the piece outputs say so, and a filter that gathers its input refuses them with an
 error instead of answering wrongly. Trace Surface Curves traces on the pieces: rank 0's
 polylines equal one rank's exactly, every rank's message 0 equals the gathered path's byte for
-byte, no rank holds the whole surface, an edit of the curves keeps the ringed piece, and a curve
-naming a triangle no rank holds fails on every rank with an error naming it. Each run has a
+byte, no rank holds the whole surface, an edit of the curves keeps the ringed piece, the
+LocallyShortest method is traced on the gathered surface (warning), and a curve naming a
+triangle no rank holds fails on every rank with an error naming it. Each run has a
 time limit: a rank left waiting fails the test.
 """
 import json
@@ -109,6 +110,12 @@ for ranks, partitions in ((2, None), (3, None), (3, 2)):
         print("%s on %d ranks: held triangles per rank %s of %d, rounds %d" % (
             stage, ranks, [int(r["HeldTriangles"]) for _, r in sorted(tracing.items())],
             result["surface_triangles"], int(tracing["0"]["Rounds"])))
+    # LocallyShortest: gathered, the one-rank polylines on rank 0, message 0 there only.
+    shortest = result["shortest"]
+    assert shortest["traced"] == serial["shortest"]["traced"], "LocallyShortest differs"
+    assert shortest["tracing"]["0"]["Message"] == shortest["tracing"]["0"]["Reference"] >= 0
+    assert all("HeldTriangles" not in row for row in shortest["tracing"].values()), shortest
+    assert "not on each rank's piece: the LocallyShortest geodesic method" in output, output
     same_by_source(result["edited"]["boolean"], serial["edited"]["boolean"], "edited", False)
     assert result["bad"] and "which no rank holds" in result["bad"][0], result["bad"]
     assert "curve 0" in result["bad"][0], result["bad"]
