@@ -18,7 +18,10 @@
  * Rounds are bulk-synchronous: a rank whose tracer needs triangles starts a round, a rank done
  * with its curves joins rounds with no request, and every round begins with an all-reduce
  * saying whether any rank still asks, so all ranks leave together. Run() is collective and
- * fails on every rank with the same message (the lowest failing curve, named) when one fails.
+ * fails on every rank with the same message (the lowest failing curve, named) when one fails;
+ * GetFailures() lists every failing curve, the same on every rank. Trace Surface Curves on
+ * pieces (vtkBoolSurfPieceTraceStage.h) keeps one between updates: SetReusePiece keeps the
+ * piece, the directory and the tracer with what it fetched while the surface is unchanged.
  */
 #ifndef vtkBoolSurfPieceTracing_h
 #define vtkBoolSurfPieceTracing_h
