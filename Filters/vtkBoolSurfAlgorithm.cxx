@@ -255,7 +255,13 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
         locals[p] = vtkPolyData::GetData(inputVector[p], 0);
       }
     }
-    return this->RunOnPiece(locals, outputVector);
+    this->PiecesGatherInstead = false;
+    const int done = this->RunOnPiece(locals, outputVector);
+    if (!this->PiecesGatherInstead)
+    {
+      return done;
+    }
+    this->PiecesGatherInstead = false; // every rank gathers, as for a surface on one rank
   }
   // Every rank takes part in the gather first, before anything that may fail or return early
   // (see vtkBoolSurfRankGather); only the computing rank runs the filter.

@@ -92,6 +92,11 @@ protected:
   virtual bool ExecutePiece(const std::vector<vtkPolyData*>& locals,
     const std::vector<vtkPolyData*>& outputs,
     std::string& error);
+  /// Called by ExecutePiece() on every rank alike (a decision all ranks share) before it
+  /// returns true: the update then gathers the inputs to the first rank and runs Execute()
+  /// there, as for a surface held by one rank (Trace Surface Curves, for what its tracing on
+  /// pieces cannot do).
+  void GatherInsteadOfPieces() { this->PiecesGatherInstead = true; }
 
   /// Called after a failed Execute(), with the outputs emptied: a filter may record the failure
   /// in them (Trace Surface Curves lists its problems in field data `TraceErrors`).
@@ -149,6 +154,7 @@ private:
   int Fail(const std::string& error, const std::vector<vtkPolyData*>& outputs);
 
   std::vector<int> SurfacePorts{ 0 };
+  bool PiecesGatherInstead = false;
   std::vector<int> OptionalPorts;
   std::unique_ptr<boolsurf::vtkSurfaceCache> Surface;
   /// The arrangement GetArrangement() last computed again for an input without one.

@@ -116,6 +116,12 @@ constexpr const char* ControlBarycentric = "ControlBarycentric";
 /// across ranks need them (Core/Distributed/PieceWire.h, message 0: points on the surface's
 /// point and cell GlobalIds), for Surface Arrangement on each rank's piece.
 constexpr const char* PieceCurvesMessage = "PieceCurvesMessage";
+/// Trace Surface Curves' output when it traced on each rank's piece (field data, doubles, one
+/// tuple on every rank, components named): what the rank sent and received (bytes) and did:
+/// DirectorySent, DirectoryReceived, FetchSent, FetchReceived, TracesSent, TracesReceived,
+/// Rounds, OwnRounds, TracedCurves, FetchedTriangles, HeldTriangles, RingedTriangles,
+/// ReusedPiece (1 when an edit kept the ringed piece, directory and tracer).
+constexpr const char* PieceTracingTraffic = "PieceTracingTraffic";
 /// Surface Arrangement's output on each rank's piece (field data, int: the number of
 /// ranks): the output is one rank's part of the refined surface, not the whole.
 constexpr const char* ArrangementOnPieces = "ArrangementOnPieces";

@@ -2,7 +2,9 @@
 
 #include "vtkBoolSurfArrayNames.h"
 
+#include "vtkBoolSurfControlCurves.h"
 #include "vtkBoolSurfCurvesMessage.h"
+#include "vtkBoolSurfPieceTraceStage.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfTraceStage.h"
 
@@ -22,6 +24,8 @@ struct vtkBoolSurfTraceCurves::Internals
 {
   /// What the last failed update could not trace, one sentence each.
   std::vector<std::string> Problems;
+  /// The ringed piece and the tracing kept between updates on pieces.
+  std::unique_ptr<boolsurf::PieceTraceState> Pieces;
 };
 
 //------------------------------------------------------------------------------
@@ -96,6 +100,52 @@ bool vtkBoolSurfTraceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   boolsurf::AttachStageResult<boolsurf::TracedCurvesResult>(
     output->GetPointData()->GetArray(boolsurf::names::TriangleId), std::move(result));
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfTraceCurves::ExecutePiece(const std::vector<vtkPolyData*>& locals,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  Internals& internal = *this->Internal;
+  internal.Problems.clear();
+  if (!internal.Pieces)
+  {
+    internal.Pieces = std::make_unique<boolsurf::PieceTraceState>();
+  }
+  std::vector<std::string> notes;
+  std::string reason;
+  const boolsurf::PieceTraceOutcome outcome = boolsurf::TraceOnPieces(controller,
+    locals[0],
+    locals[1],
+    this->GetTraceOptions(),
+    *internal.Pieces,
+    outputs[0],
+    internal.Problems,
+    notes,
+    reason);
+  this->ReportWarnings(notes);
+  switch (outcome)
+  {
+    case boolsurf::PieceTraceOutcome::Traced:
+      return true;
+    case boolsurf::PieceTraceOutcome::DrawingStart:
+      boolsurf::MarkDrawingStart(outputs);
+      return true;
+    case boolsurf::PieceTraceOutcome::Gather:
+      if (controller->GetLocalProcessId() == 0)
+      {
+        vtkWarningMacro(
+          "traced on the surface gathered to rank 0, not on each rank's piece: " << reason);
+      }
+      this->GatherInsteadOfPieces(); // decided alike on every rank
+      return true;
+    case boolsurf::PieceTraceOutcome::Failed:
+      break;
+  }
+  error = "Cannot trace the curves:" + boolsurf::JoinLines(internal.Problems);
+  return false;
 }
 
 //------------------------------------------------------------------------------

@@ -36,6 +36,21 @@
  * The surface's adjacency and the geodesic search state are built once and reused while
  * only the curves change.
  *
+ * Under MPI, on a surface split across ranks whose pieces carry point and cell GlobalIds (the
+ * rule of Surface Arrangement on pieces, decided once by every rank), the surface is not
+ * gathered: each rank builds its piece with a ring of ghosts and the curves are traced on the
+ * pieces (vtkBoolSurfPieceTraceStage.h; control points name triangles by global cell id), each
+ * rank fetching from their owners only the triangles its curves' legs read. Every rank's output
+ * carries field data PieceCurvesMessage (the bytes the gathered path packs) and
+ * PieceTracingTraffic (bytes, rounds, fetched and held triangles); rank 0's output holds the
+ * traced polylines, the one-rank output bit for bit, the other ranks' none (curves are small; a
+ * gathering filter downstream uses rank 0's as they are). A failing curve fails the update on
+ * every rank with the same TraceErrors. The LocallyShortest method, control points given by
+ * position, and legs the exact window search does not settle within its budget are traced on
+ * the surface gathered to rank 0 instead, with a warning saying why (Docs/Parallel.md).
+ * Between updates that change only the curves, the ringed piece, the owner directory and the
+ * triangles already fetched are kept.
+ *
  * @sa vtkBoolSurfArrangement vtkDijkstraGraphGeodesicPath vtkGeodesicPath
  */
 #ifndef vtkBoolSurfTraceCurves_h
@@ -67,6 +82,13 @@ protected:
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
   void RecordFailure(const std::string& error, const std::vector<vtkPolyData*>& outputs) override;
+
+  /// On a surface split across ranks with point and cell GlobalIds: traced on each rank's piece.
+  bool ExecutesOnPieces() const override { return true; }
+  bool PiecesNeedGlobalIds() const override { return true; }
+  bool ExecutePiece(const std::vector<vtkPolyData*>& locals,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
 private:
   vtkBoolSurfTraceCurves(const vtkBoolSurfTraceCurves&) = delete;

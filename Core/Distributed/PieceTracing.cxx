@@ -1,5 +1,7 @@
 #include "Distributed/PieceTracing.h"
 
+#include "Geodesic/WrittenCurvePoints.h"
+
 #include <map>
 #include <utility>
 
@@ -255,6 +257,23 @@ bool PieceCurveTracer::Trace(const std::vector<SurfacePoint>& points,
         return false;
       }
       out = ToGlobalTrace(trace, piece.Mesh, piece.GlobalVertex, piece.GlobalTriangle);
+      if (this->KeepWrittenForms)
+      {
+        // As Trace Surface Curves writes them: a control point in its own triangle.
+        const std::size_t n = trace.Curve.Points.size();
+        out.Positions.resize(n);
+        out.Written.resize(n);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+          const int k = trace.ControlPoint[i];
+          const int own = k >= 0 && k < static_cast<int>(this->LocalPoints.size())
+            ? this->LocalPoints[k].Triangle
+            : -1;
+          out.Positions[i] = PositionOf(piece.Mesh, trace.Curve.Points[i]);
+          out.Written[i] = WrittenCurvePoint(piece.Mesh, trace.Curve, i, own);
+          out.Written[i].Triangle = piece.GlobalTriangle[out.Written[i].Triangle];
+        }
+      }
       return true;
     }
     if (!this->FetchAndAdd(this->Missing, {}, error))

@@ -72,6 +72,12 @@ struct GlobalCurveTrace
   std::vector<double> Parameter;
   std::vector<char> OnCurve;
   double Length = 0.0;
+  /// Filled when the tracer keeps written forms (PieceCurveTracer::SetKeepWrittenForms): each
+  /// point's position and its form in output arrays (WrittenCurvePoint, a control point in its
+  /// own triangle), the triangle a global id. The whole surface's numbers bit for bit: every
+  /// point lies on triangles the trace read, whose neighbourhoods the piece holds whole.
+  std::vector<Vec3> Positions;
+  std::vector<SurfacePoint> Written;
 };
 
 /// `trace`, traced on `mesh`, on global ids: vertexGlobalId[v] and triangleGlobalId[t] for the
@@ -113,6 +119,9 @@ public:
   /// per short curve on a 20k-triangle sphere, against 4.5 with 2 and 8.7 with 1, for as many
   /// triangles).
   void SetMarginRings(int rings) { this->MarginRings = rings < 1 ? 1 : rings; }
+  /// Whether Trace() also fills GlobalCurveTrace::Positions and Written (for a writer of the
+  /// traced polylines, which holds no mesh).
+  void SetKeepWrittenForms(bool keep) { this->KeepWrittenForms = keep; }
 
   /// CurveTracer::Trace of control points on global triangle ids, on this piece, fetching
   /// what it needs: `out` is the whole surface's trace. Messages name the curve.
@@ -138,6 +147,7 @@ private:
   int Resolution = 4;
   double MeanEdgeLength = -1.0;
   int MarginRings = 3;
+  bool KeepWrittenForms = false;
   std::unique_ptr<CurveTracer> Tracer; // on Surface's mesh, rebuilt with it
   std::uint64_t TracedSerial = 0;
   std::vector<int> Reads, Missing, Absent;

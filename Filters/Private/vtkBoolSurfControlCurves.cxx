@@ -47,6 +47,20 @@ std::string AsGiven(double value)
 }
 
 // True when `value` is an integer in [0, INT_MAX]: a valid ShapeId or triangle id.
+/// CheckSurfacePoint without the triangle, for a surface split across ranks.
+bool CheckBarycentric(const SurfacePoint& p, std::string& problem)
+{
+  if (!std::isfinite(p.U) || !std::isfinite(p.V) || !IsInsideTriangle(p.U, p.V))
+  {
+    char text[128];
+    std::snprintf(text, sizeof(text), "barycentric coordinates (%.17g, %.17g)", p.U, p.V);
+    problem = std::string(text) + " in triangle " + std::to_string(p.Triangle) +
+      " are not finite or lie outside it (u, v >= 0 and u + v <= 1 are needed)";
+    return false;
+  }
+  return true;
+}
+
 bool IsIndex(double value)
 {
   return value >= 0 && value <= std::numeric_limits<int>::max() && value == std::floor(value);
@@ -209,6 +223,21 @@ void MarkDrawingStart(const std::vector<vtkPolyData*>& outputs)
 }
 
 //------------------------------------------------------------------------------
+bool NamesSurfacePoints(vtkPolyData* curves)
+{
+  if (!curves)
+  {
+    return false;
+  }
+  const TriangleMesh none; // positions are not read: the points are named exactly
+  vtkSmartPointer<vtkPolyData> traced = ControlCurvesOfTraced(curves, none);
+  vtkPolyData* read = traced ? traced.Get() : curves;
+  vtkDataArray* triangleIds = read->GetPointData()->GetArray(boolsurf::names::TriangleId);
+  vtkDataArray* barycentric = read->GetPointData()->GetArray(boolsurf::names::Barycentric);
+  return triangleIds && barycentric && barycentric->GetNumberOfComponents() == 2;
+}
+
+//------------------------------------------------------------------------------
 void ReadControlCurves(vtkPolyData* curves,
   const std::function<const ClosestTriangleGrid&()>& closestTriangles,
   const TriangleMesh& mesh,
@@ -356,7 +385,8 @@ void ReadControlCurves(vtkPolyData* curves,
           sp.U = barycentric->GetComponent(pid, 0);
           sp.V = barycentric->GetComponent(pid, 1);
           std::string why;
-          if (!CheckSurfacePoint(mesh, sp, why))
+          if (options.TrianglesOnPieces ? !CheckBarycentric(sp, why)
+                                        : !CheckSurfacePoint(mesh, sp, why))
           {
             problems.push_back(CurveLabel(curve.CurveId, pid) + ": " + why);
             ok = false;

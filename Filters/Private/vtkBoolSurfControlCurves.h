@@ -37,7 +37,16 @@ struct ControlCurveOptions
   /// Curves still being drawn (cell data Complete 0): read as far as they are valid (a
   /// Bezier curve up to its last complete segment, open) instead of left out.
   bool TraceValidPartOfIncompleteCurves = false;
+  /// The surface is split across ranks and `mesh` is empty (Trace Surface Curves on pieces):
+  /// control points must be given exactly (see NamesSurfacePoints); their triangles are
+  /// checked by the ranks owning them, here only their barycentric coordinates.
+  bool TrianglesOnPieces = false;
 };
+
+/// Whether the points of `curves` are given exactly as surface points (point data
+/// TriangleId/Barycentric, or the control points traced curves carry), so that reading them
+/// needs no closest-point search on the surface.
+bool NamesSurfacePoints(vtkPolyData* curves);
 
 /// The ShapeIds (sorted, distinct) of the curves of `curves` marked as being drawn (cell data
 /// Complete 0); empty when there are none.

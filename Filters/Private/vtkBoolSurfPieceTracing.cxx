@@ -343,6 +343,19 @@ void PackTrace(int curve, const GlobalCurveTrace& t, WireBuffer& out)
   }
   out.push_back(static_cast<long long>(t.OnCurve.size()));
   out.insert(out.end(), t.OnCurve.begin(), t.OnCurve.end());
+  out.push_back(static_cast<long long>(t.Written.size())); // 0 unless kept
+  for (std::size_t i = 0; i < t.Written.size(); ++i)
+  {
+    const boolsurf::Vec3& x = t.Positions[i];
+    const boolsurf::SurfacePoint& w = t.Written[i];
+    out.insert(out.end(),
+      { boolsurf::WireBitsOf(x.x),
+        boolsurf::WireBitsOf(x.y),
+        boolsurf::WireBitsOf(x.z),
+        w.Triangle,
+        boolsurf::WireBitsOf(w.U),
+        boolsurf::WireBitsOf(w.V) });
+  }
 }
 
 void UnpackTrace(Reader& in, GlobalCurveTrace& t)
@@ -381,6 +394,18 @@ void UnpackTrace(Reader& in, GlobalCurveTrace& t)
   {
     x = static_cast<char>(in.Int());
   }
+  const std::size_t written = static_cast<std::size_t>(std::max(0, in.Int()));
+  t.Positions.resize(written);
+  t.Written.resize(written);
+  for (std::size_t i = 0; i < written && !in.Bad; ++i)
+  {
+    t.Positions[i].x = in.Double();
+    t.Positions[i].y = in.Double();
+    t.Positions[i].z = in.Double();
+    t.Written[i].Triangle = in.Int();
+    t.Written[i].U = in.Double();
+    t.Written[i].V = in.Double();
+  }
 }
 
 void PackString(const std::string& s, WireBuffer& out)
@@ -411,6 +436,23 @@ void Broadcast(vtkMultiProcessController* controller, WireBuffer& buffer)
 } // namespace
 
 //------------------------------------------------------------------------------
+/// What a Run builds from the ringed piece, kept for the next Run (SetReusePiece).
+struct vtkBoolSurfPieceTracing::Held
+{
+  boolsurf::PieceMesh Piece;
+  /// Rank g % ranks learns the owner of triangle g: this rank's share of the surface's ids.
+  std::unordered_map<int, int> Directory;
+  std::unordered_map<int, int> OwnerOf; ///< the ring's ghosts and control points' triangles
+  double MeanEdgeLength = -1.0;
+  int RingedTriangles = 0;
+  std::unique_ptr<MessageFetcher> Fetcher;
+  std::unique_ptr<boolsurf::PieceCurveTracer> Tracer;
+};
+
+vtkBoolSurfPieceTracing::vtkBoolSurfPieceTracing() = default;
+vtkBoolSurfPieceTracing::~vtkBoolSurfPieceTracing() = default;
+
+//------------------------------------------------------------------------------
 bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
   const boolsurf::PieceInput& ringed,
   const std::vector<Curve>& curves,
@@ -420,29 +462,47 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
   const int rank = controller->GetLocalProcessId();
   const int ranks = controller->GetNumberOfProcesses();
   this->Bytes = Traffic();
+  this->Traces.clear();
+  this->Failures.clear();
   message0.clear();
-  boolsurf::PieceMesh piece;
-  std::string local;
-  int built = boolsurf::BuildPieceMesh(ringed, piece, local) ? 1 : 0, allBuilt = 0;
-  controller->AllReduce(&built, &allBuilt, 1, vtkCommunicator::MIN_OP);
-  if (!allBuilt)
+  const bool build = !(this->ReusePiece && this->Kept);
+  this->Bytes.ReusedPiece = !build;
+  if (build)
   {
-    error = built ? "tracing on pieces: a rank's piece is not a mesh"
-                  : "tracing on pieces: rank " + std::to_string(rank) + ": " + local;
-    return false;
-  }
-
-  // The directory: rank g % ranks learns the owner of triangle g.
-  std::vector<WireBuffer> owned(ranks);
-  for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
-  {
-    if (piece.Owned[t])
+    this->Kept.reset();
+    auto held = std::make_unique<Held>();
+    std::string local;
+    int built = boolsurf::BuildPieceMesh(ringed, held->Piece, local) ? 1 : 0, allBuilt = 0;
+    controller->AllReduce(&built, &allBuilt, 1, vtkCommunicator::MIN_OP);
+    if (!allBuilt)
     {
-      owned[piece.GlobalTriangle[t] % ranks].push_back(piece.GlobalTriangle[t]);
+      error = built ? "tracing on pieces: a rank's piece is not a mesh"
+                    : "tracing on pieces: rank " + std::to_string(rank) + ": " + local;
+      this->Failures.emplace_back(-1, error);
+      return false;
     }
+    held->RingedTriangles = held->Piece.Mesh.GetNumberOfTriangles();
+    this->Kept = std::move(held);
   }
-  std::unordered_map<int, int> directory;
+  Held& kept = *this->Kept;
+  const boolsurf::PieceMesh& piece = kept.Piece;
+  const auto label = [&curves](std::size_t c)
+  { return "curve " + std::to_string(curves[c].CurveId >= 0 ? curves[c].CurveId : int(c)); };
+
+  // The directory (rank g % ranks learns the owner of triangle g), built with the piece; then
+  // the owners of the ring's ghosts (with the piece) and of every curve's control point
+  // triangles (every Run).
+  std::unordered_map<int, int>& directory = kept.Directory;
+  if (build)
   {
+    std::vector<WireBuffer> owned(ranks);
+    for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
+    {
+      if (piece.Owned[t])
+      {
+        owned[piece.GlobalTriangle[t] % ranks].push_back(piece.GlobalTriangle[t]);
+      }
+    }
     const std::vector<WireBuffer> got = vtkBoolSurfSurfacePiece::ExchangeAll(
       controller, std::move(owned), &this->Bytes.DirectorySent, &this->Bytes.DirectoryReceived);
     for (int r = 0; r < ranks; ++r)
@@ -453,20 +513,25 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
       }
     }
   }
-  // Owners of the ring's ghosts and of every curve's control point triangles.
   std::vector<int> asked;
-  for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
+  if (build)
   {
-    if (!piece.Owned[t])
+    for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
     {
-      asked.push_back(piece.GlobalTriangle[t]);
+      if (!piece.Owned[t])
+      {
+        asked.push_back(piece.GlobalTriangle[t]);
+      }
     }
   }
   for (const Curve& c : curves)
   {
     for (const boolsurf::SurfacePoint& p : c.Points)
     {
-      asked.push_back(p.Triangle);
+      if (kept.OwnerOf.find(p.Triangle) == kept.OwnerOf.end())
+      {
+        asked.push_back(p.Triangle);
+      }
     }
   }
   std::sort(asked.begin(), asked.end());
@@ -492,7 +557,6 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
       }
     }
   }
-  std::unordered_map<int, int> ownerOf;
   {
     const std::vector<WireBuffer> got = vtkBoolSurfSurfacePiece::ExchangeAll(
       controller, std::move(replies), &this->Bytes.DirectorySent, &this->Bytes.DirectoryReceived);
@@ -500,77 +564,106 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
     {
       for (std::size_t i = 0; i < questions[r].size() && i < got[r].size(); ++i)
       {
-        ownerOf[static_cast<int>(questions[r][i])] = static_cast<int>(got[r][i]);
+        kept.OwnerOf[static_cast<int>(questions[r][i])] = static_cast<int>(got[r][i]);
       }
     }
   }
+  const auto ownerOf = [&kept](int g)
+  {
+    const auto it = kept.OwnerOf.find(g);
+    return it == kept.OwnerOf.end() ? -1 : it->second;
+  };
   // A control point on a triangle no rank owns fails its curve, on every rank alike (every
   // rank asked about every control point).
   for (std::size_t c = 0; c < curves.size(); ++c)
   {
+    if (curves[c].Points.empty())
+    {
+      this->Failures.emplace_back(static_cast<int>(c), label(c) + " has no control points");
+      continue;
+    }
     for (std::size_t i = 0; i < curves[c].Points.size(); ++i)
     {
       const int g = curves[c].Points[i].Triangle;
-      const auto it = ownerOf.find(g);
-      if (it == ownerOf.end() || it->second < 0)
+      if (ownerOf(g) < 0)
       {
-        error = "curve " + std::to_string(c) + ": control point " + std::to_string(i) +
-          " names triangle " + std::to_string(g) + ", which no rank holds";
-        return false;
+        this->Failures.emplace_back(static_cast<int>(c),
+          label(c) + ": control point " + std::to_string(i) + " names triangle " +
+            std::to_string(g) + ", which no rank holds");
+        break;
       }
     }
-    if (curves[c].Points.empty())
+  }
+  if (!this->Failures.empty())
+  {
+    if (!kept.Tracer)
     {
-      error = "curve " + std::to_string(c) + " has no control points";
-      return false;
+      this->Kept.reset(); // built this time but not finished: built again next time
     }
+    error = this->Failures.front().second;
+    return false;
   }
 
-  this->UsedMeanEdgeLength = this->MeanEdgeLength >= 0.0
-    ? this->MeanEdgeLength
-    : boolsurf::PieceMeanEdgeLength(controller, piece);
-  MessageFetcher fetcher(controller, piece, this->Bytes);
-  for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
+  if (build)
   {
-    const int g = piece.GlobalTriangle[t];
-    std::array<int, 3> corners;
-    for (int k = 0; k < 3; ++k)
+    kept.MeanEdgeLength = this->MeanEdgeLength >= 0.0
+      ? this->MeanEdgeLength
+      : boolsurf::PieceMeanEdgeLength(controller, piece);
+    kept.Fetcher = std::make_unique<MessageFetcher>(controller, piece, this->Bytes);
+    for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)
     {
-      corners[k] = piece.GlobalVertex[piece.Mesh.GetTriangle(t)[k]];
+      const int g = piece.GlobalTriangle[t];
+      std::array<int, 3> corners;
+      for (int k = 0; k < 3; ++k)
+      {
+        corners[k] = piece.GlobalVertex[piece.Mesh.GetTriangle(t)[k]];
+      }
+      kept.Fetcher->SetOwner(g, corners, piece.Owned[t] ? rank : ownerOf(g));
     }
-    fetcher.SetOwner(g, corners, piece.Owned[t] ? rank : ownerOf[g]);
+    kept.Tracer = std::make_unique<boolsurf::PieceCurveTracer>(ringed, *kept.Fetcher);
   }
+  else if (this->MeanEdgeLength >= 0.0)
+  {
+    kept.MeanEdgeLength = this->MeanEdgeLength;
+  }
+  this->UsedMeanEdgeLength = kept.MeanEdgeLength;
+  MessageFetcher& fetcher = *kept.Fetcher;
   for (const Curve& c : curves)
   {
     for (const boolsurf::SurfacePoint& p : c.Points)
     {
       if (fetcher.OwnerOf(p.Triangle) < 0)
       {
-        fetcher.SetOwner(p.Triangle, { -1, -1, -1 }, ownerOf[p.Triangle]);
+        fetcher.SetOwner(p.Triangle, { -1, -1, -1 }, ownerOf(p.Triangle));
       }
     }
   }
 
   // This rank's curves, then rounds with no request until no rank asks.
-  boolsurf::PieceCurveTracer tracer(ringed, fetcher);
+  boolsurf::PieceCurveTracer& tracer = *kept.Tracer;
   tracer.SetOptions(this->Options);
   tracer.SetResolution(this->Resolution);
-  tracer.SetMeanEdgeLength(this->UsedMeanEdgeLength);
+  tracer.SetMeanEdgeLength(kept.MeanEdgeLength);
   tracer.SetMarginRings(this->MarginRings);
-  const int ownTriangles = tracer.GetSurface().GetNumberOfTriangles();
+  tracer.SetKeepWrittenForms(this->KeepWrittenForms);
   WireBuffer results; // per curve: id, 1 and its trace, or 0 and its error
   for (std::size_t c = 0; c < curves.size(); ++c)
   {
-    if (ownerOf[curves[c].Points[0].Triangle] != rank)
+    if (ownerOf(curves[c].Points[0].Triangle) != rank)
     {
       continue;
     }
     ++this->Bytes.TracedCurves;
     GlobalCurveTrace trace;
     std::string failure;
-    if (tracer.Trace(
-          curves[c].Points, curves[c].Type, curves[c].Closed, trace, failure, static_cast<int>(c)))
+    const int id = curves[c].CurveId >= 0 ? curves[c].CurveId : static_cast<int>(c);
+    if (tracer.Trace(curves[c].Points, curves[c].Type, curves[c].Closed, trace, failure, id))
     {
+      if (curves[c].CurveId >= 0)
+      {
+        trace.ShapeId = curves[c].ShapeId;
+        trace.CurveId = curves[c].CurveId;
+      }
       results.push_back(1);
       PackTrace(static_cast<int>(c), trace, results);
     }
@@ -584,16 +677,15 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
   while (fetcher.Round(nullptr, none))
   {
   }
+  this->Bytes.RingedTriangles = kept.RingedTriangles;
   this->Bytes.HeldTriangles = tracer.GetSurface().GetNumberOfTriangles();
-  this->Bytes.FetchedTriangles = this->Bytes.HeldTriangles - ownTriangles;
+  this->Bytes.FetchedTriangles = this->Bytes.HeldTriangles - kept.RingedTriangles;
 
-  // The traces to rank 0, message 0 (or the lowest failing curve's message) back to all.
-  std::vector<WireBuffer> toRoot(ranks);
-  toRoot[0] = std::move(results);
+  // The traces to rank 0, message 0 (or every failing curve's message) back to all.
   std::vector<WireBuffer> atRoot(ranks);
   if (rank == 0)
   {
-    atRoot = std::move(toRoot);
+    atRoot[0] = std::move(results);
     for (int r = 1; r < ranks; ++r)
     {
       long long length = 0;
@@ -605,12 +697,12 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
   }
   else
   {
-    long long length = static_cast<long long>(toRoot[0].size());
+    long long length = static_cast<long long>(results.size());
     controller->Send(&length, 1, 0, 56021);
-    controller->Send(toRoot[0].data(), length, 0, 56022);
-    this->Bytes.TracesSent += (toRoot[0].size() + 1) * sizeof(long long);
+    controller->Send(results.data(), length, 0, 56022);
+    this->Bytes.TracesSent += (results.size() + 1) * sizeof(long long);
   }
-  WireBuffer answer; // 1 and message 0, or 0 and the error
+  WireBuffer answer; // 1 and message 0, or 0, the number of failures and each (curve, message)
   if (rank == 0)
   {
     std::map<int, GlobalCurveTrace> traces;
@@ -642,20 +734,24 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
     }
     if (failures.empty())
     {
-      std::vector<GlobalCurveTrace> ordered;
       for (auto& entry : traces)
       {
-        ordered.push_back(std::move(entry.second));
+        this->Traces.push_back(std::move(entry.second));
       }
       WireBuffer packed;
-      boolsurf::PackGlobalTraces(ordered, packed);
+      boolsurf::PackGlobalTraces(this->Traces, packed);
       answer.push_back(1);
       answer.insert(answer.end(), packed.begin(), packed.end());
     }
     else
     {
       answer.push_back(0);
-      PackString(failures.begin()->second, answer);
+      answer.push_back(static_cast<long long>(failures.size()));
+      for (const auto& entry : failures)
+      {
+        answer.push_back(entry.first);
+        PackString(entry.second, answer);
+      }
     }
   }
   Broadcast(controller, answer);
@@ -672,7 +768,18 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
   {
     Reader in{ answer };
     in.At = 1;
-    error = answer.empty() ? "no answer from rank 0" : UnpackString(in);
+    const int n = answer.empty() ? 0 : in.Int();
+    for (int i = 0; i < n && !in.Bad; ++i)
+    {
+      const int c = in.Int();
+      this->Failures.emplace_back(c, UnpackString(in));
+    }
+    if (this->Failures.empty())
+    {
+      this->Failures.emplace_back(-1, "no answer from rank 0");
+    }
+    this->Traces.clear();
+    error = this->Failures.front().second;
     return false;
   }
   message0.assign(answer.begin() + 1, answer.end());

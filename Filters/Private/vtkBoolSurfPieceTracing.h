@@ -18,7 +18,10 @@
  * Rounds are bulk-synchronous: a rank whose tracer needs triangles starts a round, a rank done
  * with its curves joins rounds with no request, and every round begins with an all-reduce
  * saying whether any rank still asks, so all ranks leave together. Run() is collective and
- * fails on every rank with the same message (the lowest failing curve, named) when one fails.
+ * fails on every rank with the same message (the lowest failing curve, named) when one fails;
+ * GetFailures() lists every failing curve, the same on every rank. Trace Surface Curves on
+ * pieces (vtkBoolSurfPieceTraceStage.h) keeps one between updates: SetReusePiece keeps the
+ * piece, the directory and the tracer with what it fetched while the surface is unchanged.
  */
 #ifndef vtkBoolSurfPieceTracing_h
 #define vtkBoolSurfPieceTracing_h
@@ -31,7 +34,9 @@
 #include "Mesh/SurfacePoint.h"
 
 #include <cstddef>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkMultiProcessController;
@@ -45,6 +50,10 @@ public:
     std::vector<boolsurf::SurfacePoint> Points;
     boolsurf::CurveType Type = boolsurf::CurveType::GeodesicPolygon;
     bool Closed = true;
+    /// The trace's ShapeId and CurveId (messages name the curve by it); CurveId -1: the
+    /// curve's index in the list, ShapeId then as the tracer leaves it.
+    int ShapeId = 0;
+    int CurveId = -1;
   };
 
   /// What this rank sent and received (bytes, lengths included) and did.
@@ -58,6 +67,8 @@ public:
     int TracedCurves = 0;     ///< curves this rank traced
     int FetchedTriangles = 0; ///< triangles its tracer holds beyond its ringed piece
     int HeldTriangles = 0;    ///< everything its tracer holds at the end
+    int RingedTriangles = 0;  ///< its owned triangles and ring
+    bool ReusedPiece = false; ///< the piece, directory and tracer of the last Run were kept
   };
 
   void SetOptions(const boolsurf::GeodesicPathOptions& options) { this->Options = options; }
@@ -68,6 +79,14 @@ public:
   /// The mean edge length the last Run used.
   double GetMeanEdgeLength() const { return this->UsedMeanEdgeLength; }
   void SetMarginRings(int rings) { this->MarginRings = rings; }
+  /// Whether the traces rank 0 gets (GetTraces) carry each point's position and written form
+  /// (GlobalCurveTrace::Positions, Written), for writing the polylines there.
+  void SetKeepWrittenForms(bool keep) { this->KeepWrittenForms = keep; }
+  /// Whether the next Run keeps the last Run's piece mesh, owner directory, ring owners, mean
+  /// edge length and tracer (with the triangles it fetched) instead of building them from
+  /// `ringed` again: for an edit of the curves on an unchanged surface. The same on every rank
+  /// (the caller decides it collectively); ignored when no Run built them yet.
+  void SetReusePiece(bool reuse) { this->ReusePiece = reuse; }
 
   /// Collective. `ringed`: this rank's owned triangles and ring of ghosts (BuildRingedPiece);
   /// `curves`: the same list on every rank, curve c traced with curve id c. On success
@@ -80,14 +99,30 @@ public:
     std::string& error);
 
   const Traffic& GetTraffic() const { return this->Bytes; }
+  /// After a Run, on rank 0: every curve's trace, in the order of the list (empty on a
+  /// failure and on the other ranks).
+  const std::vector<boolsurf::GlobalCurveTrace>& GetTraces() const { return this->Traces; }
+  /// After a failed Run, on every rank: every failing curve's index and message, in curve
+  /// order (index -1: a failure of no one curve); Run's `error` is the first one's message.
+  const std::vector<std::pair<int, std::string>>& GetFailures() const { return this->Failures; }
+
+  vtkBoolSurfPieceTracing();
+  ~vtkBoolSurfPieceTracing();
 
 private:
+  struct Held;
   boolsurf::GeodesicPathOptions Options;
   int Resolution = 4;
   double MeanEdgeLength = -1.0;
   double UsedMeanEdgeLength = -1.0;
   int MarginRings = 3;
+  bool KeepWrittenForms = false;
+  bool ReusePiece = false;
   Traffic Bytes;
+  std::vector<boolsurf::GlobalCurveTrace> Traces;
+  std::vector<std::pair<int, std::string>> Failures;
+  /// What SetReusePiece keeps between Runs.
+  std::unique_ptr<Held> Kept;
 };
 
 #endif

@@ -27,10 +27,8 @@
 
 namespace boolsurf
 {
-namespace
-{
-
-void WriteTraces(const TriangleMesh& mesh,
+//------------------------------------------------------------------------------
+void WriteTracedCurves(const TriangleMesh* mesh,
   const std::vector<InputControlCurve>& controls,
   const std::vector<CurveTrace>& traces,
   vtkPolyData* output)
@@ -80,15 +78,16 @@ void WriteTraces(const TriangleMesh& mesh,
     // a curve that an edit did not move is written by copying.
     const int k = trace.ControlPoint[i];
     const bool isControl = k >= 0 && k < static_cast<int>(control.Points.size());
+    // Without a mesh (tracing on pieces) every form is known, a control point's included.
     const bool known = trace.Written.size() == n && trace.Positions.size() == n;
-    const Vec3 x = known ? trace.Positions[i] : PositionOf(mesh, trace.Curve.Points[i]);
+    const Vec3 x = known ? trace.Positions[i] : PositionOf(*mesh, trace.Curve.Points[i]);
     double* xyz = coordinates->GetPointer(3 * id);
     xyz[0] = x.x;
     xyz[1] = x.y;
     xyz[2] = x.z;
-    const SurfacePoint sp = known && !isControl
+    const SurfacePoint sp = known && (!isControl || !mesh)
       ? trace.Written[i]
-      : WrittenCurvePoint(mesh, trace.Curve, i, isControl ? control.Points[k].Triangle : -1);
+      : WrittenCurvePoint(*mesh, trace.Curve, i, isControl ? control.Points[k].Triangle : -1);
     triangleId->SetValue(id, sp.Triangle);
     barycentric->SetValue(2 * id, sp.U);
     barycentric->SetValue(2 * id + 1, sp.V);
@@ -204,8 +203,6 @@ void WriteTraces(const TriangleMesh& mesh,
     cd->AddArray(complete);
   }
 }
-
-} // namespace
 
 //------------------------------------------------------------------------------
 std::string DescribeCurvePoint(const std::vector<TracedCurve>& curves,
@@ -366,7 +363,7 @@ bool TraceInputCurves(vtkSurfaceCache& cache,
   // Written first, so that the curves and their parameters can then be moved out, not copied.
   if (output)
   {
-    WriteTraces(mesh, controls, traces, output);
+    WriteTracedCurves(&mesh, controls, traces, output);
   }
   if (sources)
   {

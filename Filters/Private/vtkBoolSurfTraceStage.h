@@ -48,6 +48,15 @@ bool TraceInputCurves(vtkSurfaceCache& cache,
   std::vector<std::string>& problems,
   std::vector<CurveSource>* sources = nullptr);
 
+/// The traced polylines of `traces`, traced from `controls`, written into `output` as Trace
+/// Surface Curves writes them. `mesh` null (tracing on pieces, where no rank holds the
+/// surface): every trace carries its written forms (CurveTrace::Positions and Written, a
+/// control point's in its own triangle) and only their count is read of Curve.Points.
+void WriteTracedCurves(const TriangleMesh* mesh,
+  const std::vector<InputControlCurve>& controls,
+  const std::vector<CurveTrace>& traces,
+  vtkPolyData* output);
+
 /// ReadControlCurves on the cached surface: control points projected with its locator, no
 /// farther than options.ProjectionTolerance times its bounding-box diagonal.
 void ReadSurfaceControlCurves(vtkSurfaceCache& cache,

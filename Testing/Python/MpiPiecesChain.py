@@ -24,6 +24,7 @@ from boolsurf_example_utils import (SurfaceRays, curves_source, load_plugin,  # 
                                     ranks, sample_source, surface_circle)
 from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager as sm  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -95,10 +96,76 @@ def field(data, name):
 
 
 traced = TraceSurfaceCurves(Surface=surface, Curves=control)
+# The gathered path's message 0 (the same curves on the surface held by rank 0 alone), which
+# the pieces' must equal byte for byte.
+whole = ExtractSurface(Input=GenerateGlobalIds(Input=mesh))
+reference = TraceSurfaceCurves(Surface=whole, Curves=control)
+
+# Per rank, one point: what Trace Surface Curves' output on that rank carries (its message 0's
+# digest, the reference's on the rank holding it, its traffic), so the fetched union says it.
+PER_RANK = """
+import zlib
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+from vtkmodules.util.numpy_support import vtk_to_numpy
+rank = vtkMultiProcessController.GetGlobalController().GetLocalProcessId()
+def digest(data):
+    a = data.GetFieldData().GetAbstractArray("PieceCurvesMessage") if data else None
+    return float(zlib.crc32(vtk_to_numpy(a).tobytes())) if a else -1.0
+pieces = self.GetInputDataObject(0, 0)
+gathered = self.GetInputDataObject(0, 1)
+traffic = pieces.GetFieldData().GetArray("PieceTracingTraffic")
+values = {"Rank": rank, "Message": digest(pieces), "Reference": digest(gathered),
+          "Lines": pieces.GetNumberOfLines()}
+for k in range(traffic.GetNumberOfComponents() if traffic else 0):
+    values[traffic.GetComponentName(k)] = traffic.GetComponent(0, k)
+out = self.GetOutput()
+points = vtkPoints()
+points.InsertNextPoint(0, 0, 0)
+out.SetPoints(points)
+for name, value in values.items():
+    array = vtkDoubleArray()
+    array.SetName(name)
+    array.InsertNextValue(value)
+    out.GetPointData().AddArray(array)
+"""
+
+
+def per_rank(pieces, gathered):
+    data = sm.Fetch(ProgrammableFilter(Input=[pieces, gathered], Script=PER_RANK,
+                                       OutputDataSetType="vtkPolyData"))
+    pd = data.GetPointData()
+    rows = {}
+    for i in range(data.GetNumberOfPoints()):
+        rows[str(int(pd.GetArray("Rank").GetValue(i)))] = {
+            pd.GetArrayName(k): pd.GetArray(k).GetValue(i) for k in range(pd.GetNumberOfArrays())}
+    return rows
+
+
+def polylines(data):
+    """Every point's coordinates and arrays, every cell's points and arrays, exactly."""
+    out = {"points": [list(data.GetPoint(i)) for i in range(data.GetNumberOfPoints())],
+           "cells": []}
+    for attributes, key in ((data.GetPointData(), "point"), (data.GetCellData(), "cell")):
+        for k in range(attributes.GetNumberOfArrays()):
+            a = attributes.GetArray(k)
+            if a is not None and a.GetName() != "vtkOriginalIndices":
+                out[key + ":" + a.GetName()] = [
+                    a.GetComponent(i, c) for i in range(a.GetNumberOfTuples())
+                    for c in range(a.GetNumberOfComponents())]
+    ids = vtkIdList()
+    for c in range(data.GetNumberOfCells()):
+        data.GetCellPoints(c, ids)
+        out["cells"].append([ids.GetId(i) for i in range(ids.GetNumberOfIds())])
+    return out
+
+
 arrangement = SurfaceArrangement(Surface=surface, Curves=traced)
 labels = LabelArrangementCells(Input=arrangement, PerTriangleLabels=1)
 boolean = SurfaceBoolean(Input=labels, Operation="Union", ShapeA=0, ShapeB=2)
-results = {"ranks": ranks()}
+results = {"ranks": ranks(), "surface_triangles": sm.Fetch(mesh).GetNumberOfCells(),
+           "traced": polylines(sm.Fetch(traced)), "tracing": per_rank(traced, reference)}
 for name, proxy, arrays in (("arrangement", arrangement, ["ArrangementCell"]),
                             ("labels", labels, ["ArrangementCell", "Labels"]),
                             ("boolean", boolean, ["ArrangementCell", "Region"])):
@@ -115,6 +182,55 @@ samples = sample_source([(circles[0][0][18], tuple(m - x for m, x in zip(middle,
                                                                             circles[0][0][18])))])
 bsc = BoundarySampledCurves(Input=labels, Samples=samples)
 results["bsc"] = {"triangles": sm.Fetch(bsc).GetNumberOfCells()}
+
+# The LocallyShortest method does not trace on pieces: gathered (a warning says why), with the
+# one-rank polylines and a message 0 on rank 0 for Surface Arrangement on pieces.
+shortest = TraceSurfaceCurves(Surface=surface, Curves=control, GeodesicMethod="Locally shortest")
+shortest_reference = TraceSurfaceCurves(Surface=whole, Curves=control,
+                                        GeodesicMethod="Locally shortest")
+results["shortest"] = {"traced": polylines(sm.Fetch(shortest)),
+                       "tracing": per_rank(shortest, shortest_reference)}
+
+# An edit of the curves only (the first circle moved): the ringed piece and the directory are
+# kept, and the message still equals the gathered path's.
+moved = list(control.Points)
+moved[0:3] = [x + 0.002 for x in moved[0:3]]
+control.Points = moved
+boolean.UpdatePipeline()
+results["edited"] = {"tracing": per_rank(traced, reference),
+                     "boolean": per_source(fetched(boolean), ["ArrangementCell", "Region"])}
+
+# A curve naming a triangle no rank holds: an error naming the curve on every rank, no rank
+# left waiting.
+BAD = """
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdTypeArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+out = self.GetOutput()
+if vtkMultiProcessController.GetGlobalController().GetLocalProcessId() == 0:
+    points = vtkPoints()
+    triangles = vtkIdTypeArray()
+    triangles.SetName("TriangleId")
+    uv = vtkDoubleArray()
+    uv.SetName("Barycentric")
+    uv.SetNumberOfComponents(2)
+    lines = vtkCellArray()
+    lines.InsertNextCell(3)
+    for i, t in enumerate((3, 40, 1000000)):
+        points.InsertNextPoint(0, 0, 0)
+        triangles.InsertNextValue(t)
+        uv.InsertNextTuple2(0.25, 0.25)
+        lines.InsertCellPoint(i)
+    out.SetPoints(points)
+    out.SetLines(lines)
+    out.GetPointData().AddArray(triangles)
+    out.GetPointData().AddArray(uv)
+"""
+bad_curves = ProgrammableSource(Script=BAD, OutputDataSetType="vtkPolyData")
+bad = TraceSurfaceCurves(Surface=surface, Curves=bad_curves)
+bad.UpdatePipeline()
+errors = sm.Fetch(bad).GetFieldData().GetAbstractArray("TraceErrors")
+results["bad"] = [errors.GetValue(i) for i in range(errors.GetNumberOfValues())] if errors else []
 with open(args.json, "w") as f:
     json.dump(results, f, indent=1, sort_keys=True)
 print("done", ranks())
