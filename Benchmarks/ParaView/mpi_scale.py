@@ -200,6 +200,13 @@ def distributed_part(update, ranks):
 
 
 def surface_bytes(result):
+    """The surface's own size: its positions as 3 floats and its triangles as 3 32-bit ids (what
+    a PLY file holds), the smallest it can travel in; the pieces in memory (with GlobalIds,
+    double positions) are 2 to 3 times that."""
+    return sum(12 * (r["piece"]["points"] + r["piece"]["triangles"]) for r in result["records"])
+
+
+def memory_bytes(result):
     return sum(r["piece"]["bytes"] for r in result["records"])
 
 
@@ -236,11 +243,12 @@ def summarize_run(result):
 
 def print_run(result):
     rows = summarize_run(result)
-    print("%d rank(s), %s, %s; %d triangles (%.1f MB in memory); %d cores, load %s" % (
-        result["ranks"], os.path.basename(result["surface"]),
-        os.path.basename(result["scene"]), surface_triangles(result),
-        surface_bytes(result) / 1e6, result["cores"],
-        " ".join("%.2f" % x for x in result["load"])))
+    print("%d rank(s), %s, %s; %d triangles (%.1f MB as floats and ids, %.1f MB in memory); "
+          "%d cores, load %s" % (
+              result["ranks"], os.path.basename(result["surface"]),
+              os.path.basename(result["scene"]), surface_triangles(result),
+              surface_bytes(result) / 1e6, memory_bytes(result) / 1e6, result["cores"],
+              " ".join("%.2f" % x for x in result["load"])))
     print("rank triangles | idle MB  peak MB  above idle | first update wall ms: curves trace "
           "arrangement labels boolean | R+F+output ms first/edit | bytes sent/received: first "
           "update (+ surface gathers, estimated) / per edit")
