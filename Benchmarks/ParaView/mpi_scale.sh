@@ -26,14 +26,19 @@ SMALL_SCENES=${SMALL_SCENES-"ten"}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mkdir -p "$WORK"
 
-# prepare NAME MESH SUBDIVISIONS RANKS...: the whole surface with its scenes, then its pieces.
+# prepare NAME MESH SUBDIVISIONS "SCENES" RANKS...: the whole surface with its scenes (placing
+# the 112 shapes on 4.3M triangles takes tens of minutes in Python), then its pieces.
 prepare() {
-  name=$1 mesh=$2 subdivide=$3
-  shift 3
-  if [ ! -f "$WORK/$name.vtp" ] || [ ! -f "$WORK/$name-ten.json" ] ||
-    [ ! -f "$WORK/$name-paper.json" ]; then
+  name=$1 mesh=$2 subdivide=$3 scenes=$4
+  shift 4
+  missing=""
+  [ -f "$WORK/$name.vtp" ] || missing=yes
+  for scene in $scenes; do [ -f "$WORK/$name-$scene.json" ] || missing=yes; done
+  if [ -n "$missing" ]; then
+    args=""
+    for scene in $scenes; do args="$args --scene $scene"; done
     pvpython "$HERE/mpi_scale_prepare.py" --mesh "$MESHES/$mesh" --subdivide "$subdivide" \
-      --out "$WORK/$name" --whole --scene ten --scene paper
+      --out "$WORK/$name" --whole $args
   fi
   for ranks in "$@"; do
     if [ "$ranks" -gt 1 ] && [ ! -f "$WORK/$name-$ranks.pvtp" ]; then
@@ -57,13 +62,13 @@ measure() {
 
 RUNS=""
 if [ -n "$LARGE_RANKS" ]; then
-  prepare igea_4m igea_1m.ply 1 $LARGE_RANKS
+  prepare igea_4m igea_1m.ply 1 "$LARGE_SCENES" $LARGE_RANKS
   for scene in $LARGE_SCENES; do
     for ranks in $LARGE_RANKS; do measure igea_4m "$scene" "$ranks"; done
   done
 fi
 if [ -n "$SMALL_RANKS" ]; then
-  prepare eight_200k eight_200k.ply 0 $SMALL_RANKS
+  prepare eight_200k eight_200k.ply 0 "$SMALL_SCENES" $SMALL_RANKS
   for scene in $SMALL_SCENES; do
     for ranks in $SMALL_RANKS; do measure eight_200k "$scene" "$ranks"; done
   done
