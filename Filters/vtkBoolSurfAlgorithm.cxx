@@ -7,7 +7,6 @@
 #include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfOutputReuse.h"
-#include "vtkBoolSurfPieceCosts.h"
 #include "vtkBoolSurfRankGather.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfSurfaceCache.h"
@@ -343,7 +342,6 @@ int vtkBoolSurfAlgorithm::RunOnPiece(const std::vector<vtkPolyData*>& locals,
     boolsurf::EmptyPolyData(outputs[p]);
   }
   std::string error;
-  boolsurf::PieceStopwatch watch;
   if (!this->ExecutePiece(locals, outputs, error))
   {
     for (vtkPolyData* output : outputs)
@@ -356,22 +354,6 @@ int vtkBoolSurfAlgorithm::RunOnPiece(const std::vector<vtkPolyData*>& locals,
       vtkErrorMacro(<< error);
     }
     return vtkBoolSurfErrorReported;
-  }
-  // The rank's wall time and traffic (the decision to run on pieces: two all-reduces of one
-  // number), unless the filter wrote its own per step (Surface Arrangement); arrays passed on
-  // from the input (the labeling's output is its input's shallow copy) are the input's.
-  vtkAbstractArray* written = outputs.empty()
-    ? nullptr
-    : outputs[0]->GetFieldData()->GetAbstractArray(boolsurf::names::StageTimes);
-  vtkAbstractArray* passed = !locals.empty() && locals[0]
-    ? locals[0]->GetFieldData()->GetAbstractArray(boolsurf::names::StageTimes)
-    : nullptr;
-  if (!outputs.empty() && (!written || written == passed))
-  {
-    boolsurf::PieceCosts costs;
-    costs.AddTime("Total", watch.Lap());
-    costs.AddBytes("Decision", 2 * sizeof(int), 2 * sizeof(int));
-    boolsurf::WritePieceCosts(costs, outputs[0]);
   }
   return 1;
 }

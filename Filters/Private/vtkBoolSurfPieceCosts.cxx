@@ -46,4 +46,13 @@ void WritePieceCosts(const PieceCosts& costs, vtkPolyData* output)
   }
 }
 
+//------------------------------------------------------------------------------
+void WriteLocalStageCosts(double milliseconds, vtkPolyData* output)
+{
+  PieceCosts costs;
+  costs.AddTime("Total", milliseconds);
+  costs.AddBytes("Decision", 2 * sizeof(int), 2 * sizeof(int));
+  WritePieceCosts(costs, output);
+}
+
 }

@@ -77,6 +77,12 @@ inline std::size_t WireBytes(std::size_t values)
 /// `output`'s field data, replacing arrays of those names.
 void WritePieceCosts(const PieceCosts& costs, vtkPolyData* output);
 
+/// The costs of a stage that sends nothing of its own on pieces (Label Arrangement Cells,
+/// Surface Boolean): its wall time as Total, and its decision to run on pieces (two all-reduces
+/// of one number, vtkBoolSurfAlgorithm) as the message Decision. Replaces the arrays its input
+/// passed on.
+void WriteLocalStageCosts(double milliseconds, vtkPolyData* output);
+
 }
 
 #endif
