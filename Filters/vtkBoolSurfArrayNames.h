@@ -125,6 +125,10 @@ constexpr const char* PieceTracingTraffic = "PieceTracingTraffic";
 /// Surface Arrangement's output on each rank's piece (field data, int: the number of
 /// ranks): the output is one rank's part of the refined surface, not the whole.
 constexpr const char* ArrangementOnPieces = "ArrangementOnPieces";
+/// The stages run on pieces (field data, double, one tuple): the bytes this rank sent and
+/// received in this update, two components per message named <message>Sent and
+/// <message>Received (vtkBoolSurfPieceCosts.h); StageTimes holds the rank's wall times.
+constexpr const char* PieceBytes = "PieceBytes";
 /// Surface Curves (point data of the traced curves): the surface's normal at each point.
 constexpr const char* SurfaceNormal = "SurfaceNormal";
 

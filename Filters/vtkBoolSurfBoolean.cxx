@@ -5,6 +5,7 @@
 #include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
+#include "vtkBoolSurfPieceCosts.h"
 #include "vtkBoolSurfPieceLabels.h"
 #include "vtkBoolSurfSelectionOutput.h"
 #include "vtkBoolSurfStageHandoff.h"
@@ -98,11 +99,13 @@ bool vtkBoolSurfBoolean::ExecutePiece(const std::vector<vtkPolyData*>& locals,
   {
     return true; // a drawing being started (on every rank: the arrangement marked each piece)
   }
+  boolsurf::PieceStopwatch watch; // this rank's time, written with the output (mpi_scale.py)
   std::string text;
   if (!boolsurf::WritePieceRegion(locals[0], *this->BooleanSettings, outputs[0], text, error))
   {
     return false;
   }
+  boolsurf::WriteLocalStageCosts(watch.Lap(), outputs[0]);
   // The region's boundary and the vector outputs need boundary loops stitched across ranks:
   // empty, marked as coming from pieces so that the filters that gather refuse them.
   for (std::size_t p = 1; p < outputs.size(); ++p)

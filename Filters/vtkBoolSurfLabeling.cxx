@@ -6,6 +6,7 @@
 
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
+#include "vtkBoolSurfPieceCosts.h"
 #include "vtkBoolSurfPieceLabels.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfStageSettingsDefinitions.h"
@@ -128,6 +129,7 @@ bool vtkBoolSurfLabeling::ExecutePiece(const std::vector<vtkPolyData*>& locals,
   {
     return true; // a drawing being started (on every rank: the arrangement marked each piece)
   }
+  boolsurf::PieceStopwatch watch; // this rank's time, written with the output (mpi_scale.py)
   boolsurf::LabelingOutputOptions options;
   options.ZeroCell = *this->ZeroCellSettings;
   options.ColorShape = this->ColorShape;
@@ -140,6 +142,7 @@ bool vtkBoolSurfLabeling::ExecutePiece(const std::vector<vtkPolyData*>& locals,
   }
   boolsurf::AttachStageResult<boolsurf::PieceLabeledResult>(
     outputs[0]->GetFieldData()->GetArray(boolsurf::names::CellLabels), std::move(result));
+  boolsurf::WriteLocalStageCosts(watch.Lap(), outputs[0]);
   // The labels are the same on every rank: one rank says what they mean.
   if (vtkMultiProcessController::GetGlobalController()->GetLocalProcessId() == 0)
   {

@@ -1,5 +1,6 @@
 #include "vtkBoolSurfPieceArrangement.h"
 
+#include "vtkBoolSurfPieceCosts.h"
 #include "vtkBoolSurfSurfacePiece.h"
 
 #include "Distributed/BoundaryJoins.h"
@@ -72,9 +73,12 @@ bool vtkBoolSurfPieceArrangement::Run(vtkMultiProcessController* controller,
   const int rank = controller->GetLocalProcessId();
   const int ranks = controller->GetNumberOfProcesses();
   this->Bytes = Traffic();
+  this->Times = StepTimes();
   this->Merged = boolsurf::MergedArrangement();
+  boolsurf::PieceStopwatch watch;
   boolsurf::PieceSummary summary;
   bool ok = boolsurf::ArrangePiece(piece, curves, options, this->Local, summary, error);
+  this->Times.Arrange = watch.Lap();
   if (!AllSucceeded(controller, ok, error))
   {
     return false;
@@ -98,7 +102,9 @@ bool vtkBoolSurfPieceArrangement::Run(vtkMultiProcessController* controller,
   }
   boolsurf::BoundaryJoins joins;
   ok = ok && boolsurf::JoinPieceBoundaries(ids, given, rank, joins, error);
-  if (!AllSucceeded(controller, ok, error))
+  const bool joined = AllSucceeded(controller, ok, error);
+  this->Times.Boundary = watch.Lap();
+  if (!joined)
   {
     return false;
   }
@@ -160,5 +166,7 @@ bool vtkBoolSurfPieceArrangement::Run(vtkMultiProcessController* controller,
     ok = false;
     error = "the merged cells do not match the piece's local cells";
   }
-  return AllSucceeded(controller, ok, error);
+  ok = AllSucceeded(controller, ok, error);
+  this->Times.Merge = watch.Lap();
+  return ok;
 }

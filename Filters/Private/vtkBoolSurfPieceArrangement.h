@@ -42,6 +42,13 @@ public:
     std::size_t MergeSent = 0, MergeReceived = 0;       ///< cells, crossings, joins to rank 0
     std::size_t BackSent = 0, BackReceived = 0;         ///< merged cells from rank 0
   };
+  /// This rank's wall time per step, in milliseconds: its piece's arrangement (Core's stage
+  /// times are the arrangement's own, GetArrangement().Times), the boundary records with the
+  /// neighbours and their joins, the merge on rank 0 with the cells back.
+  struct StepTimes
+  {
+    double Arrange = 0, Boundary = 0, Merge = 0;
+  };
 
   /// Collective. `neighbours`: the ranks owning this piece's ghost triangles (symmetric: the
   /// ranks sharing points with it), ascending. False on every rank, with `error` naming the
@@ -67,11 +74,13 @@ public:
   /// Global cell of local cell c (-1 for a cell of ghost triangles only).
   int GetGlobalCell(int c) const { return this->Merged.GlobalCellOfLocal[0][c]; }
   const Traffic& GetTraffic() const { return this->Bytes; }
+  const StepTimes& GetTimes() const { return this->Times; }
 
 private:
   boolsurf::Arrangement Local;
   boolsurf::MergedArrangement Merged;
   Traffic Bytes;
+  StepTimes Times;
 };
 
 #endif

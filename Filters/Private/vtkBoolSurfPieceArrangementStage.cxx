@@ -4,6 +4,7 @@
 #include "vtkBoolSurfControlCurves.h"
 #include "vtkBoolSurfCurvesMessage.h"
 #include "vtkBoolSurfPieceArrangementOutput.h"
+#include "vtkBoolSurfPieceCosts.h"
 #include "vtkBoolSurfRingedPiece.h"
 #include "vtkBoolSurfSurfacePiece.h"
 
@@ -30,7 +31,7 @@ const char* const ArraysNotOnPieces =
   "CellGraphDirection), the patches (PatchOffsets, PatchPoints, PatchLeftCell, PatchRightCell, "
   "PatchShape, PatchCurve, PatchClosed, PatchControl*), CellComponent, ZeroCellCandidates, "
   "NumberOfBoundaryPlugs, BoundaryPlugLinks, the rebuild fields (Arranged*), CurveHomology and "
-  "the homology generators, StageTimes, the surface's own point and cell arrays, and port 1 "
+  "the homology generators, the surface's own point and cell arrays, and port 1 "
   "(the patches as polylines, empty)";
 
 namespace
@@ -86,6 +87,32 @@ std::vector<vtkIdType> SurfaceCells(vtkPolyData* local, const PieceMesh& piece)
   return cells;
 }
 
+/// Bytes a rank gets of its ring from vtkGhostCellsGenerator, estimated from what it got (the
+/// generator's own traffic is not visible): per ghost triangle its three point ids, its global
+/// id and its offset, per ghost point its position and global id.
+std::size_t RingBytesReceived(const PieceInput& ringed)
+{
+  std::size_t triangles = 0;
+  for (char ghost : ringed.Ghost)
+  {
+    triangles += ghost ? 1 : 0;
+  }
+  std::vector<char> owned(ringed.Positions.size(), 0);
+  for (std::size_t t = 0; t < ringed.Triangles.size(); ++t)
+  {
+    for (int k = 0; !ringed.Ghost[t] && k < 3; ++k)
+    {
+      owned[static_cast<std::size_t>(ringed.Triangles[t][k])] = 1;
+    }
+  }
+  std::size_t points = 0;
+  for (char o : owned)
+  {
+    points += o ? 0 : 1;
+  }
+  return triangles * 5 * sizeof(long long) + points * (3 * sizeof(double) + sizeof(long long));
+}
+
 vtkSmartPointer<vtkIntArray> IntField(const char* name, const std::vector<int>& values)
 {
   auto array = vtkSmartPointer<vtkIntArray>::New();
@@ -110,9 +137,20 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
   std::vector<std::string>& warnings)
 {
   drawingStart = false;
+  PieceStopwatch watch, total;
+  PieceCosts costs;
   WireBuffer message;
   long long status = 0;
   BroadcastCurves(controller, curves, message, status);
+  costs.AddTime("Curves", watch.Lap());
+  {
+    // The root counted as sending the buffer to every other rank.
+    const int ranks = controller->GetNumberOfProcesses();
+    const std::size_t bytes = status > 0 ? WireBytes(message.size()) : sizeof(long long);
+    const bool root = controller->GetLocalProcessId() == 0;
+    costs.AddBytes(
+      "Curves", root ? bytes * static_cast<std::size_t>(ranks - 1) : 0, root ? 0 : bytes);
+  }
   if (status == DrawingStart)
   {
     drawingStart = true;
@@ -133,6 +171,8 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
   {
     return false;
   }
+  costs.AddTime("Piece", watch.Lap());
+  costs.AddBytes("Border", owned.GetBuildBytesSent(), owned.GetBuildBytesReceived());
   std::vector<int> neighbours;
   for (const vtkBoolSurfSurfacePiece::Neighbour& n : owned.GetNeighbours())
   {
@@ -151,13 +191,17 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
   {
     return false;
   }
+  costs.AddTime("Ring", watch.Lap());
+  costs.AddBytes("RingEstimate", 0, RingBytesReceived(ringed));
   PieceCurves restricted;
   RestrictCurvesToPiece(
     result->Piece, global, [&](int e) { return edgeTable[e]; }, restricted);
+  costs.AddTime("Restrict", watch.Lap());
   if (!result->Run.Run(controller, result->Piece, restricted, neighbours, options, error))
   {
     return false;
   }
+  watch.Lap();
 
   // Port 0: the owned triangles refined, with what every rank knows of the whole.
   WritePieceArrangement(result->Piece, result->Run, output);
@@ -169,6 +213,25 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
     IntField(names::ArrangementOnPieces, { controller->GetNumberOfProcesses() }));
   result->Surface = local;
   result->SurfaceCell = SurfaceCells(local, result->Piece);
+
+  // This rank's costs: the local arrangement's own stages, then the exchanges.
+  const ArrangementStageTimes& t = result->Run.GetArrangement().Times;
+  const vtkBoolSurfPieceArrangement::StepTimes& steps = result->Run.GetTimes();
+  const vtkBoolSurfPieceArrangement::Traffic& traffic = result->Run.GetTraffic();
+  costs.AddTime("Arrange", steps.Arrange);
+  costs.AddTime("Hash", t.Hash);
+  costs.AddTime("Intersections", t.Intersections);
+  costs.AddTime("Refinement", t.Refinement);
+  costs.AddTime("FloodFill", t.FloodFill);
+  costs.AddTime("CellGraph", t.CellGraph);
+  costs.AddTime("Boundary", steps.Boundary);
+  costs.AddTime("Merge", steps.Merge);
+  costs.AddTime("Output", watch.Lap());
+  costs.AddTime("Total", total.Lap());
+  costs.AddBytes("Boundary", traffic.BoundarySent, traffic.BoundaryReceived);
+  costs.AddBytes("Merge", traffic.MergeSent, traffic.MergeReceived);
+  costs.AddBytes("Back", traffic.BackSent, traffic.BackReceived);
+  WritePieceCosts(costs, output);
   return true;
 }
 

@@ -115,6 +115,7 @@ bool vtkBoolSurfSurfacePiece::Build(vtkMultiProcessController* controller,
   std::vector<std::string>& warnings)
 {
   this->Controller = controller;
+  this->BytesSent = this->BytesReceived = 0;
   const int rank = controller->GetLocalProcessId();
   const int ranks = controller->GetNumberOfProcesses();
   vtkSmartPointer<vtkPolyData> input = local;
@@ -198,6 +199,8 @@ bool vtkBoolSurfSurfacePiece::Build(vtkMultiProcessController* controller,
   }
   std::vector<double> allBounds(6 * static_cast<size_t>(ranks));
   controller->AllGather(bounds, allBounds.data(), 6);
+  this->BytesSent += 6 * sizeof(double) * static_cast<std::size_t>(ranks - 1);
+  this->BytesReceived += 6 * sizeof(double) * static_cast<std::size_t>(ranks - 1);
 
   // The ranks whose borders' bounds meet this one's get the border points inside their bounds.
   std::vector<int> partners;
@@ -226,6 +229,7 @@ bool vtkBoolSurfSurfacePiece::Build(vtkMultiProcessController* controller,
   }
   const std::vector<std::vector<long long>> received =
     ExchangeWith(this->Controller, partners, send);
+  this->CountBytes(send, received);
   this->Neighbours.clear();
   for (size_t i = 0; i < partners.size(); ++i)
   {
@@ -268,7 +272,9 @@ bool vtkBoolSurfSurfacePiece::Build(vtkMultiProcessController* controller,
   {
     cells.assign(ownBorderCells.begin(), ownBorderCells.end());
   }
-  for (const std::vector<long long>& cells : this->Exchange(borderCells))
+  const std::vector<std::vector<long long>> theirCells = this->Exchange(borderCells);
+  this->CountBytes(borderCells, theirCells);
+  for (const std::vector<long long>& cells : theirCells)
   {
     for (long long id : cells)
     {
@@ -283,6 +289,20 @@ bool vtkBoolSurfSurfacePiece::Build(vtkMultiProcessController* controller,
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfSurfacePiece::CountBytes(const std::vector<std::vector<long long>>& sent,
+  const std::vector<std::vector<long long>>& received)
+{
+  for (const std::vector<long long>& buffer : sent)
+  {
+    this->BytesSent += (buffer.size() + 1) * sizeof(long long); // with its length
+  }
+  for (const std::vector<long long>& buffer : received)
+  {
+    this->BytesReceived += (buffer.size() + 1) * sizeof(long long);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -68,6 +68,10 @@ public:
   /// Ranks sharing points with this piece, in increasing rank order.
   const std::vector<Neighbour>& GetNeighbours() const { return this->Neighbours; }
   vtkMultiProcessController* GetController() const { return this->Controller; }
+  /// Bytes this rank sent and received in Build (the borders' bounds, the border points and
+  /// the border cells with the neighbours; the all-reduces of one number are not counted).
+  std::size_t GetBuildBytesSent() const { return this->BytesSent; }
+  std::size_t GetBuildBytesReceived() const { return this->BytesReceived; }
 
   /// Collective: sends send[i] to GetNeighbours()[i] and returns what each neighbour sent.
   std::vector<std::vector<long long>> Exchange(
@@ -93,11 +97,15 @@ private:
   /// The error message naming overlapping global cell ids and their ranks (collective; only
   /// called when an overlap was detected, so gathering every id costs nothing in a valid run).
   std::string NameOverlaps();
+  /// Adds the buffers of one exchange to the byte counts.
+  void CountBytes(const std::vector<std::vector<long long>>& sent,
+    const std::vector<std::vector<long long>>& received);
 
   vtkMultiProcessController* Controller = nullptr;
   boolsurf::vtkSurfaceInput Surface;
   std::vector<long long> GlobalCellIds;
   std::vector<Neighbour> Neighbours;
+  std::size_t BytesSent = 0, BytesReceived = 0;
 };
 
 #endif
