@@ -910,6 +910,25 @@ double ClipperOffsetInSquare(const std::vector<std::vector<Vec2>>& polygons,
   return area;
 }
 
+// A case's name and its polygons or polylines to full precision, so that a failure of a random
+// case can be copied into a regression test.
+std::string Described(const std::string& what, const std::vector<std::vector<Vec2>>& shapes)
+{
+  std::ostringstream text;
+  text.precision(17);
+  text << what << ":";
+  for (const auto& shape : shapes)
+  {
+    text << " [";
+    for (const Vec2& p : shape)
+    {
+      text << " (" << p.x << ", " << p.y << ")";
+    }
+    text << " ]";
+  }
+  return text.str();
+}
+
 double SegmentDistance(Vec2 p, Vec2 a, Vec2 b)
 {
   const Vec2 ab = b - a;
@@ -1007,7 +1026,10 @@ TEST(GeodesicOffset, RandomFlatCasesMatchClipper)
                  double joinAngle,
                  double tips = 0.0)
   {
-    SCOPED_TRACE(what + ", d " + std::to_string(options.Distance));
+    std::ostringstream distance;
+    distance.precision(17);
+    distance << options.Distance;
+    SCOPED_TRACE(what + ", d " + distance.str());
     const Offset result = OffsetOf(on, onTopology, curves, bands, options);
     ASSERT_TRUE(result.Ok) << result.Error;
     const double bound = joinAngle * l * l / 12.0 + tips + 1e-7 * expected;
@@ -1057,9 +1079,10 @@ TEST(GeodesicOffset, RandomFlatCasesMatchClipper)
       ASSERT_TRUE(tracer.Trace(polygon, true, 0, 0, curve));
       OffsetOptions options;
       options.Distance = d;
-      check(where == 2 ? "along a side"
-          : where == 1 ? "around a corner"
-                       : "across a side",
+      check(Described(where == 2 ? "along a side"
+                : where == 1     ? "around a corner"
+                                 : "across a side",
+              { polygon }),
         mesh,
         topology,
         { curve },
@@ -1083,7 +1106,7 @@ TEST(GeodesicOffset, RandomFlatCasesMatchClipper)
       ASSERT_TRUE(tracer.Trace(polygon, true, 0, 0, curve));
       OffsetOptions options;
       options.Distance = -d;
-      check("shrinking",
+      check(Described("shrinking", { polygon }),
         mesh,
         topology,
         { curve },
@@ -1100,7 +1123,7 @@ TEST(GeodesicOffset, RandomFlatCasesMatchClipper)
       ASSERT_TRUE(tracer.Trace(a, true, 0, 0, ca));
       ASSERT_TRUE(tracer.Trace(b, true, 0, 1, cb));
       options.Distance = grow;
-      check("two shapes merging",
+      check(Described("two shapes merging", { a, b }),
         mesh,
         topology,
         { ca, cb },
@@ -1149,7 +1172,7 @@ TEST(GeodesicOffset, RandomFlatCasesMatchClipper)
         options.Distance = d;
         options.Ends = ends;
         const bool round = ends == OffsetEndStyle::Round;
-        check(round ? "band, round ends" : "band, flat ends",
+        check(Described(round ? "band, round ends" : "band, flat ends", { path }),
           mesh,
           topology,
           {},
@@ -1190,7 +1213,7 @@ TEST(GeodesicOffset, RandomFlatCasesMatchClipper)
     {
       OffsetOptions options;
       options.Distance = delta;
-      check("around a hole",
+      check(Described("around a hole of radius " + std::to_string(radius), { polygon }),
         holed,
         holedTopology,
         { curve },
