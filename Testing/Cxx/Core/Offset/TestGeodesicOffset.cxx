@@ -1436,6 +1436,32 @@ TEST(GeodesicOffset, InsetAndFlatEndCornersStaySharpOnIrregularMeshes)
       { 0.63786707114432495, 0.55751224404808064 },
       { 0.49036924425127992, 0.64907124493029777 } },
     0.018875899392287666 });
+  // Flat-end corners whose tip crosses two triangles' sides (the corner lies in a triangle two
+  // steps from the one the contour enters it by), each way along its segment (the corner at the
+  // first end, then at the last): the field beyond an end but outside the end point's disk was
+  // the distance, barely above d, and the search along the second side for the tip's crossings
+  // settled on that false minimum, 1.31e-5 short (BOOLSURF_OFFSET_SEED=1795954703913326528 in
+  // RandomFlatCasesMatchClipper). The same on another mesh, with a mesh vertex on the end's line
+  // (5.2e-5 short).
+  std::mt19937_64 regressionFlat(1795954703913326528ull);
+  const std::uint32_t seedFlat = static_cast<std::uint32_t>(regressionFlat());
+  const std::vector<Vec2> cornerTwoStepsAway = { { 0.15813219146649687, 0.35687017083621464 },
+    { 0.39562770092148308, 0.52421892020229333 } };
+  const std::vector<Vec2> vertexOnTheEndsLine = { { 0.55077932210148339, 0.42594035208630876 },
+    { 0.64957251651101622, 0.38081394713234501 } };
+  for (bool reversed : { false, true })
+  {
+    auto way = [reversed](std::vector<Vec2> path)
+    {
+      if (reversed)
+      {
+        std::reverse(path.begin(), path.end());
+      }
+      return path;
+    };
+    cases.push_back({ seedFlat, way(cornerTwoStepsAway), 0.059689133622863863 });
+    cases.push_back({ 5002, way(vertexOnTheEndsLine), 0.029442864405349468 });
+  }
   // Then rectangles at angles over a quarter turn and bands at angles over a half turn, of
   // random sizes, distances and centres (a fixed sequence).
   std::mt19937_64 rng(20261128);
