@@ -780,15 +780,18 @@ TEST(GeodesicOffset, InsetCornersStaySharpAtEveryAngle)
 namespace
 {
 // Random flat cases, fresh each run: the seed comes from the clock unless BOOLSURF_OFFSET_SEED
-// is set, and every failure names it so the run can be replayed.
+// is set, and every failure names it so the run can be replayed. It is also printed first, for
+// a run that crashes before any failure is reported.
 std::uint64_t OffsetSeed()
 {
+  std::uint64_t seed = static_cast<std::uint64_t>(
+    std::chrono::high_resolution_clock::now().time_since_epoch().count());
   if (const char* text = std::getenv("BOOLSURF_OFFSET_SEED"))
   {
-    return std::strtoull(text, nullptr, 10);
+    seed = std::strtoull(text, nullptr, 10);
   }
-  return static_cast<std::uint64_t>(
-    std::chrono::high_resolution_clock::now().time_since_epoch().count());
+  std::cout << "BOOLSURF_OFFSET_SEED=" << seed << std::endl;
+  return seed;
 }
 
 std::vector<Vec2> Placed(const std::vector<Vec2>& shape, double theta, Vec2 at)
