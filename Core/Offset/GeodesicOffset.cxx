@@ -652,13 +652,24 @@ private:
     {
       const double distance = distanceOf(*band.Search);
       double value = distance, cut = -Infinity;
-      // Flat ends: the band of this part of the curves minus what lies beyond their ends.
+      // Flat ends: the band of this part of the curves minus what lies beyond their ends,
+      // max(distance, d + beyond) near an end. The cut applies within Reach of the end point,
+      // not only inside the band: the sign is the same either way, but the contour also reads
+      // the field's size (a tip's two crossings of an edge lie around the field's minimum along
+      // it, convex near a corner; a corner is where the fronts' tangents meet). Uncut, the field
+      // beyond an end's line just outside the disk of radius d around the end point would be
+      // the distance, barely above d, where the band's field is d plus the distance beyond the
+      // line: a false minimum next to each of the end's corners, by which a search along an
+      // edge missed the tip's crossings and its corner was cut by a chord. The cut is at most d
+      // plus what is left to Reach, so it gives way to the distance toward Reach: the field is
+      // continuous there too.
       for (int c : band.Caps)
       {
         const EndCap& cap = this->Caps[c];
-        if (distance <= this->Level + tie && Distance(x, cap.Point) <= cap.Reach)
+        const double fromEnd = Distance(x, cap.Point);
+        if (fromEnd <= cap.Reach)
         {
-          cut = std::max(cut, this->Level + BeyondEnd(cap, x));
+          cut = std::max(cut, this->Level + std::min(BeyondEnd(cap, x), cap.Reach - fromEnd));
         }
       }
       value = std::max(value, cut);
