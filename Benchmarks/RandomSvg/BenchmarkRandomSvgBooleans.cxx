@@ -579,7 +579,8 @@ int main(int argc, char** argv)
             << (wallMs > 0 ? cpuMs / wallMs : 0.0) << " (" << std::setprecision(1) << cpuMs / 1000.0
             << " s CPU in " << wallMs / 1000.0
             << " s); share of that CPU time on other threads than the caller's: "
-            << std::setprecision(0) << (cpuMs > 0 ? 100.0 * (cpuMs - mainCpuMs) / cpuMs : 0.0)
+            << std::setprecision(0)
+            << (cpuMs > 0 ? std::max(0.0, 100.0 * (cpuMs - mainCpuMs) / cpuMs) : 0.0)
             << " % (on a loaded machine the wall time grows, this share does not)\n";
   for (const auto& [name, messages] : failures)
   {
