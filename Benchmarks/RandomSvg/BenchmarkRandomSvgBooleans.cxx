@@ -23,7 +23,9 @@
 //        [--geodesic-method=bounded|exact|locally-shortest] (the filter's GeodesicMethod;
 //        default bounded; --locally-shortest is kept as an alias of
 //        --geodesic-method=locally-shortest) [--no-control-curves] (ComputeControlCurves off:
-//        no vector output, as the paper's timings)
+//        no vector output, as the paper's timings) [--threads N] (at most N threads for every
+//        stage: the filter's NumberOfThreads and a cap on all of TBB's work, such as mapping the
+//        SVGs; default 0, all cores)
 // (shared data from BOOLSURF_SHARED_DATA or the build's configured path; a missing collection
 // ends the program with a message and exit code 0, nothing measured).
 #include "vtkBoolSurf.h"
@@ -44,6 +46,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <tbb/global_control.h>
+
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -55,6 +59,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <random>
 #include <set>
 #include <sstream>
@@ -124,6 +129,7 @@ struct Options
   bool Verbose = false;            // print each trial before it runs
   int GeodesicMethod = vtkBoolSurf::GEODESIC_BOUNDED; // the filter's GeodesicMethod
   bool ControlCurves = true; // ComputeControlCurves (the vector output, ports 2-3)
+  int Threads = 0;           // the filter's NumberOfThreads and TBB's cap (0: all cores)
 };
 
 Options ParseOptions(int argc, char** argv)
@@ -170,6 +176,10 @@ Options ParseOptions(int argc, char** argv)
     {
       options.ControlCurves = false;
     }
+    else if (arg == "--threads" && hasValue)
+    {
+      options.Threads = std::max(0, std::atoi(argv[++i]));
+    }
     else if (arg == "--verbose")
     {
       options.Verbose = true;
@@ -187,7 +197,7 @@ Options ParseOptions(int argc, char** argv)
       std::cerr << "usage: " << argv[0]
                 << " [--trials N] [--seed S] [--csv FILE] [--mesh NAME.ply]... [--only-trial K] "
                    "[--verbose] [--geodesic-method=bounded|exact|locally-shortest] "
-                   "[--no-control-curves]\n";
+                   "[--no-control-curves] [--threads N]\n";
       std::exit(2);
     }
   }
@@ -340,6 +350,14 @@ int main(int argc, char** argv)
   }
   const std::vector<fs::path> svgs = SharedSvgs(data);
   const unsigned cores = std::thread::hardware_concurrency();
+  // Every TBB loop of the process (the mappers' too, which have no thread setting) on at most
+  // that many threads, so a one-thread run is one thread throughout.
+  std::unique_ptr<tbb::global_control> threadCap;
+  if (options.Threads > 0)
+  {
+    threadCap = std::make_unique<tbb::global_control>(
+      tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(options.Threads));
+  }
   // Warnings and errors are counted per trial (observers); the executive's own reports of a
   // failed filter are not printed.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
@@ -347,7 +365,9 @@ int main(int argc, char** argv)
             << svgs.size() << " SVGs, " << options.Trials << " trials per mesh, seed "
             << options.Seed << ", geodesic method "
             << vtkBoolSurf::GetGeodesicMethodName(options.GeodesicMethod) << ", " << cores
-            << " cores\n";
+            << " cores, "
+            << (options.Threads > 0 ? std::to_string(options.Threads) : std::string("all"))
+            << " threads\n";
 
   // Rows are kept until the end: the stage columns are known from the first successful update.
   struct Row
@@ -379,6 +399,7 @@ int main(int argc, char** argv)
     Pipeline pipeline(surface);
     pipeline.Boolean->SetGeodesicMethod(options.GeodesicMethod);
     pipeline.Boolean->SetComputeControlCurves(options.ControlCurves);
+    pipeline.Boolean->SetNumberOfThreads(options.Threads);
     // One generator per mesh, seeded by the seed and the mesh's name, so a run on a subset of
     // the meshes (--mesh) repeats the same trials.
     std::seed_seq seeds{ options.Seed, static_cast<unsigned>(std::hash<std::string>()(name)) };
@@ -558,7 +579,8 @@ int main(int argc, char** argv)
             << (wallMs > 0 ? cpuMs / wallMs : 0.0) << " (" << std::setprecision(1) << cpuMs / 1000.0
             << " s CPU in " << wallMs / 1000.0
             << " s); share of that CPU time on other threads than the caller's: "
-            << std::setprecision(0) << (cpuMs > 0 ? 100.0 * (cpuMs - mainCpuMs) / cpuMs : 0.0)
+            << std::setprecision(0)
+            << (cpuMs > 0 ? std::max(0.0, 100.0 * (cpuMs - mainCpuMs) / cpuMs) : 0.0)
             << " % (on a loaded machine the wall time grows, this share does not)\n";
   for (const auto& [name, messages] : failures)
   {

@@ -1,5 +1,7 @@
 #include "Geodesic/SurfaceSiteGraph.h"
 
+#include "Geodesic/SiteCells.h"
+
 #include "Mesh/MeshTopology.h"
 #include "Mesh/ParallelRange.h"
 #include "Mesh/PerMeshRegistry.h"
@@ -13,7 +15,9 @@
 #include <queue>
 #include <random>
 
+#include <tbb/global_control.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
 
 namespace boolsurf
 {
@@ -208,41 +212,16 @@ void SurfaceSiteGraph::ChooseSites(const std::vector<int>& offsets,
 //------------------------------------------------------------------------------
 void SurfaceSiteGraph::GrowCells(const std::vector<int>& offsets, const std::vector<int>& neighbors)
 {
-  const int nv = this->Mesh.GetNumberOfVertices();
-  this->Cell.assign(nv, -1);
-  this->Parent.assign(nv, -1);
-  this->SiteDistance.assign(nv, std::numeric_limits<double>::infinity());
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
-  for (int s = 0; s < static_cast<int>(this->Sites.size()); ++s)
-  {
-    const int v = this->Sites[s];
-    this->Cell[v] = s;
-    this->SiteDistance[v] = 0.0;
-    heap.push({ 0.0, v });
-  }
-  while (!heap.empty())
-  {
-    const auto [d, u] = heap.top();
-    heap.pop();
-    if (d > this->SiteDistance[u])
-    {
-      continue;
-    }
-    const Vec3& pu = this->Mesh.GetPosition(u);
-    for (int i = offsets[u]; i < offsets[u + 1]; ++i)
-    {
-      const int w = neighbors[i];
-      const double dw = d + Distance(pu, this->Mesh.GetPosition(w));
-      if (dw < this->SiteDistance[w])
-      {
-        this->SiteDistance[w] = dw;
-        this->Parent[w] = u;
-        this->Cell[w] = this->Cell[u];
-        heap.push({ dw, w });
-      }
-    }
-  }
+  // On a large mesh, on the other threads too (the same cells: SiteCells.h), unless this
+  // thread is held to one (a global_control, a one-slot arena).
+  const bool parallel = this->Mesh.GetNumberOfVertices() >= ParallelVertices &&
+    tbb::this_task_arena::max_concurrency() > 1 &&
+    tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1;
+  SiteCells cells;
+  GrowSiteCells(this->Mesh, offsets, neighbors, this->Sites, parallel, cells);
+  this->Cell = std::move(cells.Cell);
+  this->Parent = std::move(cells.Parent);
+  this->SiteDistance = std::move(cells.SiteDistance);
 }
 
 //------------------------------------------------------------------------------

@@ -1,7 +1,6 @@
 #include "Selection/BoundaryControlPoints.h"
 
 #include "Geodesic/GeodesicBezier.h"
-#include "Geodesic/SlotTasks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -405,8 +404,9 @@ bool BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve, std::string& 
 }
 
 //------------------------------------------------------------------------------
-// Segments are independent (each is split from its own control polygon), so each is one task;
-// a segment's pieces are what CutCurve gives them, since a leg does not depend on the solver.
+// Segments are independent (each is split from its own control polygon), and so are the two
+// halves of a split: every split of a level is one task (CutSegmentsByLevels); a segment's
+// pieces are what CutCurve gives them, since a leg does not depend on the solver.
 bool BezierPieces::CutCurves(const std::vector<int>& curves,
   const std::vector<GeodesicPathSolver*>& solvers,
   std::string& error)
@@ -423,24 +423,15 @@ bool BezierPieces::CutCurves(const std::vector<int>& curves,
       this->CollectCuts(solvers[0]->GetMesh(), curve, jobs);
     }
   }
-  std::vector<std::vector<Piece>> pieces(jobs.size());
-  std::vector<std::string> errors(jobs.size());
-  std::vector<char> cut(jobs.size(), 0);
-  // One solver per arena slot.
-  RunTasksBySlot(static_cast<int>(solvers.size()),
-    jobs.size(),
-    [&](int slot, std::size_t j)
-    {
-      const SegmentCuts& job = jobs[j];
-      cut[j] = this->SplitAtCuts(*solvers[slot],
-        job.Whole,
-        0.0,
-        1.0,
-        job.At.data(),
-        job.At.data() + job.At.size(),
-        pieces[j],
-        errors[j]);
-    });
+  std::vector<BezierCutJob> cuts(jobs.size());
+  for (std::size_t j = 0; j < jobs.size(); ++j)
+  {
+    cuts[j] = { &jobs[j].Whole, &jobs[j].At };
+  }
+  std::vector<std::vector<Piece>> pieces;
+  std::vector<std::string> errors;
+  std::vector<char> cut;
+  CutSegmentsByLevels(solvers, cuts, pieces, errors, cut);
   for (std::size_t j = 0; j < jobs.size(); ++j)
   {
     if (!cut[j])

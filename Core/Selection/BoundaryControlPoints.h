@@ -21,6 +21,7 @@
 
 #include "Arrangement/Arrangement.h"
 #include "Geodesic/CurveTracer.h"
+#include "Selection/BezierCutLevels.h"
 #include "Selection/RegionBoundary.h"
 
 #include <array>
@@ -100,19 +101,15 @@ public:
     std::string& error);
 
   /// Cuts now the Bezier segments of `curves` that Get() would cut when first asked, into the
-  /// same pieces, segment by segment on several threads: `solvers` holds one solver per
-  /// thread (the arena slot's), all on the arrangement's mesh with the same settings and a
-  /// method whose legs do not depend on the solver (see CurveTracer::TraceCurves).
+  /// same pieces, on several threads (the halves of every split: CutSegmentsByLevels): `solvers`
+  /// holds one solver per thread (the arena slot's), all on the arrangement's mesh with the same
+  /// settings and a method whose legs do not depend on the solver (see CurveTracer::TraceCurves).
   bool CutCurves(const std::vector<int>& curves,
     const std::vector<GeodesicPathSolver*>& solvers,
     std::string& error);
 
 private:
-  struct Piece
-  {
-    double A, B;
-    std::array<CanonicalPoint, 4> Controls;
-  };
+  using Piece = BezierCutPiece;
   /// One segment to cut: its control polygon and its cuts (sorted, distinct, inside (0, 1)).
   struct SegmentCuts
   {

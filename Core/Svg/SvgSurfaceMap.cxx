@@ -1,6 +1,7 @@
 #include "Svg/SvgSurfaceMap.h"
 
 #include "Geodesic/StraightestGeodesic.h"
+#include "Mesh/ParallelRange.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +10,11 @@ namespace boolsurf
 {
 namespace
 {
+
+/// Drawings with fewer control points map on the calling thread (waking another costs more
+/// than their walks); larger ones in blocks of WalkGrain points.
+constexpr std::size_t ParallelWalks = 64;
+constexpr int WalkGrain = 16;
 
 /// Twice the signed area of the control polygon of a spline (a good sign of its orientation).
 double SignedArea2(const std::vector<Vec2>& p)
@@ -68,7 +74,43 @@ bool MapSvgOntoSurface(const TriangleMesh& mesh,
   const double c = std::cos(angle), s = std::sin(angle);
   const double cx = 0.5 * (drawing.Min[0] + drawing.Max[0]);
   const double cy = 0.5 * (drawing.Min[1] + drawing.Max[1]);
+  // Each control point's walk from the center depends on that point alone: the directions are
+  // listed in drawing order, walked in parallel (each into its own slot: the same points on any
+  // number of threads), then gathered into the curves in that order.
+  struct Walk
+  {
+    Vec3 Direction;
+    double Length = 0; ///< 0: the center itself, no walk
+    StraightestWalk Result;
+  };
+  std::vector<Walk> walks;
+  for (const SvgPath& path : drawing.Paths)
+  {
+    for (const SvgSubpath& sub : path.Subpaths)
+    {
+      for (const Vec2& p : sub.Points)
+      {
+        const double x = (p.x - cx) * options.Scale, y = -(p.y - cy) * options.Scale;
+        const double qx = c * x - s * y, qy = s * x + c * y;
+        walks.push_back({ qx * e1 + qy * e2, std::sqrt(qx * qx + qy * qy), {} });
+      }
+    }
+  }
+  ParallelRange(
+    options.Threads,
+    walks.size() >= ParallelWalks,
+    static_cast<int>(walks.size()),
+    [&](int i)
+    {
+      Walk& w = walks[i];
+      if (w.Length != 0)
+      {
+        w.Result = WalkStraightest(mesh, options.Center, w.Direction, w.Length);
+      }
+    },
+    WalkGrain);
   int boundaryHits = 0;
+  std::size_t next = 0;
   for (const SvgPath& path : drawing.Paths)
   {
     // Upright drawing coordinates (SVG's y grows downwards): orientation from their areas.
@@ -89,19 +131,16 @@ bool MapSvgOntoSurface(const TriangleMesh& mesh,
       curve.Closed = sub.Closed;
       curve.ShapeId = path.Element;
       curve.EvenOdd = path.EvenOdd;
-      for (const Vec2& p : sub.Points)
+      for (std::size_t k = 0; k < sub.Points.size(); ++k, ++next)
       {
-        const double x = (p.x - cx) * options.Scale, y = -(p.y - cy) * options.Scale;
-        const double qx = c * x - s * y, qy = s * x + c * y;
-        const double r = std::sqrt(qx * qx + qy * qy);
-        if (r == 0)
+        const Walk& w = walks[next];
+        if (w.Length == 0)
         {
           curve.Points.push_back(options.Center);
           continue;
         }
-        const StraightestWalk walk = WalkStraightest(mesh, options.Center, qx * e1 + qy * e2, r);
-        boundaryHits += walk.HitBoundary ? 1 : 0;
-        curve.Points.push_back(walk.End);
+        boundaryHits += w.Result.HitBoundary ? 1 : 0;
+        curve.Points.push_back(w.Result.End);
       }
       if (area < 0)
       {

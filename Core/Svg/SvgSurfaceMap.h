@@ -28,6 +28,8 @@ struct SvgMapOptions
   SurfacePoint Center;
   double Scale = 1.0;    ///< surface length per SVG unit
   double Rotation = 0.0; ///< degrees, counter-clockwise around the center normal
+  /// Threads walking the control points (0: all cores); the points are the same on any number.
+  int Threads = 0;
 };
 
 /// A subpath as a control curve: a cubic spline (3n + 1 control points open, 3n closed) whose

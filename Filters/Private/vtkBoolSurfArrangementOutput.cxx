@@ -4,6 +4,7 @@
 
 #include "Arrangement/EditBuffers.h"
 #include "Labeling/ArrangementLabelingInput.h"
+#include "Mesh/ParallelRange.h"
 #include "vtkBoolSurfArrangementRebuildWriter.h"
 #include "vtkBoolSurfArrayView.h"
 #include "vtkBoolSurfAttributeTransfer.h"
@@ -58,53 +59,83 @@ void AddField(vtkFieldData* fd, vtkAbstractArray* a)
   }
 }
 
+// Arrays of fewer tuples are filled on the calling thread (waking others costs more than the
+// copy); larger ones in blocks of ArrayBlock tuples.
+constexpr vtkIdType ParallelArrayTuples = 1 << 15;
+constexpr int ArrayBlock = 1 << 14;
+
 // A triangle list as VTK cell arrays, sized by the caller: offsets 0, 3, 6, ... and the
 // corners.
 void FillTriangleArrays(const int* corners,
   vtkIdType count,
   vtkIdTypeArray* offsets,
-  vtkIdTypeArray* connectivity)
+  vtkIdTypeArray* connectivity,
+  int threads)
 {
   vtkIdType* offset = offsets->GetPointer(0);
-  for (vtkIdType t = 0; t <= count; ++t)
-  {
-    offset[t] = 3 * t;
-  }
-  std::copy_n(corners, 3 * count, connectivity->GetPointer(0));
+  vtkIdType* connected = connectivity->GetPointer(0);
+  offset[count] = 3 * count;
+  // Blocks of triangles, each written by one thread (the first touch of fresh pages too).
+  ParallelBlocks(
+    threads,
+    count >= ParallelArrayTuples,
+    static_cast<int>(count),
+    [&](int first, int last)
+    {
+      for (vtkIdType t = first; t < last; ++t)
+      {
+        offset[t] = 3 * t;
+      }
+      std::copy(corners + 3 * static_cast<vtkIdType>(first),
+        corners + 3 * static_cast<vtkIdType>(last),
+        connected + 3 * static_cast<vtkIdType>(first));
+    },
+    ArrayBlock);
 }
 
 // Surface points as TriangleId/Barycentric values, in arrays sized by the caller.
 void FillSurfacePointArrays(const std::vector<SurfacePoint>& points,
   vtkIdTypeArray* triangleId,
-  vtkDoubleArray* barycentric)
+  vtkDoubleArray* barycentric,
+  int threads)
 {
   vtkIdType* tid = triangleId->GetPointer(0);
   double* uv = barycentric->GetPointer(0);
   const vtkIdType np = static_cast<vtkIdType>(points.size());
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    tid[i] = points[i].Triangle;
-    uv[2 * i] = points[i].U;
-    uv[2 * i + 1] = points[i].V;
-  }
+  ParallelBlocks(
+    threads,
+    np >= ParallelArrayTuples,
+    static_cast<int>(np),
+    [&](int first, int last)
+    {
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        tid[i] = points[i].Triangle;
+        uv[2 * i] = points[i].U;
+        uv[2 * i + 1] = points[i].V;
+      }
+    },
+    ArrayBlock);
 }
 
 } // namespace
 
 //------------------------------------------------------------------------------
-void SetTriangles(const int* corners, vtkIdType count, vtkPolyData* output)
+void SetTriangles(const int* corners, vtkIdType count, vtkPolyData* output, int threads)
 {
   vtkNew<vtkIdTypeArray> offsets, connectivity;
   offsets->SetNumberOfTuples(count + 1);
   connectivity->SetNumberOfTuples(3 * count);
-  FillTriangleArrays(corners, count, offsets, connectivity);
+  FillTriangleArrays(corners, count, offsets, connectivity, threads);
   vtkNew<vtkCellArray> polys;
   polys->SetData(offsets, connectivity);
   output->SetPolys(polys);
 }
 
 //------------------------------------------------------------------------------
-void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData* pointData)
+void AddSurfacePointArrays(const std::vector<SurfacePoint>& points,
+  vtkPointData* pointData,
+  int threads)
 {
   const vtkIdType np = static_cast<vtkIdType>(points.size());
   vtkNew<vtkIdTypeArray> triangleId;
@@ -114,7 +145,7 @@ void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData
   barycentric->SetName(boolsurf::names::Barycentric);
   barycentric->SetNumberOfComponents(2);
   barycentric->SetNumberOfTuples(np);
-  FillSurfacePointArrays(points, triangleId, barycentric);
+  FillSurfacePointArrays(points, triangleId, barycentric, threads);
   pointData->AddArray(triangleId);
   pointData->AddArray(barycentric);
 }

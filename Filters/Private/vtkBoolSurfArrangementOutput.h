@@ -79,11 +79,14 @@ bool ArrangeResult(const std::shared_ptr<ArrangementResult>& result,
   std::string& error);
 
 /// Polys of `output`: `count` triangles, corner k of triangle t at corners[3 t + k] (a bulk
-/// copy into the connectivity array, offsets 0, 3, 6, ...).
-void SetTriangles(const int* corners, vtkIdType count, vtkPolyData* output);
+/// copy into the connectivity array, offsets 0, 3, 6, ...), written on `threads` (0: all).
+void SetTriangles(const int* corners, vtkIdType count, vtkPolyData* output, int threads = 0);
 
-/// Point data TriangleId/Barycentric: each point as a point of the input surface.
-void AddSurfacePointArrays(const std::vector<SurfacePoint>& points, vtkPointData* pointData);
+/// Point data TriangleId/Barycentric: each point as a point of the input surface (written on
+/// `threads`, 0: all).
+void AddSurfacePointArrays(const std::vector<SurfacePoint>& points,
+  vtkPointData* pointData,
+  int threads = 0);
 
 /// Port 0: refined triangles, ArrangementCell/SourceTriangle, TriangleId/Barycentric, the
 /// input's arrays, and the cell graph, patches and zero-cell candidates as field data. Points,

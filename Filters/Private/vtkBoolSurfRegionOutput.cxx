@@ -85,7 +85,8 @@ void WriteRegion(const vtkSurfaceInput& surface,
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
   region->SetPoints(points);
-  SetTriangles(mesh.Connectivity.data(), static_cast<vtkIdType>(mesh.Triangles.size()), region);
+  SetTriangles(
+    mesh.Connectivity.data(), static_cast<vtkIdType>(mesh.Triangles.size()), region, threads);
 
   // The surface's own arrays first (they skip BoolSurf's names), then ours.
   TransferSurfaceAttributes(
@@ -97,7 +98,7 @@ void WriteRegion(const vtkSurfaceInput& surface,
     region);
   region->GetCellData()->AddArray(cell);
   region->GetCellData()->AddArray(source);
-  AddSurfacePointArrays(pointSurface, region->GetPointData());
+  AddSurfacePointArrays(pointSurface, region->GetPointData(), threads);
   MarkRegion(region);
 }
 

@@ -93,7 +93,7 @@ void WriteBoundary(const std::vector<BoundaryPolyline>& lines,
   boundary->SetLines(cells);
   if (withSurfacePoints)
   {
-    AddSurfacePointArrays(surfacePoints, boundary->GetPointData());
+    AddSurfacePointArrays(surfacePoints, boundary->GetPointData(), 1); // small: one thread
   }
   boundary->GetCellData()->AddArray(closed);
 }

@@ -363,3 +363,54 @@ TEST(SvgDrawing, NoSegmentOfNoLength)
     }
   }
 }
+
+TEST(SvgSurfaceMap, SamePointsOnOneThreadAndOnEvery)
+{
+  // Enough control points (circles of 12, a path) for the walks to run in parallel: the
+  // mapped curves are those of one thread bit for bit.
+  const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.4, 64, 32));
+  std::string body = "<path d='M10 10 C30 5 60 40 90 10 L90 90 Q50 70 10 90 Z'/>";
+  for (int k = 0; k < 12; ++k)
+  {
+    body += "<circle cx='" + std::to_string(10 + 7 * k) + "' cy='" + std::to_string(15 + 6 * k) +
+      "' r='" + std::to_string(3 + k) + "'/>";
+  }
+  SvgDrawing d;
+  std::string error;
+  ASSERT_TRUE(ParseSvg(Svg(body), d, error)) << error;
+  SvgMapOptions options;
+  options.Center = { 17, 0.25, 0.3 };
+  options.Scale = 0.03;
+  options.Rotation = 40;
+  std::vector<std::vector<MappedSvgCurve>> byThreads;
+  for (int threads : { 1, 2, 0 })
+  {
+    options.Threads = threads;
+    std::vector<MappedSvgCurve> curves;
+    std::vector<std::string> warnings;
+    ASSERT_TRUE(MapSvgOntoSurface(mesh, d, options, curves, warnings, error)) << error;
+    byThreads.push_back(std::move(curves));
+  }
+  std::size_t points = 0;
+  for (const MappedSvgCurve& c : byThreads[0])
+  {
+    points += c.Points.size();
+  }
+  ASSERT_GE(points, 64u); // the parallel path is taken
+  for (std::size_t run = 1; run < byThreads.size(); ++run)
+  {
+    ASSERT_EQ(byThreads[run].size(), byThreads[0].size());
+    for (std::size_t c = 0; c < byThreads[0].size(); ++c)
+    {
+      const std::vector<SurfacePoint>& a = byThreads[0][c].Points;
+      const std::vector<SurfacePoint>& b = byThreads[run][c].Points;
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t i = 0; i < a.size(); ++i)
+      {
+        EXPECT_EQ(a[i].Triangle, b[i].Triangle);
+        EXPECT_EQ(a[i].U, b[i].U); // bit for bit
+        EXPECT_EQ(a[i].V, b[i].V);
+      }
+    }
+  }
+}
