@@ -28,8 +28,8 @@ namespace boolsurf
 const char* const ArraysNotOnPieces =
   "the cell graph (CellGraphArcs, CellGraphShape, CellGraphPatch, CellGraphLocation, "
   "CellGraphDirection), the patches (PatchOffsets, PatchPoints, PatchLeftCell, PatchRightCell, "
-  "PatchShape, PatchCurve, PatchClosed, PatchControl*), CellComponent, ZeroCellCandidates, "
-  "NumberOfBoundaryPlugs, BoundaryPlugLinks, the rebuild fields (Arranged*), CurveHomology and "
+  "PatchShape, PatchCurve, PatchClosed, PatchControl*), the rebuild fields (Arranged*), "
+  "CurveHomology and "
   "the homology generators, StageTimes, the surface's own point and cell arrays, and port 1 "
   "(the patches as polylines, empty)";
 
