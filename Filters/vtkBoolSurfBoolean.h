@@ -72,9 +72,7 @@ protected:
     std::string& error) override;
 
   /// After Surface Arrangement on each rank's piece: on the rank's piece, from the result it
-  /// attached (vtkBoolSurfPieceLabels.h), nothing gathered; port 1's loops are chained whole
-  /// on rank 0 from every rank's boundary runs (vtkBoolSurfPieceRegionBoundary.h), ports 2 and
-  /// 3 stay empty (Docs/Parallel.md).
+  /// attached (vtkBoolSurfPieceLabels.h), nothing gathered.
   bool ExecutesOnPieces() const override { return true; }
   bool ExecutePiece(const std::vector<vtkPolyData*>& locals,
     const std::vector<vtkPolyData*>& outputs,

@@ -90,8 +90,7 @@ protected:
     std::string& error) override;
 
   /// After Surface Arrangement on each rank's piece: on the rank's piece, from the result it
-  /// attached (vtkBoolSurfPieceLabels.h), nothing gathered (a zero cell given by a point:
-  /// one all-gather, vtkBoolSurfPieceZeroCell.h); port 1 stays empty (no homology on pieces).
+  /// attached (vtkBoolSurfPieceLabels.h), nothing gathered.
   bool ExecutesOnPieces() const override { return true; }
   bool ExecutePiece(const std::vector<vtkPolyData*>& locals,
     const std::vector<vtkPolyData*>& outputs,
