@@ -3,9 +3,11 @@
 #include "Distributed/PieceWire.h"
 
 #include <algorithm>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <memory>
+#include <set>
 #include <utility>
 
 namespace boolsurf
@@ -125,132 +127,14 @@ bool KeysLess(const std::vector<BoundaryPointRecord>& a, const std::vector<Bound
     [](const BoundaryPointRecord& x, const BoundaryPointRecord& y) { return x.Key < y.Key; });
 }
 
-} // namespace
-
-//------------------------------------------------------------------------------
-void PieceRegionBoundaryRuns(const PieceMesh& piece,
-  const Arrangement& arr,
-  const std::vector<int>& globalCellOfLocal,
-  const std::vector<char>& selected,
-  std::vector<BoundaryRun>& out)
+/// Chains runs into loops and open chains, joining runs only at points where canJoin(key)
+/// (every point when it is null): at each point, the runs ending there by their point before
+/// it, the runs starting there by their point after it (then by their whole sequence, for runs
+/// along the same stretch), the i-th of one continued by the i-th of the other -- a pairing
+/// that only depends on the segments at the point, never on where a piece border cut the runs.
+std::vector<BoundaryRun> ChainRuns(const std::vector<BoundaryRun>& runs,
+  const std::function<bool(const BoundaryPointKey&)>& canJoin)
 {
-  out.clear();
-  const TriangleMesh& mesh = piece.Mesh;
-  const auto isSelected = [&](int r)
-  {
-    const int local = arr.CellOfTriangle(r);
-    if (local < 0 || local >= static_cast<int>(globalCellOfLocal.size()))
-    {
-      return false;
-    }
-    const int global = globalCellOfLocal[local];
-    return global >= 0 && global < static_cast<int>(selected.size()) && selected[global] != 0;
-  };
-  // Each side of a curve segment is seen by the piece owning the mesh triangle on that side
-  // (its refined triangle there is owned, so its local cell has a global number): a selected
-  // side gives the segment with that side on its left. A segment selected on both sides is
-  // given twice, once each way, and cancels (here when both sides are this piece's, on the
-  // chaining rank when they are two pieces'); a patch's own LeftCell and RightCell are not
-  // read, since on a piece one of them may be a cell of ghosts only, with no global number.
-  std::map<std::pair<int, int>, int> given; // directed (point, point) -> how many times
-  std::vector<int> from, at, common;
-  std::unique_ptr<VertexTriangles> around;
-  for (const ArrangementPatch& patch : arr.Patches)
-  {
-    for (std::size_t i = 0; i + 1 < patch.Points.size(); ++i)
-    {
-      const int a = patch.Points[i], b = patch.Points[i + 1];
-      if (a == b)
-      {
-        continue;
-      }
-      const CanonicalPoint ca = arr.GetPointOnMesh(a), cb = arr.GetPointOnMesh(b);
-      if (!around && (ca.Location == PointLocation::Vertex || cb.Location == PointLocation::Vertex))
-      {
-        around = std::make_unique<VertexTriangles>(mesh);
-      }
-      TrianglesAt(mesh, *around, ca, from);
-      TrianglesAt(mesh, *around, cb, at);
-      common.clear();
-      std::set_intersection(
-        from.begin(), from.end(), at.begin(), at.end(), std::back_inserter(common));
-      for (int t : common)
-      {
-        if (!piece.Owned[t])
-        {
-          continue;
-        }
-        ForEachRefinedTriangle(mesh,
-          arr,
-          t,
-          [&](int r)
-          {
-            const Triangle corners = arr.GetTriangle(mesh, r);
-            for (int k = 0; k < 3; ++k)
-            {
-              const int p = corners[k], q = corners[(k + 1) % 3];
-              // r runs p -> q, so r is on the left of p -> q.
-              if (((p == a && q == b) || (p == b && q == a)) && isSelected(r))
-              {
-                ++given[{ p, q }];
-              }
-            }
-          });
-      }
-    }
-  }
-  for (const auto& entry : given)
-  {
-    const auto reverse = given.find({ entry.first.second, entry.first.first });
-    const int count = entry.second - (reverse == given.end() ? 0 : reverse->second);
-    for (int c = 0; c < count; ++c)
-    {
-      BoundaryRun run;
-      run.Points = { RecordOf(piece, arr, entry.first.first),
-        RecordOf(piece, arr, entry.first.second) };
-      out.push_back(std::move(run));
-    }
-  }
-}
-
-//------------------------------------------------------------------------------
-std::vector<BoundaryRun> ChainBoundaryRuns(const std::vector<BoundaryRun>& given)
-{
-  // At each point, the runs ending there by their point before it, the runs starting there by
-  // their point after it (then by their whole sequence, for runs along the same stretch), the
-  // i-th of one continued by the i-th of the other: a pairing that only depends on the
-  // segments at the point, never on where a piece border cut the runs.
-  // A segment given once each way (its two sides selected, on two pieces) is no boundary.
-  std::map<std::pair<BoundaryPointKey, BoundaryPointKey>, std::vector<int>> single;
-  for (std::size_t i = 0; i < given.size(); ++i)
-  {
-    if (given[i].Points.size() == 2)
-    {
-      single[{ given[i].Points[0].Key, given[i].Points[1].Key }].push_back(static_cast<int>(i));
-    }
-  }
-  std::vector<char> cancelled(given.size(), 0);
-  for (auto& entry : single)
-  {
-    auto reverse = single.find({ entry.first.second, entry.first.first });
-    if (reverse == single.end() || !(entry.first < reverse->first))
-    {
-      continue;
-    }
-    const std::size_t pairs = std::min(entry.second.size(), reverse->second.size());
-    for (std::size_t k = 0; k < pairs; ++k)
-    {
-      cancelled[entry.second[k]] = cancelled[reverse->second[k]] = 1;
-    }
-  }
-  std::vector<BoundaryRun> runs;
-  for (std::size_t i = 0; i < given.size(); ++i)
-  {
-    if (!cancelled[i])
-    {
-      runs.push_back(given[i]);
-    }
-  }
   const int n = static_cast<int>(runs.size());
   std::map<BoundaryPointKey, std::pair<std::vector<int>, std::vector<int>>> at;
   for (int i = 0; i < n; ++i)
@@ -265,6 +149,10 @@ std::vector<BoundaryRun> ChainBoundaryRuns(const std::vector<BoundaryRun>& given
   std::vector<int> next(n, -1), previous(n, -1);
   for (auto& entry : at)
   {
+    if (canJoin && !canJoin(entry.first))
+    {
+      continue; // the runs end here: other pieces may have segments at this point
+    }
     std::vector<int>& in = entry.second.first;
     std::vector<int>& out = entry.second.second;
     std::sort(in.begin(),
@@ -342,6 +230,160 @@ std::vector<BoundaryRun> ChainBoundaryRuns(const std::vector<BoundaryRun>& given
       return KeysLess(a.Points, b.Points);
     });
   return result;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+void PieceRegionBoundaryRuns(const PieceMesh& piece,
+  const Arrangement& arr,
+  const std::vector<int>& globalCellOfLocal,
+  const std::vector<char>& selected,
+  std::vector<BoundaryRun>& out)
+{
+  out.clear();
+  const TriangleMesh& mesh = piece.Mesh;
+  const auto isSelected = [&](int r)
+  {
+    const int local = arr.CellOfTriangle(r);
+    if (local < 0 || local >= static_cast<int>(globalCellOfLocal.size()))
+    {
+      return false;
+    }
+    const int global = globalCellOfLocal[local];
+    return global >= 0 && global < static_cast<int>(selected.size()) && selected[global] != 0;
+  };
+  // Each side of a curve segment is seen by the piece owning the mesh triangle on that side
+  // (its refined triangle there is owned, so its local cell has a global number): a selected
+  // side gives the segment with that side on its left. A segment selected on both sides is
+  // given twice, once each way, and cancels (here when both sides are this piece's, on the
+  // chaining rank when they are two pieces'); a patch's own LeftCell and RightCell are not
+  // read, since on a piece one of them may be a cell of ghosts only, with no global number.
+  std::map<std::pair<int, int>, int> given; // directed (point, point) -> how many times
+  std::vector<int> from, at, common;
+  std::unique_ptr<VertexTriangles> around;
+  for (const ArrangementPatch& patch : arr.Patches)
+  {
+    for (std::size_t i = 0; i + 1 < patch.Points.size(); ++i)
+    {
+      const int a = patch.Points[i], b = patch.Points[i + 1];
+      if (a == b)
+      {
+        continue;
+      }
+      const CanonicalPoint ca = arr.GetPointOnMesh(a), cb = arr.GetPointOnMesh(b);
+      if (!around && (ca.Location == PointLocation::Vertex || cb.Location == PointLocation::Vertex))
+      {
+        around = std::make_unique<VertexTriangles>(mesh);
+      }
+      TrianglesAt(mesh, *around, ca, from);
+      TrianglesAt(mesh, *around, cb, at);
+      common.clear();
+      std::set_intersection(
+        from.begin(), from.end(), at.begin(), at.end(), std::back_inserter(common));
+      for (int t : common)
+      {
+        if (!piece.Owned[t])
+        {
+          continue;
+        }
+        ForEachRefinedTriangle(mesh,
+          arr,
+          t,
+          [&](int r)
+          {
+            const Triangle corners = arr.GetTriangle(mesh, r);
+            for (int k = 0; k < 3; ++k)
+            {
+              const int p = corners[k], q = corners[(k + 1) % 3];
+              // r runs p -> q, so r is on the left of p -> q.
+              if (((p == a && q == b) || (p == b && q == a)) && isSelected(r))
+              {
+                ++given[{ p, q }];
+              }
+            }
+          });
+      }
+    }
+  }
+  // A point all of whose triangles this piece owns has all its boundary segments here: runs
+  // are chained through such points, and end at the others (on a border with another piece).
+  const auto inside = [&](int p)
+  {
+    TrianglesAt(mesh, *around, arr.GetPointOnMesh(p), at);
+    return std::all_of(at.begin(), at.end(), [&](int t) { return piece.Owned[t] != 0; });
+  };
+  std::vector<BoundaryRun> segments;
+  std::set<BoundaryPointKey> joinable;
+  for (const auto& entry : given)
+  {
+    const auto reverse = given.find({ entry.first.second, entry.first.first });
+    const int count = entry.second - (reverse == given.end() ? 0 : reverse->second);
+    for (int c = 0; c < count; ++c)
+    {
+      BoundaryRun run;
+      run.Points = { RecordOf(piece, arr, entry.first.first),
+        RecordOf(piece, arr, entry.first.second) };
+      if (!around)
+      {
+        around = std::make_unique<VertexTriangles>(mesh);
+      }
+      for (int k = 0; k < 2; ++k)
+      {
+        if (inside(k == 0 ? entry.first.first : entry.first.second))
+        {
+          joinable.insert(run.Points[k].Key);
+        }
+      }
+      segments.push_back(std::move(run));
+    }
+  }
+  // A segment along an edge with another piece's triangle stays alone: it may be cancelled
+  // there. Its ends are not inside, so no run is chained through them.
+  out = ChainRuns(segments, [&](const BoundaryPointKey& key) { return joinable.count(key) != 0; });
+}
+
+//------------------------------------------------------------------------------
+std::vector<BoundaryRun> ChainBoundaryRuns(const std::vector<BoundaryRun>& given)
+{
+  // A segment given once each way (its two sides selected, on two pieces) is no boundary.
+  std::map<std::pair<BoundaryPointKey, BoundaryPointKey>, std::vector<int>> single;
+  for (std::size_t i = 0; i < given.size(); ++i)
+  {
+    if (given[i].Points.size() == 2 && !given[i].Closed)
+    {
+      single[{ given[i].Points[0].Key, given[i].Points[1].Key }].push_back(static_cast<int>(i));
+    }
+  }
+  std::vector<char> cancelled(given.size(), 0);
+  for (auto& entry : single)
+  {
+    auto reverse = single.find({ entry.first.second, entry.first.first });
+    if (reverse == single.end() || !(entry.first < reverse->first))
+    {
+      continue;
+    }
+    const std::size_t pairs = std::min(entry.second.size(), reverse->second.size());
+    for (std::size_t k = 0; k < pairs; ++k)
+    {
+      cancelled[entry.second[k]] = cancelled[reverse->second[k]] = 1;
+    }
+  }
+  std::vector<BoundaryRun> runs;
+  for (std::size_t i = 0; i < given.size(); ++i)
+  {
+    if (!cancelled[i])
+    {
+      runs.push_back(given[i]);
+      if (runs.back().Closed && !runs.back().Points.empty())
+      {
+        // A loop a piece chained whole: back to its first point, as a run.
+        runs.back().Points.push_back(runs.back().Points.front());
+        runs.back().Closed = false;
+      }
+    }
+  }
+  return ChainRuns(runs, nullptr);
 }
 
 //------------------------------------------------------------------------------

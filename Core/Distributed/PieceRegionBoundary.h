@@ -20,8 +20,8 @@
 // orders the loops by patch and may group them otherwise where segments meet.
 //
 // Cost: O(curve segments in owned triangles x their refined triangles) per piece after one
-// O(piece) pass (the triangles around each vertex); what travels is O(boundary segments),
-// never the surface.
+// O(piece) pass (the triangles around each vertex); what travels is O(boundary points), never
+// the surface.
 #ifndef boolsurf_PieceRegionBoundary_h
 #define boolsurf_PieceRegionBoundary_h
 
@@ -55,8 +55,12 @@ struct BoundaryRun
 };
 
 /// The region's boundary segments (selected[global cell], local cells mapped by
-/// globalCellOfLocal) given by the piece's owned triangles, each a run of two points with the
-/// region on its left; a segment whose other side is another piece's may be cancelled there.
+/// globalCellOfLocal) given by the piece's owned triangles, the region on their left, chained
+/// into runs through the points all of whose triangles the piece owns (there every boundary
+/// segment is the piece's, so the pairing is ChainBoundaryRuns'); a run ends at a point it
+/// shares with another piece, and a segment along an edge with another piece's triangle is a
+/// run of its own (it may be cancelled where the runs are chained). Loops wholly inside the
+/// piece come closed.
 void PieceRegionBoundaryRuns(const PieceMesh& piece,
   const Arrangement& arr,
   const std::vector<int>& globalCellOfLocal,
@@ -64,7 +68,7 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
   std::vector<BoundaryRun>& out);
 
 /// Chains runs (from every piece, in any order) into the region's loops, after cancelling the
-/// two-point runs given once each way: closed loops start at their lowest point; open chains
+/// open two-point runs given once each way: closed loops start at their lowest point; open chains
 /// only where a run has no continuation. Sorted by closed first, then by points.
 std::vector<BoundaryRun> ChainBoundaryRuns(const std::vector<BoundaryRun>& runs);
 
