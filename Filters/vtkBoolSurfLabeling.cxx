@@ -136,13 +136,28 @@ bool vtkBoolSurfLabeling::ExecutePiece(const std::vector<vtkPolyData*>& locals,
   options.PerTriangleLabels = this->PerTriangleLabels;
   std::shared_ptr<boolsurf::PieceLabeledResult> result;
   std::string warning;
-  if (!boolsurf::LabelPiece(locals[0], options, outputs[0], result, error, warning))
+  if (!boolsurf::LabelPiece(vtkMultiProcessController::GetGlobalController(),
+        this->Internal->Locator,
+        locals[0],
+        options,
+        outputs[0],
+        result,
+        error,
+        warning))
   {
     return false;
   }
   boolsurf::AttachStageResult<boolsurf::PieceLabeledResult>(
     outputs[0]->GetFieldData()->GetArray(boolsurf::names::CellLabels), std::move(result));
   boolsurf::WriteLocalStageCosts(watch.Lap(), outputs[0]);
+  // Port 1: the homology generators need the homology basis of the whole surface, which no
+  // rank has: empty, marked as coming from pieces, and said so below.
+  outputs[1]->Initialize();
+  if (vtkAbstractArray* onPieces =
+        outputs[0]->GetFieldData()->GetAbstractArray(boolsurf::names::ArrangementOnPieces))
+  {
+    outputs[1]->GetFieldData()->AddArray(onPieces);
+  }
   // The labels are the same on every rank: one rank says what they mean.
   if (vtkMultiProcessController::GetGlobalController()->GetLocalProcessId() == 0)
   {
@@ -150,8 +165,11 @@ bool vtkBoolSurfLabeling::ExecutePiece(const std::vector<vtkPolyData*>& locals,
     {
       vtkWarningMacro(<< warning);
     }
-    vtkWarningMacro("ran on each rank's piece of the surface: port 1 (the homology generators) "
-                    "is not yet computed on pieces and stays empty");
+    vtkWarningMacro("ran on each rank's piece of the surface: homology generators are not "
+                    "computed on pieces (they need the homology basis of the whole surface): "
+                    "port 1 (the generators) stays empty and the labels carry no "
+                    "HomologyExcess; the labels, consistency verdicts and the zero cell (given "
+                    "by a point or automatic) are the one-rank ones");
   }
   return true;
 }

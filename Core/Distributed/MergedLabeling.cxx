@@ -19,6 +19,20 @@ LabelingInput MergedLabelingInput(const MergedArrangement& merged, const std::ve
 }
 
 //------------------------------------------------------------------------------
+std::vector<std::pair<int, int>> MergedPlugLinks(const MergedArrangement& merged)
+{
+  std::vector<std::pair<int, int>> links;
+  for (const CellCrossing& c : merged.PlugCrossings)
+  {
+    if (c.Delta.empty())
+    {
+      links.emplace_back(c.FromCell, c.ToCell); // normalized: the cell, then the plug node
+    }
+  }
+  return links; // PlugCrossings are sorted and distinct
+}
+
+//------------------------------------------------------------------------------
 LabelingResult LabelMergedArrangement(const MergedArrangement& merged,
   const std::vector<int>& shapeIds,
   int zeroCell)

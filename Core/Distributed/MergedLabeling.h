@@ -20,6 +20,7 @@
 #include "Distributed/MergedArrangement.h"
 #include "Labeling/CellLabeling.h"
 
+#include <utility>
 #include <vector>
 
 namespace boolsurf
@@ -29,6 +30,12 @@ namespace boolsurf
 /// and of the crossings, as indices into their sorted union), cells and plugs as nodes.
 LabelingInput MergedLabelingInput(const MergedArrangement& merged,
   const std::vector<int>& shapeIds);
+
+/// The (cell, plug node) links of the merged graph, as BoundaryPlugs::Links lists them (sorted,
+/// distinct): its plug crossings without a change. Where curves of one shape cancel along a
+/// stretch of boundary the merge keeps one crossing without a change, a link the whole
+/// arrangement does not list (its patches there are arcs): the list then has that pair more.
+std::vector<std::pair<int, int>> MergedPlugLinks(const MergedArrangement& merged);
 
 /// LabelCells on MergedLabelingInput; `zeroCell` >= 0 (a global cell, the one holding the
 /// user's ZeroCellPoint) is made its component's zero cell, as the labeling stage's Point mode

@@ -3,6 +3,8 @@
 #include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfPieceArrangement.h"
 
+#include "Distributed/MergedLabeling.h"
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -14,6 +16,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
+#include <string>
 #include <vector>
 
 namespace boolsurf
@@ -102,6 +106,35 @@ void WritePieceArrangement(const PieceMesh& piece,
   count->SetName(names::NumberOfCells);
   count->InsertNextValue(run.GetMerged().NumberOfCells);
   output->GetFieldData()->AddArray(count);
+  WriteMergedPlugFields(run.GetMerged(), output->GetFieldData());
+}
+
+void WriteMergedPlugFields(const MergedArrangement& merged, vtkFieldData* fd)
+{
+  // As the one-rank port 0 writes them: an empty list is left out, the count never.
+  const auto add = [fd](const char* name, const std::vector<int>& values, int components)
+  {
+    if (values.empty() && std::string(name) != names::NumberOfBoundaryPlugs)
+    {
+      return;
+    }
+    vtkNew<vtkIntArray> array;
+    array->SetName(name);
+    array->SetNumberOfComponents(components);
+    array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / components));
+    std::copy(values.begin(), values.end(), array->GetPointer(0));
+    fd->AddArray(array);
+  };
+  add(names::CellComponent, merged.NodeComponent, 1);
+  add(names::ZeroCellCandidates, merged.ZeroNodes, 1);
+  add(names::NumberOfBoundaryPlugs, { merged.NumberOfPlugs }, 1);
+  std::vector<int> links;
+  for (const auto& link : MergedPlugLinks(merged))
+  {
+    links.push_back(link.first);
+    links.push_back(link.second);
+  }
+  add(names::BoundaryPlugLinks, links, 2);
 }
 
 } // namespace boolsurf

@@ -16,11 +16,13 @@
 #ifndef vtkBoolSurfPieceArrangementOutput_h
 #define vtkBoolSurfPieceArrangementOutput_h
 
+#include "Distributed/MergedArrangement.h"
 #include "Distributed/PieceMesh.h"
 
 #include <vector>
 
 class vtkBoolSurfPieceArrangement;
+class vtkFieldData;
 class vtkPolyData;
 
 namespace boolsurf
@@ -36,7 +38,14 @@ void WritePieceTriangles(const PieceMesh& piece,
   const std::vector<int>& cells,
   vtkPolyData* output);
 
-/// Fills `output` (emptied first) with the owned refined triangles of `run` on `piece`.
+/// The plug fields of the one-rank port 0 from the merged graph (message 3, the same on every
+/// rank): CellComponent (the cells', then the plugs'), ZeroCellCandidates,
+/// NumberOfBoundaryPlugs and BoundaryPlugLinks (the plug crossings without a change; one more
+/// pair than the one-rank list where curves of one shape cancel along a boundary stretch).
+void WriteMergedPlugFields(const MergedArrangement& merged, vtkFieldData* fd);
+
+/// Fills `output` (emptied first) with the owned refined triangles of `run` on `piece`, with
+/// NumberOfCells and the plug fields.
 void WritePieceArrangement(const PieceMesh& piece,
   const vtkBoolSurfPieceArrangement& run,
   vtkPolyData* output);

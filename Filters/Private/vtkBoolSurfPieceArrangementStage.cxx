@@ -29,9 +29,8 @@ namespace boolsurf
 const char* const ArraysNotOnPieces =
   "the cell graph (CellGraphArcs, CellGraphShape, CellGraphPatch, CellGraphLocation, "
   "CellGraphDirection), the patches (PatchOffsets, PatchPoints, PatchLeftCell, PatchRightCell, "
-  "PatchShape, PatchCurve, PatchClosed, PatchControl*), CellComponent, ZeroCellCandidates, "
-  "NumberOfBoundaryPlugs, BoundaryPlugLinks, the rebuild fields (Arranged*), CurveHomology and "
-  "the homology generators, the surface's own point and cell arrays, and port 1 "
+  "PatchShape, PatchCurve, PatchClosed, PatchControl*), the rebuild fields (Arranged*), "
+  "CurveHomology and the homology generators, the surface's own point and cell arrays, and port 1 "
   "(the patches as polylines, empty)";
 
 namespace

@@ -3,6 +3,7 @@
 #include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfPieceArrangementOutput.h"
+#include "vtkBoolSurfPieceZeroCell.h"
 #include "vtkBoolSurfStageHandoff.h"
 
 #include "Distributed/MergedLabeling.h"
@@ -18,7 +19,9 @@ namespace boolsurf
 {
 
 //------------------------------------------------------------------------------
-bool LabelPiece(vtkPolyData* input,
+bool LabelPiece(vtkMultiProcessController* controller,
+  SurfaceLocator& locator,
+  vtkPolyData* input,
   const LabelingOutputOptions& options,
   vtkPolyData* output,
   std::shared_ptr<PieceLabeledResult>& result,
@@ -33,15 +36,24 @@ bool LabelPiece(vtkPolyData* input,
             "the rank (its output on pieces, unchanged); this input has none";
     return false;
   }
+  int zeroCell = -1;
   if (options.ZeroCell.Mode == ZeroCellMode::Point)
   {
-    error = "Label Arrangement Cells on each rank's piece: a zero cell given by a point "
-            "(ZeroCellMode Point) is not yet found on pieces; use the automatic zero cell";
-    return false;
+    zeroCell = PieceZeroCellAt(controller,
+      *arranged,
+      arranged->Surface && arranged->Surface->GetNumberOfCells() > 0
+        ? locator.Get(arranged->Surface)
+        : nullptr,
+      options.ZeroCell.Point.data(),
+      error);
+    if (zeroCell < 0)
+    {
+      return false; // on every rank: the all-gather gave each the same answer
+    }
   }
   result = std::make_shared<PieceLabeledResult>();
   result->Arranged = arranged;
-  result->Labels = LabelMergedArrangement(arranged->Run.GetMerged(), arranged->ShapeIds);
+  result->Labels = LabelMergedArrangement(arranged->Run.GetMerged(), arranged->ShapeIds, zeroCell);
   WriteLabelingOutput(input, nullptr, result->Labels, options, output, warning);
   return true;
 }
@@ -51,6 +63,8 @@ bool WritePieceRegion(vtkPolyData* input,
   const BooleanOptions& options,
   vtkPolyData* region,
   std::string& text,
+  std::vector<char>& cells,
+  std::shared_ptr<const PieceArrangementResult>& arrangedOut,
   std::string& error)
 {
   auto labeled = FindStageResult<PieceLabeledResult>(
@@ -63,8 +77,8 @@ bool WritePieceRegion(vtkPolyData* input,
   }
   const PieceArrangementResult& arranged = *labeled->Arranged;
   const vtkBoolSurfPieceArrangement& run = arranged.Run;
+  arrangedOut = labeled->Arranged;
   PieceRegion selected;
-  std::vector<char> cells;
   if (!SelectPieceBoolean(arranged.Piece,
         run.GetArrangement(),
         run.GetMerged().GlobalCellOfLocal[0],

@@ -17,13 +17,16 @@
 
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfPieceArrangementStage.h"
+#include "vtkBoolSurfStageHandoff.h"
 
 #include "Labeling/CellLabeling.h"
 #include "Selection/BooleanOptions.h"
 
 #include <memory>
 #include <string>
+#include <vector>
 
+class vtkMultiProcessController;
 class vtkPolyData;
 
 namespace boolsurf
@@ -38,9 +41,12 @@ struct PieceLabeledResult
 
 /// Labels the merged cell graph of the piece arrangement attached to `input` and writes
 /// `output` as LabelArrangement does (WriteLabelingOutput); `result` is the hand-off to the
-/// Boolean. False with `error` when `input` carries no piece arrangement, or for a zero cell
-/// given by a point (not yet on pieces).
-bool LabelPiece(vtkPolyData* input,
+/// Boolean. False with `error` when `input` carries no piece arrangement. Collective for a zero
+/// cell given by a point (ZeroCellMode Point: vtkBoolSurfPieceZeroCell.h, with `locator` on
+/// the rank's surface piece).
+bool LabelPiece(vtkMultiProcessController* controller,
+  SurfaceLocator& locator,
+  vtkPolyData* input,
   const LabelingOutputOptions& options,
   vtkPolyData* output,
   std::shared_ptr<PieceLabeledResult>& result,
@@ -50,11 +56,14 @@ bool LabelPiece(vtkPolyData* input,
 /// The Boolean's region on the piece labeled in `input` (Label Arrangement Cells on a piece):
 /// its owned refined triangles in the selected cells, with ArrangementCell, SourceTriangle,
 /// TriangleId, Barycentric, Region, the surface's own cell arrays, the expression and the label
-/// table. `text` is the expression evaluated.
+/// table. `text` is the expression evaluated, `selected` the selection per global cell and
+/// `arranged` the piece arrangement it was made on (for the region's boundary).
 bool WritePieceRegion(vtkPolyData* input,
   const BooleanOptions& options,
   vtkPolyData* region,
   std::string& text,
+  std::vector<char>& selected,
+  std::shared_ptr<const PieceArrangementResult>& arranged,
   std::string& error);
 
 }

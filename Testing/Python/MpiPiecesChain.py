@@ -7,7 +7,7 @@ agree with one rank's outputs.
 
 The surface (Data/eight.ply) gets global ids in its serial order (Generate Global Ids), then
 RedistributeDataSet and Extract Surface split it across the ranks; on one rank it stays whole
-and every filter computes as ever. Three circles, one crossing many pieces. Each output is
+and every filter computes as ever. Three circles, one crossing many pieces; the Boolean's boundary loops (port 1). Each output is
 fetched with the rank that holds each triangle, so the test sees that every rank holds only
 its part (--partitions 2 on 3 ranks: a rank with no triangles); a filter that gathers its input (Boundary Sampled Curves) fed the labeled pieces
 must refuse them.
@@ -174,7 +174,40 @@ for name, proxy, arrays in (("arrangement", arrangement, ["ArrangementCell"]),
                      "held": holders(data), "NumberOfCells": field(data, "NumberOfCells"),
                      "CellLabels": field(data, "CellLabels"),
                      "ShapeConsistent": field(data, "ShapeConsistent"),
+                     "plugs": [field(data, a) for a in ("CellComponent", "ZeroCellCandidates",
+                                                        "NumberOfBoundaryPlugs",
+                                                        "BoundaryPlugLinks")],
                      "pieces": field(data, "ArrangementOnPieces") is not None}
+
+# The zero cell given by a point (inside the first circle only): found on the rank owning the
+# point's triangle, shared with every rank; the same labels as one rank.
+pointed = LabelArrangementCells(Input=arrangement, ZeroCellMode="Point",
+                                ZeroCellPoint=list(rays.hit(0.0, -0.035)))
+data = sm.Fetch(pointed)
+results["pointed"] = {"CellLabels": field(data, "CellLabels"),
+                      "ShapeConsistent": field(data, "ShapeConsistent")}
+
+
+def lines(data):
+    """Each polyline as [closed, held by, [[x, y, z, TriangleId], ...]]."""
+    closed = data.GetCellData().GetArray("Closed")
+    held = data.GetCellData().GetArray("HeldBy")
+    triangle = data.GetPointData().GetArray("TriangleId")
+    out = []
+    for c in range(data.GetNumberOfCells()):
+        ids = data.GetCell(c).GetPointIds()
+        n = ids.GetNumberOfIds() - (1 if closed.GetValue(c) else 0)
+        points = [list(data.GetPoint(ids.GetId(k))) +
+                  [int(triangle.GetTuple1(ids.GetId(k))) if triangle else -1] for k in range(n)]
+        out.append([int(closed.GetValue(c)), held.GetValue(c), points])
+    return out
+
+
+# Port 1: the region's boundary loops (whole on rank 0 when on pieces).
+boundary = fetched(OutputPort(boolean, 1))
+results["boundary"] = {"lines": lines(boundary),
+                       "pieces": field(boundary, "ArrangementOnPieces") is not None,
+                       "Expression": field(boundary, "Expression")}
 # A filter that gathers its input cannot use the pieces: it refuses (empty output), never a
 # wrong answer.
 middle = rays.hit(0.0, 0.0)

@@ -2,14 +2,15 @@
 each rank's piece of a split surface (MpiPiecesChain.py, pvbatch on 1, 2 and 3 ranks, and on 3
 ranks with the surface split in 2, one rank holding none): the union over ranks of each output
 equals the one-rank output per source triangle (the same refined triangles in the same cells
-with the same labels, areas to 1e-12), every rank holds only its part (no rank holds the whole
-region), the piece outputs say so, and a filter that gathers its input refuses them with an
-error instead of answering wrongly. Trace Surface Curves traces on the pieces: rank 0's
-polylines equal one rank's exactly, every rank's message 0 equals the gathered path's byte for
-byte, no rank holds the whole surface, an edit of the curves keeps the ringed piece, the
-LocallyShortest method is traced on the gathered surface (warning), and a curve naming a
-triangle no rank holds fails on every rank with an error naming it. Each run has a
-time limit: a rank left waiting fails the test.
+with the same labels, areas to 1e-12), the Boolean's boundary loops are the one-rank loops,
+whole on rank 0 (the same points in the same order, started at their lowest point), every rank
+holds only its part (no rank holds the whole region), the piece outputs say so, and a filter
+that gathers its input refuses them with an error instead of answering wrongly. Trace Surface
+Curves traces on the pieces: rank 0's polylines equal one rank's exactly, every rank's message
+0 equals the gathered path's byte for byte, no rank holds the whole surface, an edit of the
+curves keeps the ringed piece, the LocallyShortest method is traced on the gathered surface
+(warning), and a curve naming a triangle no rank holds fails on every rank with an error naming
+it. Each run has a time limit: a rank left waiting fails the test.
 """
 import json
 import os
@@ -69,7 +70,37 @@ def same_by_source(a, b, where, ordered):
             assert x[1:] == y[1:], (where, source, x, y)
 
 
+def canonical_loops(lines):
+    """The loops as point sequences, each closed one started at its lowest point (then the
+    lowest after it), sorted: the pieces' port 1 starts loops there and orders them so; the
+    one-rank port 1 starts each where its first patch starts."""
+    out = []
+    for closed, _, points in lines:
+        points = [tuple(p) for p in points]
+        if closed:
+            m = len(points)
+            best = min(range(m), key=lambda k: (points[k][:3], points[(k + 1) % m][:3]))
+            points = points[best:] + points[:best]
+        out.append((closed, points))
+    return sorted(out)
+
+
+def same_loops(got, expected, where):
+    """The same loops: the same points in the same order (positions to 1e-12; the triangle
+    named may be the other one of an edge a point lies on)."""
+    a, b = canonical_loops(got), canonical_loops(expected)
+    assert len(a) == len(b), (where, len(a), len(b))
+    for (closed_a, points_a), (closed_b, points_b) in zip(a, b):
+        assert closed_a == closed_b and len(points_a) == len(points_b), (where, len(points_a),
+                                                                         len(points_b))
+        for x, y in zip(points_a, points_b):
+            assert max(abs(u - v) for u, v in zip(x[:3], y[:3])) <= 1e-12, (where, x, y)
+
+
 serial, _ = run(1)
+assert serial["boundary"]["lines"], "one rank: the union has a boundary"
+# The point's zero cell changes the labels: the automatic zero cell is elsewhere.
+assert serial["pointed"]["CellLabels"] != serial["labels"]["CellLabels"], serial["pointed"]
 assert not serial["arrangement"]["pieces"], "one rank: the surface is whole"
 assert serial["boolean"]["triangles"] > 0 and serial["bsc"]["triangles"] > 0, serial["bsc"]
 assert serial["traced"]["cells"], "one rank traces the curves"
@@ -120,8 +151,19 @@ for ranks, partitions in ((2, None), (3, None), (3, 2)):
     assert result["bad"] and "which no rank holds" in result["bad"][0], result["bad"]
     assert "curve 0" in result["bad"][0], result["bad"]
     assert output.count("which no rank holds") >= ranks, "the error is not on every rank"
+    # The Boolean's boundary loops: whole, on rank 0 only, the one-rank loops.
+    where = "boundary on %d ranks, %d holding triangles" % (ranks, holding)
+    assert result["boundary"]["pieces"], where
+    assert result["boundary"]["Expression"] == serial["boundary"]["Expression"], where
+    assert all(held == 0 for _, held, _ in result["boundary"]["lines"]), where
+    same_loops(result["boundary"]["lines"], serial["boundary"]["lines"], where)
+    # Port 0's plug fields, from the merged graph.
+    assert result["arrangement"]["plugs"] == serial["arrangement"]["plugs"], (
+        ranks, result["arrangement"]["plugs"], serial["arrangement"]["plugs"])
     for table in ("CellLabels", "ShapeConsistent"):
         assert result["labels"][table] == serial["labels"][table], (ranks, table)
+        # The zero cell given by a point, located on the rank owning its triangle.
+        assert result["pointed"][table] == serial["pointed"][table], (ranks, "pointed", table)
     assert "ran on each rank's piece of the surface" in output, output
     # Boundary Sampled Curves gathers its input: it refuses the labeled pieces, naming them.
     assert result["bsc"]["triangles"] == 0, result["bsc"]

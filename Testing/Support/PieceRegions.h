@@ -6,6 +6,7 @@
 
 #include "Arrangement/Arrangement.h"
 #include "Distributed/PieceMesh.h"
+#include "Distributed/PieceRegionBoundary.h"
 #include "Distributed/PieceSelection.h"
 #include "Selection/BooleanOptions.h"
 
@@ -45,6 +46,16 @@ std::map<int, SourceShare> PieceRegionBySource(const PieceMesh& piece,
 std::string CompareRegions(const std::map<int, SourceShare>& mine,
   const std::map<int, SourceShare>& whole,
   const std::vector<char>* owned = nullptr);
+
+/// Where the region boundary chained from the pieces' runs differs from the whole surface's
+/// (ExtractRegionBoundary on `arr`'s patches): empty when they agree. The same directed
+/// segments (positions bit for bit) always; the same loops as point sequences up to where each
+/// starts (and in any order) unless a point lies on the boundary twice, where the two may group
+/// the segments into loops otherwise.
+std::string CompareRegionBoundaries(const std::vector<BoundaryRun>& mine,
+  const TriangleMesh& mesh,
+  const Arrangement& arr,
+  const std::vector<char>& selected);
 
 } // namespace testing
 } // namespace boolsurf

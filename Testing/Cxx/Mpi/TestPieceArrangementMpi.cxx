@@ -23,6 +23,7 @@
 #include "Arrangement/Arrangement.h"
 #include "Distributed/MergedArrangement.h"
 #include "Distributed/MergedLabeling.h"
+#include "Distributed/PieceRegionBoundary.h"
 #include "Distributed/PieceSelection.h"
 #include "Distributed/PieceWire.h"
 #include "Geodesic/CurveTracer.h"
@@ -177,7 +178,50 @@ void CompareOutputWithWhole(const TriangleMesh& mesh,
 }
 
 /// This rank's owned triangles against the whole surface's arrangement.
-void CompareWithWhole(const TriangleMesh& mesh,
+/// Message 4 of every rank (its runs of the region's boundary) to rank 0, which chains them
+/// into loops: the whole surface's region boundary there. Collective. Returns the bytes this
+/// rank sent (rank 0: received).
+std::size_t CompareBoundaryWithWhole(vtkMultiProcessController* controller,
+  const TriangleMesh& mesh,
+  const Arrangement& whole,
+  const std::vector<char>& selected,
+  const std::vector<BoundaryRun>& mine,
+  int rank,
+  const std::string& what)
+{
+  std::vector<long long> message;
+  PackBoundaryRuns(mine, message);
+  std::size_t bytes = 0;
+  if (rank != 0)
+  {
+    long long length = static_cast<long long>(message.size());
+    controller->Send(&length, 1, 0, 56051);
+    controller->Send(message.data(), length, 0, 56052);
+    return (message.size() + 1) * sizeof(long long);
+  }
+  std::vector<BoundaryRun> runs;
+  std::string error;
+  bool ok = UnpackBoundaryRuns(message, runs, error);
+  for (int r = 1; r < controller->GetNumberOfProcesses(); ++r)
+  {
+    long long length = 0;
+    controller->Receive(&length, 1, r, 56051);
+    std::vector<long long> theirs(static_cast<std::size_t>(length));
+    controller->Receive(theirs.data(), length, r, 56052);
+    bytes += (theirs.size() + 1) * sizeof(long long);
+    ok = UnpackBoundaryRuns(theirs, runs, error) && ok;
+  }
+  const std::string difference =
+    ok ? testing::CompareRegionBoundaries(ChainBoundaryRuns(runs), mesh, whole, selected) : error;
+  if (!difference.empty())
+  {
+    Fail(rank, what + ": boundary loops differ: " + difference);
+  }
+  return bytes;
+}
+
+void CompareWithWhole(vtkMultiProcessController* controller,
+  const TriangleMesh& mesh,
   const std::vector<TracedCurve>& curves,
   const Arrangement& whole,
   const PieceMesh& piece,
@@ -262,20 +306,33 @@ void CompareWithWhole(const TriangleMesh& mesh,
     std::string text, error, myText, myError;
     const bool ok = SelectBooleanCells(stage, options, selected, text, error);
     PieceRegion region;
-    if (SelectPieceBoolean(piece,
-          arr,
-          merged.GlobalCellOfLocal[0],
-          mine,
-          options,
-          region,
-          mySelected,
-          myText,
-          myError) != ok)
+    const bool mineOk = SelectPieceBoolean(
+      piece, arr, merged.GlobalCellOfLocal[0], mine, options, region, mySelected, myText, myError);
+    if (mineOk != ok)
     {
       Fail(rank, operation + ": selected on one side only: " + error + myError);
-      continue;
     }
     if (!ok)
+    {
+      continue; // the same on every rank: the stage's labels are
+    }
+    // The region's boundary: this rank's runs to rank 0, chained there (every rank takes part).
+    std::vector<BoundaryRun> runs;
+    if (mineOk)
+    {
+      PieceRegionBoundaryRuns(piece, arr, merged.GlobalCellOfLocal[0], mySelected, runs);
+    }
+    const std::size_t boundaryBytes =
+      CompareBoundaryWithWhole(controller, mesh, whole, selected, runs, rank, operation);
+    if (options.Operation == BooleanOperation::Union)
+    {
+      std::printf("%s, rank %d: union's boundary, %zu bytes %s\n",
+        what.c_str(),
+        rank,
+        boundaryBytes,
+        rank == 0 ? "received" : "sent");
+    }
+    if (!mineOk)
     {
       continue;
     }
@@ -352,7 +409,7 @@ void RunSplit(vtkMultiProcessController* controller,
     Fail(rank, what + ": " + error);
     return;
   }
-  CompareWithWhole(mesh, curves, whole, piece, run, rank, what);
+  CompareWithWhole(controller, mesh, curves, whole, piece, run, rank, what);
   CompareOutputWithWhole(mesh, whole, piece, run, rank, what);
   const vtkBoolSurfPieceArrangement::Traffic& bytes = run.GetTraffic();
   std::printf("%s, rank %d of %d: %d owned triangles; bytes sent/received: curves %zu/%zu, "

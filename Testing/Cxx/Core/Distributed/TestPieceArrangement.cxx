@@ -10,6 +10,7 @@
 #include "Distributed/MergedLabeling.h"
 #include "Distributed/PieceCurves.h"
 #include "Distributed/PieceMesh.h"
+#include "Distributed/PieceRegionBoundary.h"
 #include "Distributed/PieceSelection.h"
 #include "Distributed/PieceSummary.h"
 
@@ -37,6 +38,7 @@
 
 using namespace boolsurf;
 using boolsurf::testing::CellAreas;
+using boolsurf::testing::CompareRegionBoundaries;
 using boolsurf::testing::CompareRegions;
 using boolsurf::testing::MakePiece;
 using boolsurf::testing::PieceRegionBySource;
@@ -141,6 +143,12 @@ LabelingResult ExpectLabelsOfTheStage(const TriangleMesh& mesh,
   EXPECT_EQ(input.GetNumberOfNodes(), stageInput.GetNumberOfNodes());
   EXPECT_EQ(input.CellComponent, stageInput.CellComponent);
   EXPECT_EQ(input.ZeroCells, stageInput.ZeroCells);
+  // Surface Arrangement's BoundaryPlugLinks on pieces: the stage's links, and at most one more
+  // pair where curves of one shape cancel along the boundary.
+  const std::vector<std::pair<int, int>> links = MergedPlugLinks(merged);
+  EXPECT_TRUE(
+    std::includes(links.begin(), links.end(), stageInput.Links.begin(), stageInput.Links.end()));
+  EXPECT_LE(links.size(), stageInput.Links.size() + 1);
   mine = LabelMergedArrangement(merged, DistinctShapeIds(curves));
   EXPECT_EQ(mine.ShapeIds, stage.ShapeIds);
   EXPECT_EQ(mine.ShapeConsistent, stage.ShapeConsistent);
@@ -180,6 +188,7 @@ void ExpectRegionsOfTheStage(const TriangleMesh& mesh,
     std::string text, error;
     const bool ok = SelectBooleanCells(stage, options, selected, text, error);
     std::map<int, SourceShare> union_;
+    std::vector<BoundaryRun> runs; // every piece's, through message 4
     for (size_t p = 0; p < run.Pieces.size(); ++p)
     {
       PieceRegion region;
@@ -205,12 +214,33 @@ void ExpectRegionsOfTheStage(const TriangleMesh& mesh,
       {
         EXPECT_TRUE(union_.insert(share).second) << "source triangle " << share.first;
       }
+      std::vector<BoundaryRun> mine;
+      PieceRegionBoundaryRuns(
+        run.Pieces[p], run.Arrangements[p], run.Merged.GlobalCellOfLocal[p], mySelected, mine);
+      std::vector<long long> message;
+      PackBoundaryRuns(mine, message);
+      EXPECT_TRUE(UnpackBoundaryRuns(message, runs, myError)) << myError;
     }
     if (ok)
     {
       const std::string difference =
         CompareRegions(union_, WholeRegionBySource(mesh, whole, selected));
       EXPECT_TRUE(difference.empty()) << difference;
+      const std::vector<BoundaryRun> loops = ChainBoundaryRuns(runs);
+      const std::string boundary = CompareRegionBoundaries(loops, mesh, whole, selected);
+      EXPECT_TRUE(boundary.empty()) << boundary;
+      // Independent of the split: chaining the runs in another order gives the same loops.
+      std::reverse(runs.begin(), runs.end());
+      const std::vector<BoundaryRun> again = ChainBoundaryRuns(runs);
+      ASSERT_EQ(again.size(), loops.size());
+      for (std::size_t l = 0; l < loops.size(); ++l)
+      {
+        ASSERT_EQ(again[l].Points.size(), loops[l].Points.size());
+        for (std::size_t k = 0; k < loops[l].Points.size(); ++k)
+        {
+          EXPECT_EQ(again[l].Points[k].Key, loops[l].Points[k].Key);
+        }
+      }
     }
   }
 }
