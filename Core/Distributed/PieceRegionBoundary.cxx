@@ -53,8 +53,9 @@ struct VertexTriangles
 };
 
 /// The piece's triangles holding refined point p (local ids, ascending, at most a few).
+/// `around` is read for a point at a vertex only (the callers build it before the first one).
 void TrianglesAt(const TriangleMesh& mesh,
-  const VertexTriangles& around,
+  const VertexTriangles* around,
   const CanonicalPoint& c,
   std::vector<int>& out)
 {
@@ -76,8 +77,8 @@ void TrianglesAt(const TriangleMesh& mesh,
       break;
     }
     case PointLocation::Vertex:
-      out.assign(around.Triangles.begin() + around.Offset[c.Id],
-        around.Triangles.begin() + around.Offset[c.Id + 1]);
+      out.assign(around->Triangles.begin() + around->Offset[c.Id],
+        around->Triangles.begin() + around->Offset[c.Id + 1]);
       break;
   }
   std::sort(out.begin(), out.end());
@@ -276,8 +277,8 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
       {
         around = std::make_unique<VertexTriangles>(mesh);
       }
-      TrianglesAt(mesh, *around, ca, from);
-      TrianglesAt(mesh, *around, cb, at);
+      TrianglesAt(mesh, around.get(), ca, from);
+      TrianglesAt(mesh, around.get(), cb, at);
       common.clear();
       std::set_intersection(
         from.begin(), from.end(), at.begin(), at.end(), std::back_inserter(common));
@@ -310,7 +311,7 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
   // are chained through such points, and end at the others (on a border with another piece).
   const auto inside = [&](int p)
   {
-    TrianglesAt(mesh, *around, arr.GetPointOnMesh(p), at);
+    TrianglesAt(mesh, around.get(), arr.GetPointOnMesh(p), at);
     return std::all_of(at.begin(), at.end(), [&](int t) { return piece.Owned[t] != 0; });
   };
   std::vector<BoundaryRun> segments;
