@@ -28,6 +28,37 @@ bool SplitsFirst(double from, double to, double from2, double to2)
 } // namespace
 
 //------------------------------------------------------------------------------
+// Cutting one after the other, each cut splitting the rest of the segment, made every split's
+// six legs about as long as the rest: curves that run along each other cross hundreds of
+// times within one segment, and those long window searches cost seconds per edit (10k
+// patches: 2.4 s). Halving shortens the legs at every level, so all but the first few splits
+// work on short legs; it also takes each piece through log2(k) splits instead of up to k, so
+// rounding accumulates less.
+bool CutSegmentRecursively(GeodesicPathSolver& solver,
+  const std::array<CanonicalPoint, 4>& polygon,
+  double from,
+  double to,
+  const double* first,
+  const double* last,
+  std::vector<BezierCutPiece>& pieces,
+  std::string& error)
+{
+  if (first == last)
+  {
+    pieces.push_back({ from, to, polygon });
+    return true;
+  }
+  const double* middle = first + (last - first) / 2;
+  std::array<CanonicalPoint, 4> left, right;
+  if (!SplitGeodesicBezier(solver, polygon, (*middle - from) / (to - from), left, right, error) ||
+    !CutSegmentRecursively(solver, left, from, *middle, first, middle, pieces, error))
+  {
+    return false;
+  }
+  return CutSegmentRecursively(solver, right, *middle, to, middle + 1, last, pieces, error);
+}
+
+//------------------------------------------------------------------------------
 void CutSegmentsByLevels(const std::vector<GeodesicPathSolver*>& solvers,
   const std::vector<BezierCutJob>& jobs,
   std::vector<std::vector<BezierCutPiece>>& pieces,

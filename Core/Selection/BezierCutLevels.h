@@ -27,6 +27,19 @@ struct BezierCutJob
   const std::vector<double>* At = nullptr;
 };
 
+/// The part [from, to] of a segment, given as `polygon`, cut at `first`..`last` (sorted,
+/// strictly inside) by recursive halving on one thread: split at the middle cut, then each
+/// half at its own middle cut. Appends the pieces in order; false with the failing split's
+/// message.
+bool CutSegmentRecursively(GeodesicPathSolver& solver,
+  const std::array<CanonicalPoint, 4>& polygon,
+  double from,
+  double to,
+  const double* first,
+  const double* last,
+  std::vector<BezierCutPiece>& pieces,
+  std::string& error);
+
 /// For every job, its pieces in order (pieces[j], the ones the recursive halving on one thread
 /// gives, bit for bit: a split depends only on its polygon and parameter) and ok[j]; a job
 /// whose split failed has ok[j] 0 and errors[j] the message of the split that recursion

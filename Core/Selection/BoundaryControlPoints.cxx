@@ -286,39 +286,6 @@ BezierPieces::BezierPieces(const Arrangement& arrangement, const std::vector<Cur
   }
 }
 
-//------------------------------------------------------------------------------
-// The part [from, to] of a segment, given as `polygon`, cut at `first`..`last` (sorted, strictly
-// inside): split at the middle cut, then each half at its own middle cut. Cutting one after
-// the other, each cut splitting the rest of the segment, made every split's six legs about as
-// long as the rest: curves that run along each other cross hundreds of times within one
-// segment, and those long window searches cost seconds per edit (10k patches: 2.4 s). Halving
-// shortens the legs at every level, so all but the first few splits work on short legs; it
-// also takes each piece through log2(k) splits instead of up to k, so rounding accumulates
-// less.
-bool BezierPieces::SplitAtCuts(GeodesicPathSolver& solver,
-  const std::array<CanonicalPoint, 4>& polygon,
-  double from,
-  double to,
-  const double* first,
-  const double* last,
-  std::vector<Piece>& pieces,
-  std::string& error)
-{
-  if (first == last)
-  {
-    pieces.push_back({ from, to, polygon });
-    return true;
-  }
-  const double* middle = first + (last - first) / 2;
-  std::array<CanonicalPoint, 4> left, right;
-  if (!SplitGeodesicBezier(solver, polygon, (*middle - from) / (to - from), left, right, error) ||
-    !this->SplitAtCuts(solver, left, from, *middle, first, middle, pieces, error))
-  {
-    return false;
-  }
-  return this->SplitAtCuts(solver, right, *middle, to, middle + 1, last, pieces, error);
-}
-
 void BezierPieces::CollectCuts(const TriangleMesh& mesh, int curve, std::vector<SegmentCuts>& jobs)
 {
   this->CurveCut[curve] = 1;
@@ -394,7 +361,7 @@ bool BezierPieces::CutCurve(GeodesicPathSolver& solver, int curve, std::string& 
   {
     std::vector<Piece>& pieces =
       this->Segments[(static_cast<long long>(job.Curve) << 32) | job.Segment];
-    if (!this->SplitAtCuts(
+    if (!CutSegmentRecursively(
           solver, job.Whole, 0.0, 1.0, job.At.data(), job.At.data() + job.At.size(), pieces, error))
     {
       return false;
@@ -472,8 +439,8 @@ bool BezierPieces::Get(GeodesicPathSolver& solver,
   {
     return true;
   }
-  // The pieces tile the segment left to right (SplitAtCuts): a binary search, not a scan, since
-  // a segment that another curve runs along holds thousands of them and every patch asks.
+  // The pieces tile the segment left to right (CutSegmentRecursively): a binary search, not a scan,
+  // since a segment that another curve runs along holds thousands of them and every patch asks.
   const std::vector<Piece>& pieces = it->second;
   auto piece = std::lower_bound(pieces.begin(),
     pieces.end(),

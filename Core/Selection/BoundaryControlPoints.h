@@ -120,14 +120,6 @@ private:
   /// The segments of `curve` with cuts (the curve is marked cut).
   void CollectCuts(const TriangleMesh& mesh, int curve, std::vector<SegmentCuts>& jobs);
   bool CutCurve(GeodesicPathSolver& solver, int curve, std::string& error);
-  bool SplitAtCuts(GeodesicPathSolver& solver,
-    const std::array<CanonicalPoint, 4>& polygon,
-    double from,
-    double to,
-    const double* first,
-    const double* last,
-    std::vector<Piece>& pieces,
-    std::string& error);
 
   const Arrangement& Arranged;
   const std::vector<CurveSource>& Sources;

@@ -13,31 +13,6 @@
 
 using namespace boolsurf;
 
-namespace
-{
-/// The recursion BezierPieces cuts a segment by on one thread.
-bool SplitRecursively(GeodesicPathSolver& solver,
-  const std::array<CanonicalPoint, 4>& polygon,
-  double from,
-  double to,
-  const double* first,
-  const double* last,
-  std::vector<BezierCutPiece>& pieces,
-  std::string& error)
-{
-  if (first == last)
-  {
-    pieces.push_back({ from, to, polygon });
-    return true;
-  }
-  const double* middle = first + (last - first) / 2;
-  std::array<CanonicalPoint, 4> left, right;
-  return SplitGeodesicBezier(solver, polygon, (*middle - from) / (to - from), left, right, error) &&
-    SplitRecursively(solver, left, from, *middle, first, middle, pieces, error) &&
-    SplitRecursively(solver, right, *middle, to, middle + 1, last, pieces, error);
-}
-} // namespace
-
 TEST(BezierCutLevels, SamePiecesAsTheRecursionOnOneThread)
 {
   const MeshData sphere = MakeIcosphere(4);
@@ -84,7 +59,7 @@ TEST(BezierCutLevels, SamePiecesAsTheRecursionOnOneThread)
     {
       std::vector<BezierCutPiece> expected;
       std::string error;
-      ASSERT_TRUE(SplitRecursively(main,
+      ASSERT_TRUE(CutSegmentRecursively(main,
         polygons[s],
         0.0,
         1.0,
