@@ -176,8 +176,13 @@ void CacheAttributeRanges(vtkFieldData* data, int threads)
 //------------------------------------------------------------------------------
 void CacheArrayRanges(vtkDataArray* array, int threads)
 {
-  if (!array || array->GetNumberOfTuples() == 0 || !array->HasStandardMemoryLayout() ||
-    HoldsRanges(array))
+  // A small array's ranges cost VTK next to nothing when asked, while storing them costs two
+  // information vectors with an information object per component, created here and garbage
+  // collected when the array goes: on a scene of a few thousand triangles that was half of an
+  // edit through the stage filters, for ranges a plain VTK pipeline may never ask for.
+  constexpr vtkIdType SmallArrayValues = 4096;
+  if (!array || array->GetNumberOfValues() < SmallArrayValues ||
+    !array->HasStandardMemoryLayout() || HoldsRanges(array))
   {
     return;
   }

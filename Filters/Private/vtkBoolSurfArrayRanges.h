@@ -21,8 +21,9 @@ namespace boolsurf
 /// Stores in `array`'s information every range vtkDataArray::GetRange and GetFiniteRange give
 /// (each component; for several components also the L2 norm), computed as VTK computes them,
 /// in one pass on at most `threads` threads (0: all). Call it after the array's last change
-/// (Modified() drops them). An empty array, or one holding NaN or infinities, is left to VTK;
-/// so is an array already holding its ranges (an array reused unchanged keeps them).
+/// (Modified() drops them). A small array (under 4096 values), or one holding NaN or
+/// infinities, is left to VTK; so is an array already holding its ranges (an array reused
+/// unchanged keeps them).
 void CacheArrayRanges(vtkDataArray* array, int threads = 0);
 
 /// CacheArrayRanges on the points and on every numeric point, cell and field array of `data`.
