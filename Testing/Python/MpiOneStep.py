@@ -10,33 +10,29 @@ by a point and an edit of the curves; the stage chain on the same pieces gives t
 loops the filter's port 1 must equal; Selection BSC runs on the gathered surface (a warning says
 why), and switching back to a Boolean runs on the pieces again.
 """
-import argparse
 import json
 import os
 import sys
 
-source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
-                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-sys.path.insert(0, os.path.join(source_dir, "Examples"))
-from boolsurf_example_utils import load_plugin, ranks, sample_source  # noqa: E402
-from paraview.simple import *  # noqa: E402,F401,F403
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pieces_fetch import (fetched, field, holders, lines, per_source,  # noqa: E402
-                              split_eight)
+from mpi_pieces_fetch import (fetched, field, holders, lines, per_source, ranks,  # noqa: E402
+                              sample_source, start)
+from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager as sm  # noqa: E402
 
-parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("--json", required=True)
-parser.add_argument("--partitions", type=int)
-args = parser.parse_args()
-load_plugin(globals())
-
-mesh, surface, rays, circles, control = split_eight(source_dir, args.partitions)
+args, (mesh, surface, rays, circles, control) = start(__doc__, globals())
 one = BoolSurf(Surface=surface, Curves=control, Operation="Union", ShapeA=0, ShapeB=2)
 # The stage chain on the same pieces: the filter's port 1 must be its port 1.
 traced = TraceSurfaceCurves(Surface=surface, Curves=control)
 labels = LabelArrangementCells(Input=SurfaceArrangement(Surface=surface, Curves=traced))
 chain = SurfaceBoolean(Input=labels, Operation="Union", ShapeA=0, ShapeB=2)
+
+
+def stage_names(data):
+    """The steps StageTimes names (on pieces: the steps this update ran)."""
+    times = data.GetFieldData().GetArray("StageTimes")
+    return [times.GetComponentName(k) for k in range(times.GetNumberOfComponents())] if times \
+        else None
 
 
 def outputs(proxy):
@@ -48,10 +44,10 @@ def outputs(proxy):
             "by_source": per_source(data, ["ArrangementCell"]), "held": holders(data),
             "fields": {name: field(data, name) for name in ("CellLabels", "ShapeConsistent",
                                                             "ShapeIds", "Expression")},
-            "StageTimes": data.GetFieldData().GetArray("StageTimes") is not None,
+            "StageTimes": stage_names(data),
             "pieces": field(data, "ArrangementOnPieces") is not None,
             "lines": lines(boundary), "expression": field(boundary, "Expression"),
-            "ports23": [sm.Fetch(OutputPort(proxy, k)).GetNumberOfCells() for k in (2, 3)]}
+            "ports23": [sm.Fetch(proxy, idx=k).GetNumberOfCells() for k in (2, 3)]}
 
 
 results = {"ranks": ranks(), "surface_triangles": sm.Fetch(mesh).GetNumberOfCells(),
@@ -59,7 +55,7 @@ results = {"ranks": ranks(), "surface_triangles": sm.Fetch(mesh).GetNumberOfCell
 for name, settings in (("union", dict(Operation="Union", ShapeA=0, ShapeB=2)),
                        ("intersection", dict(Operation="Intersection", ShapeA=0, ShapeB=1)),
                        ("difference", dict(Operation="Difference", ShapeA=2, ShapeB=0)),
-                       ("expression", dict(Operation="Expression", Expression="(S0 + S1) - S2"))):
+                       ("expression", dict(Operation="Expression", Expression="(S0 | S1) & ~S2"))):
     for key, value in settings.items():
         setattr(one, key, value)
     results[name] = outputs(one)

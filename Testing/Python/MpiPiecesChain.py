@@ -12,29 +12,18 @@ fetched with the rank that holds each triangle, so the test sees that every rank
 its part (--partitions 2 on 3 ranks: a rank with no triangles); a filter that gathers its input (Boundary Sampled Curves) fed the labeled pieces
 must refuse them.
 """
-import argparse
 import json
 import os
 import sys
 
-source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
-                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-sys.path.insert(0, os.path.join(source_dir, "Examples"))
-from boolsurf_example_utils import load_plugin, ranks, sample_source  # noqa: E402
-from paraview.simple import *  # noqa: E402,F401,F403
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pieces_fetch import (fetched, field, holders, lines, per_source,  # noqa: E402
-                              split_eight)
+from mpi_pieces_fetch import (fetched, field, holders, lines, per_source, ranks,  # noqa: E402
+                              sample_source, start)
+from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager as sm  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
 
-parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("--json", required=True)
-parser.add_argument("--partitions", type=int)
-args = parser.parse_args()
-load_plugin(globals())
-
-mesh, surface, rays, circles, control = split_eight(source_dir, args.partitions)
+args, (mesh, surface, rays, circles, control) = start(__doc__, globals())
 
 traced = TraceSurfaceCurves(Surface=surface, Curves=control)
 # The gathered path's message 0 (the same curves on the surface held by rank 0 alone), which

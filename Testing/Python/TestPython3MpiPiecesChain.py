@@ -16,18 +16,10 @@ import os
 import shutil
 import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import scratch  # noqa: E402
 from mpi_pieces_compare import PvbatchRuns, same_by_source, same_loops  # noqa: E402
 
-source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
-                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-runs = PvbatchRuns(source_dir, "MpiPiecesChain.py", scratch.folder("boolsurf-pieces-chain-"))
-if not runs.available:
-    print("mpiexec or pvbatch not found: nothing to test")
-    sys.exit(0)
+runs = PvbatchRuns("MpiPiecesChain.py", "boolsurf-pieces-chain-")
 run = runs.run
-out = runs.out
-
 
 serial, _ = run(1)
 assert serial["boundary"]["lines"], "one rank: the union has a boundary"
@@ -102,4 +94,4 @@ for ranks, partitions in ((2, None), (3, None), (3, 2)):
     assert "comes from Surface Arrangement run on each rank's piece" in output, output
     print("%d ranks, %d holding triangles: Surface Arrangement, labels and Boolean on the "
           "pieces give the one-rank answers" % (ranks, holding))
-shutil.rmtree(out, ignore_errors=True)
+shutil.rmtree(runs.out, ignore_errors=True)

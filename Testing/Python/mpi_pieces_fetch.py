@@ -3,13 +3,30 @@ each rank's part fetched with the rank that holds each cell, the refined triangl
 triangle, field arrays, polylines; and the split surface they run on. Imported inside pvbatch
 (the Examples folder on the path).
 """
+import argparse
 import os
+import sys
 
-from boolsurf_example_utils import SurfaceRays, curves_source, surface_circle
-from paraview.simple import (ExtractSurface, GenerateGlobalIds, PLYReader, ProgrammableFilter,
-                             RedistributeDataSet)
-from paraview import servermanager as sm
-from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
+SOURCE_DIR = os.environ.get("BOOLSURF_SOURCE_DIR",
+                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, os.path.join(SOURCE_DIR, "Examples"))
+from boolsurf_example_utils import (SurfaceRays, curves_source, load_plugin,  # noqa: E402,F401
+                                    ranks, sample_source, surface_circle)
+from paraview.simple import (ExtractSurface, GenerateGlobalIds, PLYReader,  # noqa: E402
+                             ProgrammableFilter, RedistributeDataSet)
+from paraview import servermanager as sm  # noqa: E402
+from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
+
+
+def start(doc, ns):
+    """The script's arguments (--json, --partitions K), the plugin loaded into the script's
+    namespace `ns`, and split_eight's surface: (args, (mesh, surface, rays, circles, control))."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--json", required=True)
+    parser.add_argument("--partitions", type=int)
+    args = parser.parse_args()
+    load_plugin(ns)
+    return args, split_eight(SOURCE_DIR, args.partitions)
 
 
 def split_eight(source_dir, partitions=None):
