@@ -1,6 +1,8 @@
-"""The driver side of the pvbatch runs on pieces (TestPython3MpiPiecesChain.py,
-TestPython3MpiOneStep.py): a script run by mpiexec on N ranks under a time limit (a rank left
-waiting fails the test), and the comparisons of a union over ranks with one rank's output.
+"""The driver side of the pvbatch runs under MPI (TestPython3MpiPiecesChain.py,
+TestPython3MpiOneStep.py, TestPython3MpiPieces.py, TestPython3MpiRanks.py,
+TestPython3MpiScaleScript.py): a command run under a time limit (a rank left waiting fails the
+test), a script run by mpiexec on N ranks, and the comparisons of a union over ranks with one
+rank's output.
 """
 import json
 import os
@@ -9,6 +11,30 @@ import subprocess
 import sys
 
 import scratch
+
+
+# Open MPI as root, and more ranks than cores.
+MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+
+
+def run_limited(command, what, seconds=240):
+    """Runs `command` (mpiexec, pvbatch, pvpython) under MPI_ENV and a time limit, and returns
+    its output; a run that fails, or gives no answer in time (a rank waiting for another),
+    stops the test naming `what`."""
+    # Its own process group, so a hung run's ranks can all be stopped.
+    process = subprocess.Popen(command, env=MPI_ENV, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    try:
+        output, _ = process.communicate(timeout=seconds)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, 9)
+        process.communicate()
+        raise SystemExit("%s: no answer within %d s (a rank waits for another)" % (what, seconds))
+    if process.returncode != 0:
+        print(output)
+        raise SystemExit("%s failed (exit code %d)" % (what, process.returncode))
+    return output
 
 
 class PvbatchRuns:
@@ -26,8 +52,6 @@ class PvbatchRuns:
         source_dir = os.environ.get("BOOLSURF_SOURCE_DIR", os.path.join(here, "..", ".."))
         self.script = os.path.join(source_dir, "Testing", "Python", script)
         self.out = scratch.folder(prefix)
-        self.env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                        OMPI_MCA_rmaps_base_oversubscribe="1")
 
     def run(self, ranks, partitions=None):
         """The script's JSON and its output on `ranks` ranks (the surface split into
@@ -37,19 +61,10 @@ class PvbatchRuns:
         command = [self.mpiexec, "-np", str(ranks), self.pvbatch, self.script, "--json", path]
         if partitions:
             command += ["--partitions", str(partitions)]
-        # Its own process group, so a hung run's ranks can all be stopped.
-        process = subprocess.Popen(command, env=self.env, stdout=subprocess.PIPE,
-                                   stderr=subprocess.STDOUT, text=True, start_new_session=True)
-        try:
-            output, _ = process.communicate(timeout=240)
-        except subprocess.TimeoutExpired:
-            os.killpg(process.pid, 9)
-            process.communicate()
-            raise SystemExit("%d ranks: no answer within 240 s (a rank waits for another)" % ranks)
-        if process.returncode != 0 or not os.path.exists(path):
+        output = run_limited(command, "%d ranks" % ranks)
+        if not os.path.exists(path):
             print(output)
-            raise SystemExit("%d ranks: pvbatch failed (exit code %d)" % (ranks,
-                                                                          process.returncode))
+            raise SystemExit("%d ranks: pvbatch wrote no %s" % (ranks, name))
         with open(path) as f:
             return json.load(f), output
 
