@@ -142,13 +142,12 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
   std::vector<std::string>& warnings)
 {
   drawingStart = false;
-  PieceStopwatch watch;
+  PieceStopwatch watch, total;
   PieceCosts costs;
   WireBuffer message;
   long long status = 0;
   BroadcastCurves(controller, curves, message, status);
-  const double broadcast = watch.Lap();
-  costs.AddTime("Curves", broadcast);
+  costs.AddTime("Curves", watch.Lap());
   {
     // The root counted as sending the buffer to every other rank.
     const int ranks = controller->GetNumberOfProcesses();
@@ -175,7 +174,7 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
   {
     return false;
   }
-  costs.Times.back().Milliseconds += broadcast; // Total, from the broadcast on
+  costs.AddTime("Total", total.Lap());
   WritePieceCosts(costs, output);
   return true;
 }
@@ -191,7 +190,7 @@ bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
   std::string& error,
   std::vector<std::string>& warnings)
 {
-  PieceStopwatch watch, total;
+  PieceStopwatch watch;
 
   // The piece (owned triangles; its neighbour ranks; overlapping pieces refused on every rank).
   vtkBoolSurfSurfacePiece owned;
@@ -257,7 +256,6 @@ bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
   costs.AddTime("Boundary", steps.Boundary);
   costs.AddTime("Merge", steps.Merge);
   costs.AddTime("Output", watch.Lap());
-  costs.AddTime("Total", total.Lap());
   costs.AddBytes("Boundary", traffic.BoundarySent, traffic.BoundaryReceived);
   costs.AddBytes("Merge", traffic.MergeSent, traffic.MergeReceived);
   costs.AddBytes("Back", traffic.BackSent, traffic.BackReceived);

@@ -71,7 +71,7 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
 /// Collective: ArrangeOnPiece after the broadcast, for a rank that has message 0 already
 /// (`message`, the same on every rank: the one-step filter, whose tracing on pieces gave it to
 /// every rank). `output`, when given, is written as ArrangeOnPiece writes port 0, without the
-/// costs; `costs` gets this rank's steps and messages (the last step is Total).
+/// costs; `costs` gets this rank's steps and messages (without a Total).
 bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
   vtkPolyData* local,
   const std::vector<long long>& message,

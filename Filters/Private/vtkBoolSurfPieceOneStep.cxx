@@ -104,7 +104,6 @@ OneStepPieceOutcome LabelOnPieces(vtkMultiProcessController* controller,
     error = "Arrangement failed: " + error;
     return OneStepPieceOutcome::Failed;
   }
-  costs.Times.pop_back(); // the arrangement's Total: this filter's is written last
   watch.Lap();
   auto labeled = std::make_shared<PieceLabeledResult>();
   const std::vector<int> shapes =
