@@ -12,6 +12,8 @@
 #include "vtkBoolSurfHomologyOutput.h"
 #include "vtkBoolSurfLabelingStage.h"
 #include "vtkBoolSurfOffsetStage.h"
+#include "vtkBoolSurfPieceBoolean.h"
+#include "vtkBoolSurfPieceOneStep.h"
 #include "vtkBoolSurfRegionOutput.h"
 #include "vtkBoolSurfResolveStage.h"
 #include "vtkBoolSurfSelectionOutput.h"
@@ -27,6 +29,7 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
@@ -142,6 +145,32 @@ struct vtkBoolSurf::Internals
     }
   };
   Key LabeledKey;
+  /// The inputs and settings the labels depend on, for `surface` and `curves`.
+  static Key MakeKey(vtkBoolSurf& self, vtkPolyData* surface, vtkPolyData* curves)
+  {
+    const boolsurf::ZeroCellOptions& zeroCell = *self.ZeroCellSettings;
+    return Key{ surface,
+      surface ? surface->GetMTime() : 0,
+      curves,
+      curves ? curves->GetMTime() : 0,
+      self.GetResolution(),
+      self.GetGeodesicMethod(),
+      self.GetProjectionTolerance(),
+      static_cast<int>(zeroCell.Mode),
+      zeroCell.Point,
+      self.GetNumberOfThreads(),
+      self.ResolveStrategy,
+      self.ResolveOffset,
+      self.OffsetShape,
+      self.OffsetDistance,
+      self.CloseBrokenShapes,
+      self.WindingThreshold };
+  }
+
+  /// On each rank's piece of a split surface: what the stage filters keep between updates,
+  /// and the key of the labeled arrangement kept there.
+  boolsurf::OneStepPieceState Pieces;
+  Key PiecesKey;
 };
 
 //------------------------------------------------------------------------------
@@ -189,23 +218,7 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
   // Inputs and properties the labeled arrangement depends on; the surface's cached
   // conversion is keyed separately.
   Internals& in = *this->Internal;
-  const boolsurf::ZeroCellOptions& zeroCell = *this->ZeroCellSettings;
-  const Internals::Key key{ surfaceInput,
-    surfaceInput->GetMTime(),
-    curvesInput,
-    curvesInput ? curvesInput->GetMTime() : 0,
-    this->GetResolution(),
-    this->GetGeodesicMethod(),
-    this->GetProjectionTolerance(),
-    static_cast<int>(zeroCell.Mode),
-    zeroCell.Point,
-    this->GetNumberOfThreads(),
-    this->ResolveStrategy,
-    this->ResolveOffset,
-    this->OffsetShape,
-    this->OffsetDistance,
-    this->CloseBrokenShapes,
-    this->WindingThreshold };
+  const Internals::Key key = Internals::MakeKey(*this, surfaceInput, curvesInput);
   const bool reuse = in.HasLabels && key == in.LabeledKey;
   if (!reuse)
   {
@@ -296,6 +309,82 @@ bool vtkBoolSurf::Execute(const std::vector<vtkPolyData*>& inputs,
   boolsurf::CacheDataRanges(region);
   boolsurf::CacheDataRanges(boundary);
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurf::ExecutePiece(const std::vector<vtkPolyData*>& locals,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  Internals& in = *this->Internal;
+  boolsurf::OneStepPieceOptions options;
+  options.Trace = this->GetTraceOptions();
+  options.Arrangement.Threads = this->GetNumberOfThreads();
+  options.ZeroCell = *this->ZeroCellSettings;
+  options.Boolean = *this->BooleanSettings;
+  options.NotOnPieces = this->StepsNotOnPieces();
+  const Internals::Key key = Internals::MakeKey(*this, locals[0], locals[1]);
+  options.SameLabels = key == in.PiecesKey;
+  std::vector<std::string> warnings;
+  std::string reason;
+  const boolsurf::OneStepPieceOutcome outcome = boolsurf::RunOneStepOnPieces(
+    controller, locals[0], locals[1], options, in.Pieces, outputs, error, warnings, reason);
+  this->ReportWarnings(warnings);
+  const bool first = controller->GetLocalProcessId() == 0;
+  switch (outcome)
+  {
+    case boolsurf::OneStepPieceOutcome::Done:
+      in.PiecesKey = key;
+      if (first)
+      {
+        vtkWarningMacro("ran on each rank's piece of the surface: "
+          << boolsurf::PieceBooleanPortsNote
+          << "; the labels carry no homology explanation of inconsistent shapes and no "
+             "GeodesicSiteGraph is written");
+      }
+      return true;
+    case boolsurf::OneStepPieceOutcome::DrawingStart:
+      // As on one rank: no region yet, and no message.
+      error.clear();
+      return false;
+    case boolsurf::OneStepPieceOutcome::Gather:
+      if (first)
+      {
+        vtkWarningMacro(
+          "ran on the surface gathered to rank 0, not on each rank's piece: " << reason);
+      }
+      this->GatherInsteadOfPieces(); // decided alike on every rank
+      return true;
+    case boolsurf::OneStepPieceOutcome::Failed:
+      break;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkBoolSurf::StepsNotOnPieces() const
+{
+  if (this->Selection == BSC_SELECTION)
+  {
+    return "Selection BSC chooses the region by samples snapped to the whole arrangement's "
+           "patches, not selected on pieces yet";
+  }
+  if (this->ResolveStrategy >= 0)
+  {
+    return "ResolveStrategy resolves inconsistent shapes with the homology basis and "
+           "geodesics of the whole surface";
+  }
+  if (this->OffsetShape >= 0)
+  {
+    return "OffsetShape offsets a shape by geodesic distances on the whole surface";
+  }
+  if (this->CloseBrokenShapes.find_first_not_of(" ,\t") != std::string::npos)
+  {
+    return "CloseBrokenShapes completes shapes with winding numbers factored on the whole "
+           "surface";
+  }
+  return std::string();
 }
 
 //------------------------------------------------------------------------------

@@ -45,6 +45,18 @@
  * BSC field data (`SampleOnBoundary`, `DroppedSamples`, ...) instead of `Expression`. Changing
  * only the samples reuses the labeled arrangement, like a change of the Boolean properties.
  *
+ * Under MPI, a surface split across ranks whose pieces carry point and cell GlobalIds (Generate
+ * Global Ids on the undistributed surface, then RedistributeDataSet, D3 or a parallel reader)
+ * is not gathered: the stages run on each rank's piece as the stage filters do there
+ * (Docs/Parallel.md, "What runs on each rank's piece"). Port 0 is then the rank's part of the
+ * region (the union over ranks is the one-rank region) with the arrays above and
+ * `ArrangementOnPieces`, `StageTimes` and `PieceBytes` the rank's own; port 1 the boundary
+ * loops, whole on rank 0; ports 2 and 3 stay empty (a warning on rank 0 says so). Between
+ * updates the tracing's ringed piece and the labeled arrangement are kept, as the stage filters
+ * keep them. Selection BSC, ResolveStrategy, OffsetShape, CloseBrokenShapes and what Trace
+ * Surface Curves cannot trace on pieces (the LocallyShortest method, control points given by
+ * position) gather the surface to rank 0 instead, with a warning naming why.
+ *
  * @sa vtkBoolSurfTraceCurves vtkBoolSurfArrangement vtkBoolSurfLabeling vtkBoolSurfBoolean
  * vtkBoolSurfBSC
  */
@@ -169,6 +181,13 @@ protected:
   bool Execute(const std::vector<vtkPolyData*>& inputs,
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
+  /// A surface split across ranks with GlobalIds: the stages run on each rank's piece
+  /// (vtkBoolSurfPieceOneStep.h), except for the steps StepsNotOnPieces() names.
+  bool ExecutesOnPieces() const override { return true; }
+  bool PiecesNeedGlobalIds() const override { return true; }
+  bool ExecutePiece(const std::vector<vtkPolyData*>& locals,
+    const std::vector<vtkPolyData*>& outputs,
+    std::string& error) override;
 
   int Selection = BOOLEAN_SELECTION;
   int ResolveStrategy = -1;
@@ -183,6 +202,8 @@ private:
   vtkBoolSurf(const vtkBoolSurf&) = delete;
   void operator=(const vtkBoolSurf&) = delete;
 
+  /// Why the settings need the surface gathered to one rank (empty: they run on pieces).
+  std::string StepsNotOnPieces() const;
   /// Trace, arrange and label the curves on the (valid) surface, into Internal.
   bool LabelCurves(const boolsurf::vtkSurfaceInput& surface,
     vtkPolyData* curves,

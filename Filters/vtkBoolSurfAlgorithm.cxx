@@ -310,8 +310,8 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
                     "of a split surface; "
                  << this->GetClassName()
                  << " gathers its inputs to rank 0 and cannot use pieces yet (Label "
-                    "Arrangement Cells and Surface Boolean run on them; the one-step BoolSurf "
-                    "filter on the surface gathers it)");
+                    "Arrangement Cells and Surface Boolean run on them, and the one-step BoolSurf "
+                    "filter runs on the surface's pieces itself)");
       return vtkBoolSurfErrorReported;
     }
   }

@@ -5,9 +5,8 @@
 #include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfBooleanStage.h"
 #include "vtkBoolSurfLabelingStage.h"
+#include "vtkBoolSurfPieceBoolean.h"
 #include "vtkBoolSurfPieceCosts.h"
-#include "vtkBoolSurfPieceLabels.h"
-#include "vtkBoolSurfPieceRegionBoundary.h"
 #include "vtkBoolSurfSelectionOutput.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfStageSettingsDefinitions.h"
@@ -101,40 +100,17 @@ bool vtkBoolSurfBoolean::ExecutePiece(const std::vector<vtkPolyData*>& locals,
     return true; // a drawing being started (on every rank: the arrangement marked each piece)
   }
   boolsurf::PieceStopwatch watch; // this rank's time, written with the output (mpi_scale.py)
-  std::string text;
-  std::vector<char> selected;
-  std::shared_ptr<const boolsurf::PieceArrangementResult> arranged;
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  // The selection fails alike on every rank (the labels are replicated), so no rank is left
-  // waiting in the boundary's exchange below.
-  if (!boolsurf::WritePieceRegion(
-        locals[0], *this->BooleanSettings, outputs[0], text, selected, arranged, error))
+  const auto labeled = boolsurf::FindPieceLabels(locals[0], error);
+  if (!labeled ||
+    !boolsurf::WritePieceBoolean(controller, *labeled, *this->BooleanSettings, outputs, error))
   {
     return false;
   }
-  // Port 1: the whole region's boundary loops, chained on rank 0 from every rank's runs.
-  if (!boolsurf::WritePieceRegionBoundary(controller, *arranged, selected, outputs[1], error))
-  {
-    outputs[0]->Initialize();
-    return false;
-  }
-  boolsurf::AddExpressionField(outputs[1], text);
   boolsurf::WriteLocalStageCosts(watch.Lap(), outputs[0]);
-  // Ports 2 and 3 (control points of the boundary and the clipped curves) need the curves'
-  // control points and a geodesic solver on the whole surface: empty on pieces. Every port is
-  // marked as coming from pieces so that the filters that gather refuse them.
-  for (std::size_t p = 1; p < outputs.size(); ++p)
-  {
-    outputs[p]->GetFieldData()->AddArray(
-      outputs[0]->GetFieldData()->GetAbstractArray(boolsurf::names::ArrangementOnPieces));
-  }
   if (controller->GetLocalProcessId() == 0)
   {
-    vtkWarningMacro("ran on each rank's piece of the surface: each rank's port 0 is its part of "
-                    "the region, port 1 (the region's boundary loops) is whole on rank 0 and "
-                    "empty on the others; ports 2 and 3 (the boundary's control points and the "
-                    "clipped curves) are not computed on pieces (they need the control points "
-                    "and geodesics on the whole surface) and stay empty");
+    vtkWarningMacro("ran on each rank's piece of the surface: " << boolsurf::PieceBooleanPortsNote);
   }
   return true;
 }

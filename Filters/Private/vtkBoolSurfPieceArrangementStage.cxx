@@ -125,6 +125,12 @@ vtkSmartPointer<vtkIntArray> IntField(const char* name, const std::vector<int>& 
 } // namespace
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkIntArray> OnPiecesField(vtkMultiProcessController* controller)
+{
+  return IntField(names::ArrangementOnPieces, { controller->GetNumberOfProcesses() });
+}
+
+//------------------------------------------------------------------------------
 bool ArrangeOnPiece(vtkMultiProcessController* controller,
   vtkPolyData* local,
   vtkPolyData* curves,
@@ -163,6 +169,28 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
             "neither";
     return false;
   }
+  if (!ArrangeMessageOnPiece(
+        controller, local, message, options, output, result, costs, error, warnings))
+  {
+    return false;
+  }
+  costs.AddTime("Total", total.Lap());
+  WritePieceCosts(costs, output);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
+  vtkPolyData* local,
+  const WireBuffer& message,
+  const ArrangementOptions& options,
+  vtkPolyData* output,
+  std::shared_ptr<PieceArrangementResult>& result,
+  PieceCosts& costs,
+  std::string& error,
+  std::vector<std::string>& warnings)
+{
+  PieceStopwatch watch;
 
   // The piece (owned triangles; its neighbour ranks; overlapping pieces refused on every rank).
   vtkBoolSurfSurfacePiece owned;
@@ -203,13 +231,15 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
   watch.Lap();
 
   // Port 0: the owned triangles refined, with what every rank knows of the whole.
-  WritePieceArrangement(result->Piece, result->Run, output);
   result->ShapeIds = DistinctShapeIds(global);
-  output->GetFieldData()->AddArray(
-    IntField(names::NumberOfShapes, { static_cast<int>(result->ShapeIds.size()) }));
-  output->GetFieldData()->AddArray(IntField(names::ShapeIds, result->ShapeIds));
-  output->GetFieldData()->AddArray(
-    IntField(names::ArrangementOnPieces, { controller->GetNumberOfProcesses() }));
+  if (output)
+  {
+    WritePieceArrangement(result->Piece, result->Run, output);
+    output->GetFieldData()->AddArray(
+      IntField(names::NumberOfShapes, { static_cast<int>(result->ShapeIds.size()) }));
+    output->GetFieldData()->AddArray(IntField(names::ShapeIds, result->ShapeIds));
+    output->GetFieldData()->AddArray(OnPiecesField(controller));
+  }
   result->Surface = local;
   result->SurfaceCell = SurfaceCells(local, result->Piece);
 
@@ -226,11 +256,9 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
   costs.AddTime("Boundary", steps.Boundary);
   costs.AddTime("Merge", steps.Merge);
   costs.AddTime("Output", watch.Lap());
-  costs.AddTime("Total", total.Lap());
   costs.AddBytes("Boundary", traffic.BoundarySent, traffic.BoundaryReceived);
   costs.AddBytes("Merge", traffic.MergeSent, traffic.MergeReceived);
   costs.AddBytes("Back", traffic.BackSent, traffic.BackReceived);
-  WritePieceCosts(costs, output);
   return true;
 }
 

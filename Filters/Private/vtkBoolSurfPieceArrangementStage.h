@@ -18,10 +18,12 @@
 #define vtkBoolSurfPieceArrangementStage_h
 
 #include "vtkBoolSurfPieceArrangement.h"
+#include "vtkBoolSurfPieceCosts.h"
 
 #include "Arrangement/Arrangement.h"
 #include "Distributed/PieceMesh.h"
 
+#include <vtkIntArray.h> // for OnPiecesField
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
 
@@ -65,6 +67,24 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
   bool& drawingStart,
   std::string& error,
   std::vector<std::string>& warnings);
+
+/// Collective: ArrangeOnPiece after the broadcast, for a rank that has message 0 already
+/// (`message`, the same on every rank: the one-step filter, whose tracing on pieces gave it to
+/// every rank). `output`, when given, is written as ArrangeOnPiece writes port 0, without the
+/// costs; `costs` gets this rank's steps and messages (without a Total).
+bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
+  vtkPolyData* local,
+  const std::vector<long long>& message,
+  const ArrangementOptions& options,
+  vtkPolyData* output,
+  std::shared_ptr<PieceArrangementResult>& result,
+  PieceCosts& costs,
+  std::string& error,
+  std::vector<std::string>& warnings);
+
+/// The field array ArrangementOnPieces (the number of ranks) that marks an output as one rank's
+/// part, so that the filters that gather refuse it.
+vtkSmartPointer<vtkIntArray> OnPiecesField(vtkMultiProcessController* controller);
 
 }
 

@@ -19,6 +19,35 @@ namespace boolsurf
 {
 
 //------------------------------------------------------------------------------
+bool LabelPieceCells(vtkMultiProcessController* controller,
+  SurfaceLocator& locator,
+  const std::shared_ptr<const PieceArrangementResult>& arranged,
+  const ZeroCellOptions& zeroCellOptions,
+  const std::vector<int>& shapeIds,
+  PieceLabeledResult& result,
+  std::string& error)
+{
+  int zeroCell = -1;
+  if (zeroCellOptions.Mode == ZeroCellMode::Point)
+  {
+    zeroCell = PieceZeroCellAt(controller,
+      *arranged,
+      arranged->Surface && arranged->Surface->GetNumberOfCells() > 0
+        ? locator.Get(arranged->Surface)
+        : nullptr,
+      zeroCellOptions.Point.data(),
+      error);
+    if (zeroCell < 0)
+    {
+      return false; // on every rank: the all-gather gave each the same answer
+    }
+  }
+  result.Arranged = arranged;
+  result.Labels = LabelMergedArrangement(arranged->Run.GetMerged(), shapeIds, zeroCell);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool LabelPiece(vtkMultiProcessController* controller,
   SurfaceLocator& locator,
   vtkPolyData* input,
@@ -36,36 +65,18 @@ bool LabelPiece(vtkMultiProcessController* controller,
             "the rank (its output on pieces, unchanged); this input has none";
     return false;
   }
-  int zeroCell = -1;
-  if (options.ZeroCell.Mode == ZeroCellMode::Point)
-  {
-    zeroCell = PieceZeroCellAt(controller,
-      *arranged,
-      arranged->Surface && arranged->Surface->GetNumberOfCells() > 0
-        ? locator.Get(arranged->Surface)
-        : nullptr,
-      options.ZeroCell.Point.data(),
-      error);
-    if (zeroCell < 0)
-    {
-      return false; // on every rank: the all-gather gave each the same answer
-    }
-  }
   result = std::make_shared<PieceLabeledResult>();
-  result->Arranged = arranged;
-  result->Labels = LabelMergedArrangement(arranged->Run.GetMerged(), arranged->ShapeIds, zeroCell);
+  if (!LabelPieceCells(
+        controller, locator, arranged, options.ZeroCell, arranged->ShapeIds, *result, error))
+  {
+    return false; // on every rank: the all-gather gave each the same answer
+  }
   WriteLabelingOutput(input, nullptr, result->Labels, options, output, warning);
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool WritePieceRegion(vtkPolyData* input,
-  const BooleanOptions& options,
-  vtkPolyData* region,
-  std::string& text,
-  std::vector<char>& cells,
-  std::shared_ptr<const PieceArrangementResult>& arrangedOut,
-  std::string& error)
+std::shared_ptr<const PieceLabeledResult> FindPieceLabels(vtkPolyData* input, std::string& error)
 {
   auto labeled = FindStageResult<PieceLabeledResult>(
     input ? input->GetFieldData()->GetAbstractArray(names::CellLabels) : nullptr);
@@ -73,16 +84,25 @@ bool WritePieceRegion(vtkPolyData* input,
   {
     error = "Surface Boolean on each rank's piece needs Label Arrangement Cells' result on the "
             "rank (its output on pieces, unchanged); this input has none";
-    return false;
   }
-  const PieceArrangementResult& arranged = *labeled->Arranged;
+  return labeled;
+}
+
+//------------------------------------------------------------------------------
+bool WritePieceRegion(const PieceLabeledResult& labeled,
+  const BooleanOptions& options,
+  vtkPolyData* region,
+  std::string& text,
+  std::vector<char>& cells,
+  std::string& error)
+{
+  const PieceArrangementResult& arranged = *labeled.Arranged;
   const vtkBoolSurfPieceArrangement& run = arranged.Run;
-  arrangedOut = labeled->Arranged;
   PieceRegion selected;
   if (!SelectPieceBoolean(arranged.Piece,
         run.GetArrangement(),
         run.GetMerged().GlobalCellOfLocal[0],
-        labeled->Labels,
+        labeled.Labels,
         options,
         selected,
         cells,
@@ -125,12 +145,7 @@ bool WritePieceRegion(vtkPolyData* input,
   region->GetCellData()->AddArray(mark);
   region->GetCellData()->SetActiveScalars(names::Region);
   AddExpressionField(region, text);
-  AddLabelTable(labeled->Labels, region->GetFieldData());
-  if (vtkAbstractArray* onPieces =
-        input->GetFieldData()->GetAbstractArray(names::ArrangementOnPieces))
-  {
-    region->GetFieldData()->AddArray(onPieces);
-  }
+  AddLabelTable(labeled.Labels, region->GetFieldData());
   return true;
 }
 

@@ -53,17 +53,30 @@ bool LabelPiece(vtkMultiProcessController* controller,
   std::string& error,
   std::string& warning);
 
-/// The Boolean's region on the piece labeled in `input` (Label Arrangement Cells on a piece):
-/// its owned refined triangles in the selected cells, with ArrangementCell, SourceTriangle,
-/// TriangleId, Barycentric, Region, the surface's own cell arrays, the expression and the label
-/// table. `text` is the expression evaluated, `selected` the selection per global cell and
-/// `arranged` the piece arrangement it was made on (for the region's boundary).
-bool WritePieceRegion(vtkPolyData* input,
+/// The result Label Arrangement Cells on a piece attached to `input`, or null with `error`
+/// naming Surface Boolean (an input read from a file, or edited, has none).
+std::shared_ptr<const PieceLabeledResult> FindPieceLabels(vtkPolyData* input, std::string& error);
+
+/// The labels of the merged cell graph of `arranged` for the shapes `shapeIds` (the drawing's,
+/// with any shape without curves yet; sorted, distinct), into `result`: LabelPiece's labeling,
+/// without an output. Collective for a zero cell given by a point.
+bool LabelPieceCells(vtkMultiProcessController* controller,
+  SurfaceLocator& locator,
+  const std::shared_ptr<const PieceArrangementResult>& arranged,
+  const ZeroCellOptions& zeroCell,
+  const std::vector<int>& shapeIds,
+  PieceLabeledResult& result,
+  std::string& error);
+
+/// The Boolean's region on the labeled piece `labeled`: its owned refined triangles in the
+/// selected cells, with ArrangementCell, SourceTriangle, TriangleId, Barycentric, Region, the
+/// surface's own cell arrays, the expression and the label table. `text` is the expression
+/// evaluated, `selected` the selection per global cell.
+bool WritePieceRegion(const PieceLabeledResult& labeled,
   const BooleanOptions& options,
   vtkPolyData* region,
   std::string& text,
   std::vector<char>& selected,
-  std::shared_ptr<const PieceArrangementResult>& arranged,
   std::string& error);
 
 }

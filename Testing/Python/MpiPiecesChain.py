@@ -12,88 +12,18 @@ fetched with the rank that holds each triangle, so the test sees that every rank
 its part (--partitions 2 on 3 ranks: a rank with no triangles); a filter that gathers its input (Boundary Sampled Curves) fed the labeled pieces
 must refuse them.
 """
-import argparse
 import json
 import os
 import sys
 
-source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
-                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-sys.path.insert(0, os.path.join(source_dir, "Examples"))
-from boolsurf_example_utils import (SurfaceRays, curves_source, load_plugin,  # noqa: E402
-                                    ranks, sample_source, surface_circle)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mpi_pieces_fetch import (fetched, field, holders, lines, per_source, ranks,  # noqa: E402
+                              sample_source, start)
 from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager as sm  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
-from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 
-parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("--json", required=True)
-parser.add_argument("--partitions", type=int)
-args = parser.parse_args()
-load_plugin(globals())
-
-mesh = PLYReader(FileNames=[os.path.join(source_dir, "Data", "eight.ply")])
-redistributed = RedistributeDataSet(Input=GenerateGlobalIds(Input=mesh))
-if args.partitions:
-    redistributed.NumberOfPartitions = args.partitions
-surface = ExtractSurface(Input=redistributed)
-surface.UpdatePipeline()
-rays = SurfaceRays(mesh, axis=1)
-circles = [(surface_circle(rays, (0.0, -0.035), 0.06), 0),
-           (surface_circle(rays, (0.0, 0.035), 0.06), 1),
-           (surface_circle(rays, (0.0, 0.05), 0.08, n=40), 2)]
-control = curves_source(circles, surface)
-
-# Each rank's output with its rank as a cell array: the fetched union says who holds what.
-RANK = """
-from vtkmodules.vtkCommonCore import vtkIntArray
-from vtkmodules.vtkParallelCore import vtkMultiProcessController
-inp = self.GetInput()
-out = self.GetOutput()
-out.ShallowCopy(inp)
-rank = vtkMultiProcessController.GetGlobalController().GetLocalProcessId()
-held = vtkIntArray()
-held.SetName("HeldBy")
-held.SetNumberOfTuples(out.GetNumberOfCells())
-held.Fill(rank)
-out.GetCellData().AddArray(held)
-"""
-
-
-def fetched(proxy):
-    return sm.Fetch(ProgrammableFilter(Input=proxy, Script=RANK))
-
-
-def per_source(data, arrays):
-    """Per SourceTriangle: the triangles' [area, *values of `arrays`], in output order."""
-    sizes = vtkCellSizeFilter()
-    sizes.SetInputData(data)
-    sizes.Update()
-    area = sizes.GetOutput().GetCellData().GetArray("Area")
-    source = data.GetCellData().GetArray("SourceTriangle")
-    values = [data.GetCellData().GetArray(a) for a in arrays]
-    out = {}
-    for c in range(data.GetNumberOfCells()):
-        row = [area.GetValue(c)]
-        for v in values:
-            row += [v.GetComponent(c, k) for k in range(v.GetNumberOfComponents())]
-        out.setdefault(str(int(source.GetTuple1(c))), []).append(row)
-    return out
-
-
-def holders(data):
-    held = data.GetCellData().GetArray("HeldBy")
-    counts = {}
-    for c in range(data.GetNumberOfCells()):
-        counts[held.GetValue(c)] = counts.get(held.GetValue(c), 0) + 1
-    return {str(k): v for k, v in sorted(counts.items())}
-
-
-def field(data, name):
-    a = data.GetFieldData().GetAbstractArray(name)
-    return [a.GetVariantValue(i).ToString() for i in range(a.GetNumberOfValues())] if a else None
-
+args, (mesh, surface, rays, circles, control) = start(__doc__, globals())
 
 traced = TraceSurfaceCurves(Surface=surface, Curves=control)
 # The gathered path's message 0 (the same curves on the surface held by rank 0 alone), which
@@ -186,21 +116,6 @@ pointed = LabelArrangementCells(Input=arrangement, ZeroCellMode="Point",
 data = sm.Fetch(pointed)
 results["pointed"] = {"CellLabels": field(data, "CellLabels"),
                       "ShapeConsistent": field(data, "ShapeConsistent")}
-
-
-def lines(data):
-    """Each polyline as [closed, held by, [[x, y, z, TriangleId], ...]]."""
-    closed = data.GetCellData().GetArray("Closed")
-    held = data.GetCellData().GetArray("HeldBy")
-    triangle = data.GetPointData().GetArray("TriangleId")
-    out = []
-    for c in range(data.GetNumberOfCells()):
-        ids = data.GetCell(c).GetPointIds()
-        n = ids.GetNumberOfIds() - (1 if closed.GetValue(c) else 0)
-        points = [list(data.GetPoint(ids.GetId(k))) +
-                  [int(triangle.GetTuple1(ids.GetId(k))) if triangle else -1] for k in range(n)]
-        out.append([int(closed.GetValue(c)), held.GetValue(c), points])
-    return out
 
 
 # Port 1: the region's boundary loops (whole on rank 0 when on pieces).

@@ -10,10 +10,10 @@ The shared scans (../shared/data, or BOOLSURF_SHARED_DATA) add one scan when pre
 import json
 import os
 import shutil
-import subprocess
 import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import scratch  # noqa: E402
+from mpi_pieces_compare import run_limited  # noqa: E402
 
 source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
                             os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
@@ -23,8 +23,6 @@ pvbatch = shutil.which("pvbatch")
 if not mpiexec or not pvbatch:
     print("mpiexec or pvbatch not found: nothing to test")
     sys.exit(0)
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1")
 out = scratch.folder("boolsurf-pieces-")
 shared = os.environ.get("BOOLSURF_SHARED_DATA") or os.path.join(source_dir, "..", "shared", "data")
 scan = os.path.join(shared, "meshes", "fertility.ply")
@@ -34,19 +32,7 @@ if not os.path.exists(scan):
 
 
 def run(command, what):
-    # Its own process group, so a hung run's ranks can all be stopped.
-    process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True, start_new_session=True)
-    try:
-        output, _ = process.communicate(timeout=300)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, 9)
-        process.communicate()
-        raise SystemExit("%s: no answer within 300 s (a rank waits for another)" % what)
-    if process.returncode != 0:
-        print(output)
-        raise SystemExit("%s: pvbatch failed (exit code %d)" % (what, process.returncode))
-    return output
+    return run_limited(command, what, 300)
 
 
 def pieces(ranks):

@@ -12,90 +12,14 @@ curves keeps the ringed piece, the LocallyShortest method is traced on the gathe
 (warning), and a curve naming a triangle no rank holds fails on every rank with an error naming
 it. Each run has a time limit: a rank left waiting fails the test.
 """
-import json
 import os
 import shutil
-import subprocess
 import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import scratch  # noqa: E402
+from mpi_pieces_compare import PvbatchRuns, same_by_source, same_loops  # noqa: E402
 
-source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
-                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-script = os.path.join(source_dir, "Testing", "Python", "MpiPiecesChain.py")
-mpiexec = shutil.which("mpiexec")
-pvbatch = shutil.which("pvbatch")
-if not mpiexec or not pvbatch:
-    print("mpiexec or pvbatch not found: nothing to test")
-    sys.exit(0)
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1")
-out = scratch.folder("boolsurf-pieces-chain-")
-
-
-def run(ranks, partitions=None):
-    path = os.path.join(out, "r%d%s.json" % (ranks, "p%d" % partitions if partitions else ""))
-    command = [mpiexec, "-np", str(ranks), pvbatch, script, "--json", path]
-    if partitions:
-        command += ["--partitions", str(partitions)]
-    # Its own process group, so a hung run's ranks can all be stopped.
-    process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True, start_new_session=True)
-    try:
-        output, _ = process.communicate(timeout=240)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, 9)
-        process.communicate()
-        raise SystemExit("%d ranks: no answer within 240 s (a rank waits for another)" % ranks)
-    if process.returncode != 0 or not os.path.exists(path):
-        print(output)
-        raise SystemExit("%d ranks: pvbatch failed (exit code %d)" % (ranks, process.returncode))
-    with open(path) as f:
-        return json.load(f), output
-
-
-def same_by_source(a, b, where, ordered):
-    """Per source triangle: the same rows (area to 1e-12, every other value exactly), in the
-    same order when `ordered` (the refined surface), else as sets (the one-rank region lists a
-    source triangle's triangles in its extractor's order)."""
-    assert a.keys() == b.keys(), (where, sorted(set(a) ^ set(b))[:10])
-    for source in a:
-        rows_a, rows_b = a[source], b[source]
-        if not ordered:
-            rows_a = sorted(rows_a, key=lambda row: (row[1:], row[0]))
-            rows_b = sorted(rows_b, key=lambda row: (row[1:], row[0]))
-        assert len(rows_a) == len(rows_b), (where, source, rows_a, rows_b)
-        for x, y in zip(rows_a, rows_b):
-            assert abs(x[0] - y[0]) <= 1e-12, (where, source, x, y)
-            assert x[1:] == y[1:], (where, source, x, y)
-
-
-def canonical_loops(lines):
-    """The loops as point sequences, each closed one started at its lowest point (then the
-    lowest after it), sorted: the pieces' port 1 starts loops there and orders them so; the
-    one-rank port 1 starts each where its first patch starts."""
-    out = []
-    for closed, _, points in lines:
-        points = [tuple(p) for p in points]
-        if closed:
-            m = len(points)
-            best = min(range(m), key=lambda k: (points[k][:3], points[(k + 1) % m][:3]))
-            points = points[best:] + points[:best]
-        out.append((closed, points))
-    return sorted(out)
-
-
-def same_loops(got, expected, where):
-    """The same loops: the same points in the same order (positions to 1e-12; the triangle
-    named may be the other one of an edge a point lies on)."""
-    a, b = canonical_loops(got), canonical_loops(expected)
-    assert len(a) == len(b), (where, len(a), len(b))
-    for (closed_a, points_a), (closed_b, points_b) in zip(a, b):
-        assert closed_a == closed_b and len(points_a) == len(points_b), (where, len(points_a),
-                                                                         len(points_b))
-        for x, y in zip(points_a, points_b):
-            assert max(abs(u - v) for u, v in zip(x[:3], y[:3])) <= 1e-12, (where, x, y)
-
+runs = PvbatchRuns("MpiPiecesChain.py", "boolsurf-pieces-chain-")
+run = runs.run
 
 serial, _ = run(1)
 assert serial["boundary"]["lines"], "one rank: the union has a boundary"
@@ -170,4 +94,4 @@ for ranks, partitions in ((2, None), (3, None), (3, 2)):
     assert "comes from Surface Arrangement run on each rank's piece" in output, output
     print("%d ranks, %d holding triangles: Surface Arrangement, labels and Boolean on the "
           "pieces give the one-rank answers" % (ranks, holding))
-shutil.rmtree(out, ignore_errors=True)
+shutil.rmtree(runs.out, ignore_errors=True)

@@ -12,6 +12,7 @@ import subprocess
 import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import scratch  # noqa: E402
+from mpi_pieces_compare import MPI_ENV, run_limited  # noqa: E402
 
 source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
                             os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
@@ -21,8 +22,6 @@ pvbatch = shutil.which("pvbatch")
 if not mpiexec or not pvbatch:
     print("mpiexec or pvbatch not found: nothing to test")
     sys.exit(0)
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1")
 out = scratch.folder("boolsurf-mpi-")
 
 
@@ -31,20 +30,11 @@ def run(ranks, distribute):
     command = [mpiexec, "-np", str(ranks), pvbatch, script, "--json", path]
     if distribute:
         command.append("--distribute")
-    # Its own process group, so a hung run's ranks can all be stopped.
-    process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True, start_new_session=True)
-    try:
-        output, _ = process.communicate(timeout=240)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, 9)
-        process.communicate()
-        raise SystemExit("%d ranks%s: no answer within 240 s (a rank waits for another)"
-                         % (ranks, " (distributed)" if distribute else ""))
-    if process.returncode != 0 or not os.path.exists(path):
+    what = "%d ranks%s" % (ranks, " (distributed)" if distribute else "")
+    output = run_limited(command, what)
+    if not os.path.exists(path):
         print(output)
-        raise SystemExit("%d ranks%s: pvbatch failed (exit code %d)"
-                         % (ranks, " (distributed)" if distribute else "", process.returncode))
+        raise SystemExit("%s: pvbatch wrote no JSON" % what)
     with open(path) as f:
         return json.load(f)
 
@@ -85,7 +75,7 @@ def demo(ranks):
     command = [os.path.join(source_dir, "Testing", "run-with-xvfb.sh"), mpiexec, "-np",
                str(ranks), pvbatch, os.path.join(source_dir, "Examples", "demo.py"),
                "--output", folder]
-    done = subprocess.run(command, env=env, timeout=240, stdout=subprocess.PIPE,
+    done = subprocess.run(command, env=MPI_ENV, timeout=240, stdout=subprocess.PIPE,
                           stderr=subprocess.STDOUT, text=True)
     lines = [line for line in done.stdout.splitlines() if "triangles, area" in line]
     assert done.returncode == 0 and lines, done.stdout

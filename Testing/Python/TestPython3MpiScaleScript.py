@@ -8,10 +8,10 @@ the messages), each rank holding part of the surface.
 import json
 import os
 import shutil
-import subprocess
 import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import scratch  # noqa: E402
+from mpi_pieces_compare import run_limited  # noqa: E402
 
 source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
                             os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
@@ -20,26 +20,12 @@ mpiexec, pvbatch, pvpython = (shutil.which(p) for p in ("mpiexec", "pvbatch", "p
 if not mpiexec or not pvbatch or not pvpython:
     print("mpiexec, pvbatch or pvpython not found: nothing to test")
     sys.exit(0)
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1")
 out = scratch.folder("boolsurf-mpi-scale-")
 name = os.path.join(out, "bunny")
 
 
 def run(command, what):
-    # Its own process group, so a hung run's ranks can all be stopped.
-    process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True, start_new_session=True)
-    try:
-        output, _ = process.communicate(timeout=240)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, 9)
-        process.communicate()
-        raise SystemExit("%s: no answer within 240 s" % what)
-    if process.returncode != 0:
-        print(output)
-        raise SystemExit("%s failed (exit code %d)" % (what, process.returncode))
-    return output
+    return run_limited(command, what)
 
 
 run([pvpython, os.path.join(bench, "mpi_scale_prepare.py"), "--mesh",
