@@ -98,8 +98,15 @@ bool SplitByChords(ChordTriangulation& tri, const LocalArrangement& arr)
 {
   // The polygons (the first `count`) in vectors kept per thread: an edit refines thousands of
   // triangles, and allocating these small vectors anew was most of the fast path's time.
-  thread_local std::vector<std::vector<int>> polygons;
-  thread_local std::vector<int> first, second;
+  struct Scratch
+  {
+    std::vector<std::vector<int>> Polygons;
+    std::vector<int> First, Second;
+  };
+  thread_local Scratch scratch; // one thread-local lookup per call
+  std::vector<std::vector<int>>& polygons = scratch.Polygons;
+  std::vector<int>& first = scratch.First;
+  std::vector<int>& second = scratch.Second;
   if (polygons.empty())
   {
     polygons.resize(1);

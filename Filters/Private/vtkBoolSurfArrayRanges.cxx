@@ -61,7 +61,8 @@ struct BlockRanges
 
 /// ScanBlock for arrays of `C` components: the accumulators in locals (registers), not in the
 /// block's vectors that every value would otherwise be read from and written to. The same
-/// comparisons in the same order as the general loop, so the same numbers.
+/// comparisons in the same order as the general loop, so the same numbers. The squared norms
+/// are summed only where they are stored (several components of a floating-point type).
 template <int C, class T>
 void ScanBlockOf(const T* values, vtkIdType first, vtkIdType last, BlockRanges<T>& r)
 {
@@ -71,6 +72,7 @@ void ScanBlockOf(const T* values, vtkIdType first, vtkIdType last, BlockRanges<T
     lo[c] = r.Values[2 * c];
     hi[c] = r.Values[2 * c + 1];
   }
+  constexpr bool norms = C > 1 && std::is_floating_point<T>::value;
   double norm0 = r.Norm2[0], norm1 = r.Norm2[1];
   bool finite = r.Finite;
   for (vtkIdType t = first; t < last; ++t)
@@ -86,11 +88,17 @@ void ScanBlockOf(const T* values, vtkIdType first, vtkIdType last, BlockRanges<T
       }
       lo[c] = std::min(lo[c], value);
       hi[c] = std::max(hi[c], value);
-      const double d = static_cast<double>(value);
-      squaredSum += d * d;
+      if constexpr (norms)
+      {
+        const double d = static_cast<double>(value);
+        squaredSum += d * d;
+      }
     }
-    norm0 = std::min(norm0, squaredSum);
-    norm1 = std::max(norm1, squaredSum);
+    if constexpr (norms)
+    {
+      norm0 = std::min(norm0, squaredSum);
+      norm1 = std::max(norm1, squaredSum);
+    }
   }
   for (int c = 0; c < C; ++c)
   {
