@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -43,8 +44,8 @@ public:
   }
 
   /// Triangulates a simple counter-clockwise polygon by ear clipping. An ear needs a strictly
-  /// convex tip and no other polygon vertex in its closed triangle.
-  bool EarClip(std::vector<int> poly)
+  /// convex tip and no other polygon vertex in its closed triangle. Consumes `poly`.
+  bool EarClip(std::vector<int>& poly)
   {
     while (poly.size() > 3)
     {
@@ -95,11 +96,27 @@ public:
 // endpoints (non-adjacent); a chord already present as a polygon side is a duplicate.
 bool SplitByChords(ChordTriangulation& tri, const LocalArrangement& arr)
 {
-  std::vector<std::vector<int>> polygons{ arr.Boundary };
+  // The polygons (the first `count`) in vectors kept per thread: an edit refines thousands of
+  // triangles, and allocating these small vectors anew was most of the fast path's time.
+  struct Scratch
+  {
+    std::vector<std::vector<int>> Polygons;
+    std::vector<int> First, Second;
+  };
+  thread_local Scratch scratch; // one thread-local lookup per call
+  std::vector<std::vector<int>>& polygons = scratch.Polygons;
+  std::vector<int>& first = scratch.First;
+  std::vector<int>& second = scratch.Second;
+  if (polygons.empty())
+  {
+    polygons.resize(1);
+  }
+  polygons[0].assign(arr.Boundary.begin(), arr.Boundary.end());
+  std::size_t count = 1;
   for (const std::vector<int>& chain : arr.Chains)
   {
     const int a = chain.front(), b = chain.back();
-    for (size_t pi = 0; pi < polygons.size(); ++pi)
+    for (size_t pi = 0; pi < count; ++pi)
     {
       std::vector<int>& poly = polygons[pi];
       const int n = static_cast<int>(poly.size());
@@ -113,7 +130,8 @@ bool SplitByChords(ChordTriangulation& tri, const LocalArrangement& arr)
       {
         break; // already a side
       }
-      std::vector<int> first, second;
+      first.clear();
+      second.clear();
       for (int i = ia;; i = (i + 1) % n)
       {
         first.push_back(poly[i]);
@@ -126,14 +144,19 @@ bool SplitByChords(ChordTriangulation& tri, const LocalArrangement& arr)
         if (i == ia)
           break;
       }
-      poly = std::move(first);
-      polygons.push_back(std::move(second));
+      poly.swap(first);
+      if (polygons.size() == count)
+      {
+        polygons.emplace_back();
+      }
+      polygons[count].swap(second);
+      ++count;
       break;
     }
   }
-  for (const std::vector<int>& poly : polygons)
+  for (std::size_t pi = 0; pi < count; ++pi)
   {
-    if (!tri.EarClip(poly))
+    if (!tri.EarClip(polygons[pi]))
     {
       return false;
     }

@@ -59,9 +59,74 @@ struct BlockRanges
   }
 };
 
+/// ScanBlock for arrays of `C` components: the accumulators in locals (registers), not in the
+/// block's vectors that every value would otherwise be read from and written to. The same
+/// comparisons in the same order as the general loop, so the same numbers. The squared norms
+/// are summed only where they are stored (several components of a floating-point type).
+template <int C, class T>
+void ScanBlockOf(const T* values, vtkIdType first, vtkIdType last, BlockRanges<T>& r)
+{
+  T lo[C], hi[C];
+  for (int c = 0; c < C; ++c)
+  {
+    lo[c] = r.Values[2 * c];
+    hi[c] = r.Values[2 * c + 1];
+  }
+  constexpr bool norms = C > 1 && std::is_floating_point<T>::value;
+  double norm0 = r.Norm2[0], norm1 = r.Norm2[1];
+  bool finite = r.Finite;
+  for (vtkIdType t = first; t < last; ++t)
+  {
+    const T* tuple = values + t * C;
+    double squaredSum = 0.0;
+    for (int c = 0; c < C; ++c)
+    {
+      const T value = tuple[c];
+      if constexpr (std::is_floating_point<T>::value)
+      {
+        finite = finite & static_cast<bool>(std::isfinite(value));
+      }
+      lo[c] = std::min(lo[c], value);
+      hi[c] = std::max(hi[c], value);
+      if constexpr (norms)
+      {
+        const double d = static_cast<double>(value);
+        squaredSum += d * d;
+      }
+    }
+    if constexpr (norms)
+    {
+      norm0 = std::min(norm0, squaredSum);
+      norm1 = std::max(norm1, squaredSum);
+    }
+  }
+  for (int c = 0; c < C; ++c)
+  {
+    r.Values[2 * c] = lo[c];
+    r.Values[2 * c + 1] = hi[c];
+  }
+  r.Norm2[0] = norm0;
+  r.Norm2[1] = norm1;
+  r.Finite = finite;
+}
+
 template <class T>
 void ScanBlock(const T* values, int components, vtkIdType first, vtkIdType last, BlockRanges<T>& r)
 {
+  switch (components)
+  {
+    case 1:
+      ScanBlockOf<1>(values, first, last, r);
+      return;
+    case 2:
+      ScanBlockOf<2>(values, first, last, r);
+      return;
+    case 3:
+      ScanBlockOf<3>(values, first, last, r);
+      return;
+    default:
+      break;
+  }
   for (vtkIdType t = first; t < last; ++t)
   {
     const T* tuple = values + t * components;

@@ -7,24 +7,31 @@
 
 #include "vtkBoolSurf.h"
 #include "vtkBoolSurfArrangement.h"
+#include "vtkBoolSurfArrayRanges.h" // private header of the module
 #include "vtkBoolSurfBoolean.h"
 #include "vtkBoolSurfLabeling.h"
 #include "vtkBoolSurfTraceCurves.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkFloatArray.h>
 #include <vtkInformation.h>
+#include <vtkIntArray.h>
+#include <vtkLongLongArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <random>
 #include <string>
 
 namespace
@@ -197,5 +204,42 @@ TEST(OutputRanges, EveryPortCarriesTheRangesVTKComputes)
     ExpectAttributeRanges(output->GetPointData(), what + " point data");
     ExpectAttributeRanges(output->GetCellData(), what + " cell data");
     ExpectAttributeRanges(output->GetFieldData(), what + " field data");
+  }
+}
+
+// The scan itself on arrays no filter writes: one to four components (the scan keeps one, two
+// and three components' accumulators in registers, more in vectors), each value type the
+// outputs use, several blocks of tuples, ties between 0 and -0 (the first of equal values is
+// the range's), values of both signs.
+TEST(OutputRanges, ScannedRangesAreVTKsForEveryComponentCount)
+{
+  std::mt19937 random(60);
+  std::uniform_int_distribution<int> value(-40, 40);
+  const vtkIdType tuples = 70000; // three blocks of the scan
+  const auto fill = [&](vtkDataArray* array, int components, bool zeros)
+  {
+    array->SetNumberOfComponents(components);
+    array->SetNumberOfTuples(tuples);
+    for (vtkIdType i = 0; i < tuples * components; ++i)
+    {
+      const int v = value(random);
+      array->SetVariantValue(i, zeros && v % 3 == 0 ? (v % 2 ? -0.0 : 0.0) : v * 0.37);
+    }
+  };
+  for (int components = 1; components <= 4; ++components)
+  {
+    const std::vector<vtkSmartPointer<vtkDataArray>> arrays{ vtkSmartPointer<vtkDoubleArray>::New(),
+      vtkSmartPointer<vtkFloatArray>::New(),
+      vtkSmartPointer<vtkIntArray>::New(),
+      vtkSmartPointer<vtkLongLongArray>::New(),
+      vtkSmartPointer<vtkUnsignedCharArray>::New() };
+    for (const vtkSmartPointer<vtkDataArray>& array : arrays)
+    {
+      fill(
+        array, components, array->GetDataType() == VTK_DOUBLE || array->GetDataType() == VTK_FLOAT);
+      boolsurf::CacheArrayRanges(array, 2);
+      ExpectRangesAsComputed(array,
+        std::string(array->GetClassName()) + " of " + std::to_string(components) + " components");
+    }
   }
 }
