@@ -49,17 +49,24 @@ def barycentric_in(mesh, t, x):
 def subdivided_versions(coarse, fine, versions):
     """The scene placed on `coarse`, on `fine` (vtkLinearSubdivisionFilter once: the children of
     coarse triangle t are fine triangles 4t .. 4t + 3): each control point in the child holding
-    it, its barycentric (u, v) there clamped into the child."""
+    it, its barycentric (u, v) there clamped into the child (the subdivided mesh's midpoints are
+    rounded to floats, so a point near a child's edge may lie off it by about 1e-6)."""
     out = []
     for points, triangles, weights, sizes in versions:
         mapped_triangles, mapped_weights = [], []
         for i, t in enumerate(triangles):
-            x = points[3 * i:3 * i + 3]
+            # The point as its triangle and weights name it (its listed position may be that of
+            # a neighbouring triangle's form, off this triangle's plane by rounding).
+            ids = coarse.GetCell(t).GetPointIds()
+            a, b, c = (coarse.GetPoint(ids.GetId(k)) for k in range(3))
+            u, v = weights[2 * i], weights[2 * i + 1]
+            x = [(1 - u - v) * a[k] + u * b[k] + v * c[k] for k in range(3)]
             best = min((barycentric_in(fine, 4 * t + k, x) + (4 * t + k,) for k in range(4)),
                        key=lambda r: r[2])
             u, v, outside, child = best
-            if outside > 1e-6:
-                raise RuntimeError("control point %d: no child of triangle %d holds it" % (i, t))
+            if outside > 1e-4:  # the midpoints are stored as floats
+                raise RuntimeError("control point %d: no child of triangle %d holds it (%g)" % (
+                    i, t, outside))
             u, v = min(max(u, 0.0), 1.0), min(max(v, 0.0), 1.0)
             if u + v > 1:
                 u, v = u / (u + v), v / (u + v)
@@ -98,9 +105,10 @@ def whole(args):
         cache = "%s-%s.json" % (args.out, scene)
         if args.subdivide == 1 and not os.path.exists(cache):
             placed = scene_versions(coarse, scene, "%s-%s-coarse.json" % (args.out, scene))
+            versions = subdivided_versions(coarse, mesh, placed)
             with open(cache, "w") as f:
                 json.dump({"scene": scene, "cells": mesh.GetNumberOfCells(),
-                           "versions": subdivided_versions(coarse, mesh, placed)}, f)
+                           "versions": versions}, f)
         versions = scene_versions(mesh, scene, cache)
         print("%s-%s.json: %d curves" % (args.out, scene, len(versions[0][3])))
 
