@@ -32,6 +32,8 @@ struct vtkBoolSurfArrangement::Internals
   boolsurf::ResultPool<boolsurf::ArrangementResult> Results;
   /// The arrangement's work buffers, shared by the pool's results (only results need two).
   std::shared_ptr<boolsurf::Arrangement::WorkBuffers> Work;
+  /// On pieces: the piece and its arrangements, kept while the surface is unchanged.
+  boolsurf::PieceArrangementState Pieces;
 };
 
 //------------------------------------------------------------------------------
@@ -165,6 +167,7 @@ bool vtkBoolSurfArrangement::ExecutePiece(const std::vector<vtkPolyData*>& local
     locals[0],
     locals[1],
     *this->ArrangementSettings,
+    this->Internal->Pieces,
     outputs[0],
     result,
     drawingStart,

@@ -125,6 +125,13 @@ constexpr const char* PieceTracingTraffic = "PieceTracingTraffic";
 /// Surface Arrangement's output on each rank's piece (field data, int: the number of
 /// ranks): the output is one rank's part of the refined surface, not the whole.
 constexpr const char* ArrangementOnPieces = "ArrangementOnPieces";
+/// Surface Arrangement's output on each rank's piece (field data, doubles, one tuple,
+/// components named): what the update kept from the last one. KeptPiece (1 when the piece, its
+/// neighbours, its ring and its mesh were kept: the surface unchanged on every rank),
+/// KeptArrangement (1 when the piece's arrangement was computed again into one on the same
+/// mesh: Core's edit path), RefinedTriangles (the piece's mesh triangles curves cross, ghosts
+/// included), OwnedTriangles, RingedTriangles.
+constexpr const char* PieceArrangementReuse = "PieceArrangementReuse";
 /// The stages run on pieces (field data, double, one tuple): the bytes this rank sent and
 /// received in this update, two components per message named <message>Sent and
 /// <message>Received (vtkBoolSurfPieceCosts.h); StageTimes holds the rank's wall times.

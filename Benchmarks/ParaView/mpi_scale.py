@@ -61,8 +61,8 @@ def moved(weights, step):
 
 
 def field_arrays(data):
-    """The field arrays a stage writes per rank: StageTimes and every *Bytes array, as
-    {array: {component: value}}."""
+    """The field arrays a stage writes per rank: StageTimes, every *Bytes array and Surface
+    Arrangement's PieceArrangementReuse (what an edit kept), as {array: {component: value}}."""
     out = {}
     if data is None:
         return out
@@ -72,7 +72,7 @@ def field_arrays(data):
         if not array or not array.GetName() or array.GetNumberOfTuples() < 1:
             continue
         name = array.GetName()
-        if name != "StageTimes" and not name.endswith("Bytes"):
+        if name not in ("StageTimes", "PieceArrangementReuse") and not name.endswith("Bytes"):
             continue
         out[name] = {array.GetComponentName(k) or str(k): array.GetComponent(0, k)
                      for k in range(array.GetNumberOfComponents())}
@@ -290,6 +290,14 @@ def print_run(result):
         steps = row["edit"]["stage_times"]["arrangement"]
         print("  rank %d: %s" % (row["rank"], ", ".join("%s %.0f" % (k, v)
                                                         for k, v in steps.items())))
+    if result["ranks"] > 1:
+        print("what each edit kept (PieceArrangementReuse: piece, arrangement computed in place):")
+        for r in result["records"]:
+            kept = [u["stages"]["arrangement"]["arrays"].get("PieceArrangementReuse", {})
+                    for u in r["updates"][1:]]
+            print("  rank %d: %s" % (r["rank"], " ".join(
+                "%d/%d" % (k.get("KeptPiece", -1), k.get("KeptArrangement", -1))
+                for k in kept)))
 
 
 def human(n):

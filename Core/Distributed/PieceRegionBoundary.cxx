@@ -6,7 +6,6 @@
 #include <functional>
 #include <iterator>
 #include <map>
-#include <memory>
 #include <set>
 #include <utility>
 
@@ -22,42 +21,10 @@ enum KeyLocation : std::int64_t
   FaceKey = 2
 };
 
-/// The triangles around each local vertex (CSR), for segments running between two vertices.
-struct VertexTriangles
-{
-  std::vector<int> Offset, Triangles;
-  explicit VertexTriangles(const TriangleMesh& mesh)
-  {
-    Offset.assign(mesh.GetNumberOfVertices() + 1, 0);
-    for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
-    {
-      for (int v : mesh.GetTriangle(t))
-      {
-        ++Offset[v + 1];
-      }
-    }
-    for (std::size_t v = 1; v < Offset.size(); ++v)
-    {
-      Offset[v] += Offset[v - 1];
-    }
-    Triangles.resize(Offset.back());
-    std::vector<int> next(Offset.begin(), Offset.end() - 1);
-    for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
-    {
-      for (int v : mesh.GetTriangle(t))
-      {
-        Triangles[next[v]++] = t;
-      }
-    }
-  }
-};
-
-/// The piece's triangles holding refined point p (local ids, ascending, at most a few).
-/// `around` is read for a point at a vertex only (the callers build it before the first one).
-void TrianglesAt(const TriangleMesh& mesh,
-  const VertexTriangles* around,
-  const CanonicalPoint& c,
-  std::vector<int>& out)
+/// The piece's triangles holding refined point p (local ids, ascending, at most a few). At a
+/// vertex, its usable triangles from the mesh's corner lists (built with the mesh: a table of
+/// its own cost a pass over the piece on every update).
+void TrianglesAt(const TriangleMesh& mesh, const CanonicalPoint& c, std::vector<int>& out)
 {
   out.clear();
   switch (c.Location)
@@ -77,8 +44,10 @@ void TrianglesAt(const TriangleMesh& mesh,
       break;
     }
     case PointLocation::Vertex:
-      out.assign(around->Triangles.begin() + around->Offset[c.Id],
-        around->Triangles.begin() + around->Offset[c.Id + 1]);
+      for (int corner : mesh.GetVertexCorners(c.Id))
+      {
+        out.push_back(corner / 3);
+      }
       break;
   }
   std::sort(out.begin(), out.end());
@@ -262,7 +231,6 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
   // read, since on a piece one of them may be a cell of ghosts only, with no global number.
   std::map<std::pair<int, int>, int> given; // directed (point, point) -> how many times
   std::vector<int> from, at, common;
-  std::unique_ptr<VertexTriangles> around;
   for (const ArrangementPatch& patch : arr.Patches)
   {
     for (std::size_t i = 0; i + 1 < patch.Points.size(); ++i)
@@ -273,12 +241,8 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
         continue;
       }
       const CanonicalPoint ca = arr.GetPointOnMesh(a), cb = arr.GetPointOnMesh(b);
-      if (!around && (ca.Location == PointLocation::Vertex || cb.Location == PointLocation::Vertex))
-      {
-        around = std::make_unique<VertexTriangles>(mesh);
-      }
-      TrianglesAt(mesh, around.get(), ca, from);
-      TrianglesAt(mesh, around.get(), cb, at);
+      TrianglesAt(mesh, ca, from);
+      TrianglesAt(mesh, cb, at);
       common.clear();
       std::set_intersection(
         from.begin(), from.end(), at.begin(), at.end(), std::back_inserter(common));
@@ -311,7 +275,7 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
   // are chained through such points, and end at the others (on a border with another piece).
   const auto inside = [&](int p)
   {
-    TrianglesAt(mesh, around.get(), arr.GetPointOnMesh(p), at);
+    TrianglesAt(mesh, arr.GetPointOnMesh(p), at);
     return std::all_of(at.begin(), at.end(), [&](int t) { return piece.Owned[t] != 0; });
   };
   std::vector<BoundaryRun> segments;
@@ -325,10 +289,6 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
       BoundaryRun run;
       run.Points = { RecordOf(piece, arr, entry.first.first),
         RecordOf(piece, arr, entry.first.second) };
-      if (!around)
-      {
-        around = std::make_unique<VertexTriangles>(mesh);
-      }
       for (int k = 0; k < 2; ++k)
       {
         if (inside(k == 0 ? entry.first.first : entry.first.second))

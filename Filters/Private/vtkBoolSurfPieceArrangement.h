@@ -27,6 +27,7 @@
 #include "Distributed/PieceMesh.h"
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,16 @@ public:
 
   /// The piece's own arrangement (on piece.Mesh; cells are local).
   const boolsurf::Arrangement& GetArrangement() const { return this->Local; }
+  /// The piece arrangement's work buffers (shared with other runs: nothing of a result is in
+  /// them, Arrangement::Work).
+  std::shared_ptr<boolsurf::Arrangement::WorkBuffers>& WorkBuffers() { return this->Local.Work; }
+  /// True when the next Run on `piece` computes again into an arrangement computed on its
+  /// mesh: Core's edit path, which refines and refills only what the curves touch.
+  bool KeepsArrangementOf(const boolsurf::PieceMesh& piece) const
+  {
+    return this->Local.LayoutMeshSerial != 0 &&
+      this->Local.LayoutMeshSerial == piece.Mesh.GetSerial();
+  }
   /// The merged arrangement as this rank has it: GlobalCellOfLocal holds this rank's row only
   /// (GetGlobalCell), CellLowestTriangle is empty; the cell graph, plugs, components and zero
   /// nodes are whole (the same on every rank).

@@ -15,6 +15,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTypeInt64Array.h>
 
 #include <algorithm>
 #include <string>
@@ -33,42 +34,70 @@ void WritePieceTriangles(const PieceMesh& piece,
   output->Initialize();
   const Arrangement& arr = run.GetArrangement();
   const TriangleMesh& mesh = piece.Mesh;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkIntArray> cellOf, source;
-  cellOf->SetName(names::ArrangementCell);
-  source->SetName(names::SourceTriangle);
-  vtkNew<vtkIdTypeArray> triangleId;
-  vtkNew<vtkDoubleArray> barycentric;
-  triangleId->SetName(names::TriangleId);
-  barycentric->SetName(names::Barycentric);
-  barycentric->SetNumberOfComponents(2);
+  const vtkIdType n = static_cast<vtkIdType>(triangles.size());
   // Output point of each refined point, made on first use (a piece uses few of the refined
-  // points of its ring).
+  // points of its ring), and the connectivity, in one pass; then the points in that order.
+  // Arrays are sized once and written through their pointers (an edit of a large piece
+  // writes millions of values: InsertNext* per value cost more than the arrangement's edit).
   std::vector<vtkIdType> outputPoint(static_cast<std::size_t>(arr.GetNumberOfPoints()), -1);
-  for (std::size_t i = 0; i < triangles.size(); ++i)
+  std::vector<int> refinedPoint; // per output point
+  vtkNew<vtkTypeInt64Array> offsets, connectivity;
+  offsets->SetNumberOfValues(n + 1);
+  connectivity->SetNumberOfValues(3 * n);
+  vtkTypeInt64* offset = offsets->GetPointer(0);
+  vtkTypeInt64* corner = connectivity->GetPointer(0);
+  for (vtkIdType i = 0; i < n; ++i)
   {
-    const Triangle corners = arr.GetTriangle(mesh, triangles[i]);
-    vtkIdType ids[3];
+    const Triangle corners = arr.GetTriangle(mesh, triangles[static_cast<std::size_t>(i)]);
+    offset[i] = 3 * i;
     for (int k = 0; k < 3; ++k)
     {
       vtkIdType& id = outputPoint[corners[k]];
       if (id < 0)
       {
-        const Vec3 x = arr.GetPosition(mesh, corners[k]);
-        id = points->InsertNextPoint(x.x, x.y, x.z);
-        // On global triangle ids; a mesh vertex names one of its triangles in the piece.
-        const SurfacePoint p = arr.GetPointSurface(mesh, corners[k]);
-        triangleId->InsertNextValue(piece.GlobalTriangle[p.Triangle]);
-        barycentric->InsertNextTuple2(p.U, p.V);
+        id = static_cast<vtkIdType>(refinedPoint.size());
+        refinedPoint.push_back(corners[k]);
       }
-      ids[k] = id;
+      corner[3 * i + k] = id;
     }
-    polys->InsertNextCell(3, ids);
-    cellOf->InsertNextValue(cells[i]);
-    source->InsertNextValue(sources[i]);
   }
+  offset[n] = 3 * n;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const vtkIdType m = static_cast<vtkIdType>(refinedPoint.size());
+  points->SetNumberOfPoints(m);
+  vtkNew<vtkIdTypeArray> triangleId;
+  vtkNew<vtkDoubleArray> barycentric;
+  triangleId->SetName(names::TriangleId);
+  barycentric->SetName(names::Barycentric);
+  barycentric->SetNumberOfComponents(2);
+  triangleId->SetNumberOfValues(m);
+  barycentric->SetNumberOfTuples(m);
+  double* position = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
+  vtkIdType* named = triangleId->GetPointer(0);
+  double* uv = barycentric->GetPointer(0);
+  for (vtkIdType q = 0; q < m; ++q)
+  {
+    const int p = refinedPoint[static_cast<std::size_t>(q)];
+    const Vec3 x = arr.GetPosition(mesh, p);
+    position[3 * q] = x.x;
+    position[3 * q + 1] = x.y;
+    position[3 * q + 2] = x.z;
+    // On global triangle ids; a mesh vertex names one of its triangles in the piece.
+    const SurfacePoint s = arr.GetPointSurface(mesh, p);
+    named[q] = piece.GlobalTriangle[s.Triangle];
+    uv[2 * q] = s.U;
+    uv[2 * q + 1] = s.V;
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  vtkNew<vtkIntArray> cellOf, source;
+  cellOf->SetName(names::ArrangementCell);
+  source->SetName(names::SourceTriangle);
+  cellOf->SetNumberOfValues(n);
+  source->SetNumberOfValues(n);
+  std::copy(cells.begin(), cells.end(), cellOf->GetPointer(0));
+  std::copy(sources.begin(), sources.end(), source->GetPointer(0));
   output->SetPoints(points);
   output->SetPolys(polys);
   output->GetCellData()->AddArray(cellOf);
@@ -83,6 +112,9 @@ void WritePieceArrangement(const PieceMesh& piece,
 {
   const Arrangement& arr = run.GetArrangement();
   std::vector<int> triangles, sources, cells;
+  triangles.reserve(static_cast<std::size_t>(piece.NumberOfOwnedTriangles));
+  sources.reserve(triangles.capacity());
+  cells.reserve(triangles.capacity());
   // Local triangles are in ascending global order (PieceMesh), so the owned ones come out in
   // the one-rank output's order of source triangles.
   for (int t = 0; t < piece.Mesh.GetNumberOfTriangles(); ++t)

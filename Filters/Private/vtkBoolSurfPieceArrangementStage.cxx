@@ -13,7 +13,9 @@
 #include "Labeling/ArrangementLabelingInput.h"
 
 #include <vtkCellData.h>
+#include <vtkCommunicator.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkMultiProcessController.h>
@@ -122,6 +124,79 @@ vtkSmartPointer<vtkIntArray> IntField(const char* name, const std::vector<int>& 
   }
   return array;
 }
+
+/// Collective: builds this rank's piece of `local` into `state` (its neighbours, its ring, its
+/// mesh, the surface's cell per local triangle), timing the steps Piece and Ring. False on
+/// every rank, with `error`, when any rank fails; `state` is then empty.
+bool BuildPiece(vtkMultiProcessController* controller,
+  vtkPolyData* local,
+  PieceArrangementState& state,
+  PieceCosts& costs,
+  PieceStopwatch& watch,
+  std::string& error)
+{
+  state.Clear();
+  // The piece (owned triangles; its neighbour ranks; overlapping pieces refused on every rank).
+  vtkBoolSurfSurfacePiece owned;
+  if (!owned.Build(controller, local, error, state.BuildWarnings))
+  {
+    state.Clear();
+    return false;
+  }
+  costs.AddTime("Piece", watch.Lap());
+  state.BorderSent = owned.GetBuildBytesSent();
+  state.BorderReceived = owned.GetBuildBytesReceived();
+  for (const vtkBoolSurfSurfacePiece::Neighbour& n : owned.GetNeighbours())
+  {
+    state.Neighbours.push_back(n.Rank);
+  }
+
+  // Its ring of ghosts, as a mesh.
+  auto piece = std::make_shared<PieceMesh>();
+  PieceInput ringed;
+  const bool ok =
+    BuildRingedPiece(controller, local, ringed, error) && BuildPieceMesh(ringed, *piece, error);
+  if (!vtkBoolSurfPieceArrangement::AllSucceeded(controller, ok, error))
+  {
+    state.Clear();
+    return false;
+  }
+  state.RingReceived = RingBytesReceived(ringed);
+  state.SurfaceCell = std::make_shared<const std::vector<vtkIdType>>(SurfaceCells(local, *piece));
+  state.Piece = std::move(piece);
+  state.Surface = local;
+  state.SurfaceTime = local ? local->GetMTime() : 0;
+  state.HasPiece = true;
+  costs.AddTime("Ring", watch.Lap());
+  return true;
+}
+
+/// The field array PieceArrangementReuse: what this update kept (names in
+/// vtkBoolSurfArrayNames.h).
+void AddReuseField(bool keptPiece,
+  bool keptArrangement,
+  const PieceMesh& piece,
+  const Arrangement& arr,
+  vtkPolyData* output)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(names::PieceArrangementReuse);
+  const char* components[] = {
+    "KeptPiece", "KeptArrangement", "RefinedTriangles", "OwnedTriangles", "RingedTriangles"
+  };
+  const double values[] = { keptPiece ? 1.0 : 0.0,
+    keptArrangement ? 1.0 : 0.0,
+    static_cast<double>(arr.NumberOfRefinedSourceTriangles),
+    static_cast<double>(piece.NumberOfOwnedTriangles),
+    static_cast<double>(piece.Mesh.GetNumberOfTriangles()) };
+  array->SetNumberOfComponents(5);
+  for (int k = 0; k < 5; ++k)
+  {
+    array->SetComponentName(k, components[k]);
+  }
+  array->InsertNextTuple(values);
+  output->GetFieldData()->AddArray(array);
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -131,10 +206,25 @@ vtkSmartPointer<vtkIntArray> OnPiecesField(vtkMultiProcessController* controller
 }
 
 //------------------------------------------------------------------------------
+void PieceArrangementState::Clear()
+{
+  this->Surface = nullptr;
+  this->SurfaceTime = 0;
+  this->HasPiece = false;
+  this->Neighbours.clear();
+  this->BuildWarnings.clear();
+  this->BorderSent = this->BorderReceived = this->RingReceived = 0;
+  this->Piece.reset();
+  this->SurfaceCell.reset();
+  this->Results.Clear();
+}
+
+//------------------------------------------------------------------------------
 bool ArrangeOnPiece(vtkMultiProcessController* controller,
   vtkPolyData* local,
   vtkPolyData* curves,
   const ArrangementOptions& options,
+  PieceArrangementState& state,
   vtkPolyData* output,
   std::shared_ptr<PieceArrangementResult>& result,
   bool& drawingStart,
@@ -170,7 +260,7 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
     return false;
   }
   if (!ArrangeMessageOnPiece(
-        controller, local, message, options, output, result, costs, error, warnings))
+        controller, local, message, options, state, output, result, costs, error, warnings))
   {
     return false;
   }
@@ -184,6 +274,7 @@ bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
   vtkPolyData* local,
   const WireBuffer& message,
   const ArrangementOptions& options,
+  PieceArrangementState& state,
   vtkPolyData* output,
   std::shared_ptr<PieceArrangementResult>& result,
   PieceCosts& costs,
@@ -191,41 +282,59 @@ bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
   std::vector<std::string>& warnings)
 {
   PieceStopwatch watch;
-
-  // The piece (owned triangles; its neighbour ranks; overlapping pieces refused on every rank).
-  vtkBoolSurfSurfacePiece owned;
-  if (!owned.Build(controller, local, error, warnings))
-  {
-    return false;
-  }
-  costs.AddTime("Piece", watch.Lap());
-  costs.AddBytes("Border", owned.GetBuildBytesSent(), owned.GetBuildBytesReceived());
-  std::vector<int> neighbours;
-  for (const vtkBoolSurfSurfacePiece::Neighbour& n : owned.GetNeighbours())
-  {
-    neighbours.push_back(n.Rank);
-  }
-
-  // Its ring of ghosts, and the curves restricted to it.
-  result = std::make_shared<PieceArrangementResult>();
-  PieceInput ringed;
-  bool ok = BuildRingedPiece(controller, local, ringed, error) &&
-    BuildPieceMesh(ringed, result->Piece, error);
   std::vector<TracedCurve> global;
   std::vector<std::array<int, 2>> edgeTable;
-  ok = ok && UnpackTracedCurves(message, global, edgeTable, error);
+  bool ok = UnpackTracedCurves(message, global, edgeTable, error);
   if (!vtkBoolSurfPieceArrangement::AllSucceeded(controller, ok, error))
   {
     return false;
   }
-  costs.AddTime("Ring", watch.Lap());
-  costs.AddBytes("RingEstimate", 0, RingBytesReceived(ringed));
+  costs.AddTime("Unpack", watch.Lap());
+
+  // The piece, its ring and its mesh: kept while every rank's piece is the same object,
+  // unmodified (one all-reduce), else built again.
+  int same =
+    state.HasPiece && local == state.Surface && (!local || local->GetMTime() == state.SurfaceTime)
+    ? 1
+    : 0;
+  int allSame = 0;
+  controller->AllReduce(&same, &allSame, 1, vtkCommunicator::MIN_OP);
+  if (allSame)
+  {
+    costs.AddTime("Piece", watch.Lap());
+    costs.AddTime("Ring", 0.0);
+  }
+  else if (!BuildPiece(controller, local, state, costs, watch, error))
+  {
+    return false;
+  }
+  warnings.insert(warnings.end(), state.BuildWarnings.begin(), state.BuildWarnings.end());
+  costs.AddBytes("Border", allSame ? 0 : state.BorderSent, allSame ? 0 : state.BorderReceived);
+  costs.AddBytes("RingEstimate", 0, allSame ? 0 : state.RingReceived);
+
+  // The curves restricted to the piece, arranged in a result no output holds any more: on the
+  // kept mesh its arrangement is computed again in place (Core's edit path).
+  result = state.Results.Acquire();
+  result->Piece = state.Piece;
+  result->SurfaceCell = state.SurfaceCell;
+  result->Surface = local;
+  const PieceMesh& piece = *state.Piece;
+  if (state.Work)
+  {
+    result->Run.WorkBuffers() = state.Work;
+  }
+  const bool keptArrangement = result->Run.KeepsArrangementOf(piece);
   PieceCurves restricted;
   RestrictCurvesToPiece(
-    result->Piece, global, [&](int e) { return edgeTable[e]; }, restricted);
+    piece, global, [&](int e) { return edgeTable[e]; }, restricted);
   costs.AddTime("Restrict", watch.Lap());
-  if (!result->Run.Run(controller, result->Piece, restricted, neighbours, options, error))
+  ok = result->Run.Run(controller, piece, restricted, state.Neighbours, options, error);
+  state.Work = result->Run.WorkBuffers();
+  if (!ok)
   {
+    // A failed computation leaves its arrangement unspecified: none is computed again.
+    result.reset();
+    state.Results.Clear();
     return false;
   }
   watch.Lap();
@@ -234,14 +343,13 @@ bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
   result->ShapeIds = DistinctShapeIds(global);
   if (output)
   {
-    WritePieceArrangement(result->Piece, result->Run, output);
+    WritePieceArrangement(piece, result->Run, output);
     output->GetFieldData()->AddArray(
       IntField(names::NumberOfShapes, { static_cast<int>(result->ShapeIds.size()) }));
     output->GetFieldData()->AddArray(IntField(names::ShapeIds, result->ShapeIds));
     output->GetFieldData()->AddArray(OnPiecesField(controller));
+    AddReuseField(allSame != 0, keptArrangement, piece, result->Run.GetArrangement(), output);
   }
-  result->Surface = local;
-  result->SurfaceCell = SurfaceCells(local, result->Piece);
 
   // This rank's costs: the local arrangement's own stages, then the exchanges.
   const ArrangementStageTimes& t = result->Run.GetArrangement().Times;

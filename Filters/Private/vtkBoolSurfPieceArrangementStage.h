@@ -13,12 +13,19 @@
  *
  * Nothing proportional to the surface travels: the curves from rank 0, the ring and the
  * boundary records between neighbours, the cells and the cell graph to and from rank 0.
+ *
+ * Edits reuse (PieceArrangementState): while every rank's piece of the surface is the same
+ * object, unmodified (decided by one all-reduce), the piece, its neighbours, its ring and its
+ * mesh are kept, and the piece's arrangement is computed again into one computed on the same
+ * mesh, so Core's edit path refines and refills only what the curves touch, now or before
+ * (Docs/Decisions.md, "Edits reuse"). The field array PieceArrangementReuse says what was kept.
  */
 #ifndef vtkBoolSurfPieceArrangementStage_h
 #define vtkBoolSurfPieceArrangementStage_h
 
 #include "vtkBoolSurfPieceArrangement.h"
 #include "vtkBoolSurfPieceCosts.h"
+#include "vtkBoolSurfStageHandoff.h"
 
 #include "Arrangement/Arrangement.h"
 #include "Distributed/PieceMesh.h"
@@ -27,6 +34,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,14 +47,38 @@ namespace boolsurf
 /// Surface Arrangement on a piece -> Label Arrangement Cells and Surface Boolean on that piece.
 struct PieceArrangementResult
 {
-  PieceMesh Piece;
+  /// The piece's mesh, shared by the results of the updates that kept it.
+  std::shared_ptr<const PieceMesh> Piece;
   vtkBoolSurfPieceArrangement Run;
   /// The curves' distinct ShapeIds (the whole drawing's, the same on every rank).
   std::vector<int> ShapeIds;
   /// The rank's piece as it arrived, and per local triangle of Piece its cell there (-1 for a
   /// ghost): the surface's own cell arrays, carried to the owned triangles' regions.
   vtkSmartPointer<vtkPolyData> Surface;
-  std::vector<vtkIdType> SurfaceCell;
+  std::shared_ptr<const std::vector<vtkIdType>> SurfaceCell;
+};
+
+/// What Surface Arrangement keeps between updates on pieces while this rank's piece of the
+/// surface is the same object, unmodified, on every rank: what the piece's build found (the
+/// neighbour ranks, its notes, its bytes), the ringed piece's mesh and the cells of the
+/// surface per local triangle, and the results of the last updates, whose arrangements an edit
+/// computes again in place (pooled: one that no output holds any more).
+struct PieceArrangementState
+{
+  vtkPolyData* Surface = nullptr; ///< compared, never dereferenced
+  vtkMTimeType SurfaceTime = 0;
+  bool HasPiece = false;
+  std::vector<int> Neighbours;
+  std::vector<std::string> BuildWarnings;
+  std::size_t BorderSent = 0, BorderReceived = 0, RingReceived = 0;
+  std::shared_ptr<const PieceMesh> Piece;
+  std::shared_ptr<const std::vector<vtkIdType>> SurfaceCell;
+  ResultPool<PieceArrangementResult> Results;
+  /// The arrangement's work buffers, shared by the pooled results.
+  std::shared_ptr<Arrangement::WorkBuffers> Work;
+
+  /// Forgets the piece and the results (the surface changed, or a build failed).
+  void Clear();
 };
 
 /// The arrays of the one-rank port 0 that a piece's output does not have yet, named for the
@@ -54,7 +86,8 @@ struct PieceArrangementResult
 extern const char* const ArraysNotOnPieces;
 
 /// Collective: Surface Arrangement on this rank's piece `local` with the curves `curves` (Trace
-/// Surface Curves' output; read on rank 0 only). Fills `output` and `result`. Returns false on
+/// Surface Curves' output; read on rank 0 only), keeping in `state` what the next update may
+/// reuse. Fills `output` and `result`. Returns false on
 /// every rank, with `error`, when any rank fails; true with `drawingStart` when rank 0's curves
 /// are a drawing being started (no arrangement, and no message). `warnings` gets the piece's
 /// notes (generated global ids).
@@ -62,6 +95,7 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
   vtkPolyData* local,
   vtkPolyData* curves,
   const ArrangementOptions& options,
+  PieceArrangementState& state,
   vtkPolyData* output,
   std::shared_ptr<PieceArrangementResult>& result,
   bool& drawingStart,
@@ -76,6 +110,7 @@ bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
   vtkPolyData* local,
   const std::vector<long long>& message,
   const ArrangementOptions& options,
+  PieceArrangementState& state,
   vtkPolyData* output,
   std::shared_ptr<PieceArrangementResult>& result,
   PieceCosts& costs,

@@ -99,7 +99,7 @@ bool WritePieceRegion(const PieceLabeledResult& labeled,
   const PieceArrangementResult& arranged = *labeled.Arranged;
   const vtkBoolSurfPieceArrangement& run = arranged.Run;
   PieceRegion selected;
-  if (!SelectPieceBoolean(arranged.Piece,
+  if (!SelectPieceBoolean(*arranged.Piece,
         run.GetArrangement(),
         run.GetMerged().GlobalCellOfLocal[0],
         labeled.Labels,
@@ -112,7 +112,7 @@ bool WritePieceRegion(const PieceLabeledResult& labeled,
     return false;
   }
   WritePieceTriangles(
-    arranged.Piece, run, selected.Triangles, selected.SourceTriangles, selected.Cells, region);
+    *arranged.Piece, run, selected.Triangles, selected.SourceTriangles, selected.Cells, region);
   // The surface's own cell arrays, from each triangle's source triangle on this rank.
   vtkPolyData* surface = arranged.Surface;
   if (surface && surface->GetCellData()->GetNumberOfArrays() > 0)
@@ -122,8 +122,8 @@ bool WritePieceRegion(const PieceLabeledResult& labeled,
     carried->CopyAllocate(from, static_cast<vtkIdType>(selected.Triangles.size()));
     for (std::size_t i = 0; i < selected.Triangles.size(); ++i)
     {
-      const int local = arranged.Piece.LocalTriangle(selected.SourceTriangles[i]);
-      const vtkIdType cell = local >= 0 ? arranged.SurfaceCell[local] : -1;
+      const int local = arranged.Piece->LocalTriangle(selected.SourceTriangles[i]);
+      const vtkIdType cell = local >= 0 ? (*arranged.SurfaceCell)[local] : -1;
       if (cell >= 0)
       {
         carried->CopyData(from, cell, static_cast<vtkIdType>(i));

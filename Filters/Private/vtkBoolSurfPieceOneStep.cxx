@@ -98,8 +98,16 @@ OneStepPieceOutcome LabelOnPieces(vtkMultiProcessController* controller,
   WireBuffer message;
   ReadPieceCurvesMessage(traced, message);
   std::shared_ptr<PieceArrangementResult> arranged;
-  if (!ArrangeMessageOnPiece(
-        controller, local, message, options.Arrangement, nullptr, arranged, costs, error, warnings))
+  if (!ArrangeMessageOnPiece(controller,
+        local,
+        message,
+        options.Arrangement,
+        state.Arrangement,
+        nullptr,
+        arranged,
+        costs,
+        error,
+        warnings))
   {
     error = "Arrangement failed: " + error;
     return OneStepPieceOutcome::Failed;

@@ -19,6 +19,7 @@
 #ifndef vtkBoolSurfPieceOneStep_h
 #define vtkBoolSurfPieceOneStep_h
 
+#include "vtkBoolSurfPieceArrangementStage.h"
 #include "vtkBoolSurfPieceLabels.h"
 #include "vtkBoolSurfPieceTraceStage.h"
 #include "vtkBoolSurfStageHandoff.h"
@@ -52,12 +53,14 @@ struct OneStepPieceOptions
 };
 
 /// What the one-step filter keeps between updates on pieces, as the stage filters keep theirs:
-/// the tracing's ringed piece and tracer (kept while the piece is unchanged), the locator for
-/// the zero cell given by a point, and the labeled arrangement (reused while only the Boolean
-/// changes).
+/// the tracing's ringed piece and tracer and the arrangement's piece (kept while the piece is
+/// unchanged), the locator for the zero cell given by a point, and the labeled arrangement
+/// (reused while only the Boolean changes).
 struct OneStepPieceState
 {
   PieceTraceState Tracing;
+  /// The arrangement's piece, ring and pooled results (kept while the piece is unchanged).
+  PieceArrangementState Arrangement;
   SurfaceLocator Locator;
   std::shared_ptr<const PieceLabeledResult> Labeled;
 };

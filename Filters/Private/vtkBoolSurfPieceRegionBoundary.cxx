@@ -31,7 +31,7 @@ bool WritePieceRegionBoundary(vtkMultiProcessController* controller,
   const vtkBoolSurfPieceArrangement& run = arranged.Run;
   std::vector<BoundaryRun> runs;
   PieceRegionBoundaryRuns(
-    arranged.Piece, run.GetArrangement(), run.GetMerged().GlobalCellOfLocal[0], selected, runs);
+    *arranged.Piece, run.GetArrangement(), run.GetMerged().GlobalCellOfLocal[0], selected, runs);
   std::size_t bytesSent = 0, bytesReceived = 0;
   bool ok = true;
   boundary->Initialize();

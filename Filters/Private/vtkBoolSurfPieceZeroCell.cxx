@@ -42,10 +42,10 @@ int PieceZeroCellAt(vtkMultiProcessController* controller,
     if (cell >= 0 && (!ghosts || ghosts->GetValue(cell) == 0))
     {
       const int global = static_cast<int>(ids->GetTuple1(cell));
-      const int local = arranged.Piece.LocalTriangle(global);
-      if (local >= 0 && arranged.Piece.Owned[local])
+      const int local = arranged.Piece->LocalTriangle(global);
+      if (local >= 0 && arranged.Piece->Owned[local])
       {
-        const TriangleMesh& mesh = arranged.Piece.Mesh;
+        const TriangleMesh& mesh = arranged.Piece->Mesh;
         const Arrangement& arr = arranged.Run.GetArrangement();
         const SurfacePoint at =
           PointInTriangle(mesh, local, Vec3{ closest[0], closest[1], closest[2] });
