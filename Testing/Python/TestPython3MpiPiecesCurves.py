@@ -66,7 +66,11 @@ def pieces_ran(rows, ranks, total, where, reused=None):
         assert "PieceSnapping:OwnedTriangles" in row, (here, "not on pieces", row)
         assert 0 < row["PieceSnapping:OwnedTriangles"] < total, (here, row)
         assert 0 < row["PieceTracingTraffic:HeldTriangles"] < total, (here, row)
-        assert row["PieceSnapping:Received"] < 8 * total, (here, row)
+        # Placing the points costs per point and rank, not per triangle: rank 0 receives every
+        # other rank's answers (16 words a point, and its number of triangles).
+        if rank == "0":
+            assert row["PieceSnapping:Received"] == 8 * (ranks - 1) * (
+                1 + 16 * row["PieceSnapping:Points"]), (here, row)
         if rank != "0":
             assert row["Lines0"] == 0 and row["Lines1"] == 0, (here, "curves on another rank")
         if reused is not None:
