@@ -13,10 +13,10 @@
  * - point ids number the distinct positions (coincident points of neighbouring pieces share
  *   one id), as the pieces' common border needs.
  *
- * Cell GlobalIds the pieces already carry are kept (RedistributeDataSet gives cells theirs,
- * the input's order; the gathered surface is put back in that order), only the points' are
- * generated then. The result is kept, the same object, while every rank's piece is unchanged,
- * so the filters' own caches (the ringed piece, the tracer) stay valid between edits.
+ * Cell GlobalIds the pieces already carry are kept when only the points' are missing (the
+ * gathered surface is put back in their order), only the points' are generated then. The result is
+ * kept, the same object, while every rank's piece is unchanged, so the filters' own caches (the
+ * ringed piece, the tracer) stay valid between edits.
  */
 #ifndef vtkBoolSurfPieceGlobalIds_h
 #define vtkBoolSurfPieceGlobalIds_h
