@@ -42,6 +42,9 @@ struct vtkBoolSurfSurfaceCurves::Internals
   boolsurf::ClosestTriangles Closest;
   /// On pieces: the ringed piece and the tracing of port 1, kept between edits.
   std::unique_ptr<boolsurf::PieceTraceState> Pieces;
+  /// Whether the split surface is closed, for the ringed piece of build ClosedBuild.
+  bool PieceClosed = false;
+  unsigned long long ClosedBuild = 0;
 
   /// Whether every edge of `surface` has a triangle on each side (cached with the surface's
   /// adjacency). Only then is a facet facing away from the camera hidden by the surface.
@@ -554,9 +557,16 @@ bool vtkBoolSurfSurfaceCurves::ExecutePiece(const std::vector<vtkPolyData*>& loc
     internal.Pieces = std::make_unique<boolsurf::PieceTraceState>();
   }
   std::string problem;
-  const bool closedSurface = drawn &&
-    boolsurf::UpdateRingedPiece(controller, local, *internal.Pieces, problem) &&
-    boolsurf::IsClosedOnPieces(controller, internal.Pieces->Ringed);
+  bool closedSurface = false;
+  if (drawn && boolsurf::UpdateRingedPiece(controller, local, *internal.Pieces, problem))
+  {
+    if (internal.ClosedBuild != internal.Pieces->Builds) // decided alike on every rank
+    {
+      internal.PieceClosed = boolsurf::IsClosedOnPieces(controller, internal.Pieces->Ringed);
+      internal.ClosedBuild = internal.Pieces->Builds;
+    }
+    closedSurface = internal.PieceClosed;
+  }
   std::vector<boolsurf::InputControlCurve> curves;
   if (!ShareVerdict(controller,
         !first ||

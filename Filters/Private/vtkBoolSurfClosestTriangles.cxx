@@ -93,7 +93,35 @@ void ClosestTriangles::ReadCorners(vtkIdType cell, PlacedPoint& placed) const
 }
 
 //------------------------------------------------------------------------------
-PlacedPoint ClosestTriangles::Place(const PointQuery& query) const
+vtkStaticCellLocator* ClosestTriangles::GetLocator() const
+{
+  if (!this->Locator)
+  {
+    this->Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+    this->Locator->SetDataSet(this->Cells);
+    this->Locator->BuildLocator();
+  }
+  return this->Locator;
+}
+
+//------------------------------------------------------------------------------
+double ClosestTriangles::FindDistance2(const PointQuery& query) const
+{
+  if (this->GetNumberOfCells() == 0)
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  double x[3] = { query.X[0], query.X[1], query.X[2] };
+  double closest[3];
+  vtkIdType cell = -1;
+  int subId;
+  double distance2 = 0;
+  this->GetLocator()->FindClosestPoint(x, closest, cell, subId, distance2);
+  return cell < 0 ? std::numeric_limits<double>::infinity() : distance2;
+}
+
+//------------------------------------------------------------------------------
+PlacedPoint ClosestTriangles::Place(const PointQuery& query, double distance2) const
 {
   PlacedPoint placed;
   const vtkIdType cells = this->GetNumberOfCells();
@@ -119,25 +147,13 @@ PlacedPoint ClosestTriangles::Place(const PointQuery& query) const
     }
     return placed;
   }
-  if (!this->Locator)
-  {
-    this->Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
-    this->Locator->SetDataSet(this->Cells);
-    this->Locator->BuildLocator();
-  }
-  double x[3] = { query.X[0], query.X[1], query.X[2] };
-  double closest[3];
-  vtkIdType first = -1;
-  int subId;
-  double distance2 = 0;
-  vtkNew<vtkGenericCell> cell;
-  this->Locator->FindClosestPoint(x, closest, cell, first, subId, distance2);
-  if (first < 0)
+  if (!(distance2 < std::numeric_limits<double>::infinity()))
   {
     return placed;
   }
-  // Every cell as close: those whose bounds reach the distance found (padded for rounding),
-  // compared by the distance each one gives and then by id.
+  // Every cell as close: those whose bounds reach the distance (padded for rounding), compared
+  // by the distance each one gives and then by id.
+  double x[3] = { query.X[0], query.X[1], query.X[2] };
   const double reach = std::sqrt(distance2) * (1 + 1e-9) + 1e-12 * this->Diagonal;
   double box[6];
   for (int k = 0; k < 3; ++k)
@@ -146,8 +162,8 @@ PlacedPoint ClosestTriangles::Place(const PointQuery& query) const
     box[2 * k + 1] = x[k] + reach;
   }
   vtkNew<vtkIdList> candidates;
-  this->Locator->FindCellsWithinBounds(box, candidates);
-  candidates->InsertUniqueId(first);
+  this->GetLocator()->FindCellsWithinBounds(box, candidates);
+  vtkNew<vtkGenericCell> cell;
   vtkIdType best = -1;
   double bestDistance2 = std::numeric_limits<double>::infinity();
   double bestPoint[3] = { 0, 0, 0 };
@@ -158,6 +174,7 @@ PlacedPoint ClosestTriangles::Place(const PointQuery& query) const
     this->Cells->GetCell(c, cell);
     weights.resize(static_cast<std::size_t>(std::max<vtkIdType>(3, cell->GetNumberOfPoints())));
     double point[3], pcoords[3], d2;
+    int subId;
     if (cell->EvaluatePosition(x, point, subId, pcoords, d2, weights.data()) == -1)
     {
       continue;
@@ -171,7 +188,13 @@ PlacedPoint ClosestTriangles::Place(const PointQuery& query) const
   }
   if (best < 0)
   {
-    return placed;
+    // Rounding put even the locator's cell outside the box: its answer, then.
+    int subId;
+    this->GetLocator()->FindClosestPoint(x, bestPoint, cell, best, subId, bestDistance2);
+    if (best < 0)
+    {
+      return placed;
+    }
   }
   this->ReadCorners(best, placed);
   std::copy(bestPoint, bestPoint + 3, placed.Closest);

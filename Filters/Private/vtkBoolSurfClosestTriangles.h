@@ -12,8 +12,9 @@
  * computed from the triangle's own corners, so they are the same bits on any rank.
  *
  * A vtkStaticCellLocator finds the distance; every cell whose bounds reach that far is then
- * compared, by distance and then id. The locator is kept while the surface is the same object,
- * unmodified.
+ * compared, by distance and then id (on pieces only by the ranks whose distance is the smallest
+ * of all ranks': a rank whose piece is far does not search its piece). The locator is kept
+ * while the surface is the same object, unmodified.
  */
 #ifndef vtkBoolSurfClosestTriangles_h
 #define vtkBoolSurfClosestTriangles_h
@@ -60,10 +61,21 @@ public:
   void SetSurface(vtkPolyData* surface, bool owned);
   /// The number of cells searched.
   vtkIdType GetNumberOfCells() const;
-  /// This finder's answer to `query` (Found false when it has no such triangle or no cell).
-  PlacedPoint Place(const PointQuery& query) const;
+  /// The squared distance from query.X to the closest cell (infinity when there is none).
+  double FindDistance2(const PointQuery& query) const;
+  /// This finder's answer to `query`: a named triangle's corners (Found false when no cell has
+  /// its id), or among the cells at squared distance `distance2` from the position (the
+  /// smallest: FindDistance2's, over every rank on pieces), the one of lowest id.
+  PlacedPoint Place(const PointQuery& query, double distance2) const;
+  /// The answer on this finder's cells alone.
+  PlacedPoint Place(const PointQuery& query) const
+  {
+    return this->Place(query, query.Named ? 0.0 : this->FindDistance2(query));
+  }
 
 private:
+  /// The locator, built on first use.
+  vtkStaticCellLocator* GetLocator() const;
   /// Reads cell `cell`'s corners into `placed`.
   void ReadCorners(vtkIdType cell, PlacedPoint& placed) const;
   long long IdOf(vtkIdType cell) const;

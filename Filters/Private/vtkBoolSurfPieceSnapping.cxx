@@ -122,13 +122,31 @@ void PlaceOnPieces(vtkMultiProcessController* controller,
     traffic.Received += bytes;
   }
 
+  // The smallest distance of each position over every rank (one all-reduce): only the ranks
+  // that close search their cells for the lowest id at that distance.
+  std::vector<double> distance2(queries.size(), 0.0), smallest(queries.size(), 0.0);
+  for (std::size_t i = 0; i < queries.size(); ++i)
+  {
+    distance2[i] = queries[i].Named ? 0.0 : finder.FindDistance2(queries[i]);
+  }
+  if (!queries.empty())
+  {
+    controller->AllReduce(distance2.data(),
+      smallest.data(),
+      static_cast<vtkIdType>(queries.size()),
+      vtkCommunicator::MIN_OP);
+  }
+  traffic.Sent += sizeof(double) * queries.size();
+  traffic.Received += sizeof(double) * queries.size();
+
   // Every rank's answers (its number of triangles first), gathered to rank 0 in one call.
   traffic.OwnedTriangles = finder.GetNumberOfCells();
   traffic.Points = static_cast<long long>(queries.size());
   WireBuffer answers{ traffic.OwnedTriangles };
-  for (const PointQuery& q : queries)
+  for (std::size_t i = 0; i < queries.size(); ++i)
   {
-    PackAnswer(finder.Place(q), answers);
+    const bool near = queries[i].Named || distance2[i] == smallest[i];
+    PackAnswer(near ? finder.Place(queries[i], smallest[i]) : PlacedPoint(), answers);
   }
   WireBuffer all(rank == 0 ? answers.size() * static_cast<std::size_t>(ranks) : 0);
   controller->Gather(answers.data(), all.data(), static_cast<vtkIdType>(answers.size()), 0);

@@ -219,6 +219,7 @@ bool UpdateRingedPiece(vtkMultiProcessController* controller,
     return false;
   }
   state.HasPiece = true;
+  ++state.Builds;
   state.Surface = local;
   state.SurfaceTime = local ? local->GetMTime() : 0;
   return true;

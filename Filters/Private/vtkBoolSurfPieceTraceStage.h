@@ -47,6 +47,9 @@ struct PieceTraceState
   bool HasPiece = false;
   /// Whether Tracing has run on Ringed since it was built (its next Run may keep what it built).
   bool Traced = false;
+  /// How many times Ringed was built (the same count on every rank): what is derived from it
+  /// (Surface Curves' closedness) is kept while it is unchanged.
+  unsigned long long Builds = 0;
 };
 
 enum class PieceTraceOutcome

@@ -135,6 +135,11 @@ snapped.Points = moved
 results["edited"] = ports(snapped)
 results["edited_ranks"] = per_rank(snapped)
 
+# The LocallyShortest method: port 1 is not traced on pieces; the update gathers (warning).
+shortest = SurfaceCurvesSource(Surface=surface, Points=points, CurveSizes=sizes,
+                               ShapeIds=shapes, GeodesicMethod="Locally shortest")
+results["shortest"] = ports(shortest)
+
 # A point naming a triangle no rank has: an error naming the curve and point on every rank.
 bad = SurfaceCurvesSource(Surface=surface, Points=points[:9] + points[:9], CurveSizes=[3, 3],
                           TriangleIds=[3, 40, 5, 6, 7, 1000000],

@@ -4,7 +4,8 @@ rank 0's control curves (port 0) and their trace (port 1) equal one rank's exact
 triangle ids, barycentric weights, positions, facet normals), the other ranks' are empty, no
 rank searched or held the whole surface (PieceSnapping, PieceTracingTraffic), an edit of the
 points keeps the ringed piece, and a point naming a triangle no rank has fails on every rank with
-an error naming its curve and point. Pieces without GlobalIds: the filters generate them (a
+an error naming its curve and point; the LocallyShortest method gathers (warning) and
+gives the one-rank ports. Pieces without GlobalIds: the filters generate them (a
 warning says so) and Surface Curves, Trace Surface Curves and the chain to Surface Boolean give
 the one-rank answer on the surface those pieces form (the triangles numbered rank by rank, as
 the gathered surface numbers them). Each run has a time limit: a rank left waiting fails the
@@ -67,10 +68,12 @@ def pieces_ran(rows, ranks, total, where, reused=None):
         assert 0 < row["PieceSnapping:OwnedTriangles"] < total, (here, row)
         assert 0 < row["PieceTracingTraffic:HeldTriangles"] < total, (here, row)
         # Placing the points costs per point and rank, not per triangle: rank 0 receives every
-        # other rank's answers (16 words a point, and its number of triangles).
+        # other rank's answers (16 words a point, and its number of triangles), and every rank
+        # the smallest distance of each point (one all-reduce).
         if rank == "0":
-            assert row["PieceSnapping:Received"] == 8 * (ranks - 1) * (
-                1 + 16 * row["PieceSnapping:Points"]), (here, row)
+            points = row["PieceSnapping:Points"]
+            assert row["PieceSnapping:Received"] == 8 * (ranks - 1) * (1 + 16 * points) + \
+                8 * points, (here, row)
         if rank != "0":
             assert row["Lines0"] == 0 and row["Lines1"] == 0, (here, "curves on another rank")
         if reused is not None:
@@ -92,6 +95,11 @@ for ranks in (2, 3):
     print("%d ranks: triangles searched per rank %s of %d" % (
         ranks, [int(r["PieceSnapping:OwnedTriangles"])
                 for _, r in sorted(result["snapped_ranks"].items())], total))
+    # The LocallyShortest method does not trace on pieces: the update gathers (a warning says
+    # why) and gives the one-rank ports.
+    same_ports(result["shortest"], serial["shortest"], "LocallyShortest on %d ranks" % ranks)
+    assert "curves were drawn on the surface gathered to rank 0, not on each rank's piece: " \
+        "the LocallyShortest" in output, output
     # The bad point: every rank fails (no rank waits), the error names the curve and point.
     assert result["bad"]["lines"] == 0, result["bad"]
     assert "Curve 1, point 5: TriangleId 1000000 is not a triangle of the surface" in output, \
