@@ -45,15 +45,15 @@
  * BSC field data (`SampleOnBoundary`, `DroppedSamples`, ...) instead of `Expression`. Changing
  * only the samples reuses the labeled arrangement, like a change of the Boolean properties.
  *
- * Under MPI, a surface split across ranks whose pieces carry point and cell GlobalIds (Generate
- * Global Ids on the undistributed surface, then RedistributeDataSet, D3 or a parallel reader)
- * is not gathered: the stages run on each rank's piece as the stage filters do there
+ * Under MPI, a surface split across ranks (RedistributeDataSet, D3 or a parallel reader; its
+ * pieces' point and cell GlobalIds name the triangles, generated with a warning when the pieces
+ * have none) is not gathered: the stages run on each rank's piece as the stage filters do there
  * (Docs/Parallel.md, "What runs on each rank's piece"). Port 0 is then the rank's part of the
  * region (the union over ranks is the one-rank region) with the arrays above and
  * `ArrangementOnPieces`, `StageTimes` and `PieceBytes` the rank's own; port 1 the boundary
  * loops, whole on rank 0; ports 2 and 3 stay empty (a warning on rank 0 says so). Between
- * updates the tracing's ringed piece and the labeled arrangement are kept, as the stage filters
- * keep them. Selection BSC, ResolveStrategy, OffsetShape, CloseBrokenShapes and what Trace
+ * updates the tracing's and the arrangement's pieces and the labeled arrangement are kept, as
+ * the stage filters keep them. Selection BSC, ResolveStrategy, OffsetShape, CloseBrokenShapes and what Trace
  * Surface Curves cannot trace on pieces (the LocallyShortest method, control points given by
  * position) gather the surface to rank 0 instead, with a warning naming why.
  *

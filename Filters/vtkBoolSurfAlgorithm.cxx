@@ -8,6 +8,7 @@
 #include "vtkBoolSurfArrayRanges.h"
 #include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfOutputReuse.h"
+#include "vtkBoolSurfPieceGlobalIds.h"
 #include "vtkBoolSurfRankGather.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfSurfaceCache.h"
@@ -234,15 +235,20 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
     : nullptr;
   bool onPieces =
     this->ExecutesOnPieces() && vtkBoolSurfSurfacePiece::IsDistributed(controller, local);
+  vtkPolyData* withIds = local;
   if (onPieces && this->PiecesNeedGlobalIds() &&
     !vtkBoolSurfSurfacePiece::HasGlobalIds(controller, local))
   {
-    onPieces = false;
+    if (!this->PieceIds)
+    {
+      this->PieceIds = std::make_unique<vtkBoolSurfPieceGlobalIds>();
+    }
+    withIds = this->PieceIds->Generate(controller, local);
     if (controller->GetLocalProcessId() == 0)
     {
       vtkWarningMacro("the surface is split across ranks, but its pieces carry no point and cell "
-                      "GlobalIds: gathered to rank 0 (Generate Global Ids on the undistributed "
-                      "surface lets this filter run on each rank's piece)");
+                      "GlobalIds: generated them (vtkGenerateGlobalIds; the triangles numbered "
+                      "rank by rank, as the surface gathered to rank 0 numbers them)");
     }
   }
   if (onPieces)
@@ -252,7 +258,7 @@ int vtkBoolSurfAlgorithm::RequestData(vtkInformation* vtkNotUsed(request),
     {
       if (inputVector[p]->GetNumberOfInformationObjects() > 0)
       {
-        locals[p] = vtkPolyData::GetData(inputVector[p], 0);
+        locals[p] = p == 0 ? withIds : vtkPolyData::GetData(inputVector[p], 0);
       }
     }
     this->PiecesGatherInstead = false;

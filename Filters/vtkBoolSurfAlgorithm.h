@@ -32,6 +32,8 @@
 #include "BoolSurfFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+class vtkBoolSurfPieceGlobalIds;
+
 #include <array>  // for std::array
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -81,8 +83,10 @@ protected:
   /// of it, ExecutePiece() runs on every rank instead of gathering the inputs to the first.
   virtual bool ExecutesOnPieces() const { return false; }
   /// A filter on pieces that names the surface by the undistributed surface's ids (the
-  /// distributed arrangement) returns true: it then runs on pieces only when every piece carries
-  /// point and cell GlobalIds, and otherwise gathers as the other filters do, saying why.
+  /// distributed arrangement, the tracing and the control points on pieces) returns true: when
+  /// the pieces carry no point or cell GlobalIds, vtkGenerateGlobalIds gives them (with a
+  /// warning; vtkBoolSurfPieceGlobalIds.h says what they number) and locals[0] is the piece
+  /// with them.
   virtual bool PiecesNeedGlobalIds() const { return false; }
   /// The work of such a filter on this rank's inputs: locals[p] is this rank's own data on
   /// input port p, not gathered (locals[0] its piece of the surface, possibly empty; null for
@@ -157,6 +161,8 @@ private:
   bool PiecesGatherInstead = false;
   std::vector<int> OptionalPorts;
   std::unique_ptr<boolsurf::vtkSurfaceCache> Surface;
+  /// The pieces' generated GlobalIds, kept while the pieces are unchanged.
+  std::unique_ptr<vtkBoolSurfPieceGlobalIds> PieceIds;
   /// The arrangement GetArrangement() last computed again for an input without one.
   std::unique_ptr<boolsurf::RebuiltArrangement> Rebuilt;
   /// Per output port: how many point, cell and field arrays the last update wrote (the next

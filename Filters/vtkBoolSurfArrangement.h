@@ -46,8 +46,9 @@
  * the generators and their shortened loops; see vtkBoolSurfLabeling and Docs/Homology.md).
  * Downstream filters (labeling, Booleans) need only this port.
  *
- * Under MPI, on a surface split across ranks whose pieces carry point and cell GlobalIds, each
- * rank arranges its own piece and port 0 is its part of the refined surface (field data
+ * Under MPI, on a surface split across ranks, each rank arranges its own piece (named by the
+ * pieces' point and cell GlobalIds, generated with a warning when they carry none: see
+ * vtkBoolSurfPieceGlobalIds.h) and port 0 is its part of the refined surface (field data
  * `ArrangementOnPieces`; which arrays it has is in Docs/Parallel.md); Label Arrangement Cells
  * and Surface Boolean then run on the pieces too, and the other filters refuse such an input.
  *
@@ -100,8 +101,9 @@ protected:
     const std::vector<vtkPolyData*>& outputs,
     std::string& error) override;
 
-  /// On a surface split across ranks (with point and cell GlobalIds), each rank arranges its
-  /// piece (vtkBoolSurfPieceArrangementStage.h): port 0 is its part of the refined surface.
+  /// On a surface split across ranks (with point and cell GlobalIds, generated if absent), each
+  /// rank arranges its piece (vtkBoolSurfPieceArrangementStage.h): port 0 is its part of the
+  /// refined surface.
   bool ExecutesOnPieces() const override { return true; }
   bool PiecesNeedGlobalIds() const override { return true; }
   bool ExecutePiece(const std::vector<vtkPolyData*>& locals,

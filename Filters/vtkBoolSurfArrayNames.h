@@ -122,6 +122,10 @@ constexpr const char* PieceCurvesMessage = "PieceCurvesMessage";
 /// Rounds, OwnRounds, TracedCurves, FetchedTriangles, HeldTriangles, RingedTriangles,
 /// ReusedPiece (1 when an edit kept the ringed piece, directory and tracer).
 constexpr const char* PieceTracingTraffic = "PieceTracingTraffic";
+/// Surface Curves' port 0 when it ran on each rank's piece (field data, doubles, one tuple on
+/// every rank, components named): Sent, Received (bytes of the queries and answers that placed
+/// the control points), OwnedTriangles (the triangles the rank searched: its own), Points.
+constexpr const char* PieceSnapping = "PieceSnapping";
 /// Surface Arrangement's output on each rank's piece (field data, int: the number of
 /// ranks): the output is one rank's part of the refined surface, not the whole.
 constexpr const char* ArrangementOnPieces = "ArrangementOnPieces";

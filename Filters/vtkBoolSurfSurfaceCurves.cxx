@@ -2,9 +2,11 @@
 
 #include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfArrayRanges.h"
+#include "vtkBoolSurfClosestTriangles.h"
 #include "vtkBoolSurfControlCurveWriter.h"
 #include "vtkBoolSurfControlCurves.h"
-
+#include "vtkBoolSurfPieceSnapping.h"
+#include "vtkBoolSurfPieceTraceStage.h"
 #include "vtkBoolSurfPropertyVector.h"
 #include "vtkBoolSurfSurfaceCache.h"
 #include "vtkBoolSurfTraceStage.h"
@@ -15,30 +17,34 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
-#include <sstream>
-#include <vtkSmartPointer.h>
-#include <vtkStaticCellLocator.h>
 #include <vtkTriangle.h>
 
 #include <algorithm>
 #include <numeric>
+#include <sstream>
 #include <string>
+#include <unordered_map>
 
 vtkStandardNewMacro(vtkBoolSurfSurfaceCurves);
 
-/// The closest-point locator of the last surface, rebuilt when the surface changes.
+/// What is kept between edits while the surface is unchanged.
 struct vtkBoolSurfSurfaceCurves::Internals
 {
   boolsurf::vtkSurfaceCache Traced; // the surface's adjacency and tracer for port 1
-  vtkSmartPointer<vtkStaticCellLocator> Locator;
-  vtkPolyData* Surface = nullptr;
-  vtkMTimeType SurfaceTime = 0;
+  /// The closest triangles of the surface, or on pieces of this rank's own triangles.
+  boolsurf::ClosestTriangles Closest;
+  /// On pieces: the ringed piece and the tracing of port 1, kept between edits.
+  std::unique_ptr<boolsurf::PieceTraceState> Pieces;
+  /// Whether the split surface is closed, for the ringed piece of build ClosedBuild.
+  bool PieceClosed = false;
+  unsigned long long ClosedBuild = 0;
 
   /// Whether every edge of `surface` has a triangle on each side (cached with the surface's
   /// adjacency). Only then is a facet facing away from the camera hidden by the surface.
@@ -67,19 +73,6 @@ struct vtkBoolSurfSurfaceCurves::Internals
   const boolsurf::vtkSurfaceInput* ClosedOf = nullptr;
   vtkMTimeType ClosedTime = 0;
   bool Closed = false;
-
-  vtkStaticCellLocator* For(vtkPolyData* surface)
-  {
-    if (!this->Locator || surface != this->Surface || surface->GetMTime() != this->SurfaceTime)
-    {
-      this->Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
-      this->Locator->SetDataSet(surface);
-      this->Locator->BuildLocator();
-      this->Surface = surface;
-      this->SurfaceTime = surface->GetMTime();
-    }
-    return this->Locator;
-  }
 };
 
 namespace
@@ -88,6 +81,23 @@ namespace
 int PerCurve(const std::vector<int>& values, size_t curve, int fallback)
 {
   return curve < values.size() ? values[curve] : fallback;
+}
+
+/// Collective: rank 0's verdict `ok` and its `error` on every rank (every rank fails alike).
+bool ShareVerdict(vtkMultiProcessController* controller, bool ok, std::string& error)
+{
+  long long length = ok ? -1 : static_cast<long long>(error.size());
+  controller->Broadcast(&length, 1, 0);
+  if (length < 0)
+  {
+    return true;
+  }
+  error.resize(static_cast<size_t>(length));
+  if (length > 0)
+  {
+    controller->Broadcast(&error[0], length, 0);
+  }
+  return false;
 }
 
 /// Writes the curves held, traced on the surface, to `traced` (port 1; empty when they cannot
@@ -239,21 +249,10 @@ void vtkBoolSurfSurfaceCurves::RemoveAllCurves()
 }
 
 //------------------------------------------------------------------------------
-bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
-  const std::vector<vtkPolyData*>& outputs,
-  std::string& error)
+bool vtkBoolSurfSurfaceCurves::GetCurveSizes(std::vector<int>& sizes, std::string& error) const
 {
-  vtkPolyData* surface = inputs[0];
-  vtkPolyData* output = outputs[0];
-  vtkPolyData* traced = outputs[1];
-  if (!surface || surface->GetNumberOfCells() == 0)
-  {
-    error = "The surface is empty: curves are drawn on a triangle surface.";
-    return false;
-  }
-
   const vtkIdType points = this->GetNumberOfPoints();
-  std::vector<int> sizes = this->CurveSizes;
+  sizes = this->CurveSizes;
   if (sizes.empty() && points > 0)
   {
     sizes.push_back(static_cast<int>(points));
@@ -279,8 +278,7 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   }
   // TriangleIds: none (every point snapped) or one per point, -1 marking a point to snap (the
   // curve editor stores the points it has placed exactly and snaps the one being dragged).
-  const bool exact = !this->TriangleIds.empty();
-  if (exact &&
+  if (!this->TriangleIds.empty() &&
     (static_cast<vtkIdType>(this->TriangleIds.size()) != points ||
       static_cast<vtkIdType>(this->Barycentrics.size()) != 2 * points))
   {
@@ -291,37 +289,66 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
     error = message.str();
     return false;
   }
+  return true;
+}
 
+//------------------------------------------------------------------------------
+std::vector<boolsurf::PointQuery> vtkBoolSurfSurfaceCurves::GetPointQueries() const
+{
+  std::vector<boolsurf::PointQuery> queries(static_cast<size_t>(this->GetNumberOfPoints()));
+  for (size_t i = 0; i < queries.size(); ++i)
+  {
+    boolsurf::PointQuery& q = queries[i];
+    q.Named = !this->TriangleIds.empty() && this->TriangleIds[i] != -1;
+    q.Triangle = q.Named ? this->TriangleIds[i] : -1;
+    std::copy(&this->Points[3 * i], &this->Points[3 * i] + 3, q.X);
+  }
+  return queries;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfSurfaceCurves::WriteControlCurves(const std::vector<int>& sizes,
+  const std::vector<boolsurf::PlacedPoint>& placed,
+  long long triangles,
+  bool closedSurface,
+  vtkPolyData* output,
+  std::vector<boolsurf::InputControlCurve>& curves,
+  std::string& error) const
+{
   // Surface points: given exactly, or the closest surface point of each position.
+  const vtkIdType points = this->GetNumberOfPoints();
   std::vector<boolsurf::SurfacePoint> surfacePoints(static_cast<size_t>(points));
   // The facet's unit normal at each control point of a closed surface (zero on a surface with
   // a boundary, whose back may be in view): the curve editor hides the markers of points on
   // the far side (named apart from "Normals", which ParaView would take for the lines' shading
   // normals).
-  const bool closedSurface = points > 0 && this->Internal->IsClosed(surface);
   vtkNew<vtkDoubleArray> facetNormal;
   facetNormal->SetName(boolsurf::names::SurfaceNormal);
   facetNormal->SetNumberOfComponents(3);
   facetNormal->SetNumberOfTuples(points);
-  const bool snaps = !exact ||
-    std::find(this->TriangleIds.begin(), this->TriangleIds.end(), -1) != this->TriangleIds.end();
-  vtkStaticCellLocator* locator = snaps ? this->Internal->For(surface) : nullptr;
-  const vtkIdType triangles = surface->GetNumberOfCells();
+  // The corners of each triangle a point lies on, for the positions written.
+  std::unordered_map<int, const boolsurf::PlacedPoint*> cornersOf;
+  size_t curve = 0;
+  vtkIdType curveEnd = sizes.empty() ? 0 : sizes[0];
   for (vtkIdType i = 0; i < points; ++i)
   {
-    vtkIdType triangle = -1;
+    while (i >= curveEnd && curve + 1 < sizes.size())
+    {
+      curveEnd += sizes[++curve];
+    }
+    const boolsurf::PlacedPoint& at = placed[static_cast<size_t>(i)];
+    vtkIdType triangle = at.Triangle;
     double u = 0, v = 0;
-    double closest[3] = { 0, 0, 0 };
-    const bool given = exact && this->TriangleIds[i] != -1;
+    const bool given = !this->TriangleIds.empty() && this->TriangleIds[i] != -1;
     if (given)
     {
       triangle = this->TriangleIds[i];
       u = this->Barycentrics[2 * i];
       v = this->Barycentrics[2 * i + 1];
-      if (triangle < 0 || triangle >= triangles)
+      if (!at.Found)
       {
         std::ostringstream message;
-        message << "Point " << i << ": TriangleId " << triangle
+        message << "Curve " << curve << ", point " << i << ": TriangleId " << triangle
                 << " is not a triangle of the surface (it has " << triangles << ").";
         error = message.str();
         return false;
@@ -329,54 +356,44 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
       if (!boolsurf::IsInsideTriangle(u, v))
       {
         std::ostringstream message;
-        message << "Point " << i << ": Barycentric (" << u << ", " << v << ") is outside triangle "
-                << triangle << ".";
+        message << "Curve " << curve << ", point " << i << ": Barycentric (" << u << ", " << v
+                << ") is outside triangle " << triangle << ".";
         error = message.str();
         return false;
       }
     }
-    else
-    {
-      const double* x = &this->Points[3 * i];
-      double distance2;
-      int subId;
-      locator->FindClosestPoint(x, closest, triangle, subId, distance2);
-    }
-    vtkIdType n;
-    const vtkIdType* corners;
-    surface->GetCellPoints(triangle, n, corners);
-    if (n != 3)
+    if (at.Corners != 3)
     {
       std::ostringstream message;
-      message << "Point " << i << ": cell " << triangle << " of the surface has " << n
+      message << "Curve " << curve << ", point " << i << ": cell " << triangle
+              << " of the surface has " << at.Corners
               << " points, not 3: triangulate the surface first.";
       error = message.str();
       return false;
     }
-    double p[3][3];
-    for (int k = 0; k < 3; ++k)
-    {
-      surface->GetPoint(corners[k], p[k]);
-    }
+    const double(&p)[3][3] = at.P;
     if (!given)
     {
       // In 3D: vtkTriangle::BarycentricCoords reads only x and y, so on a triangle standing
       // upright (a wall, a cylinder's side) it had no solution or the wrong one.
       auto vec = [](const double* q) { return boolsurf::Vec3{ q[0], q[1], q[2] }; };
-      boolsurf::BarycentricInTriangle(vec(p[0]), vec(p[1]), vec(p[2]), vec(closest), u, v);
+      boolsurf::BarycentricInTriangle(vec(p[0]), vec(p[1]), vec(p[2]), vec(at.Closest), u, v);
     }
     double normal[3] = { 0, 0, 0 };
     if (closedSurface)
     {
-      vtkTriangle::ComputeNormal(p[0], p[1], p[2], normal);
+      double corners[3][3];
+      std::copy(&p[0][0], &p[0][0] + 9, &corners[0][0]);
+      vtkTriangle::ComputeNormal(corners[0], corners[1], corners[2], normal);
     }
     facetNormal->SetTuple(i, normal);
     surfacePoints[static_cast<size_t>(i)] = { static_cast<int>(triangle), u, v };
+    cornersOf.emplace(static_cast<int>(triangle), &at);
   }
 
   // The curves this filter holds; written as control curves (one polyline per curve, a closed
-  // curve repeating its first point), then traced as held.
-  std::vector<boolsurf::InputControlCurve> curves(sizes.size());
+  // curve repeating its first point).
+  curves.assign(sizes.size(), boolsurf::InputControlCurve());
   vtkNew<vtkIntArray> complete;
   vtkNew<vtkStringArray> incomplete;
   complete->SetName(boolsurf::names::Complete);
@@ -425,19 +442,12 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
     }
     first += size;
   }
-  // Positions on the VTK surface itself (the curves are written even when the surface is not
-  // one the tracing can use).
+  // Positions from the corners of the surface's own triangles (the curves are written even
+  // when the surface is not one the tracing can use).
   boolsurf::ControlCurveWriter writer(
-    [surface](const boolsurf::SurfacePoint& sp)
+    [&cornersOf](const boolsurf::SurfacePoint& sp)
     {
-      vtkIdType n;
-      const vtkIdType* corners;
-      surface->GetCellPoints(sp.Triangle, n, corners);
-      double p[3][3];
-      for (int k = 0; k < 3; ++k)
-      {
-        surface->GetPoint(corners[k], p[k]);
-      }
+      const double(&p)[3][3] = cornersOf.at(sp.Triangle)->P;
       double x[3];
       for (int k = 0; k < 3; ++k)
       {
@@ -456,7 +466,12 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
   {
     output->GetFieldData()->AddArray(incomplete);
   }
-  TraceForDisplay(this->Internal->Traced, surface, curves, this->GetTraceOptions(), traced);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBoolSurfSurfaceCurves::MarkDrawing(vtkPolyData* output, vtkPolyData* traced)
+{
   for (vtkPolyData* port : { output, traced })
   {
     vtkNew<vtkIntArray> drawing;
@@ -465,6 +480,140 @@ bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
     port->GetFieldData()->AddArray(drawing);
     // The ranges ParaView reads after every edit (see vtkBoolSurfArrayRanges.h).
     boolsurf::CacheDataRanges(port, this->GetNumberOfThreads());
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfSurfaceCurves::Execute(const std::vector<vtkPolyData*>& inputs,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
+{
+  vtkPolyData* surface = inputs[0];
+  vtkPolyData* output = outputs[0];
+  vtkPolyData* traced = outputs[1];
+  if (!surface || surface->GetNumberOfCells() == 0)
+  {
+    error = "The surface is empty: curves are drawn on a triangle surface.";
+    return false;
+  }
+  std::vector<int> sizes;
+  if (!this->GetCurveSizes(sizes, error))
+  {
+    return false;
+  }
+  // Each point on the triangle it names, or on the closest one (ties to the lowest cell id).
+  const std::vector<boolsurf::PointQuery> queries = this->GetPointQueries();
+  this->Internal->Closest.SetSurface(surface, false);
+  std::vector<boolsurf::PlacedPoint> placed;
+  placed.reserve(queries.size());
+  for (const boolsurf::PointQuery& query : queries)
+  {
+    placed.push_back(this->Internal->Closest.Place(query));
+  }
+  const bool closedSurface = !queries.empty() && this->Internal->IsClosed(surface);
+  std::vector<boolsurf::InputControlCurve> curves;
+  if (!this->WriteControlCurves(
+        sizes, placed, surface->GetNumberOfCells(), closedSurface, output, curves, error))
+  {
+    return false;
+  }
+  TraceForDisplay(this->Internal->Traced, surface, curves, this->GetTraceOptions(), traced);
+  this->MarkDrawing(output, traced);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoolSurfSurfaceCurves::ExecutePiece(const std::vector<vtkPolyData*>& locals,
+  const std::vector<vtkPolyData*>& outputs,
+  std::string& error)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool first = controller->GetLocalProcessId() == 0;
+  Internals& internal = *this->Internal;
+  vtkPolyData* local = locals[0];
+  vtkPolyData* output = outputs[0];
+  vtkPolyData* traced = outputs[1];
+  // The drawing exists once: rank 0's properties, checked there, the verdict on every rank.
+  std::vector<int> sizes;
+  if (!ShareVerdict(controller, !first || this->GetCurveSizes(sizes, error), error))
+  {
+    return false;
+  }
+  // Each point placed by the ranks owning its triangle or the closest ones (rank 0 gets them).
+  internal.Closest.SetSurface(local, true);
+  std::vector<boolsurf::PlacedPoint> placed;
+  long long triangles = 0;
+  boolsurf::SnappingTraffic traffic;
+  boolsurf::PlaceOnPieces(controller,
+    internal.Closest,
+    first ? this->GetPointQueries() : std::vector<boolsurf::PointQuery>(),
+    placed,
+    triangles,
+    traffic);
+  // Whether the surface is closed, from the ringed pieces (kept for port 1's tracing).
+  const bool drawn = traffic.Points > 0;
+  if (!internal.Pieces)
+  {
+    internal.Pieces = std::make_unique<boolsurf::PieceTraceState>();
+  }
+  std::string problem;
+  bool closedSurface = false;
+  if (drawn && boolsurf::UpdateRingedPiece(controller, local, *internal.Pieces, problem))
+  {
+    if (internal.ClosedBuild != internal.Pieces->Builds) // decided alike on every rank
+    {
+      internal.PieceClosed = boolsurf::IsClosedOnPieces(controller, internal.Pieces->Ringed);
+      internal.ClosedBuild = internal.Pieces->Builds;
+    }
+    closedSurface = internal.PieceClosed;
+  }
+  std::vector<boolsurf::InputControlCurve> curves;
+  if (!ShareVerdict(controller,
+        !first ||
+          this->WriteControlCurves(sizes, placed, triangles, closedSurface, output, curves, error),
+        error))
+  {
+    return false;
+  }
+  boolsurf::AddPieceSnapping(traffic, output);
+  // Port 1: port 0's curves traced on the pieces, as Trace Surface Curves traces them there
+  // (the one-rank polylines on rank 0); empty, without a message, when they cannot be traced.
+  if (drawn)
+  {
+    boolsurf::TraceOptions options = this->GetTraceOptions();
+    options.TraceValidPartOfIncompleteCurves = true;
+    std::vector<std::string> problems, notes;
+    std::string reason;
+    switch (boolsurf::TraceOnPieces(controller,
+      local,
+      first ? output : nullptr,
+      options,
+      *internal.Pieces,
+      traced,
+      problems,
+      notes,
+      reason))
+    {
+      case boolsurf::PieceTraceOutcome::Gather:
+        if (first)
+        {
+          vtkWarningMacro("the curves were drawn on the surface gathered to rank 0, not on each "
+                          "rank's piece: "
+            << reason);
+        }
+        this->GatherInsteadOfPieces(); // decided alike on every rank
+        return true;
+      case boolsurf::PieceTraceOutcome::Failed:
+        traced->Initialize();
+        break;
+      case boolsurf::PieceTraceOutcome::Traced:
+      case boolsurf::PieceTraceOutcome::DrawingStart:
+        break;
+    }
+  }
+  if (first)
+  {
+    this->MarkDrawing(output, traced);
   }
   return true;
 }

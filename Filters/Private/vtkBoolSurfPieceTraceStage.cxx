@@ -193,6 +193,39 @@ void AddPieceTracingTraffic(const vtkBoolSurfPieceTracing::Traffic& t, vtkPolyDa
 }
 
 //------------------------------------------------------------------------------
+bool UpdateRingedPiece(vtkMultiProcessController* controller,
+  vtkPolyData* local,
+  PieceTraceState& state,
+  std::string& problem)
+{
+  int same =
+    state.HasPiece && local == state.Surface && local && local->GetMTime() == state.SurfaceTime ? 1
+                                                                                                : 0;
+  int allSame = 0;
+  controller->AllReduce(&same, &allSame, 1, vtkCommunicator::MIN_OP);
+  if (allSame)
+  {
+    return true;
+  }
+  state.HasPiece = false;
+  state.Traced = false;
+  std::string error;
+  int ok = BuildRingedPiece(controller, local, state.Ringed, error) ? 1 : 0, allOk = 0;
+  controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
+  if (!allOk)
+  {
+    problem = ok ? "another rank's piece cannot be used"
+                 : "rank " + std::to_string(controller->GetLocalProcessId()) + ": " + error;
+    return false;
+  }
+  state.HasPiece = true;
+  ++state.Builds;
+  state.Surface = local;
+  state.SurfaceTime = local ? local->GetMTime() : 0;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 PieceTraceOutcome TraceOnPieces(vtkMultiProcessController* controller,
   vtkPolyData* local,
   vtkPolyData* curves,
@@ -254,27 +287,12 @@ PieceTraceOutcome TraceOnPieces(vtkMultiProcessController* controller,
     }
   }
 
-  // The ringed piece: kept while every rank's piece is the same, unmodified (one all-reduce).
-  int same =
-    state.HasPiece && local == state.Surface && local && local->GetMTime() == state.SurfaceTime ? 1
-                                                                                                : 0;
-  int allSame = 0;
-  controller->AllReduce(&same, &allSame, 1, vtkCommunicator::MIN_OP);
-  if (!allSame)
+  // The ringed piece: kept while every rank's piece is the same, unmodified.
+  std::string problem;
+  if (!UpdateRingedPiece(controller, local, state, problem))
   {
-    state.HasPiece = false;
-    std::string error;
-    int ok = BuildRingedPiece(controller, local, state.Ringed, error) ? 1 : 0, allOk = 0;
-    controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
-    if (!allOk)
-    {
-      problems.push_back(ok ? "tracing on pieces: another rank's piece cannot be used"
-                            : "tracing on pieces: rank " + std::to_string(rank) + ": " + error);
-      return PieceTraceOutcome::Failed;
-    }
-    state.HasPiece = true;
-    state.Surface = local;
-    state.SurfaceTime = local ? local->GetMTime() : 0;
+    problems.push_back("tracing on pieces: " + problem);
+    return PieceTraceOutcome::Failed;
   }
 
   // The curves traced on the pieces, message 0 on every rank.
@@ -284,10 +302,11 @@ PieceTraceOutcome TraceOnPieces(vtkMultiProcessController* controller,
   tracing.SetOptions(pathOptions);
   tracing.SetResolution(options.Resolution);
   tracing.SetKeepWrittenForms(true);
-  tracing.SetReusePiece(allSame != 0);
+  tracing.SetReusePiece(state.Traced);
   WireBuffer message0;
   std::string error;
   const bool traced = tracing.Run(controller, state.Ringed, list, message0, error);
+  state.Traced = true;
   AddPieceTracingTraffic(tracing.GetTraffic(), output);
   if (!traced)
   {

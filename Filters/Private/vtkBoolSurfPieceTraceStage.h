@@ -45,6 +45,11 @@ struct PieceTraceState
   vtkPolyData* Surface = nullptr; ///< compared, never dereferenced
   vtkMTimeType SurfaceTime = 0;
   bool HasPiece = false;
+  /// Whether Tracing has run on Ringed since it was built (its next Run may keep what it built).
+  bool Traced = false;
+  /// How many times Ringed was built (the same count on every rank): what is derived from it
+  /// (Surface Curves' closedness) is kept while it is unchanged.
+  unsigned long long Builds = 0;
 };
 
 enum class PieceTraceOutcome
@@ -54,6 +59,14 @@ enum class PieceTraceOutcome
   Gather,       ///< not on pieces (`reason` says why): gather and trace on one rank
   Failed,       ///< `problems` lists every problem, the same on every rank
 };
+
+/// Collective: `state.Ringed`, this rank's piece `local` with its ring of ghosts, built again
+/// unless every rank's piece is the one it was built from, unmodified (one all-reduce). False
+/// on every rank, with `problem` naming the rank whose piece cannot be used.
+bool UpdateRingedPiece(vtkMultiProcessController* controller,
+  vtkPolyData* local,
+  PieceTraceState& state,
+  std::string& problem);
 
 /// Collective: Trace Surface Curves on this rank's piece `local` with the control curves
 /// `curves` (read on rank 0 only). `notes` gets rank 0's reading notes (warnings).
