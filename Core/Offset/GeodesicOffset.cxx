@@ -1061,7 +1061,15 @@ bool SharpCorner(const TriangleMesh& mesh,
   const double sine = Cross(gradient[0], gradient[1]) / (g0 * g1);
   if (!(g0 > 0.0 && g1 > 0.0) || std::abs(sine) < 0.1)
   {
-    return false; // the fronts turn by less than ~6 degrees: no corner to keep
+    // Fronts facing each other (turned by half a turn, give or take ~6 degrees) are the sides of
+    // a strip thinner than the triangle: their tangents meet nowhere near, and the strip may go
+    // on across the triangle's side to its end (TipAcrossEdge). Otherwise the fronts turn by
+    // less than ~6 degrees: no corner to keep.
+    if (outside && g0 > 0.0 && g1 > 0.0 && Dot(gradient[0], gradient[1]) < 0.0)
+    {
+      *outside = true;
+    }
+    return false;
   }
   // Tangent lines g_i . (x - p_i) = 0, solved by Cramer's rule.
   const double r0 = Dot(gradient[0], point[0]), r1 = Dot(gradient[1], point[1]);
@@ -1145,16 +1153,151 @@ bool DoubleCrossing(OffsetField& field, int edge, double sign, CanonicalPoint cr
   return crossing[0].T < crossing[1].T;
 }
 
-// Where the tip of a sharp corner leaves the crossed triangle t (piece a -> b) through its edge
-// whose two ends lie on the other side of the level set, no edge of the triangles it enters
-// straddles the level set and the contour's pieces never go there: the chord a -> b would cut
-// the tip off. The level set crosses each edge the tip passes twice: the crossings, found on the
-// exact field along the edges, and the corner in the triangle where the tip ends (SharpCorner
-// there), are the points to add after a. False when the field does not cross t's edge.
+// The triangle across `edge` from triangle t, -1 on the surface's boundary.
+int NeighborAcross(const TriangleMesh& mesh, int t, int edge)
+{
+  for (int j = 0; j < 3; ++j)
+  {
+    if (mesh.GetEdgeId(t, j) == edge)
+    {
+      return mesh.GetNeighbor(t, j);
+    }
+  }
+  return -1;
+}
+
+// An edge of a tip's way, with the end the tip's boundary reaches first going round the
+// triangle from where it came in.
+struct TipEdge
+{
+  int Edge;
+  int First;
+};
+
+void AppendTipBeyond(const TriangleMesh& mesh,
+  OffsetField& field,
+  int from,
+  int edge,
+  double sign,
+  const CanonicalPoint crossing[2],
+  int steps,
+  std::vector<CanonicalPoint>& out);
+
+// The tip's boundary in triangle t from `in` to `outPoint` (points on t's sides), round t's
+// perimeter: through each of `edges` the field crosses twice (on the tip's side, sign * F < 0,
+// between ends on the other), into the triangle beyond and back, and the corner, if any, of
+// each stretch between two such crossings (SharpCorner). False, with nothing added, when no
+// edge is crossed twice.
+bool AppendTipThrough(const TriangleMesh& mesh,
+  OffsetField& field,
+  int t,
+  const CanonicalPoint& in,
+  const CanonicalPoint& outPoint,
+  const std::vector<TipEdge>& edges,
+  double sign,
+  int steps,
+  std::vector<CanonicalPoint>& out)
+{
+  CanonicalPoint previous = in;
+  bool crossed = false;
+  for (const TipEdge& way : edges)
+  {
+    CanonicalPoint crossing[2];
+    if (!DoubleCrossing(field, way.Edge, sign, crossing))
+    {
+      continue;
+    }
+    // In the order of the perimeter: first the crossing nearer the end reached first.
+    if (mesh.GetEdgeVertices(way.Edge)[0] != way.First)
+    {
+      std::swap(crossing[0], crossing[1]);
+    }
+    crossed = true;
+    CanonicalPoint corner;
+    if (SharpCorner(mesh, field, t, previous, crossing[0], corner))
+    {
+      out.push_back(corner);
+    }
+    AppendTipBeyond(mesh, field, t, way.Edge, sign, crossing, steps, out);
+    previous = crossing[1];
+  }
+  CanonicalPoint corner;
+  if (crossed && SharpCorner(mesh, field, t, previous, outPoint, corner))
+  {
+    out.push_back(corner);
+  }
+  return crossed;
+}
+
+// The tip's part beyond `edge` of triangle `from`, which the level set crosses twice
+// (`crossing`, in the order of from's perimeter): the way in, the tip's points beyond, the way
+// out. In the triangle beyond, wholly on the other side at its corners, the tip ends at a sharp
+// corner (SharpCorner there) or goes on through the other edges the field crosses twice: one
+// for a sharp corner's tip, both for the end of a strip thinner than the mesh (an inset that
+// nearly collapses a rectangle), whose two corners lie beyond them. A tip of a few triangles at
+// most (its corners are right angles or sharper at mesh resolution): `steps` counts them.
+void AppendTipBeyond(const TriangleMesh& mesh,
+  OffsetField& field,
+  int from,
+  int edge,
+  double sign,
+  const CanonicalPoint crossing[2],
+  int steps,
+  std::vector<CanonicalPoint>& out)
+{
+  out.push_back(crossing[0]);
+  const int beyond = NeighborAcross(mesh, from, edge);
+  bool otherSide = beyond >= 0;
+  for (int j = 0; j < 3 && otherSide; ++j)
+  {
+    otherSide = sign * field.AtVertex(mesh.GetTriangle(beyond)[j]) > 0.0;
+  }
+  CanonicalPoint corner;
+  bool outside = false;
+  if (otherSide && SharpCorner(mesh, field, beyond, crossing[0], crossing[1], corner, &outside))
+  {
+    out.push_back(corner);
+  }
+  else if (otherSide && outside && steps < 3)
+  {
+    // Round the triangle beyond from the way in: the end of `edge` it is nearer, the corner
+    // opposite `edge`, the other end.
+    const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
+    const int near = crossing[0].T < crossing[1].T ? ev[0] : ev[1];
+    const Triangle& tri = mesh.GetTriangle(beyond);
+    int opposite = -1;
+    for (int j = 0; j < 3; ++j)
+    {
+      opposite = tri[j] != ev[0] && tri[j] != ev[1] ? tri[j] : opposite;
+    }
+    std::vector<TipEdge> edges(2);
+    for (int j = 0; j < 3; ++j)
+    {
+      const int e = mesh.GetEdgeId(beyond, j);
+      const std::array<int, 2> v = mesh.GetEdgeVertices(e);
+      const bool atNear = v[0] == near || v[1] == near;
+      if (e != edge)
+      {
+        edges[atNear ? 0 : 1] = { e, atNear ? near : opposite };
+      }
+    }
+    AppendTipThrough(mesh, field, beyond, crossing[0], crossing[1], edges, sign, steps + 1, out);
+  }
+  out.push_back(crossing[1]);
+}
+
+// Where the tip of a sharp corner, or the end of a strip thinner than the mesh, leaves the
+// crossed triangle t (piece a -> b) through its edge whose two ends lie on the other side of the
+// level set, no edge of the triangles it enters straddles the level set and the contour's pieces
+// never go there: the chord a -> b would cut the tip off. The level set crosses each edge the
+// tip passes twice: the crossings, found on the exact field along the edges, and the corners in
+// the triangles where the tip ends (SharpCorner there), are the points to add after a. False
+// when the field does not cross t's edge.
 bool TipAcrossEdge(const TriangleMesh& mesh,
   OffsetField& field,
   int t,
   const CanonicalPoint& a,
+  const CanonicalPoint& b,
   std::vector<CanonicalPoint>& out)
 {
   const Triangle& tri = mesh.GetTriangle(t);
@@ -1174,81 +1317,21 @@ bool TipAcrossEdge(const TriangleMesh& mesh,
   {
     ++k;
   }
-  // The tip's side of the level set is the odd corner's; it leaves t through the opposite edge.
+  // The tip's side of the level set is the odd corner's; it leaves t through the opposite edge,
+  // whose end on a's side the tip's boundary reaches first.
   const double sign = negative[k] ? 1.0 : -1.0;
-  std::vector<CanonicalPoint> entering, leaving;
-  Vec3 last = PositionOf(mesh, a);
-  int from = t, edge = mesh.GetEdgeId(t, (k + 1) % 3);
-  CanonicalPoint crossing[2];
-  if (!DoubleCrossing(field, edge, sign, crossing))
+  const int edge = mesh.GetEdgeId(t, (k + 1) % 3);
+  const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
+  int first = Distance(PositionOf(mesh, a), mesh.GetPosition(ev[0])) <
+      Distance(PositionOf(mesh, a), mesh.GetPosition(ev[1]))
+    ? ev[0]
+    : ev[1];
+  if (a.Location == PointLocation::Edge)
   {
-    return false;
+    const std::array<int, 2> av = mesh.GetEdgeVertices(a.Id);
+    first = av[0] == ev[0] || av[1] == ev[0] ? ev[0] : ev[1];
   }
-  // A tip of a few triangles at most: its corner is a right angle or sharper at mesh resolution.
-  for (int step = 0; step < 4; ++step)
-  {
-    if (Distance(PositionOf(mesh, crossing[1]), last) <
-      Distance(PositionOf(mesh, crossing[0]), last))
-    {
-      std::swap(crossing[0], crossing[1]);
-    }
-    entering.push_back(crossing[0]);
-    leaving.push_back(crossing[1]);
-    last = PositionOf(mesh, crossing[0]);
-    // The triangle beyond, wholly on the other side at its corners.
-    int beyond = -1;
-    for (int j = 0; j < 3; ++j)
-    {
-      if (mesh.GetEdgeId(from, j) == edge)
-      {
-        beyond = mesh.GetNeighbor(from, j);
-      }
-    }
-    if (beyond < 0)
-    {
-      break;
-    }
-    const Triangle& other = mesh.GetTriangle(beyond);
-    bool otherSide = true;
-    for (int j = 0; j < 3; ++j)
-    {
-      otherSide = otherSide && (field.AtVertex(other[j]) < 0.0) != negative[k];
-    }
-    if (!otherSide)
-    {
-      break;
-    }
-    CanonicalPoint corner;
-    bool outside = false;
-    if (SharpCorner(mesh, field, beyond, crossing[0], crossing[1], corner, &outside))
-    {
-      entering.push_back(corner);
-      break;
-    }
-    if (!outside)
-    {
-      break;
-    }
-    // On through whichever other edge of `beyond` the field crosses.
-    int next = -1;
-    for (int j = 0; j < 3 && next < 0; ++j)
-    {
-      const int e = mesh.GetEdgeId(beyond, j);
-      if (e != edge && DoubleCrossing(field, e, sign, crossing))
-      {
-        next = e;
-      }
-    }
-    if (next < 0)
-    {
-      break;
-    }
-    from = beyond;
-    edge = next;
-  }
-  out.insert(out.end(), entering.begin(), entering.end());
-  out.insert(out.end(), leaving.rbegin(), leaving.rend());
-  return true;
+  return AppendTipThrough(mesh, field, t, a, b, { { edge, first } }, sign, 0, out);
 }
 
 // Length of a loop and its turning sense: the area it encloses projected on the mean normal of
@@ -1363,7 +1446,7 @@ void AppendChain(const TriangleMesh& mesh,
     }
     // (A piece ending on an edge crossed twice stops short of that edge: no tip crosses it.)
     else if (!(outside && !contour.Twice[piece.From] && !contour.Twice[piece.To] &&
-               TipAcrossEdge(mesh, field, piece.Triangle, a, loop)) &&
+               TipAcrossEdge(mesh, field, piece.Triangle, a, contour.Points[piece.To], loop)) &&
       resolution > 0)
     {
       RefinePiece(mesh, field, piece.Triangle, a, contour.Points[piece.To], resolution, loop);
