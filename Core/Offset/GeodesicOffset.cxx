@@ -1229,6 +1229,104 @@ bool AppendTipThrough(const TriangleMesh& mesh,
   return crossed;
 }
 
+// Where a tip whose sides face each other (the end of a strip thinner than the mesh) ends in
+// triangle t between p and q on its sides, crossing no edge beyond: a flat end's two corners lie
+// in t, and the chord p -> q would cut them both. The end's front is found on the strip's axis
+// (normal to the sides' gradients) from the chord's middle, where the field changes sign inside
+// t, and each corner is SharpCorner's between a side's end point and that point. False, with
+// nothing added, unless both are found (a round end keeps its chord).
+bool FlatEndCorners(const TriangleMesh& mesh,
+  OffsetField& field,
+  int t,
+  const CanonicalPoint& p,
+  const CanonicalPoint& q,
+  std::vector<CanonicalPoint>& out)
+{
+  const Triangle& tri = mesh.GetTriangle(t);
+  const Vec3 p0 = mesh.GetPosition(tri[0]), p1 = mesh.GetPosition(tri[1]),
+             p2 = mesh.GetPosition(tri[2]);
+  const TrianglePlaneWeights weightsOf(p0, p1, p2);
+  const Vec3 xp = PositionOf(mesh, p), xq = PositionOf(mesh, q);
+  const double chord = Distance(xp, xq);
+  const Vec3 normal = Cross(p1 - p0, p2 - p0);
+  if (weightsOf.IsDegenerate() || !(chord > 0.0))
+  {
+    return false;
+  }
+  // The sides' gradients by one-sided differences toward the triangle's inside, a tenth of the
+  // chord from each end point (the chord may lie on t's side).
+  const Vec3 along = (1.0 / chord) * (xq - xp);
+  Vec3 across = Cross(normal, along);
+  across = (1.0 / Length(across)) * across;
+  const Vec3 centroid = (1.0 / 3.0) * (p0 + p1 + p2);
+  if (Dot(centroid - 0.5 * (xp + xq), across) < 0.0)
+  {
+    across = -1.0 * across;
+  }
+  const double h = 1e-3 * chord;
+  auto value = [&](const Vec3& x) { return field.InTriangle(t, weightsOf(x)); };
+  auto gradient = [&](const Vec3& x)
+  {
+    const double f = value(x);
+    return ((value(x + h * along) - f) / h) * along + ((value(x + h * across) - f) / h) * across;
+  };
+  const Vec3 axis = Cross(normal, gradient(xp + 0.1 * (xq - xp)) - gradient(xq + 0.1 * (xp - xq)));
+  if (!(Length(axis) > 0.0))
+  {
+    return false;
+  }
+  const Vec3 middle = 0.5 * (xp + xq);
+  const std::array<double, 3> wm = weightsOf(middle);
+  const double fm = value(middle);
+  for (double s : { 1.0, -1.0 })
+  {
+    const Vec3 dir = (s / Length(axis)) * axis;
+    // How far t extends from the middle along dir: the largest step keeping the weights >= 0.
+    const std::array<double, 3> wd = weightsOf(middle + dir);
+    double reach = Infinity;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double rate = wd[k] - wm[k];
+      if (rate < 0.0)
+      {
+        reach = std::min(reach, -std::max(0.0, wm[k]) / rate);
+      }
+    }
+    double lo = 0.0, hi = reach * (1.0 - 1e-6);
+    if (!(hi > 0.0) || reach == Infinity || (value(middle + hi * dir) < 0.0) == (fm < 0.0))
+    {
+      continue;
+    }
+    for (int it = 0; it < 50; ++it)
+    {
+      const double mid = 0.5 * (lo + hi);
+      ((value(middle + mid * dir) < 0.0) == (fm < 0.0) ? lo : hi) = mid;
+    }
+    const std::array<double, 3> w = weightsOf(middle + (0.5 * (lo + hi)) * dir);
+    SurfacePoint end;
+    end.Triangle = t;
+    end.U = std::max(w[1], 1e-9);
+    end.V = std::max(w[2], 1e-9);
+    if (end.U + end.V > 1.0 - 1e-9)
+    {
+      const double scale = (1.0 - 1e-9) / (end.U + end.V);
+      end.U *= scale;
+      end.V *= scale;
+    }
+    const CanonicalPoint m = LocateSurfacePoint(mesh, end);
+    CanonicalPoint corners[2];
+    if (SharpCorner(mesh, field, t, p, m, corners[0]) &&
+      SharpCorner(mesh, field, t, m, q, corners[1]))
+    {
+      out.push_back(corners[0]);
+      out.push_back(corners[1]);
+      return true;
+    }
+    return false;
+  }
+  return false;
+}
+
 // The tip's part beyond `edge` of triangle `from`, which the level set crosses twice
 // (`crossing`, in the order of from's perimeter): the way in, the tip's points beyond, the way
 // out. In the triangle beyond, wholly on the other side at its corners, the tip ends at a sharp
@@ -1281,7 +1379,11 @@ void AppendTipBeyond(const TriangleMesh& mesh,
         edges[atNear ? 0 : 1] = { e, atNear ? near : opposite };
       }
     }
-    AppendTipThrough(mesh, field, beyond, crossing[0], crossing[1], edges, sign, steps + 1, out);
+    if (!AppendTipThrough(
+          mesh, field, beyond, crossing[0], crossing[1], edges, sign, steps + 1, out))
+    {
+      FlatEndCorners(mesh, field, beyond, crossing[0], crossing[1], out);
+    }
   }
   out.push_back(crossing[1]);
 }
@@ -1331,7 +1433,8 @@ bool TipAcrossEdge(const TriangleMesh& mesh,
     const std::array<int, 2> av = mesh.GetEdgeVertices(a.Id);
     first = av[0] == ev[0] || av[1] == ev[0] ? ev[0] : ev[1];
   }
-  return AppendTipThrough(mesh, field, t, a, b, { { edge, first } }, sign, 0, out);
+  return AppendTipThrough(mesh, field, t, a, b, { { edge, first } }, sign, 0, out) ||
+    FlatEndCorners(mesh, field, t, a, b, out);
 }
 
 // Length of a loop and its turning sense: the area it encloses projected on the mean normal of

@@ -1478,6 +1478,15 @@ TEST(GeodesicOffset, InsetAndFlatEndCornersStaySharpOnIrregularMeshes)
       { 0.46423088625109266, 0.61600009334718353 },
       { 0.38366169065983041, 0.5346532673035107 } },
     0.045040246902307138 });
+  // The same strip's end whole in one triangle beyond the crossed one: no edge crossed beyond,
+  // its two corners there, cut by the chord across the strip (5.1e-5 short; one of 2400
+  // rectangles shrunk to strips 0.019 wide or more).
+  cases.push_back({ 3001,
+    { { 0.42793361889490816, 0.35816494929410847 },
+      { 0.52514558544090462, 0.42168245683881056 },
+      { 0.45208113519001186, 0.5335057819038358 },
+      { 0.35486916864401535, 0.46998827435913371 } },
+    0.047738787489575288 });
   // Then rectangles at angles over a quarter turn and bands at angles over a half turn, of
   // random sizes, distances and centres (a fixed sequence).
   std::mt19937_64 rng(20261128);
