@@ -1166,69 +1166,6 @@ int NeighborAcross(const TriangleMesh& mesh, int t, int edge)
   return -1;
 }
 
-// An edge of a tip's way, with the end the tip's boundary reaches first going round the
-// triangle from where it came in.
-struct TipEdge
-{
-  int Edge;
-  int First;
-};
-
-void AppendTipBeyond(const TriangleMesh& mesh,
-  OffsetField& field,
-  int from,
-  int edge,
-  double sign,
-  const CanonicalPoint crossing[2],
-  int steps,
-  std::vector<CanonicalPoint>& out);
-
-// The tip's boundary in triangle t from `in` to `outPoint` (points on t's sides), round t's
-// perimeter: through each of `edges` the field crosses twice (on the tip's side, sign * F < 0,
-// between ends on the other), into the triangle beyond and back, and the corner, if any, of
-// each stretch between two such crossings (SharpCorner). False, with nothing added, when no
-// edge is crossed twice.
-bool AppendTipThrough(const TriangleMesh& mesh,
-  OffsetField& field,
-  int t,
-  const CanonicalPoint& in,
-  const CanonicalPoint& outPoint,
-  const std::vector<TipEdge>& edges,
-  double sign,
-  int steps,
-  std::vector<CanonicalPoint>& out)
-{
-  CanonicalPoint previous = in;
-  bool crossed = false;
-  for (const TipEdge& way : edges)
-  {
-    CanonicalPoint crossing[2];
-    if (!DoubleCrossing(field, way.Edge, sign, crossing))
-    {
-      continue;
-    }
-    // In the order of the perimeter: first the crossing nearer the end reached first.
-    if (mesh.GetEdgeVertices(way.Edge)[0] != way.First)
-    {
-      std::swap(crossing[0], crossing[1]);
-    }
-    crossed = true;
-    CanonicalPoint corner;
-    if (SharpCorner(mesh, field, t, previous, crossing[0], corner))
-    {
-      out.push_back(corner);
-    }
-    AppendTipBeyond(mesh, field, t, way.Edge, sign, crossing, steps, out);
-    previous = crossing[1];
-  }
-  CanonicalPoint corner;
-  if (crossed && SharpCorner(mesh, field, t, previous, outPoint, corner))
-  {
-    out.push_back(corner);
-  }
-  return crossed;
-}
-
 // Where a tip whose sides face each other (the end of a strip thinner than the mesh) ends in
 // triangle t between p and q on its sides, crossing no edge beyond: a flat end's two corners lie
 // in t, and the chord p -> q would cut them both. The end's front is found on the strip's axis
@@ -1327,13 +1264,24 @@ bool FlatEndCorners(const TriangleMesh& mesh,
   return false;
 }
 
+// The crossings of `edge` ordered so that the first is the nearer to `last`: the way in.
+void OrderFrom(const TriangleMesh& mesh, const Vec3& last, CanonicalPoint crossing[2])
+{
+  if (Distance(PositionOf(mesh, crossing[1]), last) < Distance(PositionOf(mesh, crossing[0]), last))
+  {
+    std::swap(crossing[0], crossing[1]);
+  }
+}
+
 // The tip's part beyond `edge` of triangle `from`, which the level set crosses twice
-// (`crossing`, in the order of from's perimeter): the way in, the tip's points beyond, the way
-// out. In the triangle beyond, wholly on the other side at its corners, the tip ends at a sharp
-// corner (SharpCorner there) or goes on through the other edges the field crosses twice: one
-// for a sharp corner's tip, both for the end of a strip thinner than the mesh (an inset that
-// nearly collapses a rectangle), whose two corners lie beyond them. A tip of a few triangles at
-// most (its corners are right angles or sharper at mesh resolution): `steps` counts them.
+// (`crossing`, the way in first): the way in, the tip's points beyond, the way out. In the
+// triangle beyond, wholly on the other side at its corners, the tip ends at a sharp corner
+// (SharpCorner there), or goes on through another edge the field crosses twice (a sharp
+// corner's tip), or through both other edges (the end of a strip thinner than the mesh, an
+// inset that nearly collapses a rectangle, whose two corners lie beyond them: round the
+// triangle from the way in, the edge at the end of `edge` nearer the way in first), or ends in
+// it (a strip's flat end: FlatEndCorners). A tip of a few triangles at most (its corners are
+// right angles or sharper at mesh resolution): `steps` counts them.
 void AppendTipBeyond(const TriangleMesh& mesh,
   OffsetField& field,
   int from,
@@ -1358,29 +1306,58 @@ void AppendTipBeyond(const TriangleMesh& mesh,
   }
   else if (otherSide && outside && steps < 3)
   {
-    // Round the triangle beyond from the way in: the end of `edge` it is nearer, the corner
-    // opposite `edge`, the other end.
     const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
     const int near = crossing[0].T < crossing[1].T ? ev[0] : ev[1];
-    const Triangle& tri = mesh.GetTriangle(beyond);
-    int opposite = -1;
-    for (int j = 0; j < 3; ++j)
-    {
-      opposite = tri[j] != ev[0] && tri[j] != ev[1] ? tri[j] : opposite;
-    }
-    std::vector<TipEdge> edges(2);
+    int edges[2] = { -1, -1 };
+    CanonicalPoint next[2][2];
+    int count = 0;
     for (int j = 0; j < 3; ++j)
     {
       const int e = mesh.GetEdgeId(beyond, j);
-      const std::array<int, 2> v = mesh.GetEdgeVertices(e);
-      const bool atNear = v[0] == near || v[1] == near;
-      if (e != edge)
+      if (e != edge && DoubleCrossing(field, e, sign, next[count]))
       {
-        edges[atNear ? 0 : 1] = { e, atNear ? near : opposite };
+        edges[count++] = e;
       }
     }
-    if (!AppendTipThrough(
-          mesh, field, beyond, crossing[0], crossing[1], edges, sign, steps + 1, out))
+    if (count > 0)
+    {
+      // One edge: its way in nearer the last one. Two: the edge at `near` first, and on each
+      // the crossing nearer the end reached first (`near`, or the corner opposite `edge`). The
+      // corner of each stretch between is kept (a strip's end with one corner here).
+      const std::array<int, 2> e0 = mesh.GetEdgeVertices(edges[0]);
+      const int first = count == 2 && !(e0[0] == near || e0[1] == near) ? 1 : 0;
+      CanonicalPoint previous = crossing[0];
+      for (int i : { first, 1 - first })
+      {
+        if (i >= count)
+        {
+          continue;
+        }
+        const std::array<int, 2> v = mesh.GetEdgeVertices(edges[i]);
+        const bool atNear = v[0] == near || v[1] == near;
+        const int reached = atNear ? near : (v[0] == ev[0] || v[0] == ev[1] ? v[1] : v[0]);
+        if (count == 1)
+        {
+          OrderFrom(mesh, PositionOf(mesh, crossing[0]), next[i]);
+        }
+        else if (v[0] != reached)
+        {
+          std::swap(next[i][0], next[i][1]);
+        }
+        // A corner between (a strip's end with one corner here, the other beyond).
+        if (SharpCorner(mesh, field, beyond, previous, next[i][0], corner))
+        {
+          out.push_back(corner);
+        }
+        AppendTipBeyond(mesh, field, beyond, edges[i], sign, next[i], steps + 1, out);
+        previous = next[i][1];
+      }
+      if (SharpCorner(mesh, field, beyond, previous, crossing[1], corner))
+      {
+        out.push_back(corner);
+      }
+    }
+    else
     {
       FlatEndCorners(mesh, field, beyond, crossing[0], crossing[1], out);
     }
@@ -1393,8 +1370,8 @@ void AppendTipBeyond(const TriangleMesh& mesh,
 // level set, no edge of the triangles it enters straddles the level set and the contour's pieces
 // never go there: the chord a -> b would cut the tip off. The level set crosses each edge the
 // tip passes twice: the crossings, found on the exact field along the edges, and the corners in
-// the triangles where the tip ends (SharpCorner there), are the points to add after a. False
-// when the field does not cross t's edge.
+// the triangles where the tip ends (SharpCorner there), are the points to add after a. A strip
+// whose end lies in t keeps its corners there (FlatEndCorners). False when neither is found.
 bool TipAcrossEdge(const TriangleMesh& mesh,
   OffsetField& field,
   int t,
@@ -1419,22 +1396,28 @@ bool TipAcrossEdge(const TriangleMesh& mesh,
   {
     ++k;
   }
-  // The tip's side of the level set is the odd corner's; it leaves t through the opposite edge,
-  // whose end on a's side the tip's boundary reaches first.
+  // The tip's side of the level set is the odd corner's; it leaves t through the opposite edge.
   const double sign = negative[k] ? 1.0 : -1.0;
   const int edge = mesh.GetEdgeId(t, (k + 1) % 3);
-  const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
-  int first = Distance(PositionOf(mesh, a), mesh.GetPosition(ev[0])) <
-      Distance(PositionOf(mesh, a), mesh.GetPosition(ev[1]))
-    ? ev[0]
-    : ev[1];
-  if (a.Location == PointLocation::Edge)
+  CanonicalPoint crossing[2];
+  if (!DoubleCrossing(field, edge, sign, crossing))
   {
-    const std::array<int, 2> av = mesh.GetEdgeVertices(a.Id);
-    first = av[0] == ev[0] || av[1] == ev[0] ? ev[0] : ev[1];
+    return FlatEndCorners(mesh, field, t, a, b, out);
   }
-  return AppendTipThrough(mesh, field, t, a, b, { { edge, first } }, sign, 0, out) ||
-    FlatEndCorners(mesh, field, t, a, b, out);
+  // The way in is the crossing nearer to a, with the corners in t itself between a or b and the
+  // tip's way (a strip's end with one corner in t, the other beyond).
+  OrderFrom(mesh, PositionOf(mesh, a), crossing);
+  CanonicalPoint corner;
+  if (SharpCorner(mesh, field, t, a, crossing[0], corner))
+  {
+    out.push_back(corner);
+  }
+  AppendTipBeyond(mesh, field, t, edge, sign, crossing, 0, out);
+  if (SharpCorner(mesh, field, t, crossing[1], b, corner))
+  {
+    out.push_back(corner);
+  }
+  return true;
 }
 
 // Length of a loop and its turning sense: the area it encloses projected on the mean normal of
