@@ -1061,7 +1061,15 @@ bool SharpCorner(const TriangleMesh& mesh,
   const double sine = Cross(gradient[0], gradient[1]) / (g0 * g1);
   if (!(g0 > 0.0 && g1 > 0.0) || std::abs(sine) < 0.1)
   {
-    return false; // the fronts turn by less than ~6 degrees: no corner to keep
+    // Fronts facing each other (turned by half a turn, give or take ~6 degrees) are the sides of
+    // a strip thinner than the triangle: their tangents meet nowhere near, and the strip may go
+    // on across the triangle's side to its end (TipAcrossEdge). Otherwise the fronts turn by
+    // less than ~6 degrees: no corner to keep.
+    if (outside && g0 > 0.0 && g1 > 0.0 && Dot(gradient[0], gradient[1]) < 0.0)
+    {
+      *outside = true;
+    }
+    return false;
   }
   // Tangent lines g_i . (x - p_i) = 0, solved by Cramer's rule.
   const double r0 = Dot(gradient[0], point[0]), r1 = Dot(gradient[1], point[1]);
@@ -1145,16 +1153,230 @@ bool DoubleCrossing(OffsetField& field, int edge, double sign, CanonicalPoint cr
   return crossing[0].T < crossing[1].T;
 }
 
-// Where the tip of a sharp corner leaves the crossed triangle t (piece a -> b) through its edge
-// whose two ends lie on the other side of the level set, no edge of the triangles it enters
-// straddles the level set and the contour's pieces never go there: the chord a -> b would cut
-// the tip off. The level set crosses each edge the tip passes twice: the crossings, found on the
-// exact field along the edges, and the corner in the triangle where the tip ends (SharpCorner
-// there), are the points to add after a. False when the field does not cross t's edge.
+// The triangle across `edge` from triangle t, -1 on the surface's boundary.
+int NeighborAcross(const TriangleMesh& mesh, int t, int edge)
+{
+  for (int j = 0; j < 3; ++j)
+  {
+    if (mesh.GetEdgeId(t, j) == edge)
+    {
+      return mesh.GetNeighbor(t, j);
+    }
+  }
+  return -1;
+}
+
+// Where a tip whose sides face each other (the end of a strip thinner than the mesh) ends in
+// triangle t between p and q on its sides, crossing no edge beyond: a flat end's two corners lie
+// in t, and the chord p -> q would cut them both. The end's front is found on the strip's axis
+// (normal to the sides' gradients) from the chord's middle, where the field changes sign inside
+// t, and each corner is SharpCorner's between a side's end point and that point. False, with
+// nothing added, unless both are found (a round end keeps its chord).
+bool FlatEndCorners(const TriangleMesh& mesh,
+  OffsetField& field,
+  int t,
+  const CanonicalPoint& p,
+  const CanonicalPoint& q,
+  std::vector<CanonicalPoint>& out)
+{
+  const Triangle& tri = mesh.GetTriangle(t);
+  const Vec3 p0 = mesh.GetPosition(tri[0]), p1 = mesh.GetPosition(tri[1]),
+             p2 = mesh.GetPosition(tri[2]);
+  const TrianglePlaneWeights weightsOf(p0, p1, p2);
+  const Vec3 xp = PositionOf(mesh, p), xq = PositionOf(mesh, q);
+  const double chord = Distance(xp, xq);
+  const Vec3 normal = Cross(p1 - p0, p2 - p0);
+  if (weightsOf.IsDegenerate() || !(chord > 0.0))
+  {
+    return false;
+  }
+  // The sides' gradients by one-sided differences toward the triangle's inside, a tenth of the
+  // chord from each end point (the chord may lie on t's side).
+  const Vec3 along = (1.0 / chord) * (xq - xp);
+  Vec3 across = Cross(normal, along);
+  across = (1.0 / Length(across)) * across;
+  const Vec3 centroid = (1.0 / 3.0) * (p0 + p1 + p2);
+  if (Dot(centroid - 0.5 * (xp + xq), across) < 0.0)
+  {
+    across = -1.0 * across;
+  }
+  const double h = 1e-3 * chord;
+  auto value = [&](const Vec3& x) { return field.InTriangle(t, weightsOf(x)); };
+  auto gradient = [&](const Vec3& x)
+  {
+    const double f = value(x);
+    return ((value(x + h * along) - f) / h) * along + ((value(x + h * across) - f) / h) * across;
+  };
+  const Vec3 axis = Cross(normal, gradient(xp + 0.1 * (xq - xp)) - gradient(xq + 0.1 * (xp - xq)));
+  if (!(Length(axis) > 0.0))
+  {
+    return false;
+  }
+  const Vec3 middle = 0.5 * (xp + xq);
+  const std::array<double, 3> wm = weightsOf(middle);
+  const double fm = value(middle);
+  for (double s : { 1.0, -1.0 })
+  {
+    const Vec3 dir = (s / Length(axis)) * axis;
+    // How far t extends from the middle along dir: the largest step keeping the weights >= 0.
+    const std::array<double, 3> wd = weightsOf(middle + dir);
+    double reach = Infinity;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double rate = wd[k] - wm[k];
+      if (rate < 0.0)
+      {
+        reach = std::min(reach, -std::max(0.0, wm[k]) / rate);
+      }
+    }
+    double lo = 0.0, hi = reach * (1.0 - 1e-6);
+    if (!(hi > 0.0) || reach == Infinity || (value(middle + hi * dir) < 0.0) == (fm < 0.0))
+    {
+      continue;
+    }
+    for (int it = 0; it < 50; ++it)
+    {
+      const double mid = 0.5 * (lo + hi);
+      ((value(middle + mid * dir) < 0.0) == (fm < 0.0) ? lo : hi) = mid;
+    }
+    const std::array<double, 3> w = weightsOf(middle + (0.5 * (lo + hi)) * dir);
+    SurfacePoint end;
+    end.Triangle = t;
+    end.U = std::max(w[1], 1e-9);
+    end.V = std::max(w[2], 1e-9);
+    if (end.U + end.V > 1.0 - 1e-9)
+    {
+      const double scale = (1.0 - 1e-9) / (end.U + end.V);
+      end.U *= scale;
+      end.V *= scale;
+    }
+    const CanonicalPoint m = LocateSurfacePoint(mesh, end);
+    CanonicalPoint corners[2];
+    if (SharpCorner(mesh, field, t, p, m, corners[0]) &&
+      SharpCorner(mesh, field, t, m, q, corners[1]))
+    {
+      out.push_back(corners[0]);
+      out.push_back(corners[1]);
+      return true;
+    }
+    return false;
+  }
+  return false;
+}
+
+// The crossings of `edge` ordered so that the first is the nearer to `last`: the way in.
+void OrderFrom(const TriangleMesh& mesh, const Vec3& last, CanonicalPoint crossing[2])
+{
+  if (Distance(PositionOf(mesh, crossing[1]), last) < Distance(PositionOf(mesh, crossing[0]), last))
+  {
+    std::swap(crossing[0], crossing[1]);
+  }
+}
+
+// The tip's part beyond `edge` of triangle `from`, which the level set crosses twice
+// (`crossing`, the way in first): the way in, the tip's points beyond, the way out. In the
+// triangle beyond, wholly on the other side at its corners, the tip ends at a sharp corner
+// (SharpCorner there), or goes on through another edge the field crosses twice (a sharp
+// corner's tip), or through both other edges (the end of a strip thinner than the mesh, an
+// inset that nearly collapses a rectangle, whose two corners lie beyond them: round the
+// triangle from the way in, the edge at the end of `edge` nearer the way in first), or ends in
+// it (a strip's flat end: FlatEndCorners). A tip of a few triangles at most (its corners are
+// right angles or sharper at mesh resolution): `steps` counts them.
+void AppendTipBeyond(const TriangleMesh& mesh,
+  OffsetField& field,
+  int from,
+  int edge,
+  double sign,
+  const CanonicalPoint crossing[2],
+  int steps,
+  std::vector<CanonicalPoint>& out)
+{
+  out.push_back(crossing[0]);
+  const int beyond = NeighborAcross(mesh, from, edge);
+  bool otherSide = beyond >= 0;
+  for (int j = 0; j < 3 && otherSide; ++j)
+  {
+    otherSide = sign * field.AtVertex(mesh.GetTriangle(beyond)[j]) > 0.0;
+  }
+  CanonicalPoint corner;
+  bool outside = false;
+  if (otherSide && SharpCorner(mesh, field, beyond, crossing[0], crossing[1], corner, &outside))
+  {
+    out.push_back(corner);
+  }
+  else if (otherSide && outside && steps < 3)
+  {
+    const std::array<int, 2> ev = mesh.GetEdgeVertices(edge);
+    const int near = crossing[0].T < crossing[1].T ? ev[0] : ev[1];
+    int edges[2] = { -1, -1 };
+    CanonicalPoint next[2][2];
+    int count = 0;
+    for (int j = 0; j < 3; ++j)
+    {
+      const int e = mesh.GetEdgeId(beyond, j);
+      if (e != edge && DoubleCrossing(field, e, sign, next[count]))
+      {
+        edges[count++] = e;
+      }
+    }
+    if (count > 0)
+    {
+      // One edge: its way in nearer the last one. Two: the edge at `near` first, and on each
+      // the crossing nearer the end reached first (`near`, or the corner opposite `edge`). The
+      // corner of each stretch between is kept (a strip's end with one corner here).
+      const std::array<int, 2> e0 = mesh.GetEdgeVertices(edges[0]);
+      const int first = count == 2 && !(e0[0] == near || e0[1] == near) ? 1 : 0;
+      CanonicalPoint previous = crossing[0];
+      for (int i : { first, 1 - first })
+      {
+        if (i >= count)
+        {
+          continue;
+        }
+        const std::array<int, 2> v = mesh.GetEdgeVertices(edges[i]);
+        const bool atNear = v[0] == near || v[1] == near;
+        const int reached = atNear ? near : (v[0] == ev[0] || v[0] == ev[1] ? v[1] : v[0]);
+        if (count == 1)
+        {
+          OrderFrom(mesh, PositionOf(mesh, crossing[0]), next[i]);
+        }
+        else if (v[0] != reached)
+        {
+          std::swap(next[i][0], next[i][1]);
+        }
+        // A corner between (a strip's end with one corner here, the other beyond).
+        if (SharpCorner(mesh, field, beyond, previous, next[i][0], corner))
+        {
+          out.push_back(corner);
+        }
+        AppendTipBeyond(mesh, field, beyond, edges[i], sign, next[i], steps + 1, out);
+        previous = next[i][1];
+      }
+      if (SharpCorner(mesh, field, beyond, previous, crossing[1], corner))
+      {
+        out.push_back(corner);
+      }
+    }
+    else
+    {
+      FlatEndCorners(mesh, field, beyond, crossing[0], crossing[1], out);
+    }
+  }
+  out.push_back(crossing[1]);
+}
+
+// Where the tip of a sharp corner, or the end of a strip thinner than the mesh, leaves the
+// crossed triangle t (piece a -> b) through its edge whose two ends lie on the other side of the
+// level set, no edge of the triangles it enters straddles the level set and the contour's pieces
+// never go there: the chord a -> b would cut the tip off. The level set crosses each edge the
+// tip passes twice: the crossings, found on the exact field along the edges, and the corners in
+// the triangles where the tip ends (SharpCorner there), are the points to add after a. A strip
+// whose end lies in t keeps its corners there (FlatEndCorners). False when neither is found.
 bool TipAcrossEdge(const TriangleMesh& mesh,
   OffsetField& field,
   int t,
   const CanonicalPoint& a,
+  const CanonicalPoint& b,
   std::vector<CanonicalPoint>& out)
 {
   const Triangle& tri = mesh.GetTriangle(t);
@@ -1176,78 +1398,25 @@ bool TipAcrossEdge(const TriangleMesh& mesh,
   }
   // The tip's side of the level set is the odd corner's; it leaves t through the opposite edge.
   const double sign = negative[k] ? 1.0 : -1.0;
-  std::vector<CanonicalPoint> entering, leaving;
-  Vec3 last = PositionOf(mesh, a);
-  int from = t, edge = mesh.GetEdgeId(t, (k + 1) % 3);
+  const int edge = mesh.GetEdgeId(t, (k + 1) % 3);
   CanonicalPoint crossing[2];
   if (!DoubleCrossing(field, edge, sign, crossing))
   {
-    return false;
+    return FlatEndCorners(mesh, field, t, a, b, out);
   }
-  // A tip of a few triangles at most: its corner is a right angle or sharper at mesh resolution.
-  for (int step = 0; step < 4; ++step)
+  // The way in is the crossing nearer to a, with the corners in t itself between a or b and the
+  // tip's way (a strip's end with one corner in t, the other beyond).
+  OrderFrom(mesh, PositionOf(mesh, a), crossing);
+  CanonicalPoint corner;
+  if (SharpCorner(mesh, field, t, a, crossing[0], corner))
   {
-    if (Distance(PositionOf(mesh, crossing[1]), last) <
-      Distance(PositionOf(mesh, crossing[0]), last))
-    {
-      std::swap(crossing[0], crossing[1]);
-    }
-    entering.push_back(crossing[0]);
-    leaving.push_back(crossing[1]);
-    last = PositionOf(mesh, crossing[0]);
-    // The triangle beyond, wholly on the other side at its corners.
-    int beyond = -1;
-    for (int j = 0; j < 3; ++j)
-    {
-      if (mesh.GetEdgeId(from, j) == edge)
-      {
-        beyond = mesh.GetNeighbor(from, j);
-      }
-    }
-    if (beyond < 0)
-    {
-      break;
-    }
-    const Triangle& other = mesh.GetTriangle(beyond);
-    bool otherSide = true;
-    for (int j = 0; j < 3; ++j)
-    {
-      otherSide = otherSide && (field.AtVertex(other[j]) < 0.0) != negative[k];
-    }
-    if (!otherSide)
-    {
-      break;
-    }
-    CanonicalPoint corner;
-    bool outside = false;
-    if (SharpCorner(mesh, field, beyond, crossing[0], crossing[1], corner, &outside))
-    {
-      entering.push_back(corner);
-      break;
-    }
-    if (!outside)
-    {
-      break;
-    }
-    // On through whichever other edge of `beyond` the field crosses.
-    int next = -1;
-    for (int j = 0; j < 3 && next < 0; ++j)
-    {
-      const int e = mesh.GetEdgeId(beyond, j);
-      if (e != edge && DoubleCrossing(field, e, sign, crossing))
-      {
-        next = e;
-      }
-    }
-    if (next < 0)
-    {
-      break;
-    }
-    from = beyond;
-    edge = next;
+    out.push_back(corner);
   }
-  out.insert(out.end(), entering.begin(), entering.end());
-  out.insert(out.end(), leaving.rbegin(), leaving.rend());
+  AppendTipBeyond(mesh, field, t, edge, sign, crossing, 0, out);
+  if (SharpCorner(mesh, field, t, crossing[1], b, corner))
+  {
+    out.push_back(corner);
+  }
   return true;
 }
 
@@ -1363,7 +1532,7 @@ void AppendChain(const TriangleMesh& mesh,
     }
     // (A piece ending on an edge crossed twice stops short of that edge: no tip crosses it.)
     else if (!(outside && !contour.Twice[piece.From] && !contour.Twice[piece.To] &&
-               TipAcrossEdge(mesh, field, piece.Triangle, a, loop)) &&
+               TipAcrossEdge(mesh, field, piece.Triangle, a, contour.Points[piece.To], loop)) &&
       resolution > 0)
     {
       RefinePiece(mesh, field, piece.Triangle, a, contour.Points[piece.To], resolution, loop);

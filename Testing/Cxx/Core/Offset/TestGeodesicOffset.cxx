@@ -1465,6 +1465,28 @@ TEST(GeodesicOffset, InsetAndFlatEndCornersStaySharpOnIrregularMeshes)
     cases.push_back({ seedFlat, way(cornerTwoStepsAway), 0.059689133622863863 });
     cases.push_back({ 5002, way(vertexOnTheEndsLine), 0.029442864405349468 });
   }
+  // An inset that nearly collapses a rectangle (its short side 0.114, d 0.045): a strip 0.024
+  // wide, thinner than the mesh at one end, whose end left the crossed triangle through its edge
+  // opposite the corner inside and went on through both other edges of the triangle beyond,
+  // each holding a corner beyond it. The strip's sides face each other, so no corner was seen
+  // and the chord across the strip cut the end off, 2.1e-4 short
+  // (BOOLSURF_OFFSET_SEED=9180116814168389177 in RandomFlatCasesMatchClipper).
+  std::mt19937_64 regressionStrip(9180116814168389177ull);
+  cases.push_back({ static_cast<std::uint32_t>(regressionStrip()),
+    { { 0.53576911374890734, 0.38399990665281647 },
+      { 0.61633830934016953, 0.46534673269648924 },
+      { 0.46423088625109266, 0.61600009334718353 },
+      { 0.38366169065983041, 0.5346532673035107 } },
+    0.045040246902307138 });
+  // The same strip's end whole in one triangle beyond the crossed one: no edge crossed beyond,
+  // its two corners there, cut by the chord across the strip (5.1e-5 short; one of 2400
+  // rectangles shrunk to strips 0.019 wide or more).
+  cases.push_back({ 3001,
+    { { 0.42793361889490816, 0.35816494929410847 },
+      { 0.52514558544090462, 0.42168245683881056 },
+      { 0.45208113519001186, 0.5335057819038358 },
+      { 0.35486916864401535, 0.46998827435913371 } },
+    0.047738787489575288 });
   // Then rectangles at angles over a quarter turn and bands at angles over a half turn, of
   // random sizes, distances and centres (a fixed sequence).
   std::mt19937_64 rng(20261128);
