@@ -26,7 +26,8 @@ from boolsurf_example_utils import (SurfaceRays, curves_source, load_plugin,  # 
                                     ranks, surface_circle)
 from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager as sm  # noqa: E402
-from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mpi_pieces_fetch import per_source  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--json", required=True)
@@ -88,23 +89,6 @@ def fetched(proxy, script=RANK, **kw):
     data = sm.Fetch(filter)
     Delete(filter)
     return data
-
-
-def per_source(data, arrays):
-    """Per SourceTriangle: the triangles' [area, *values of `arrays`], in output order."""
-    sizes = vtkCellSizeFilter()
-    sizes.SetInputData(data)
-    sizes.Update()
-    area = sizes.GetOutput().GetCellData().GetArray("Area")
-    source = data.GetCellData().GetArray("SourceTriangle")
-    values = [data.GetCellData().GetArray(a) for a in arrays]
-    out = {}
-    for c in range(data.GetNumberOfCells()):
-        row = [area.GetValue(c)]
-        for v in values:
-            row += [v.GetComponent(c, k) for k in range(v.GetNumberOfComponents())]
-        out.setdefault(str(int(source.GetTuple1(c))), []).append(row)
-    return out
 
 
 def field(data, name):

@@ -11,44 +11,17 @@ the one-rank answer on the surface those pieces form (the triangles numbered ran
 the gathered surface numbers them). Each run has a time limit: a rank left waiting fails the
 test.
 """
-import json
 import os
-import shutil
-import subprocess
 import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import scratch  # noqa: E402
+from mpi_pieces_compare import PvbatchRuns  # noqa: E402
 
-source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
-                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-script = os.path.join(source_dir, "Testing", "Python", "MpiPiecesCurves.py")
-mpiexec = shutil.which("mpiexec")
-pvbatch = shutil.which("pvbatch")
-if not mpiexec or not pvbatch:
-    print("mpiexec or pvbatch not found: nothing to test")
-    sys.exit(0)
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1")
-out = scratch.folder("boolsurf-pieces-curves-")
+runs = PvbatchRuns("MpiPiecesCurves.py", "boolsurf-pieces-curves-")
+out = runs.out
 
 
 def run(ranks, extra=(), name=None):
-    path = os.path.join(out, (name or "r%d" % ranks) + ".json")
-    command = [mpiexec, "-np", str(ranks), pvbatch, script, "--json", path] + list(extra)
-    # Its own process group, so a hung run's ranks can all be stopped.
-    process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True, start_new_session=True)
-    try:
-        output, _ = process.communicate(timeout=240)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, 9)
-        process.communicate()
-        raise SystemExit("%d ranks: no answer within 240 s (a rank waits for another)" % ranks)
-    if process.returncode != 0 or not os.path.exists(path):
-        print(output)
-        raise SystemExit("%d ranks: pvbatch failed (exit code %d)" % (ranks, process.returncode))
-    with open(path) as f:
-        return json.load(f), output
+    return runs.run(ranks, extra=extra, name=name)
 
 
 def same_ports(got, expected, where):

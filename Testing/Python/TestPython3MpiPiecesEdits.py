@@ -8,60 +8,18 @@ an earlier result is free the arrangement is computed again in place (Core's edi
 edit moves a small circle across rank boundaries (the ranks holding its triangles change).
 Each run has a time limit: a rank left waiting fails the test.
 """
-import json
 import os
 import shutil
-import subprocess
 import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import scratch  # noqa: E402
+from mpi_pieces_compare import PvbatchRuns, same_by_source  # noqa: E402
 
-source_dir = os.environ.get("BOOLSURF_SOURCE_DIR",
-                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-script = os.path.join(source_dir, "Testing", "Python", "MpiPiecesEdits.py")
-mpiexec = shutil.which("mpiexec")
-pvbatch = shutil.which("pvbatch")
-if not mpiexec or not pvbatch:
-    print("mpiexec or pvbatch not found: nothing to test")
-    sys.exit(0)
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1")
-out = scratch.folder("boolsurf-pieces-edits-")
+runs = PvbatchRuns("MpiPiecesEdits.py", "boolsurf-pieces-edits-")
+out = runs.out
 
 
 def run(ranks):
-    path = os.path.join(out, "r%d.json" % ranks)
-    command = [mpiexec, "-np", str(ranks), pvbatch, script, "--json", path]
-    # Its own process group, so a hung run's ranks can all be stopped.
-    process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True, start_new_session=True)
-    try:
-        output, _ = process.communicate(timeout=300)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, 9)
-        process.communicate()
-        raise SystemExit("%d ranks: no answer within 300 s (a rank waits for another)" % ranks)
-    if process.returncode != 0 or not os.path.exists(path):
-        print(output)
-        raise SystemExit("%d ranks: pvbatch failed (exit code %d)" % (ranks, process.returncode))
-    with open(path) as f:
-        return json.load(f)
-
-
-def same_by_source(a, b, where, ordered):
-    """Per source triangle: the same rows (area to 1e-12, every other value exactly), in the
-    same order when `ordered` (the refined surface), else as sets (the one-rank region lists a
-    source triangle's triangles in its extractor's order)."""
-    assert a.keys() == b.keys(), (where, sorted(set(a) ^ set(b))[:10])
-    for source in a:
-        rows_a, rows_b = a[source], b[source]
-        if not ordered:
-            rows_a = sorted(rows_a, key=lambda row: (row[1:], row[0]))
-            rows_b = sorted(rows_b, key=lambda row: (row[1:], row[0]))
-        assert len(rows_a) == len(rows_b), (where, source, rows_a, rows_b)
-        for x, y in zip(rows_a, rows_b):
-            assert abs(x[0] - y[0]) <= 1e-12, (where, source, x, y)
-            assert x[1:] == y[1:], (where, source, x, y)
+    return runs.run(ranks, seconds=300)[0]
 
 
 serial = run(1)["steps"]

@@ -1,6 +1,6 @@
 """The driver side of the pvbatch runs under MPI (TestPython3MpiPiecesChain.py,
-TestPython3MpiOneStep.py, TestPython3MpiPieces.py, TestPython3MpiRanks.py,
-TestPython3MpiScaleScript.py): a command run under a time limit (a rank left waiting fails the
+TestPython3MpiOneStep.py, TestPython3MpiPieces.py, TestPython3MpiPiecesCurves.py,
+TestPython3MpiPiecesEdits.py, TestPython3MpiRanks.py, TestPython3MpiScaleScript.py): a command run under a time limit (a rank left waiting fails the
 test), a script run by mpiexec on N ranks, and the comparisons of a union over ranks with one
 rank's output.
 """
@@ -53,15 +53,17 @@ class PvbatchRuns:
         self.script = os.path.join(source_dir, "Testing", "Python", script)
         self.out = scratch.folder(prefix)
 
-    def run(self, ranks, partitions=None):
+    def run(self, ranks, partitions=None, extra=(), name=None, seconds=240):
         """The script's JSON and its output on `ranks` ranks (the surface split into
-        `partitions` parts when given)."""
-        name = "r%d%s.json" % (ranks, "p%d" % partitions if partitions else "")
+        `partitions` parts when given; `extra` more arguments, `name` the JSON's name when
+        several runs have the same number of ranks), under a limit of `seconds`."""
+        name = (name or "r%d%s" % (ranks, "p%d" % partitions if partitions else "")) + ".json"
         path = os.path.join(self.out, name)
         command = [self.mpiexec, "-np", str(ranks), self.pvbatch, self.script, "--json", path]
         if partitions:
             command += ["--partitions", str(partitions)]
-        output = run_limited(command, "%d ranks" % ranks)
+        command += list(extra)
+        output = run_limited(command, "%d ranks" % ranks, seconds)
         if not os.path.exists(path):
             print(output)
             raise SystemExit("%d ranks: pvbatch wrote no %s" % (ranks, name))
