@@ -17,8 +17,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pieces_fetch import (fetched, field, holders, lines, per_source, ranks,  # noqa: E402
-                              sample_source, start)
+from mpi_pieces_fetch import (VALUES_AS_ONE_POINT, fetched, field, holders, lines,  # noqa: E402
+                              per_source, ranks, sample_source, start)
 from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager as sm  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
@@ -50,16 +50,7 @@ values = {"Rank": rank, "Message": digest(pieces), "Reference": digest(gathered)
           "Lines": pieces.GetNumberOfLines()}
 for k in range(traffic.GetNumberOfComponents() if traffic else 0):
     values[traffic.GetComponentName(k)] = traffic.GetComponent(0, k)
-out = self.GetOutput()
-points = vtkPoints()
-points.InsertNextPoint(0, 0, 0)
-out.SetPoints(points)
-for name, value in values.items():
-    array = vtkDoubleArray()
-    array.SetName(name)
-    array.InsertNextValue(value)
-    out.GetPointData().AddArray(array)
-"""
+""" + VALUES_AS_ONE_POINT
 
 
 def per_rank(pieces, gathered):

@@ -32,6 +32,8 @@ from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
 from vtkmodules.vtkFiltersCore import vtkCleanPolyData  # noqa: E402
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mpi_pieces_fetch import VALUES_AS_ONE_POINT  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--json", required=True)
@@ -65,16 +67,7 @@ for port in range(self.GetNumberOfInputConnections(0)):
         a = data.GetFieldData().GetArray(name)
         for k in range(a.GetNumberOfComponents() if a else 0):
             values[name + ":" + a.GetComponentName(k)] = a.GetComponent(0, k)
-out = self.GetOutput()
-points = vtkPoints()
-points.InsertNextPoint(0, 0, 0)
-out.SetPoints(points)
-for name, value in values.items():
-    array = vtkDoubleArray()
-    array.SetName(name)
-    array.InsertNextValue(value)
-    out.GetPointData().AddArray(array)
-"""
+""" + VALUES_AS_ONE_POINT
 
 
 def per_rank(source):

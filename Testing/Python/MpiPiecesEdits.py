@@ -27,7 +27,7 @@ from boolsurf_example_utils import (SurfaceRays, curves_source, load_plugin,  # 
 from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager as sm  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pieces_fetch import per_source  # noqa: E402
+from mpi_pieces_fetch import VALUES_AS_ONE_POINT, per_source  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--json", required=True)
@@ -67,19 +67,10 @@ REUSE = """
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 reuse = self.GetInput().GetFieldData().GetArray("PieceArrangementReuse")
-out = self.GetOutput()
-points = vtkPoints()
-points.InsertNextPoint(0, 0, 0)
-out.SetPoints(points)
 values = {"Rank": vtkMultiProcessController.GetGlobalController().GetLocalProcessId()}
 for k in range(reuse.GetNumberOfComponents() if reuse else 0):
     values[reuse.GetComponentName(k)] = reuse.GetComponent(0, k)
-for name, value in values.items():
-    array = vtkDoubleArray()
-    array.SetName(name)
-    array.InsertNextValue(value)
-    out.GetPointData().AddArray(array)
-"""
+""" + VALUES_AS_ONE_POINT
 
 
 def fetched(proxy, script=RANK, **kw):

@@ -17,6 +17,21 @@ from paraview.simple import (ExtractSurface, GenerateGlobalIds, PLYReader,  # no
 from paraview import servermanager as sm  # noqa: E402
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 
+# The end of a programmable filter's script that writes its dict `values` as the arrays of one
+# point (the script imports vtkDoubleArray and vtkPoints): one point per rank, so the fetched
+# union lists what every rank said.
+VALUES_AS_ONE_POINT = """
+out = self.GetOutput()
+points = vtkPoints()
+points.InsertNextPoint(0, 0, 0)
+out.SetPoints(points)
+for name, value in values.items():
+    array = vtkDoubleArray()
+    array.SetName(name)
+    array.InsertNextValue(value)
+    out.GetPointData().AddArray(array)
+"""
+
 
 def start(doc, ns):
     """The script's arguments (--json, --partitions K), the plugin loaded into the script's
