@@ -902,6 +902,24 @@ private:
   std::unordered_map<int, std::array<int, 2>> TwiceAt; // edge -> its two crossings, or -1s
 };
 
+// The point of triangle `t` with barycentric weights `w`, kept 1e-9 inside the triangle: a
+// point found by bisection on the level set lies in the triangle's interior, never on an edge
+// or a corner, whose canonical forms are the crossings'.
+CanonicalPoint InteriorPoint(const TriangleMesh& mesh, int t, const std::array<double, 3>& w)
+{
+  SurfacePoint p;
+  p.Triangle = t;
+  p.U = std::max(w[1], 1e-9);
+  p.V = std::max(w[2], 1e-9);
+  if (p.U + p.V > 1.0 - 1e-9)
+  {
+    const double scale = (1.0 - 1e-9) / (p.U + p.V);
+    p.U *= scale;
+    p.V *= scale;
+  }
+  return LocateSurfacePoint(mesh, p);
+}
+
 // Points on the level set inside a crossed triangle between a piece's two end points, found by
 // bisection along the chord's normal in the triangle's plane.
 void RefinePiece(const TriangleMesh& mesh,
@@ -974,18 +992,7 @@ void RefinePiece(const TriangleMesh& mesh,
         hi = mid;
       }
     }
-    const std::array<double, 3> wp = weightsOf(m + (0.5 * (lo + hi)) * dir);
-    SurfacePoint p;
-    p.Triangle = t;
-    p.U = std::max(wp[1], 1e-9);
-    p.V = std::max(wp[2], 1e-9);
-    if (p.U + p.V > 1.0 - 1e-9)
-    {
-      const double scale = (1.0 - 1e-9) / (p.U + p.V);
-      p.U *= scale;
-      p.V *= scale;
-    }
-    out.push_back(LocateSurfacePoint(mesh, p));
+    out.push_back(InteriorPoint(mesh, t, weightsOf(m + (0.5 * (lo + hi)) * dir)));
   }
 }
 
@@ -1239,18 +1246,7 @@ bool FlatEndCorners(const TriangleMesh& mesh,
       const double mid = 0.5 * (lo + hi);
       ((value(middle + mid * dir) < 0.0) == (fm < 0.0) ? lo : hi) = mid;
     }
-    const std::array<double, 3> w = weightsOf(middle + (0.5 * (lo + hi)) * dir);
-    SurfacePoint end;
-    end.Triangle = t;
-    end.U = std::max(w[1], 1e-9);
-    end.V = std::max(w[2], 1e-9);
-    if (end.U + end.V > 1.0 - 1e-9)
-    {
-      const double scale = (1.0 - 1e-9) / (end.U + end.V);
-      end.U *= scale;
-      end.V *= scale;
-    }
-    const CanonicalPoint m = LocateSurfacePoint(mesh, end);
+    const CanonicalPoint m = InteriorPoint(mesh, t, weightsOf(middle + (0.5 * (lo + hi)) * dir));
     CanonicalPoint corners[2];
     if (SharpCorner(mesh, field, t, p, m, corners[0]) &&
       SharpCorner(mesh, field, t, m, q, corners[1]))
