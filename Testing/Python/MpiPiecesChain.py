@@ -18,10 +18,9 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from mpi_pieces_fetch import (VALUES_AS_ONE_POINT, fetched, field, holders, lines,  # noqa: E402
-                              per_source, ranks, sample_source, start)
+                              per_source, polylines, ranks, sample_source, start)
 from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager as sm  # noqa: E402
-from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
 
 args, (mesh, surface, rays, circles, control) = start(__doc__, globals())
 
@@ -62,24 +61,6 @@ def per_rank(pieces, gathered):
         rows[str(int(pd.GetArray("Rank").GetValue(i)))] = {
             pd.GetArrayName(k): pd.GetArray(k).GetValue(i) for k in range(pd.GetNumberOfArrays())}
     return rows
-
-
-def polylines(data):
-    """Every point's coordinates and arrays, every cell's points and arrays, exactly."""
-    out = {"points": [list(data.GetPoint(i)) for i in range(data.GetNumberOfPoints())],
-           "cells": []}
-    for attributes, key in ((data.GetPointData(), "point"), (data.GetCellData(), "cell")):
-        for k in range(attributes.GetNumberOfArrays()):
-            a = attributes.GetArray(k)
-            if a is not None and a.GetName() != "vtkOriginalIndices":
-                out[key + ":" + a.GetName()] = [
-                    a.GetComponent(i, c) for i in range(a.GetNumberOfTuples())
-                    for c in range(a.GetNumberOfComponents())]
-    ids = vtkIdList()
-    for c in range(data.GetNumberOfCells()):
-        data.GetCellPoints(c, ids)
-        out["cells"].append([ids.GetId(i) for i in range(ids.GetNumberOfIds())])
-    return out
 
 
 arrangement = SurfaceArrangement(Surface=surface, Curves=traced)

@@ -28,12 +28,11 @@ from boolsurf_example_utils import (SurfaceRays, load_plugin, ranks,  # noqa: E4
 from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager as sm  # noqa: E402
 from paraview import simple  # noqa: E402
-from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
 from vtkmodules.vtkFiltersCore import vtkCleanPolyData  # noqa: E402
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pieces_fetch import VALUES_AS_ONE_POINT  # noqa: E402
+from mpi_pieces_fetch import VALUES_AS_ONE_POINT, polylines  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--json", required=True)
@@ -77,24 +76,6 @@ def per_rank(source):
     return {str(int(pd.GetArray("Rank").GetValue(i))): {
         pd.GetArrayName(k): pd.GetArray(k).GetValue(i) for k in range(pd.GetNumberOfArrays())}
         for i in range(data.GetNumberOfPoints())}
-
-
-def polylines(data, skip=("vtkOriginalIndices",)):
-    """Every point's coordinates and arrays, every cell's points and arrays, exactly."""
-    out = {"points": [list(data.GetPoint(i)) for i in range(data.GetNumberOfPoints())],
-           "cells": []}
-    for attributes, key in ((data.GetPointData(), "point"), (data.GetCellData(), "cell")):
-        for k in range(attributes.GetNumberOfArrays()):
-            a = attributes.GetArray(k)
-            if a is not None and a.GetName() not in skip:
-                out[key + ":" + a.GetName()] = [
-                    a.GetComponent(i, c) for i in range(a.GetNumberOfTuples())
-                    for c in range(a.GetNumberOfComponents())]
-    ids = vtkIdList()
-    for c in range(data.GetNumberOfCells()):
-        data.GetCellPoints(c, ids)
-        out["cells"].append([ids.GetId(i) for i in range(ids.GetNumberOfIds())])
-    return out
 
 
 def ports(source):

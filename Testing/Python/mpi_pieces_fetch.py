@@ -1,7 +1,7 @@
-"""What the pvbatch scripts on pieces (MpiPiecesChain.py, MpiOneStep.py) read of an output:
-each rank's part fetched with the rank that holds each cell, the refined triangles per source
-triangle, field arrays, polylines; and the split surface they run on. Imported inside pvbatch
-(the Examples folder on the path).
+"""What the pvbatch scripts on pieces (MpiPiecesChain.py, MpiOneStep.py, MpiPiecesCurves.py,
+MpiPiecesEdits.py) read of an output: each rank's part fetched with the rank that holds each
+cell, the refined triangles per source triangle, field arrays, polylines; and the split surface
+they run on. Imported inside pvbatch (the Examples folder on the path).
 """
 import argparse
 import os
@@ -15,6 +15,7 @@ from boolsurf_example_utils import (SurfaceRays, curves_source, load_plugin,  # 
 from paraview.simple import (ExtractSurface, GenerateGlobalIds, PLYReader,  # noqa: E402
                              ProgrammableFilter, RedistributeDataSet)
 from paraview import servermanager as sm  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 
 # The end of a programmable filter's script that writes its dict `values` as the arrays of one
@@ -110,6 +111,25 @@ def holders(data):
 def field(data, name):
     a = data.GetFieldData().GetAbstractArray(name)
     return [a.GetVariantValue(i).ToString() for i in range(a.GetNumberOfValues())] if a else None
+
+
+def polylines(data, skip=("vtkOriginalIndices",)):
+    """Every point's coordinates and arrays, every cell's points and arrays, exactly (the
+    arrays named in `skip` left out)."""
+    out = {"points": [list(data.GetPoint(i)) for i in range(data.GetNumberOfPoints())],
+           "cells": []}
+    for attributes, key in ((data.GetPointData(), "point"), (data.GetCellData(), "cell")):
+        for k in range(attributes.GetNumberOfArrays()):
+            a = attributes.GetArray(k)
+            if a is not None and a.GetName() not in skip:
+                out[key + ":" + a.GetName()] = [
+                    a.GetComponent(i, c) for i in range(a.GetNumberOfTuples())
+                    for c in range(a.GetNumberOfComponents())]
+    ids = vtkIdList()
+    for c in range(data.GetNumberOfCells()):
+        data.GetCellPoints(c, ids)
+        out["cells"].append([ids.GetId(i) for i in range(ids.GetNumberOfIds())])
+    return out
 
 
 def lines(data):
