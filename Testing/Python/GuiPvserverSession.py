@@ -8,7 +8,8 @@ of PvserverSessionPipeline.py through the GUI's proxies (Data/eight.ply with glo
 redistributed; three circles in a Surface Curves source, set as the curve editor sets them;
 Trace, Surface Arrangement, Label Arrangement Cells, Surface Boolean), shows the region in the
 GUI's render view (rendered on the server), saves a screenshot and the region as a .pvtp in
-pieces, and exits. Checks the same as TestPython3PvserverSession.py against a builtin
+pieces, then shows the one-step BoolSurf filter's region of the same Boolean in its place, and
+exits. Checks the same as TestPython3PvserverSession.py against a builtin
 one-rank pvpython session, and reads the GUI's .pvtp in a fresh one-process pvpython.
 """
 import json
@@ -70,9 +71,9 @@ session.check_session(remote, serial, RANKS, failures)
 session.same_region(fresh["read_back"], serial["region"],
                     "the GUI's .pvtp read back in one process", failures)
 print("GUI client on %d pvserver ranks: surface per rank %s, region per rank %s, %d region "
-      "pixels in the GUI's view, pieces written %s"
+      "pixels in the GUI's view (one-step filter: %s, %d pixels), pieces written %s"
       % (RANKS, remote["surface"]["held"], remote["region"]["held"], remote["region_pixels"],
-         remote["pvtp_pieces"]))
+         remote["one_step"]["held"], remote["one_step_pixels"], remote["pvtp_pieces"]))
 if failures:
     print(output[-4000:])
     sys.exit("FAILED:\n  " + "\n  ".join(failures))

@@ -12,7 +12,8 @@ Trace Surface Curves, Surface Arrangement, Label Arrangement Cells and Surface B
 union shape 2) follow; the region is rendered in a render view (on the server: remote rendering
 forced) to a PNG, measured per SourceTriangle with the rank holding each triangle (Process Id
 Scalars), written with Save Data as a .pvtp (a piece per rank) and read back in the same
-session. --read measures a .pvtp in a fresh one-process session instead. The JSON is what
+session. The one-step BoolSurf filter then gives the same Boolean from the same drawing, and its
+region is measured and rendered in the same view in place of the chain's, in another color. --read measures a .pvtp in a fresh one-process session instead. The JSON is what
 pvserver_session.py compares.
 """
 import argparse
@@ -27,8 +28,10 @@ sys.path.insert(0, os.path.join(source_dir, "Testing", "Python"))
 from paraview import servermanager as sm  # noqa: E402
 from paraview import simple  # noqa: E402
 
-# The region's color: unlit, so that its pixels can be counted exactly in the screenshot.
+# The region's color: unlit, so that its pixels can be counted exactly in the screenshot. The
+# one-step filter's region has another, so that the chain's region hidden before it is seen gone.
 REGION_RGB = (255, 115, 25)
+ONE_STEP_RGB = (25, 115, 255)
 
 
 def load_plugin_everywhere():
@@ -114,19 +117,22 @@ def measure(proxy):
             "fields": sorted(field.GetArrayName(i) for i in range(field.GetNumberOfArrays()))}
 
 
-def render_region(session, png, size=(800, 600)):
+def render_region(session, png, size=(800, 600), hide=None, rgb=REGION_RGB):
     """The surface in gray and the region in flat orange, seen along y, rendered on the server
     when connected to one; returns the number of the region's pixels in the PNG and whether
-    the server rendered it."""
+    the server rendered it: (exact color, at least half the color (covered_pixels), on the
+    server). `hide`: a region shown before, hidden first."""
     from render_pixels import paint_unlit, view_pixels
     simple.GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
     view = simple.GetActiveViewOrCreate("RenderView")
     view.OrientationAxesVisibility = 0
+    if hide is not None:
+        simple.Hide(hide, view)
     surface = simple.Show(session["surface"], view)
     surface.ColorArrayName = ["POINTS", ""]
     surface.DiffuseColor = [0.8, 0.8, 0.8]
     region = simple.Show(session["region"], view)
-    paint_unlit(region, [c / 255.0 for c in REGION_RGB])
+    paint_unlit(region, [c / 255.0 for c in rgb])
     camera = view.GetActiveCamera()
     camera.SetFocalPoint(0, 0, 0)
     camera.SetPosition(0, 1, 0)
@@ -135,7 +141,17 @@ def render_region(session, png, size=(800, 600)):
     pixels = view_pixels(view, png, size)
     # Whether the last render ran on the server's ranks (composited there), not on the client.
     on_server = bool(view.GetClientSideObject().GetUseDistributedRenderingForRender())
-    return sum(1 for p in pixels if tuple(int(round(x)) for x in p) == REGION_RGB), on_server
+    exact = sum(1 for p in pixels if tuple(int(round(x)) for x in p) == rgb)
+    return exact, covered_pixels(pixels, rgb), on_server
+
+
+def covered_pixels(pixels, rgb):
+    """The pixels at least half the region's color: their red minus blue (the region's colors
+    differ from the gray surface and the background there) past half the color's own. Counted
+    so, two colors cover the same pixels; counted exactly they do not, because the edges'
+    anti-aliasing blends each color by its own contrast."""
+    way = rgb[0] - rgb[2]
+    return sum(1 for p in pixels if (p[0] - p[2]) * way > way * way / 2)
 
 
 def save_pieces(region, path):
@@ -157,11 +173,20 @@ def run_session(folder):
               "surface": measure_surface(session["surface"]),
               "region": measure(region)}
     result["png"] = os.path.join(folder, "region.png")
-    result["region_pixels"], result["rendered_on_server"] = render_region(session, result["png"])
+    (result["region_pixels"], result["region_covered"],
+     result["rendered_on_server"]) = render_region(session, result["png"])
     pvtp = os.path.join(folder, "region.pvtp")
     result["pvtp"] = pvtp
     result["pvtp_pieces"] = save_pieces(region, pvtp)
     result["read_back"] = measure(simple.OpenDataFile(pvtp))
+    # The one-step filter on the same drawing and Boolean: on the pieces too, the same region.
+    one_step = plugin_proxy("BoolSurf", "filters", Surface=session["surface"],
+                            Curves=session["curves"], Operation="Union", ShapeA=0, ShapeB=2)
+    one_step.UpdatePipeline()
+    result["one_step"] = measure(one_step)
+    result["one_step_png"] = os.path.join(folder, "one_step.png")
+    _, result["one_step_pixels"], result["one_step_rendered_on_server"] = render_region(
+        dict(session, region=one_step), result["one_step_png"], hide=region, rgb=ONE_STEP_RGB)
     return result
 
 

@@ -2,13 +2,15 @@
 `mpiexec -np 3 pvserver`, the plugin loaded on the server, Data/eight.ply with global ids
 redistributed, three circles drawn with Surface Curves, Trace, Surface Arrangement, Label
 Arrangement Cells and Surface Boolean on the ranks' pieces, the region rendered on the server
-and saved with Save Data as a .pvtp in pieces.
+and saved with Save Data as a .pvtp in pieces; then the one-step BoolSurf filter's region of the
+same Boolean, on the pieces, rendered in its place.
 
 Checks (pvserver_session.check_session): the region was computed on the pieces, every rank
 holding a part and none all of it; per SourceTriangle the same triangles and area (1e-12) as a
 builtin one-rank session; the screenshot shows it; the .pvtp has a piece per rank and reads
-back to the same region, in the same session on the ranks and in a fresh one-process pvpython.
-Renders through X: runs itself under Testing/run-with-xvfb.sh when no display is set.
+back to the same region, in the same session on the ranks and in a fresh one-process pvpython;
+the one-step filter's region is that region too, on the pieces and on one rank, held in parts,
+and covers the chain's pixels (1 %, another color). Renders through X: runs itself under Testing/run-with-xvfb.sh when no display is set.
 """
 import json
 import os
@@ -59,9 +61,10 @@ if fresh["ranks"] != 1:
     failures.append("the fresh session has %d ranks" % fresh["ranks"])
 print("one rank: region of %d triangles on %d source triangles"
       % (serial["region"]["triangles"], len(serial["region"]["by_source"])))
-print("pvserver on %d ranks: surface per rank %s, region per rank %s, %d region pixels, "
-      "pieces written %s" % (RANKS, remote["surface"]["held"], remote["region"]["held"],
-                             remote["region_pixels"], remote["pvtp_pieces"]))
+print("pvserver on %d ranks: surface per rank %s, region per rank %s, %d region pixels "
+      "(one-step filter: %s, %d pixels), pieces written %s"
+      % (RANKS, remote["surface"]["held"], remote["region"]["held"], remote["region_pixels"],
+         remote["one_step"]["held"], remote["one_step_pixels"], remote["pvtp_pieces"]))
 if failures:
     sys.exit("FAILED:\n  " + "\n  ".join(failures))
 print("pvserver session on %d ranks: the region on the pieces is the one-rank region; its "

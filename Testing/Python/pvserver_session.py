@@ -211,6 +211,23 @@ def check_session(remote, serial, ranks, failures):
     if sorted(back["held"].values()) != sorted(held.values()):
         failures.append("the .pvtp read back lies on the ranks as %s, the region as %s"
                         % (back["held"], held))
+    # The one-step filter: its region on the pieces, held in parts, the one-rank region (and
+    # the one-rank one-step region), rendered on the server with as many pixels as the chain's.
+    one_step = remote["one_step"]
+    if "ArrangementOnPieces" not in one_step["fields"]:
+        failures.append("the one-step region was not computed on the pieces: fields %s"
+                        % one_step["fields"])
+    if len(one_step["held"]) < 2 or max(one_step["held"].values()) >= one_step["triangles"]:
+        failures.append("the one-step region is not held in parts by the ranks: %s"
+                        % one_step["held"])
+    same_region(one_step, serial["region"], "the one-step region on %d ranks" % ranks, failures)
+    same_region(serial["one_step"], serial["region"], "the one-step region on one rank",
+                failures)
+    if not remote["one_step_rendered_on_server"]:
+        failures.append("the one-step region was rendered on the client, not on the server")
+    if abs(remote["one_step_pixels"] - remote["region_covered"]) > 0.01 * remote["region_covered"]:
+        failures.append("the screenshot shows %d pixels of the one-step region, %d of the "
+                        "chain's" % (remote["one_step_pixels"], remote["region_covered"]))
 
 # Open MPI's words when a client's MPI_Init could not start its local daemon (seen once with
 # other MPI jobs starting at the same time on the machine): the client never ran, run it again.
