@@ -179,6 +179,7 @@ void AddPieceTracingTraffic(const vtkBoolSurfPieceTracing::Traffic& t, vtkPolyDa
     { "HeldTriangles", static_cast<double>(t.HeldTriangles) },
     { "RingedTriangles", static_cast<double>(t.RingedTriangles) },
     { "ReusedPiece", t.ReusedPiece ? 1.0 : 0.0 },
+    { "RecalledCurves", static_cast<double>(t.RecalledCurves) },
   };
   vtkNew<vtkDoubleArray> array;
   array->SetName(names::PieceTracingTraffic);

@@ -447,7 +447,32 @@ struct vtkBoolSurfPieceTracing::Held
   int RingedTriangles = 0;
   std::unique_ptr<MessageFetcher> Fetcher;
   std::unique_ptr<boolsurf::PieceCurveTracer> Tracer;
+  /// The last successful Run's curves and the settings they were traced with (the same on
+  /// every rank), and on rank 0 their traces: what the next Run may recall.
+  std::vector<Curve> Curves;
+  boolsurf::GeodesicPathOptions Options;
+  int Resolution = -1;
+  double TracedMeanEdgeLength = -1.0;
+  bool KeepWrittenForms = false;
+  std::vector<GlobalCurveTrace> Traces;
 };
+
+namespace
+{
+
+bool SameCurve(const vtkBoolSurfPieceTracing::Curve& a, const vtkBoolSurfPieceTracing::Curve& b)
+{
+  return a.Type == b.Type && a.Closed == b.Closed && a.ShapeId == b.ShapeId &&
+    a.CurveId == b.CurveId &&
+    std::equal(a.Points.begin(),
+      a.Points.end(),
+      b.Points.begin(),
+      b.Points.end(),
+      [](const boolsurf::SurfacePoint& p, const boolsurf::SurfacePoint& q)
+      { return p.Triangle == q.Triangle && p.U == q.U && p.V == q.V; });
+}
+
+} // namespace
 
 vtkBoolSurfPieceTracing::vtkBoolSurfPieceTracing() = default;
 vtkBoolSurfPieceTracing::~vtkBoolSurfPieceTracing() = default;
@@ -639,6 +664,23 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
     }
   }
 
+  // The curves traced last time with the same settings on this piece: recalled (every rank
+  // decides alike, from the same lists; rank 0 holds their traces).
+  std::vector<char> recalled(curves.size(), 0);
+  if (!build && kept.Options == this->Options && kept.Resolution == this->Resolution &&
+    kept.TracedMeanEdgeLength == kept.MeanEdgeLength &&
+    kept.KeepWrittenForms == this->KeepWrittenForms)
+  {
+    for (std::size_t c = 0; c < curves.size() && c < kept.Curves.size(); ++c)
+    {
+      recalled[c] = SameCurve(curves[c], kept.Curves[c]) ? 1 : 0;
+      this->Bytes.RecalledCurves += recalled[c];
+    }
+  }
+  std::vector<GlobalCurveTrace> previous = std::move(kept.Traces);
+  kept.Traces.clear();
+  kept.Curves.clear();
+
   // This rank's curves, then rounds with no request until no rank asks.
   boolsurf::PieceCurveTracer& tracer = *kept.Tracer;
   tracer.SetOptions(this->Options);
@@ -649,7 +691,7 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
   WireBuffer results; // per curve: id, 1 and its trace, or 0 and its error
   for (std::size_t c = 0; c < curves.size(); ++c)
   {
-    if (ownerOf(curves[c].Points[0].Triangle) != rank)
+    if (recalled[c] || ownerOf(curves[c].Points[0].Triangle) != rank)
     {
       continue;
     }
@@ -707,6 +749,13 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
   {
     std::map<int, GlobalCurveTrace> traces;
     std::map<int, std::string> failures;
+    for (std::size_t c = 0; c < curves.size(); ++c)
+    {
+      if (recalled[c])
+      {
+        traces[static_cast<int>(c)] = std::move(previous[c]);
+      }
+    }
     for (const WireBuffer& b : atRoot)
     {
       Reader in{ b };
@@ -783,5 +832,11 @@ bool vtkBoolSurfPieceTracing::Run(vtkMultiProcessController* controller,
     return false;
   }
   message0.assign(answer.begin() + 1, answer.end());
+  kept.Curves = curves;
+  kept.Options = this->Options;
+  kept.Resolution = this->Resolution;
+  kept.TracedMeanEdgeLength = kept.MeanEdgeLength;
+  kept.KeepWrittenForms = this->KeepWrittenForms;
+  kept.Traces = this->Traces;
   return true;
 }

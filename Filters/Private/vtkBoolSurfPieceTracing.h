@@ -21,7 +21,10 @@
  * fails on every rank with the same message (the lowest failing curve, named) when one fails;
  * GetFailures() lists every failing curve, the same on every rank. Trace Surface Curves on
  * pieces (vtkBoolSurfPieceTraceStage.h) keeps one between updates: SetReusePiece keeps the
- * piece, the directory and the tracer with what it fetched while the surface is unchanged.
+ * piece, the directory and the tracer with what it fetched while the surface is unchanged,
+ * and a curve given again unchanged (same place in the list, same points, type, closure and
+ * ids, same settings) is not traced again: rank 0 packs its last trace, which is the surface's
+ * trace bit for bit as a new one would be. An edit of one curve among many so traces one.
  */
 #ifndef vtkBoolSurfPieceTracing_h
 #define vtkBoolSurfPieceTracing_h
@@ -65,6 +68,7 @@ public:
     int Rounds = 0;           ///< fetch rounds taken part in (the same on every rank)
     int OwnRounds = 0;        ///< rounds this rank asked in
     int TracedCurves = 0;     ///< curves this rank traced
+    int RecalledCurves = 0;   ///< curves unchanged since the last Run, not traced again
     int FetchedTriangles = 0; ///< triangles its tracer holds beyond its ringed piece
     int HeldTriangles = 0;    ///< everything its tracer holds at the end
     int RingedTriangles = 0;  ///< its owned triangles and ring
@@ -85,7 +89,8 @@ public:
   /// Whether the next Run keeps the last Run's piece mesh, owner directory, ring owners, mean
   /// edge length and tracer (with the triangles it fetched) instead of building them from
   /// `ringed` again: for an edit of the curves on an unchanged surface. The same on every rank
-  /// (the caller decides it collectively); ignored when no Run built them yet.
+  /// (the caller decides it collectively); ignored when no Run built them yet. With it, the
+  /// curves unchanged since the last successful Run are recalled, not traced.
   void SetReusePiece(bool reuse) { this->ReusePiece = reuse; }
 
   /// Collective. `ringed`: this rank's owned triangles and ring of ghosts (BuildRingedPiece);

@@ -51,7 +51,8 @@ labels = LabelArrangementCells(Input=arrangement, PerTriangleLabels=1)
 boolean = SurfaceBoolean(Input=labels, Operation="Union", ShapeA=0, ShapeB=2)
 
 # Each rank's output with its rank as a cell array, and one point per rank with its
-# PieceArrangementReuse: the fetched unions say who holds what and what each rank kept.
+# PieceArrangementReuse (and Trace Surface Curves' PieceTracingTraffic): the fetched unions say who
+# holds what and what each rank kept.
 RANK = """
 from vtkmodules.vtkCommonCore import vtkIntArray
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
@@ -63,10 +64,10 @@ held.SetNumberOfTuples(out.GetNumberOfCells())
 held.Fill(vtkMultiProcessController.GetGlobalController().GetLocalProcessId())
 out.GetCellData().AddArray(held)
 """
-REUSE = """
+ROW = """
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
-reuse = self.GetInput().GetFieldData().GetArray("PieceArrangementReuse")
+reuse = self.GetInput().GetFieldData().GetArray("%s")
 values = {"Rank": vtkMultiProcessController.GetGlobalController().GetLocalProcessId()}
 for k in range(reuse.GetNumberOfComponents() if reuse else 0):
     values[reuse.GetComponentName(k)] = reuse.GetComponent(0, k)
@@ -87,8 +88,9 @@ def field(data, name):
     return [a.GetVariantValue(i).ToString() for i in range(a.GetNumberOfValues())] if a else None
 
 
-def reuse():
-    data = fetched(arrangement, REUSE, OutputDataSetType="vtkPolyData")
+def rows(proxy, name):
+    """Each rank's field array `name` of `proxy`, by rank: {component name: value}."""
+    data = fetched(proxy, ROW % name, OutputDataSetType="vtkPolyData")
     pd = data.GetPointData()
     return {str(int(pd.GetArray("Rank").GetValue(i))): {
         pd.GetArrayName(k): pd.GetArray(k).GetValue(i) for k in range(pd.GetNumberOfArrays())}
@@ -110,7 +112,8 @@ def shape_triangles(shape):
 
 def step(name):
     boolean.UpdatePipeline()
-    out = {"name": name, "reuse": reuse()}
+    out = {"name": name, "reuse": rows(arrangement, "PieceArrangementReuse"),
+           "tracing": rows(traced, "PieceTracingTraffic")}
     for stage, proxy, arrays in (("arrangement", arrangement, ["ArrangementCell"]),
                                  ("labels", labels, ["ArrangementCell", "Labels"]),
                                  ("boolean", boolean, ["ArrangementCell", "Region"])):

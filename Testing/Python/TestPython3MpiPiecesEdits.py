@@ -6,6 +6,8 @@ Surface Arrangement says what it kept (PieceArrangementReuse): the first update 
 after the surface changed build the piece, every edit of the curves alone keeps it, and once
 an earlier result is free the arrangement is computed again in place (Core's edit path). One
 edit moves a small circle across rank boundaries (the ranks holding its triangles change).
+Trace Surface Curves on the pieces traces the moved circle alone and recalls the others
+(PieceTracingTraffic), every curve on a new piece.
 Each run has a time limit: a rank left waiting fails the test.
 """
 import os
@@ -52,9 +54,19 @@ for ranks in (2, 3):
             elif i >= 2 and steps[i - 1]["name"] not in rebuilt:
                 # Two updates on the kept piece: a result is free again, computed in place.
                 assert row["KeptArrangement"] == 1, (where, row)
-        print("%s on %d ranks: the one-rank outputs; kept piece %s, kept arrangement %s" % (
-            got["name"], ranks, [int(r["KeptPiece"]) for _, r in sorted(reuse.items())],
-            [int(r["KeptArrangement"]) for _, r in sorted(reuse.items())]))
+        # Each edit moves one of the three circles: traced alone on a kept piece.
+        tracing = got["tracing"]
+        assert sorted(tracing) == [str(r) for r in range(ranks)], (got["name"], tracing)
+        traced = sum(int(row["TracedCurves"]) for row in tracing.values())
+        kept = got["name"] not in rebuilt
+        assert traced == (1 if kept else 3), (got["name"], "curves traced", tracing)
+        for rank, row in tracing.items():
+            assert row["ReusedPiece"] == (1 if kept else 0), (got["name"], rank, row)
+            assert row["RecalledCurves"] == (2 if kept else 0), (got["name"], rank, row)
+        print("%s on %d ranks: the one-rank outputs; kept piece %s, kept arrangement %s, "
+              "curves traced %d" % (
+                  got["name"], ranks, [int(r["KeptPiece"]) for _, r in sorted(reuse.items())],
+                  [int(r["KeptArrangement"]) for _, r in sorted(reuse.items())], traced))
     # The small circle moved across rank boundaries: other ranks hold its triangles.
     before, after = steps[1]["small_circle_ranks"], steps[2]["small_circle_ranks"]
     assert before and after and before != after, ("the small circle stayed on its ranks",

@@ -196,6 +196,62 @@ void Report(vtkMultiProcessController* controller,
   std::fflush(stdout);
 }
 
+/// Curves traced again on the kept piece (SetReusePiece): an edit of one curve traces that
+/// curve alone, the same curves again trace none, other settings trace every curve; message 0
+/// is each time the whole surface's traces.
+void CheckEdits(vtkMultiProcessController* controller,
+  const TriangleMesh& mesh,
+  const std::vector<Curve>& curves,
+  const std::vector<int>& owner,
+  GeodesicMethod method,
+  vtkBoolSurfPieceTracing& tracing,
+  const std::string& what)
+{
+  const int rank = controller->GetLocalProcessId();
+  std::vector<Curve> edited = curves;
+  edited[1] = RandomCurves(mesh, 99, 1, 100)[0];
+  const GeodesicMethod other =
+    method == GeodesicMethod::Exact ? GeodesicMethod::Bounded : GeodesicMethod::Exact;
+  struct Step
+  {
+    const char* Name;
+    const std::vector<Curve>* Curves;
+    GeodesicMethod Method;
+    int Traced; ///< curves traced, summed over the ranks
+  };
+  const int n = static_cast<int>(curves.size());
+  for (const Step& step : { Step{ "curve 1 edited", &edited, method, 1 },
+         Step{ "the same curves again", &edited, method, 0 },
+         Step{ "another method", &edited, other, n } })
+  {
+    const std::string here = what + ", " + step.Name;
+    const WireBuffer expected = WholeMessage(mesh, *step.Curves, step.Method);
+    tracing.SetReusePiece(true);
+    WireBuffer message;
+    std::string error;
+    if (!TraceOnPieces(controller, mesh, *step.Curves, owner, step.Method, message, tracing, error))
+    {
+      Fail(rank, here + ": " + error);
+      return;
+    }
+    if (message != expected)
+    {
+      Fail(rank, here + ": message 0 differs from the whole surface's traces");
+    }
+    const vtkBoolSurfPieceTracing::Traffic& t = tracing.GetTraffic();
+    int traced = 0;
+    controller->AllReduce(&t.TracedCurves, &traced, 1, vtkCommunicator::SUM_OP);
+    if (!t.ReusedPiece || traced != step.Traced || t.RecalledCurves != n - step.Traced)
+    {
+      Fail(rank,
+        here + ": " + std::to_string(traced) + " curves traced, " +
+          std::to_string(t.RecalledCurves) + " recalled, piece " +
+          (t.ReusedPiece ? "kept" : "built") + "; expected " + std::to_string(step.Traced) +
+          " traced on the kept piece");
+    }
+  }
+}
+
 void RunSplit(vtkMultiProcessController* controller,
   const TriangleMesh& mesh,
   const std::vector<Curve>& curves,
@@ -225,6 +281,7 @@ void RunSplit(vtkMultiProcessController* controller,
       Fail(rank, what + ": message 0 differs from the whole surface's traces");
     }
     Report(controller, what, tracing);
+    CheckEdits(controller, mesh, curves, owner, method, tracing, what);
   }
 }
 
