@@ -19,7 +19,8 @@
 //
 // Usage: BoolSurfRandomSvgBenchmark [--trials N] [--seed S] [--csv FILE] [--mesh NAME]...
 //        [--only-trial K] (replays trial K of each mesh: each mesh has its own generator)
-//        [--verbose] (each trial named before it runs)
+//        [--verbose] (each trial named before it runs, and its update's start and end on the
+//        steady clock with its wall and CPU time)
 //        [--geodesic-method=bounded|exact|locally-shortest] (the filter's GeodesicMethod;
 //        default bounded; --locally-shortest is kept as an alias of
 //        --geodesic-method=locally-shortest) [--no-control-curves] (ComputeControlCurves off:
@@ -49,6 +50,30 @@
 #include <tbb/global_control.h>
 
 #include <sys/resource.h>
+
+// Under valgrind --tool=callgrind --instr-atstart=no, only the trials' updates are measured
+// (not the reading of the meshes, nor each mesh's cold update): instruction counts of the
+// tail's trials, replayed with --only-trial, on a machine too loaded for wall times.
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define BOOLSURF_MEASURE_TRIAL(on)                                                                 \
+  do                                                                                               \
+  {                                                                                                \
+    if (on)                                                                                        \
+    {                                                                                              \
+      CALLGRIND_START_INSTRUMENTATION;                                                             \
+    }                                                                                              \
+    else                                                                                           \
+    {                                                                                              \
+      CALLGRIND_STOP_INSTRUMENTATION;                                                              \
+    }                                                                                              \
+  } while (false)
+#else
+#define BOOLSURF_MEASURE_TRIAL(on)                                                                 \
+  do                                                                                               \
+  {                                                                                                \
+  } while (false)
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -386,6 +411,14 @@ int main(int argc, char** argv)
   // first pays it once (its time is in the CSV's site_graph_build_ms).
   std::vector<double> allWithoutBuilds;
   std::map<std::string, std::vector<std::string>> failures;
+  // The tail by name: each good trial's wall and CPU time, for the slowest ones in the summary
+  // (on a loaded machine the CPU time says which trials are long, the wall time does not).
+  struct SlowTrial
+  {
+    double WallMs, CpuMs;
+    std::string Name;
+  };
+  std::vector<SlowTrial> slowest;
   for (const auto& [name, triangles] : meshes)
   {
     vtkNew<vtkPLYReader> reader;
@@ -453,6 +486,10 @@ int main(int argc, char** argv)
 
       // The expression needs each drawing's shape ids, and the fill rule what the SVGs say:
       // both come from the mappers' outputs, so the mappers run first (timed as part of it).
+      if (trial >= 0)
+      {
+        BOOLSURF_MEASURE_TRIAL(true);
+      }
       const double cpu0 = ProcessCpuSeconds(), mainCpu0 = ProcessCpuSeconds(RUSAGE_THREAD);
       const auto start = Clock::now();
       pipeline.DrawingA->Update();
@@ -466,9 +503,20 @@ int main(int argc, char** argv)
       pipeline.Boolean->SetFillRule(evenOdd ? 1 : 0);
       pipeline.Boolean->Update();
       const auto done = Clock::now();
+      BOOLSURF_MEASURE_TRIAL(false);
       const double updateMs = Ms(start, done);
       const double updateCpuMs = 1000.0 * (ProcessCpuSeconds() - cpu0);
       const double updateMainCpuMs = 1000.0 * (ProcessCpuSeconds(RUSAGE_THREAD) - mainCpu0);
+      if (options.Verbose)
+      {
+        // The steady clock is CLOCK_MONOTONIC: `perf record -k CLOCK_MONOTONIC` samples of
+        // this update are those between these two times (perf report --time FROM,TO).
+        const auto seconds = [](Clock::time_point t)
+        { return std::chrono::duration<double>(t.time_since_epoch()).count(); };
+        std::cout << std::setprecision(6) << std::fixed << "    updated from " << seconds(start)
+                  << " to " << seconds(done) << " s (steady clock): " << updateMs << " ms, CPU "
+                  << updateCpuMs << " ms" << std::endl;
+      }
 
       vtkPolyData* region = pipeline.Boolean->GetOutput();
       const std::string error = pipeline.Errors.Text;
@@ -499,7 +547,7 @@ int main(int argc, char** argv)
            << (evenOdd ? "EvenOdd" : "NonZero") << "," << radiusA << "," << radiusB << ","
            << rotationA << "," << rotationB << "," << center << "," << u << "," << v << ","
            << pipeline.Both->GetOutput()->GetNumberOfCells() << "," << updateMs << ","
-           << Ms(start, mapped);
+           << updateCpuMs << "," << Ms(start, mapped);
       row.Head = head.str();
       if (stages && error.empty())
       {
@@ -533,6 +581,11 @@ int main(int argc, char** argv)
       cpuMs += updateCpuMs;
       mainCpuMs += updateMainCpuMs;
       allWithoutBuilds.push_back(updateMs - buildMs);
+      slowest.push_back({ updateMs,
+        updateCpuMs,
+        "--mesh " + name + " --only-trial " + std::to_string(trial) + " (" + a.filename().string() +
+          " " + OperationNames[operation] + " " + b.filename().string() +
+          (buildMs > 0 ? ", site graph built" : "") + ")" });
       mapTimes.push_back(Ms(start, mapped));
       const std::vector<double>& stagesOfTrial = rows.back().Stages;
       stageTimes.resize(std::max(stageTimes.size(), stagesOfTrial.size()));
@@ -554,8 +607,9 @@ int main(int argc, char** argv)
     std::cout << std::endl;
   }
   std::ofstream csv(options.Csv);
-  csv << "mesh,triangles,trial,svg_a,svg_b,operation,fill_rule,radius_a,radius_b,rotation_a,"
-         "rotation_b,center_triangle,center_u,center_v,control_curves,update_ms,map_ms";
+  csv
+    << "mesh,triangles,trial,svg_a,svg_b,operation,fill_rule,radius_a,radius_b,rotation_a,"
+       "rotation_b,center_triangle,center_u,center_v,control_curves,update_ms,update_cpu_ms,map_ms";
   for (const std::string& stage : stageNames)
   {
     csv << "," << stage << "_ms";
@@ -582,6 +636,15 @@ int main(int argc, char** argv)
             << std::setprecision(0)
             << (cpuMs > 0 ? std::max(0.0, 100.0 * (cpuMs - mainCpuMs) / cpuMs) : 0.0)
             << " % (on a loaded machine the wall time grows, this share does not)\n";
+  std::sort(slowest.begin(),
+    slowest.end(),
+    [](const SlowTrial& x, const SlowTrial& y) { return x.WallMs > y.WallMs; });
+  std::cout << "slowest trials (wall / CPU ms):\n";
+  for (size_t k = 0; k < slowest.size() && k < 8; ++k)
+  {
+    std::cout << "  " << std::setprecision(0) << slowest[k].WallMs << " / " << slowest[k].CpuMs
+              << "  " << slowest[k].Name << "\n";
+  }
   for (const auto& [name, messages] : failures)
   {
     for (const std::string& message : messages)

@@ -3,7 +3,6 @@
 #include "Geodesic/SiteCells.h"
 
 #include "Mesh/MeshTopology.h"
-#include "Mesh/ParallelRange.h"
 #include "Mesh/PerMeshRegistry.h"
 
 #include <algorithm>
@@ -15,7 +14,9 @@
 #include <queue>
 #include <random>
 
+#include <tbb/collaborative_call_once.h>
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
@@ -45,48 +46,75 @@ void VertexRow(const TriangleMesh& mesh, int v, std::vector<int>& row)
 /// Meshes below this many vertices build their graph on one thread (waking others costs more).
 constexpr int ParallelVertices = 50000;
 
-/// Vertex adjacency over the edges of usable triangles (compressed rows, mesh ids). Rows are
-/// counted, then written, each vertex's by one thread: the same rows on any number of threads.
+/// body(i) for i in [0, n), each index writing only its own slots, in chunks of at least
+/// `grain`, on the threads of the arena the build runs in (not a new arena, as ParallelRange
+/// makes): a tracing task that waits for the graph (collaborative_call_once in Get) can then
+/// take part in its loops, and a filter held to one thread builds it on one.
+template <class Body>
+void ForEachIndex(bool parallel, int n, const Body& body, int grain)
+{
+  if (!parallel)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      body(i);
+    }
+    return;
+  }
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, grain),
+    [&](const tbb::blocked_range<int>& range)
+    {
+      for (int i = range.begin(); i != range.end(); ++i)
+      {
+        body(i);
+      }
+    });
+}
+
+/// Vertex adjacency over the edges of usable triangles (compressed rows, mesh ids). Each row
+/// is made once, into its block's buffer (fixed blocks of vertices), then the buffers are
+/// copied into place: the same rows on any number of threads, at half the cost of making
+/// every row twice (once to count, once to write).
 void BuildAdjacency(const TriangleMesh& mesh,
   std::vector<int>& offsets,
   std::vector<int>& neighbors)
 {
+  constexpr int BlockVertices = 4096;
   const int nv = mesh.GetNumberOfVertices();
   const bool parallel = nv >= ParallelVertices;
+  const int blocks = (nv + BlockVertices - 1) / BlockVertices;
   offsets.assign(nv + 1, 0);
-  ParallelBlocks(
-    0,
+  std::vector<std::vector<int>> rows(blocks);
+  ForEachIndex(
     parallel,
-    nv,
-    [&](int first, int last)
+    blocks,
+    [&](int block)
     {
+      const int first = block * BlockVertices, last = std::min(nv, first + BlockVertices);
       std::vector<int> row;
       for (int v = first; v < last; ++v)
       {
         VertexRow(mesh, v, row);
         offsets[v + 1] = static_cast<int>(row.size());
+        rows[block].insert(rows[block].end(), row.begin(), row.end());
       }
     },
-    4096);
+    1);
   for (int v = 0; v < nv; ++v)
   {
     offsets[v + 1] += offsets[v];
   }
   neighbors.resize(offsets[nv]);
-  ParallelBlocks(
-    0,
+  ForEachIndex(
     parallel,
-    nv,
-    [&](int first, int last)
+    blocks,
+    [&](int block)
     {
-      std::vector<int> row;
-      for (int v = first; v < last; ++v)
-      {
-        VertexRow(mesh, v, row);
-        std::copy(row.begin(), row.end(), neighbors.begin() + offsets[v]);
-      }
+      std::copy(
+        rows[block].begin(), rows[block].end(), neighbors.begin() + offsets[block * BlockVertices]);
+      std::vector<int>().swap(rows[block]);
     },
-    4096);
+    1);
 }
 } // namespace
 
@@ -96,7 +124,8 @@ SurfaceSiteGraph::SurfaceSiteGraph(const TriangleMesh& mesh, int hops)
   , MeshSerial(mesh.GetSerial())
 {
   const auto begin = std::chrono::steady_clock::now();
-  // The topology (whether every component is a sphere) does not depend on the sites: it is
+  // The topology (whether every component is a sphere) does not depend on the sites: the
+  // surface's converter has usually computed it already (MeshTopology::Share); else it is
   // computed on another thread while the sites, cells and arcs are built.
   const auto sites = [&]
   {
@@ -108,16 +137,21 @@ SurfaceSiteGraph::SurfaceSiteGraph(const TriangleMesh& mesh, int hops)
     this->BuildArcs(offsets, neighbors);
     this->ComputeSiteNormals();
   };
-  bool allSpheres = false;
-  const auto topology = [&]
+  const auto allSpheresOf = [](const MeshTopology& t)
   {
-    const MeshTopology t = MeshTopology::Compute(mesh);
-    allSpheres = std::all_of(t.Components.begin(),
+    return std::all_of(t.Components.begin(),
       t.Components.end(),
       [](const ComponentTopology& c)
       { return c.BoundaryLoops == 0 && c.EulerCharacteristic == 2; });
   };
-  if (mesh.GetNumberOfVertices() >= ParallelVertices)
+  bool allSpheres = false;
+  const auto topology = [&] { allSpheres = allSpheresOf(MeshTopology::Compute(mesh)); };
+  if (const std::shared_ptr<const MeshTopology> shared = MeshTopology::FindShared(mesh))
+  {
+    allSpheres = allSpheresOf(*shared);
+    sites();
+  }
+  else if (mesh.GetNumberOfVertices() >= ParallelVertices)
   {
     tbb::parallel_invoke(sites, topology);
   }
@@ -143,21 +177,58 @@ int SurfaceSiteGraph::DefaultHops(int vertices)
 //------------------------------------------------------------------------------
 namespace
 {
-// Weak references: a graph lives as long as a solver on its mesh holds it.
-PerMeshRegistry<const SurfaceSiteGraph> registry;
+// A surface's graph and the flag that builds it once. The registry hands out the slot under its
+// lock (at once); the build runs outside it, in tbb::collaborative_call_once: the threads that
+// ask for the graph while it is being built (tracing tasks whose legs need a route) work on
+// its parallel loops instead of sleeping on a lock, and the build is isolated, so its thread
+// never picks up an outer tracing task that would ask for the same graph again.
+struct GraphSlot
+{
+  const TriangleMesh* Mesh = nullptr;
+  tbb::collaborative_once_flag Once;
+  std::unique_ptr<const SurfaceSiteGraph> Graph;
+  std::atomic<bool> Built{ false };
+};
+
+// Weak references: a graph lives as long as a solver on its mesh holds it (the pointers handed
+// out share the ownership of the slot).
+PerMeshRegistry<GraphSlot> registry;
+
+bool IsSlotOf(const GraphSlot& slot, const TriangleMesh& mesh)
+{
+  return slot.Mesh == &mesh;
+}
 } // namespace
 
 std::shared_ptr<const SurfaceSiteGraph> SurfaceSiteGraph::Find(const TriangleMesh& mesh)
 {
-  return registry.Find(mesh, [&](const SurfaceSiteGraph& g) { return &g.Mesh == &mesh; });
+  const std::shared_ptr<GraphSlot> slot =
+    registry.Find(mesh, [&](const GraphSlot& s) { return IsSlotOf(s, mesh); });
+  if (!slot || !slot->Built.load(std::memory_order_acquire))
+  {
+    return nullptr;
+  }
+  return std::shared_ptr<const SurfaceSiteGraph>(slot, slot->Graph.get());
 }
 
 std::shared_ptr<const SurfaceSiteGraph> SurfaceSiteGraph::Get(const TriangleMesh& mesh)
 {
-  return registry.Get(
+  const std::shared_ptr<GraphSlot> slot = registry.Get(
     mesh,
-    [&] { return std::make_shared<const SurfaceSiteGraph>(mesh); },
-    [&](const SurfaceSiteGraph& g) { return &g.Mesh == &mesh; });
+    [&]
+    {
+      auto made = std::make_shared<GraphSlot>();
+      made->Mesh = &mesh;
+      return made;
+    },
+    [&](const GraphSlot& s) { return IsSlotOf(s, mesh); });
+  tbb::collaborative_call_once(slot->Once,
+    [&]
+    {
+      slot->Graph = std::make_unique<const SurfaceSiteGraph>(mesh);
+      slot->Built.store(true, std::memory_order_release);
+    });
+  return std::shared_ptr<const SurfaceSiteGraph>(slot, slot->Graph.get());
 }
 
 //------------------------------------------------------------------------------
@@ -247,8 +318,7 @@ void SurfaceSiteGraph::BuildArcs(const std::vector<int>& offsets, const std::vec
     return a >= 0 && b >= 0 && b != a;
   };
   std::vector<int> first(nv + 1, 0);
-  ParallelRange(
-    0,
+  ForEachIndex(
     parallel,
     nv,
     [&](int u)
@@ -266,8 +336,7 @@ void SurfaceSiteGraph::BuildArcs(const std::vector<int>& offsets, const std::vec
     first[u + 1] += first[u];
   }
   std::vector<Candidate> candidates(first[nv]);
-  ParallelRange(
-    0,
+  ForEachIndex(
     parallel,
     nv,
     [&](int u)

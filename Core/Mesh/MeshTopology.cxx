@@ -1,5 +1,7 @@
 #include "Mesh/MeshTopology.h"
 
+#include "Mesh/PerMeshRegistry.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -300,6 +302,26 @@ MeshTopology MeshTopology::Compute(const TriangleMesh& mesh)
     c.Genus = c.Orientable ? (2 - c.BoundaryLoops - c.EulerCharacteristic) / 2 : -1;
   }
   return topo;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// Weak references: a topology lives as long as the surface's converter holds it. A mesh's
+// serial number is never reused, so any topology registered under it is that mesh's.
+PerMeshRegistry<const MeshTopology> sharedTopologies;
+} // namespace
+
+void MeshTopology::Share(const TriangleMesh& mesh,
+  const std::shared_ptr<const MeshTopology>& topology)
+{
+  sharedTopologies.Get(
+    mesh, [&] { return topology; }, [](const MeshTopology&) { return true; });
+}
+
+std::shared_ptr<const MeshTopology> MeshTopology::FindShared(const TriangleMesh& mesh)
+{
+  return sharedTopologies.Find(mesh, [](const MeshTopology&) { return true; });
 }
 
 } // namespace boolsurf

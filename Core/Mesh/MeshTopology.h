@@ -11,6 +11,7 @@
 #include "Mesh/TriangleMesh.h"
 #include "Mesh/ZeroPageArray.h"
 
+#include <memory>
 #include <vector>
 
 namespace boolsurf
@@ -55,6 +56,14 @@ struct MeshTopology
   int GetEulerCharacteristic() const;
 
   static MeshTopology Compute(const TriangleMesh& mesh);
+
+  /// Offers `topology`, computed by Compute(mesh), to later callers on the same mesh (held
+  /// weakly, by the mesh's serial number: as long as the caller keeps it), so that a structure
+  /// built later on the surface (the geodesic site graph) does not compute it again. A topology
+  /// already offered for `mesh` is kept.
+  static void Share(const TriangleMesh& mesh, const std::shared_ptr<const MeshTopology>& topology);
+  /// The topology offered for `mesh` and still held, else null.
+  static std::shared_ptr<const MeshTopology> FindShared(const TriangleMesh& mesh);
 };
 
 /// The boundary half-edge after boundary half-edge h (a -> b) along its boundary loop, as

@@ -240,6 +240,7 @@ void ConvertOnce(vtkPolyData* input, vtkSurfaceInput& out, const SurfaceCheckOpt
   }
   auto mesh = std::make_shared<TriangleMesh>(std::move(positions), std::move(triangles));
   auto topology = std::make_shared<MeshTopology>(MeshTopology::Compute(*mesh));
+  MeshTopology::Share(*mesh, topology); // the site graph, if a far leg builds one, reads it
   out.Check = CheckSurface(*mesh, *topology, options);
   if (!invalidIds.Kind.empty())
   {

@@ -4,10 +4,12 @@
 #include "Geodesic/CurveTracer.h"
 #include "Geodesic/GeodesicPath.h"
 #include "Geodesic/SurfaceSiteGraph.h"
+#include "Mesh/MeshTopology.h"
 #include "Mesh/ProceduralMeshes.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
 #include <cmath>
 #include <iostream>
@@ -218,6 +220,61 @@ TEST(SurfaceSiteGraph, SameGraphOnOneThread)
   };
   EXPECT_EQ(route(*serial, a, routeA), route(parallel, b, routeB));
   EXPECT_EQ(routeA, routeB);
+}
+
+// Tracing tasks that all ask for a surface's graph while it is being built (the first far legs
+// of a drawing) get one graph, built once (the waiting threads take part in its loops instead
+// of sleeping on a lock), and it is the graph one thread builds alone.
+TEST(SurfaceSiteGraph, OneGraphWhenManyTasksWaitForIt)
+{
+  const TriangleMesh mesh = ToMesh(MakeTorus(1.0, 0.35, 400, 140)); // 56,000 vertices
+  std::unique_ptr<SurfaceSiteGraph> serial;
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    serial = std::make_unique<SurfaceSiteGraph>(mesh);
+  }
+  std::vector<std::shared_ptr<const SurfaceSiteGraph>> asked(16);
+  tbb::parallel_for(0, 16, [&](int i) { asked[i] = SurfaceSiteGraph::Get(mesh); });
+  for (const auto& graph : asked)
+  {
+    ASSERT_EQ(graph.get(), asked[0].get());
+  }
+  EXPECT_EQ(SurfaceSiteGraph::Find(mesh).get(), asked[0].get());
+  const SurfaceSiteGraph& shared = *asked[0];
+  ASSERT_EQ(shared.GetNumberOfSites(), serial->GetNumberOfSites());
+  ASSERT_EQ(shared.GetNumberOfArcs(), serial->GetNumberOfArcs());
+  EXPECT_EQ(shared.IsAllSpheres(), serial->IsAllSpheres());
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    ASSERT_EQ(shared.GetCell(v), serial->GetCell(v));
+  }
+  asked.clear();
+  EXPECT_EQ(SurfaceSiteGraph::Find(mesh), nullptr) << "held only while someone holds it";
+}
+
+// The topology the surface's converter offers (MeshTopology::Share) stands for the one the
+// graph would compute: the same sphere test on a sphere, a torus and an open cylinder.
+TEST(SurfaceSiteGraph, SharedTopologyGivesTheSameGraph)
+{
+  for (const MeshData& data :
+    { MakeIcosphere(5), MakeTorus(1.0, 0.35, 400, 140), MakeOpenCylinder(1.0, 2.0, 300, 200) })
+  {
+    const TriangleMesh mesh = ToMesh(data);
+    const SurfaceSiteGraph own(mesh);
+    const auto topology = std::make_shared<const MeshTopology>(MeshTopology::Compute(mesh));
+    MeshTopology::Share(mesh, topology);
+    ASSERT_EQ(MeshTopology::FindShared(mesh), topology);
+    const SurfaceSiteGraph withShared(mesh);
+    EXPECT_EQ(withShared.IsAllSpheres(), own.IsAllSpheres());
+    ASSERT_EQ(withShared.GetNumberOfSites(), own.GetNumberOfSites());
+    ASSERT_EQ(withShared.GetNumberOfArcs(), own.GetNumberOfArcs());
+    for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+    {
+      ASSERT_EQ(withShared.GetCell(v), own.GetCell(v));
+    }
+  }
+  const TriangleMesh sphere = ToMesh(MakeIcosphere(3));
+  EXPECT_TRUE(SurfaceSiteGraph(sphere).IsAllSpheres());
 }
 
 // The route's distortion: on a flat square the geodesic is the straight segment, so a route's
