@@ -16,7 +16,7 @@ namespace
 {
 
 /// Words of a point in the messages (PackBoundaryPoint).
-constexpr std::size_t BoundaryPointWords = 17;
+constexpr std::size_t BoundaryPointWords = 18;
 
 enum KeyLocation : std::int64_t
 {
@@ -299,6 +299,7 @@ PieceCurveRuns CurveRunsOf(const PieceCurves& curves)
   runs.SourceCurve = curves.SourceCurve;
   runs.FirstPoint = curves.FirstPoint;
   runs.OfOpenCurve.resize(curves.Curves.size());
+  runs.CutFromClosed = curves.CutFromClosed;
   for (std::size_t c = 0; c < curves.Curves.size(); ++c)
   {
     runs.OfOpenCurve[c] = curves.BoundsCells(static_cast<int>(c)) ? 0 : 1;
@@ -321,6 +322,9 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
   // Per segment in its curve's direction, the curve it runs along (the first patch's, where
   // curves overlap).
   std::map<std::pair<int, int>, BoundarySegmentCurve> along;
+  // The patches' ends: the whole surface's, since a run's own ends lie beyond the owned
+  // triangles (in its ring) and no boundary segment reaches them.
+  std::set<int> patchEnds;
   // Each side of a curve segment is seen by the piece owning the mesh triangle on that side
   // (its refined triangle there is owned, so its local cell has a global number): a selected
   // side gives the segment with that side on its left. A segment selected on both sides is
@@ -331,6 +335,21 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
   std::vector<int> from, at, common;
   for (const ArrangementPatch& patch : arr.Patches)
   {
+    if (curves && !patch.Points.empty() && patch.Curve >= 0)
+    {
+      // Not where a run of a closed curve was cut at the curve's start (the whole surface's
+      // patches pass it) -- unless another curve meets it there too, which this cannot tell.
+      const bool cut = curves->CutFromClosed[patch.Curve] != 0;
+      const std::size_t n = arr.CurvePoints[patch.Curve].size();
+      if (!cut || patch.FirstIndex != 0)
+      {
+        patchEnds.insert(patch.Points.front());
+      }
+      if (!cut || patch.FirstIndex + patch.Points.size() != n)
+      {
+        patchEnds.insert(patch.Points.back());
+      }
+    }
     for (std::size_t i = 0; i + 1 < patch.Points.size(); ++i)
     {
       const int a = patch.Points[i], b = patch.Points[i + 1];
@@ -395,6 +414,11 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
       run.Points = { RecordOf(piece, arr, entry.first.first),
         RecordOf(piece, arr, entry.first.second) };
       run.Points[0].Next = curveOf(entry.first.first, entry.first.second);
+      for (int k = 0; k < 2; ++k)
+      {
+        run.Points[k].PatchEnd =
+          patchEnds.count(k == 0 ? entry.first.first : entry.first.second) != 0;
+      }
       for (int k = 0; k < 2; ++k)
       {
         if (inside(k == 0 ? entry.first.first : entry.first.second))
@@ -533,7 +557,8 @@ void PackBoundaryPoint(const BoundaryPointRecord& p, std::vector<long long>& out
       static_cast<long long>(p.Next.Curve),
       p.Next.Reversed ? 1LL : 0LL,
       WireBitsOf(p.Next.From),
-      WireBitsOf(p.Next.To) });
+      WireBitsOf(p.Next.To),
+      p.PatchEnd ? 1LL : 0LL });
 }
 
 //------------------------------------------------------------------------------
@@ -555,6 +580,7 @@ bool UnpackBoundaryPoint(const std::vector<long long>& in, std::size_t& at, Boun
   p.Next.Reversed = in[at + 14] != 0;
   p.Next.From = WireDoubleOf(in[at + 15]);
   p.Next.To = WireDoubleOf(in[at + 16]);
+  p.PatchEnd = in[at + 17] != 0;
   at += BoundaryPointWords;
   return true;
 }

@@ -59,6 +59,10 @@ struct BoundaryPointRecord
   /// control curves give such a point.
   Vec3 SurfacePosition{};
   BoundarySegmentCurve Next;
+  /// A patch of a curve starts or ends here on the whole surface (the curve meets another one,
+  /// or steps onto or off the surface's boundary): where one rank starts a loop that is one
+  /// closed curve all around.
+  bool PatchEnd = false;
 };
 
 /// Of each curve of a piece (PieceCurves.h): the global curve it is a run of, the global index
@@ -68,6 +72,7 @@ struct PieceCurveRuns
 {
   std::vector<int> SourceCurve, FirstPoint;
   std::vector<char> OfOpenCurve;
+  std::vector<char> CutFromClosed; ///< per piece curve: an open run of a closed curve
 };
 PieceCurveRuns CurveRunsOf(const PieceCurves& curves);
 
@@ -119,7 +124,7 @@ void PieceClippedSegments(const PieceMesh& piece,
 /// only where a run has no continuation. Sorted by closed first, then by points.
 std::vector<BoundaryRun> ChainBoundaryRuns(const std::vector<BoundaryRun>& runs);
 
-/// Message 4 (a piece's runs to the rank that chains them): 17 words per point.
+/// Message 4 (a piece's runs to the rank that chains them): 18 words per point.
 void PackBoundaryRuns(const std::vector<BoundaryRun>& runs, std::vector<long long>& out);
 /// Appends the runs of `in` to `out`. False with `error` on a short or corrupt message.
 bool UnpackBoundaryRuns(const std::vector<long long>& in,

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <tuple>
+#include <utility>
 
 namespace boolsurf
 {
@@ -152,10 +153,33 @@ bool PieceBoundaryControlCurves(const std::vector<BoundaryRun>& loops,
       }
       if (start == m)
       {
-        // One closed curve all around: the whole curve, from its start.
+        // One closed curve all around: the whole curve, started as one rank starts it. There
+        // the loop's first patch is the curve's first (from its lowest patch end b0 to the
+        // next, b1), its pieces joined in walking order: forward from b0; backwards from b1,
+        // over [t(b1) - turn, t(b1)]; from the curve's start when nothing meets it.
         const BoundarySegmentCurve& along = segment(0);
-        ControlSubCurve whole =
-          MakeSubCurve(sources, positions, along.Curve, End{ 0.0 }, End{ 0.0 }, true);
+        std::vector<std::pair<double, std::size_t>> ends;
+        for (std::size_t i = 0; i < m; ++i)
+        {
+          if (points[i].PatchEnd)
+          {
+            ends.push_back({ Normalized(sources[along.Curve], segment(i).From), i });
+          }
+        }
+        std::sort(ends.begin(), ends.end());
+        const bool backwards = along.Reversed && ends.size() >= 2;
+        End from{ 0.0 };
+        if (!ends.empty())
+        {
+          const auto& end = ends[backwards ? 1 : 0];
+          from = End{ end.first, &points[end.second] };
+        }
+        ControlSubCurve whole = MakeSubCurve(sources, positions, along.Curve, from, from, true);
+        if (backwards)
+        {
+          whole.T1 = whole.T0;
+          whole.T0 = whole.T1 - whole.Segments;
+        }
         whole.Group = static_cast<int>(l);
         whole.Reversed = along.Reversed;
         if (whole.Reversed)

@@ -12,12 +12,14 @@
 // user's control points between them, so no geodesic is traced. A cubic Bezier's would need its
 // segments split by geodesic de Casteljau on the whole surface: refused, naming the curve.
 //
+// A loop that is one closed curve all around is the whole curve, started where one rank starts
+// it: at the curve's first patch end (where it meets another curve), or walked backwards from
+// its second one, or at its start when nothing meets it.
+//
 // What differs from one rank: the loops come in the pieces' canonical order (closed first,
-// then by their points) rather than by patch, and a loop that is one closed curve all around
-// starts at the curve's start, where one rank starts it at the first patch end (a crossing with
-// a curve that does not bound the region, if any). Points where a sub-curve starts or ends
-// between control points name the triangle the piece found (the other one of an edge may be
-// named on one rank), positions evaluated on it.
+// then by their points) rather than by patch. Points where a sub-curve starts or ends between
+// control points name the triangle the piece found (the other one of an edge may be named on
+// one rank), positions evaluated on it.
 //
 // Cost: O(boundary and clipped segments + control points) on the chaining rank.
 #ifndef boolsurf_PieceVectorOutput_h

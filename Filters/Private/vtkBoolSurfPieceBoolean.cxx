@@ -23,7 +23,8 @@ bool WritePieceBoolean(vtkMultiProcessController* controller,
   std::string& error,
   std::size_t* sent,
   std::size_t* received,
-  std::string* vectorNote)
+  std::string* vectorNote,
+  bool controlCurves)
 {
   std::string text;
   std::vector<char> selected;
@@ -36,8 +37,16 @@ bool WritePieceBoolean(vtkMultiProcessController* controller,
   PieceVectorPorts vector;
   vector.Controls = outputs[2];
   vector.Clipped = outputs[3];
-  if (!WritePieceRegionBoundary(
-        controller, *labeled.Arranged, selected, outputs[1], error, sent, received, &vector))
+  outputs[2]->Initialize();
+  outputs[3]->Initialize();
+  if (!WritePieceRegionBoundary(controller,
+        *labeled.Arranged,
+        selected,
+        outputs[1],
+        error,
+        sent,
+        received,
+        controlCurves ? &vector : nullptr))
   {
     outputs[0]->Initialize();
     return false;

@@ -31,7 +31,8 @@ extern const char* const PieceBooleanPortsNote;
 /// ports). The selection fails alike on every rank (the labels are replicated), so no rank is
 /// left waiting in the boundary's exchange; a failure leaves port 0 empty. `sent` and
 /// `received` get the bytes of the boundary's message on this rank; `vectorNote` on rank 0 why
-/// ports 2 and 3 are empty (empty when they are written).
+/// ports 2 and 3 are empty (empty when they are written); `controlCurves` false leaves them
+/// empty without a note.
 bool WritePieceBoolean(vtkMultiProcessController* controller,
   const PieceLabeledResult& labeled,
   const BooleanOptions& options,
@@ -39,7 +40,8 @@ bool WritePieceBoolean(vtkMultiProcessController* controller,
   std::string& error,
   std::size_t* sent = nullptr,
   std::size_t* received = nullptr,
-  std::string* vectorNote = nullptr);
+  std::string* vectorNote = nullptr,
+  bool controlCurves = true);
 
 } // namespace boolsurf
 

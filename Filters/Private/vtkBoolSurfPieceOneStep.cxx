@@ -171,8 +171,15 @@ OneStepPieceOutcome RunOneStepOnPieces(vtkMultiProcessController* controller,
   }
   std::size_t sent = 0, received = 0;
   std::string vectorNote;
-  if (!WritePieceBoolean(
-        controller, *state.Labeled, options.Boolean, outputs, error, &sent, &received, &vectorNote))
+  if (!WritePieceBoolean(controller,
+        *state.Labeled,
+        options.Boolean,
+        outputs,
+        error,
+        &sent,
+        &received,
+        &vectorNote,
+        options.ControlCurves))
   {
     return OneStepPieceOutcome::Failed;
   }

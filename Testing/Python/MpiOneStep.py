@@ -6,10 +6,11 @@ written as JSON per source triangle: run by TestPython3MpiOneStep.py with pvbatc
 
 The surface and the three circles are MpiPiecesChain.py's (mpi_pieces_fetch.split_eight). The
 filter answers several Booleans (the labeled arrangement reused between them), a zero cell given
-by a point, an edit of the curves and an open polyline clipped by the region (port 3); the
-stage chain on the same pieces gives the boundary
-loops the filter's port 1 must equal; Selection BSC runs on the gathered surface (a warning says
-why), and switching back to a Boolean runs on the pieces again.
+by a point, an edit of the curves and an open polyline clipped by the region (port 3, also by
+a region bounded by one whole circle, inside and outside); the
+stage chain on the same pieces gives the boundary loops and control curves the filter's ports 1
+and 2 must equal; Selection BSC runs on the gathered surface (a warning says why), and switching
+back to a Boolean runs on the pieces again.
 """
 import json
 import os
@@ -54,7 +55,8 @@ def outputs(proxy):
 
 
 results = {"ranks": ranks(), "surface_triangles": sm.Fetch(mesh).GetNumberOfCells(),
-           "chain": {"lines": lines(fetched(OutputPort(chain, 1)))}}
+           "chain": {"lines": lines(fetched(OutputPort(chain, 1))),
+                     "ports23": [control_curves(fetched(OutputPort(chain, k))) for k in (2, 3)]}}
 for name, settings in (("union", dict(Operation="Union", ShapeA=0, ShapeB=2)),
                        ("intersection", dict(Operation="Intersection", ShapeA=0, ShapeB=1)),
                        ("difference", dict(Operation="Difference", ShapeA=2, ShapeB=0)),
@@ -99,6 +101,14 @@ with_line = SurfaceCurves(Surface=surface,
                           ClosedCurves=[1, 1, 1, 0])
 clip = BoolSurf(Surface=surface, Curves=with_line, Operation="Union", ShapeA=0, ShapeB=2)
 results["open"] = outputs(clip)
+# The first circle alone and its outside: loops that are one closed curve all around, which
+# the second circle and the polyline meet (walked along the circle, then against it), and the
+# polyline clipped in one piece, then in two.
+clip.Operation = "Expression"
+clip.Expression = "S0"
+results["whole"] = outputs(clip)
+clip.Expression = "~S0"
+results["whole_reversed"] = outputs(clip)
 with open(args.json, "w") as f:
     json.dump(results, f, indent=1, sort_keys=True)
 print("done", ranks())

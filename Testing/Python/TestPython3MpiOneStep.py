@@ -25,7 +25,7 @@ def area(outputs):
 
 
 ON_PIECES = ("union", "intersection", "difference", "expression", "pointed", "edited", "back",
-             "open")
+             "open", "whole", "whole_reversed")
 # Regions large enough to cross pieces on every split tested.
 SPREAD = ("union", "pointed", "edited", "back")
 
@@ -35,9 +35,16 @@ for name in ON_PIECES + ("bsc",):
     assert serial[name]["triangles"] > 0, (name, "one rank: an empty region")
 assert serial["union"]["ports23"][0], "one rank: the boundary as control points"
 assert serial["open"]["ports23"][1], "one rank: the open polyline clipped"
+for name, pieces in (("whole", 1), ("whole_reversed", 2)):
+    # One loop, the whole first circle (walked against it outside); the polyline in pieces.
+    loops = serial[name]["ports23"][0]
+    assert len(loops) == 1 and loops[0][0]["SourceCurveId"] == [0.0], (name, loops)
+    assert len(serial[name]["ports23"][1]) == pieces, (name, serial[name]["ports23"][1])
 # The point's zero cell changes the labels: the automatic zero cell is elsewhere.
 assert serial["pointed"]["fields"]["CellLabels"] != serial["union"]["fields"]["CellLabels"]
 same_loops(serial["chain"]["lines"], serial["union"]["lines"], "one rank: stage chain")
+same_control_curves(serial["chain"]["ports23"][0], serial["union"]["ports23"][0], "BoundaryLoop",
+                    "one rank: stage chain")
 assert serial["edited"]["by_source"] != serial["union"]["by_source"], "the edit changed nothing"
 # Traced, arranged and labeled on the pieces when the curves or the labeling change; only the
 # selection when only the Boolean does.
@@ -73,6 +80,8 @@ for ranks, partitions in ((2, None), (3, None), (3, 2)):
     where = "%d ranks, %d holding triangles" % (ranks, holding)
     # The stage chain on the same pieces draws the same loops.
     same_loops(result["union"]["lines"], result["chain"]["lines"], where + ": stage chain")
+    same_control_curves(result["chain"]["ports23"][0], serial["union"]["ports23"][0],
+                        "BoundaryLoop", where + ": stage chain")
     assert "ran on each rank's piece of the surface" in output, output
     # Selection BSC: gathered, with a warning saying why, and the one-rank answer.
     bsc = result["bsc"]
