@@ -99,16 +99,16 @@ with_line = SurfaceCurves(Surface=surface,
                           CurveSizes=[len(pts) for pts, _ in circles] + [len(line)],
                           ShapeIds=[shape for _, shape in circles] + [3],
                           ClosedCurves=[1, 1, 1, 0])
-clip = BoolSurf(Surface=surface, Curves=with_line, Operation="Union", ShapeA=0, ShapeB=2)
-results["open"] = outputs(clip)
+clipping = BoolSurf(Surface=surface, Curves=with_line, Operation="Union", ShapeA=0, ShapeB=2)
+results["open"] = outputs(clipping)
 # The first circle alone and its outside: loops that are one closed curve all around, which
 # the second circle and the polyline meet (walked along the circle, then against it), and the
 # polyline clipped in one piece, then in two.
-clip.Operation = "Expression"
-clip.Expression = "S0"
-results["whole"] = outputs(clip)
-clip.Expression = "~S0"
-results["whole_reversed"] = outputs(clip)
+clipping.Operation = "Expression"
+clipping.Expression = "S0"
+results["whole"] = outputs(clipping)
+clipping.Expression = "~S0"
+results["whole_reversed"] = outputs(clipping)
 with open(args.json, "w") as f:
     json.dump(results, f, indent=1, sort_keys=True)
 print("done", ranks())
