@@ -357,14 +357,8 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
       {
         continue;
       }
-      if (curves && patch.Curve >= 0 && along.count({ a, b }) == 0)
-      {
-        along[{ a, b }] = { curves->SourceCurve[patch.Curve],
-          false,
-          PatchPointStation(arr, *curves, patch, i),
-          PatchPointStation(arr, *curves, patch, i + 1) };
-      }
       // r runs p -> q, so r is on the left of p -> q.
+      bool boundary = false;
       ForEachOwnedSide(piece,
         arr,
         a,
@@ -377,8 +371,17 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
           if (isSelected(r))
           {
             ++given[{ p, q }];
+            boundary = true;
           }
         });
+      // Only for the segments this piece gives: O(boundary) entries, not O(curves).
+      if (boundary && curves && patch.Curve >= 0 && along.count({ a, b }) == 0)
+      {
+        along[{ a, b }] = { curves->SourceCurve[patch.Curve],
+          false,
+          PatchPointStation(arr, *curves, patch, i),
+          PatchPointStation(arr, *curves, patch, i + 1) };
+      }
     }
   }
   const auto curveOf = [&](int p, int q)
