@@ -5,9 +5,9 @@ of the region equals the one-rank region per source triangle (the same triangles
 cells, areas to 1e-12), with the same labels, consistency verdicts, shapes and expression; the
 boundary loops are whole on rank 0 and equal to the one-rank loops and to the stage chain's on
 the same pieces; ports 2 and 3 (the boundary's control points, an open polyline clipped by the
-region) are whole on rank 0 and equal to the one-rank ones; no rank holds the whole region. Selection
-BSC runs on the gathered surface with a warning naming it, and answers as one rank does; the
-filter runs on the pieces again once switched back. Each run has a time limit: a rank left
+region) are whole on rank 0 and equal to the one-rank ones; no rank holds the whole region.
+Selection BSC runs on the gathered surface with a warning naming it, and answers as one rank
+does; the filter runs on the pieces again once switched back. Each run has a time limit: a rank left
 waiting fails the test.
 """
 import os
