@@ -324,6 +324,7 @@ bool vtkBoolSurf::ExecutePiece(const std::vector<vtkPolyData*>& locals,
   options.ZeroCell = *this->ZeroCellSettings;
   options.Boolean = *this->BooleanSettings;
   options.NotOnPieces = this->StepsNotOnPieces();
+  options.ControlCurves = this->ComputeControlCurves != 0;
   const Internals::Key key = Internals::MakeKey(*this, locals[0], locals[1]);
   options.SameLabels = key == in.PiecesKey;
   std::vector<std::string> warnings;

@@ -102,15 +102,18 @@ bool vtkBoolSurfBoolean::ExecutePiece(const std::vector<vtkPolyData*>& locals,
   boolsurf::PieceStopwatch watch; // this rank's time, written with the output (mpi_scale.py)
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const auto labeled = boolsurf::FindPieceLabels(locals[0], error);
+  std::string vectorNote;
   if (!labeled ||
-    !boolsurf::WritePieceBoolean(controller, *labeled, *this->BooleanSettings, outputs, error))
+    !boolsurf::WritePieceBoolean(
+      controller, *labeled, *this->BooleanSettings, outputs, error, nullptr, nullptr, &vectorNote))
   {
     return false;
   }
   boolsurf::WriteLocalStageCosts(watch.Lap(), outputs[0]);
   if (controller->GetLocalProcessId() == 0)
   {
-    vtkWarningMacro("ran on each rank's piece of the surface: " << boolsurf::PieceBooleanPortsNote);
+    vtkWarningMacro("ran on each rank's piece of the surface: "
+      << boolsurf::PieceBooleanPortsNote << (vectorNote.empty() ? "" : "; ") << vectorNote);
   }
   return true;
 }

@@ -3,6 +3,7 @@
 #include "Distributed/PieceWire.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <iterator>
 #include <map>
@@ -13,6 +14,9 @@ namespace boolsurf
 {
 namespace
 {
+
+/// Words of a point in the messages (PackBoundaryPoint).
+constexpr std::size_t BoundaryPointWords = 18;
 
 enum KeyLocation : std::int64_t
 {
@@ -77,14 +81,98 @@ BoundaryPointRecord RecordOf(const PieceMesh& piece, const Arrangement& arr, int
   }
   r.Position = arr.GetPosition(mesh, p);
   r.Surface = arr.GetPointSurface(mesh, p);
-  r.Surface.Triangle = r.Surface.Triangle >= 0 ? piece.GlobalTriangle[r.Surface.Triangle] : -1;
+  if (r.Surface.Triangle >= 0)
+  {
+    r.SurfacePosition = mesh.Evaluate(r.Surface.Triangle, r.Surface.U, r.Surface.V);
+    r.Surface.Triangle = piece.GlobalTriangle[r.Surface.Triangle];
+  }
   return r;
+}
+
+/// Station `local` of the piece's curve c on the global curve it is a run of: the run's first
+/// traced point's index added to the whole part, so that the sum is rounded as the whole
+/// surface's arrangement rounds its station (traced point index plus fraction).
+double GlobalStation(const PieceCurveRuns& runs, int c, double local)
+{
+  const double whole = std::floor(local);
+  return static_cast<double>(runs.FirstPoint[c] + static_cast<long long>(whole)) + (local - whole);
+}
+
+/// Station on the global curve of point `i` of patch `patch` of the piece's arrangement.
+double PatchPointStation(const Arrangement& arr,
+  const PieceCurveRuns& runs,
+  const ArrangementPatch& patch,
+  std::size_t i)
+{
+  const std::vector<double>& stations = arr.CurveStations[patch.Curve];
+  const std::size_t n = stations.size();
+  return GlobalStation(runs, patch.Curve, stations[(patch.FirstIndex + i) % n]);
+}
+
+/// Whether refined triangle r is in a selected global cell.
+bool InSelectedCell(const Arrangement& arr,
+  const std::vector<int>& globalCellOfLocal,
+  const std::vector<char>& selected,
+  int r)
+{
+  const int local = arr.CellOfTriangle(r);
+  if (local < 0 || local >= static_cast<int>(globalCellOfLocal.size()))
+  {
+    return false;
+  }
+  const int global = globalCellOfLocal[local];
+  return global >= 0 && global < static_cast<int>(selected.size()) && selected[global] != 0;
+}
+
+/// Calls f(r, p, q) for every refined triangle r, in an owned triangle, with the segment a-b as
+/// its edge p -> q (r on the left of p -> q).
+template <class F>
+void ForEachOwnedSide(const PieceMesh& piece,
+  const Arrangement& arr,
+  int a,
+  int b,
+  std::vector<int>& from,
+  std::vector<int>& at,
+  std::vector<int>& common,
+  F f)
+{
+  const TriangleMesh& mesh = piece.Mesh;
+  TrianglesAt(mesh, arr.GetPointOnMesh(a), from);
+  TrianglesAt(mesh, arr.GetPointOnMesh(b), at);
+  common.clear();
+  std::set_intersection(from.begin(), from.end(), at.begin(), at.end(), std::back_inserter(common));
+  for (int t : common)
+  {
+    if (!piece.Owned[t])
+    {
+      continue;
+    }
+    ForEachRefinedTriangle(mesh,
+      arr,
+      t,
+      [&](int r)
+      {
+        const Triangle corners = arr.GetTriangle(mesh, r);
+        for (int k = 0; k < 3; ++k)
+        {
+          const int p = corners[k], q = corners[(k + 1) % 3];
+          if ((p == a && q == b) || (p == b && q == a))
+          {
+            f(r, p, q);
+          }
+        }
+      });
+  }
 }
 
 /// The points of a run joined into one sequence: each run's first point after the first is
 /// the previous one's last.
 void Append(std::vector<BoundaryPointRecord>& to, const BoundaryRun& run)
 {
+  if (!to.empty())
+  {
+    to.back().Next = run.Points.front().Next; // the segment leaving the joint is the run's
+  }
   to.insert(to.end(), run.Points.begin() + (to.empty() ? 0 : 1), run.Points.end());
 }
 
@@ -205,24 +293,38 @@ std::vector<BoundaryRun> ChainRuns(const std::vector<BoundaryRun>& runs,
 } // namespace
 
 //------------------------------------------------------------------------------
+PieceCurveRuns CurveRunsOf(const PieceCurves& curves)
+{
+  PieceCurveRuns runs;
+  runs.SourceCurve = curves.SourceCurve;
+  runs.FirstPoint = curves.FirstPoint;
+  runs.OfOpenCurve.resize(curves.Curves.size());
+  runs.CutFromClosed = curves.CutFromClosed;
+  for (std::size_t c = 0; c < curves.Curves.size(); ++c)
+  {
+    runs.OfOpenCurve[c] = curves.BoundsCells(static_cast<int>(c)) ? 0 : 1;
+  }
+  return runs;
+}
+
+//------------------------------------------------------------------------------
 void PieceRegionBoundaryRuns(const PieceMesh& piece,
   const Arrangement& arr,
   const std::vector<int>& globalCellOfLocal,
   const std::vector<char>& selected,
-  std::vector<BoundaryRun>& out)
+  std::vector<BoundaryRun>& out,
+  const PieceCurveRuns* curves)
 {
   out.clear();
   const TriangleMesh& mesh = piece.Mesh;
   const auto isSelected = [&](int r)
-  {
-    const int local = arr.CellOfTriangle(r);
-    if (local < 0 || local >= static_cast<int>(globalCellOfLocal.size()))
-    {
-      return false;
-    }
-    const int global = globalCellOfLocal[local];
-    return global >= 0 && global < static_cast<int>(selected.size()) && selected[global] != 0;
-  };
+  { return InSelectedCell(arr, globalCellOfLocal, selected, r); };
+  // Per segment in its curve's direction, the curve it runs along (the first patch's, where
+  // curves overlap).
+  std::map<std::pair<int, int>, BoundarySegmentCurve> along;
+  // The patches' ends: the whole surface's, since a run's own ends lie beyond the owned
+  // triangles (in its ring) and no boundary segment reaches them.
+  std::set<int> patchEnds;
   // Each side of a curve segment is seen by the piece owning the mesh triangle on that side
   // (its refined triangle there is owned, so its local cell has a global number): a selected
   // side gives the segment with that side on its left. A segment selected on both sides is
@@ -233,6 +335,21 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
   std::vector<int> from, at, common;
   for (const ArrangementPatch& patch : arr.Patches)
   {
+    if (curves && !patch.Points.empty() && patch.Curve >= 0)
+    {
+      // Not where a run of a closed curve was cut at the curve's start (the whole surface's
+      // patches pass it) -- unless another curve meets it there too, which this cannot tell.
+      const bool cut = curves->CutFromClosed[patch.Curve] != 0;
+      const std::size_t n = arr.CurvePoints[patch.Curve].size();
+      if (!cut || patch.FirstIndex != 0)
+      {
+        patchEnds.insert(patch.Points.front());
+      }
+      if (!cut || patch.FirstIndex + patch.Points.size() != n)
+      {
+        patchEnds.insert(patch.Points.back());
+      }
+    }
     for (std::size_t i = 0; i + 1 < patch.Points.size(); ++i)
     {
       const int a = patch.Points[i], b = patch.Points[i + 1];
@@ -240,37 +357,47 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
       {
         continue;
       }
-      const CanonicalPoint ca = arr.GetPointOnMesh(a), cb = arr.GetPointOnMesh(b);
-      TrianglesAt(mesh, ca, from);
-      TrianglesAt(mesh, cb, at);
-      common.clear();
-      std::set_intersection(
-        from.begin(), from.end(), at.begin(), at.end(), std::back_inserter(common));
-      for (int t : common)
-      {
-        if (!piece.Owned[t])
+      // r runs p -> q, so r is on the left of p -> q.
+      bool boundary = false;
+      ForEachOwnedSide(piece,
+        arr,
+        a,
+        b,
+        from,
+        at,
+        common,
+        [&](int r, int p, int q)
         {
-          continue;
-        }
-        ForEachRefinedTriangle(mesh,
-          arr,
-          t,
-          [&](int r)
+          if (isSelected(r))
           {
-            const Triangle corners = arr.GetTriangle(mesh, r);
-            for (int k = 0; k < 3; ++k)
-            {
-              const int p = corners[k], q = corners[(k + 1) % 3];
-              // r runs p -> q, so r is on the left of p -> q.
-              if (((p == a && q == b) || (p == b && q == a)) && isSelected(r))
-              {
-                ++given[{ p, q }];
-              }
-            }
-          });
+            ++given[{ p, q }];
+            boundary = true;
+          }
+        });
+      // Only for the segments this piece gives: O(boundary) entries, not O(curves).
+      if (boundary && curves && patch.Curve >= 0 && along.count({ a, b }) == 0)
+      {
+        along[{ a, b }] = { curves->SourceCurve[patch.Curve],
+          false,
+          PatchPointStation(arr, *curves, patch, i),
+          PatchPointStation(arr, *curves, patch, i + 1) };
       }
     }
   }
+  const auto curveOf = [&](int p, int q)
+  {
+    auto it = along.find({ p, q });
+    if (it != along.end())
+    {
+      return it->second;
+    }
+    it = along.find({ q, p });
+    if (it == along.end())
+    {
+      return BoundarySegmentCurve();
+    }
+    return BoundarySegmentCurve{ it->second.Curve, true, it->second.To, it->second.From };
+  };
   // A point all of whose triangles this piece owns has all its boundary segments here: runs
   // are chained through such points, and end at the others (on a border with another piece).
   const auto inside = [&](int p)
@@ -289,6 +416,12 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
       BoundaryRun run;
       run.Points = { RecordOf(piece, arr, entry.first.first),
         RecordOf(piece, arr, entry.first.second) };
+      run.Points[0].Next = curveOf(entry.first.first, entry.first.second);
+      for (int k = 0; k < 2; ++k)
+      {
+        run.Points[k].PatchEnd =
+          patchEnds.count(k == 0 ? entry.first.first : entry.first.second) != 0;
+      }
       for (int k = 0; k < 2; ++k)
       {
         if (inside(k == 0 ? entry.first.first : entry.first.second))
@@ -302,6 +435,53 @@ void PieceRegionBoundaryRuns(const PieceMesh& piece,
   // A segment along an edge with another piece's triangle stays alone: it may be cancelled
   // there. Its ends are not inside, so no run is chained through them.
   out = ChainRuns(segments, [&](const BoundaryPointKey& key) { return joinable.count(key) != 0; });
+}
+
+//------------------------------------------------------------------------------
+void PieceClippedSegments(const PieceMesh& piece,
+  const Arrangement& arr,
+  const std::vector<int>& globalCellOfLocal,
+  const std::vector<char>& selected,
+  const PieceCurveRuns& curves,
+  std::vector<ClippedSegment>& out)
+{
+  out.clear();
+  std::vector<int> from, at, common;
+  for (const ArrangementPatch& patch : arr.Patches)
+  {
+    if (patch.Curve < 0 || !curves.OfOpenCurve[patch.Curve])
+    {
+      continue;
+    }
+    for (std::size_t i = 0; i + 1 < patch.Points.size(); ++i)
+    {
+      const int a = patch.Points[i], b = patch.Points[i + 1];
+      if (a == b)
+      {
+        continue;
+      }
+      // A side in an owned triangle in a selected cell: the patch's LeftCell or RightCell is
+      // selected (every segment of a patch has the same cells on its sides).
+      bool inside = false;
+      ForEachOwnedSide(piece,
+        arr,
+        a,
+        b,
+        from,
+        at,
+        common,
+        [&](int r, int, int)
+        { inside = inside || InSelectedCell(arr, globalCellOfLocal, selected, r); });
+      if (inside)
+      {
+        out.push_back({ curves.SourceCurve[patch.Curve],
+          PatchPointStation(arr, curves, patch, i),
+          PatchPointStation(arr, curves, patch, i + 1),
+          RecordOf(piece, arr, a),
+          RecordOf(piece, arr, b) });
+      }
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -358,16 +538,54 @@ void PackBoundaryRuns(const std::vector<BoundaryRun>& runs, std::vector<long lon
     out.push_back(run.Closed ? 1 : 0);
     for (const BoundaryPointRecord& p : run.Points)
     {
-      out.insert(out.end(), p.Key.begin(), p.Key.end());
-      out.insert(out.end(),
-        { WireBitsOf(p.Position.x),
-          WireBitsOf(p.Position.y),
-          WireBitsOf(p.Position.z),
-          static_cast<long long>(p.Surface.Triangle),
-          WireBitsOf(p.Surface.U),
-          WireBitsOf(p.Surface.V) });
+      PackBoundaryPoint(p, out);
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void PackBoundaryPoint(const BoundaryPointRecord& p, std::vector<long long>& out)
+{
+  out.insert(out.end(), p.Key.begin(), p.Key.end());
+  out.insert(out.end(),
+    { WireBitsOf(p.Position.x),
+      WireBitsOf(p.Position.y),
+      WireBitsOf(p.Position.z),
+      static_cast<long long>(p.Surface.Triangle),
+      WireBitsOf(p.Surface.U),
+      WireBitsOf(p.Surface.V),
+      WireBitsOf(p.SurfacePosition.x),
+      WireBitsOf(p.SurfacePosition.y),
+      WireBitsOf(p.SurfacePosition.z),
+      static_cast<long long>(p.Next.Curve),
+      p.Next.Reversed ? 1LL : 0LL,
+      WireBitsOf(p.Next.From),
+      WireBitsOf(p.Next.To),
+      p.PatchEnd ? 1LL : 0LL });
+}
+
+//------------------------------------------------------------------------------
+bool UnpackBoundaryPoint(const std::vector<long long>& in, std::size_t& at, BoundaryPointRecord& p)
+{
+  if (in.size() < at || in.size() - at < BoundaryPointWords)
+  {
+    return false;
+  }
+  std::copy(in.begin() + at, in.begin() + at + 4, p.Key.begin());
+  p.Position = { WireDoubleOf(in[at + 4]), WireDoubleOf(in[at + 5]), WireDoubleOf(in[at + 6]) };
+  p.Surface.Triangle = static_cast<int>(in[at + 7]);
+  p.Surface.U = WireDoubleOf(in[at + 8]);
+  p.Surface.V = WireDoubleOf(in[at + 9]);
+  p.SurfacePosition = {
+    WireDoubleOf(in[at + 10]), WireDoubleOf(in[at + 11]), WireDoubleOf(in[at + 12])
+  };
+  p.Next.Curve = static_cast<int>(in[at + 13]);
+  p.Next.Reversed = in[at + 14] != 0;
+  p.Next.From = WireDoubleOf(in[at + 15]);
+  p.Next.To = WireDoubleOf(in[at + 16]);
+  p.PatchEnd = in[at + 17] != 0;
+  at += BoundaryPointWords;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -375,14 +593,32 @@ bool UnpackBoundaryRuns(const std::vector<long long>& in,
   std::vector<BoundaryRun>& out,
   std::string& error)
 {
-  constexpr std::size_t PointWords = 10;
   std::size_t at = 0;
+  if (!UnpackBoundaryRuns(in, at, out, error))
+  {
+    return false;
+  }
+  if (at != in.size())
+  {
+    error = "message 4 (the region's boundary runs) is short or corrupt";
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool UnpackBoundaryRuns(const std::vector<long long>& in,
+  std::size_t& at,
+  std::vector<BoundaryRun>& out,
+  std::string& error)
+{
+  constexpr std::size_t PointWords = BoundaryPointWords;
   const auto fail = [&]()
   {
     error = "message 4 (the region's boundary runs) is short or corrupt";
     return false;
   };
-  if (in.empty() || in[0] < 0)
+  if (at >= in.size() || in[at] < 0)
   {
     return fail();
   }
@@ -399,18 +635,9 @@ bool UnpackBoundaryRuns(const std::vector<long long>& in,
     run.Closed = in[at++] != 0;
     for (BoundaryPointRecord& p : run.Points)
     {
-      std::copy(in.begin() + at, in.begin() + at + 4, p.Key.begin());
-      p.Position = { WireDoubleOf(in[at + 4]), WireDoubleOf(in[at + 5]), WireDoubleOf(in[at + 6]) };
-      p.Surface.Triangle = static_cast<int>(in[at + 7]);
-      p.Surface.U = WireDoubleOf(in[at + 8]);
-      p.Surface.V = WireDoubleOf(in[at + 9]);
-      at += PointWords;
+      UnpackBoundaryPoint(in, at, p); // the count was checked against the length
     }
     out.push_back(std::move(run));
-  }
-  if (at != in.size())
-  {
-    return fail();
   }
   return true;
 }

@@ -19,12 +19,7 @@ constexpr double SameParameter = 1e-9;
 
 int NumberOfSegments(const CurveSource& source)
 {
-  const int n = static_cast<int>(source.Points.size());
-  if (source.Type == CurveType::CubicBezier)
-  {
-    return source.Closed ? n / 3 : (n - 1) / 3;
-  }
-  return source.Closed ? n : n - 1;
+  return NumberOfSourceSegments(source);
 }
 
 /// The control points of curve `c` from parameter t0 to t1 (t1 > t0; past the end of a closed
@@ -51,21 +46,13 @@ bool SubCurve(GeodesicPathSolver& solver,
   const bool endsAtControl = std::abs(t1 - k1) <= SameParameter;
   if (source.Type == CurveType::GeodesicPolygon)
   {
-    auto control = [&](long long k)
-    { return source.Points[static_cast<std::size_t>(((k % controls) + controls) % controls)]; };
-    const long long from = static_cast<long long>(std::floor(t0 + SameParameter)) + 1;
-    const long long to = static_cast<long long>(std::ceil(t1 - SameParameter)) - 1;
-    points.reserve(static_cast<std::size_t>(std::max(0LL, to - from + 1)) + 2);
-    points.push_back(startsAtControl ? control(static_cast<long long>(k0))
-                                     : arrangement.GetPointSurface(mesh, first));
-    for (long long k = from; k <= to; ++k)
+    std::vector<int> own;
+    PolygonSubCurveControls(source, t0, t1, whole, own);
+    points.reserve(own.size());
+    for (std::size_t i = 0; i < own.size(); ++i)
     {
-      points.push_back(control(k));
-    }
-    if (!whole)
-    {
-      points.push_back(endsAtControl ? control(static_cast<long long>(k1))
-                                     : arrangement.GetPointSurface(mesh, last));
+      points.push_back(own[i] >= 0 ? source.Points[static_cast<std::size_t>(own[i])]
+                                   : arrangement.GetPointSurface(mesh, i == 0 ? first : last));
     }
     return true;
   }
@@ -156,16 +143,7 @@ void SubCurveRange(const Arrangement& arrangement,
   whole = source.Closed && count == n + 1;
   t0 = ArrangedPointParameter(arrangement, sources, c, first);
   t1 = ArrangedPointParameter(arrangement, sources, c, last);
-  // A closed curve's piece that passes the curve's start ends on the next turn; a piece too
-  // short for its two parameters to differ stays where it is.
-  if (source.Closed && (whole || t1 < t0 - SameParameter))
-  {
-    t1 += NumberOfSegments(source);
-  }
-  else if (t1 < t0)
-  {
-    t1 = t0;
-  }
+  SubCurveParameterRange(source, whole, t0, t1);
 }
 
 bool MakeSubCurve(GeodesicPathSolver& solver,
@@ -255,8 +233,23 @@ double ArrangedPointParameter(const Arrangement& arrangement,
   int curve,
   int index)
 {
-  const CurveSource& source = sources[curve];
-  const double station = arrangement.CurveStations[curve][index];
+  return StationParameter(sources[curve], arrangement.CurveStations[curve][index]);
+}
+
+//------------------------------------------------------------------------------
+int NumberOfSourceSegments(const CurveSource& source)
+{
+  const int n = static_cast<int>(source.Points.size());
+  if (source.Type == CurveType::CubicBezier)
+  {
+    return source.Closed ? n / 3 : (n - 1) / 3;
+  }
+  return source.Closed ? n : n - 1;
+}
+
+//------------------------------------------------------------------------------
+double StationParameter(const CurveSource& source, double station)
+{
   const std::vector<double>& parameter = source.Parameter;
   const int n = static_cast<int>(parameter.size());
   const int i = std::min(static_cast<int>(station), n - 1);
@@ -267,6 +260,47 @@ double ArrangedPointParameter(const Arrangement& arrangement,
   }
   const double next = i + 1 < n ? parameter[i + 1] : NumberOfSegments(source);
   return parameter[i] + f * (next - parameter[i]);
+}
+
+//------------------------------------------------------------------------------
+void PolygonSubCurveControls(const CurveSource& source,
+  double t0,
+  double t1,
+  bool whole,
+  std::vector<int>& out)
+{
+  const int controls = static_cast<int>(source.Points.size());
+  const auto control = [&](long long k)
+  { return static_cast<int>(((k % controls) + controls) % controls); };
+  const double k0 = std::round(t0), k1 = std::round(t1);
+  const long long from = static_cast<long long>(std::floor(t0 + SameParameter)) + 1;
+  const long long to = static_cast<long long>(std::ceil(t1 - SameParameter)) - 1;
+  out.clear();
+  out.reserve(static_cast<std::size_t>(std::max(0LL, to - from + 1)) + 2);
+  out.push_back(std::abs(t0 - k0) <= SameParameter ? control(static_cast<long long>(k0)) : -1);
+  for (long long k = from; k <= to; ++k)
+  {
+    out.push_back(control(k));
+  }
+  if (!whole)
+  {
+    out.push_back(std::abs(t1 - k1) <= SameParameter ? control(static_cast<long long>(k1)) : -1);
+  }
+}
+
+//------------------------------------------------------------------------------
+void SubCurveParameterRange(const CurveSource& source, bool whole, double& t0, double& t1)
+{
+  // A closed curve's piece that passes the curve's start ends on the next turn; a piece too
+  // short for its two parameters to differ stays where it is.
+  if (source.Closed && (whole || t1 < t0 - SameParameter))
+  {
+    t1 += NumberOfSegments(source);
+  }
+  else if (t1 < t0)
+  {
+    t1 = t0;
+  }
 }
 
 //------------------------------------------------------------------------------

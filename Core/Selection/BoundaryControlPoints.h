@@ -77,6 +77,29 @@ double ArrangedPointParameter(const Arrangement& arrangement,
   int curve,
   int index);
 
+/// The number of segments of `source` (legs, or cubic segments): its parameter's range.
+int NumberOfSourceSegments(const CurveSource& source);
+
+/// Parameter on `source` of the point at `station` on its traced curve (traced point index
+/// plus fraction, Arrangement::CurveStations): what ArrangedPointParameter reads, for a point
+/// known by its station only (an arrangement on pieces, Distributed/PieceVectorOutput.h).
+double StationParameter(const CurveSource& source, double station);
+
+/// The parameter range of a sub-curve from the parameters of its ends (t1 may come before t0):
+/// a closed curve's piece that passes the curve's start (or a `whole` one) ends on the next
+/// turn; a piece too short for its parameters to differ keeps t1 = t0.
+void SubCurveParameterRange(const CurveSource& source, bool whole, double& t0, double& t1);
+
+/// The control points of the geodesic polygon `source` from parameter t0 to t1 (as
+/// SubCurveParameterRange gives them): per point of the sub-curve, the index of the user's
+/// control point it is, or -1 for its first (last) point where that lies between control points
+/// (an intersection, whose surface point the caller has). A `whole` curve has no last point.
+void PolygonSubCurveControls(const CurveSource& source,
+  double t0,
+  double t1,
+  bool whole,
+  std::vector<int>& out);
+
 /// The cubic Bezier pieces of the source curves between every two consecutive patch ends.
 /// A curve's segments are cut at all its patches' ends the first time one of its pieces is
 /// asked for, each segment split once per cut, left to right: later splits work on ever

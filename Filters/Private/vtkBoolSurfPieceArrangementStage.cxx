@@ -2,6 +2,7 @@
 
 #include "vtkBoolSurfArrayNames.h"
 #include "vtkBoolSurfControlCurves.h"
+#include "vtkBoolSurfControlOutput.h"
 #include "vtkBoolSurfCurvesMessage.h"
 #include "vtkBoolSurfPieceArrangementOutput.h"
 #include "vtkBoolSurfPieceCosts.h"
@@ -259,8 +260,9 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
             "neither";
     return false;
   }
+  vtkPolyData* traced = controller->GetLocalProcessId() == 0 ? curves : nullptr;
   if (!ArrangeMessageOnPiece(
-        controller, local, message, options, state, output, result, costs, error, warnings))
+        controller, local, traced, message, options, state, output, result, costs, error, warnings))
   {
     return false;
   }
@@ -272,6 +274,7 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
 //------------------------------------------------------------------------------
 bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
   vtkPolyData* local,
+  vtkPolyData* traced,
   const WireBuffer& message,
   const ArrangementOptions& options,
   PieceArrangementState& state,
@@ -327,6 +330,11 @@ bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
   PieceCurves restricted;
   RestrictCurvesToPiece(
     piece, global, [&](int e) { return edgeTable[e]; }, restricted);
+  result->CurveRuns = CurveRunsOf(restricted);
+  if (!traced || !ReadCurveSources(traced, global, result->Sources))
+  {
+    result->Sources.clear();
+  }
   costs.AddTime("Restrict", watch.Lap());
   ok = result->Run.Run(controller, piece, restricted, state.Neighbours, options, error);
   state.Work = result->Run.WorkBuffers();

@@ -29,6 +29,8 @@
 
 #include "Arrangement/Arrangement.h"
 #include "Distributed/PieceMesh.h"
+#include "Distributed/PieceRegionBoundary.h"
+#include "Selection/BoundaryControlPoints.h"
 
 #include <vtkIntArray.h> // for OnPiecesField
 #include <vtkSmartPointer.h>
@@ -56,6 +58,12 @@ struct PieceArrangementResult
   /// ghost): the surface's own cell arrays, carried to the owned triangles' regions.
   vtkSmartPointer<vtkPolyData> Surface;
   std::shared_ptr<const std::vector<vtkIdType>> SurfaceCell;
+  /// Of each curve of the piece: the global curve it is a run of and where the run starts, for
+  /// the stations of the result's vector output (Distributed/PieceVectorOutput.h).
+  PieceCurveRuns CurveRuns;
+  /// Rank 0 only: the curves' control points and parameters, read from the traced curves
+  /// (empty when they do not carry them, and on the other ranks).
+  std::vector<CurveSource> Sources;
 };
 
 /// What Surface Arrangement keeps between updates on pieces while this rank's piece of the
@@ -105,9 +113,11 @@ bool ArrangeOnPiece(vtkMultiProcessController* controller,
 /// Collective: ArrangeOnPiece after the broadcast, for a rank that has message 0 already
 /// (`message`, the same on every rank: the one-step filter, whose tracing on pieces gave it to
 /// every rank). `output`, when given, is written as ArrangeOnPiece writes port 0, without the
-/// costs; `costs` gets this rank's steps and messages (without a Total).
+/// costs; `costs` gets this rank's steps and messages (without a Total). `traced`: on rank 0,
+/// the traced curves the result's Sources are read from (null: none).
 bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
   vtkPolyData* local,
+  vtkPolyData* traced,
   const std::vector<long long>& message,
   const ArrangementOptions& options,
   PieceArrangementState& state,

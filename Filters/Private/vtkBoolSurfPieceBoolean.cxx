@@ -11,10 +11,9 @@ namespace boolsurf
 {
 
 const char* const PieceBooleanPortsNote =
-  "each rank's port 0 is its part of the region, port 1 (the region's boundary loops) is whole "
-  "on rank 0 and empty on the others; ports 2 and 3 (the boundary's control points and the "
-  "clipped curves) are not computed on pieces (they need the control points and geodesics on "
-  "the whole surface) and stay empty";
+  "each rank's port 0 is its part of the region; ports 1, 2 and 3 (the region's boundary loops, "
+  "the boundary's control points and the clipped open curves) are whole on rank 0 and empty on "
+  "the others";
 
 //------------------------------------------------------------------------------
 bool WritePieceBoolean(vtkMultiProcessController* controller,
@@ -23,7 +22,9 @@ bool WritePieceBoolean(vtkMultiProcessController* controller,
   const std::vector<vtkPolyData*>& outputs,
   std::string& error,
   std::size_t* sent,
-  std::size_t* received)
+  std::size_t* received,
+  std::string* vectorNote,
+  bool controlCurves)
 {
   std::string text;
   std::vector<char> selected;
@@ -31,15 +32,31 @@ bool WritePieceBoolean(vtkMultiProcessController* controller,
   {
     return false;
   }
-  // Port 1: the whole region's boundary loops, chained on rank 0 from every rank's runs.
-  if (!WritePieceRegionBoundary(
-        controller, *labeled.Arranged, selected, outputs[1], error, sent, received))
+  // Ports 1 to 3: the whole region's boundary loops, chained on rank 0 from every rank's
+  // runs, and their control curves and the clipped open curves, written there too.
+  PieceVectorPorts vector;
+  vector.Controls = outputs[2];
+  vector.Clipped = outputs[3];
+  outputs[2]->Initialize();
+  outputs[3]->Initialize();
+  if (!WritePieceRegionBoundary(controller,
+        *labeled.Arranged,
+        selected,
+        outputs[1],
+        error,
+        sent,
+        received,
+        controlCurves ? &vector : nullptr))
   {
     outputs[0]->Initialize();
     return false;
   }
   AddExpressionField(outputs[1], text);
-  // Ports 2 and 3 stay empty. Every port is marked as coming from pieces.
+  if (vectorNote)
+  {
+    *vectorNote = vector.Note;
+  }
+  // Every port is marked as coming from pieces.
   const auto onPieces = OnPiecesField(controller);
   for (vtkPolyData* output : outputs)
   {

@@ -100,6 +100,7 @@ OneStepPieceOutcome LabelOnPieces(vtkMultiProcessController* controller,
   std::shared_ptr<PieceArrangementResult> arranged;
   if (!ArrangeMessageOnPiece(controller,
         local,
+        controller->GetLocalProcessId() == 0 ? traced.GetPointer() : nullptr,
         message,
         options.Arrangement,
         state.Arrangement,
@@ -169,10 +170,22 @@ OneStepPieceOutcome RunOneStepOnPieces(vtkMultiProcessController* controller,
     watch.Lap();
   }
   std::size_t sent = 0, received = 0;
-  if (!WritePieceBoolean(
-        controller, *state.Labeled, options.Boolean, outputs, error, &sent, &received))
+  std::string vectorNote;
+  if (!WritePieceBoolean(controller,
+        *state.Labeled,
+        options.Boolean,
+        outputs,
+        error,
+        &sent,
+        &received,
+        &vectorNote,
+        options.ControlCurves))
   {
     return OneStepPieceOutcome::Failed;
+  }
+  if (!vectorNote.empty())
+  {
+    warnings.push_back(vectorNote); // rank 0's: why ports 2 and 3 are empty
   }
   costs.AddTime("Selection", watch.Lap());
   costs.AddTime("Total", total.Lap());

@@ -45,6 +45,8 @@ struct OneStepPieceOptions
   ArrangementOptions Arrangement;
   ZeroCellOptions ZeroCell;
   BooleanOptions Boolean;
+  /// Whether ports 2 and 3 (the control curves) are computed (ComputeControlCurves).
+  bool ControlCurves = true;
   /// Why this rank's settings need the gathered surface (empty: they do not).
   std::string NotOnPieces;
   /// Whether this rank's inputs and labeling settings are those of State::Labeled (only the

@@ -6,17 +6,19 @@ written as JSON per source triangle: run by TestPython3MpiOneStep.py with pvbatc
 
 The surface and the three circles are MpiPiecesChain.py's (mpi_pieces_fetch.split_eight). The
 filter answers several Booleans (the labeled arrangement reused between them), a zero cell given
-by a point and an edit of the curves; the stage chain on the same pieces gives the boundary
-loops the filter's port 1 must equal; Selection BSC runs on the gathered surface (a warning says
-why), and switching back to a Boolean runs on the pieces again.
+by a point, an edit of the curves and an open polyline clipped by the region (port 3, also by
+a region bounded by one whole circle, inside and outside); the
+stage chain on the same pieces gives the boundary loops and control curves the filter's ports 1
+and 2 must equal; Selection BSC runs on the gathered surface (a warning says why), and switching
+back to a Boolean runs on the pieces again.
 """
 import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pieces_fetch import (fetched, field, holders, lines, per_source, ranks,  # noqa: E402
-                              sample_source, start)
+from mpi_pieces_fetch import (control_curves, fetched, field, holders, lines,  # noqa: E402
+                              per_source, ranks, sample_source, start)
 from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager as sm  # noqa: E402
 
@@ -47,11 +49,14 @@ def outputs(proxy):
             "StageTimes": stage_names(data),
             "pieces": field(data, "ArrangementOnPieces") is not None,
             "lines": lines(boundary), "expression": field(boundary, "Expression"),
-            "ports23": [sm.Fetch(proxy, idx=k).GetNumberOfCells() for k in (2, 3)]}
+            "ports23": [control_curves(fetched(OutputPort(proxy, k))) for k in (2, 3)],
+            "held23": sorted({int(held) for k in (2, 3) for held in holders(
+                fetched(OutputPort(proxy, k)))})}
 
 
 results = {"ranks": ranks(), "surface_triangles": sm.Fetch(mesh).GetNumberOfCells(),
-           "chain": {"lines": lines(fetched(OutputPort(chain, 1)))}}
+           "chain": {"lines": lines(fetched(OutputPort(chain, 1))),
+                     "ports23": [control_curves(fetched(OutputPort(chain, k))) for k in (2, 3)]}}
 for name, settings in (("union", dict(Operation="Union", ShapeA=0, ShapeB=2)),
                        ("intersection", dict(Operation="Intersection", ShapeA=0, ShapeB=1)),
                        ("difference", dict(Operation="Difference", ShapeA=2, ShapeB=0)),
@@ -84,6 +89,26 @@ one.Selection = "BSC"
 results["bsc"] = outputs(one)
 one.Selection = "Boolean"
 results["back"] = outputs(one)
+
+# An open polyline across the first circle (shape 3, crossing no other curve): port 3 clips it
+# to the union's region.
+line = [rays.hit(x, -0.035) for x in (-0.09, -0.045, 0.0, 0.045, 0.09)]
+with_line = SurfaceCurves(Surface=surface,
+                          Points=[x for pts, _ in circles for p in pts for x in p] +
+                          [x for p in line for x in p],
+                          CurveSizes=[len(pts) for pts, _ in circles] + [len(line)],
+                          ShapeIds=[shape for _, shape in circles] + [3],
+                          ClosedCurves=[1, 1, 1, 0])
+clipping = BoolSurf(Surface=surface, Curves=with_line, Operation="Union", ShapeA=0, ShapeB=2)
+results["open"] = outputs(clipping)
+# The first circle alone and its outside: loops that are one closed curve all around, which
+# the second circle and the polyline meet (walked along the circle, then against it), and the
+# polyline clipped in one piece, then in two.
+clipping.Operation = "Expression"
+clipping.Expression = "S0"
+results["whole"] = outputs(clipping)
+clipping.Expression = "~S0"
+results["whole_reversed"] = outputs(clipping)
 with open(args.json, "w") as f:
     json.dump(results, f, indent=1, sort_keys=True)
 print("done", ranks())

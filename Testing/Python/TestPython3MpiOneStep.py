@@ -4,16 +4,18 @@ several Booleans, a zero cell given by a point and an edit of the curves, the un
 of the region equals the one-rank region per source triangle (the same triangles in the same
 cells, areas to 1e-12), with the same labels, consistency verdicts, shapes and expression; the
 boundary loops are whole on rank 0 and equal to the one-rank loops and to the stage chain's on
-the same pieces; ports 2 and 3 are empty on pieces; no rank holds the whole region. Selection
-BSC runs on the gathered surface with a warning naming it, and answers as one rank does; the
-filter runs on the pieces again once switched back. Each run has a time limit: a rank left
+the same pieces; ports 2 and 3 (the boundary's control points, an open polyline clipped by the
+region) are whole on rank 0 and equal to the one-rank ones; no rank holds the whole region.
+Selection BSC runs on the gathered surface with a warning naming it, and answers as one rank
+does; the filter runs on the pieces again once switched back. Each run has a time limit: a rank left
 waiting fails the test.
 """
 import os
 import shutil
 import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mpi_pieces_compare import PvbatchRuns, same_by_source, same_loops  # noqa: E402
+from mpi_pieces_compare import (PvbatchRuns, same_by_source, same_control_curves,  # noqa: E402
+                                 same_loops)
 
 runs = PvbatchRuns("MpiOneStep.py", "boolsurf-one-step-")
 
@@ -22,7 +24,8 @@ def area(outputs):
     return sum(row[0] for rows in outputs["by_source"].values() for row in rows)
 
 
-ON_PIECES = ("union", "intersection", "difference", "expression", "pointed", "edited", "back")
+ON_PIECES = ("union", "intersection", "difference", "expression", "pointed", "edited", "back",
+             "open", "whole", "whole_reversed")
 # Regions large enough to cross pieces on every split tested.
 SPREAD = ("union", "pointed", "edited", "back")
 
@@ -30,14 +33,22 @@ serial, _ = runs.run(1)
 for name in ON_PIECES + ("bsc",):
     assert not serial[name]["pieces"], (name, "one rank: the surface is whole")
     assert serial[name]["triangles"] > 0, (name, "one rank: an empty region")
-assert serial["union"]["ports23"][0] > 0, "one rank: the boundary as control points"
+assert serial["union"]["ports23"][0], "one rank: the boundary as control points"
+assert serial["open"]["ports23"][1], "one rank: the open polyline clipped"
+for name, pieces in (("whole", 1), ("whole_reversed", 2)):
+    # One loop, the whole first circle (walked against it outside); the polyline in pieces.
+    loops = serial[name]["ports23"][0]
+    assert len(loops) == 1 and loops[0][0]["SourceCurveId"] == [0.0], (name, loops)
+    assert len(serial[name]["ports23"][1]) == pieces, (name, serial[name]["ports23"][1])
 # The point's zero cell changes the labels: the automatic zero cell is elsewhere.
 assert serial["pointed"]["fields"]["CellLabels"] != serial["union"]["fields"]["CellLabels"]
 same_loops(serial["chain"]["lines"], serial["union"]["lines"], "one rank: stage chain")
+same_control_curves(serial["chain"]["ports23"][0], serial["union"]["ports23"][0], "BoundaryLoop",
+                    "one rank: stage chain")
 assert serial["edited"]["by_source"] != serial["union"]["by_source"], "the edit changed nothing"
 # Traced, arranged and labeled on the pieces when the curves or the labeling change; only the
 # selection when only the Boolean does.
-LABELED = ("union", "pointed", "edited")
+LABELED = ("union", "pointed", "edited", "open")
 for ranks, partitions in ((2, None), (3, None), (3, 2)):
     result, output = runs.run(ranks, partitions)
     assert result["ranks"] == ranks, result["ranks"]
@@ -53,7 +64,10 @@ for ranks, partitions in ((2, None), (3, None), (3, 2)):
         steps = got["StageTimes"]
         assert steps and "Selection" in steps and "Total" in steps, (where, steps)
         assert ("Trace" in steps and "Labeling" in steps) == (name in LABELED), (where, steps)
-        assert got["ports23"] == [0, 0], (where, "ports 2 and 3 on pieces", got["ports23"])
+        # Ports 2 and 3: whole on rank 0, the one-rank control curves.
+        assert got["held23"] in ([], [0]), (where, "ports 2 and 3 off rank 0", got["held23"])
+        same_control_curves(got["ports23"][0], expected["ports23"][0], "BoundaryLoop", where)
+        same_control_curves(got["ports23"][1], expected["ports23"][1], "ClippedPiece", where)
         # The boundary loops: whole, on rank 0 only, the one-rank loops.
         assert all(held == 0 for _, held, _ in got["lines"]), (where, "loops off rank 0")
         same_loops(got["lines"], expected["lines"], where)
@@ -66,6 +80,8 @@ for ranks, partitions in ((2, None), (3, None), (3, 2)):
     where = "%d ranks, %d holding triangles" % (ranks, holding)
     # The stage chain on the same pieces draws the same loops.
     same_loops(result["union"]["lines"], result["chain"]["lines"], where + ": stage chain")
+    same_control_curves(result["chain"]["ports23"][0], serial["union"]["ports23"][0],
+                        "BoundaryLoop", where + ": stage chain")
     assert "ran on each rank's piece of the surface" in output, output
     # Selection BSC: gathered, with a warning saying why, and the one-rank answer.
     bsc = result["bsc"]

@@ -112,3 +112,48 @@ def same_loops(got, expected, where):
                                                                          len(points_b))
         for x, y in zip(points_a, points_b):
             assert max(abs(u - v) for u, v in zip(x[:3], y[:3])) <= 1e-12, (where, x, y)
+
+
+def canonical_control_curves(curves, group):
+    """The sub-curves of a control-curves output (mpi_pieces_fetch.control_curves) grouped by
+    their cell array `group` (BoundaryLoop: a loop's sub-curves, cyclic, started at the lowest
+    one, the loops sorted; ClippedPiece: one piece each, in order)."""
+    groups = {}
+    for values, points in curves:
+        groups.setdefault(int(values[group][0]), []).append((values, points))
+    out = [groups[g] for g in sorted(groups)]
+    if group == "BoundaryLoop":
+        def key(sub):
+            values, points = sub
+            return (values["SourceCurveId"], [round(x, 9) for x in points[0][:3]])
+        out = [loop[min(range(len(loop)), key=lambda k: key(loop[k])):] +
+               loop[:min(range(len(loop)), key=lambda k: key(loop[k]))] for loop in out]
+        out.sort(key=lambda loop: [key(sub) for sub in loop])
+    return out
+
+
+def same_control_curves(got, expected, group, where):
+    """The same sub-curves (control_curves of a port 2 or 3): the same groups, cell arrays
+    (ParameterRange to 1e-9, every other exactly, the group's number left out for loops, whose
+    order differs), points to 1e-12; a point's TriangleId and Barycentric exactly where it is
+    one of the user's control points (the same triangle), else only its position (a point on
+    an edge may name either triangle)."""
+    a = canonical_control_curves(got, group)
+    b = canonical_control_curves(expected, group)
+    assert len(a) == len(b), (where, group, len(a), len(b))
+    for loop_a, loop_b in zip(a, b):
+        assert len(loop_a) == len(loop_b), (where, group, len(loop_a), len(loop_b))
+        for (values_a, points_a), (values_b, points_b) in zip(loop_a, loop_b):
+            assert values_a.keys() == values_b.keys(), (where, values_a.keys(), values_b.keys())
+            for name in values_a:
+                if name == group and group == "BoundaryLoop":
+                    continue
+                tolerance = 1e-9 if name == "ParameterRange" else 0
+                assert all(abs(x - y) <= tolerance
+                           for x, y in zip(values_a[name], values_b[name])), (
+                    where, group, name, values_a, values_b)
+            assert len(points_a) == len(points_b), (where, group, points_a, points_b)
+            for x, y in zip(points_a, points_b):
+                assert max(abs(u - v) for u, v in zip(x[:3], y[:3])) <= 1e-12, (where, x, y)
+                if x[3] == y[3]:
+                    assert max(abs(x[4] - y[4]), abs(x[5] - y[5])) <= 1e-12, (where, x, y)

@@ -145,3 +145,29 @@ def lines(data):
                   [int(triangle.GetTuple1(ids.GetId(k))) if triangle else -1] for k in range(n)]
         out.append([int(closed.GetValue(c)), held.GetValue(c), points])
     return out
+
+
+def control_curves(data):
+    """Each sub-curve of a control-curves output (a Boolean's port 2 or 3) as
+    [{cell array: value}, [[x, y, z, TriangleId, u, v], ...]], a whole closed curve's repeated
+    first point left out."""
+    cells = data.GetCellData()
+    names = [cells.GetArrayName(k) for k in range(cells.GetNumberOfArrays())
+             if cells.GetArrayName(k) not in ("HeldBy", "vtkOriginalIndices")]
+    triangle = data.GetPointData().GetArray("TriangleId")
+    uv = data.GetPointData().GetArray("Barycentric")
+    ids = vtkIdList()
+    out = []
+    for c in range(data.GetNumberOfCells()):
+        data.GetCellPoints(c, ids)
+        values = {name: [cells.GetArray(name).GetComponent(c, k)
+                         for k in range(cells.GetArray(name).GetNumberOfComponents())]
+                  for name in names}
+        n = ids.GetNumberOfIds()
+        if n > 1 and ids.GetId(0) == ids.GetId(n - 1):
+            n -= 1
+        points = [list(data.GetPoint(ids.GetId(k))) +
+                  [int(triangle.GetTuple1(ids.GetId(k))), uv.GetComponent(ids.GetId(k), 0),
+                   uv.GetComponent(ids.GetId(k), 1)] for k in range(n)]
+        out.append([values, points])
+    return out
