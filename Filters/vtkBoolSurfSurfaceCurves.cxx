@@ -8,6 +8,7 @@
 #include "vtkBoolSurfPieceSnapping.h"
 #include "vtkBoolSurfPieceTraceStage.h"
 #include "vtkBoolSurfPropertyVector.h"
+#include "vtkBoolSurfSharedPieceTrace.h"
 #include "vtkBoolSurfSurfaceCache.h"
 #include "vtkBoolSurfTraceStage.h"
 
@@ -40,11 +41,14 @@ struct vtkBoolSurfSurfaceCurves::Internals
   boolsurf::vtkSurfaceCache Traced; // the surface's adjacency and tracer for port 1
   /// The closest triangles of the surface, or on pieces of this rank's own triangles.
   boolsurf::ClosestTriangles Closest;
-  /// On pieces: the ringed piece and the tracing of port 1, kept between edits.
-  std::unique_ptr<boolsurf::PieceTraceState> Pieces;
-  /// Whether the split surface is closed, for the ringed piece of build ClosedBuild.
+  /// On pieces: the ringed piece and the tracing of port 1, kept between edits and shared with
+  /// the other filters tracing on the same piece (Trace Surface Curves).
+  std::shared_ptr<boolsurf::PieceTraceState> Pieces;
+  /// Whether the split surface is closed, for the ringed piece of build ClosedBuild of the
+  /// state ClosedState (compared, never dereferenced).
   bool PieceClosed = false;
   unsigned long long ClosedBuild = 0;
+  const boolsurf::PieceTraceState* ClosedState = nullptr;
 
   /// Whether every edge of `surface` has a triangle on each side (cached with the surface's
   /// adjacency). Only then is a facet facing away from the camera hidden by the surface.
@@ -552,18 +556,18 @@ bool vtkBoolSurfSurfaceCurves::ExecutePiece(const std::vector<vtkPolyData*>& loc
     traffic);
   // Whether the surface is closed, from the ringed pieces (kept for port 1's tracing).
   const bool drawn = traffic.Points > 0;
-  if (!internal.Pieces)
-  {
-    internal.Pieces = std::make_unique<boolsurf::PieceTraceState>();
-  }
+  internal.Pieces = boolsurf::SharedPieceTraceState(local, std::move(internal.Pieces));
   std::string problem;
   bool closedSurface = false;
   if (drawn && boolsurf::UpdateRingedPiece(controller, local, *internal.Pieces, problem))
   {
-    if (internal.ClosedBuild != internal.Pieces->Builds) // decided alike on every rank
+    // Decided alike on every rank: the state and its builds are the same on every rank.
+    if (internal.ClosedState != internal.Pieces.get() ||
+      internal.ClosedBuild != internal.Pieces->Builds)
     {
       internal.PieceClosed = boolsurf::IsClosedOnPieces(controller, internal.Pieces->Ringed);
       internal.ClosedBuild = internal.Pieces->Builds;
+      internal.ClosedState = internal.Pieces.get();
     }
     closedSurface = internal.PieceClosed;
   }
@@ -592,7 +596,8 @@ bool vtkBoolSurfSurfaceCurves::ExecutePiece(const std::vector<vtkPolyData*>& loc
       traced,
       problems,
       notes,
-      reason))
+      reason,
+      this))
     {
       case boolsurf::PieceTraceOutcome::Gather:
         if (first)

@@ -5,6 +5,7 @@
 #include "vtkBoolSurfControlCurves.h"
 #include "vtkBoolSurfCurvesMessage.h"
 #include "vtkBoolSurfPieceTraceStage.h"
+#include "vtkBoolSurfSharedPieceTrace.h"
 #include "vtkBoolSurfStageHandoff.h"
 #include "vtkBoolSurfTraceStage.h"
 
@@ -24,8 +25,9 @@ struct vtkBoolSurfTraceCurves::Internals
 {
   /// What the last failed update could not trace, one sentence each.
   std::vector<std::string> Problems;
-  /// The ringed piece and the tracing kept between updates on pieces.
-  std::unique_ptr<boolsurf::PieceTraceState> Pieces;
+  /// The ringed piece and the tracing kept between updates on pieces, shared with the other
+  /// filters tracing on the same piece (Surface Curves).
+  std::shared_ptr<boolsurf::PieceTraceState> Pieces;
 };
 
 //------------------------------------------------------------------------------
@@ -110,10 +112,7 @@ bool vtkBoolSurfTraceCurves::ExecutePiece(const std::vector<vtkPolyData*>& local
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   Internals& internal = *this->Internal;
   internal.Problems.clear();
-  if (!internal.Pieces)
-  {
-    internal.Pieces = std::make_unique<boolsurf::PieceTraceState>();
-  }
+  internal.Pieces = boolsurf::SharedPieceTraceState(locals[0], std::move(internal.Pieces));
   std::vector<std::string> notes;
   std::string reason;
   const boolsurf::PieceTraceOutcome outcome = boolsurf::TraceOnPieces(controller,
@@ -124,7 +123,8 @@ bool vtkBoolSurfTraceCurves::ExecutePiece(const std::vector<vtkPolyData*>& local
     outputs[0],
     internal.Problems,
     notes,
-    reason);
+    reason,
+    this);
   this->ReportWarnings(notes);
   switch (outcome)
   {

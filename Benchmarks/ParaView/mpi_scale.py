@@ -15,11 +15,14 @@ time (UpdatePipeline on this rank, so it includes waiting for the others), the s
 own per-rank arrays (StageTimes; PieceBytes, the bytes sent and received per message, and any
 other field array whose name ends in Bytes, such as a tracer's traffic), and the size of its
 piece. Rank 0 gathers the records (files beside OUT) and writes OUT with the machine's load.
+The summary also gives each rank's peak after each stage's first update, which says what holds
+a rank's memory.
 
-The gathers that still happen are estimated, not counted: Surface Curves and Trace Surface
-Curves gather the surface to rank 0 once per surface change (each rank sends its piece; the
-estimate is the piece's in-memory size, vtkDataObject::GetActualMemorySize), and the curves,
-which live on rank 0, travel nowhere else before Surface Arrangement broadcasts them.
+No stage gathers the surface: Surface Curves places and traces on the pieces, Trace Surface
+Curves traces there (sharing Surface Curves' ringed piece and tracer), and the curves, which
+live on rank 0, travel nowhere else before Surface Arrangement broadcasts them. The bytes of
+the ghost exchange (vtkGhostCellsGenerator) are not counted; Surface Arrangement estimates its
+ring (RingEstimate).
 """
 import argparse
 import json
@@ -170,16 +173,6 @@ def bytes_of(stage):
     return sent, received
 
 
-def gather_estimate(result):
-    """(sent per rank, received by rank 0) of the two gathers of the surface on its first update
-    (Surface Curves and Trace Surface Curves; each rank's piece, kept after)."""
-    pieces = [r["piece"]["bytes"] for r in result["records"]]
-    if result["ranks"] == 1:
-        return [0.0], 0.0
-    sent = [0.0] + [2.0 * b for b in pieces[1:]]
-    return sent, sum(sent)
-
-
 def times(stage):
     return stage["arrays"].get("StageTimes", {})
 
@@ -217,13 +210,17 @@ def surface_triangles(result):
 def summarize_run(result):
     """Per rank: memory, first update and median edit (wall per stage, bytes)."""
     rows = []
-    sent_gather, received_gather = gather_estimate(result)
     for r in result["records"]:
         first, edits = r["updates"][0], r["updates"][1:]
         row = {"rank": r["rank"], "triangles": r["piece"]["triangles"],
                "idle_mb": r["memory"]["idle"]["hwm"] / 1024.0,
                "peak_mb": r["memory"]["end"]["hwm"] / 1024.0}
         row["above_idle_mb"] = row["peak_mb"] - row["idle_mb"]
+        # What each stage's first update added to the rank's peak (the piece as read first).
+        row["stage_peaks_mb"] = [("read", (r["memory"]["read"]["hwm"] - r["memory"]["idle"]["hwm"])
+                                  / 1024.0)] + [
+            (s, (first["stages"][s]["memory"]["hwm"] - r["memory"]["idle"]["hwm"]) / 1024.0)
+            for s in STAGES]
         for label, updates in (("first", [first]), ("edit", edits or [first])):
             walls = {s: statistics.median(u["stages"][s]["wall_ms"] for u in updates)
                      for s in STAGES}
@@ -235,8 +232,6 @@ def summarize_run(result):
                           "stage_times": {s: {k: statistics.median(
                               times(u["stages"][s]).get(k, 0.0) for u in updates)
                               for k in times(updates[0]["stages"][s])} for s in STAGES}}
-        row["gather_sent"] = sent_gather[r["rank"]]
-        row["gather_received"] = received_gather if r["rank"] == 0 else 0.0
         rows.append(row)
     return rows
 
@@ -251,21 +246,24 @@ def print_run(result):
               " ".join("%.2f" % x for x in result["load"])))
     print("rank triangles | idle MB  peak MB  above idle | first update wall ms: curves trace "
           "arrangement labels boolean | R+F+output ms first/edit | bytes sent/received: first "
-          "update (+ surface gathers, estimated) / per edit")
+          "update / per edit")
     for row in rows:
         f, e = row["first"], row["edit"]
         sent_first = sum(v[0] for v in f["bytes"].values())
         received_first = sum(v[1] for v in f["bytes"].values())
         sent_edit = sum(v[0] for v in e["bytes"].values())
         received_edit = sum(v[1] for v in e["bytes"].values())
-        print("%4d %9d | %7.0f %8.0f %10.0f | %s | %7.0f / %7.0f | %s / %s (+%s / %s) / "
-              "%s / %s" % (
+        print("%4d %9d | %7.0f %8.0f %10.0f | %s | %7.0f / %7.0f | %s / %s / %s / %s" % (
                   row["rank"], row["triangles"], row["idle_mb"], row["peak_mb"],
                   row["above_idle_mb"],
                   " ".join("%7.0f" % f["wall_ms"][s] for s in STAGES),
                   f["distributed_ms"], e["distributed_ms"],
-                  human(sent_first), human(received_first), human(row["gather_sent"]),
-                  human(row["gather_received"]), human(sent_edit), human(received_edit)))
+                  human(sent_first), human(received_first), human(sent_edit),
+                  human(received_edit)))
+    print("peak above idle after each stage's first update (MB; the last edit's peak above):")
+    for row in rows:
+        print("  rank %d: %s" % (row["rank"], ", ".join("%s %.0f" % (s, mb)
+                                                        for s, mb in row["stage_peaks_mb"])))
     print("per message (rank: first update sent/received; per edit sent/received):")
     for r, row in zip(result["records"], rows):
         for s in ("arrangement", "labels", "boolean", "trace"):

@@ -180,6 +180,7 @@ void AddPieceTracingTraffic(const vtkBoolSurfPieceTracing::Traffic& t, vtkPolyDa
     { "RingedTriangles", static_cast<double>(t.RingedTriangles) },
     { "ReusedPiece", t.ReusedPiece ? 1.0 : 0.0 },
     { "RecalledCurves", static_cast<double>(t.RecalledCurves) },
+    { "SharedPiece", t.SharedPiece ? 1.0 : 0.0 },
   };
   vtkNew<vtkDoubleArray> array;
   array->SetName(names::PieceTracingTraffic);
@@ -210,6 +211,7 @@ bool UpdateRingedPiece(vtkMultiProcessController* controller,
   }
   state.HasPiece = false;
   state.Traced = false;
+  state.Users.clear();
   std::string error;
   int ok = BuildRingedPiece(controller, local, state.Ringed, error) ? 1 : 0, allOk = 0;
   controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
@@ -235,7 +237,8 @@ PieceTraceOutcome TraceOnPieces(vtkMultiProcessController* controller,
   vtkPolyData* output,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes,
-  std::string& reason)
+  std::string& reason,
+  const void* user)
 {
   const int rank = controller->GetLocalProcessId();
   const char* method = GeodesicMethodName(options.Method);
@@ -308,7 +311,16 @@ PieceTraceOutcome TraceOnPieces(vtkMultiProcessController* controller,
   std::string error;
   const bool traced = tracing.Run(controller, state.Ringed, list, message0, error);
   state.Traced = true;
-  AddPieceTracingTraffic(tracing.GetTraffic(), output);
+  vtkBoolSurfPieceTracing::Traffic traffic = tracing.GetTraffic();
+  const bool ownBefore =
+    std::find(state.Users.begin(), state.Users.end(), user) != state.Users.end();
+  traffic.SharedPiece = traffic.ReusedPiece && !ownBefore;
+  traffic.ReusedPiece = traffic.ReusedPiece && ownBefore;
+  if (!ownBefore)
+  {
+    state.Users.push_back(user);
+  }
+  AddPieceTracingTraffic(traffic, output);
   if (!traced)
   {
     // A leg only the whole surface settles: every rank has the same failures, so every rank

@@ -50,6 +50,10 @@ struct PieceTraceState
   /// How many times Ringed was built (the same count on every rank): what is derived from it
   /// (Surface Curves' closedness) is kept while it is unchanged.
   unsigned long long Builds = 0;
+  /// The filters that traced on Ringed since it was built (the state is shared by the filters
+  /// tracing on one piece, vtkBoolSurfSharedPieceTrace.h): a filter's traffic says whether it
+  /// kept its own tracing (ReusedPiece) or used another filter's (SharedPiece).
+  std::vector<const void*> Users;
 };
 
 enum class PieceTraceOutcome
@@ -69,7 +73,8 @@ bool UpdateRingedPiece(vtkMultiProcessController* controller,
   std::string& problem);
 
 /// Collective: Trace Surface Curves on this rank's piece `local` with the control curves
-/// `curves` (read on rank 0 only). `notes` gets rank 0's reading notes (warnings).
+/// `curves` (read on rank 0 only). `notes` gets rank 0's reading notes (warnings). `user`
+/// names the calling filter (its traffic tells its own tracing kept from another's).
 PieceTraceOutcome TraceOnPieces(vtkMultiProcessController* controller,
   vtkPolyData* local,
   vtkPolyData* curves,
@@ -78,7 +83,8 @@ PieceTraceOutcome TraceOnPieces(vtkMultiProcessController* controller,
   vtkPolyData* output,
   std::vector<std::string>& problems,
   std::vector<std::string>& notes,
-  std::string& reason);
+  std::string& reason,
+  const void* user = nullptr);
 
 /// The field array PieceTracingTraffic of `traffic` (names in vtkBoolSurfArrayNames.h).
 void AddPieceTracingTraffic(const vtkBoolSurfPieceTracing::Traffic& traffic, vtkPolyData* output);

@@ -73,6 +73,9 @@ public:
     int HeldTriangles = 0;    ///< everything its tracer holds at the end
     int RingedTriangles = 0;  ///< its owned triangles and ring
     bool ReusedPiece = false; ///< the piece, directory and tracer of the last Run were kept
+    /// Set by the filters sharing one tracing (vtkBoolSurfSharedPieceTrace.h): what was kept
+    /// was another filter's (ReusedPiece then false).
+    bool SharedPiece = false;
   };
 
   void SetOptions(const boolsurf::GeodesicPathOptions& options) { this->Options = options; }
