@@ -51,8 +51,8 @@ labels = LabelArrangementCells(Input=arrangement, PerTriangleLabels=1)
 boolean = SurfaceBoolean(Input=labels, Operation="Union", ShapeA=0, ShapeB=2)
 
 # Each rank's output with its rank as a cell array, and one point per rank with its
-# PieceArrangementReuse (and Trace Surface Curves' PieceTracingTraffic): the fetched unions say who
-# holds what and what each rank kept.
+# PieceArrangementReuse (and the PieceTracingTraffic of Surface Curves' port 1 and of Trace Surface
+# Curves): the fetched unions say who holds what and what each rank kept.
 RANK = """
 from vtkmodules.vtkCommonCore import vtkIntArray
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
@@ -113,6 +113,7 @@ def shape_triangles(shape):
 def step(name):
     boolean.UpdatePipeline()
     out = {"name": name, "reuse": rows(arrangement, "PieceArrangementReuse"),
+           "display": rows(OutputPort(control, 1), "PieceTracingTraffic"),
            "tracing": rows(traced, "PieceTracingTraffic")}
     for stage, proxy, arrays in (("arrangement", arrangement, ["ArrangementCell"]),
                                  ("labels", labels, ["ArrangementCell", "Labels"]),

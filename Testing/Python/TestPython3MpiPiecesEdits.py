@@ -6,8 +6,9 @@ Surface Arrangement says what it kept (PieceArrangementReuse): the first update 
 after the surface changed build the piece, every edit of the curves alone keeps it, and once
 an earlier result is free the arrangement is computed again in place (Core's edit path). One
 edit moves a small circle across rank boundaries (the ranks holding its triangles change).
-Trace Surface Curves on the pieces traces the moved circle alone and recalls the others
-(PieceTracingTraffic), every curve on a new piece.
+The curves are traced on the pieces once per update: the Surface Curves source (its port 1)
+traces the moved circle alone and recalls the others (PieceTracingTraffic), every curve on a new
+piece, and Trace Surface Curves, sharing its tracing of the piece, recalls them all.
 Each run has a time limit: a rank left waiting fails the test.
 """
 import os
@@ -54,15 +55,20 @@ for ranks in (2, 3):
             elif i >= 2 and steps[i - 1]["name"] not in rebuilt:
                 # Two updates on the kept piece: a result is free again, computed in place.
                 assert row["KeptArrangement"] == 1, (where, row)
-        # Each edit moves one of the three circles: traced alone on a kept piece.
-        tracing = got["tracing"]
-        assert sorted(tracing) == [str(r) for r in range(ranks)], (got["name"], tracing)
-        traced = sum(int(row["TracedCurves"]) for row in tracing.values())
+        # Each edit moves one of the three circles: traced alone on a kept piece, by the
+        # source; Trace Surface Curves then traces none.
+        display, tracing = got["display"], got["tracing"]
+        assert sorted(display) == sorted(tracing) == [str(r) for r in range(ranks)], (
+            got["name"], display, tracing)
+        traced = sum(int(row["TracedCurves"]) for row in display.values())
         kept = got["name"] not in rebuilt
-        assert traced == (1 if kept else 3), (got["name"], "curves traced", tracing)
-        for rank, row in tracing.items():
+        assert traced == (1 if kept else 3), (got["name"], "curves traced", display)
+        for rank, row in display.items():
             assert row["ReusedPiece"] == (1 if kept else 0), (got["name"], rank, row)
             assert row["RecalledCurves"] == (2 if kept else 0), (got["name"], rank, row)
+        for rank, row in tracing.items():
+            assert (row["TracedCurves"], row["RecalledCurves"]) == (0, 3), (
+                got["name"], "Trace Surface Curves traced again", rank, row)
         print("%s on %d ranks: the one-rank outputs; kept piece %s, kept arrangement %s, "
               "curves traced %d" % (
                   got["name"], ranks, [int(r["KeptPiece"]) for _, r in sorted(reuse.items())],
