@@ -1002,14 +1002,16 @@ void RefinePiece(const TriangleMesh& mesh,
 // tangents at the two end points meet; it is kept when the field there is much closer to the
 // level than at the chord's middle (a round join's tangents meet outside it, and are not).
 // `outside`, when given, tells whether the fronts turn sharply but their tangents meet outside
-// the triangle: the tip may go on into the next one (TipAcrossEdge).
+// the triangle: the tip may go on into the next one (TipAcrossEdge). A corner outside the
+// triangle by less than `slack` (in barycentric weight) is kept, moved onto its side.
 bool SharpCorner(const TriangleMesh& mesh,
   OffsetField& field,
   int t,
   const CanonicalPoint& a,
   const CanonicalPoint& b,
   CanonicalPoint& corner,
-  bool* outside = nullptr)
+  bool* outside = nullptr,
+  double slack = 1e-9)
 {
   const Triangle& tri = mesh.GetTriangle(t);
   const Vec3 p0 = mesh.GetPosition(tri[0]), p1 = mesh.GetPosition(tri[1]),
@@ -1085,7 +1087,7 @@ bool SharpCorner(const TriangleMesh& mesh,
   const double y = (gradient[0].x * r1 - gradient[1].x * r0) / den;
   // The corner may lie on the triangle's side or corner (a vertex exactly on the level set).
   std::array<double, 3> w = weightsOf(x, y);
-  if (!(w[0] > -1e-9 && w[1] > -1e-9 && w[2] > -1e-9))
+  if (!(w[0] > -slack && w[1] > -slack && w[2] > -slack))
   {
     if (outside)
     {
@@ -1260,6 +1262,34 @@ bool FlatEndCorners(const TriangleMesh& mesh,
   return false;
 }
 
+// Where the tangents at a piece's end points meet just outside triangle t but no tip goes on
+// beyond it (the field along t's side stays on the other side of the level), the corner lies in
+// t to within the gradients' precision, on its side or near it: SharpCorner's gradients are
+// finite differences over ~1e-4 of the triangle, off by the exact field's rounding over that
+// step (~1e-5 of their length), and move a corner near the side by up to ~1e-5 of the triangle
+// across it. Such a corner (within 1e-4 of t in weight) is kept on t's side, where the chord
+// would cut it (a flat end's corner on the side, 2.6e-5 short), when that side holds neither
+// end point: one that does is where the level set crosses it, and a corner there would only be
+// the crossing again, to rounding. False, with nothing added, when there is none.
+bool CornerOnSide(const TriangleMesh& mesh,
+  OffsetField& field,
+  int t,
+  const CanonicalPoint& a,
+  const CanonicalPoint& b,
+  std::vector<CanonicalPoint>& out)
+{
+  CanonicalPoint corner;
+  if (!SharpCorner(mesh, field, t, a, b, corner, nullptr, 1e-4) ||
+    corner.Location != PointLocation::Edge ||
+    (a.Location == PointLocation::Edge && a.Id == corner.Id) ||
+    (b.Location == PointLocation::Edge && b.Id == corner.Id))
+  {
+    return false;
+  }
+  out.push_back(corner);
+  return true;
+}
+
 // The crossings of `edge` ordered so that the first is the nearer to `last`: the way in.
 void OrderFrom(const TriangleMesh& mesh, const Vec3& last, CanonicalPoint crossing[2])
 {
@@ -1276,8 +1306,9 @@ void OrderFrom(const TriangleMesh& mesh, const Vec3& last, CanonicalPoint crossi
 // corner's tip), or through both other edges (the end of a strip thinner than the mesh, an
 // inset that nearly collapses a rectangle, whose two corners lie beyond them: round the
 // triangle from the way in, the edge at the end of `edge` nearer the way in first), or ends in
-// it (a strip's flat end: FlatEndCorners). A tip of a few triangles at most (its corners are
-// right angles or sharper at mesh resolution): `steps` counts them.
+// it (a strip's flat end: FlatEndCorners), or its corner lies on the triangle's side to the
+// gradients' precision (CornerOnSide). A tip of a few triangles at most (its corners are right
+// angles or sharper at mesh resolution): `steps` counts them.
 void AppendTipBeyond(const TriangleMesh& mesh,
   OffsetField& field,
   int from,
@@ -1353,9 +1384,9 @@ void AppendTipBeyond(const TriangleMesh& mesh,
         out.push_back(corner);
       }
     }
-    else
+    else if (!FlatEndCorners(mesh, field, beyond, crossing[0], crossing[1], out))
     {
-      FlatEndCorners(mesh, field, beyond, crossing[0], crossing[1], out);
+      CornerOnSide(mesh, field, beyond, crossing[0], crossing[1], out);
     }
   }
   out.push_back(crossing[1]);
@@ -1367,7 +1398,9 @@ void AppendTipBeyond(const TriangleMesh& mesh,
 // never go there: the chord a -> b would cut the tip off. The level set crosses each edge the
 // tip passes twice: the crossings, found on the exact field along the edges, and the corners in
 // the triangles where the tip ends (SharpCorner there), are the points to add after a. A strip
-// whose end lies in t keeps its corners there (FlatEndCorners). False when neither is found.
+// whose end lies in t keeps its corners there (FlatEndCorners), and a corner whose tangents meet
+// just across t's side, the tip crossing no edge, is kept on the side (CornerOnSide). False
+// when none is found.
 bool TipAcrossEdge(const TriangleMesh& mesh,
   OffsetField& field,
   int t,
@@ -1398,7 +1431,7 @@ bool TipAcrossEdge(const TriangleMesh& mesh,
   CanonicalPoint crossing[2];
   if (!DoubleCrossing(field, edge, sign, crossing))
   {
-    return FlatEndCorners(mesh, field, t, a, b, out);
+    return FlatEndCorners(mesh, field, t, a, b, out) || CornerOnSide(mesh, field, t, a, b, out);
   }
   // The way in is the crossing nearer to a, with the corners in t itself between a or b and the
   // tip's way (a strip's end with one corner in t, the other beyond).

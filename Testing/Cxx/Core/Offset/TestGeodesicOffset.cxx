@@ -1487,6 +1487,17 @@ TEST(GeodesicOffset, InsetAndFlatEndCornersStaySharpOnIrregularMeshes)
       { 0.45208113519001186, 0.5335057819038358 },
       { 0.35486916864401535, 0.46998827435913371 } },
     0.047738787489575288 });
+  // A flat end's corner on the side of the triangle the band's side and end cross, opposite
+  // the corner inside (within ~1e-9 of it): the tangents met just across that side (to the
+  // gradients' precision, ~1e-7 away), no tip crossed it, and the chord across the triangle cut
+  // the corner off, 2.6e-5 short (BOOLSURF_OFFSET_SEED=1834 in RandomFlatCasesMatchClipper);
+  // each way along the segment.
+  std::mt19937_64 regressionSide(1834);
+  const std::uint32_t seedSide = static_cast<std::uint32_t>(regressionSide());
+  const std::vector<Vec2> cornerOnTheSide = { { 0.6701820172913997, 0.86460443130716447 },
+    { 0.83895667408731656, 0.81803657883423853 } };
+  cases.push_back({ seedSide, cornerOnTheSide, 0.027425056881816734 });
+  cases.push_back({ seedSide, { cornerOnTheSide[1], cornerOnTheSide[0] }, 0.027425056881816734 });
   // Then rectangles at angles over a quarter turn and bands at angles over a half turn, of
   // random sizes, distances and centres (a fixed sequence).
   std::mt19937_64 rng(20261128);
