@@ -216,6 +216,7 @@ void PieceArrangementState::Clear()
   this->BorderSent = this->BorderReceived = this->RingReceived = 0;
   this->Piece.reset();
   this->SurfaceCell.reset();
+  this->TileSums = PieceTileSums();
   this->Results.Clear();
 }
 
@@ -328,7 +329,8 @@ bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
   RestrictCurvesToPiece(
     piece, global, [&](int e) { return edgeTable[e]; }, restricted);
   costs.AddTime("Restrict", watch.Lap());
-  ok = result->Run.Run(controller, piece, restricted, state.Neighbours, options, error);
+  ok = result->Run.Run(
+    controller, piece, restricted, state.Neighbours, options, error, &state.TileSums);
   state.Work = result->Run.WorkBuffers();
   if (!ok)
   {
