@@ -138,8 +138,8 @@ void SummarizeBoundaryLoops(const PieceMesh& piece,
   const TriangleMesh& mesh = piece.Mesh;
   // The owned boundary half-edges, the next one along each loop, and which have an owned
   // predecessor (the others start fragments). Every triangle around an owned triangle's corner
-  // is in the piece, so the walk is the whole surface's.
-  // (listed with the piece's mesh: an edit does not scan the piece for them)
+  // is in the piece, so the walk is the whole surface's. The half-edges are listed with the
+  // piece's mesh: an edit does not scan the piece for them.
   const std::vector<int>& owned = piece.SurfaceBoundaryHalfEdges;
   std::unordered_map<int, int> next;
   for (const int h : owned)
