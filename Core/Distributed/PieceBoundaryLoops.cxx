@@ -24,12 +24,6 @@ bool PlugCrossing::operator==(const PlugCrossing& o) const
 namespace
 {
 
-bool IsSurfaceBoundary(const TriangleMesh& mesh, int h)
-{
-  const int e = mesh.GetEdgeId(h / 3, h % 3);
-  return e >= 0 && mesh.GetEdgeValence(e) == 1;
-}
-
 // Per refined point pair (UndirectedPointPair) a cell-bounding curve steps along: the shapes'
 // steps, +1 from the lower point id to the higher.
 std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> BoundingSteps(
@@ -144,19 +138,13 @@ void SummarizeBoundaryLoops(const PieceMesh& piece,
   const TriangleMesh& mesh = piece.Mesh;
   // The owned boundary half-edges, the next one along each loop, and which have an owned
   // predecessor (the others start fragments). Every triangle around an owned triangle's corner
-  // is in the piece, so the walk is the whole surface's.
+  // is in the piece, so the walk is the whole surface's. The half-edges are listed with the
+  // piece's mesh: an edit does not scan the piece for them.
+  const std::vector<int>& owned = piece.SurfaceBoundaryHalfEdges;
   std::unordered_map<int, int> next;
-  std::vector<int> owned;
-  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  for (const int h : owned)
   {
-    for (int k = 0; k < 3 && piece.Owned[t]; ++k)
-    {
-      if (IsSurfaceBoundary(mesh, 3 * t + k))
-      {
-        owned.push_back(3 * t + k);
-        next[3 * t + k] = NextBoundaryHalfEdge(mesh, 3 * t + k);
-      }
-    }
+    next[h] = NextBoundaryHalfEdge(mesh, h);
   }
   if (owned.empty())
   {

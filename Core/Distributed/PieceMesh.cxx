@@ -31,6 +31,30 @@ bool SortedOrder(const std::vector<int>& ids, std::vector<int>& order, int& repe
   return true;
 }
 
+// The owned triangles' sides on the piece border and on the surface's boundary (PieceMesh).
+void ListOwnedSides(PieceMesh& piece)
+{
+  const TriangleMesh& mesh = piece.Mesh;
+  piece.BorderHalfEdges.clear();
+  piece.SurfaceBoundaryHalfEdges.clear();
+  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  {
+    for (int k = 0; k < 3 && piece.Owned[t]; ++k)
+    {
+      const int n = mesh.GetNeighbor(t, k);
+      if (n >= 0 && !piece.Owned[n])
+      {
+        piece.BorderHalfEdges.push_back(3 * t + k);
+      }
+      const int e = mesh.GetEdgeId(t, k);
+      if (e >= 0 && mesh.GetEdgeValence(e) == 1)
+      {
+        piece.SurfaceBoundaryHalfEdges.push_back(3 * t + k);
+      }
+    }
+  }
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -101,6 +125,7 @@ bool BuildPieceMesh(const PieceInput& input, PieceMesh& out, std::string& error)
     out.NumberOfOwnedTriangles += out.Owned[i];
   }
   out.Mesh = TriangleMesh(std::move(positions), std::move(triangles));
+  ListOwnedSides(out);
   return true;
 }
 

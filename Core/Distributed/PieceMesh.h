@@ -39,6 +39,12 @@ struct PieceMesh
   std::vector<int> GlobalVertex;   ///< per local vertex, ascending
   std::vector<char> Owned;         ///< per local triangle
   int NumberOfOwnedTriangles = 0;
+  /// The owned triangles' sides that an arrangement's summary reads on every update, listed
+  /// once with the mesh so an edit does not scan the piece for them (half-edges 3 t + k,
+  /// ascending): sides facing another piece's triangle (the piece border), and sides on the
+  /// surface's own boundary.
+  std::vector<int> BorderHalfEdges;
+  std::vector<int> SurfaceBoundaryHalfEdges;
 
   /// Local id of global triangle (vertex) g, -1 when the piece does not have it: a binary
   /// search (no global-sized table).
@@ -46,8 +52,8 @@ struct PieceMesh
   int LocalVertex(int g) const;
 };
 
-/// Builds the piece's mesh. Fails, naming the ids, on repeated global ids or corners out of
-/// range.
+/// Builds the piece's mesh (and its lists of sides). Fails, naming the ids, on repeated global
+/// ids or corners out of range.
 bool BuildPieceMesh(const PieceInput& input, PieceMesh& out, std::string& error);
 
 } // namespace boolsurf

@@ -100,17 +100,29 @@ double RefinedTriangleArea(const TriangleMesh& mesh, const Arrangement& arr, int
   return 0.5 * Length(Cross(arr.GetPosition(mesh, c[1]) - a, arr.GetPosition(mesh, c[2]) - a));
 }
 
-// Per local cell with owned triangles: its lowest owned refined triangle and owned area.
-void SummarizeCells(const PieceMesh& piece, const Arrangement& arr, PieceSummary& out)
+// Per local cell with owned triangles: its lowest owned refined triangle and owned area. With
+// `sums`, a clean tile adds its precomputed figures and only the other tiles' triangles are
+// read (an edit's cost is the tiles curves touch, plus one entry per tile).
+void SummarizeCells(const PieceMesh& piece,
+  const Arrangement& arr,
+  PieceTileSums* sums,
+  PieceSummary& out)
 {
   const TriangleMesh& mesh = piece.Mesh;
   std::vector<int> entry(arr.NumberOfCells, -1);
-  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  const auto add = [&](int c, const RefinedTriangleKey& key, double area)
   {
-    if (!piece.Owned[t])
+    if (entry[c] < 0)
     {
-      continue;
+      entry[c] = static_cast<int>(out.Cells.size());
+      out.Cells.push_back({ c, key, 0.0 });
     }
+    PieceCell& cell = out.Cells[entry[c]];
+    cell.Lowest = std::min(cell.Lowest, key);
+    cell.Area += area;
+  };
+  const auto addTriangle = [&](int t)
+  {
     int index = 0;
     ForEachRefinedTriangle(mesh,
       arr,
@@ -119,19 +131,52 @@ void SummarizeCells(const PieceMesh& piece, const Arrangement& arr, PieceSummary
       {
         const RefinedTriangleKey key{ piece.GlobalTriangle[t], index++ };
         const int c = arr.CellOfTriangle(r);
-        if (c < 0)
+        if (c >= 0)
         {
-          return;
+          add(c, key, RefinedTriangleArea(mesh, arr, r));
         }
-        if (entry[c] < 0)
-        {
-          entry[c] = static_cast<int>(out.Cells.size());
-          out.Cells.push_back({ c, key, 0.0 });
-        }
-        PieceCell& cell = out.Cells[entry[c]];
-        cell.Lowest = std::min(cell.Lowest, key);
-        cell.Area += RefinedTriangleArea(mesh, arr, r);
       });
+  };
+  const MeshTiles* tiles = arr.Tiles.get();
+  if (sums && tiles && arr.TileCell.size() == static_cast<std::size_t>(tiles->GetNumberOfTiles()))
+  {
+    if (!sums->Matches(*tiles))
+    {
+      sums->Compute(piece, *tiles);
+    }
+    for (int k = 0; k < tiles->GetNumberOfTiles(); ++k)
+    {
+      const int c = arr.TileCell[k];
+      if (c >= 0)
+      {
+        if (sums->LowestOwned[k] >= 0)
+        {
+          add(c, { sums->LowestOwned[k], 0 }, sums->OwnedArea[k]);
+        }
+        continue;
+      }
+      for (int m = tiles->Offset[k]; m < tiles->Offset[k + 1]; ++m)
+      {
+        if (piece.Owned[tiles->Members[m]])
+        {
+          addTriangle(tiles->Members[m]);
+        }
+      }
+    }
+    for (int t : sums->Untiled)
+    {
+      addTriangle(t);
+    }
+  }
+  else
+  {
+    for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+    {
+      if (piece.Owned[t])
+      {
+        addTriangle(t);
+      }
+    }
   }
   std::sort(out.Cells.begin(),
     out.Cells.end(),
@@ -204,56 +249,49 @@ void SummarizeBoundary(const PieceMesh& piece,
     int X, Y, Cell;
   };
   std::vector<Side> sides;
-  for (int t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  // The border's sides, listed with the piece's mesh (an edit does not scan the piece).
+  for (const int h : piece.BorderHalfEdges)
   {
-    for (int k = 0; k < 3 && piece.Owned[t]; ++k)
-    {
-      const int n = mesh.GetNeighbor(t, k);
-      if (n < 0 || piece.Owned[n])
+    const int t = h / 3, k = h % 3;
+    sides.clear();
+    ForEachRefinedTriangle(mesh,
+      arr,
+      t,
+      [&](int r)
       {
-        continue;
-      }
-      sides.clear();
-      ForEachRefinedTriangle(mesh,
-        arr,
-        t,
-        [&](int r)
+        const Triangle c = arr.GetTriangle(mesh, r);
+        for (int j = 0; j < 3; ++j)
         {
-          const Triangle c = arr.GetTriangle(mesh, r);
-          for (int j = 0; j < 3; ++j)
+          const double x = PositionOnEdge(mesh, arr, t, k, c[j]);
+          const double y = PositionOnEdge(mesh, arr, t, k, c[(j + 1) % 3]);
+          if (x >= 0 && y >= 0 && x != y)
           {
-            const double x = PositionOnEdge(mesh, arr, t, k, c[j]);
-            const double y = PositionOnEdge(mesh, arr, t, k, c[(j + 1) % 3]);
-            if (x >= 0 && y >= 0 && x != y)
-            {
-              sides.push_back(
-                { std::min(x, y), std::max(x, y), c[j], c[(j + 1) % 3], arr.CellOfTriangle(r) });
-            }
+            sides.push_back(
+              { std::min(x, y), std::max(x, y), c[j], c[(j + 1) % 3], arr.CellOfTriangle(r) });
           }
-        });
-      std::sort(
-        sides.begin(), sides.end(), [](const Side& a, const Side& b) { return a.Lo < b.Lo; });
-      const Triangle& tri = mesh.GetTriangle(t);
-      const int ga = piece.GlobalVertex[tri[k]], gb = piece.GlobalVertex[tri[(k + 1) % 3]];
-      const bool forward = ga < gb;
-      const int count = static_cast<int>(sides.size());
-      for (int i = 0; i < count; ++i)
-      {
-        const Side& s = sides[i];
-        const std::uint64_t pair = UndirectedPointPair(s.X, s.Y);
-        BoundarySubSegment b;
-        b.Edge = UndirectedPointPair(ga, gb);
-        b.Index = forward ? i : count - 1 - i;
-        b.Count = count;
-        b.Cell = s.Cell;
-        b.Forward = forward;
-        b.Blocked = bounding.count(pair) > 0;
-        const bool xLow = s.X < s.Y;
-        const double px = PositionOnEdge(mesh, arr, t, k, s.X);
-        const double py = PositionOnEdge(mesh, arr, t, k, s.Y);
-        places[pair] = { static_cast<int>(out.Boundary.size()), xLow ? px : py, xLow ? py : px };
-        out.Boundary.push_back(b);
-      }
+        }
+      });
+    std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) { return a.Lo < b.Lo; });
+    const Triangle& tri = mesh.GetTriangle(t);
+    const int ga = piece.GlobalVertex[tri[k]], gb = piece.GlobalVertex[tri[(k + 1) % 3]];
+    const bool forward = ga < gb;
+    const int count = static_cast<int>(sides.size());
+    for (int i = 0; i < count; ++i)
+    {
+      const Side& s = sides[i];
+      const std::uint64_t pair = UndirectedPointPair(s.X, s.Y);
+      BoundarySubSegment b;
+      b.Edge = UndirectedPointPair(ga, gb);
+      b.Index = forward ? i : count - 1 - i;
+      b.Count = count;
+      b.Cell = s.Cell;
+      b.Forward = forward;
+      b.Blocked = bounding.count(pair) > 0;
+      const bool xLow = s.X < s.Y;
+      const double px = PositionOnEdge(mesh, arr, t, k, s.X);
+      const double py = PositionOnEdge(mesh, arr, t, k, s.Y);
+      places[pair] = { static_cast<int>(out.Boundary.size()), xLow ? px : py, xLow ? py : px };
+      out.Boundary.push_back(b);
     }
   }
 }
@@ -389,11 +427,12 @@ void SummarizeCurveSteps(const PieceMesh& piece,
 void SummarizePiece(const PieceMesh& piece,
   const PieceCurves& curves,
   const Arrangement& arr,
-  PieceSummary& out)
+  PieceSummary& out,
+  PieceTileSums* sums)
 {
   out = PieceSummary();
   out.NumberOfLocalCells = arr.NumberOfCells;
-  SummarizeCells(piece, arr, out);
+  SummarizeCells(piece, arr, sums, out);
   const std::unordered_set<std::uint64_t> bounding = BoundingSubEdges(curves, arr);
   std::unordered_map<std::uint64_t, SubSegmentPlace> places;
   SummarizeBoundary(piece, arr, bounding, out, places);
@@ -407,14 +446,15 @@ bool ArrangePiece(const PieceMesh& piece,
   const ArrangementOptions& options,
   Arrangement& arr,
   PieceSummary& out,
-  std::string& error)
+  std::string& error,
+  PieceTileSums* sums)
 {
   if (!ComputeArrangementOfRuns(
         piece.Mesh, curves.Curves, curves.CutFromClosed, options, arr, error))
   {
     return false;
   }
-  SummarizePiece(piece, curves, arr, out);
+  SummarizePiece(piece, curves, arr, out, sums);
   return true;
 }
 

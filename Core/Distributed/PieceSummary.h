@@ -25,8 +25,10 @@
 // The boundary records (sub-segments and the curve steps along them: O(piece-boundary edges))
 // go to the neighbours only, which match them (BoundaryJoins.h); the cells and crossings
 // (O(local cells + curve places in owned triangles)) go to the merge (MergedArrangement.h).
-// Nothing is O(triangles). Computing the summary reads the owned triangles once (O(owned
-// triangles), like the flood fill); a hash of the curves' steps costs O(curve points).
+// Nothing is O(triangles). Computing the summary reads the triangles of the tiles curves touch,
+// one entry per clean tile (PieceTileSums.h, kept from edit to edit) and the piece border's
+// sides (listed with the PieceMesh), as an edit's flood fill reads them; a hash of the curves'
+// steps costs O(curve points).
 //
 // Measured (Benchmarks/BenchmarkPieceArrangement.cxx, ten plane sections): igea_1m (1.07M
 // triangles) in 4 slabs, the largest piece 8.6 MB as received, its boundary records 86 KB, at
@@ -39,6 +41,7 @@
 #include "Distributed/PieceBoundaryLoops.h"
 #include "Distributed/PieceCurves.h"
 #include "Distributed/PieceMesh.h"
+#include "Distributed/PieceTileSums.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -135,11 +138,15 @@ struct PieceSummary
   std::size_t GetBoundaryBytes() const;
 };
 
-/// The summary of a piece's arrangement `arr`, computed on piece.Mesh with `curves`.
+/// The summary of a piece's arrangement `arr`, computed on piece.Mesh with `curves`. `sums`,
+/// kept from update to update on the same mesh (computed again when its tiles are not the
+/// arrangement's), lets the cells' areas and lowest triangles read only the tiles curves touch
+/// (PieceTileSums.h); without it every owned triangle is read.
 void SummarizePiece(const PieceMesh& piece,
   const PieceCurves& curves,
   const Arrangement& arr,
-  PieceSummary& out);
+  PieceSummary& out,
+  PieceTileSums* sums = nullptr);
 
 /// ComputeArrangementOfRuns on the piece, then SummarizePiece. Fails with the arrangement's
 /// message.
@@ -148,7 +155,8 @@ bool ArrangePiece(const PieceMesh& piece,
   const ArrangementOptions& options,
   Arrangement& arr,
   PieceSummary& out,
-  std::string& error);
+  std::string& error,
+  PieceTileSums* sums = nullptr);
 
 } // namespace boolsurf
 

@@ -68,7 +68,8 @@ bool vtkBoolSurfPieceArrangement::Run(vtkMultiProcessController* controller,
   const boolsurf::PieceCurves& curves,
   const std::vector<int>& neighbours,
   const boolsurf::ArrangementOptions& options,
-  std::string& error)
+  std::string& error,
+  boolsurf::PieceTileSums* tileSums)
 {
   const int rank = controller->GetLocalProcessId();
   const int ranks = controller->GetNumberOfProcesses();
@@ -77,7 +78,7 @@ bool vtkBoolSurfPieceArrangement::Run(vtkMultiProcessController* controller,
   this->Merged = boolsurf::MergedArrangement();
   boolsurf::PieceStopwatch watch;
   boolsurf::PieceSummary summary;
-  bool ok = boolsurf::ArrangePiece(piece, curves, options, this->Local, summary, error);
+  bool ok = boolsurf::ArrangePiece(piece, curves, options, this->Local, summary, error, tileSums);
   this->Times.Arrange = watch.Lap();
   if (!AllSucceeded(controller, ok, error))
   {

@@ -25,6 +25,7 @@
 #include "Distributed/MergedArrangement.h"
 #include "Distributed/PieceCurves.h"
 #include "Distributed/PieceMesh.h"
+#include "Distributed/PieceTileSums.h"
 
 #include <cstddef>
 #include <memory>
@@ -53,13 +54,15 @@ public:
 
   /// Collective. `neighbours`: the ranks owning this piece's ghost triangles (symmetric: the
   /// ranks sharing points with it), ascending. False on every rank, with `error` naming the
-  /// rank and its problem, when any rank fails.
+  /// rank and its problem, when any rank fails. `tileSums`: the piece's clean-tile figures
+  /// kept between runs on its mesh (PieceSummary.h), null to read every owned triangle.
   bool Run(vtkMultiProcessController* controller,
     const boolsurf::PieceMesh& piece,
     const boolsurf::PieceCurves& curves,
     const std::vector<int>& neighbours,
     const boolsurf::ArrangementOptions& options,
-    std::string& error);
+    std::string& error,
+    boolsurf::PieceTileSums* tileSums = nullptr);
 
   /// Collective: true when `ok` on every rank; else false on every rank, `error` naming the
   /// first failing rank (its own message on that rank). What each step of a distributed run

@@ -222,6 +222,7 @@ void PieceArrangementState::Clear()
   this->BorderSent = this->BorderReceived = this->RingReceived = 0;
   this->Piece.reset();
   this->SurfaceCell.reset();
+  this->TileSums = PieceTileSums();
   this->Results.Clear();
 }
 
@@ -341,7 +342,8 @@ bool ArrangeMessageOnPiece(vtkMultiProcessController* controller,
     result->Sources.clear();
   }
   costs.AddTime("Restrict", watch.Lap());
-  ok = result->Run.Run(controller, piece, restricted, state.Neighbours, options, error);
+  ok = result->Run.Run(
+    controller, piece, restricted, state.Neighbours, options, error, &state.TileSums);
   state.Work = result->Run.WorkBuffers();
   if (!ok)
   {

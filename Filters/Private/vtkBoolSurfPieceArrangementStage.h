@@ -30,6 +30,7 @@
 #include "Arrangement/Arrangement.h"
 #include "Distributed/PieceMesh.h"
 #include "Distributed/PieceRegionBoundary.h"
+#include "Distributed/PieceTileSums.h"
 #include "Selection/BoundaryControlPoints.h"
 
 #include <vtkIntArray.h> // for OnPiecesField
@@ -84,6 +85,8 @@ struct PieceArrangementState
   ResultPool<PieceArrangementResult> Results;
   /// The arrangement's work buffers, shared by the pooled results.
   std::shared_ptr<Arrangement::WorkBuffers> Work;
+  /// What the piece's clean tiles add to the summary, kept for the piece's mesh.
+  PieceTileSums TileSums;
 
   /// Forgets the piece and the results (the surface changed, or a build failed).
   void Clear();

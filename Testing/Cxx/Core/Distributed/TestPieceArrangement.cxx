@@ -13,6 +13,7 @@
 #include "Distributed/PieceRegionBoundary.h"
 #include "Distributed/PieceSelection.h"
 #include "Distributed/PieceSummary.h"
+#include "Distributed/PieceTileSums.h"
 
 #include "Arrangement/Arrangement.h"
 #include "Geodesic/CurveTracer.h"
@@ -54,6 +55,32 @@ using boolsurf::testing::WholeRegionBySource;
 namespace
 {
 
+/// The summary's cells read through the clean tiles' figures (PieceTileSums, as an edit on
+/// pieces reads them, computed once and kept) are those read triangle by triangle: the same
+/// cells and lowest triangles, areas summed in another order.
+void ExpectTileSumsGiveTheSameCells(const PieceMesh& piece,
+  const PieceCurves& curves,
+  const Arrangement& arr,
+  const PieceSummary& direct)
+{
+  PieceTileSums sums;
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    PieceSummary tiled;
+    SummarizePiece(piece, curves, arr, tiled, &sums);
+    ASSERT_EQ(tiled.Cells.size(), direct.Cells.size());
+    for (std::size_t i = 0; i < direct.Cells.size(); ++i)
+    {
+      const PieceCell &a = tiled.Cells[i], &b = direct.Cells[i];
+      EXPECT_EQ(a.LocalCell, b.LocalCell);
+      EXPECT_EQ(a.Lowest, b.Lowest) << "cell " << b.LocalCell;
+      EXPECT_NEAR(a.Area, b.Area, 1e-12 * std::max(1.0, b.Area)) << "cell " << b.LocalCell;
+    }
+    EXPECT_EQ(tiled.Boundary.size(), direct.Boundary.size());
+    EXPECT_EQ(tiled.Crossings, direct.Crossings);
+  }
+}
+
 struct DistributedRun
 {
   std::vector<PieceMesh> Pieces;
@@ -83,6 +110,7 @@ void RunDistributed(const TriangleMesh& mesh,
     ASSERT_TRUE(ArrangePiece(
       run.Pieces[p], local, ArrangementOptions(), run.Arrangements[p], run.Summaries[p], error))
       << "piece " << p << ": " << error;
+    ExpectTileSumsGiveTheSameCells(run.Pieces[p], local, run.Arrangements[p], run.Summaries[p]);
   }
   // As processes would merge: each matches its boundary records with its neighbours' (the
   // owners of its ghosts) and sends on the joins; the merge never sees a boundary record.
