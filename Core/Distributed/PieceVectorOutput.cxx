@@ -60,13 +60,7 @@ ControlSubCurve MakeSubCurve(const std::vector<CurveSource>& sources,
   bool whole)
 {
   const CurveSource& source = sources[curve];
-  ControlSubCurve out;
-  out.Curve = curve;
-  out.Type = source.Type;
-  out.Segments = NumberOfSourceSegments(source);
-  out.CurveClosed = source.Closed;
-  out.SourceShapeId = source.ShapeId;
-  out.SourceCurveId = source.CurveId;
+  ControlSubCurve out = SubCurveOfSource(sources, curve);
   out.Whole = whole;
   out.T0 = StationParameter(source, Normalized(source, first.Station));
   out.T1 = StationParameter(source, Normalized(source, last.Station));

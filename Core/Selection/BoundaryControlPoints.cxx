@@ -17,11 +17,6 @@ namespace
 /// intersection points are fractions of traced segments, rounded).
 constexpr double SameParameter = 1e-9;
 
-int NumberOfSegments(const CurveSource& source)
-{
-  return NumberOfSourceSegments(source);
-}
-
 /// The control points of curve `c` from parameter t0 to t1 (t1 > t0; past the end of a closed
 /// curve when it wraps), between the arranged points `first` and `last`.
 bool SubCurve(GeodesicPathSolver& solver,
@@ -39,7 +34,7 @@ bool SubCurve(GeodesicPathSolver& solver,
 {
   const TriangleMesh& mesh = solver.GetMesh();
   const int controls = static_cast<int>(source.Points.size());
-  const int segments = NumberOfSegments(source);
+  const int segments = NumberOfSourceSegments(source);
   points.clear();
   const double k0 = std::round(t0), k1 = std::round(t1);
   const bool startsAtControl = std::abs(t0 - k0) <= SameParameter;
@@ -159,12 +154,7 @@ bool MakeSubCurve(GeodesicPathSolver& solver,
   const CurveSource& source = sources[c];
   const int n = static_cast<int>(arrangement.CurvePoints[c].size());
   const int last = (first + count - 1) % n;
-  out.Curve = c;
-  out.Type = source.Type;
-  out.Segments = NumberOfSegments(source);
-  out.CurveClosed = source.Closed;
-  out.SourceShapeId = source.ShapeId;
-  out.SourceCurveId = source.CurveId;
+  out = SubCurveOfSource(sources, c);
   SubCurveRange(arrangement, sources, c, first, count, out.T0, out.T1, out.Whole);
   const bool ok = SubCurve(solver,
     arrangement,
@@ -248,6 +238,20 @@ int NumberOfSourceSegments(const CurveSource& source)
 }
 
 //------------------------------------------------------------------------------
+ControlSubCurve SubCurveOfSource(const std::vector<CurveSource>& sources, int curve)
+{
+  const CurveSource& source = sources[static_cast<std::size_t>(curve)];
+  ControlSubCurve out;
+  out.Curve = curve;
+  out.Type = source.Type;
+  out.Segments = NumberOfSourceSegments(source);
+  out.CurveClosed = source.Closed;
+  out.SourceShapeId = source.ShapeId;
+  out.SourceCurveId = source.CurveId;
+  return out;
+}
+
+//------------------------------------------------------------------------------
 double StationParameter(const CurveSource& source, double station)
 {
   const std::vector<double>& parameter = source.Parameter;
@@ -258,7 +262,7 @@ double StationParameter(const CurveSource& source, double station)
   {
     return parameter[i];
   }
-  const double next = i + 1 < n ? parameter[i + 1] : NumberOfSegments(source);
+  const double next = i + 1 < n ? parameter[i + 1] : NumberOfSourceSegments(source);
   return parameter[i] + f * (next - parameter[i]);
 }
 
@@ -295,7 +299,7 @@ void SubCurveParameterRange(const CurveSource& source, bool whole, double& t0, d
   // short for its two parameters to differ stays where it is.
   if (source.Closed && (whole || t1 < t0 - SameParameter))
   {
-    t1 += NumberOfSegments(source);
+    t1 += NumberOfSourceSegments(source);
   }
   else if (t1 < t0)
   {
@@ -328,7 +332,7 @@ void BezierPieces::CollectCuts(const TriangleMesh& mesh, int curve, std::vector<
   {
     return;
   }
-  const int segments = NumberOfSegments(source);
+  const int segments = NumberOfSourceSegments(source);
   const int controls = static_cast<int>(source.Points.size());
   // Every patch end inside a segment (not at its anchors) is a cut of that segment.
   std::vector<std::vector<double>> cuts(segments);

@@ -80,6 +80,10 @@ double ArrangedPointParameter(const Arrangement& arrangement,
 /// The number of segments of `source` (legs, or cubic segments): its parameter's range.
 int NumberOfSourceSegments(const CurveSource& source);
 
+/// A sub-curve of source curve `curve` with what it keeps of its source (Curve, Type,
+/// Segments, CurveClosed, SourceShapeId, SourceCurveId) and nothing else yet.
+ControlSubCurve SubCurveOfSource(const std::vector<CurveSource>& sources, int curve);
+
 /// Parameter on `source` of the point at `station` on its traced curve (traced point index
 /// plus fraction, Arrangement::CurveStations): what ArrangedPointParameter reads, for a point
 /// known by its station only (an arrangement on pieces, Distributed/PieceVectorOutput.h).
